@@ -1,0 +1,65 @@
+package org.ripv.assistants;
+
+import org.ripv.managers.TaskManager;
+import org.ripv.messages.Message;
+import org.ripv.post.MailBox;
+import org.ripv.post.MailBoxes;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * Serves a MailBox's inboxes, serially and pre-emptively (thesis 5.2.6): it takes the oldest
+ * message of the highest non-empty priority, holds the MailBox's key while the TaskManager runs
+ * it, and takes the next only when that command has finished.
+ */
+public final class InboxAssistantThread<I extends Message, O extends Message> extends Thread {
+    private static final Logger log = LoggerFactory.getLogger(InboxAssistantThread.class);
+
+    private final MailBox<I, O> box;
+    private final TaskManager<I, O> manager;
+    private volatile boolean running = true;
+
+    public InboxAssistantThread(MailBox<I, O> box, TaskManager<I, O> manager) {
+        super("mailbox-" + box.address() + "-inbox");
+        this.box = box;
+        this.manager = manager;
+        setDaemon(true);
+    }
+
+    @Override
+    public void run() {
+        while (running) {
+            I request;
+            try {
+                request = box.takeNext();
+            } catch (InterruptedException e) {
+                break;
+            }
+            MailBoxes.takeKey(box, request);
+            try {
+                manager.parseHeader(box, request);
+            } catch (Throwable t) {
+                if (t instanceof InterruptedException && !running) {
+                    manager.failed(box, request, t);
+                    break;
+                }
+                log.warn("{}: command '{}' failed", box.address(), request.header().body(), t);
+                manager.failed(box, request, t);
+            } finally {
+                MailBoxes.giveBackKey(box);
+            }
+        }
+        log.debug("{} stopped", getName());
+    }
+
+    /** Stops after the current command; waits up to the given milliseconds. */
+    public void shutdown(long waitMillis) {
+        running = false;
+        interrupt();
+        try {
+            join(waitMillis);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+}

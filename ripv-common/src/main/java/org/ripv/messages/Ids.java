@@ -1,0 +1,54 @@
+package org.ripv.messages;
+
+import java.util.regex.Pattern;
+
+/**
+ * The six-digit identifiers of Appendix B. A reply's {@link Footer#serviceId()} carries the SID of
+ * the service that produced it or the FID of the server command that answered it; clients
+ * dispatch on it. New server commands take new FIDs here and in {@code docs/protocol.md}.
+ */
+public final class Ids {
+    private static final Pattern SIX_DIGITS = Pattern.compile("\\d{6}");
+
+    // Service IDs (SID), Appendix B.
+    public static final String SID_DATABASE = "666666";
+    public static final String SID_SERIAL = "888888";
+    public static final String SID_DATAVIS = "999999";
+
+    // Functionality IDs (FID) of the thesis's server commands, Appendix B.
+    public static final String FID_DLDIR = "444444";
+    public static final String FID_ULDIR = "444445";
+    public static final String FID_DLFILES = "444454";
+    public static final String FID_ULFILES = "444455";
+    public static final String FID_MAILBOXES = "555555";
+    public static final String FID_STATUS = "555666";
+    public static final String FID_SERVICES = "777777";
+
+    // FIDs added by this implementation (docs/protocol.md).
+    public static final String FID_LOGIN = "111111";
+    public static final String FID_LOGOUT = "111112";
+    public static final String FID_WHOAMI = "111113";
+    public static final String FID_HELP = "111110";
+    public static final String FID_PING = "111115";
+    public static final String FID_UPLOAD = "444460";
+    public static final String FID_DOWNLOAD = "444470";
+    public static final String FID_LOCK = "555667";
+    public static final String FID_UNLOCK = "555668";
+    /** Replies to a message the server could not attribute to any command or service. */
+    public static final String FID_NONE = "000000";
+
+    private Ids() {}
+
+    /** True when {@code id} is six ASCII digits. */
+    public static boolean isValid(String id) {
+        return id != null && SIX_DIGITS.matcher(id).matches();
+    }
+
+    /** Returns {@code id} or throws when it is not six digits. */
+    public static String require(String id) {
+        if (!isValid(id)) {
+            throw new IllegalArgumentException("an id must be six digits, got '" + id + "'");
+        }
+        return id;
+    }
+}

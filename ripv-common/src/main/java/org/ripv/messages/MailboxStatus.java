@@ -1,0 +1,22 @@
+package org.ripv.messages;
+
+/**
+ * One MailBox as the operator sees it ({@code ?status}, {@code ?mailboxes}).
+ *
+ * @param address   its full address, {@code <SerialPortServer>::<host>ttyS0}
+ * @param available whether it can take commands now (a glider under water is not)
+ * @param detail    the service's word on why, or what the resource is
+ * @param busy      whether a command is running in it right now
+ * @param lockedBy  the user holding the operator lock, or empty
+ */
+public record MailboxStatus(String address, boolean available, String detail, boolean busy, String lockedBy)
+        implements Result {
+    public MailboxStatus {
+        detail = detail == null ? "" : detail;
+        lockedBy = lockedBy == null ? "" : lockedBy;
+    }
+
+    public MailboxStatus withLock(String holder) {
+        return new MailboxStatus(address, available, detail, busy, holder);
+    }
+}

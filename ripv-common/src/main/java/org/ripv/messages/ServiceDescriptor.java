@@ -1,0 +1,26 @@
+package org.ripv.messages;
+
+import java.util.List;
+import java.util.Objects;
+
+/**
+ * What a service tells the server about itself when it registers (thesis: ServiceDescriptor).
+ *
+ * @param name           the full service name, {@code <ServiceName>::<host>}
+ * @param sid            its six-digit service id
+ * @param description    one line for the operator
+ * @param panel          which fourth panel the client shows beside COM, MAM and FIM:
+ *                       {@code "DAB"}, {@code "DAV"}, or {@code ""} for none (COM spans both rows)
+ * @param attachPrefixes command prefixes whose first argument names a file in the server's
+ *                       upload directory, which the server then attaches (e.g. {@code "vis:"})
+ */
+public record ServiceDescriptor(String name, String sid, String description, String panel,
+                                List<String> attachPrefixes) implements java.io.Serializable {
+    public ServiceDescriptor {
+        Objects.requireNonNull(name, "name");
+        Ids.require(sid);
+        description = description == null ? "" : description;
+        panel = panel == null ? "" : panel;
+        attachPrefixes = attachPrefixes == null ? List.of() : List.copyOf(attachPrefixes);
+    }
+}

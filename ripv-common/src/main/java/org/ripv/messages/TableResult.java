@@ -1,0 +1,29 @@
+package org.ripv.messages;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+
+/**
+ * A query's answer: column names and SQL type names, rows of values rendered as text (null for
+ * SQL NULL), and whether the rows were cut at the service's limit.
+ */
+public record TableResult(String query, List<String> columns, List<String> types, List<String[]> rows,
+                          boolean truncated) implements Result {
+    public TableResult {
+        query = query == null ? "" : query;
+        columns = List.copyOf(columns);
+        types = List.copyOf(types);
+        if (columns.size() != types.size()) {
+            throw new IllegalArgumentException(columns.size() + " columns but " + types.size() + " types");
+        }
+        List<String[]> copy = new ArrayList<>(rows.size());
+        for (String[] row : rows) {
+            if (row == null || row.length != columns.size()) {
+                throw new IllegalArgumentException("every row needs " + columns.size() + " values");
+            }
+            copy.add(row);
+        }
+        rows = Collections.unmodifiableList(copy);
+    }
+}

@@ -1,0 +1,52 @@
+package org.ripv.rmi;
+
+import java.rmi.Remote;
+import java.rmi.RemoteException;
+import java.util.List;
+import org.ripv.messages.IncomingServiceMessage;
+import org.ripv.messages.MailboxStatus;
+import org.ripv.messages.OutgoingServiceMessage;
+import org.ripv.messages.ServiceDescriptor;
+
+/**
+ * The remote interface between the RIPVServer and its services (thesis 5.2.5). Both sides
+ * export an object implementing it: the server answers {@link #register}, {@link #serviceReply}
+ * and {@link #heartbeat}; a service answers {@link #serviceRequest} and {@link #mailboxes}. A
+ * side asked for what it does not answer throws {@link UnsupportedOperationException}.
+ *
+ * <p>Calls after registration carry the token the server handed out, so that nobody who can
+ * merely reach a port can inject requests or forge replies.
+ */
+public interface GenericRMIInterface extends Remote {
+
+    /** The name the server binds in its RMI registry. */
+    String BINDING = "RIPVServer";
+
+    /**
+     * Registers a service with the server.
+     *
+     * @param descriptor the service's name, SID and client-side hints
+     * @param service    the service's own exported stub, which the server will call
+     * @param secret     the server's service secret ({@code DATA/service.secret})
+     * @return the session token for all later calls in both directions
+     * @throws SecurityException when the secret is wrong
+     */
+    String register(ServiceDescriptor descriptor, GenericRMIInterface service, String secret) throws RemoteException;
+
+    /** A service's reply (PROGRESS, OK or ERROR) to a request; called back on the server. */
+    void serviceReply(String token, OutgoingServiceMessage reply) throws RemoteException;
+
+    /**
+     * A service's periodic sign of life.
+     *
+     * @return false when the server no longer knows the token (it restarted, or dropped the
+     *         service): the service then registers again
+     */
+    boolean heartbeat(String token) throws RemoteException;
+
+    /** A request for one of the service's MailBoxes; returns once the request is queued. */
+    void serviceRequest(String token, IncomingServiceMessage request) throws RemoteException;
+
+    /** The service's MailBoxes and whether each can take commands now. */
+    List<MailboxStatus> mailboxes(String token) throws RemoteException;
+}

@@ -1,0 +1,46 @@
+package org.ripv.rmi;
+
+import java.rmi.NoSuchObjectException;
+import java.rmi.RemoteException;
+import java.rmi.server.UnicastRemoteObject;
+import org.ripv.wire.WireFilter;
+
+/** RMI settings every RIPV process uses, and exporting with the wire filter. */
+public final class RmiSupport {
+    /** The largest message RMI accepts (a whole file travels in one reply). */
+    public static final long MAX_RMI_BYTES = 512L * 1024 * 1024;
+
+    private RmiSupport() {}
+
+    /**
+     * Sets RMI's timeouts before any RMI use. RMI waits for a reply forever by default; RIPV
+     * never waits longer than {@code responseMillis} for one call.
+     */
+    public static void configure(long connectMillis, long responseMillis) {
+        setIfAbsent("sun.rmi.transport.tcp.responseTimeout", Long.toString(responseMillis));
+        setIfAbsent("sun.rmi.transport.connectionTimeout", Long.toString(connectMillis));
+        setIfAbsent("sun.rmi.transport.proxy.connectTimeout", Long.toString(connectMillis));
+        setIfAbsent("sun.rmi.transport.tcp.handshakeTimeout", Long.toString(connectMillis));
+        // Distributed GC: notice dead peers in a minute rather than the default ten.
+        setIfAbsent("java.rmi.dgc.leaseValue", "60000");
+    }
+
+    private static void setIfAbsent(String key, String value) {
+        if (System.getProperty(key) == null) {
+            System.setProperty(key, value);
+        }
+    }
+
+    /** Exports an object on the given port (0: any) with the RIPV allowlist on its arguments. */
+    public static GenericRMIInterface export(GenericRMIInterface object, int port) throws RemoteException {
+        return (GenericRMIInterface) UnicastRemoteObject.exportObject(object, port, WireFilter.forRmi(MAX_RMI_BYTES));
+    }
+
+    public static void unexport(GenericRMIInterface object) {
+        try {
+            UnicastRemoteObject.unexportObject(object, true);
+        } catch (NoSuchObjectException ignored) {
+            // already gone
+        }
+    }
+}

@@ -1,0 +1,203 @@
+package org.ripv.service;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import java.util.concurrent.ConcurrentHashMap;
+import org.ripv.messages.ErrorCode;
+import org.ripv.messages.Footer;
+import org.ripv.messages.Ids;
+import org.ripv.messages.IncomingServiceMessage;
+import org.ripv.messages.MailboxStatus;
+import org.ripv.messages.OutgoingServiceMessage;
+import org.ripv.messages.ServiceDescriptor;
+import org.ripv.naming.Handles;
+import org.ripv.naming.MailboxAddress;
+import org.ripv.naming.ServiceName;
+import org.ripv.post.MailBox;
+import org.ripv.post.PostOffice;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * The base class of every RIPV service (thesis 4.1.4, figure 5.4). A service owns resources —
+ * serial ports, database connections, plot workers — and opens one MailBox per resource, each
+ * with a {@link CommandHandler} that runs that MailBox's commands one at a time, highest
+ * priority first. The server forwards operators' commands here and relays the replies back.
+ *
+ * <p>A minimal service:
+ * <pre>{@code
+ * public final class ClockService extends RIPVService {
+ *     public ClockService() {
+ *         super("ClockService", "100100");
+ *     }
+ *
+ *     protected void open() {
+ *         openMailBox(Handles.platformDefault(), request -> switch (request.command()) {
+ *             case "time" -> Reply.ok(Instant.now().toString());
+ *             default -> Reply.error(ErrorCode.UNKNOWN_COMMAND, "unknown command '" + request.command() + "'");
+ *         });
+ *     }
+ * }
+ * // Run it in-process, or register it with a server:
+ * ClockService clock = new ClockService();
+ * ServiceConnector.connect(clock, ServiceOptions.of("server.example.org", 1099, secret));
+ * }</pre>
+ *
+ * <p>Everything {@link #open} registers is callable locally ({@link #accept}) and over RMI (via
+ * {@link ServiceConnector}), so the same tests can exercise both.
+ */
+public abstract class RIPVService {
+    private static final Logger log = LoggerFactory.getLogger(RIPVService.class);
+
+    private final ServiceName name;
+    private final String sid;
+    private final PostOffice<IncomingServiceMessage, OutgoingServiceMessage> postOffice = new PostOffice<>(100_000);
+    private final Map<String, CommandHandler> handlers = new ConcurrentHashMap<>();
+    private volatile ReplySink sink = reply -> log.warn("not connected to a server: dropped {}", reply);
+    private volatile boolean started;
+
+    /**
+     * @param serviceName the service's name (Appendix A, II), e.g. {@code "SerialPortServer"}
+     * @param sid         its six-digit service id (Appendix B); pick one no other service uses
+     */
+    protected RIPVService(String serviceName, String sid) {
+        this(serviceName, sid, Handles.localHost());
+    }
+
+    /** As {@link #RIPVService(String, String)}, registering under an explicit host name. */
+    protected RIPVService(String serviceName, String sid, String host) {
+        this.name = new ServiceName(serviceName, host);
+        this.sid = Ids.require(sid);
+    }
+
+    /** Opens the service's resources and MailBoxes with {@link #openMailBox}. */
+    protected abstract void open() throws Exception;
+
+    /** Releases the service's resources. MailBoxes are closed already. */
+    protected void close() {
+    }
+
+    /** One line the operator sees in the service tree. */
+    protected String description() {
+        return "";
+    }
+
+    /** The client's fourth panel for this service: "DAB", "DAV", or "" (COM spans both rows). */
+    protected String panel() {
+        return "";
+    }
+
+    /** Command prefixes whose first argument names an uploaded file for the server to attach. */
+    protected List<String> attachPrefixes() {
+        return List.of();
+    }
+
+    public final ServiceName name() {
+        return name;
+    }
+
+    public final String sid() {
+        return sid;
+    }
+
+    public final ServiceDescriptor descriptor() {
+        return new ServiceDescriptor(name.toString(), sid, description(), panel(), attachPrefixes());
+    }
+
+    /** Opens a MailBox for a resource; its commands go to {@code handler}, one at a time. */
+    protected final MailboxAddress openMailBox(String handle, CommandHandler handler) {
+        MailboxAddress address = name.mailbox(handle);
+        Objects.requireNonNull(handler, "handler");
+        handlers.put(address.toString(), handler);
+        try {
+            postOffice.open(address.toString(), new ServiceTaskManager(this, handler));
+        } catch (RuntimeException e) {
+            handlers.remove(address.toString());
+            throw e;
+        }
+        log.info("opened MailBox {}", address);
+        return address;
+    }
+
+    /** Closes a MailBox; requests still waiting in it are answered with an error. */
+    protected final void closeMailBox(String handle) {
+        String address = name.mailbox(handle).toString();
+        for (IncomingServiceMessage left : postOffice.close(address)) {
+            replyNow(left, ErrorCode.NOT_AVAILABLE, "MailBox " + address + " was closed before the command ran");
+        }
+        handlers.remove(address);
+    }
+
+    /** Opens the service. Idempotent. */
+    public final synchronized void start() throws Exception {
+        if (!started) {
+            open();
+            started = true;
+        }
+    }
+
+    /** Closes every MailBox and the service's resources. */
+    public final synchronized void stop() {
+        if (started) {
+            started = false;
+            for (MailBox<IncomingServiceMessage, OutgoingServiceMessage> box : postOffice.mailboxes()) {
+                closeMailBox(box.address().substring(name.toString().length()));
+            }
+            close();
+        }
+    }
+
+    /** Sets where replies go (the server link, or a test's collector). */
+    public final void replyTo(ReplySink newSink) {
+        this.sink = Objects.requireNonNull(newSink, "sink");
+    }
+
+    final ReplySink sink() {
+        return sink;
+    }
+
+    /**
+     * Accepts a request from the server: files it in its MailBox, or answers at once with an
+     * error when the MailBox does not exist or is full.
+     */
+    public final void accept(IncomingServiceMessage request) {
+        switch (postOffice.scan(request)) {
+            case DELIVERED -> { }
+            case UNKNOWN_MAILBOX -> replyNow(request, ErrorCode.UNKNOWN_MAILBOX,
+                    "no MailBox '" + request.header().mailboxAddress() + "' at " + name + "; ask ?mailboxes for the list");
+            case FULL -> replyNow(request, ErrorCode.NOT_AVAILABLE,
+                    "MailBox " + request.header().mailboxAddress() + " has too many commands waiting; try later");
+        }
+    }
+
+    private void replyNow(IncomingServiceMessage request, ErrorCode code, String text) {
+        try {
+            sink.reply(request.reply(Footer.error(sid, code, text).via(name.toString())));
+        } catch (Exception e) {
+            log.warn("could not send error reply for #{}: {}", request.header().messageId(), e.toString());
+        }
+    }
+
+    /** The MailBoxes and their availability. */
+    public final List<MailboxStatus> mailboxes() {
+        List<MailboxStatus> out = new ArrayList<>();
+        for (MailBox<IncomingServiceMessage, OutgoingServiceMessage> box : postOffice.mailboxes()) {
+            CommandHandler h = handlers.get(box.address());
+            Availability a;
+            try {
+                a = h == null ? Availability.notAvailable("closed") : h.availability();
+            } catch (RuntimeException e) {
+                a = Availability.notAvailable(e.toString());
+            }
+            out.add(new MailboxStatus(box.address(), a.available(), a.detail(), box.key().isHeld(), ""));
+        }
+        return out;
+    }
+
+    @Override
+    public String toString() {
+        return name + " (SID " + sid + ")";
+    }
+}

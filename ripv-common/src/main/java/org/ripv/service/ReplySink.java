@@ -1,0 +1,9 @@
+package org.ripv.service;
+
+import org.ripv.messages.OutgoingServiceMessage;
+
+/** Where a service's replies go: the server over RMI, or a test in the same JVM. */
+@FunctionalInterface
+public interface ReplySink {
+    void reply(OutgoingServiceMessage reply) throws Exception;
+}

@@ -1,0 +1,49 @@
+package org.ripv.service;
+
+import java.nio.file.Path;
+import java.time.Duration;
+import org.ripv.naming.Handles;
+import picocli.CommandLine.Option;
+
+/**
+ * The command-line options every service launcher shares (picocli mixin):
+ * {@code --server HOST[:REGPORT] [--secret-file F] [--host NAME] [--export-port N]}.
+ */
+public final class ServiceLaunchOptions {
+    @Option(names = "--server", required = true, paramLabel = "HOST[:REGPORT]",
+            description = "The RIPVServer to register with (RMI registry port 1099 unless given). //HOST works too.")
+    String server;
+
+    @Option(names = "--secret-file", paramLabel = "FILE",
+            description = "The server's service secret (DATA/service.secret). Else $RIPV_SERVICE_SECRET, else ~/.ripv/server/service.secret.")
+    Path secretFile;
+
+    @Option(names = "--host", paramLabel = "NAME",
+            description = "The host name to register under and that the server calls back (sets java.rmi.server.hostname). Default: this machine's name.")
+    String host;
+
+    @Option(names = "--export-port", paramLabel = "PORT", defaultValue = "0",
+            description = "The port this service's RMI object listens on (default: any free port; fix it for firewalls).")
+    int exportPort;
+
+    /** Applies {@code --host} to RMI and naming; call before creating the service. */
+    public String hostName() {
+        if (host != null && !host.isBlank()) {
+            System.setProperty("java.rmi.server.hostname", host);
+            System.setProperty("ripv.host", host);
+            return host;
+        }
+        return Handles.localHost();
+    }
+
+    /** The server option, for launchers that accept the thesis's positional {@code //host}. */
+    public void server(String value) {
+        this.server = value;
+    }
+
+    public ServiceOptions toOptions() throws java.io.IOException {
+        Object[] hp = ServiceOptions.parseServer(server);
+        return new ServiceOptions((String) hp[0], (Integer) hp[1], ServiceOptions.resolveSecret(secretFile), exportPort,
+                Duration.ofSeconds(3));
+    }
+}

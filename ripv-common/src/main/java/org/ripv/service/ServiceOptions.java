@@ -1,0 +1,96 @@
+package org.ripv.service;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.Objects;
+
+/**
+ * Where a service finds its server and how it proves it may register.
+ *
+ * @param serverHost   the RIPVServer's host
+ * @param registryPort the server's RMI registry port (1099 by default)
+ * @param secret       the server's service secret
+ * @param exportPort   the port this service's RMI object listens on (0: any free port)
+ * @param heartbeat    how often the service checks in, and retries when the server is away
+ */
+public record ServiceOptions(String serverHost, int registryPort, String secret, int exportPort, Duration heartbeat) {
+    public static final int DEFAULT_REGISTRY_PORT = 1099;
+    /** The environment variable a service may read its secret from. */
+    public static final String SECRET_ENV = "RIPV_SERVICE_SECRET";
+
+    public ServiceOptions {
+        Objects.requireNonNull(serverHost, "serverHost");
+        Objects.requireNonNull(secret, "secret");
+        heartbeat = heartbeat == null ? Duration.ofSeconds(3) : heartbeat;
+    }
+
+    public static ServiceOptions of(String serverHost, int registryPort, String secret) {
+        return new ServiceOptions(serverHost, registryPort, secret, 0, Duration.ofSeconds(3));
+    }
+
+    /**
+     * Parses {@code HOST[:REGPORT]}, with the thesis's {@code //host} form accepted too.
+     *
+     * @return {host, port}
+     */
+    public static Object[] parseServer(String text) {
+        String t = text.trim();
+        if (t.startsWith("//")) {
+            t = t.substring(2);
+        }
+        int port = DEFAULT_REGISTRY_PORT;
+        int colon = t.lastIndexOf(':');
+        if (colon > 0 && t.indexOf(':') == colon) {
+            try {
+                port = Integer.parseInt(t.substring(colon + 1));
+            } catch (NumberFormatException e) {
+                throw new IllegalArgumentException("'" + text + "' is not HOST[:PORT]: the port is not a number");
+            }
+            t = t.substring(0, colon);
+        }
+        if (t.isEmpty() || port < 1 || port > 65535) {
+            throw new IllegalArgumentException("'" + text + "' is not HOST[:PORT]");
+        }
+        return new Object[] {t, port};
+    }
+
+    /**
+     * Finds the service secret: the file given, else {@code RIPV_SERVICE_SECRET}, else the
+     * default server data directory's {@code service.secret} (a server on this machine).
+     */
+    public static String resolveSecret(Path secretFile) throws IOException {
+        if (secretFile != null) {
+            return read(secretFile);
+        }
+        String env = System.getenv(SECRET_ENV);
+        if (env != null && !env.isBlank()) {
+            return env.trim();
+        }
+        Path local = defaultDataDir().resolve("service.secret");
+        if (Files.isReadable(local)) {
+            return read(local);
+        }
+        throw new IOException("no service secret: give --secret-file FILE (the server's DATA/service.secret) or set "
+                + SECRET_ENV);
+    }
+
+    private static String read(Path file) throws IOException {
+        String s = Files.readString(file, StandardCharsets.UTF_8).trim();
+        if (s.isEmpty()) {
+            throw new IOException("the secret file " + file + " is empty");
+        }
+        return s;
+    }
+
+    /** The server's default data directory: {@code $RIPV_DATA}, else {@code ~/.ripv/server}. */
+    public static Path defaultDataDir() {
+        String env = System.getenv("RIPV_DATA");
+        if (env != null && !env.isBlank()) {
+            return Path.of(env);
+        }
+        return Path.of(System.getProperty("user.home"), ".ripv", "server");
+    }
+}

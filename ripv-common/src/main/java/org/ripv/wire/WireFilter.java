@@ -1,0 +1,92 @@
+package org.ripv.wire;
+
+import java.io.ObjectInputFilter;
+import java.lang.reflect.Proxy;
+import java.util.Set;
+
+/**
+ * The allowlist for every object stream RIPV reads, on the client socket and on RMI: RIPV's own
+ * message classes, the few JDK types they carry, and (on RMI) remote stubs of RIPV's interface.
+ * Anything else, and anything deeper, bigger or with more references than the limits, is
+ * rejected before it is instantiated.
+ */
+public final class WireFilter implements ObjectInputFilter {
+    private static final String MESSAGES = "org.ripv.messages";
+    private static final Set<String> JDK = Set.of(
+            "java.lang.String", "java.lang.Enum", "java.lang.Number", "java.lang.Long", "java.lang.Integer",
+            "java.lang.Double", "java.lang.Boolean",
+            "java.util.ArrayList", "java.util.CollSer", "java.util.ImmutableCollections$ListN",
+            "java.util.ImmutableCollections$List12",
+            "java.util.Collections$UnmodifiableRandomAccessList", "java.util.Collections$UnmodifiableList",
+            "java.util.Collections$UnmodifiableCollection",
+            "[B", "[Ljava.lang.String;", "[Ljava.lang.Object;");
+    private static final Set<String> RMI = Set.of(
+            "java.lang.reflect.Proxy", "java.rmi.server.RemoteObjectInvocationHandler",
+            "java.rmi.server.RemoteObject", "java.rmi.server.RemoteStub", "java.rmi.Remote");
+    private static final String REMOTE_INTERFACE = "org.ripv.rmi.GenericRMIInterface";
+
+    private final long maxBytes;
+    private final long maxDepth;
+    private final long maxRefs;
+    private final long maxArray;
+    private final boolean allowRemoteStubs;
+
+    private WireFilter(long maxBytes, long maxDepth, long maxRefs, long maxArray, boolean allowRemoteStubs) {
+        this.maxBytes = maxBytes;
+        this.maxDepth = maxDepth;
+        this.maxRefs = maxRefs;
+        this.maxArray = maxArray;
+        this.allowRemoteStubs = allowRemoteStubs;
+    }
+
+    /** The filter for one socket frame of at most {@code maxFrameBytes}. */
+    public static WireFilter forFrames(int maxFrameBytes) {
+        return new WireFilter(maxFrameBytes, 16, 2_000_000, maxFrameBytes, false);
+    }
+
+    /** The filter for RMI calls carrying messages of at most {@code maxBytes}. */
+    public static WireFilter forRmi(long maxBytes) {
+        return new WireFilter(maxBytes, 24, 2_000_000, maxBytes, true);
+    }
+
+    @Override
+    public Status checkInput(FilterInfo info) {
+        if (info.depth() > maxDepth || info.references() > maxRefs || info.streamBytes() > maxBytes
+                || info.arrayLength() > maxArray) {
+            return Status.REJECTED;
+        }
+        Class<?> c = info.serialClass();
+        if (c == null) {
+            return Status.UNDECIDED;
+        }
+        return allowed(c) ? Status.ALLOWED : Status.REJECTED;
+    }
+
+    private boolean allowed(Class<?> c) {
+        while (c.isArray()) {
+            if (c == byte[].class || c == String[].class || c == Object[].class) {
+                return true;
+            }
+            c = c.getComponentType();
+        }
+        String name = c.getName();
+        if (c.getPackageName().equals(MESSAGES) || JDK.contains(name)) {
+            return true;
+        }
+        if (!allowRemoteStubs) {
+            return false;
+        }
+        if (RMI.contains(name) || name.equals(REMOTE_INTERFACE)) {
+            return true;
+        }
+        if (Proxy.isProxyClass(c)) {
+            for (Class<?> i : c.getInterfaces()) {
+                if (!i.getName().equals(REMOTE_INTERFACE) && i != java.rmi.Remote.class) {
+                    return false;
+                }
+            }
+            return true;
+        }
+        return false;
+    }
+}
