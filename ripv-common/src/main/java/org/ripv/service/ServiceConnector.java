@@ -178,6 +178,12 @@ public final class ServiceConnector implements AutoCloseable {
         }
 
         @Override
+        public boolean withdraw(String t, String mailbox, String clientId, long messageId) throws RemoteException {
+            check(t);
+            return service.withdraw(mailbox, clientId, messageId);
+        }
+
+        @Override
         public List<MailboxStatus> mailboxes(String t) throws RemoteException {
             check(t);
             return service.mailboxes();

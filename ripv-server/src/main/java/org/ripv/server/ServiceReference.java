@@ -91,6 +91,15 @@ final class ServiceReference {
         left.forEach(r -> onFailure.failed(this, r, new RemoteException(descriptor.name() + " is no longer registered")));
     }
 
+    /** Asks the service to drop a request that has not started; true when it will never run. */
+    boolean withdraw(org.ripv.messages.Header h) throws RemoteException {
+        if (queue.removeIf(r -> r.header().messageId() == h.messageId()
+                && r.header().origin().clientId().equals(h.origin().clientId()))) {
+            return true;
+        }
+        return stub.withdraw(token, h.mailboxAddress(), h.origin().clientId(), h.messageId());
+    }
+
     List<MailboxStatus> mailboxes() throws RemoteException {
         return stub.mailboxes(token);
     }
