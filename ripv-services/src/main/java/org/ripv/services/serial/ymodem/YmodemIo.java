@@ -53,6 +53,11 @@ final class YmodemIo {
         }
     }
 
+    /** Drops bytes already read from the link but not consumed (stale answers); never waits. */
+    void discardBuffered() {
+        position = limit;
+    }
+
     private boolean fill(long timeoutMillis) throws IOException {
         int n = link.read(buffer, 0, buffer.length, Math.max(1, timeoutMillis));
         position = 0;

@@ -45,13 +45,16 @@ public final class YmodemSender {
     public void sendBatch(List<SendFile> files) throws IOException {
         awaitRequest(config.startTimeout().toMillis(), "the receiver to start");
         for (SendFile file : files) {
-            sendFile(file);
-            awaitRequest(config.blockTimeout().toMillis() * config.maxRetries(), "the receiver to ask for the next file");
+            if (!sendFile(file)) {
+                awaitRequest(config.blockTimeout().toMillis() * config.maxRetries(), "the receiver to ask for the next file",
+                        true);
+            }
         }
         endBatch();
     }
 
-    private void sendFile(SendFile file) throws IOException {
+    /** Sends one file; true when the receiver's 'C' for the next file has been read already. */
+    private boolean sendFile(SendFile file) throws IOException {
         FileHeader header = new FileHeader(file.name(), file.length(), file.mtimeSeconds(), file.mode());
         byte[] info = (file.name() + '\0' + file.length() + ' ' + Long.toOctalString(file.mtimeSeconds()) + ' '
                 + Integer.toOctalString(file.mode())).getBytes(StandardCharsets.UTF_8);
@@ -84,8 +87,9 @@ public final class YmodemSender {
                 listener.progress(header, sent);
             }
         }
-        sendEot(file.name());
+        boolean asked = sendEot(file.name());
         listener.finished(header);
+        return asked;
     }
 
     private void sendBlock(int seq, byte[] data, int size, String what) throws IOException {
@@ -98,6 +102,8 @@ public final class YmodemSender {
         frame[4 + size] = (byte) crc;
         byte[] out = Arrays.copyOf(frame, size + 5);
         for (int attempt = 0; attempt <= config.maxRetries(); attempt++) {
+            // an answer that came in with the previous ACK (a duplicate's ACK) is stale
+            io.discardBuffered();
             io.write(out);
             int answer = awaitAnswer(config.blockTimeout().toMillis());
             if (answer == ACK) {
@@ -109,16 +115,29 @@ public final class YmodemSender {
         throw abort("no ACK for " + what + " after " + config.maxRetries() + " retries");
     }
 
-    private void sendEot(String name) throws IOException {
-        for (int attempt = 0; attempt <= config.maxRetries(); attempt++) {
-            io.write(EOT);
+    /**
+     * Ends a file with EOT. Both receiver styles work: ACK at once, or NAK then ACK. Returns true
+     * when a 'C' came instead of the ACK (the ACK was lost and the receiver asks for more).
+     */
+    private boolean sendEot(String name) throws IOException {
+        io.discardBuffered();
+        io.write(EOT);
+        int errors = 0;
+        while (true) {
             int answer = awaitAnswer(config.blockTimeout().toMillis());
             if (answer == ACK) {
-                return;
+                return false;
             }
-            // NAK: a receiver that confirms EOT; send it again
+            if (answer == CRC_REQUEST) {
+                io.purge(1);
+                return true;
+            }
+            // NAK (a receiver confirming EOT) or silence: send it again
+            if (++errors > config.maxRetries()) {
+                throw abort("no ACK for the end of '" + name + "'");
+            }
+            io.write(EOT);
         }
-        throw abort("no ACK for the end of '" + name + "'");
     }
 
     private void endBatch() throws IOException {
@@ -174,10 +193,19 @@ public final class YmodemSender {
 
     /** Waits for the receiver's 'C'; ACKs and NAKs that arrive meanwhile are stale. */
     private void awaitRequest(long timeoutMillis, String what) throws IOException {
+        awaitRequest(timeoutMillis, what, false);
+    }
+
+    private void awaitRequest(long timeoutMillis, String what, boolean afterEot) throws IOException {
         long deadline = System.nanoTime() + timeoutMillis * 1_000_000;
         while (true) {
             long left = (deadline - System.nanoTime()) / 1_000_000;
             int c = left <= 0 ? -1 : awaitAnswer(left);
+            if (c == NAK && afterEot) {
+                // a receiver that confirms EOT took an earlier ACK for ours: confirm it
+                io.write(EOT);
+                continue;
+            }
             if (c == CRC_REQUEST) {
                 // a receiver that waited repeats its 'C'; stale repeats would read as answers later
                 io.purge(1);
