@@ -293,7 +293,8 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
             DirectorySink sink = new DirectorySink(dir);
             startVehicleCommand(l, settings.sendCommand() + " " + String.join(" ", names));
             ProgressReporter progress = new ProgressReporter(request, "receiving");
-            List<FileHeader> files = new YmodemReceiver(l, settings.ymodem(), progress).receiveBatch(sink);
+            List<FileHeader> files = new YmodemReceiver(l, settings.ymodem(), progress)
+                    .stopWaitingWhen(this::endsWithPrompt).receiveBatch(sink);
             StringBuilder ignored = new StringBuilder();
             readReply(l, ignored, settings.idleTimeout().toMillis() * 2);
             if (files.isEmpty()) {

@@ -34,11 +34,23 @@ public final class YmodemReceiver {
     private final YmodemConfig config;
     private final TransferListener listener;
     private final byte[] packet = new byte[1024 + 4];
+    private final StringBuilder noise = new StringBuilder();
+    private java.util.function.Predicate<CharSequence> gaveUp = text -> false;
+    private boolean waitingForFirst;
 
     public YmodemReceiver(ByteLink link, YmodemConfig config, TransferListener listener) {
         this.io = new YmodemIo(link);
         this.config = config;
         this.listener = listener == null ? TransferListener.NONE : listener;
+    }
+
+    /**
+     * Lets the receiver stop waiting early when what the other end prints instead of starting
+     * shows it will not send (a shell back at its prompt after "File not found").
+     */
+    public YmodemReceiver stopWaitingWhen(java.util.function.Predicate<CharSequence> shellIsBack) {
+        this.gaveUp = shellIsBack;
+        return this;
     }
 
     /** What a packet read produced. */
@@ -74,8 +86,13 @@ public final class YmodemReceiver {
                 * (first ? 1 : config.maxRetries());
         int errors = 0;
         io.write(CRC_REQUEST);
+        waitingForFirst = first;
         while (true) {
             Kind kind = readPacket(config.startInterval().toMillis());
+            if (waitingForFirst && gaveUp.test(noise)) {
+                String said = noise.toString().replaceAll("[\\p{Cntrl}&&[^\\n]]", "").strip();
+                throw new YmodemException("the other end did not start sending; it said: " + said);
+            }
             switch (kind) {
                 case CANCEL -> throw new YmodemException("sender cancelled the transfer (CAN CAN)", true);
                 case EOT -> io.write(ACK); // our ACK of the previous file's EOT was lost: ACK again
@@ -98,6 +115,7 @@ public final class YmodemReceiver {
                         io.write(ACK);
                         continue;
                     }
+                    waitingForFirst = false;
                     io.write(ACK);
                     FileHeader header = parseHeader();
                     if (header == null) {
@@ -293,7 +311,14 @@ public final class YmodemReceiver {
                     }
                     continue;
                 default:
-                    continue; // line noise, or the echo of the command that started the sender
+                    // line noise, or the echo of the command that started the sender
+                    if (waitingForFirst && noise.length() < 4096) {
+                        noise.append((char) c);
+                        if (gaveUp.test(noise)) {
+                            return Kind.TIMEOUT;
+                        }
+                    }
+                    continue;
             }
             if (!io.readFully(packet, 0, packetSize + 4, config.charTimeout().toMillis())) {
                 log.debug("short block");
