@@ -36,6 +36,9 @@ public final class SerialLink implements Link {
         String device = settings.device();
         String path = device;
         Path p = Path.of(device);
+        if (device.contains("/") && !Files.exists(p)) {
+            throw new IOException("no serial device at '" + device + "' (it does not exist)");
+        }
         if (Files.isSymbolicLink(p)) {
             path = p.toRealPath().toString();
         }
