@@ -189,7 +189,6 @@ public final class GliderSimulator implements AutoCloseable {
     }
 
     private void dive() throws InterruptedException {
-        submerged = true;
         log.info("submerged for {} s", submerge.toSeconds());
         try {
             // the glider is away for this long; stop() wakes it early
@@ -269,6 +268,7 @@ public final class GliderSimulator implements AutoCloseable {
             case "YS" -> send(shell, words);
             case "YR" -> receive(shell);
             case "GO" -> {
+                submerged = true; // from now on, before the link drops
                 say(shell, "Mission started; submerging for " + submerge.toSeconds() + " s\r\n");
                 return true;
             }
