@@ -1,7 +1,6 @@
 package org.ripv.services.serial;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -14,6 +13,7 @@ import java.util.Random;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.ripv.testing.Tools;
 import org.ripv.services.serial.ymodem.DirectorySink;
 import org.ripv.services.serial.ymodem.FileHeader;
 import org.ripv.services.serial.ymodem.SendFile;
@@ -31,8 +31,7 @@ class LrzszInteropTest {
 
     @BeforeAll
     static void tools() {
-        assumeTrue(Socat.installed("socat", "sb", "rb"),
-                "lrzsz and socat are not installed (apt-get install lrzsz socat); skipping the interop tests");
+        Tools.require("socat", "sb", "rb");
     }
 
     /** Files that probe the edges: empty, exact block multiples, a short tail, control bytes, 1 MB. */

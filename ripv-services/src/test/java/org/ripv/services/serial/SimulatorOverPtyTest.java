@@ -5,7 +5,6 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertInstanceOf;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -15,6 +14,7 @@ import java.util.Random;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.ripv.testing.Tools;
 import org.ripv.messages.Attachment;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.FileData;
@@ -33,7 +33,7 @@ class SimulatorOverPtyTest {
 
     @BeforeAll
     static void tools() {
-        assumeTrue(Socat.installed("socat"), "socat is not installed (apt-get install socat); skipping the pty tests");
+        Tools.require("socat");
     }
 
     private Socat ptyPair(Path a, Path b) throws Exception {

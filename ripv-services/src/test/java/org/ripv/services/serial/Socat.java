@@ -1,6 +1,5 @@
 package org.ripv.services.serial;
 
-import java.io.File;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -17,21 +16,6 @@ public final class Socat implements AutoCloseable {
     private Socat(Process process, Path log) {
         this.process = process;
         this.log = log;
-    }
-
-    /** True when every tool is on the PATH. */
-    public static boolean installed(String... tools) {
-        String path = System.getenv().getOrDefault("PATH", "");
-        outer:
-        for (String tool : tools) {
-            for (String dir : path.split(File.pathSeparator)) {
-                if (Files.isExecutable(Path.of(dir, tool))) {
-                    continue outer;
-                }
-            }
-            return false;
-        }
-        return true;
     }
 
     /** Runs {@code socat ADDRESS1 ADDRESS2} in {@code cwd} and waits for the pty links to appear. */
