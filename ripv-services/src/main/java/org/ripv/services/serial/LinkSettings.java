@@ -128,6 +128,11 @@ public record LinkSettings(String device, int baud, int dataBits, Parity parity,
                 commandTimeout, carrier, sendCommand, receiveCommand, reconnectEvery, config);
     }
 
+    public LinkSettings withVehicleCommands(String send, String receive) {
+        return new LinkSettings(device, baud, dataBits, parity, stopBits, lineEnding, prompt, idleTimeout,
+                commandTimeout, carrier, send, receive, reconnectEvery, ymodem);
+    }
+
     public LinkSettings withCarrier(CarrierMode mode) {
         return new LinkSettings(device, baud, dataBits, parity, stopBits, lineEnding, prompt, idleTimeout,
                 commandTimeout, mode, sendCommand, receiveCommand, reconnectEvery, ymodem);

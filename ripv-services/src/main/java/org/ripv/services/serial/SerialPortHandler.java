@@ -165,7 +165,7 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
         l.write((command + settings.lineEnding()).getBytes(StandardCharsets.ISO_8859_1));
         l.flush();
         StringBuilder text = new StringBuilder();
-        boolean closed = readReply(l, text, settings.commandTimeout().toMillis());
+        boolean closed = readReply(l, text, settings.commandTimeout().toMillis(), command);
         if (text.isEmpty() && !closed) {
             throw new ServiceException(ErrorCode.TIMEOUT, "no answer to '" + command + "' from " + l.describe()
                     + " within " + settings.idleTimeout().toMillis() + " ms");
@@ -180,16 +180,18 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
 
     /**
      * Reads into {@code text} until the prompt ends it, the line is idle, or {@code maxMillis}
-     * pass. Returns true when the link closed meanwhile.
+     * pass. Returns true when the link closed meanwhile. A prompt before the echo of
+     * {@code command} (a fresh connection's banner) only ends the reply if nothing follows it.
      */
-    private boolean readReply(Link l, StringBuilder text, long maxMillis) throws IOException {
+    private boolean readReply(Link l, StringBuilder text, long maxMillis, String command) throws IOException {
         byte[] buf = new byte[4096];
         long deadline = System.nanoTime() + maxMillis * 1_000_000;
         long idle = settings.idleTimeout().toMillis();
+        long wait = idle;
         while (System.nanoTime() - deadline < 0) {
             int n;
             try {
-                n = l.read(buf, 0, buf.length, idle);
+                n = l.read(buf, 0, buf.length, wait);
             } catch (EOFException e) {
                 return true;
             }
@@ -198,10 +200,43 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
             }
             text.append(new String(buf, 0, n, StandardCharsets.ISO_8859_1));
             if (endsWithPrompt(text)) {
-                return false;
+                if (command == null || echoEnd(text, command) >= 0) {
+                    return false;
+                }
+                wait = Math.min(idle, 200); // a banner's prompt, or a vehicle that does not echo
+            } else {
+                wait = idle;
             }
         }
         return false;
+    }
+
+    private boolean readReply(Link l, StringBuilder text, long maxMillis) throws IOException {
+        return readReply(l, text, maxMillis, null);
+    }
+
+    /** Where the echoed command line ends in {@code text}, or -1 if it has not been echoed. */
+    static int echoEnd(CharSequence text, String command) {
+        String t = text.toString();
+        int from = 0;
+        while (true) {
+            int i = t.indexOf(command, from);
+            if (i < 0) {
+                return -1;
+            }
+            int after = i + command.length();
+            if (after < t.length() && (t.charAt(after) == '\r' || t.charAt(after) == '\n')) {
+                return t.charAt(after) == '\r' && after + 1 < t.length() && t.charAt(after + 1) == '\n'
+                        ? after + 2 : after + 1;
+            }
+            from = i + 1;
+        }
+    }
+
+    /** True when the vehicle has echoed {@code command} and is back at its prompt after it. */
+    private boolean promptAfterEcho(CharSequence text, String command) {
+        int end = echoEnd(text, command);
+        return end >= 0 && endsWithPrompt(text.subSequence(end, text.length()));
     }
 
     private boolean endsWithPrompt(CharSequence text) {
@@ -217,16 +252,8 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
 
     /** Drops the echoed command line at the start and the prompt at the end. */
     String clean(String raw, String command) {
-        String s = raw;
-        String lead = s.stripLeading();
-        if (lead.startsWith(command)) {
-            s = lead.substring(command.length());
-            if (s.startsWith("\r\n")) {
-                s = s.substring(2);
-            } else if (s.startsWith("\r") || s.startsWith("\n")) {
-                s = s.substring(1);
-            }
-        }
+        int echo = echoEnd(raw, command);
+        String s = echo >= 0 ? raw.substring(echo) : raw;
         int from = Math.max(0, s.length() - 256);
         Matcher m = settings.prompt().matcher(s);
         int cut = -1;
@@ -291,10 +318,19 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
         Path dir = Files.createDirectories(workDir).resolve("get-" + TRANSFERS.incrementAndGet());
         try {
             DirectorySink sink = new DirectorySink(dir);
-            startVehicleCommand(l, settings.sendCommand() + " " + String.join(" ", names));
+            String vehicleCommand = settings.sendCommand() + " " + String.join(" ", names);
+            startVehicleCommand(l, vehicleCommand);
             ProgressReporter progress = new ProgressReporter(request, "receiving");
-            List<FileHeader> files = new YmodemReceiver(l, settings.ymodem(), progress)
-                    .stopWaitingWhen(this::endsWithPrompt).receiveBatch(sink);
+            List<FileHeader> files;
+            try {
+                files = new YmodemReceiver(l, settings.ymodem(), progress)
+                        .stopWaitingWhen(text -> promptAfterEcho(text, vehicleCommand)).receiveBatch(sink);
+            } catch (YmodemException e) {
+                // our 'C's may sit in the shell's line: end that line so the shell is clean again
+                l.write(settings.lineEnding().getBytes(StandardCharsets.ISO_8859_1));
+                l.flush();
+                throw e;
+            }
             StringBuilder ignored = new StringBuilder();
             readReply(l, ignored, settings.idleTimeout().toMillis() * 2);
             if (files.isEmpty()) {
@@ -331,13 +367,48 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
             throw new ServiceException(ErrorCode.BAD_FILE_NAME, e.getMessage());
         }
         startVehicleCommand(l, settings.receiveCommand());
+        awaitReceiver(l, settings.receiveCommand());
         ProgressReporter progress = new ProgressReporter(request, "sending");
-        new YmodemSender(l, settings.ymodem(), progress).sendBatch(List.of(file));
+        new YmodemSender(l, settings.ymodem(), progress).sendBatch(List.of(file), true);
         StringBuilder after = new StringBuilder();
         readReply(l, after, settings.idleTimeout().toMillis() * 2);
         String text = "sent " + file.name() + " (" + file.length() + " bytes) in " + progress.summary(file.length());
         log.info("{}: {}", handle, text);
         return Reply.ok(text);
+    }
+
+    /**
+     * Reads past the echo of the vehicle's receive command until its YMODEM receiver asks with a
+     * lone 'C'. A shell that answers with text instead ("Bad command", then its prompt, which
+     * holds a 'C' too) fails the command with that text rather than getting block 0 typed at it.
+     */
+    private void awaitReceiver(Link l, String vehicleCommand) throws IOException, ServiceException {
+        StringBuilder said = new StringBuilder();
+        byte[] buf = new byte[512];
+        long deadline = System.nanoTime() + settings.ymodem().startTimeout().toNanos();
+        while (System.nanoTime() - deadline < 0) {
+            int n = l.read(buf, 0, buf.length, settings.idleTimeout().toMillis());
+            if (n > 0) {
+                said.append(new String(buf, 0, n, StandardCharsets.ISO_8859_1));
+            }
+            int echo = echoEnd(said, vehicleCommand);
+            String rest = echo >= 0 ? said.substring(echo) : said.toString();
+            if (rest.strip().equals("C")) {
+                // a receiver sends 'C' and waits; a shell's text goes on at once
+                int more = l.read(buf, 0, buf.length, 200);
+                if (more == 0) {
+                    return;
+                }
+                said.append(new String(buf, 0, more, StandardCharsets.ISO_8859_1));
+                continue;
+            }
+            if (echo >= 0 && endsWithPrompt(rest) || n == 0 && !rest.isBlank()) {
+                throw new ServiceException(ErrorCode.TRANSFER_FAILED, "the vehicle did not start receiving after '"
+                        + vehicleCommand + "'; it said: " + clean(rest, vehicleCommand));
+            }
+        }
+        throw new ServiceException(ErrorCode.TRANSFER_FAILED, "the vehicle did not start receiving within "
+                + settings.ymodem().startTimeout().toSeconds() + " s after '" + vehicleCommand + "'");
     }
 
     private static String describe(List<FileData> files) {
@@ -397,6 +468,12 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
     private void tryOpen() {
         try {
             Link opened = opener.open(settings);
+            try {
+                settle(opened);
+            } catch (IOException e) {
+                opened.close();
+                throw e;
+            }
             link = opened;
             downReason = "";
             log.info("{}: link {} is up", handle, opened.describe());
@@ -406,6 +483,16 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
                 log.warn("{}: cannot open {}: {}", handle, settings.device(), why);
             }
             downReason = why;
+        }
+    }
+
+    /** Lets a fresh connection's banner pass, so it is not taken for the first reply. */
+    private void settle(Link l) throws IOException {
+        byte[] buf = new byte[4096];
+        long deadline = System.nanoTime() + settings.idleTimeout().toNanos();
+        int n;
+        while (System.nanoTime() - deadline < 0 && (n = l.read(buf, 0, buf.length, 100)) > 0) {
+            log.debug("{}: skipped {} bytes of greeting", handle, n);
         }
     }
 

@@ -152,6 +152,26 @@ class SimulatorOverTcpTest {
     }
 
     @Test
+    void vehicleWithoutTheConfiguredCommandsFailsFastWithItsOwnWords() throws Exception {
+        serial.stop();
+        String device = "tcp://127.0.0.1:" + glider.port();
+        serial = new SerialPortServer("testhost", List.of(settings(device).withVehicleCommands("sendfiles", "Creceive")),
+                null, false, tmp.resolve("work"));
+        serial.start();
+        probe = new ServiceProbe(serial);
+        long start = System.nanoTime();
+        ServiceProbe.Answer put = probe.send(handle, "ymodem:put X.BIN", new Attachment("X.BIN", new byte[100]), T);
+        assertEquals(ErrorCode.TRANSFER_FAILED, put.last().footer().errorCode());
+        assertTrue(put.text().contains("Bad command or file name"), put.text());
+        ServiceProbe.Answer get = probe.send(handle, "ymodem:get GLIDER.CFG", T);
+        assertEquals(ErrorCode.TRANSFER_FAILED, get.last().footer().errorCode());
+        assertTrue(get.text().contains("Bad command or file name"), get.text());
+        assertTrue(System.nanoTime() - start < 8_000_000_000L, "no YMODEM timeouts waited out");
+        assertFalse(Files.exists(glider.directory().resolve("X.BIN")));
+        assertTrue(probe.send(handle, "dir", T).text().contains("GLIDER.CFG"), "shell still usable");
+    }
+
+    @Test
     void goSubmergesTheGliderUntilItSurfaces() throws Exception {
         Eventually.await("link up", Duration.ofSeconds(5), () -> probe.status(handle).available());
         ServiceProbe.Answer go = probe.send(handle, "GO", T);

@@ -43,7 +43,17 @@ public final class YmodemSender {
 
     /** Sends the files as one batch. */
     public void sendBatch(List<SendFile> files) throws IOException {
-        awaitRequest(config.startTimeout().toMillis(), "the receiver to start");
+        sendBatch(files, false);
+    }
+
+    /**
+     * Sends the files as one batch; {@code requestSeen} says the caller has already read the
+     * receiver's first 'C' (it watched the line to tell a receiver from a shell's error text).
+     */
+    public void sendBatch(List<SendFile> files, boolean requestSeen) throws IOException {
+        if (!requestSeen) {
+            awaitRequest(config.startTimeout().toMillis(), "the receiver to start");
+        }
         for (SendFile file : files) {
             if (!sendFile(file)) {
                 awaitRequest(config.blockTimeout().toMillis() * config.maxRetries(), "the receiver to ask for the next file",
