@@ -85,6 +85,9 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
 
     /** Tries to open the link now and keeps retrying (and checking it) on {@code scheduler}. */
     public void start(ScheduledExecutorService scheduler) {
+        if (settings.carrier() == CarrierMode.REQUIRE && settings.isTcp()) {
+            log.warn("{}: --carrier require has no effect on {}: TCP has no DCD line", handle, settings.device());
+        }
         scheduler.execute(this::monitor);
         long every = settings.reconnectEvery().toMillis();
         monitor = scheduler.scheduleWithFixedDelay(this::monitor, every, every, TimeUnit.MILLISECONDS);

@@ -112,6 +112,10 @@ public final class SerialPortServerCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
+        if (thesisServer != null) {
+            System.err.println("Error: the server is given twice ('--server' and '" + thesisServer + "'); give it once");
+            return 2;
+        }
         List<LinkSettings> linkSettings = new ArrayList<>();
         try {
             for (String link : links) {
@@ -133,8 +137,13 @@ public final class SerialPortServerCommand implements Callable<Integer> {
         return 0;
     }
 
-    /** Accepts the thesis form {@code SerialPortServer //host} by turning it into {@code --server host}. */
-    static String[] normalize(String[] args) {
+    /**
+     * Accepts the thesis form {@code SerialPortServer //host} by turning a {@code //host}
+     * argument into {@code --server host} when no {@code --server} is given. Callers that run
+     * this command inside another picocli command (ServicesMain) should pass its arguments
+     * through here first, since {@code --server} is required.
+     */
+    public static String[] normalize(String[] args) {
         List<String> out = new ArrayList<>(List.of(args));
         boolean hasServer = out.stream().anyMatch(a -> a.equals("--server") || a.startsWith("--server="));
         if (!hasServer) {
