@@ -287,7 +287,7 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
         }
     }
 
-    /** Writes a vehicle command and reads its echo, so transfer bytes do not mix with the shell's. */
+    /** Writes a vehicle command on a line cleared of earlier chatter. */
     private void startVehicleCommand(Link l, String vehicleCommand) throws IOException {
         discardInput(l);
         l.write((vehicleCommand + settings.lineEnding()).getBytes(StandardCharsets.ISO_8859_1));
