@@ -142,6 +142,11 @@ public final class MailBox<I extends Message, O extends Message> {
         return outbox.take();
     }
 
+    /** Moves up to {@code max} replies that are already waiting into {@code into}, without blocking. */
+    public int drainReplies(java.util.Collection<? super O> into, int max) {
+        return outbox.drainTo(into, max);
+    }
+
     @Override
     public String toString() {
         return "MailBox[" + address + ", " + waiting() + " waiting" + (key.isHeld() ? ", busy" : "") + "]";

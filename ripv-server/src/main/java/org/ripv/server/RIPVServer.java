@@ -308,14 +308,19 @@ public final class RIPVServer implements AutoCloseable {
                     ErrorCode.BAD_REQUEST, "message id " + request.header().messageId() + " is already in use by a pending request")));
             return;
         }
-        ref.forward(request, (r, e) -> {
-            log.warn("could not reach {}: {}", ref, e.toString());
-            if (pending.complete(r.header()) != null) {
-                reply(new IncomingServerMessage(r.header()).reply(Footer.error(ref.descriptor().sid(), ErrorCode.SERVICE_GONE,
-                        ref.descriptor().name() + " could not be reached: " + e.getMessage()).via(SERVER_SERVICE)));
-            }
+        ref.forward(request);
+    }
+
+    /** A request that could not be handed to its service: fail it, and check whether the service lives. */
+    private void undeliverable(ServiceReference ref, IncomingServiceMessage r, Exception e) {
+        log.warn("could not reach {}: {}", ref, e.toString());
+        if (pending.complete(r.header()) != null) {
+            reply(new IncomingServerMessage(r.header()).reply(Footer.error(ref.descriptor().sid(), ErrorCode.SERVICE_GONE,
+                    ref.descriptor().name() + " could not be reached: " + e.getMessage()).via(SERVER_SERVICE)));
+        }
+        if (!checkers.isShutdown()) {
             checkers.execute(() -> check(ref));
-        });
+        }
     }
 
     private void timedOut(PendingRequests.Pending p) {
@@ -373,7 +378,7 @@ public final class RIPVServer implements AutoCloseable {
             ServiceName.parse(d.name());
             byte[] t = new byte[24];
             new SecureRandom().nextBytes(t);
-            ServiceReference ref = new ServiceReference(d, service, HexFormat.of().formatHex(t));
+            ServiceReference ref = new ServiceReference(d, service, HexFormat.of().formatHex(t), RIPVServer.this::undeliverable);
             ServiceReference old = services.put(d.name(), ref);
             if (old != null) {
                 drop(old, "registered again");
@@ -387,6 +392,20 @@ public final class RIPVServer implements AutoCloseable {
             ServiceReference ref = services.values().stream().filter(r -> r.token().equals(token)).findFirst()
                     .orElseThrow(() -> new SecurityException("unknown session token: register first"));
             ServiceReplies.accept(RIPVServer.this, ref, reply, pending);
+        }
+
+        @Override
+        public void serviceReplies(String token, List<OutgoingServiceMessage> replies) {
+            ServiceReference ref = services.values().stream().filter(r -> r.token().equals(token)).findFirst()
+                    .orElseThrow(() -> new SecurityException("unknown session token: register first"));
+            for (OutgoingServiceMessage reply : replies) {
+                ServiceReplies.accept(RIPVServer.this, ref, reply, pending);
+            }
+        }
+
+        @Override
+        public void serviceRequests(String token, List<IncomingServiceMessage> requests) {
+            throw new UnsupportedOperationException("the RIPVServer takes no service requests");
         }
 
         @Override
