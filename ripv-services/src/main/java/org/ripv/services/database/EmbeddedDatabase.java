@@ -110,10 +110,11 @@ public final class EmbeddedDatabase {
             throws SQLException, IOException {
         try (Connection c = DriverManager.getConnection(url + ";create=true", OWNER, ownerPassword)) {
             try (Statement st = c.createStatement()) {
-                // The DBO's credentials must come first; NATIVE authentication starts at the next boot.
+                // The DBO's credentials must come first. Storing them turns on NATIVE::LOCAL
+                // authentication by itself (Derby sets derby.authentication.provider); it starts
+                // at the next boot.
                 st.execute("CALL SYSCS_UTIL.SYSCS_CREATE_USER('" + OWNER + "', '" + ownerPassword + "')");
                 st.execute("CALL SYSCS_UTIL.SYSCS_CREATE_USER('" + READER + "', '" + readerPassword + "')");
-                setProperty(st, "derby.authentication.provider", "NATIVE::LOCAL");
                 setProperty(st, "derby.database.sqlAuthorization", "true");
                 setProperty(st, "derby.database.defaultConnectionMode", "noAccess");
                 setProperty(st, "derby.database.fullAccessUsers", OWNER);
