@@ -3,8 +3,6 @@ package org.ripv.services.database;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
-import java.net.InetAddress;
-import java.net.ServerSocket;
 import java.nio.file.Path;
 import java.sql.Connection;
 import java.sql.DriverManager;
@@ -13,8 +11,6 @@ import java.sql.SQLException;
 import java.sql.SQLIntegrityConstraintViolationException;
 import java.sql.Statement;
 import java.util.List;
-import java.util.concurrent.locks.LockSupport;
-import org.apache.derby.drda.NetworkServerControl;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -25,40 +21,18 @@ import org.junit.jupiter.api.io.TempDir;
  * Derby network server, and their constraints hold. PostgreSQL is in {@link PostgresTest}.
  */
 class SchemaTest {
-    private static NetworkServerControl network;
-    private static int port;
+    private static DerbyNetwork network;
 
     @BeforeAll
     static void startNetworkServer() throws Exception {
-        try (ServerSocket s = new ServerSocket(0)) {
-            port = s.getLocalPort();
-        }
-        network = new NetworkServerControl(InetAddress.getLoopbackAddress(), port);
-        network.start(null);
-        // start() returns before the server listens and Derby offers no "started" callback:
-        // ping it, a bounded number of times (5 s at most).
-        for (int i = 0; ; i++) {
-            try {
-                network.ping();
-                break;
-            } catch (Exception e) {
-                if (i == 50) {
-                    throw e;
-                }
-                LockSupport.parkNanos(100_000_000L);
-            }
-        }
+        network = DerbyNetwork.start();
     }
 
     @AfterAll
     static void stopNetworkServer() throws Exception {
         if (network != null) {
-            network.shutdown();
+            network.close();
         }
-    }
-
-    static int networkPort() {
-        return port;
     }
 
     @Test
@@ -105,7 +79,7 @@ class SchemaTest {
 
     @Test
     void loadsOverTheDerbyNetworkServer() throws Exception {
-        String url = "jdbc:derby://localhost:" + port + "/memory:networkSchemaTest";
+        String url = network.url("memory:networkSchemaTest");
         try (Connection c = DriverManager.getConnection(url + ";create=true")) {
             loadAndCheck(c, true);
         }
