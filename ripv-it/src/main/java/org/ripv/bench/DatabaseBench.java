@@ -88,46 +88,21 @@ public final class DatabaseBench {
         System.out.printf(Locale.ROOT, "DatabaseBench: %,d rows of (INTEGER, INTEGER, TIMESTAMP, DOUBLE, DOUBLE), %d runs after %d warm-ups, %s%n",
                 rows, runs, warmups, System.getProperty("java.vm.name") + " " + System.getProperty("java.version"));
 
-        // 1. direct JDBC
+        // All three paths are set up first and then measured in turn, round after round, so
+        // that JIT warm-up and the load of a shared machine fall on all of them alike.
         double[] direct = new double[runs];
-        try (Connection c = DriverManager.getConnection(db.url(), db.user(), db.password())) {
-            for (int i = -warmups; i < runs; i++) {
-                long t0 = System.nanoTime();
-                int n = directQuery(c, sql);
-                long t1 = System.nanoTime();
-                check(n, rows);
-                if (i >= 0) {
-                    direct[i] = (t1 - t0) / 1e6;
-                }
-            }
-        }
-
-        // 2. the service in-process (a service of its own, not connected to a server)
         double[] inProcess = new double[runs];
+        double[] endToEnd = new double[runs];
         long serialized = 0;
-        resetPeaks();
+
+        // 2. a service of its own, not connected to a server, for the in-process path
         DatabaseServer local = new DatabaseServer("localhost", List.of(db), limits);
         local.start();
-        try {
-            String mailbox = local.name().mailbox(MAILBOX).toString();
-            BlockingQueue<OutgoingServiceMessage> replies = new LinkedBlockingQueue<>();
-            local.replyTo(replies::add);
-            for (int i = -warmups; i < runs; i++) {
-                long t0 = System.nanoTime();
-                TableResult t = inProcess(local, mailbox, sql, replies);
-                long t1 = System.nanoTime();
-                check(t.rows().size(), rows);
-                if (i >= 0) {
-                    inProcess[i] = (t1 - t0) / 1e6;
-                }
-                serialized = serializedSize(t);
-            }
-        } finally {
-            local.stop();
-        }
+        BlockingQueue<OutgoingServiceMessage> replies = new LinkedBlockingQueue<>();
+        local.replyTo(replies::add);
+        String localMailbox = local.name().mailbox(MAILBOX).toString();
 
-        // 3. end to end: a real server, the service registered over RMI, a client on a socket
-        double[] endToEnd = new double[runs];
+        // 3. a real server, the service registered over RMI, a client on a socket
         ServerConfig config = ServerConfig.forTests(dir.resolve("server"));
         RIPVServer server = new RIPVServer(config);
         server.start();
@@ -137,7 +112,9 @@ public final class DatabaseBench {
         DatabaseServer service = new DatabaseServer("localhost", List.of(db), limits);
         ServiceConnector connector = ServiceConnector.connect(service, new ServiceOptions("localhost", server.registryPort(),
                 Files.readString(server.secretFile()).trim(), 0, Duration.ofSeconds(1)));
-        try (ClientSocketHandler client = ClientSocketHandler.connect("localhost", server.port())) {
+        resetPeaks();
+        try (Connection c = DriverManager.getConnection(db.url(), db.user(), db.password());
+             ClientSocketHandler client = ClientSocketHandler.connect("localhost", server.port())) {
             if (!connector.awaitRegistered(Duration.ofSeconds(30))) {
                 throw new IllegalStateException("the DatabaseServer did not register");
             }
@@ -145,21 +122,32 @@ public final class DatabaseBench {
             String mailbox = service.name().mailbox(MAILBOX).toString();
             for (int i = -warmups; i < runs; i++) {
                 long t0 = System.nanoTime();
-                OutgoingServerMessage r = client.call(mailbox, sql, Priority.NORMAL, Duration.ofMinutes(5), null);
+                check(directQuery(c, sql), rows);
                 long t1 = System.nanoTime();
+                TableResult t = inProcess(local, localMailbox, sql, replies);
+                long t2 = System.nanoTime();
+                check(t.rows().size(), rows);
+                t = null;
+                OutgoingServerMessage r = client.call(mailbox, sql, Priority.NORMAL, Duration.ofMinutes(5), null);
+                long t3 = System.nanoTime();
                 if (r.status() != Status.OK) {
                     throw new IllegalStateException("end to end failed: " + r.footer().replyText());
                 }
-                TableResult t = (TableResult) r.footer().result();
-                check(t.rows().size(), rows);
+                TableResult e = (TableResult) r.footer().result();
+                check(e.rows().size(), rows);
                 if (i >= 0) {
-                    endToEnd[i] = (t1 - t0) / 1e6;
+                    direct[i] = (t1 - t0) / 1e6;
+                    inProcess[i] = (t2 - t1) / 1e6;
+                    endToEnd[i] = (t3 - t2) / 1e6;
+                } else {
+                    serialized = serializedSize(e);
                 }
             }
         } finally {
             connector.close();
             service.stop();
             server.stop();
+            local.stop();
         }
         long peakHeap = peakHeap();
 
