@@ -1,0 +1,359 @@
+package org.ripv.client.handlers;
+
+import java.io.BufferedInputStream;
+import java.io.BufferedOutputStream;
+import java.io.DataInputStream;
+import java.io.DataOutputStream;
+import java.io.EOFException;
+import java.io.IOException;
+import java.io.InputStream;
+import java.net.InetSocketAddress;
+import java.net.Socket;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.time.Duration;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Consumer;
+import javax.net.SocketFactory;
+import org.ripv.messages.Attachment;
+import org.ripv.messages.FileData;
+import org.ripv.messages.Header;
+import org.ripv.messages.IncomingServerMessage;
+import org.ripv.messages.Message;
+import org.ripv.messages.OutgoingServerMessage;
+import org.ripv.messages.Priority;
+import org.ripv.messages.SessionInfo;
+import org.ripv.messages.Status;
+import org.ripv.wire.FrameCodec;
+import org.ripv.wire.ProtocolException;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * The client's end of the socket to a RIPVServer (thesis 5.2.6, figure 5.5). Requests go out as
+ * frames; a reader thread matches each reply to its request by message id and tells every
+ * {@link Listener}, so the GUI can dispatch on the Footer's SID or FID.
+ *
+ * <pre>{@code
+ * try (ClientSocketHandler c = ClientSocketHandler.connect("server.example.org", 4444)) {
+ *     c.login("alice", password);
+ *     OutgoingServerMessage r = c.call("", "?services", Priority.NORMAL, Duration.ofSeconds(10), null);
+ * }
+ * }</pre>
+ */
+public final class ClientSocketHandler implements AutoCloseable {
+    private static final Logger log = LoggerFactory.getLogger(ClientSocketHandler.class);
+    /** Files move in chunks of this size, so no frame is large. */
+    public static final int CHUNK = 256 * 1024;
+
+    /** Told of every reply and of the connection's end. Called on the reader thread. */
+    public interface Listener {
+        void onReply(OutgoingServerMessage reply);
+
+        default void onDisconnected(Exception cause) {
+        }
+    }
+
+    private record Pending(CompletableFuture<OutgoingServerMessage> done, Consumer<OutgoingServerMessage> progress) {}
+
+    private final Socket socket;
+    private final DataOutputStream out;
+    private final DataInputStream in;
+    private final FrameCodec codec;
+    private final Map<Long, Pending> pending = new ConcurrentHashMap<>();
+    private final List<Listener> listeners = new CopyOnWriteArrayList<>();
+    private final AtomicLong ids = new AtomicLong();
+    private final Thread reader;
+    private final String server;
+    private volatile SessionInfo session;
+    private volatile boolean closed;
+
+    private ClientSocketHandler(Socket socket, String server, int maxFrame) throws IOException {
+        this.socket = socket;
+        this.server = server;
+        this.codec = new FrameCodec(maxFrame);
+        this.out = new DataOutputStream(new BufferedOutputStream(socket.getOutputStream(), 64 * 1024));
+        this.in = new DataInputStream(new BufferedInputStream(socket.getInputStream(), 64 * 1024));
+        FrameCodec.writeGreeting(out);
+        FrameCodec.readGreeting(in);
+        this.reader = new Thread(this::readLoop, "ripv-client-reader-" + server);
+        reader.setDaemon(true);
+        reader.start();
+    }
+
+    /** Connects over plain TCP. */
+    public static ClientSocketHandler connect(String host, int port) throws IOException {
+        return connect(host, port, SocketFactory.getDefault(), Duration.ofSeconds(10));
+    }
+
+    /** Connects with the given socket factory (an {@code SSLSocketFactory} for TLS). */
+    public static ClientSocketHandler connect(String host, int port, SocketFactory factory, Duration timeout)
+            throws IOException {
+        Socket s = factory.createSocket();
+        try {
+            s.setTcpNoDelay(true);
+            s.connect(new InetSocketAddress(host, port), (int) timeout.toMillis());
+            s.setSoTimeout(0);
+            return new ClientSocketHandler(s, host + ":" + port, FrameCodec.DEFAULT_MAX_FRAME);
+        } catch (IOException | RuntimeException e) {
+            s.close();
+            throw e;
+        }
+    }
+
+    public void addListener(Listener l) {
+        listeners.add(l);
+    }
+
+    public void removeListener(Listener l) {
+        listeners.remove(l);
+    }
+
+    /** "host:port" of the server. */
+    public String server() {
+        return server;
+    }
+
+    /** Who the server logged us in as, or null before {@link #login}. */
+    public SessionInfo session() {
+        return session;
+    }
+
+    public boolean isOpen() {
+        return !closed && !socket.isClosed();
+    }
+
+    /** A fresh message id. */
+    public long nextId() {
+        return ids.incrementAndGet();
+    }
+
+    /**
+     * Logs in. The password travels in the request's attachment (use TLS across untrusted networks).
+     *
+     * @throws RipvErrorException with the server's reason when refused
+     */
+    public SessionInfo login(String user, char[] password) throws IOException, RipvErrorException {
+        byte[] pw = new String(password).getBytes(StandardCharsets.UTF_8);
+        Header h = new Header(nextId(), new org.ripv.messages.IdBadge("000000", user), List.of(), "", "",
+                "?login " + user, Priority.URGENT, new Attachment("password", pw));
+        OutgoingServerMessage r = await(send(h, null), Duration.ofSeconds(30));
+        java.util.Arrays.fill(pw, (byte) 0);
+        if (r.status() == Status.ERROR) {
+            throw new RipvErrorException(r);
+        }
+        if (!(r.footer().result() instanceof SessionInfo s)) {
+            throw new ProtocolException("the server answered ?login without session information");
+        }
+        session = s;
+        return s;
+    }
+
+    /**
+     * Sends a request; the future completes with its final (OK or ERROR) reply.
+     *
+     * @param progress told of each PROGRESS reply, or null
+     */
+    public CompletableFuture<OutgoingServerMessage> send(Header header, Consumer<OutgoingServerMessage> progress)
+            throws IOException {
+        if (closed) {
+            throw new IOException("the connection to " + server + " is closed");
+        }
+        CompletableFuture<OutgoingServerMessage> f = new CompletableFuture<>();
+        pending.put(header.messageId(), new Pending(f, progress));
+        try {
+            synchronized (out) {
+                codec.write(out, new IncomingServerMessage(header));
+            }
+        } catch (IOException e) {
+            pending.remove(header.messageId());
+            throw e;
+        }
+        return f;
+    }
+
+    /** Sends a command to a mailbox (empty for {@code ?} commands) and returns the future final reply. */
+    public CompletableFuture<OutgoingServerMessage> send(String mailbox, String body, Priority priority,
+                                                          Consumer<OutgoingServerMessage> progress) throws IOException {
+        return send(Header.request(nextId(), mailbox, body, priority), progress);
+    }
+
+    /** Sends and waits for the final reply, OK or ERROR (an ERROR is returned, not thrown). */
+    public OutgoingServerMessage call(String mailbox, String body, Priority priority, Duration timeout,
+                                      Consumer<OutgoingServerMessage> progress) throws IOException {
+        return await(send(mailbox, body, priority, progress), timeout);
+    }
+
+    private OutgoingServerMessage await(CompletableFuture<OutgoingServerMessage> f, Duration timeout) throws IOException {
+        try {
+            return f.get(timeout.toMillis(), TimeUnit.MILLISECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IOException("interrupted while waiting for the server");
+        } catch (TimeoutException e) {
+            throw new IOException("no reply from " + server + " within " + timeout.toSeconds() + " s");
+        } catch (ExecutionException e) {
+            throw e.getCause() instanceof IOException io ? io : new IOException(e.getCause());
+        }
+    }
+
+    /**
+     * Uploads a local file to the server's upload directory, in chunks. The server writes to a
+     * temporary file and moves it into place only when the last chunk arrived.
+     *
+     * @return the server's final reply to the last chunk
+     * @throws RipvErrorException when the server refuses (name, size, permission)
+     */
+    public OutgoingServerMessage upload(Path local, String remoteName, TransferListener listener)
+            throws IOException, RipvErrorException {
+        long total = Files.size(local);
+        listener = listener == null ? TransferListener.NONE : listener;
+        try (InputStream file = Files.newInputStream(local)) {
+            long offset = 0;
+            OutgoingServerMessage last = null;
+            do {
+                byte[] chunk = file.readNBytes((int) Math.min(CHUNK, total - offset));
+                Header h = new Header(nextId(), new org.ripv.messages.IdBadge("000000", ""), List.of(), "", "",
+                        "?upload " + remoteName + " " + offset + " " + total, Priority.NORMAL,
+                        new Attachment(remoteName, chunk));
+                last = await(send(h, null), Duration.ofMinutes(2));
+                if (last.status() == Status.ERROR) {
+                    throw new RipvErrorException(last);
+                }
+                offset += chunk.length;
+                if (!listener.progress(offset, total)) {
+                    call("", "?upload-cancel " + remoteName, Priority.NORMAL, Duration.ofSeconds(30), null);
+                    throw new IOException("upload of " + remoteName + " cancelled");
+                }
+            } while (offset < total);
+            return last;
+        }
+    }
+
+    /**
+     * Downloads a file from the server's download directory into {@code localDir}, in chunks,
+     * through a temporary file so that an interrupted download never looks complete.
+     */
+    public Path download(String name, Path localDir, TransferListener listener) throws IOException, RipvErrorException {
+        listener = listener == null ? TransferListener.NONE : listener;
+        Files.createDirectories(localDir);
+        Path target = localDir.resolve(name).normalize();
+        if (!target.getParent().equals(localDir.normalize())) {
+            throw new IOException("refusing to write '" + name + "' outside " + localDir);
+        }
+        Path tmp = Files.createTempFile(localDir, ".ripv-", ".part");
+        try (var file = Files.newOutputStream(tmp)) {
+            long offset = 0;
+            long total;
+            do {
+                OutgoingServerMessage r = call("", "?download " + name + " " + offset + " " + CHUNK, Priority.NORMAL,
+                        Duration.ofMinutes(2), null);
+                if (r.status() == Status.ERROR) {
+                    throw new RipvErrorException(r);
+                }
+                if (!(r.footer().result() instanceof FileData chunk) || chunk.offset() != offset) {
+                    throw new ProtocolException("the server sent no chunk at offset " + offset + " of " + name);
+                }
+                file.write(chunk.data());
+                offset += chunk.data().length;
+                total = chunk.total();
+                if (!listener.progress(offset, total)) {
+                    throw new IOException("download of " + name + " cancelled");
+                }
+                if (chunk.data().length == 0 && offset < total) {
+                    throw new ProtocolException("the server sent an empty chunk of " + name);
+                }
+            } while (offset < total);
+        } catch (IOException | RipvErrorException | RuntimeException e) {
+            Files.deleteIfExists(tmp);
+            throw e;
+        }
+        Files.move(tmp, target, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+        return target;
+    }
+
+    private void readLoop() {
+        Exception cause = null;
+        try {
+            while (!closed) {
+                Message m = codec.read(in);
+                if (!(m instanceof OutgoingServerMessage reply)) {
+                    throw new ProtocolException("the server sent a " + m.getClass().getSimpleName());
+                }
+                dispatch(reply);
+            }
+        } catch (EOFException e) {
+            cause = new IOException("the server closed the connection");
+        } catch (IOException e) {
+            cause = e;
+        } catch (RuntimeException e) {
+            log.error("reply dispatch failed", e);
+            cause = e;
+        } finally {
+            disconnected(cause);
+        }
+    }
+
+    private void dispatch(OutgoingServerMessage reply) {
+        long id = reply.header().messageId();
+        Pending p = reply.status().isFinal() ? pending.remove(id) : pending.get(id);
+        if (p != null) {
+            if (reply.status().isFinal()) {
+                p.done().complete(reply);
+            } else if (p.progress() != null) {
+                p.progress().accept(reply);
+            }
+        }
+        for (Listener l : listeners) {
+            try {
+                l.onReply(reply);
+            } catch (RuntimeException e) {
+                log.warn("a listener failed on {}", reply, e);
+            }
+        }
+    }
+
+    private void disconnected(Exception cause) {
+        boolean wasClosed = closed;
+        closed = true;
+        IOException failure = new IOException(cause == null ? "connection closed" : cause.getMessage(), cause);
+        pending.values().forEach(p -> p.done().completeExceptionally(failure));
+        pending.clear();
+        try {
+            socket.close();
+        } catch (IOException ignored) {
+            // closing anyway
+        }
+        if (!wasClosed) {
+            for (Listener l : listeners) {
+                try {
+                    l.onDisconnected(failure);
+                } catch (RuntimeException e) {
+                    log.warn("a listener failed on disconnect", e);
+                }
+            }
+        }
+    }
+
+    @Override
+    public void close() {
+        if (!closed) {
+            closed = true;
+            try {
+                socket.close();
+            } catch (IOException ignored) {
+                // nothing left to do
+            }
+        }
+    }
+}
