@@ -101,6 +101,23 @@ public final class PlotRenderer {
         return new Rendered(jpeg(chart, width, height), summary.rows(), series, points);
     }
 
+    /**
+     * Draws a small chart in memory, so the JVM loads JFreeChart, Java2D, the fonts and the JPEG
+     * encoder before the first real plot (about 2 s on a slow machine).
+     */
+    public static void warmUp() {
+        try {
+            DefaultXYDataset d = new DefaultXYDataset();
+            d.addSeries("warm-up", new double[][] {{0, 1, 2}, {0, 1, Double.NaN}});
+            JFreeChart chart = ChartFactory.createXYLineChart("warm-up", "x", "y", d, PlotOrientation.VERTICAL, true,
+                    false, false);
+            style(chart, 1);
+            jpeg(chart, 200, 150);
+        } catch (IOException | RuntimeException e) {
+            org.slf4j.LoggerFactory.getLogger(PlotRenderer.class).debug("warm-up plot failed: {}", e.toString());
+        }
+    }
+
     private static void style(JFreeChart chart, int series) {
         chart.setBackgroundPaint(Color.WHITE);
         chart.setAntiAlias(true);

@@ -69,6 +69,7 @@ public final class PlotWorker implements AutoCloseable {
         Path info = dir.resolve(Exchange.INFO);
         Path stop = dir.resolve(Exchange.STOP);
         try {
+            PlotRenderer.warmUp(); // class loading and fonts now, not in the first operator's request
             while (!closing) {
                 if (Files.exists(stop)) {
                     Files.deleteIfExists(stop);
