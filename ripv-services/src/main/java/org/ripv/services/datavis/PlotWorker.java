@@ -71,14 +71,14 @@ public final class PlotWorker implements AutoCloseable {
         try {
             PlotRenderer.warmUp(); // class loading and fonts now, not in the first operator's request
             while (!closing) {
-                if (Files.exists(stop)) {
-                    Files.deleteIfExists(stop);
-                    log.info("{} found: the plot worker in {} stops", Exchange.STOP, dir);
-                    break;
-                }
                 if (Files.exists(data) && Files.exists(info)) {
                     plotOnce(data, info);
                     continue;
+                }
+                if (Files.exists(stop)) { // after any pending plot, so "plot this, then stop" works
+                    Files.deleteIfExists(stop);
+                    log.info("{} found: the plot worker in {} stops", Exchange.STOP, dir);
+                    break;
                 }
                 WatchKey key = watch.take(); // sleeps until something in the directory changes
                 key.pollEvents();

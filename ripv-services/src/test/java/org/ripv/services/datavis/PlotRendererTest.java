@@ -57,6 +57,32 @@ class PlotRendererTest {
     }
 
     @Test
+    void aMillionRowsPlotInA48MegabyteHeapWhenTheWorkerRunsAsItsOwnProcess() throws Exception {
+        Path dir = Files.createDirectories(tmp.resolve("work"));
+        try (BufferedWriter w = Files.newBufferedWriter(dir.resolve(Exchange.DATA), StandardCharsets.UTF_8)) {
+            w.write("% title: a million rows, 3 series\n");
+            for (int i = 0; i < 1_000_000; i++) {
+                w.write(i + " " + (i % 977) + " " + Math.sqrt(i) + " " + (i % 10_007 == 0 ? "NaN" : "-1") + "\n");
+            }
+        }
+        Files.writeString(dir.resolve(Exchange.INFO), "million\n");
+        Files.writeString(dir.resolve(Exchange.STOP), ""); // plot what is there, then stop
+        Process p = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Xmx48m",
+                "-Djava.awt.headless=true", "-cp", System.getProperty("java.class.path"), PlotWorker.class.getName(),
+                dir.toString()).redirectErrorStream(true).redirectOutput(tmp.resolve("worker.log").toFile()).start();
+        boolean done = p.waitFor(120, java.util.concurrent.TimeUnit.SECONDS);
+        if (!done) {
+            p.destroyForcibly();
+        }
+        assertThat(done).as("worker finished").isTrue();
+        assertThat(Files.readString(dir.resolve(Exchange.OK)).strip()).as(Files.readString(tmp.resolve("worker.log")))
+                .isEqualTo("1");
+        VisHarness.decode(Files.readAllBytes(dir.resolve("million.jpg")));
+        assertThat(dir.resolve(Exchange.DATA)).doesNotExist();
+        assertThat(dir.resolve(Exchange.INFO)).doesNotExist();
+    }
+
+    @Test
     void aGapLeavesItsColumnsEmpty() throws Exception {
         // a flat line at y=1 from x=0..100 with x 30..70 missing: the middle of the plot has no line pixels
         StringBuilder sb = new StringBuilder("% size: 400x300\n0 0\n"); // (0,0) fixes the y range below the line
