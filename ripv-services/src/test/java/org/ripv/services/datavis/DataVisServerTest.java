@@ -148,6 +148,7 @@ class DataVisServerTest {
                         default -> "wrote no";
                     });
                     assertThat(h.leftovers()).isEmpty();
+                    assertThat(w.handled.getCount()).as("the fake worker answered").isZero();
                 }
             }
         }
@@ -162,6 +163,7 @@ class DataVisServerTest {
             try (PlotWorker real = PlotWorker.start(tmp)) {
                 ImageResult img = image(h.finalReply(id, 30));
                 VisHarness.decode(img.jpeg());
+                assertThat(real.plots()).isEqualTo(1);
             }
             assertThat(h.leftovers()).isEmpty();
         }
