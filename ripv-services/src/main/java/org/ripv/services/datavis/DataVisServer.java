@@ -218,9 +218,9 @@ public final class DataVisServer extends RIPVService {
             dir.register(watch, StandardWatchEventKinds.ENTRY_CREATE, StandardWatchEventKinds.ENTRY_MODIFY);
             DataFile.Summary summary = writeData(vis, file);
             Exchange.writeAtomically(dir, Exchange.INFO, (exchangeName + "\n").getBytes(StandardCharsets.UTF_8));
-            long points = summary.rows() * Math.max(1, summary.columns() - 1);
             request.progress("plotting " + summary.rows() + " rows of " + file.name() + " with the " + config.worker()
-                    + " worker", new Progress("plot " + jpegName, 0, points, 0));
+                    + " worker", new Progress("rows checked and handed to the " + config.worker() + " worker",
+                            summary.rows(), summary.rows(), 0));
             String status = awaitWorker(watch, vis);
             if (!status.equals("1") && !status.isEmpty()) {
                 String why = status.startsWith("0") ? status.substring(1).strip() : status;
