@@ -212,4 +212,19 @@ class DataVisServerTest {
         assertThat(DataVisServerCommand.run("--server", "h", "--worker", "matlab")).isEqualTo(2);
         assertThat(new File(tmp.toFile(), "x").exists()).isFalse();
     }
+
+    @Test
+    void launcherFailsClearlyWhenOctaveCannotBeStarted() throws Exception {
+        Path secret = tmp.resolve("service.secret");
+        Files.writeString(secret, "0123456789abcdef0123456789abcdef");
+        java.io.StringWriter err = new java.io.StringWriter();
+        picocli.CommandLine cl = new picocli.CommandLine(new DataVisServerCommand());
+        cl.setErr(new java.io.PrintWriter(err, true));
+        int exit = cl.execute(DataVisServerCommand.thesisForm(new String[] {"//localhost:1", "--secret-file",
+                secret.toString(), "--workdir", tmp.resolve("vis").toString(), "--worker", "octave", "--octave",
+                tmp.resolve("no-such-octave").toString()}));
+        assertThat(exit).isEqualTo(1);
+        assertThat(err.toString()).contains("cannot start the DataVisServer").contains("no-such-octave")
+                .contains("is Octave installed?");
+    }
 }
