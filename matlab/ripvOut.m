@@ -17,7 +17,8 @@
 %%  - the figure is invisible and printed with print(h, '-djpeg', ...), so it runs headless;
 %%  - the files are removed with delete(), not the shell's rm or del, and BEFORE ok.dat is
 %%    written: the service may write the next data.dat as soon as it sees ok.dat;
-%%  - a plot that fails writes '0 message' to ok.dat instead of stopping the loop.
+%%  - a plot that fails writes '0 message' to ok.dat instead of stopping the loop;
+%%  - a round the service gave up on (info.dat gone or changed) is dropped quietly.
 
 dataFile = 'data.dat';
 inputFile = 'info.dat';
@@ -123,6 +124,7 @@ while (1)
     outputFile = 'ripvOut';
   end
   outputFile = strtrim(outputFile);
+  outputName = outputFile;
   if isempty(regexp(outputFile, '\.jpg$', 'once'))
     outputFile = [outputFile '.jpg'];
   end
@@ -154,6 +156,26 @@ while (1)
   end
   if ~isempty(h)
     close(h);
+  end
+
+  %%if the service gave up on this round (timeout), info.dat is gone or names
+  %%another output: drop this picture and touch nothing of the next round
+  nowName = '';
+  fid = fopen(inputFile, 'r');
+  if fid ~= -1
+    nowName = fgetl(fid);
+    fclose(fid);
+    if ~ischar(nowName)
+      nowName = '';
+    end
+    nowName = strtrim(nowName);
+  end
+  if ~strcmp(nowName, outputName)
+    if exist(outputFile, 'file')
+      delete(outputFile);
+    end
+    disp('request abandoned: result dropped')
+    continue;
   end
 
   %%delete the input files first: the service writes the next ones when it sees ok.dat

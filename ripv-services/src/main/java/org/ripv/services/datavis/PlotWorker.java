@@ -122,6 +122,12 @@ public final class PlotWorker implements AutoCloseable {
         } catch (OutOfMemoryError e) {
             status = "0 out of memory while plotting";
         }
+        if (!output.equals(Exchange.firstLine(info).orElse(""))) {
+            // The service gave up on this round (timeout) and may have written the next one: touch nothing of it.
+            log.warn("the request for {} was abandoned while it was being plotted; result dropped", output);
+            Files.deleteIfExists(dir.resolve(Exchange.jpegName(output)));
+            return;
+        }
         // Input files go before ok.dat appears, so the service may write the next pair at once
         // (the thesis's script deleted them after ok.dat, racing the next request).
         Files.deleteIfExists(data);
