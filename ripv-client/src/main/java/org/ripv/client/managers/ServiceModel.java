@@ -45,6 +45,7 @@ public final class ServiceModel {
     private Progress progress;
     private final List<TableResult> tables = new ArrayList<>();
     private Picture picture;
+    private long transcriptRevision;
 
     ServiceModel(ServiceDescriptor descriptor) {
         this.descriptor = descriptor;
@@ -108,6 +109,11 @@ public final class ServiceModel {
     /** DAV: the latest picture, or null. */
     public Picture picture() {
         return picture;
+    }
+
+    /** Grows with every change of the transcript, so views know when to repaint it. */
+    public long transcriptRevision() {
+        return transcriptRevision;
     }
 
     /** The transcript as the reply area shows it. */
@@ -181,6 +187,7 @@ public final class ServiceModel {
     }
 
     void append(LineKind kind, String text) {
+        transcriptRevision++;
         transcript.add(new Line(kind, text));
         if (transcript.size() > MAX_LINES) {
             transcript.subList(0, transcript.size() - MAX_LINES).clear();
@@ -188,6 +195,7 @@ public final class ServiceModel {
     }
 
     void clearTranscript() {
+        transcriptRevision++;
         transcript.clear();
     }
 
