@@ -62,7 +62,8 @@ public record Header(long messageId, IdBadge origin, List<String> roles, String 
                 + (attachment == null ? "" : " +" + attachment) + "]";
     }
 
-    static String abbreviate(String s) {
+    /** The first 80 characters of a text, for logs and error messages. */
+    public static String abbreviate(String s) {
         return s.length() <= 80 ? s : s.substring(0, 77) + "...";
     }
 }

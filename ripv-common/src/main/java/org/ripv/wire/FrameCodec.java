@@ -74,12 +74,17 @@ public final class FrameCodec {
         return bytes.toByteArray();
     }
 
-    /** Writes one frame. The caller serializes access to the stream. */
+    /** Writes one frame and flushes. The caller serializes access to the stream. */
     public void write(DataOutputStream out, Message m) throws IOException {
+        writeNoFlush(out, m);
+        out.flush();
+    }
+
+    /** Writes one frame without flushing, for a writer that flushes when its queue runs dry. */
+    public void writeNoFlush(DataOutputStream out, Message m) throws IOException {
         byte[] body = encode(m);
         out.writeInt(body.length);
         out.write(body);
-        out.flush();
     }
 
     /**
@@ -89,7 +94,11 @@ public final class FrameCodec {
      * @throws ProtocolException for anything that is not a well-formed, allowed message
      */
     public Message read(DataInputStream in) throws IOException {
-        int length = in.readInt();
+        return readBody(in, in.readInt());
+    }
+
+    /** Reads a frame's body once its length has been read (so the caller can time the two apart). */
+    public Message readBody(DataInputStream in, int length) throws IOException {
         if (length <= 0 || length > maxFrame) {
             throw new ProtocolException("frame length " + length + " outside 1.." + maxFrame);
         }

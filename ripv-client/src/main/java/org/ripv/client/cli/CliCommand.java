@@ -1,0 +1,128 @@
+package org.ripv.client.cli;
+
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.InputStreamReader;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.List;
+import java.util.concurrent.Callable;
+import org.ripv.client.handlers.ClientSocketHandler;
+import org.ripv.client.handlers.RipvErrorException;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/**
+ * {@code ripv cli}: the headless client, for people at a terminal and for scripts. Exit codes:
+ * 0 every reply OK, 1 some reply was an ERROR, 3 could not connect or log in.
+ */
+@Command(name = "cli", mixinStandardHelpOptions = true,
+        description = "Talks to a RIPVServer in the COM panel's command language, from --exec lines or standard input.")
+public final class CliCommand implements Callable<Integer> {
+    public static final int EXIT_ERROR_REPLY = 1;
+    public static final int EXIT_NO_SESSION = 3;
+
+    @Option(names = "--server", required = true, paramLabel = "HOST[:PORT]", description = "The server (port 4444 unless given).")
+    String server;
+    @Option(names = "--user", required = true, description = "User name.")
+    String user;
+    @Option(names = "--password", description = "Password (else --password-file, else $RIPV_PASSWORD).")
+    String password;
+    @Option(names = "--password-file", description = "File whose first line is the password.")
+    Path passwordFile;
+    @Option(names = "--json", description = "One JSON object per reply line.")
+    boolean json;
+    @Option(names = "--exec", paramLabel = "LINE", description = "A line to run (repeatable); without any, lines come from standard input.")
+    List<String> exec;
+    @Option(names = "--timeout", defaultValue = "3600", description = "Seconds to wait for one reply (default ${DEFAULT-VALUE}; the server fails silent requests sooner).")
+    long timeout;
+
+    private final InputStream in;
+    private final PrintStream out;
+    private final PrintStream err;
+
+    public CliCommand() {
+        this(System.in, System.out, System.err);
+    }
+
+    public CliCommand(InputStream in, PrintStream out, PrintStream err) {
+        this.in = in;
+        this.out = out;
+        this.err = err;
+    }
+
+    @Override
+    public Integer call() throws IOException {
+        String host = server;
+        int port = 4444;
+        int colon = server.lastIndexOf(':');
+        if (colon > 0 && server.indexOf(':') == colon) {
+            host = server.substring(0, colon);
+            try {
+                port = Integer.parseInt(server.substring(colon + 1));
+            } catch (NumberFormatException e) {
+                err.println("Error: '" + server + "' is not HOST[:PORT]");
+                return 2;
+            }
+        }
+        char[] pw = password();
+        if (pw == null) {
+            err.println("Error: no password: give --password, --password-file or set RIPV_PASSWORD");
+            return 2;
+        }
+        ClientSocketHandler client;
+        try {
+            client = ClientSocketHandler.connect(host, port);
+        } catch (IOException e) {
+            err.println("Error: cannot connect to " + host + ":" + port + ": " + e.getMessage());
+            return EXIT_NO_SESSION;
+        }
+        try (client) {
+            try {
+                client.login(user, pw);
+            } catch (RipvErrorException e) {
+                err.println("Error: log-in refused: " + e.getMessage());
+                return EXIT_NO_SESSION;
+            } finally {
+                java.util.Arrays.fill(pw, '\0');
+            }
+            CliSession session = new CliSession(client, out, err, json, Duration.ofSeconds(timeout));
+            try {
+                if (exec != null && !exec.isEmpty()) {
+                    for (String line : exec) {
+                        if (!session.run(line)) {
+                            break;
+                        }
+                    }
+                } else {
+                    BufferedReader r = new BufferedReader(new InputStreamReader(in, StandardCharsets.UTF_8));
+                    String line;
+                    while ((line = r.readLine()) != null && session.run(line)) {
+                        out.flush();
+                    }
+                }
+            } catch (IOException e) {
+                err.println("Error: " + e.getMessage());
+                return EXIT_NO_SESSION;
+            }
+            out.flush();
+            return session.anyError() ? EXIT_ERROR_REPLY : 0;
+        }
+    }
+
+    private char[] password() throws IOException {
+        if (password != null) {
+            return password.toCharArray();
+        }
+        if (passwordFile != null) {
+            List<String> lines = Files.readAllLines(passwordFile, StandardCharsets.UTF_8);
+            return lines.isEmpty() ? null : lines.get(0).toCharArray();
+        }
+        String env = System.getenv("RIPV_PASSWORD");
+        return env == null ? null : env.toCharArray();
+    }
+}

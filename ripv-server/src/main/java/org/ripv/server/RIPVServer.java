@@ -1,0 +1,477 @@
+package org.ripv.server;
+
+import java.io.IOException;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
+import java.rmi.RemoteException;
+import java.rmi.registry.LocateRegistry;
+import java.rmi.registry.Registry;
+import java.security.MessageDigest;
+import java.security.SecureRandom;
+import java.util.HexFormat;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
+import javax.net.ServerSocketFactory;
+import org.ripv.messages.ErrorCode;
+import org.ripv.messages.Footer;
+import org.ripv.messages.Header;
+import org.ripv.messages.Ids;
+import org.ripv.messages.IncomingServerMessage;
+import org.ripv.messages.IncomingServiceMessage;
+import org.ripv.messages.MailboxStatus;
+import org.ripv.messages.OutgoingServerMessage;
+import org.ripv.messages.OutgoingServiceMessage;
+import org.ripv.messages.ServiceDescriptor;
+import org.ripv.naming.ServiceName;
+import org.ripv.post.MailBox;
+import org.ripv.post.PostOffice;
+import org.ripv.rmi.GenericRMIInterface;
+import org.ripv.rmi.RmiSupport;
+import org.ripv.server.files.FileStore;
+import org.ripv.server.handlers.SocketHandler;
+import org.ripv.server.permit.PermitFile;
+import org.ripv.wire.FrameCodec;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * The central broker (thesis 4.1.1, figure 5.3). Clients connect to its socket port; services
+ * register over RMI in the registry it creates. Every request lands in the "RIPV Post Office"
+ * MailBox, whose TaskManager either runs a {@code ?} command or forwards the request to the
+ * service that owns the addressed MailBox; replies come back through {@code serviceReply} and go
+ * out to the client that asked.
+ *
+ * <pre>{@code
+ * RIPVServer server = new RIPVServer(ServerConfig.defaults(Path.of("data")));
+ * server.start();          // returns at once; port(), registryPort() are now bound
+ * ...
+ * server.stop();           // releases threads, ports and files
+ * }</pre>
+ */
+public final class RIPVServer implements AutoCloseable {
+    private static final Logger log = LoggerFactory.getLogger(RIPVServer.class);
+    /** The server's one MailBox. */
+    public static final String POST_OFFICE = "RIPV Post Office";
+    /** The name rules use for the server's own commands. */
+    public static final String SERVER_SERVICE = "RIPVServer";
+
+    private final ServerConfig config;
+    private final Map<String, SocketHandler> clients = new ConcurrentHashMap<>();
+    private final Map<String, ServiceReference> services = new ConcurrentHashMap<>();
+    private final Map<String, OperatorLock> locks = new ConcurrentHashMap<>();
+    private final AtomicInteger nextClientId = new AtomicInteger(100_000);
+    private final PostOffice<IncomingServerMessage, OutgoingServerMessage> postOffice = new PostOffice<>(200_000);
+    private final ScheduledExecutorService timers;
+    private final ExecutorService checkers;
+    private final ServerRemote remote = new ServerRemote();
+
+    private volatile PermitFile permits;
+    private FileStore files;
+    private String secret;
+    private FrameCodec codec;
+    private MailBox<IncomingServerMessage, OutgoingServerMessage> box;
+    private PendingRequests pending;
+    private ServerSocket listener;
+    private Thread acceptor;
+    private Registry registry;
+    private int registryPort;
+    private AutoCloseable landingPage;
+    private volatile boolean running;
+
+    /** An operator's hold on a MailBox ({@code ?lock}). */
+    record OperatorLock(String user, String clientId, long untilMillis) {
+        boolean expired() {
+            return System.currentTimeMillis() > untilMillis;
+        }
+    }
+
+    public RIPVServer(ServerConfig config) {
+        this.config = config;
+        this.timers = Executors.newScheduledThreadPool(1, named("ripv-server-timer"));
+        this.checkers = Executors.newFixedThreadPool(4, named("ripv-service-check"));
+    }
+
+    private static java.util.concurrent.ThreadFactory named(String name) {
+        AtomicInteger n = new AtomicInteger();
+        return r -> {
+            Thread t = new Thread(r, name + "-" + n.incrementAndGet());
+            t.setDaemon(true);
+            return t;
+        };
+    }
+
+    /** Opens the data directory, the permit file, the RMI registry and the client port. Returns at once. */
+    public synchronized void start() throws IOException {
+        if (running) {
+            return;
+        }
+        RmiSupport.configure(5_000, 15_000);
+        Files.createDirectories(config.dataDir());
+        permits = PermitFile.load(config.permitFile());
+        files = new FileStore(config.dataDir().resolve("upload"), config.dataDir().resolve("download"), config.maxUpload());
+        secret = loadOrCreateSecret(config.dataDir().resolve("service.secret"));
+        codec = new FrameCodec(config.maxFrame());
+        pending = new PendingRequests(timers, config.requestTimeout(), this::timedOut);
+        box = postOffice.open(POST_OFFICE, new ServerTaskManager(this));
+
+        registryPort = config.registryPort() == 0 ? freePort() : config.registryPort();
+        registry = LocateRegistry.createRegistry(registryPort);
+        GenericRMIInterface stub = RmiSupport.export(remote, registryPort);
+        registry.rebind(GenericRMIInterface.BINDING, stub);
+
+        ServerSocketFactory factory = config.tls() == null ? ServerSocketFactory.getDefault()
+                : config.tls().getServerSocketFactory();
+        InetAddress bind = config.bindAddress() == null ? null : InetAddress.getByName(config.bindAddress());
+        listener = factory.createServerSocket();
+        listener.setReuseAddress(true);
+        listener.bind(new InetSocketAddress(bind, config.port()), 128);
+        running = true;
+        acceptor = new Thread(this::acceptLoop, "ripv-server-acceptor");
+        acceptor.setDaemon(true);
+        acceptor.start();
+        long check = config.serviceCheck().toMillis();
+        timers.scheduleWithFixedDelay(this::checkServices, check, check, TimeUnit.MILLISECONDS);
+        log.info("RIPVServer listening for clients on port {}{}, RMI registry on port {}, data in {}", port(),
+                config.tls() == null ? "" : " (TLS)", registryPort, config.dataDir().toAbsolutePath());
+    }
+
+    /** Attaches something to stop with the server (the landing page). */
+    public void attach(AutoCloseable part) {
+        this.landingPage = part;
+    }
+
+    private static int freePort() throws IOException {
+        try (ServerSocket s = new ServerSocket(0)) {
+            return s.getLocalPort();
+        }
+    }
+
+    private static String loadOrCreateSecret(Path file) throws IOException {
+        if (Files.exists(file)) {
+            String s = Files.readString(file, StandardCharsets.UTF_8).trim();
+            if (s.length() >= 16) {
+                return s;
+            }
+            log.warn("{} holds no usable secret; writing a new one", file);
+        }
+        byte[] b = new byte[32];
+        new SecureRandom().nextBytes(b);
+        String s = HexFormat.of().formatHex(b);
+        Path tmp = file.resolveSibling(file.getFileName() + ".tmp");
+        Files.deleteIfExists(tmp);
+        try {
+            Files.createFile(tmp, PosixFilePermissions.asFileAttribute(PosixFilePermissions.fromString("rw-------")));
+        } catch (UnsupportedOperationException e) {
+            Files.createFile(tmp);
+        }
+        Files.writeString(tmp, s + "\n", StandardCharsets.UTF_8);
+        Files.move(tmp, file, java.nio.file.StandardCopyOption.REPLACE_EXISTING, java.nio.file.StandardCopyOption.ATOMIC_MOVE);
+        log.info("wrote a new service secret to {} (readable by its owner only)", file);
+        return s;
+    }
+
+    private void acceptLoop() {
+        while (running) {
+            Socket s;
+            try {
+                s = listener.accept();
+            } catch (IOException e) {
+                if (running) {
+                    log.warn("accept failed: {}", e.toString());
+                }
+                continue;
+            }
+            if (clients.size() >= config.maxClients()) {
+                log.warn("refusing {}: {} clients connected already", s.getRemoteSocketAddress(), clients.size());
+                closeQuietly(s);
+                continue;
+            }
+            String id = newClientId();
+            SocketHandler h = new SocketHandler(s, id, codec, new Dispatch());
+            clients.put(id, h);
+            log.info("client {} connected from {}", id, s.getRemoteSocketAddress());
+            h.start();
+        }
+    }
+
+    private String newClientId() {
+        while (true) {
+            int n = nextClientId.incrementAndGet();
+            if (n > 999_999) {
+                nextClientId.compareAndSet(n, 100_000);
+                continue;
+            }
+            String id = Integer.toString(n);
+            if (!clients.containsKey(id)) {
+                return id;
+            }
+        }
+    }
+
+    private static void closeQuietly(Socket s) {
+        try {
+            s.close();
+        } catch (IOException ignored) {
+            // nothing to do
+        }
+    }
+
+    /** Requests arriving on client sockets. */
+    private final class Dispatch implements SocketHandler.Dispatcher {
+        @Override
+        public void received(SocketHandler client, IncomingServerMessage request) {
+            Header h = request.header();
+            String body = h.body().trim();
+            if (body.equals("?login") || body.startsWith("?login ")) {
+                // On the client's own thread: a slow password hash must not hold up the Post Office.
+                client.send(Login.login(RIPVServer.this, client, request));
+                return;
+            }
+            if (!client.isLoggedIn() && !body.equals("?help") && !body.equals("?ping")) {
+                client.send(request.reply(Footer.error(Ids.FID_LOGIN, ErrorCode.NOT_LOGGED_IN,
+                        "log in first (?login USER with the password), then send '" + Header.abbreviate(body) + "'")));
+                return;
+            }
+            IncomingServerMessage stamped = new IncomingServerMessage(
+                    h.withOrigin(client.badge(), client.roles()).withDestination(""));
+            if (!box.deliver(stamped)) {
+                client.send(request.reply(Footer.error(Ids.FID_NONE, ErrorCode.NOT_AVAILABLE,
+                        "the server is overloaded: too many requests waiting; try again shortly")));
+            }
+        }
+
+        @Override
+        public void closed(SocketHandler client) {
+            clients.remove(client.clientId(), client);
+            pending.forgetClient(client.clientId());
+            files.abortAll(client.clientId());
+            locks.values().removeIf(l -> l.clientId().equals(client.clientId()));
+        }
+    }
+
+    // ---- used by the TaskManager and commands (package-private) ----
+
+    ServerConfig config() {
+        return config;
+    }
+
+    PermitFile permits() {
+        return permits;
+    }
+
+    FileStore files() {
+        return files;
+    }
+
+    ExecutorService checkers() {
+        return checkers;
+    }
+
+    Map<String, OperatorLock> locks() {
+        return locks;
+    }
+
+    Optional<SocketHandler> client(String clientId) {
+        return Optional.ofNullable(clients.get(clientId));
+    }
+
+    Optional<ServiceReference> service(String fullName) {
+        return Optional.ofNullable(services.get(fullName));
+    }
+
+    List<ServiceReference> services() {
+        return services.values().stream().sorted(java.util.Comparator.comparing(r -> r.descriptor().name())).toList();
+    }
+
+    /** Posts a reply for the outbox assistant to deliver. */
+    void reply(OutgoingServerMessage reply) {
+        box.post(reply);
+    }
+
+    /** Forwards a checked request to its service; the request is now pending. */
+    void forward(ServiceReference ref, IncomingServiceMessage request) {
+        if (!pending.add(request.header(), ref.descriptor().name())) {
+            reply(new IncomingServerMessage(request.header()).reply(Footer.error(ref.descriptor().sid(),
+                    ErrorCode.BAD_REQUEST, "message id " + request.header().messageId() + " is already in use by a pending request")));
+            return;
+        }
+        ref.forward(request, (r, e) -> {
+            log.warn("could not reach {}: {}", ref, e.toString());
+            if (pending.complete(r.header()) != null) {
+                reply(new IncomingServerMessage(r.header()).reply(Footer.error(ref.descriptor().sid(), ErrorCode.SERVICE_GONE,
+                        ref.descriptor().name() + " could not be reached: " + e.getMessage()).via(SERVER_SERVICE)));
+            }
+            checkers.execute(() -> check(ref));
+        });
+    }
+
+    private void timedOut(PendingRequests.Pending p) {
+        ServiceReference ref = services.get(p.service());
+        String sid = ref == null ? Ids.FID_NONE : ref.descriptor().sid();
+        reply(new IncomingServerMessage(p.header()).reply(Footer.error(sid, ErrorCode.TIMEOUT,
+                p.service() + " did not answer '" + Header.abbreviate(p.header().body()) + "' within "
+                        + config.requestTimeout().toSeconds() + " s").via(SERVER_SERVICE)));
+    }
+
+    private void checkServices() {
+        for (ServiceReference ref : services.values()) {
+            checkers.execute(() -> check(ref));
+        }
+    }
+
+    private void check(ServiceReference ref) {
+        try {
+            ref.mailboxes();
+        } catch (RemoteException | RuntimeException e) {
+            if (services.remove(ref.descriptor().name(), ref)) {
+                log.warn("{} is gone ({}); removed it from the service list", ref, e.getClass().getSimpleName());
+                drop(ref, "went away");
+            }
+        }
+    }
+
+    private void drop(ServiceReference ref, String why) {
+        ref.close();
+        for (PendingRequests.Pending p : pending.failService(ref.descriptor().name())) {
+            reply(new IncomingServerMessage(p.header()).reply(Footer.error(ref.descriptor().sid(), ErrorCode.SERVICE_GONE,
+                    ref.descriptor().name() + " " + why + " before answering '" + Header.abbreviate(p.header().body())
+                            + "'").via(SERVER_SERVICE)));
+        }
+    }
+
+    /** Current MailBox status with the operator lock added. */
+    MailboxStatus withLock(MailboxStatus s) {
+        OperatorLock l = locks.get(s.address());
+        return l == null || l.expired() ? s : s.withLock(l.user());
+    }
+
+    /** The server's side of {@link GenericRMIInterface}. */
+    private final class ServerRemote implements GenericRMIInterface {
+        @Override
+        public String register(ServiceDescriptor d, GenericRMIInterface service, String given) {
+            if (given == null || !MessageDigest.isEqual(given.getBytes(StandardCharsets.UTF_8),
+                    secret.getBytes(StandardCharsets.UTF_8))) {
+                log.warn("refused a registration of {}: wrong service secret", d == null ? "?" : d.name());
+                throw new SecurityException("wrong service secret: give the server's DATA/service.secret with --secret-file");
+            }
+            if (d == null || service == null) {
+                throw new IllegalArgumentException("a registration needs a descriptor and the service's stub");
+            }
+            ServiceName.parse(d.name());
+            byte[] t = new byte[24];
+            new SecureRandom().nextBytes(t);
+            ServiceReference ref = new ServiceReference(d, service, HexFormat.of().formatHex(t));
+            ServiceReference old = services.put(d.name(), ref);
+            if (old != null) {
+                drop(old, "registered again");
+            }
+            log.info("{} registered ({})", ref, d.description());
+            return ref.token();
+        }
+
+        @Override
+        public void serviceReply(String token, OutgoingServiceMessage reply) {
+            ServiceReference ref = services.values().stream().filter(r -> r.token().equals(token)).findFirst()
+                    .orElseThrow(() -> new SecurityException("unknown session token: register first"));
+            ServiceReplies.accept(RIPVServer.this, ref, reply, pending);
+        }
+
+        @Override
+        public boolean heartbeat(String token) {
+            return services.values().stream().anyMatch(r -> r.token().equals(token));
+        }
+
+        @Override
+        public void serviceRequest(String token, IncomingServiceMessage request) {
+            throw new UnsupportedOperationException("the RIPVServer takes no service requests");
+        }
+
+        @Override
+        public List<MailboxStatus> mailboxes(String token) {
+            throw new UnsupportedOperationException("ask ?mailboxes over the client socket");
+        }
+    }
+
+    /** The client port (useful with port 0). */
+    public int port() {
+        return listener.getLocalPort();
+    }
+
+    public int registryPort() {
+        return registryPort;
+    }
+
+    public Path secretFile() {
+        return config.dataDir().resolve("service.secret");
+    }
+
+    public FileStore fileStore() {
+        return files;
+    }
+
+    /** How many services are registered now. */
+    public int serviceCount() {
+        return services.size();
+    }
+
+    /** Reloads the permit file (after {@code ripv passwd}). */
+    public void reloadPermits() throws IOException {
+        permits = PermitFile.load(config.permitFile());
+    }
+
+    /** Stops listening, disconnects clients, withdraws from RMI. Idempotent. */
+    public synchronized void stop() {
+        if (!running) {
+            return;
+        }
+        running = false;
+        if (landingPage != null) {
+            try {
+                landingPage.close();
+            } catch (Exception e) {
+                log.debug("landing page close: {}", e.toString());
+            }
+        }
+        try {
+            listener.close();
+        } catch (IOException ignored) {
+            // closing anyway
+        }
+        clients.values().forEach(SocketHandler::close);
+        services.values().forEach(ServiceReference::close);
+        services.clear();
+        try {
+            registry.unbind(GenericRMIInterface.BINDING);
+        } catch (Exception ignored) {
+            // already gone
+        }
+        RmiSupport.unexport(remote);
+        try {
+            java.rmi.server.UnicastRemoteObject.unexportObject(registry, true);
+        } catch (java.rmi.NoSuchObjectException ignored) {
+            // already gone
+        }
+        timers.shutdownNow();
+        checkers.shutdownNow();
+        postOffice.stop();
+        log.info("RIPVServer stopped");
+    }
+
+    @Override
+    public void close() {
+        stop();
+    }
+}

@@ -1,0 +1,290 @@
+package org.ripv.server;
+
+import java.io.IOException;
+import java.nio.file.NoSuchFileException;
+import java.rmi.RemoteException;
+import java.time.Instant;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import org.ripv.messages.ErrorCode;
+import org.ripv.messages.FileData;
+import org.ripv.messages.FileListing;
+import org.ripv.messages.Footer;
+import org.ripv.messages.Ids;
+import org.ripv.messages.IncomingServerMessage;
+import org.ripv.messages.MailboxList;
+import org.ripv.messages.MailboxStatus;
+import org.ripv.messages.OutgoingServerMessage;
+import org.ripv.messages.ServiceDescriptor;
+import org.ripv.messages.ServiceList;
+import org.ripv.messages.SessionInfo;
+import org.ripv.naming.MailboxAddress;
+import org.ripv.server.files.FileStore;
+import org.ripv.server.files.FileTooLargeException;
+import org.ripv.server.permit.PermitFile;
+
+/**
+ * The server's own {@code ?} commands (Appendix B and docs/protocol.md). Each reply carries the
+ * command's FID. Commands that must ask services ({@code ?mailboxes}, {@code ?status}) run off
+ * the Post Office's thread so that a slow service cannot hold up everyone else.
+ */
+final class ServerCommands {
+    static final long MAX_DOWNLOAD_CHUNK = 1024 * 1024;
+    static final long MAX_LOCK_SECONDS = 3600;
+
+    private record Command(String fid, String usage, String help) {}
+
+    private static final Map<String, Command> COMMANDS = new java.util.LinkedHashMap<>();
+
+    static {
+        COMMANDS.put("?help", new Command(Ids.FID_HELP, "?help", "this list"));
+        COMMANDS.put("?ping", new Command(Ids.FID_PING, "?ping", "answers pong"));
+        COMMANDS.put("?whoami", new Command(Ids.FID_WHOAMI, "?whoami", "your client id, user and roles"));
+        COMMANDS.put("?dldir", new Command(Ids.FID_DLDIR, "?dldir", "the download directory (files from services)"));
+        COMMANDS.put("?uldir", new Command(Ids.FID_ULDIR, "?uldir", "the upload directory (files from clients)"));
+        COMMANDS.put("?dlfiles", new Command(Ids.FID_DLFILES, "?dlfiles", "list the download directory"));
+        COMMANDS.put("?ulfiles", new Command(Ids.FID_ULFILES, "?ulfiles", "list the upload directory"));
+        COMMANDS.put("?mailboxes", new Command(Ids.FID_MAILBOXES, "?mailboxes", "the MailBoxes of every service"));
+        COMMANDS.put("?status", new Command(Ids.FID_STATUS, "?status MAILBOX", "available or not, busy, who holds its lock"));
+        COMMANDS.put("?services", new Command(Ids.FID_SERVICES, "?services", "the registered services"));
+        COMMANDS.put("?upload", new Command(Ids.FID_UPLOAD, "?upload NAME OFFSET TOTAL", "one chunk of an upload (the clients' put)"));
+        COMMANDS.put("?upload-cancel", new Command(Ids.FID_UPLOAD, "?upload-cancel NAME", "drop an unfinished upload"));
+        COMMANDS.put("?download", new Command(Ids.FID_DOWNLOAD, "?download NAME OFFSET LENGTH", "one chunk of a download (the clients' get)"));
+        COMMANDS.put("?lock", new Command(Ids.FID_LOCK, "?lock MAILBOX [SECONDS]", "keep others from commanding a MailBox (default 300 s)"));
+        COMMANDS.put("?unlock", new Command(Ids.FID_UNLOCK, "?unlock MAILBOX", "release your lock"));
+        COMMANDS.put("?logout", new Command(Ids.FID_LOGOUT, "?logout", "end the session and close the connection"));
+    }
+
+    private final RIPVServer server;
+
+    ServerCommands(RIPVServer server) {
+        this.server = server;
+    }
+
+    /** Runs one {@code ?} command; its reply (or replies) go to the Post Office's outbox. */
+    void run(IncomingServerMessage request) {
+        String body = request.header().body().trim();
+        String[] w = body.split("\\s+");
+        Command c = COMMANDS.get(w[0].toLowerCase(java.util.Locale.ROOT));
+        if (c == null) {
+            server.reply(ServerTaskManager.error(request, Ids.FID_NONE, ErrorCode.UNKNOWN_COMMAND,
+                    "unknown server command '" + w[0] + "'; ?help lists them"));
+            return;
+        }
+        try {
+            OutgoingServerMessage reply = execute(request, c, w);
+            if (reply != null) {
+                server.reply(reply);
+            }
+        } catch (FileTooLargeException e) {
+            server.reply(ServerTaskManager.error(request, c.fid(), ErrorCode.TOO_LARGE, e.getMessage()));
+        } catch (NoSuchFileException e) {
+            server.reply(ServerTaskManager.error(request, c.fid(), ErrorCode.BAD_FILE_NAME, e.getMessage()));
+        } catch (SecurityRefusal e) {
+            server.reply(ServerTaskManager.error(request, c.fid(), ErrorCode.FORBIDDEN, e.getMessage()));
+        } catch (IllegalArgumentException e) {
+            server.reply(ServerTaskManager.error(request, c.fid(), ErrorCode.BAD_REQUEST, e.getMessage()));
+        } catch (IOException e) {
+            server.reply(ServerTaskManager.error(request, c.fid(), ErrorCode.INTERNAL, c.usage() + " failed: " + e.getMessage()));
+        }
+    }
+
+    private OutgoingServerMessage execute(IncomingServerMessage request, Command c, String[] w) throws IOException {
+        String user = request.header().origin().user();
+        FileStore files = server.files();
+        switch (w[0].toLowerCase(java.util.Locale.ROOT)) {
+            case "?help": {
+                StringBuilder b = new StringBuilder("Server commands:\n");
+                COMMANDS.forEach((k, v) -> b.append(String.format("  %-32s %s  [FID %s]%n", v.usage(), v.help(), v.fid())));
+                b.append("Anything else goes to the chosen MailBox of a service.");
+                return ok(request, c, b.toString(), null);
+            }
+            case "?ping":
+                return ok(request, c, "pong", null);
+            case "?whoami":
+                return ok(request, c, user + " on client " + request.header().origin().clientId() + " " + request.header().roles(),
+                        new SessionInfo(request.header().origin().clientId(), user, request.header().roles(), "RIPVServer"));
+            case "?logout":
+                server.client(request.header().origin().clientId()).ifPresent(h -> {
+                    h.send(ok(request, c, "goodbye", null));
+                    h.close();
+                });
+                return null;
+            case "?dldir":
+                return ok(request, c, files.downloadDir().toString(), new FileListing(files.downloadDir().toString(), List.of()));
+            case "?uldir":
+                return ok(request, c, files.uploadDir().toString(), new FileListing(files.uploadDir().toString(), List.of()));
+            case "?dlfiles":
+                return listing(request, c, files.listDownloads());
+            case "?ulfiles":
+                return listing(request, c, files.listUploads());
+            case "?services": {
+                List<ServiceDescriptor> list = server.services().stream().map(ServiceReference::descriptor).toList();
+                StringBuilder b = new StringBuilder(list.size() + " service(s) registered");
+                list.forEach(d -> b.append('\n').append(d.name()).append("  SID ").append(d.sid())
+                        .append(d.description().isEmpty() ? "" : "  " + d.description()));
+                return ok(request, c, b.toString(), new ServiceList(list));
+            }
+            case "?mailboxes":
+                server.checkers().execute(() -> server.reply(mailboxes(request, c)));
+                return null;
+            case "?status": {
+                MailboxAddress address = MailboxAddress.parse(arg(w, 1, c));
+                server.checkers().execute(() -> server.reply(status(request, c, address)));
+                return null;
+            }
+            case "?upload": {
+                permit(request, c);
+                if (w.length != 4 || request.header().attachment() == null) {
+                    throw new IllegalArgumentException("usage: " + c.usage() + " with the chunk attached");
+                }
+                long offset = number(w[2], "OFFSET");
+                long total = number(w[3], "TOTAL");
+                FileStore.ChunkResult r = files.uploadChunk(request.header().origin().clientId(), w[1], offset, total,
+                        request.header().attachment().data());
+                return ok(request, c, r.complete() ? "stored " + w[1] + " (" + r.total() + " bytes) in the upload directory"
+                        : "received " + r.received() + " of " + r.total() + " bytes of " + w[1], null);
+            }
+            case "?upload-cancel":
+                files.abort(request.header().origin().clientId(), arg(w, 1, c));
+                return ok(request, c, "dropped the unfinished upload of " + w[1], null);
+            case "?download": {
+                if (w.length != 4) {
+                    throw new IllegalArgumentException("usage: " + c.usage());
+                }
+                long offset = number(w[2], "OFFSET");
+                int length = (int) Math.min(MAX_DOWNLOAD_CHUNK, number(w[3], "LENGTH"));
+                Object[] chunk = files.readDownload(w[1], offset, length);
+                byte[] data = (byte[]) chunk[1];
+                long total = (Long) chunk[0];
+                return ok(request, c, "bytes " + offset + ".." + (offset + data.length) + " of " + total + " of " + w[1],
+                        new FileData(w[1], offset, total, data));
+            }
+            case "?lock": {
+                permit(request, c);
+                MailboxAddress address = MailboxAddress.parse(arg(w, 1, c));
+                long seconds = w.length >= 3 ? number(w[2], "SECONDS") : 300;
+                if (seconds < 1 || seconds > MAX_LOCK_SECONDS) {
+                    throw new IllegalArgumentException("a lock lasts 1 to " + MAX_LOCK_SECONDS + " seconds, not " + seconds);
+                }
+                RIPVServer.OperatorLock mine = new RIPVServer.OperatorLock(user, request.header().origin().clientId(),
+                        System.currentTimeMillis() + seconds * 1000);
+                RIPVServer.OperatorLock now = server.locks().compute(address.toString(),
+                        (k, old) -> old == null || old.expired() || old.user().equals(user) ? mine : old);
+                if (now != mine) {
+                    return ServerTaskManager.error(request, c.fid(), ErrorCode.MAILBOX_LOCKED,
+                            address + " is locked by " + now.user() + " until " + Instant.ofEpochMilli(now.untilMillis()));
+                }
+                return ok(request, c, address + " locked by " + user + " until " + Instant.ofEpochMilli(mine.untilMillis()), null);
+            }
+            case "?unlock": {
+                permit(request, c);
+                MailboxAddress address = MailboxAddress.parse(arg(w, 1, c));
+                RIPVServer.OperatorLock l = server.locks().get(address.toString());
+                if (l != null && !l.expired() && !l.user().equals(user)) {
+                    return ServerTaskManager.error(request, c.fid(), ErrorCode.MAILBOX_LOCKED,
+                            address + " is locked by " + l.user() + ", not by you");
+                }
+                server.locks().remove(address.toString());
+                return ok(request, c, address + " unlocked", null);
+            }
+            default:
+                throw new IllegalStateException("no handler for " + w[0]);
+        }
+    }
+
+    private OutgoingServerMessage mailboxes(IncomingServerMessage request, Command c) {
+        List<MailboxStatus> all = new ArrayList<>();
+        StringBuilder text = new StringBuilder();
+        for (ServiceReference ref : server.services()) {
+            try {
+                for (MailboxStatus s : ref.mailboxes()) {
+                    MailboxStatus withLock = server.withLock(s);
+                    all.add(withLock);
+                    text.append(describe(withLock)).append('\n');
+                }
+            } catch (RemoteException | RuntimeException e) {
+                text.append(ref.descriptor().name()).append(": not answering (").append(e.getClass().getSimpleName()).append(")\n");
+            }
+        }
+        return ok(request, c, all.size() + " mailbox(es)\n" + text.toString().stripTrailing(), new MailboxList(all));
+    }
+
+    private OutgoingServerMessage status(IncomingServerMessage request, Command c, MailboxAddress address) {
+        Optional<ServiceReference> ref = server.service(address.service().toString());
+        if (ref.isEmpty()) {
+            return ServerTaskManager.error(request, c.fid(), ErrorCode.UNKNOWN_SERVICE,
+                    "no service " + address.service() + " is registered");
+        }
+        try {
+            for (MailboxStatus s : ref.get().mailboxes()) {
+                if (s.address().equals(address.toString())) {
+                    MailboxStatus withLock = server.withLock(s);
+                    return ok(request, c, describe(withLock), withLock);
+                }
+            }
+            return ServerTaskManager.error(request, c.fid(), ErrorCode.UNKNOWN_MAILBOX,
+                    "no MailBox " + address + " at " + address.service() + "; ?mailboxes lists them");
+        } catch (RemoteException | RuntimeException e) {
+            return ServerTaskManager.error(request, c.fid(), ErrorCode.SERVICE_GONE,
+                    address.service() + " is not answering: " + e.getMessage());
+        }
+    }
+
+    static String describe(MailboxStatus s) {
+        return s.address() + ": " + (s.available() ? "available" : "not available") + (s.busy() ? ", busy" : "")
+                + (s.lockedBy().isEmpty() ? "" : ", locked by " + s.lockedBy())
+                + (s.detail().isEmpty() ? "" : " (" + s.detail() + ")");
+    }
+
+    private void permit(IncomingServerMessage request, Command c) {
+        String user = request.header().origin().user();
+        PermitFile.User u = server.permits().user(user).orElseThrow(
+                () -> new SecurityRefusal("user '" + user + "' is no longer in the permit file"));
+        PermitFile.Decision d = server.permits().decide(u, RIPVServer.SERVER_SERVICE, "", request.header().body());
+        if (!d.allowed()) {
+            throw new SecurityRefusal("user '" + user + "' may not use " + c.usage().split(" ")[0] + " (" + d.because() + ")");
+        }
+    }
+
+    /** A refused server command: answered FORBIDDEN. */
+    static final class SecurityRefusal extends IllegalArgumentException {
+        private static final long serialVersionUID = 1L;
+
+        SecurityRefusal(String message) {
+            super(message);
+        }
+    }
+
+    private static OutgoingServerMessage ok(IncomingServerMessage request, Command c, String text,
+                                            org.ripv.messages.Result result) {
+        return request.reply(Footer.ok(c.fid(), text, result).via(RIPVServer.SERVER_SERVICE));
+    }
+
+    private static OutgoingServerMessage listing(IncomingServerMessage request, Command c, FileListing l) {
+        StringBuilder b = new StringBuilder(l.directory() + ": " + l.files().size() + " file(s)");
+        for (FileListing.Entry e : l.files()) {
+            b.append(String.format("%n%12d  %s  %s", e.size(), Instant.ofEpochMilli(e.modified()), e.name()));
+        }
+        return ok(request, c, b.toString(), l);
+    }
+
+    private static String arg(String[] w, int i, Command c) {
+        if (w.length <= i) {
+            throw new IllegalArgumentException("usage: " + c.usage());
+        }
+        return w[i];
+    }
+
+    private static long number(String s, String what) {
+        try {
+            return Long.parseLong(s);
+        } catch (NumberFormatException e) {
+            throw new IllegalArgumentException(what + " must be a whole number, got '" + s + "'");
+        }
+    }
+
+
+}

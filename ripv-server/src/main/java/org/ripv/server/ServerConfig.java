@@ -1,0 +1,90 @@
+package org.ripv.server;
+
+import java.nio.file.Path;
+import java.time.Duration;
+import javax.net.ssl.SSLContext;
+
+/**
+ * Everything a {@link RIPVServer} is started with. Port 0 picks a free port (tests); an HTTP
+ * port of -1 turns the landing page off.
+ *
+ * @param bindAddress    the address the client port, registry and landing page listen on (null: all)
+ * @param port           the client socket port (4444)
+ * @param registryPort   the RMI registry port (1099)
+ * @param httpPort       the landing page port (8080), or -1 for none
+ * @param dataDir        holds upload/, download/, permit.txt, service.secret
+ * @param permitFile     the permit file (default DATA/permit.txt)
+ * @param requestTimeout how long a request may go without any reply before it fails with TIMEOUT
+ * @param serviceCheck   how often registered services are checked for life
+ * @param maxUpload      the largest file a client may upload
+ * @param maxFrame       the largest socket frame
+ * @param maxClients     how many clients may be connected at once
+ * @param tls            a TLS context for the client port, or null for plain TCP
+ * @param clientJar      the client jar the landing page offers, or null
+ */
+public record ServerConfig(String bindAddress, int port, int registryPort, int httpPort, Path dataDir, Path permitFile,
+                           Duration requestTimeout, Duration serviceCheck, long maxUpload, int maxFrame, int maxClients,
+                           SSLContext tls, Path clientJar) {
+
+    public static final int DEFAULT_PORT = 4444;
+    public static final int DEFAULT_REGISTRY_PORT = 1099;
+    public static final int DEFAULT_HTTP_PORT = 8080;
+
+    public ServerConfig {
+        if (permitFile == null) {
+            permitFile = dataDir.resolve("permit.txt");
+        }
+    }
+
+    /** Defaults for a data directory. */
+    public static ServerConfig defaults(Path dataDir) {
+        return new ServerConfig(null, DEFAULT_PORT, DEFAULT_REGISTRY_PORT, DEFAULT_HTTP_PORT, dataDir, null,
+                Duration.ofSeconds(60), Duration.ofSeconds(3), 256L * 1024 * 1024,
+                org.ripv.wire.FrameCodec.DEFAULT_MAX_FRAME, 1000, null, null);
+    }
+
+    /** Defaults for tests: free ports, no landing page, short checks. */
+    public static ServerConfig forTests(Path dataDir) {
+        return defaults(dataDir).withPorts(0, 0, -1).withServiceCheck(Duration.ofMillis(500));
+    }
+
+    public ServerConfig withPorts(int clientPort, int registry, int http) {
+        return new ServerConfig(bindAddress, clientPort, registry, http, dataDir, permitFile, requestTimeout, serviceCheck,
+                maxUpload, maxFrame, maxClients, tls, clientJar);
+    }
+
+    public ServerConfig withRequestTimeout(Duration t) {
+        return new ServerConfig(bindAddress, port, registryPort, httpPort, dataDir, permitFile, t, serviceCheck,
+                maxUpload, maxFrame, maxClients, tls, clientJar);
+    }
+
+    public ServerConfig withServiceCheck(Duration t) {
+        return new ServerConfig(bindAddress, port, registryPort, httpPort, dataDir, permitFile, requestTimeout, t,
+                maxUpload, maxFrame, maxClients, tls, clientJar);
+    }
+
+    public ServerConfig withMaxUpload(long bytes) {
+        return new ServerConfig(bindAddress, port, registryPort, httpPort, dataDir, permitFile, requestTimeout,
+                serviceCheck, bytes, maxFrame, maxClients, tls, clientJar);
+    }
+
+    public ServerConfig withPermitFile(Path file) {
+        return new ServerConfig(bindAddress, port, registryPort, httpPort, dataDir, file, requestTimeout,
+                serviceCheck, maxUpload, maxFrame, maxClients, tls, clientJar);
+    }
+
+    public ServerConfig withTls(SSLContext context) {
+        return new ServerConfig(bindAddress, port, registryPort, httpPort, dataDir, permitFile, requestTimeout,
+                serviceCheck, maxUpload, maxFrame, maxClients, context, clientJar);
+    }
+
+    public ServerConfig withClientJar(Path jar) {
+        return new ServerConfig(bindAddress, port, registryPort, httpPort, dataDir, permitFile, requestTimeout,
+                serviceCheck, maxUpload, maxFrame, maxClients, tls, jar);
+    }
+
+    public ServerConfig withBindAddress(String address) {
+        return new ServerConfig(address, port, registryPort, httpPort, dataDir, permitFile, requestTimeout,
+                serviceCheck, maxUpload, maxFrame, maxClients, tls, clientJar);
+    }
+}

@@ -1,0 +1,201 @@
+package org.ripv.server;
+
+import java.io.BufferedReader;
+import java.io.Console;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.InputStreamReader;
+import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.security.KeyStore;
+import java.time.Duration;
+import java.util.Arrays;
+import java.util.List;
+import java.util.concurrent.Callable;
+import java.util.concurrent.CountDownLatch;
+import javax.net.ssl.KeyManagerFactory;
+import javax.net.ssl.SSLContext;
+import org.ripv.server.permit.Passwords;
+import org.ripv.server.permit.PermitFile;
+import org.ripv.service.ServiceOptions;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+
+/**
+ * {@code ripv server} and {@code ripv passwd}. Exit codes: 0 stopped normally, 1 failed to start
+ * or failed, 2 bad command line.
+ */
+@Command(name = "ripv-server", mixinStandardHelpOptions = true, version = "RIPV 1.0",
+        description = "The RIPV broker, and its user administration.",
+        subcommands = {ServerMain.Serve.class, ServerMain.Passwd.class})
+public final class ServerMain implements Callable<Integer> {
+
+    @Override
+    public Integer call() {
+        return new CommandLine(new Serve()).execute();
+    }
+
+    @Command(name = "server", mixinStandardHelpOptions = true,
+            description = "Runs the RIPVServer: clients on --port, services register in the RMI registry on --registry-port.")
+    static final class Serve implements Callable<Integer> {
+        @Option(names = "--port", defaultValue = "4444", description = "Client port (default ${DEFAULT-VALUE}).")
+        int port;
+        @Option(names = "--registry-port", defaultValue = "1099", description = "RMI registry port (default ${DEFAULT-VALUE}).")
+        int registryPort;
+        @Option(names = "--http-port", defaultValue = "8080", description = "Landing page port; 0 turns it off (default ${DEFAULT-VALUE}).")
+        int httpPort;
+        @Option(names = "--data", description = "Data directory: upload/, download/, permit.txt, service.secret (default $RIPV_DATA or ~/.ripv/server).")
+        Path data;
+        @Option(names = "--permit", description = "The permit file (default DATA/permit.txt).")
+        Path permit;
+        @Option(names = "--bind", description = "Listen only on this address (default: all).")
+        String bind;
+        @Option(names = "--rmi-hostname", description = "The name services use to call this server back (sets java.rmi.server.hostname).")
+        String rmiHostname;
+        @Option(names = "--request-timeout", defaultValue = "60", description = "Seconds a request may wait without any reply (default ${DEFAULT-VALUE}).")
+        long requestTimeout;
+        @Option(names = "--max-upload", defaultValue = "268435456", description = "Largest upload in bytes (default ${DEFAULT-VALUE}).")
+        long maxUpload;
+        @Option(names = "--tls-keystore", description = "A PKCS12 key store: serve the client port over TLS.")
+        Path tlsKeystore;
+        @Option(names = "--tls-password-file", description = "File holding the key store's password.")
+        Path tlsPasswordFile;
+        @Option(names = "--client-jar", description = "The client jar the landing page offers (default: ripv-client.jar beside this jar).")
+        Path clientJar;
+
+        @Override
+        public Integer call() throws Exception {
+            if (rmiHostname != null) {
+                System.setProperty("java.rmi.server.hostname", rmiHostname);
+            }
+            Path dataDir = data != null ? data : ServiceOptions.defaultDataDir();
+            ServerConfig config = ServerConfig.defaults(dataDir)
+                    .withPorts(port, registryPort, httpPort == 0 ? -1 : httpPort)
+                    .withRequestTimeout(Duration.ofSeconds(requestTimeout))
+                    .withMaxUpload(maxUpload)
+                    .withPermitFile(permit)
+                    .withBindAddress(bind)
+                    .withClientJar(clientJar != null ? clientJar : defaultClientJar());
+            if (tlsKeystore != null) {
+                config = config.withTls(tls(tlsKeystore, tlsPasswordFile));
+            }
+            RIPVServer server = new RIPVServer(config);
+            server.start();
+            LandingPages.start(server, config);
+            CountDownLatch stopped = new CountDownLatch(1);
+            Runtime.getRuntime().addShutdownHook(new Thread(() -> {
+                server.stop();
+                stopped.countDown();
+            }, "ripv-server-shutdown"));
+            PermitFile p = PermitFile.load(config.permitFile());
+            if (p.users().isEmpty()) {
+                System.err.println("No users yet: add one with  ripv passwd --permit " + config.permitFile() + " USER --roles operators");
+            }
+            System.err.println("RIPVServer ready: clients on port " + server.port() + ", services register at "
+                    + "localhost:" + server.registryPort() + " with --secret-file " + server.secretFile());
+            stopped.await();
+            return 0;
+        }
+
+        private static Path defaultClientJar() {
+            try {
+                Path self = Path.of(ServerMain.class.getProtectionDomain().getCodeSource().getLocation().toURI());
+                Path dir = self.getParent();
+                for (Path candidate : List.of(dir.resolve("ripv-client.jar"), dir.resolve("../../ripv-client/target/ripv-client.jar"))) {
+                    if (Files.isRegularFile(candidate)) {
+                        return candidate.normalize();
+                    }
+                }
+            } catch (Exception ignored) {
+                // no jar to offer
+            }
+            return null;
+        }
+
+        private static SSLContext tls(Path keystore, Path passwordFile) throws Exception {
+            if (passwordFile == null) {
+                throw new CommandLine.ParameterException(new CommandLine(new Serve()), "--tls-keystore needs --tls-password-file");
+            }
+            char[] pw = Files.readString(passwordFile, StandardCharsets.UTF_8).trim().toCharArray();
+            KeyStore ks = KeyStore.getInstance("PKCS12");
+            try (InputStream in = Files.newInputStream(keystore)) {
+                ks.load(in, pw);
+            }
+            KeyManagerFactory kmf = KeyManagerFactory.getInstance(KeyManagerFactory.getDefaultAlgorithm());
+            kmf.init(ks, pw);
+            SSLContext ctx = SSLContext.getInstance("TLS");
+            ctx.init(kmf.getKeyManagers(), null, null);
+            return ctx;
+        }
+    }
+
+    @Command(name = "passwd", mixinStandardHelpOptions = true,
+            description = "Adds a user to the permit file or changes a user's password. Asks on the terminal, "
+                    + "or reads the password from the first line of standard input when there is none.")
+    static final class Passwd implements Callable<Integer> {
+        @Option(names = "--permit", required = true, description = "The permit file (created if missing).")
+        Path permit;
+        @Option(names = "--roles", split = ",", description = "Roles, e.g. operators or observers,db-reader (kept if not given).")
+        List<String> roles;
+        @Option(names = "--iterations", defaultValue = "" + Passwords.DEFAULT_ITERATIONS, hidden = true)
+        int iterations;
+        @Parameters(index = "0", description = "The user name.")
+        String user;
+        @CommandLine.Spec
+        CommandLine.Model.CommandSpec spec;
+
+        @Override
+        public Integer call() throws IOException {
+            PrintWriter err = spec.commandLine().getErr();
+            char[] password = readPassword(err);
+            if (password.length < 8) {
+                err.println("Error: a password needs at least 8 characters");
+                return 1;
+            }
+            PermitFile.setUser(permit, user, password, roles, iterations);
+            Arrays.fill(password, '\0');
+            spec.commandLine().getOut().println("set the password of '" + user + "' in " + permit
+                    + (roles == null ? "" : " with roles " + String.join(",", roles)));
+            return 0;
+        }
+
+        private static char[] readPassword(PrintWriter err) throws IOException {
+            Console console = System.console();
+            if (console != null) {
+                char[] a = console.readPassword("New password: ");
+                char[] b = console.readPassword("Again: ");
+                if (a == null || b == null || !Arrays.equals(a, b)) {
+                    throw new IOException("the two passwords differ");
+                }
+                return a;
+            }
+            String line = new BufferedReader(new InputStreamReader(System.in, StandardCharsets.UTF_8)).readLine();
+            if (line == null) {
+                throw new IOException("no password on standard input");
+            }
+            return line.toCharArray();
+        }
+    }
+
+    /** Runs the command line; returns the exit code. */
+    public static int run(String... args) {
+        // The thesis form: java -jar ripv-server.jar 4444
+        if (args.length == 1 && args[0].matches("\\d{1,5}")) {
+            args = new String[] {"server", "--port", args[0]};
+        }
+        CommandLine cl = new CommandLine(new ServerMain());
+        cl.setExecutionExceptionHandler((e, line, parsed) -> {
+            line.getErr().println("Error: " + (e.getMessage() == null ? e.toString() : e.getMessage()));
+            return 1;
+        });
+        return cl.execute(args);
+    }
+
+    public static void main(String[] args) {
+        System.exit(run(args));
+    }
+}

@@ -1,0 +1,192 @@
+package org.ripv.server.permit;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+
+/**
+ * Who may log in and what each may do (docs/permit.md). A line-oriented text file:
+ * <pre>
+ * # comment
+ * user alice pbkdf2-sha256$120000$SALT$HASH operators
+ * user bob   pbkdf2-sha256$120000$SALT$HASH observers,db-reader
+ * allow @operators  *                *   *
+ * allow @observers  SerialPortServer *   dir
+ * allow @observers  SerialPortServer *   ymodem:get *
+ * deny  @observers  SerialPortServer *   *
+ * </pre>
+ * Rules are read top to bottom and the first that applies to the user and matches the command
+ * decides; when none does, the command is refused.
+ */
+public final class PermitFile {
+    /** What a user is: name, stored hash, roles. */
+    public record User(String name, String hash, List<String> roles) {
+        public User {
+            roles = List.copyOf(roles);
+        }
+    }
+
+    /** The verdict on a command, with the rule that decided it. */
+    public record Decision(boolean allowed, String because) {}
+
+    private final Path file;
+    private final Map<String, User> users;
+    private final List<Rule> rules;
+    private final List<String> lines;
+
+    private PermitFile(Path file, Map<String, User> users, List<Rule> rules, List<String> lines) {
+        this.file = file;
+        this.users = users;
+        this.rules = rules;
+        this.lines = lines;
+    }
+
+    /** The file a new server writes: roles for operators and observers, no users yet. */
+    public static final String TEMPLATE = String.join("\n",
+            "# RIPV permit file (docs/permit.md).",
+            "# Add or change users with:  ripv passwd --permit THIS_FILE USER [--roles operators]",
+            "#",
+            "# user NAME HASH ROLE[,ROLE...]",
+            "# allow|deny WHO SERVICE MAILBOX COMMAND-PATTERN",
+            "#   WHO: a user, @role or *;  SERVICE: e.g. SerialPortServer, RIPVServer (the server's ? commands);",
+            "#   MAILBOX: a handle glob such as ttyS0 or *;  COMMAND-PATTERN: a glob over the whole command.",
+            "# The first rule that matches decides; a command no rule allows is refused.",
+            "",
+            "allow @operators * * *",
+            "",
+            "# Observers may list and offload a glider's files, query and plot, but not upload to it or send GO.",
+            "allow @observers SerialPortServer * dir*",
+            "allow @observers SerialPortServer * type *",
+            "allow @observers SerialPortServer * ymodem:get *",
+            "deny  @observers SerialPortServer * *",
+            "allow @observers DatabaseServer * *",
+            "allow @observers DataVisServer * *",
+            "allow @observers RIPVServer * ?upload*",
+            "");
+
+    /** Reads a permit file; a missing file is created from {@link #TEMPLATE}. */
+    public static PermitFile load(Path file) throws IOException {
+        if (!Files.exists(file)) {
+            if (file.getParent() != null) {
+                Files.createDirectories(file.getParent());
+            }
+            Files.writeString(file, TEMPLATE, StandardCharsets.UTF_8);
+        }
+        return parse(file, Files.readAllLines(file, StandardCharsets.UTF_8));
+    }
+
+    static PermitFile parse(Path file, List<String> lines) {
+        Map<String, User> users = new LinkedHashMap<>();
+        List<Rule> rules = new ArrayList<>();
+        int n = 0;
+        for (String raw : lines) {
+            n++;
+            String line = raw.strip();
+            if (line.isEmpty() || line.startsWith("#")) {
+                continue;
+            }
+            String[] w = line.split("\\s+", 5);
+            String where = file + ":" + n + ": ";
+            switch (w[0]) {
+                case "user" -> {
+                    if (w.length < 3) {
+                        throw new IllegalArgumentException(where + "a user line is 'user NAME HASH [ROLES]'");
+                    }
+                    List<String> roles = w.length >= 4 ? Arrays.asList(w[3].split(",")) : List.of();
+                    users.put(w[1], new User(w[1], w[2], roles));
+                }
+                case "allow", "deny" -> {
+                    if (w.length < 5) {
+                        throw new IllegalArgumentException(where + "a rule is '" + w[0] + " WHO SERVICE MAILBOX COMMAND-PATTERN'");
+                    }
+                    rules.add(Rule.parse(w[0].equals("allow"), w[1], w[2], w[3], w[4], line));
+                }
+                default -> throw new IllegalArgumentException(where + "unknown line '" + w[0]
+                        + "': lines start with user, allow or deny");
+            }
+        }
+        return new PermitFile(file, users, rules, List.copyOf(lines));
+    }
+
+    public Optional<User> user(String name) {
+        return Optional.ofNullable(users.get(name));
+    }
+
+    public List<User> users() {
+        return List.copyOf(users.values());
+    }
+
+    /** Checks a password; unknown users take as long as known ones. */
+    public Optional<User> authenticate(String name, char[] password) {
+        User u = users.get(name);
+        if (u == null) {
+            Passwords.verifyDummy(password);
+            return Optional.empty();
+        }
+        return Passwords.verify(password, u.hash()) ? Optional.of(u) : Optional.empty();
+    }
+
+    /** May this user run this command in this service's MailBox? */
+    public Decision decide(User user, String serviceName, String handle, String command) {
+        for (Rule r : rules) {
+            if (r.appliesTo(user.name(), user.roles()) && r.matches(serviceName, handle, command)) {
+                return new Decision(r.allow(), r.source());
+            }
+        }
+        return new Decision(false, "no rule in the permit file allows it");
+    }
+
+    /**
+     * Adds a user or changes an existing one's password (and roles, when given), rewriting the
+     * file through a temporary file so that a crash never leaves it half written.
+     */
+    public static void setUser(Path file, String name, char[] password, List<String> roles, int iterations) throws IOException {
+        if (!name.matches("[A-Za-z0-9._@-]{1,64}")) {
+            throw new IllegalArgumentException("a user name is 1–64 letters, digits, '.', '_', '@' or '-', got '" + name + "'");
+        }
+        PermitFile current = load(file);
+        String hash = Passwords.hash(password, iterations);
+        List<String> out = new ArrayList<>();
+        boolean replaced = false;
+        for (String line : current.lines) {
+            String[] w = line.strip().split("\\s+");
+            if (w.length >= 3 && w[0].equals("user") && w[1].equals(name)) {
+                List<String> keep = roles != null ? roles : (w.length >= 4 ? Arrays.asList(w[3].split(",")) : List.of());
+                out.add(userLine(name, hash, keep));
+                replaced = true;
+            } else {
+                out.add(line);
+            }
+        }
+        if (!replaced) {
+            int at = 0;
+            for (int i = 0; i < out.size(); i++) {
+                if (out.get(i).strip().startsWith("user ") || out.get(i).strip().startsWith("#")) {
+                    at = i + 1;
+                } else if (!out.get(i).isBlank()) {
+                    break;
+                }
+            }
+            out.add(at, userLine(name, hash, roles == null ? List.of() : roles));
+        }
+        Path tmp = file.resolveSibling(file.getFileName() + ".tmp");
+        Files.write(tmp, out, StandardCharsets.UTF_8);
+        Files.move(tmp, file, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+    }
+
+    private static String userLine(String name, String hash, List<String> roles) {
+        return "user " + name + " " + hash + (roles.isEmpty() ? "" : " " + String.join(",", roles));
+    }
+
+    public Path path() {
+        return file;
+    }
+}

@@ -1,0 +1,47 @@
+package org.ripv.server.permit;
+
+import java.util.List;
+import java.util.Locale;
+import java.util.regex.Pattern;
+
+/**
+ * One {@code allow} or {@code deny} line of the permit file:
+ * {@code allow WHO SERVICE MAILBOX COMMAND-PATTERN}. WHO is a user, {@code @role} or {@code *};
+ * SERVICE is a service's short name ({@code SerialPortServer}, {@code RIPVServer} for the server's
+ * own commands) or a glob; MAILBOX is a handle glob ({@code ttyS0}, {@code *}); the pattern, the
+ * rest of the line, is a case-insensitive glob over the whole command ({@code ymodem:get *}).
+ */
+record Rule(boolean allow, String who, Pattern service, Pattern mailbox, Pattern command, String source) {
+
+    static Rule parse(boolean allow, String who, String service, String mailbox, String command, String source) {
+        return new Rule(allow, who, glob(service), glob(mailbox), glob(command.trim()), source);
+    }
+
+    boolean appliesTo(String user, List<String> roles) {
+        return who.equals("*") || who.equals(user) || (who.startsWith("@") && roles.contains(who.substring(1)));
+    }
+
+    boolean matches(String serviceName, String handle, String commandText) {
+        return service.matcher(serviceName).matches() && mailbox.matcher(handle).matches()
+                && command.matcher(commandText.trim()).matches();
+    }
+
+    /** A glob: {@code *} any run, {@code ?} one character; everything else literal, case-insensitive. */
+    static Pattern glob(String g) {
+        StringBuilder re = new StringBuilder();
+        for (char c : g.toCharArray()) {
+            switch (c) {
+                case '*' -> re.append(".*");
+                case '?' -> re.append('.');
+                default -> re.append(Pattern.quote(String.valueOf(c)));
+            }
+        }
+        return Pattern.compile(re.toString(), Pattern.CASE_INSENSITIVE | Pattern.UNICODE_CASE | Pattern.DOTALL);
+    }
+
+    @Override
+    public String toString() {
+        return source.toLowerCase(Locale.ROOT).startsWith("allow") || source.toLowerCase(Locale.ROOT).startsWith("deny")
+                ? source : (allow ? "allow " : "deny ") + source;
+    }
+}
