@@ -1,0 +1,134 @@
+package org.ripv.it;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import org.ripv.client.handlers.ClientSocketHandler;
+import org.ripv.server.RIPVServer;
+import org.ripv.server.ServerConfig;
+import org.ripv.server.permit.PermitFile;
+import org.ripv.service.RIPVService;
+import org.ripv.service.ServiceConnector;
+import org.ripv.service.ServiceOptions;
+
+/**
+ * A whole RIPV system in one JVM for tests: a real RIPVServer on free ports in a temporary data
+ * directory, services registered over real RMI, clients over real sockets.
+ *
+ * <pre>{@code
+ * try (TestSystem sys = TestSystem.start(tempDir)) {
+ *     sys.user("alice", "operators");
+ *     sys.register(new ClockService("localhost"));
+ *     ClientSocketHandler c = sys.login("alice");
+ * }
+ * }</pre>
+ */
+public final class TestSystem implements AutoCloseable {
+    /** Every test user's password. */
+    public static final String PASSWORD = "correct horse";
+
+    private final Path dataDir;
+    private final RIPVServer server;
+    private final List<AutoCloseable> closeables = new ArrayList<>();
+
+    private TestSystem(Path dataDir, RIPVServer server) {
+        this.dataDir = dataDir;
+        this.server = server;
+    }
+
+    public static TestSystem start(Path dir) throws IOException {
+        return start(ServerConfig.forTests(dir.resolve("server")));
+    }
+
+    public static TestSystem start(ServerConfig config) throws IOException {
+        RIPVServer server = new RIPVServer(config);
+        server.start();
+        return new TestSystem(config.dataDir(), server);
+    }
+
+    public RIPVServer server() {
+        return server;
+    }
+
+    public Path dataDir() {
+        return dataDir;
+    }
+
+    public Path uploadDir() {
+        return server.fileStore().uploadDir();
+    }
+
+    public Path downloadDir() {
+        return server.fileStore().downloadDir();
+    }
+
+    /** Adds a user with {@link #PASSWORD} (a cheap hash, for speed) and reloads the permit file. */
+    public TestSystem user(String name, String... roles) throws IOException {
+        PermitFile.setUser(dataDir.resolve("permit.txt"), name, PASSWORD.toCharArray(), List.of(roles), 1000);
+        server.reloadPermits();
+        return this;
+    }
+
+    /** Replaces the permit file's rules (users stay) and reloads. */
+    public TestSystem rules(String... lines) throws IOException {
+        Path p = dataDir.resolve("permit.txt");
+        List<String> keep = new ArrayList<>();
+        for (String l : Files.readAllLines(p, StandardCharsets.UTF_8)) {
+            if (l.startsWith("user ")) {
+                keep.add(l);
+            }
+        }
+        keep.addAll(List.of(lines));
+        Files.write(p, keep, StandardCharsets.UTF_8);
+        server.reloadPermits();
+        return this;
+    }
+
+    public String secret() throws IOException {
+        return Files.readString(server.secretFile(), StandardCharsets.UTF_8).trim();
+    }
+
+    public ServiceOptions serviceOptions() throws IOException {
+        return new ServiceOptions("localhost", server.registryPort(), secret(), 0, Duration.ofMillis(500));
+    }
+
+    /** Registers a service over RMI and waits until the server lists it. */
+    public ServiceConnector register(RIPVService service) throws Exception {
+        ServiceConnector c = ServiceConnector.connect(service, serviceOptions());
+        closeables.add(service::stop);
+        closeables.add(c);
+        if (!c.awaitRegistered(Duration.ofSeconds(20))) {
+            throw new IllegalStateException(service + " did not register");
+        }
+        return c;
+    }
+
+    public ClientSocketHandler connect() throws IOException {
+        ClientSocketHandler c = ClientSocketHandler.connect("localhost", server.port());
+        closeables.add(c);
+        return c;
+    }
+
+    /** A client logged in as the user. */
+    public ClientSocketHandler login(String user) throws Exception {
+        ClientSocketHandler c = connect();
+        c.login(user, PASSWORD.toCharArray());
+        return c;
+    }
+
+    @Override
+    public void close() {
+        for (int i = closeables.size() - 1; i >= 0; i--) {
+            try {
+                closeables.get(i).close();
+            } catch (Exception ignored) {
+                // best effort
+            }
+        }
+        server.stop();
+    }
+}
