@@ -154,18 +154,22 @@ public final class ClientModel {
     /**
      * Replaces the service list: services that vanished are dropped, new ones added, and the
      * ones that stayed keep their transcript, tables and picture.
+     *
+     * @return true when a service was added
      */
-    void services(List<ServiceDescriptor> list) {
+    boolean services(List<ServiceDescriptor> list) {
         Map<String, ServiceDescriptor> fresh = new LinkedHashMap<>();
         for (ServiceDescriptor d : list) {
             fresh.put(d.name(), d);
         }
         boolean changed = services.keySet().retainAll(fresh.keySet());
+        boolean added = false;
         for (ServiceDescriptor d : fresh.values()) {
             ServiceModel m = services.get(d.name());
             if (m == null) {
                 services.put(d.name(), new ServiceModel(d));
                 changed = true;
+                added = true;
             } else if (!m.descriptor().equals(d)) {
                 m.descriptor(d);
                 changed = true;
@@ -174,6 +178,7 @@ public final class ClientModel {
         if (changed) {
             fire(Kind.SERVICES, null);
         }
+        return added;
     }
 
     void directory(FileArea area, String path) {

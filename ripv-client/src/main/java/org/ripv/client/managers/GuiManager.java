@@ -728,7 +728,12 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
 
     @Override
     public void showServices(List<ServiceDescriptor> services) {
-        ui.execute(() -> model.services(services));
+        ui.execute(() -> {
+            if (model.services(services)) {
+                // A new service: its MailBoxes now, not at the next periodic refresh.
+                background("?mailboxes");
+            }
+        });
     }
 
     @Override
