@@ -25,6 +25,7 @@ import java.util.prefs.Preferences;
 import org.assertj.swing.core.BasicRobot;
 import org.assertj.swing.core.Robot;
 import org.assertj.swing.edt.GuiActionRunner;
+import org.assertj.swing.finder.JFileChooserFinder;
 import org.assertj.swing.fixture.DialogFixture;
 import org.assertj.swing.fixture.FrameFixture;
 import org.assertj.swing.fixture.JFileChooserFixture;
@@ -325,6 +326,13 @@ class ClientGuiTest {
                 }
             }, Timeout.timeout(T.toMillis()));
 
+            // Xvfb has no window manager to hand focus back after the modal dialog: take it.
+            GuiActionRunner.execute(() -> {
+                client.frame().toFront();
+                client.frame().requestFocus();
+            });
+            robot.waitForIdle();
+            window.textBox("commandField").click();
             window.textBox("commandField").enterText("echo over the sea");
             window.textBox("commandField").pressAndReleaseKeys(KeyEvent.VK_ENTER);
             Pause.pause(new Condition("the reply in the reply area") {
@@ -341,7 +349,7 @@ class ClientGuiTest {
             Path local = dir.resolve("new-binary.bin");
             Files.write(local, new byte[5000]);
             window.button("ulButton").click();
-            JFileChooserFixture chooser = window.fileChooser(Timeout.timeout(10_000));
+            JFileChooserFixture chooser = JFileChooserFinder.findFileChooser().withTimeout(10_000).using(robot);
             chooser.setCurrentDirectory(dir.toFile());
             chooser.selectFile(local.toFile());
             chooser.approve();

@@ -92,6 +92,9 @@ public final class RIPVClient {
         JSplitPane split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, sel, center);
         split.setResizeWeight(0.0);
         split.setContinuousLayout(true);
+        // A sensible first size that pack() keeps, shrunk to fit small screens.
+        Dimension screen = java.awt.Toolkit.getDefaultToolkit().getScreenSize();
+        split.setPreferredSize(new Dimension(Math.min(1360, screen.width - 40), Math.min(820, screen.height - 120)));
 
         banner.setName("connectionBanner");
         banner.setOpaque(true);
@@ -116,7 +119,7 @@ public final class RIPVClient {
                 closed.countDown();
             }
         });
-        frame.setSize(1280, 820);
+        frame.pack();
         frame.setLocationByPlatform(true);
         model.addListener(this::changed);
         syncServices();
