@@ -56,7 +56,7 @@ public final class ServiceConnector implements AutoCloseable {
         RmiSupport.configure(10_000, 30_000);
         service.start();
         ServiceConnector c = new ServiceConnector(service, options);
-        service.replyTo(c::send);
+        service.replyTo(c.new Sink());
         c.timer.execute(c::tick);
         c.timer.scheduleWithFixedDelay(c::tick, options.heartbeat().toMillis(), options.heartbeat().toMillis(),
                 TimeUnit.MILLISECONDS);
@@ -119,13 +119,33 @@ public final class ServiceConnector implements AutoCloseable {
         log.info("{} registered with the RIPVServer at {}:{}", d.name(), options.serverHost(), options.registryPort());
     }
 
-    private void send(OutgoingServiceMessage reply) throws Exception {
-        String t = token;
-        GenericRMIInterface s = server;
-        if (t == null || s == null) {
-            throw new RemoteException("not registered with a server");
+    /** Sends replies to the server over RMI. */
+    private final class Sink implements ReplySink {
+        @Override
+        public void reply(OutgoingServiceMessage reply) throws Exception {
+            server().serviceReply(token(), reply);
         }
-        s.serviceReply(t, reply);
+
+        @Override
+        public void replies(List<OutgoingServiceMessage> replies) throws Exception {
+            server().serviceReplies(token(), replies);
+        }
+
+        private GenericRMIInterface server() throws RemoteException {
+            GenericRMIInterface s = server;
+            if (s == null || token == null) {
+                throw new RemoteException("not registered with a server");
+            }
+            return s;
+        }
+
+        private String token() throws RemoteException {
+            String t = token;
+            if (t == null) {
+                throw new RemoteException("not registered with a server");
+            }
+            return t;
+        }
     }
 
     /** Stops checking in and withdraws the service's RMI object. The service itself keeps running. */
@@ -152,6 +172,18 @@ public final class ServiceConnector implements AutoCloseable {
         }
 
         @Override
+        public void serviceRequests(String t, List<IncomingServiceMessage> requests) throws RemoteException {
+            check(t);
+            requests.forEach(service::accept);
+        }
+
+        @Override
+        public boolean withdraw(String t, String mailbox, String clientId, long messageId) throws RemoteException {
+            check(t);
+            return service.withdraw(mailbox, clientId, messageId);
+        }
+
+        @Override
         public List<MailboxStatus> mailboxes(String t) throws RemoteException {
             check(t);
             return service.mailboxes();
@@ -164,6 +196,11 @@ public final class ServiceConnector implements AutoCloseable {
 
         @Override
         public void serviceReply(String t, OutgoingServiceMessage reply) {
+            throw new UnsupportedOperationException("a service does not take replies");
+        }
+
+        @Override
+        public void serviceReplies(String t, List<OutgoingServiceMessage> replies) {
             throw new UnsupportedOperationException("a service does not take replies");
         }
 

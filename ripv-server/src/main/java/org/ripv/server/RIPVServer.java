@@ -308,22 +308,45 @@ public final class RIPVServer implements AutoCloseable {
                     ErrorCode.BAD_REQUEST, "message id " + request.header().messageId() + " is already in use by a pending request")));
             return;
         }
-        ref.forward(request, (r, e) -> {
-            log.warn("could not reach {}: {}", ref, e.toString());
-            if (pending.complete(r.header()) != null) {
-                reply(new IncomingServerMessage(r.header()).reply(Footer.error(ref.descriptor().sid(), ErrorCode.SERVICE_GONE,
-                        ref.descriptor().name() + " could not be reached: " + e.getMessage()).via(SERVER_SERVICE)));
-            }
-            checkers.execute(() -> check(ref));
-        });
+        ref.forward(request);
     }
 
+    /** A request that could not be handed to its service: fail it, and check whether the service lives. */
+    private void undeliverable(ServiceReference ref, IncomingServiceMessage r, Exception e) {
+        log.warn("could not reach {}: {}", ref, e.toString());
+        if (pending.complete(r.header(), ref.descriptor().name()) != null) {
+            reply(new IncomingServerMessage(r.header()).reply(Footer.error(ref.descriptor().sid(), ErrorCode.SERVICE_GONE,
+                    ref.descriptor().name() + " could not be reached: " + e.getMessage()).via(SERVER_SERVICE)));
+        }
+        if (!checkers.isShutdown()) {
+            checkers.execute(() -> check(ref));
+        }
+    }
+
+    /** A request heard nothing for the timeout: withdraw it if it has not started, and say which happened. */
     private void timedOut(PendingRequests.Pending p) {
         ServiceReference ref = services.get(p.service());
-        String sid = ref == null ? Ids.FID_NONE : ref.descriptor().sid();
-        reply(new IncomingServerMessage(p.header()).reply(Footer.error(sid, ErrorCode.TIMEOUT,
-                p.service() + " did not answer '" + Header.abbreviate(p.header().body()) + "' within "
-                        + config.requestTimeout().toSeconds() + " s").via(SERVER_SERVICE)));
+        Runnable answer = () -> {
+            String sid = ref == null ? Ids.FID_NONE : ref.descriptor().sid();
+            boolean withdrawn = false;
+            try {
+                withdrawn = ref != null && ref.withdraw(p.header());
+            } catch (RemoteException | RuntimeException e) {
+                log.debug("could not withdraw #{}: {}", p.header().messageId(), e.toString());
+            }
+            String what = "'" + Header.abbreviate(p.header().body()) + "'";
+            String text = withdrawn
+                    ? p.service() + " did not start " + what + " within " + config.requestTimeout().toSeconds()
+                            + " s (its MailBox was busy); it was withdrawn and will not run"
+                    : p.service() + " did not answer " + what + " within " + config.requestTimeout().toSeconds()
+                            + " s; it may still complete on the device";
+            reply(new IncomingServerMessage(p.header()).reply(Footer.error(sid, ErrorCode.TIMEOUT, text).via(SERVER_SERVICE)));
+        };
+        if (checkers.isShutdown()) {
+            answer.run();
+        } else {
+            checkers.execute(answer);
+        }
     }
 
     private void checkServices() {
@@ -373,7 +396,7 @@ public final class RIPVServer implements AutoCloseable {
             ServiceName.parse(d.name());
             byte[] t = new byte[24];
             new SecureRandom().nextBytes(t);
-            ServiceReference ref = new ServiceReference(d, service, HexFormat.of().formatHex(t));
+            ServiceReference ref = new ServiceReference(d, service, HexFormat.of().formatHex(t), RIPVServer.this::undeliverable);
             ServiceReference old = services.put(d.name(), ref);
             if (old != null) {
                 drop(old, "registered again");
@@ -390,6 +413,20 @@ public final class RIPVServer implements AutoCloseable {
         }
 
         @Override
+        public void serviceReplies(String token, List<OutgoingServiceMessage> replies) {
+            ServiceReference ref = services.values().stream().filter(r -> r.token().equals(token)).findFirst()
+                    .orElseThrow(() -> new SecurityException("unknown session token: register first"));
+            for (OutgoingServiceMessage reply : replies) {
+                ServiceReplies.accept(RIPVServer.this, ref, reply, pending);
+            }
+        }
+
+        @Override
+        public void serviceRequests(String token, List<IncomingServiceMessage> requests) {
+            throw new UnsupportedOperationException("the RIPVServer takes no service requests");
+        }
+
+        @Override
         public boolean heartbeat(String token) {
             return services.values().stream().anyMatch(r -> r.token().equals(token));
         }
@@ -397,6 +434,11 @@ public final class RIPVServer implements AutoCloseable {
         @Override
         public void serviceRequest(String token, IncomingServiceMessage request) {
             throw new UnsupportedOperationException("the RIPVServer takes no service requests");
+        }
+
+        @Override
+        public boolean withdraw(String token, String mailbox, String clientId, long messageId) {
+            throw new UnsupportedOperationException("the RIPVServer runs no service MailBoxes");
         }
 
         @Override

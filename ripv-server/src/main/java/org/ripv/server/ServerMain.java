@@ -116,7 +116,8 @@ public final class ServerMain implements Callable<Integer> {
             return null;
         }
 
-        private static SSLContext tls(Path keystore, Path passwordFile) throws Exception {
+        /** A TLS context from a PKCS12 key store and a file holding its password. */
+        static SSLContext tls(Path keystore, Path passwordFile) throws Exception {
             if (passwordFile == null) {
                 throw new CommandLine.ParameterException(new CommandLine(new Serve()), "--tls-keystore needs --tls-password-file");
             }
@@ -179,6 +180,11 @@ public final class ServerMain implements Callable<Integer> {
             }
             return line.toCharArray();
         }
+    }
+
+    /** A TLS context for {@link ServerConfig#withTls} from a PKCS12 key store and its password file. */
+    public static SSLContext tlsContext(Path keystore, Path passwordFile) throws Exception {
+        return Serve.tls(keystore, passwordFile);
     }
 
     /** Runs the command line; returns the exit code. */
