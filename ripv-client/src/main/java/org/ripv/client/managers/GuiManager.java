@@ -533,9 +533,20 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
                     showMailboxes(list.mailboxes());
                 }
             }
-            case Ids.FID_STATUS, Ids.FID_LOCK, Ids.FID_UNLOCK -> {
+            case Ids.FID_STATUS -> {
                 if (result instanceof MailboxStatus s) {
                     showMailboxStatus(s);
+                }
+            }
+            case Ids.FID_LOCK, Ids.FID_UNLOCK -> {
+                if (result instanceof MailboxStatus s) {
+                    showMailboxStatus(s);
+                } else {
+                    // The lock changed: ask for the MailBox's status so SS and the MAM node show it.
+                    String[] w = h.body().strip().split("\\s+");
+                    if (w.length >= 2) {
+                        send("", "?status " + w[1], Priority.NORMAL, new Origin(originService, false));
+                    }
                 }
             }
             case Ids.FID_ULDIR -> showDirectory(FileArea.UPLOAD, f.replyText().strip());
