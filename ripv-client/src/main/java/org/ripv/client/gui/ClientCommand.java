@@ -87,16 +87,33 @@ public final class ClientCommand implements Callable<Integer> {
             pw = password.toCharArray();
         }
         if (GraphicsEnvironment.isHeadless()) {
-            String target = server == null ? "HOST[:PORT]" : server;
-            err.println("Error: there is no display for the RIPV GUI (DISPLAY unset or java.awt.headless=true).");
-            err.println("Use the command-line client instead, e.g.:");
-            err.println("  ripv cli --server " + target + " --user " + (user == null ? "USER" : user)
-                    + " --password-file FILE");
+            noDisplay("DISPLAY unset or java.awt.headless=true");
             return EXIT_USAGE;
         }
-        RIPVClient client = open(server, user, pw);
+        RIPVClient client;
+        try {
+            client = open(server, user, pw);
+        } catch (java.awt.AWTError | java.awt.HeadlessException e) {
+            // DISPLAY is set but no X server answers there.
+            noDisplay(e.getMessage());
+            return EXIT_USAGE;
+        } catch (java.lang.reflect.InvocationTargetException e) {
+            if (e.getCause() instanceof java.awt.AWTError || e.getCause() instanceof java.awt.HeadlessException) {
+                noDisplay(e.getCause().getMessage());
+                return EXIT_USAGE;
+            }
+            throw e;
+        }
         client.closedLatch().await();
         return 0;
+    }
+
+    private void noDisplay(String why) {
+        String target = server == null ? "HOST[:PORT]" : server;
+        err.println("Error: there is no display for the RIPV GUI (" + why + ").");
+        err.println("Use the command-line client instead, e.g.:");
+        err.println("  ripv cli --server " + target + " --user " + (user == null ? "USER" : user)
+                + " --password-file FILE");
     }
 
     /**

@@ -170,11 +170,12 @@ public final class RIPVClient {
     public LoginDialog showLogin(String server, String user, char[] password, boolean submit) {
         LoginDialog d = new LoginDialog(frame, prefs, manager::logIn);
         d.fill(server, user, password);
+        // Modal: setVisible blocks in a nested event loop, so show it from a fresh event; the
+        // auto log-in then runs inside that loop, with the dialog saying "connecting...".
+        SwingUtilities.invokeLater(() -> d.setVisible(true));
         if (submit) {
             SwingUtilities.invokeLater(d::submit);
         }
-        // Modal: setVisible blocks in a nested event loop, so show it from a fresh event.
-        SwingUtilities.invokeLater(() -> d.setVisible(true));
         return d;
     }
 
