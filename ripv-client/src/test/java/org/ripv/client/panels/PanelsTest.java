@@ -19,7 +19,6 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.ripv.client.managers.ClientModel;
 import org.ripv.client.managers.GuiManager;
-import org.ripv.client.managers.ServiceModel;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.Footer;
 import org.ripv.messages.Header;
