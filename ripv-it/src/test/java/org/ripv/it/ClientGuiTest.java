@@ -349,9 +349,9 @@ class ClientGuiTest {
             Path local = dir.resolve("new-binary.bin");
             Files.write(local, new byte[5000]);
             window.button("ulButton").click();
-            JFileChooserFixture chooser = JFileChooserFinder.findFileChooser().withTimeout(10_000).using(robot);
-            chooser.setCurrentDirectory(dir.toFile());
-            chooser.selectFile(local.toFile());
+            // A first JFileChooser is slow to build on a busy machine: allow for it.
+            JFileChooserFixture chooser = JFileChooserFinder.findFileChooser().withTimeout(T.toMillis()).using(robot);
+            chooser.fileNameTextBox().setText(local.toString());
             chooser.approve();
             Pause.pause(new Condition("new-binary.bin in the FileTree") {
                 @Override
@@ -360,9 +360,23 @@ class ClientGuiTest {
                 }
             }, Timeout.timeout(T.toMillis()));
             assertThat(sys.uploadDir().resolve("new-binary.bin")).hasSize(5000);
+        } catch (Throwable t) {
+            screenshot("ClientGuiTest-failure.png");
+            throw t;
         } finally {
             window.cleanUp();
             prefs.removeNode();
+        }
+    }
+
+    /** Saves the screen under target/ to see what a failed window test saw. */
+    static void screenshot(String name) {
+        try {
+            java.awt.Rectangle screen = new java.awt.Rectangle(java.awt.Toolkit.getDefaultToolkit().getScreenSize());
+            javax.imageio.ImageIO.write(new java.awt.Robot().createScreenCapture(screen), "png",
+                    Path.of("target", name).toFile());
+        } catch (Exception | Error e) {
+            System.err.println("could not save a screenshot: " + e);
         }
     }
 }

@@ -37,6 +37,14 @@ public final class ServiceLayoutPanel extends JPanel {
         dav = "DAV".equals(kind) ? new ImagePanel(manager) : null;
         JComponent fourth = dab != null ? dab : dav;
 
+        // Fixed base sizes: GridBag then shares the window by weight alone, so the quadrants do
+        // not jump about when a long mailbox name or path arrives.
+        fix(com, 560, 300);
+        fix(mam, 320, 200);
+        fix(fim, 320, 240);
+        if (fourth != null) {
+            fix(fourth, 560, 260);
+        }
         // Left column wider than the right; rows share the height.
         add(com, constraints(0, 0, fourth == null ? 2 : 1, 0.65, 0.5));
         add(mam, constraints(1, 0, 1, 0.35, 0.5));
@@ -44,6 +52,11 @@ public final class ServiceLayoutPanel extends JPanel {
         if (fourth != null) {
             add(fourth, constraints(0, 1, 1, 0.65, 0.5));
         }
+    }
+
+    private static void fix(JComponent c, int w, int h) {
+        c.setPreferredSize(new java.awt.Dimension(w, h));
+        c.setMinimumSize(new java.awt.Dimension(w / 2, h / 2));
     }
 
     private static GridBagConstraints constraints(int x, int y, int height, double wx, double wy) {
