@@ -56,6 +56,14 @@ public interface GenericRMIInterface extends Remote {
     /** Several requests in one call, in order (the server batches what queued up for a service). */
     void serviceRequests(String token, List<IncomingServiceMessage> requests) throws RemoteException;
 
+    /**
+     * Takes back a request that is still waiting in a MailBox's inbox (it timed out at the
+     * server). A request already running cannot be withdrawn.
+     *
+     * @return true when the request was waiting and now will never run
+     */
+    boolean withdraw(String token, String mailbox, String clientId, long messageId) throws RemoteException;
+
     /** The service's MailBoxes and whether each can take commands now. */
     List<MailboxStatus> mailboxes(String token) throws RemoteException;
 }

@@ -235,16 +235,24 @@ class HostileInputTest {
         ClientSocketHandler c = sys.login("alice");
         java.util.List<OutgoingServerMessage> finals = new java.util.concurrent.CopyOnWriteArrayList<>();
         c.addListener(r -> {
-            if (r.status().isFinal() && r.header().body().startsWith("sleep")) {
+            if (r.status().isFinal() && !r.header().body().startsWith("?")) {
                 finals.add(r);
             }
         });
-        OutgoingServerMessage r = c.call(CLOCK, "sleep 5000", Priority.NORMAL, T, null);
+        CompletableFuture<OutgoingServerMessage> running = c.send(CLOCK, "sleep 5000", Priority.NORMAL, null);
+        CompletableFuture<OutgoingServerMessage> queued = c.send(CLOCK, "echo queued behind", Priority.NORMAL, null);
+        OutgoingServerMessage r = running.get(20, TimeUnit.SECONDS);
         assertThat(r.status()).isEqualTo(Status.ERROR);
         assertThat(r.footer().errorCode()).isEqualTo(ErrorCode.TIMEOUT);
-        assertThat(r.footer().replyText()).contains("did not answer").contains("sleep 5000");
+        assertThat(r.footer().replyText()).contains("did not answer").contains("sleep 5000").contains("may still complete");
+        OutgoingServerMessage q = queued.get(20, TimeUnit.SECONDS);
+        assertThat(q.footer().errorCode()).isEqualTo(ErrorCode.TIMEOUT);
+        assertThat(q.footer().replyText()).contains("withdrawn and will not run");
+        // After the sleep ends, the MailBox serves again and the withdrawn echo never ran.
         assertThat(c.call(CLOCK, "echo after", Priority.NORMAL, T, null).footer().replyText()).isEqualTo("after");
-        assertThat(finals).hasSize(1);
+        assertThat(finals).extracting(m -> m.header().body())
+                .containsExactlyInAnyOrder("sleep 5000", "echo queued behind", "echo after");
+        assertThat(finals.get(2).header().body()).isEqualTo("echo after");
     }
 
     @Test

@@ -27,6 +27,9 @@ final class ServiceReference {
     private final LinkedBlockingQueue<IncomingServiceMessage> queue = new LinkedBlockingQueue<>();
     private final Thread sender;
     private final Failure onFailure;
+    /** Liveness: failed checks in a row, and whether a check is under way. */
+    final java.util.concurrent.atomic.AtomicInteger failedChecks = new java.util.concurrent.atomic.AtomicInteger();
+    final java.util.concurrent.atomic.AtomicBoolean checking = new java.util.concurrent.atomic.AtomicBoolean();
     private volatile boolean closed;
 
     /** Hears of a request that could not be delivered. */
@@ -89,6 +92,15 @@ final class ServiceReference {
         List<IncomingServiceMessage> left = new ArrayList<>();
         queue.drainTo(left);
         left.forEach(r -> onFailure.failed(this, r, new RemoteException(descriptor.name() + " is no longer registered")));
+    }
+
+    /** Asks the service to drop a request that has not started; true when it will never run. */
+    boolean withdraw(org.ripv.messages.Header h) throws RemoteException {
+        if (queue.removeIf(r -> r.header().messageId() == h.messageId()
+                && r.header().origin().clientId().equals(h.origin().clientId()))) {
+            return true;
+        }
+        return stub.withdraw(token, h.mailboxAddress(), h.origin().clientId(), h.messageId());
     }
 
     List<MailboxStatus> mailboxes() throws RemoteException {
