@@ -30,11 +30,15 @@ public final class OutboxAssistantThread<I extends Message, O extends Message> e
     @Override
     public void run() {
         java.util.List<O> batch = new java.util.ArrayList<>();
-        while (running) {
+        while (true) {
             O reply;
             try {
-                reply = box.takeReply();
+                // Once stopping, deliver what is left without waiting for more.
+                reply = running ? box.takeReply() : box.pollReply();
             } catch (InterruptedException e) {
+                reply = box.pollReply();
+            }
+            if (reply == null) {
                 break;
             }
             batch.clear();
@@ -56,6 +60,7 @@ public final class OutboxAssistantThread<I extends Message, O extends Message> e
         log.debug("{} stopped", getName());
     }
 
+    /** Delivers the replies still queued, then stops; waits up to the given milliseconds. */
     public void shutdown(long waitMillis) {
         running = false;
         interrupt();

@@ -26,4 +26,10 @@ public record TableResult(String query, List<String> columns, List<String> types
         }
         rows = Collections.unmodifiableList(copy);
     }
+
+    /** Travels as one packed byte array rather than an object per cell ({@link PackedTable}). */
+    @java.io.Serial
+    private Object writeReplace() {
+        return new PackedTable(this);
+    }
 }

@@ -162,6 +162,11 @@ public final class MailBox<I extends Message, O extends Message> {
         return outbox.take();
     }
 
+    /** Removes the next reply if there is one, without waiting. */
+    public O pollReply() {
+        return outbox.poll();
+    }
+
     /** Moves up to {@code max} replies that are already waiting into {@code into}, without blocking. */
     public int drainReplies(java.util.Collection<? super O> into, int max) {
         return outbox.drainTo(into, max);

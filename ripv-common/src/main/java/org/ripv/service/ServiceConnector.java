@@ -36,6 +36,7 @@ public final class ServiceConnector implements AutoCloseable {
     private volatile String token;
     private volatile CountDownLatch registered = new CountDownLatch(1);
     private volatile boolean warnedAway;
+    private final java.util.concurrent.CompletableFuture<String> fatal = new java.util.concurrent.CompletableFuture<>();
 
     private ServiceConnector(RIPVService service, ServiceOptions options) throws RemoteException {
         this.service = service;
@@ -68,6 +69,18 @@ public final class ServiceConnector implements AutoCloseable {
         return registered.await(timeout.toMillis(), TimeUnit.MILLISECONDS);
     }
 
+    /**
+     * Blocks until the connector has given up for good (the server refused the secret), and
+     * returns why. A launcher calls this after {@link #connect} to serve until then.
+     */
+    public String awaitFailure() throws InterruptedException {
+        try {
+            return fatal.get();
+        } catch (java.util.concurrent.ExecutionException e) {
+            return e.getCause().toString();
+        }
+    }
+
     public boolean isRegistered() {
         return token != null;
     }
@@ -94,7 +107,11 @@ public final class ServiceConnector implements AutoCloseable {
                         options.registryPort(), e.getMessage(), options.heartbeat().toSeconds());
             }
         } catch (SecurityException e) {
+            // Retrying cannot fix a wrong secret: stop and let the launcher say so.
             log.error("{}: the server refused registration: {}", service.name(), e.getMessage());
+            fatal.complete("the server at " + options.serverHost() + ":" + options.registryPort()
+                    + " refused the registration: " + e.getMessage());
+            timer.shutdown();
         } catch (RuntimeException e) {
             log.error("{}: heartbeat failed", service.name(), e);
         }
@@ -151,6 +168,7 @@ public final class ServiceConnector implements AutoCloseable {
     /** Stops checking in and withdraws the service's RMI object. The service itself keeps running. */
     @Override
     public void close() {
+        fatal.complete("closed");
         timer.shutdownNow();
         RmiSupport.unexport(remote);
         token = null;

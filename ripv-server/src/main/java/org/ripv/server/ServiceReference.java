@@ -27,6 +27,9 @@ final class ServiceReference {
     private final LinkedBlockingQueue<IncomingServiceMessage> queue = new LinkedBlockingQueue<>();
     private final Thread sender;
     private final Failure onFailure;
+    /** Liveness: failed checks in a row, and whether a check is under way. */
+    final java.util.concurrent.atomic.AtomicInteger failedChecks = new java.util.concurrent.atomic.AtomicInteger();
+    final java.util.concurrent.atomic.AtomicBoolean checking = new java.util.concurrent.atomic.AtomicBoolean();
     private volatile boolean closed;
 
     /** Hears of a request that could not be delivered. */

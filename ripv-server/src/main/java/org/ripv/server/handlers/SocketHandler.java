@@ -83,6 +83,13 @@ public final class SocketHandler {
         return roles;
     }
 
+    private int failedLogins;
+
+    /** Counts a failed log-in; returns how many this connection has had. */
+    public synchronized int failedLogin() {
+        return ++failedLogins;
+    }
+
     public boolean isLoggedIn() {
         return !badge.user().isEmpty();
     }

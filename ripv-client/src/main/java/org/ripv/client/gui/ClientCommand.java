@@ -1,0 +1,150 @@
+package org.ripv.client.gui;
+
+import java.awt.GraphicsEnvironment;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.prefs.Preferences;
+import javax.swing.SwingUtilities;
+import com.formdev.flatlaf.FlatLightLaf;
+import org.ripv.client.managers.ClientModel;
+import org.ripv.client.managers.GuiManager;
+import org.ripv.client.panels.HostPort;
+import org.ripv.client.panels.LoginDialog;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+
+/**
+ * {@code ripv client [HOST[:PORT]] [--user U] [--password-file F | --password P]}: opens the
+ * RIPVClient window and its log-in dialog, filled with what was given. With a password (the
+ * demo) it logs in at once. Without a display it says to use {@code ripv cli} instead.
+ *
+ * <p>Exit codes: 0 when the window was closed, 1 when the password file cannot be read,
+ * 2 for a usage error or no display.
+ */
+@Command(name = "client", mixinStandardHelpOptions = true,
+        description = "Opens the RIPV operator GUI (log-in dialog, services, COM/MAM/FIM/DAB/DAV panels).",
+        exitCodeOnInvalidInput = 2)
+public final class ClientCommand implements Callable<Integer> {
+    /** Exit code: no display (headless) or bad arguments. */
+    public static final int EXIT_USAGE = 2;
+
+    @Parameters(index = "0", arity = "0..1", paramLabel = "HOST[:PORT]",
+            description = "The RIPVServer to log in to (default: the last one used, else localhost:4444).")
+    String server;
+
+    @Option(names = "--user", paramLabel = "USER", description = "User name (default: the last one used).")
+    String user;
+
+    @Option(names = "--password-file", paramLabel = "FILE",
+            description = "Read the password from the first line of FILE and log in at once.")
+    Path passwordFile;
+
+    @Option(names = "--password", paramLabel = "PASSWORD",
+            description = "The password, logging in at once (for the demo; it shows in the process list).")
+    String password;
+
+    private final PrintStream err;
+
+    public ClientCommand() {
+        this(System.err);
+    }
+
+    /** With the stream errors go to (tests). */
+    public ClientCommand(PrintStream err) {
+        this.err = err;
+    }
+
+    @Override
+    public Integer call() throws Exception {
+        if (server != null) {
+            try {
+                HostPort.parse(server, LoginDialog.DEFAULT_PORT);
+            } catch (IllegalArgumentException e) {
+                err.println("Error: " + e.getMessage());
+                return EXIT_USAGE;
+            }
+        }
+        if (password != null && passwordFile != null) {
+            err.println("Error: give --password or --password-file, not both");
+            return EXIT_USAGE;
+        }
+        char[] pw = null;
+        if (passwordFile != null) {
+            try {
+                pw = readPassword(passwordFile);
+            } catch (IOException e) {
+                err.println("Error: cannot read the password file " + passwordFile + ": " + e.getMessage());
+                return 1;
+            }
+        } else if (password != null) {
+            pw = password.toCharArray();
+        }
+        if (GraphicsEnvironment.isHeadless()) {
+            noDisplay("DISPLAY unset or java.awt.headless=true");
+            return EXIT_USAGE;
+        }
+        RIPVClient client;
+        try {
+            client = open(server, user, pw);
+        } catch (java.awt.AWTError | java.awt.HeadlessException e) {
+            // DISPLAY is set but no X server answers there.
+            noDisplay(e.getMessage());
+            return EXIT_USAGE;
+        } catch (java.lang.reflect.InvocationTargetException e) {
+            if (e.getCause() instanceof java.awt.AWTError || e.getCause() instanceof java.awt.HeadlessException) {
+                noDisplay(e.getCause().getMessage());
+                return EXIT_USAGE;
+            }
+            throw e;
+        }
+        client.closedLatch().await();
+        return 0;
+    }
+
+    private void noDisplay(String why) {
+        String target = server == null ? "HOST[:PORT]" : server;
+        err.println("Error: there is no display for the RIPV GUI (" + why + ").");
+        err.println("Use the command-line client instead, e.g.:");
+        err.println("  ripv cli --server " + target + " --user " + (user == null ? "USER" : user)
+                + " --password-file FILE");
+    }
+
+    /**
+     * Opens the window with FlatLaf and the log-in dialog, on the event thread; returns once it
+     * is showing. A non-null password logs in at once.
+     */
+    public static RIPVClient open(String server, String user, char[] password) throws Exception {
+        AtomicReference<RIPVClient> ref = new AtomicReference<>();
+        SwingUtilities.invokeAndWait(() -> {
+            FlatLightLaf.setup();
+            GuiManager manager = new GuiManager(new ClientModel());
+            RIPVClient client = new RIPVClient(manager, Preferences.userNodeForPackage(RIPVClient.class));
+            client.show();
+            client.showLogin(server, user, password, password != null);
+            ref.set(client);
+        });
+        return ref.get();
+    }
+
+    /** The first line of the file, without its line end. */
+    static char[] readPassword(Path file) throws IOException {
+        String text = Files.readString(file, StandardCharsets.UTF_8);
+        int nl = text.indexOf('\n');
+        String line = nl < 0 ? text : text.substring(0, nl);
+        if (line.endsWith("\r")) {
+            line = line.substring(0, line.length() - 1);
+        }
+        return line.toCharArray();
+    }
+
+    public static void main(String[] args) {
+        System.exit(new CommandLine(new ClientCommand()).execute(args));
+    }
+}

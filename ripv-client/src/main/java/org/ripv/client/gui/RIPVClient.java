@@ -1,0 +1,282 @@
+package org.ripv.client.gui;
+
+import java.awt.BorderLayout;
+import java.awt.Color;
+import java.awt.Dimension;
+import java.awt.event.KeyEvent;
+import java.awt.event.WindowAdapter;
+import java.awt.event.WindowEvent;
+import java.util.LinkedHashMap;
+import java.util.Map;
+import java.util.concurrent.CountDownLatch;
+import java.util.prefs.Preferences;
+import javax.swing.BorderFactory;
+import javax.swing.JButton;
+import javax.swing.JFrame;
+import javax.swing.JLabel;
+import javax.swing.JMenu;
+import javax.swing.JMenuBar;
+import javax.swing.JMenuItem;
+import javax.swing.JPanel;
+import javax.swing.JScrollPane;
+import javax.swing.JSplitPane;
+import javax.swing.JTabbedPane;
+import javax.swing.KeyStroke;
+import javax.swing.SwingUtilities;
+import javax.swing.UIManager;
+import org.ripv.client.managers.ClientModel;
+import org.ripv.client.managers.ClientModel.Connection;
+import org.ripv.client.managers.GuiManager;
+import org.ripv.client.managers.ServiceModel;
+import org.ripv.client.panels.LoginDialog;
+import org.ripv.client.panels.ServiceLayoutPanel;
+import org.ripv.client.trees.ServiceTree;
+import org.ripv.naming.ServiceName;
+
+/**
+ * The RIPVClient main window (thesis 4.1.2–4.1.3): the SEL panel's {@link ServiceTree} on the
+ * left, a {@link JTabbedPane} with one {@link ServiceLayoutPanel} per registered service, a
+ * banner when the connection is lost, and a status bar. Tabs follow the service list as services
+ * register and vanish. Build and use it on the event thread; the {@link GuiManager} does all
+ * network work elsewhere.
+ *
+ * <pre>{@code
+ * ClientModel model = new ClientModel();
+ * GuiManager manager = new GuiManager(model);
+ * SwingUtilities.invokeLater(() -> {
+ *     RIPVClient client = new RIPVClient(manager, Preferences.userNodeForPackage(RIPVClient.class));
+ *     client.show();
+ *     client.showLogin(null, null, null, false);
+ * });
+ * }</pre>
+ */
+public final class RIPVClient {
+    private final GuiManager manager;
+    private final ClientModel model;
+    private final Preferences prefs;
+    private final JFrame frame = new JFrame("RIPV Client");
+    private final ServiceTree serviceTree;
+    private final JTabbedPane tabs = new JTabbedPane();
+    private final Map<String, ServiceLayoutPanel> panels = new LinkedHashMap<>();
+    private final JLabel banner = new JLabel(" ");
+    private final JLabel status = new JLabel(" ");
+    private final JLabel connection = new JLabel(" ");
+    private final CountDownLatch closed = new CountDownLatch(1);
+    private boolean syncing;
+
+    public RIPVClient(GuiManager manager, Preferences prefs) {
+        this.manager = manager;
+        this.model = manager.model();
+        this.prefs = prefs;
+        frame.setName("ripvClient");
+        serviceTree = new ServiceTree(this::selectService);
+        tabs.setName("serviceTabs");
+        tabs.addChangeListener(e -> {
+            if (!syncing && tabs.getSelectedComponent() instanceof ServiceLayoutPanel p) {
+                serviceTree.select(p.service());
+            }
+        });
+
+        JButton refresh = new JButton("Refresh");
+        refresh.setName("selRefresh");
+        refresh.setToolTipText("Ask the server for its services again (?services); also every 15 s");
+        refresh.addActionListener(e -> manager.refresh());
+        JPanel sel = new JPanel(new BorderLayout(2, 2));
+        sel.setBorder(BorderFactory.createTitledBorder("SEL — services"));
+        sel.add(new JScrollPane(serviceTree), BorderLayout.CENTER);
+        sel.add(refresh, BorderLayout.SOUTH);
+        sel.setPreferredSize(new Dimension(250, 400));
+
+        JPanel center = new JPanel(new BorderLayout());
+        center.add(tabs, BorderLayout.CENTER);
+        JSplitPane split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, sel, center);
+        split.setResizeWeight(0.0);
+        split.setContinuousLayout(true);
+        // A sensible first size that pack() keeps, shrunk to fit small screens.
+        Dimension screen = java.awt.Toolkit.getDefaultToolkit().getScreenSize();
+        split.setPreferredSize(new Dimension(Math.min(1360, screen.width - 40), Math.min(820, screen.height - 120)));
+
+        banner.setName("connectionBanner");
+        banner.setOpaque(true);
+        banner.setBorder(BorderFactory.createEmptyBorder(4, 8, 4, 8));
+        banner.setVisible(false);
+        status.setName("statusBar");
+        connection.setName("connectionLabel");
+        JPanel bottom = new JPanel(new BorderLayout(8, 0));
+        bottom.setBorder(BorderFactory.createEmptyBorder(2, 6, 2, 6));
+        bottom.add(status, BorderLayout.CENTER);
+        bottom.add(connection, BorderLayout.EAST);
+
+        frame.setJMenuBar(menu());
+        frame.getContentPane().add(banner, BorderLayout.NORTH);
+        frame.getContentPane().add(split, BorderLayout.CENTER);
+        frame.getContentPane().add(bottom, BorderLayout.SOUTH);
+        frame.setDefaultCloseOperation(JFrame.DISPOSE_ON_CLOSE);
+        frame.addWindowListener(new WindowAdapter() {
+            @Override
+            public void windowClosed(WindowEvent e) {
+                manager.close();
+                closed.countDown();
+            }
+        });
+        frame.pack();
+        frame.setLocationByPlatform(true);
+        model.addListener(this::changed);
+        syncServices();
+        showConnection();
+    }
+
+    private JMenuBar menu() {
+        JMenuBar bar = new JMenuBar();
+        JMenu server = new JMenu("Server");
+        server.setMnemonic(KeyEvent.VK_S);
+        JMenuItem login = new JMenuItem("Log in...");
+        login.addActionListener(e -> showLogin(null, null, null, false));
+        JMenuItem logout = new JMenuItem("Log out");
+        logout.addActionListener(e -> manager.logOut());
+        JMenuItem refresh = new JMenuItem("Refresh");
+        refresh.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_F5, 0));
+        refresh.addActionListener(e -> manager.refresh());
+        JMenuItem quit = new JMenuItem("Quit");
+        quit.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_Q, java.awt.event.InputEvent.CTRL_DOWN_MASK));
+        quit.addActionListener(e -> frame.dispose());
+        server.add(login);
+        server.add(logout);
+        server.add(refresh);
+        server.addSeparator();
+        server.add(quit);
+        bar.add(server);
+        return bar;
+    }
+
+    /** Shows the window. */
+    public void show() {
+        frame.setVisible(true);
+    }
+
+    public JFrame frame() {
+        return frame;
+    }
+
+    /** Counts down when the window has closed and the manager stopped. */
+    public CountDownLatch closedLatch() {
+        return closed;
+    }
+
+    /**
+     * Shows the log-in dialog (non-blocking for the caller: it is modal to the window only). With
+     * {@code submit} and a password it logs in at once, as the demo does.
+     */
+    public LoginDialog showLogin(String server, String user, char[] password, boolean submit) {
+        LoginDialog d = new LoginDialog(frame, prefs, manager::logIn);
+        d.fill(server, user, password);
+        // Modal: setVisible blocks in a nested event loop, so show it from a fresh event; the
+        // auto log-in then runs inside that loop, with the dialog saying "connecting...".
+        SwingUtilities.invokeLater(() -> d.setVisible(true));
+        if (submit) {
+            SwingUtilities.invokeLater(d::submit);
+        }
+        return d;
+    }
+
+    private void selectService(String service) {
+        ServiceLayoutPanel p = panels.get(service);
+        if (p != null) {
+            syncing = true;
+            tabs.setSelectedComponent(p);
+            syncing = false;
+        }
+    }
+
+    private void changed(ClientModel.Change c) {
+        switch (c.kind()) {
+            case SERVICES -> syncServices();
+            case CONNECTION -> showConnection();
+            case NOTICE -> {
+                status.setText(model.notice().isEmpty() ? " " : model.notice());
+                status.setForeground(model.noticeIsError() ? new Color(0xB00020) : UIManager.getColor("Label.foreground"));
+                status.setToolTipText(model.notice());
+            }
+            default -> {
+                if (c.service() == null) {
+                    panels.values().forEach(p -> p.update(model, c.kind()));
+                } else {
+                    ServiceLayoutPanel p = panels.get(c.service());
+                    if (p != null) {
+                        p.update(model, c.kind());
+                    }
+                }
+            }
+        }
+    }
+
+    /** Adds tabs for new services, removes those of vanished ones. */
+    private void syncServices() {
+        syncing = true;
+        try {
+            panels.entrySet().removeIf(e -> {
+                if (model.service(e.getKey()) == null) {
+                    tabs.remove(e.getValue());
+                    return true;
+                }
+                return false;
+            });
+            for (ServiceModel s : model.services()) {
+                if (!panels.containsKey(s.name())) {
+                    ServiceLayoutPanel p = new ServiceLayoutPanel(s, manager);
+                    panels.put(s.name(), p);
+                    tabs.addTab(tabTitle(s.name()), null, p, s.name() + " — " + s.descriptor().description());
+                    p.updateAll(model);
+                }
+            }
+            serviceTree.update(model);
+            if (tabs.getSelectedComponent() instanceof ServiceLayoutPanel p) {
+                serviceTree.select(p.service());
+            }
+        } finally {
+            syncing = false;
+        }
+    }
+
+    static String tabTitle(String service) {
+        try {
+            ServiceName n = ServiceName.parse(service);
+            return n.service() + " @ " + n.host();
+        } catch (IllegalArgumentException e) {
+            return service;
+        }
+    }
+
+    private void showConnection() {
+        Connection c = model.connection();
+        String who = model.session() == null ? "" : model.session().user() + "@";
+        connection.setText(switch (c) {
+            case CONNECTED -> "connected: " + who + model.server();
+            case CONNECTING -> "connecting...";
+            case LOST -> "connection lost";
+            case DISCONNECTED -> "not connected";
+        });
+        frame.setTitle("RIPV Client" + (c == Connection.CONNECTED ? " — " + who + model.server() : ""));
+        boolean show = c == Connection.LOST || (c == Connection.DISCONNECTED && !model.connectionDetail().isEmpty()
+                && !model.connectionDetail().equals("logged out"));
+        banner.setVisible(show);
+        if (show) {
+            banner.setText((c == Connection.LOST ? "Connection lost: " : "Not connected: ") + model.connectionDetail());
+            banner.setBackground(c == Connection.LOST ? new Color(0xFFE08A) : new Color(0xF4C7C3));
+            banner.setForeground(Color.BLACK);
+        }
+    }
+
+    /** The tab of a service, or null. */
+    public ServiceLayoutPanel panel(String service) {
+        return panels.get(service);
+    }
+
+    public ServiceTree serviceTree() {
+        return serviceTree;
+    }
+
+    public JTabbedPane tabs() {
+        return tabs;
+    }
+}

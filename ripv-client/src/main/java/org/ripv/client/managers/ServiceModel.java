@@ -1,0 +1,232 @@
+package org.ripv.client.managers;
+
+import java.awt.image.BufferedImage;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import org.ripv.messages.ImageResult;
+import org.ripv.messages.MailboxStatus;
+import org.ripv.messages.Priority;
+import org.ripv.messages.Progress;
+import org.ripv.messages.ServiceDescriptor;
+import org.ripv.messages.TableResult;
+
+/**
+ * What one ServiceLayoutPanel shows: the service's descriptor, its MailBoxes (MAM), the COM
+ * panel's state (target mailbox, status labels, history, reply transcript, progress), and the
+ * fourth panel's content (DAB tables or the DAV image).
+ *
+ * <p>Like {@link ClientModel}, it is confined to the thread that applies changes (the event
+ * thread in the GUI); only {@link GuiManager} mutates it.
+ */
+public final class ServiceModel {
+    /** Kinds of transcript line in the COM reply area. */
+    public enum LineKind { COMMAND, REPLY, ERROR, PROGRESS, NOTICE }
+
+    /** One line (or block) of the COM reply area. */
+    public record Line(LineKind kind, String text) {}
+
+    /** The DAV panel's picture: the reply's bytes and, when they decode, the image. */
+    public record Picture(ImageResult result, BufferedImage image) {}
+
+    /** The reply area keeps at most this many entries; older ones scroll away. */
+    public static final int MAX_LINES = 2000;
+    /** Commands remembered for Up/Down recall. */
+    public static final int MAX_HISTORY = 200;
+
+    private ServiceDescriptor descriptor;
+    private final List<MailboxStatus> mailboxes = new ArrayList<>();
+    private String target = "";
+    private String lastAction = "";
+    private Priority priority = Priority.NORMAL;
+    private String serviceStatus = "";
+    private final List<String> history = new ArrayList<>();
+    private final List<Line> transcript = new ArrayList<>();
+    private Progress progress;
+    private final List<TableResult> tables = new ArrayList<>();
+    private Picture picture;
+    private long transcriptRevision;
+
+    ServiceModel(ServiceDescriptor descriptor) {
+        this.descriptor = descriptor;
+    }
+
+    public ServiceDescriptor descriptor() {
+        return descriptor;
+    }
+
+    public String name() {
+        return descriptor.name();
+    }
+
+    /** "DAB", "DAV" or "" (COM spans both rows). */
+    public String panel() {
+        return descriptor.panel();
+    }
+
+    public List<MailboxStatus> mailboxes() {
+        return Collections.unmodifiableList(mailboxes);
+    }
+
+    /** The MailBox plain commands go to (Talking To, TT), or empty when none is picked. */
+    public String target() {
+        return target;
+    }
+
+    /** The last command sent (LA). */
+    public String lastAction() {
+        return lastAction;
+    }
+
+    /** The priority the next command is sent with (PR). */
+    public Priority priority() {
+        return priority;
+    }
+
+    /** The target's status (SS): "available", "not available: ...", "locked by ...". */
+    public String serviceStatus() {
+        return serviceStatus;
+    }
+
+    public List<String> history() {
+        return Collections.unmodifiableList(history);
+    }
+
+    public List<Line> transcript() {
+        return Collections.unmodifiableList(transcript);
+    }
+
+    /** The transfer or long command in progress, or null. */
+    public Progress progress() {
+        return progress;
+    }
+
+    /** DAB: one entry per query answered, oldest first. */
+    public List<TableResult> tables() {
+        return Collections.unmodifiableList(tables);
+    }
+
+    /** DAV: the latest picture, or null. */
+    public Picture picture() {
+        return picture;
+    }
+
+    /** Grows with every change of the transcript, so views know when to repaint it. */
+    public long transcriptRevision() {
+        return transcriptRevision;
+    }
+
+    /** The transcript as the reply area shows it. */
+    public String transcriptText() {
+        StringBuilder b = new StringBuilder();
+        for (Line l : transcript) {
+            switch (l.kind()) {
+                case COMMAND -> b.append("> ");
+                case ERROR -> b.append("Error: ");
+                case NOTICE -> b.append("-- ");
+                default -> { }
+            }
+            b.append(l.text());
+            if (!l.text().endsWith("\n")) {
+                b.append('\n');
+            }
+        }
+        return b.toString();
+    }
+
+    // Mutators, package-private: only the GuiManager changes the model.
+
+    void descriptor(ServiceDescriptor d) {
+        this.descriptor = d;
+    }
+
+    void mailboxes(List<MailboxStatus> list) {
+        mailboxes.clear();
+        mailboxes.addAll(list);
+        for (MailboxStatus m : list) {
+            if (m.address().equals(target)) {
+                serviceStatus = describe(m);
+            }
+        }
+    }
+
+    void status(MailboxStatus s) {
+        for (int i = 0; i < mailboxes.size(); i++) {
+            if (mailboxes.get(i).address().equals(s.address())) {
+                mailboxes.set(i, s);
+            }
+        }
+        if (s.address().equals(target)) {
+            serviceStatus = describe(s);
+        }
+    }
+
+    void target(String mailbox) {
+        this.target = mailbox == null ? "" : mailbox;
+        this.serviceStatus = "";
+        for (MailboxStatus m : mailboxes) {
+            if (m.address().equals(target)) {
+                serviceStatus = describe(m);
+            }
+        }
+    }
+
+    void priority(Priority p) {
+        this.priority = p;
+    }
+
+    void sent(String command) {
+        lastAction = command;
+        if (history.isEmpty() || !history.get(history.size() - 1).equals(command)) {
+            history.add(command);
+            if (history.size() > MAX_HISTORY) {
+                history.remove(0);
+            }
+        }
+        append(LineKind.COMMAND, command);
+    }
+
+    void append(LineKind kind, String text) {
+        transcriptRevision++;
+        transcript.add(new Line(kind, text));
+        if (transcript.size() > MAX_LINES) {
+            transcript.subList(0, transcript.size() - MAX_LINES).clear();
+        }
+    }
+
+    void clearTranscript() {
+        transcriptRevision++;
+        transcript.clear();
+    }
+
+    void progress(Progress p) {
+        this.progress = p;
+    }
+
+    void addTable(TableResult t) {
+        tables.add(t);
+    }
+
+    void removeTable(int index) {
+        tables.remove(index);
+    }
+
+    void picture(Picture p) {
+        this.picture = p;
+    }
+
+    /** How the SS label words a mailbox's status. */
+    static String describe(MailboxStatus s) {
+        StringBuilder b = new StringBuilder(s.available() ? "available" : "not available");
+        if (!s.detail().isBlank()) {
+            b.append(" (").append(s.detail()).append(')');
+        }
+        if (s.busy()) {
+            b.append(", busy");
+        }
+        if (!s.lockedBy().isBlank()) {
+            b.append(", locked by ").append(s.lockedBy());
+        }
+        return b.toString();
+    }
+}

@@ -1,0 +1,186 @@
+package org.ripv.client.panels;
+
+import java.awt.BorderLayout;
+import java.awt.Font;
+import java.awt.GridBagConstraints;
+import java.awt.GridBagLayout;
+import java.awt.Insets;
+import java.awt.event.KeyAdapter;
+import java.awt.event.KeyEvent;
+import javax.swing.BorderFactory;
+import javax.swing.JButton;
+import javax.swing.JComboBox;
+import javax.swing.JLabel;
+import javax.swing.JPanel;
+import javax.swing.JProgressBar;
+import javax.swing.JScrollPane;
+import javax.swing.JTextArea;
+import javax.swing.JTextField;
+import org.ripv.client.managers.GuiManager;
+import org.ripv.client.managers.ServiceModel;
+import org.ripv.messages.Priority;
+import org.ripv.messages.Progress;
+
+/**
+ * The COmmunications Management panel (thesis 4.1.3.1, figure 4.6): the command line (Enter
+ * sends, Up/Down recall), the priority selector, the status labels Talking To [TT], Last Action
+ * [LA], Priority [PR] and Service Status [SS], the reply area [RA] and a progress bar for long
+ * commands (YMODEM transfers).
+ */
+public final class ComPanel extends JPanel {
+    private final String service;
+    private final GuiManager manager;
+    private final JTextField command = new JTextField();
+    private final JComboBox<Priority> priority = new JComboBox<>(Priority.values());
+    private final JLabel talkingTo = value("talkingTo");
+    private final JLabel lastAction = value("lastAction");
+    private final JLabel priorityLabel = value("priorityLabel");
+    private final JLabel serviceStatus = value("serviceStatus");
+    private final JTextArea replies = new JTextArea();
+    private final JProgressBar progress = new JProgressBar();
+    private final CommandHistory history = new CommandHistory();
+    private long shownRevision = -1;
+    private boolean updating;
+
+    public ComPanel(String service, GuiManager manager) {
+        super(new BorderLayout(4, 4));
+        this.service = service;
+        this.manager = manager;
+        setName("com");
+        setBorder(BorderFactory.createTitledBorder("COM — communications"));
+
+        JPanel labels = new JPanel(new GridBagLayout());
+        addLabel(labels, 0, "TT", "Talking To: the MailBox plain commands go to", talkingTo);
+        addLabel(labels, 1, "LA", "Last Action: the last command sent", lastAction);
+        addLabel(labels, 2, "PR", "Priority: the inbox the next command waits in (normal, priority, urgent)", priorityLabel);
+        addLabel(labels, 3, "SS", "Service Status: whether the MailBox can take commands now", serviceStatus);
+
+        replies.setName("replyArea");
+        replies.setEditable(false);
+        replies.setLineWrap(false);
+        replies.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
+        replies.setToolTipText("RA: the Reply Area — replies, errors and progress");
+        JScrollPane scroll = new JScrollPane(replies);
+        scroll.setPreferredSize(new java.awt.Dimension(420, 180));
+
+        command.setName("commandField");
+        command.setToolTipText("Command for the MailBox (dir, SQL, vis:FILE) or ?server command; Enter sends, Up/Down recall");
+        command.addActionListener(e -> send());
+        command.addKeyListener(new KeyAdapter() {
+            @Override
+            public void keyPressed(KeyEvent e) {
+                String recalled = switch (e.getKeyCode()) {
+                    case KeyEvent.VK_UP -> history.up(command.getText());
+                    case KeyEvent.VK_DOWN -> history.down();
+                    default -> null;
+                };
+                if (recalled != null) {
+                    command.setText(recalled);
+                    e.consume();
+                }
+            }
+        });
+        priority.setName("priorityBox");
+        priority.setToolTipText("PR: priority of the next command");
+        priority.addActionListener(e -> {
+            if (!updating) {
+                manager.setPriority(service, (Priority) priority.getSelectedItem());
+            }
+        });
+        JButton send = new JButton("Send");
+        send.setName("sendButton");
+        send.addActionListener(e -> send());
+        JButton clear = new JButton("Clear");
+        clear.setToolTipText("Empty the reply area");
+        clear.addActionListener(e -> manager.clearTranscript(service));
+
+        JPanel line = new JPanel(new BorderLayout(4, 0));
+        line.add(new JLabel("Command:"), BorderLayout.WEST);
+        line.add(command, BorderLayout.CENTER);
+        JPanel buttons = new JPanel(new java.awt.FlowLayout(java.awt.FlowLayout.RIGHT, 4, 0));
+        buttons.add(priority);
+        buttons.add(send);
+        buttons.add(clear);
+        line.add(buttons, BorderLayout.EAST);
+
+        progress.setName("comProgress");
+        progress.setStringPainted(true);
+        progress.setVisible(false);
+
+        JPanel south = new JPanel(new BorderLayout(0, 2));
+        south.add(progress, BorderLayout.NORTH);
+        south.add(line, BorderLayout.SOUTH);
+
+        add(labels, BorderLayout.NORTH);
+        add(scroll, BorderLayout.CENTER);
+        add(south, BorderLayout.SOUTH);
+    }
+
+    private static JLabel value(String name) {
+        JLabel l = new JLabel(" ");
+        l.setName(name);
+        return l;
+    }
+
+    private static void addLabel(JPanel p, int row, String abbrev, String tip, JLabel value) {
+        JLabel key = new JLabel(abbrev + ":");
+        key.setToolTipText(tip);
+        key.setFont(key.getFont().deriveFont(Font.BOLD));
+        value.setToolTipText(tip);
+        GridBagConstraints c = new GridBagConstraints();
+        c.gridy = row;
+        c.gridx = 0;
+        c.anchor = GridBagConstraints.WEST;
+        c.insets = new Insets(1, 2, 1, 6);
+        p.add(key, c);
+        c.gridx = 1;
+        c.weightx = 1;
+        c.fill = GridBagConstraints.HORIZONTAL;
+        p.add(value, c);
+    }
+
+    private void send() {
+        String text = command.getText();
+        if (text.isBlank()) {
+            return;
+        }
+        manager.sendCommand(service, text);
+        command.setText("");
+    }
+
+    /** Repaints from the model; on the event thread. */
+    public void update(ServiceModel m) {
+        updating = true;
+        try {
+            talkingTo.setText(m.target().isEmpty() ? "(no MailBox picked)" : m.target());
+            lastAction.setText(m.lastAction().isEmpty() ? " " : m.lastAction());
+            priorityLabel.setText(m.priority().name().toLowerCase(java.util.Locale.ROOT) + " (" + m.priority().level() + ")");
+            priority.setSelectedItem(m.priority());
+            serviceStatus.setText(m.serviceStatus().isEmpty() ? " " : m.serviceStatus());
+            serviceStatus.setForeground(m.serviceStatus().startsWith("not") ? new java.awt.Color(0xB00020)
+                    : javax.swing.UIManager.getColor("Label.foreground"));
+            if (m.transcriptRevision() != shownRevision) {
+                replies.setText(m.transcriptText());
+                replies.setCaretPosition(replies.getDocument().getLength());
+                shownRevision = m.transcriptRevision();
+                // Something was sent or answered: recall starts again from the newest command.
+                history.reset(m.history());
+            }
+            Progress p = m.progress();
+            progress.setVisible(p != null);
+            if (p != null) {
+                progress.setIndeterminate(p.percent() < 0);
+                progress.setValue(Math.max(0, p.percent()));
+                progress.setString(p.what() + "  " + p.done() + (p.total() > 0 ? " / " + p.total() : "") + " bytes"
+                        + (p.ratePerSecond() > 0 ? String.format(java.util.Locale.ROOT, "  %.0f B/s", p.ratePerSecond()) : ""));
+            }
+        } finally {
+            updating = false;
+        }
+    }
+
+    /** The reply area's text (for tests and copy). */
+    public String replyText() {
+        return replies.getText();
+    }
+}

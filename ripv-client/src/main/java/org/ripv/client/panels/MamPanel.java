@@ -1,0 +1,61 @@
+package org.ripv.client.panels;
+
+import java.awt.BorderLayout;
+import java.awt.FlowLayout;
+import javax.swing.BorderFactory;
+import javax.swing.JButton;
+import javax.swing.JPanel;
+import javax.swing.JScrollPane;
+import org.ripv.client.managers.GuiManager;
+import org.ripv.client.managers.ServiceModel;
+import org.ripv.client.trees.MailboxTree;
+
+/**
+ * The MAilbox Management panel (thesis 4.1.3.2): the service's MailBoxes in a
+ * {@link MailboxTree}; picking one makes it the COM panel's target. Lock and Unlock take and
+ * release the operator lock on the target ({@code ?lock}, {@code ?unlock}).
+ */
+public final class MamPanel extends JPanel {
+    private final MailboxTree tree;
+    private final JButton lock = new JButton("Lock");
+    private final JButton unlock = new JButton("Unlock");
+    private String target = "";
+
+    public MamPanel(String service, GuiManager manager) {
+        super(new BorderLayout(4, 4));
+        setName("mam");
+        setBorder(BorderFactory.createTitledBorder("MAM — mailboxes"));
+        tree = new MailboxTree(service, mailbox -> manager.selectMailbox(service, mailbox));
+        JScrollPane scroll = new JScrollPane(tree);
+        scroll.setPreferredSize(new java.awt.Dimension(260, 120));
+        add(scroll, BorderLayout.CENTER);
+
+        JButton refresh = new JButton("Refresh");
+        refresh.setName("mamRefresh");
+        refresh.setToolTipText("Ask the server again for the services and their MailBoxes (?services, ?mailboxes)");
+        refresh.addActionListener(e -> manager.refreshServices());
+        lock.setName("lockButton");
+        lock.setToolTipText("Hold the target MailBox for yourself so others cannot command it meanwhile (?lock)");
+        lock.addActionListener(e -> manager.sendCommand(service, "?lock " + target));
+        unlock.setName("unlockButton");
+        unlock.setToolTipText("Release your lock on the target MailBox (?unlock)");
+        unlock.addActionListener(e -> manager.sendCommand(service, "?unlock " + target));
+        JPanel buttons = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 0));
+        buttons.add(refresh);
+        buttons.add(lock);
+        buttons.add(unlock);
+        add(buttons, BorderLayout.SOUTH);
+    }
+
+    /** Repaints from the model; on the event thread. */
+    public void update(ServiceModel m) {
+        target = m.target();
+        tree.update(m.mailboxes(), m.target());
+        lock.setEnabled(!target.isEmpty());
+        unlock.setEnabled(!target.isEmpty());
+    }
+
+    public MailboxTree tree() {
+        return tree;
+    }
+}

@@ -1,0 +1,142 @@
+package org.ripv.client.panels;
+
+import java.awt.GridBagConstraints;
+import java.awt.GridBagLayout;
+import java.awt.Insets;
+import javax.swing.JComponent;
+import javax.swing.JPanel;
+import org.ripv.client.managers.ClientModel;
+import org.ripv.client.managers.GuiManager;
+import org.ripv.client.managers.ServiceModel;
+
+/**
+ * One service's tab (thesis 4.1.3, figure 4.5): a four-quadrant {@link GridBagLayout} with the
+ * COM panel top left, the MAM panel top right, the FIM panel bottom right, and the service's
+ * fourth panel bottom left — DAB ({@link DatabasePanel}) or DAV ({@link ImagePanel}) as its
+ * descriptor says. A service without a fourth panel (the SerialPortServer) gets a COM panel
+ * spanning both rows, for more reply area.
+ */
+public final class ServiceLayoutPanel extends JPanel {
+    private final String service;
+    private final String kind;
+    private final ComPanel com;
+    private final MamPanel mam;
+    private final FimPanel fim;
+    private final DatabasePanel dab;
+    private final ImagePanel dav;
+
+    public ServiceLayoutPanel(ServiceModel model, GuiManager manager) {
+        super(new GridBagLayout());
+        this.service = model.name();
+        this.kind = model.panel();
+        setName("service:" + service);
+        com = new ComPanel(service, manager);
+        mam = new MamPanel(service, manager);
+        fim = new FimPanel(manager);
+        dab = "DAB".equals(kind) ? new DatabasePanel(service, manager) : null;
+        dav = "DAV".equals(kind) ? new ImagePanel(manager) : null;
+        JComponent fourth = dab != null ? dab : dav;
+
+        // Fixed base sizes: GridBag then shares the window by weight alone, so the quadrants do
+        // not jump about when a long mailbox name or path arrives.
+        fix(com, 560, 300);
+        fix(mam, 320, 200);
+        fix(fim, 320, 240);
+        if (fourth != null) {
+            fix(fourth, 560, 260);
+        }
+        // Left column wider than the right; rows share the height.
+        add(com, constraints(0, 0, fourth == null ? 2 : 1, 0.65, 0.5));
+        add(mam, constraints(1, 0, 1, 0.35, 0.5));
+        add(fim, constraints(1, 1, 1, 0.35, 0.5));
+        if (fourth != null) {
+            add(fourth, constraints(0, 1, 1, 0.65, 0.5));
+        }
+    }
+
+    private static void fix(JComponent c, int w, int h) {
+        c.setPreferredSize(new java.awt.Dimension(w, h));
+        c.setMinimumSize(new java.awt.Dimension(w / 2, h / 2));
+    }
+
+    private static GridBagConstraints constraints(int x, int y, int height, double wx, double wy) {
+        GridBagConstraints c = new GridBagConstraints();
+        c.gridx = x;
+        c.gridy = y;
+        c.gridheight = height;
+        c.weightx = wx;
+        c.weighty = wy;
+        c.fill = GridBagConstraints.BOTH;
+        c.insets = new Insets(3, 3, 3, 3);
+        return c;
+    }
+
+    public String service() {
+        return service;
+    }
+
+    /** Repaints the parts a change concerns; on the event thread. */
+    public void update(ClientModel model, ClientModel.Kind what) {
+        ServiceModel m = model.service(service);
+        if (m == null) {
+            return;
+        }
+        switch (what) {
+            case COM -> com.update(m);
+            case MAILBOXES -> mam.update(m);
+            case TABLES -> {
+                if (dab != null) {
+                    dab.update(m);
+                }
+            }
+            case IMAGE -> {
+                if (dav != null) {
+                    dav.update(m);
+                }
+            }
+            case FILES -> fim.updateFiles(model);
+            case TRANSFERS -> fim.updateTransfers(model);
+            default -> updateAll(model);
+        }
+    }
+
+    /** Repaints everything. */
+    public void updateAll(ClientModel model) {
+        ServiceModel m = model.service(service);
+        if (m == null) {
+            return;
+        }
+        com.update(m);
+        mam.update(m);
+        fim.updateFiles(model);
+        fim.updateTransfers(model);
+        if (dab != null) {
+            dab.update(m);
+        }
+        if (dav != null) {
+            dav.update(m);
+        }
+    }
+
+    public ComPanel com() {
+        return com;
+    }
+
+    public MamPanel mam() {
+        return mam;
+    }
+
+    public FimPanel fim() {
+        return fim;
+    }
+
+    /** The DAB panel, or null. */
+    public DatabasePanel dab() {
+        return dab;
+    }
+
+    /** The DAV panel, or null. */
+    public ImagePanel dav() {
+        return dav;
+    }
+}

@@ -1,0 +1,117 @@
+package org.ripv.client.trees;
+
+import java.util.List;
+import java.util.function.Consumer;
+import javax.swing.JTree;
+import javax.swing.ToolTipManager;
+import javax.swing.tree.DefaultMutableTreeNode;
+import javax.swing.tree.DefaultTreeModel;
+import javax.swing.tree.TreePath;
+import javax.swing.tree.TreeSelectionModel;
+import org.ripv.messages.MailboxStatus;
+
+/**
+ * The MAM panel's tree (thesis 4.1.3.2): the service at the root, one node per MailBox, each
+ * showing its handle and whether it is available, busy or locked. Picking a MailBox makes it the
+ * COM panel's target (the GuiManager then asks {@code ?status}).
+ */
+public final class MailboxTree extends JTree {
+    private final DefaultMutableTreeNode root;
+    private final DefaultTreeModel treeModel;
+    private final String service;
+    private boolean rebuilding;
+
+    /** A MailBox node: shows its handle and status. */
+    public record Item(String service, MailboxStatus status) {
+        public String handle() {
+            return status.address().startsWith(service) ? status.address().substring(service.length()) : status.address();
+        }
+
+        @Override
+        public String toString() {
+            String s = handle() + (status.available() ? "" : "  (not available)");
+            if (status.busy()) {
+                s += "  [busy]";
+            }
+            if (!status.lockedBy().isBlank()) {
+                s += "  [locked by " + status.lockedBy() + "]";
+            }
+            return s;
+        }
+    }
+
+    /** @param onSelect told of the full address of the MailBox the operator picked */
+    public MailboxTree(String service, Consumer<String> onSelect) {
+        this.service = service;
+        this.root = new DefaultMutableTreeNode(service);
+        this.treeModel = new DefaultTreeModel(root);
+        setModel(treeModel);
+        setName("mailboxTree");
+        getSelectionModel().setSelectionMode(TreeSelectionModel.SINGLE_TREE_SELECTION);
+        ToolTipManager.sharedInstance().registerComponent(this);
+        addTreeSelectionListener(e -> {
+            if (!rebuilding && e.getNewLeadSelectionPath() != null
+                    && e.getNewLeadSelectionPath().getLastPathComponent() instanceof DefaultMutableTreeNode n
+                    && n.getUserObject() instanceof Item item) {
+                onSelect.accept(item.status().address());
+            }
+        });
+    }
+
+    /** Shows the service's MailBoxes and selects the target. */
+    public void update(List<MailboxStatus> mailboxes, String target) {
+        rebuilding = true;
+        try {
+            root.removeAllChildren();
+            DefaultMutableTreeNode selected = null;
+            for (MailboxStatus m : mailboxes) {
+                DefaultMutableTreeNode n = new DefaultMutableTreeNode(new Item(service, m), false);
+                root.add(n);
+                if (m.address().equals(target)) {
+                    selected = n;
+                }
+            }
+            treeModel.reload();
+            expandRow(0);
+            if (selected != null) {
+                setSelectionPath(new TreePath(selected.getPath()));
+            } else {
+                clearSelection();
+            }
+        } finally {
+            rebuilding = false;
+        }
+    }
+
+    /** The handles shown, in order. */
+    public List<String> handles() {
+        java.util.List<String> out = new java.util.ArrayList<>();
+        for (int i = 0; i < root.getChildCount(); i++) {
+            out.add(((Item) ((DefaultMutableTreeNode) root.getChildAt(i)).getUserObject()).handle());
+        }
+        return out;
+    }
+
+    /** Selects a MailBox by handle, as the operator would (the listener is told). */
+    public void pick(String handle) {
+        for (int i = 0; i < root.getChildCount(); i++) {
+            DefaultMutableTreeNode n = (DefaultMutableTreeNode) root.getChildAt(i);
+            if (((Item) n.getUserObject()).handle().equals(handle)) {
+                setSelectionPath(new TreePath(n.getPath()));
+                return;
+            }
+        }
+        throw new IllegalArgumentException("no mailbox '" + handle + "' under " + service);
+    }
+
+    @Override
+    public String getToolTipText(java.awt.event.MouseEvent e) {
+        TreePath p = getPathForLocation(e.getX(), e.getY());
+        if (p != null && p.getLastPathComponent() instanceof DefaultMutableTreeNode n && n.getUserObject() instanceof Item i) {
+            MailboxStatus s = i.status();
+            return s.address() + ": " + (s.available() ? "available" : "not available")
+                    + (s.detail().isBlank() ? "" : " — " + s.detail());
+        }
+        return "Pick a MailBox to talk to (it becomes Talking To, TT)";
+    }
+}

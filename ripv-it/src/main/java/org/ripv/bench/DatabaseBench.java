@@ -1,0 +1,284 @@
+package org.ripv.bench;
+
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.ObjectOutputStream;
+import java.lang.management.ManagementFactory;
+import java.lang.management.MemoryPoolMXBean;
+import java.lang.management.MemoryType;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.sql.Connection;
+import java.sql.DriverManager;
+import java.sql.PreparedStatement;
+import java.sql.ResultSet;
+import java.sql.ResultSetMetaData;
+import java.sql.Statement;
+import java.sql.Timestamp;
+import java.time.Duration;
+import java.time.LocalDateTime;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Comparator;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
+import java.util.stream.Stream;
+import org.ripv.client.handlers.ClientSocketHandler;
+import org.ripv.messages.Header;
+import org.ripv.messages.IdBadge;
+import org.ripv.messages.IncomingServiceMessage;
+import org.ripv.messages.OutgoingServerMessage;
+import org.ripv.messages.OutgoingServiceMessage;
+import org.ripv.messages.Priority;
+import org.ripv.messages.Status;
+import org.ripv.messages.TableResult;
+import org.ripv.server.RIPVServer;
+import org.ripv.server.ServerConfig;
+import org.ripv.server.permit.PermitFile;
+import org.ripv.service.ServiceConnector;
+import org.ripv.service.ServiceOptions;
+import org.ripv.services.database.DatabaseServer;
+import org.ripv.services.database.DatabaseTarget;
+import org.ripv.services.database.EmbeddedDatabase;
+import org.ripv.services.database.QueryLimits;
+
+/**
+ * The DatabaseServer benchmark (issue 4; a measurement, not a timed test): one query of
+ * 100,000 rows, three ways, in the same run and on the same embedded Derby database:
+ * <ol>
+ *   <li><b>direct JDBC</b>: execute, walk the forward-only cursor, read every cell as text;</li>
+ *   <li><b>service</b>: the same SQL handed to the DatabaseServer in-process
+ *       ({@code accept} → MailBox → handler → {@link TableResult});</li>
+ *   <li><b>end to end</b>: a real client over a socket → RIPVServer → RMI → DatabaseServer →
+ *       Derby → RMI → server → socket → client, until the client holds the table.</li>
+ * </ol>
+ * Prints the medians, the ratio to direct JDBC, the table's serialized size (it must fit one
+ * 16 MiB socket frame) and the heap's peak. Run:
+ * <pre>
+ * mvn -q -B -DskipTests package -pl ripv-it -am
+ * java -Xmx1g -cp ripv-it/target/ripv-it.jar org.ripv.bench.DatabaseBench [--rows 100000] [--runs 5]
+ * </pre>
+ */
+public final class DatabaseBench {
+    private static final String MAILBOX = "TTY1";
+
+    private DatabaseBench() {}
+
+    public static void main(String[] args) throws Exception {
+        int rows = intOption(args, "--rows", 100_000);
+        int runs = intOption(args, "--runs", 5);
+        int warmups = intOption(args, "--warmup", 2);
+        Path dir = Files.createTempDirectory("ripv-dbbench");
+        try {
+            run(dir, rows, runs, warmups);
+        } finally {
+            deleteTree(dir);
+        }
+        System.exit(0); // RMI and the server's threads are non-daemon
+    }
+
+    private static void run(Path dir, int rows, int runs, int warmups) throws Exception {
+        DatabaseTarget db = EmbeddedDatabase.prepare(dir.resolve("database"), MAILBOX);
+        fill(db, rows);
+        String sql = "SELECT leg_id, sensor_id, t, value, raw_value FROM bench_readings";
+        QueryLimits limits = new QueryLimits(rows, 600, 64L * 1024 * 1024);
+        System.out.printf(Locale.ROOT, "DatabaseBench: %,d rows of (INTEGER, INTEGER, TIMESTAMP, DOUBLE, DOUBLE), %d runs after %d warm-ups, %s%n",
+                rows, runs, warmups, System.getProperty("java.vm.name") + " " + System.getProperty("java.version"));
+
+        // All three paths are set up first and then measured in turn, round after round, so
+        // that JIT warm-up and the load of a shared machine fall on all of them alike.
+        double[] direct = new double[runs];
+        double[] inProcess = new double[runs];
+        double[] endToEnd = new double[runs];
+        long serialized = 0;
+
+        // 2. a service of its own, not connected to a server, for the in-process path
+        DatabaseServer local = new DatabaseServer("localhost", List.of(db), limits);
+        local.start();
+        BlockingQueue<OutgoingServiceMessage> replies = new LinkedBlockingQueue<>();
+        local.replyTo(replies::add);
+        String localMailbox = local.name().mailbox(MAILBOX).toString();
+
+        // 3. a real server, the service registered over RMI, a client on a socket
+        ServerConfig config = ServerConfig.forTests(dir.resolve("server"));
+        RIPVServer server = new RIPVServer(config);
+        server.start();
+        PermitFile.setUser(config.dataDir().resolve("permit.txt"), "bench", "bench-password".toCharArray(),
+                List.of("operators"), 1000);
+        server.reloadPermits();
+        DatabaseServer service = new DatabaseServer("localhost", List.of(db), limits);
+        ServiceConnector connector = ServiceConnector.connect(service, new ServiceOptions("localhost", server.registryPort(),
+                Files.readString(server.secretFile()).trim(), 0, Duration.ofSeconds(1)));
+        resetPeaks();
+        try (Connection c = DriverManager.getConnection(db.url(), db.user(), db.password());
+             ClientSocketHandler client = ClientSocketHandler.connect("localhost", server.port())) {
+            if (!connector.awaitRegistered(Duration.ofSeconds(30))) {
+                throw new IllegalStateException("the DatabaseServer did not register");
+            }
+            client.login("bench", "bench-password".toCharArray());
+            String mailbox = service.name().mailbox(MAILBOX).toString();
+            for (int i = -warmups; i < runs; i++) {
+                long t0 = System.nanoTime();
+                check(directQuery(c, sql), rows);
+                long t1 = System.nanoTime();
+                TableResult t = inProcess(local, localMailbox, sql, replies);
+                long t2 = System.nanoTime();
+                check(t.rows().size(), rows);
+                t = null;
+                OutgoingServerMessage r = client.call(mailbox, sql, Priority.NORMAL, Duration.ofMinutes(5), null);
+                long t3 = System.nanoTime();
+                if (r.status() != Status.OK) {
+                    throw new IllegalStateException("end to end failed: " + r.footer().replyText());
+                }
+                TableResult e = (TableResult) r.footer().result();
+                check(e.rows().size(), rows);
+                if (i >= 0) {
+                    direct[i] = (t1 - t0) / 1e6;
+                    inProcess[i] = (t2 - t1) / 1e6;
+                    endToEnd[i] = (t3 - t2) / 1e6;
+                } else {
+                    serialized = serializedSize(e);
+                }
+            }
+        } finally {
+            connector.close();
+            service.stop();
+            server.stop();
+            local.stop();
+        }
+        long peakHeap = peakHeap();
+
+        double d = median(direct);
+        double s = median(inProcess);
+        double e = median(endToEnd);
+        System.out.printf(Locale.ROOT, "%-40s %10s %14s %8s%n", "path", "median ms", "rows/s", "ratio");
+        line("direct JDBC (read every cell as text)", d, rows, d);
+        line("service in-process (accept -> TableResult)", s, rows, d);
+        line("end to end (client -> server -> RMI -> service)", e, rows, d);
+        System.out.printf(Locale.ROOT, "TableResult serialized: %,d bytes (%.1f MiB; one socket frame holds %d MiB)%n",
+                serialized, serialized / 1048576.0, 16);
+        System.out.printf(Locale.ROOT, "peak heap during service and end-to-end runs (server, service and client in one JVM): %,d MiB of %,d MiB%n",
+                peakHeap >> 20, Runtime.getRuntime().maxMemory() >> 20);
+        System.out.printf(Locale.ROOT, "raw: direct %s; service %s; end to end %s%n", Arrays.toString(direct),
+                Arrays.toString(inProcess), Arrays.toString(endToEnd));
+    }
+
+    /** The same work as the handler minus the service: the cursor read into String rows. */
+    private static int directQuery(Connection c, String sql) throws Exception {
+        try (Statement st = c.createStatement(ResultSet.TYPE_FORWARD_ONLY, ResultSet.CONCUR_READ_ONLY);
+             ResultSet rs = st.executeQuery(sql)) {
+            ResultSetMetaData md = rs.getMetaData();
+            int n = md.getColumnCount();
+            List<String[]> out = new ArrayList<>();
+            while (rs.next()) {
+                String[] row = new String[n];
+                for (int i = 0; i < n; i++) {
+                    row[i] = rs.getString(i + 1);
+                }
+                out.add(row);
+            }
+            return out.size();
+        }
+    }
+
+    private static TableResult inProcess(DatabaseServer service, String mailbox, String sql,
+                                         BlockingQueue<OutgoingServiceMessage> replies) throws Exception {
+        service.accept(new IncomingServiceMessage(new Header(1, new IdBadge("123456", "bench"), List.of(),
+                service.name().toString(), mailbox, sql, Priority.NORMAL, null)));
+        OutgoingServiceMessage r = replies.poll(5, TimeUnit.MINUTES);
+        if (r == null || r.status() != Status.OK) {
+            throw new IllegalStateException("service failed: " + (r == null ? "no reply" : r.footer().replyText()));
+        }
+        return (TableResult) r.footer().result();
+    }
+
+    private static void fill(DatabaseTarget db, int rows) throws Exception {
+        try (Connection c = DriverManager.getConnection(db.url(), db.user(), db.password())) {
+            c.setAutoCommit(false);
+            try (Statement st = c.createStatement()) {
+                st.execute("CREATE TABLE bench_readings (leg_id INTEGER NOT NULL, sensor_id INTEGER NOT NULL,"
+                        + " t TIMESTAMP NOT NULL, value DOUBLE PRECISION NOT NULL, raw_value DOUBLE PRECISION NOT NULL)");
+            }
+            LocalDateTime start = LocalDateTime.of(2002, 4, 2, 13, 0);
+            try (PreparedStatement ps = c.prepareStatement("INSERT INTO bench_readings VALUES (?, ?, ?, ?, ?)")) {
+                for (int i = 0; i < rows; i++) {
+                    ps.setInt(1, 1 + i / 10_000);
+                    ps.setInt(2, 1 + i % 3);
+                    ps.setTimestamp(3, Timestamp.valueOf(start.plusSeconds(80L * (i / 3))));
+                    double v = 20.5 - (i % 997) * 0.0025;
+                    ps.setDouble(4, v);
+                    ps.setDouble(5, 2800 + 165 * v);
+                    ps.addBatch();
+                    if (i % 5000 == 4999) {
+                        ps.executeBatch();
+                    }
+                }
+                ps.executeBatch();
+            }
+            c.commit();
+        }
+    }
+
+    private static long serializedSize(TableResult t) throws IOException {
+        ByteArrayOutputStream b = new ByteArrayOutputStream(8 << 20);
+        try (ObjectOutputStream out = new ObjectOutputStream(b)) {
+            out.writeObject(t);
+        }
+        return b.size();
+    }
+
+    private static void resetPeaks() {
+        System.gc();
+        for (MemoryPoolMXBean p : ManagementFactory.getMemoryPoolMXBeans()) {
+            if (p.getType() == MemoryType.HEAP) {
+                p.resetPeakUsage();
+            }
+        }
+    }
+
+    private static long peakHeap() {
+        long sum = 0;
+        for (MemoryPoolMXBean p : ManagementFactory.getMemoryPoolMXBeans()) {
+            if (p.getType() == MemoryType.HEAP) {
+                sum += p.getPeakUsage().getUsed();
+            }
+        }
+        return sum;
+    }
+
+    private static void line(String what, double ms, int rows, double base) {
+        System.out.printf(Locale.ROOT, "%-40s %10.1f %,14.0f %7.2fx%n", what, ms, rows / (ms / 1000), ms / base);
+    }
+
+    private static double median(double[] v) {
+        double[] s = v.clone();
+        Arrays.sort(s);
+        return s.length % 2 == 1 ? s[s.length / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
+    }
+
+    private static void check(int got, int want) {
+        if (got != want) {
+            throw new IllegalStateException("expected " + want + " rows, got " + got);
+        }
+    }
+
+    private static int intOption(String[] args, String name, int dflt) {
+        for (int i = 0; i + 1 < args.length; i++) {
+            if (args[i].equals(name)) {
+                return Integer.parseInt(args[i + 1]);
+            }
+        }
+        return dflt;
+    }
+
+    private static void deleteTree(Path dir) throws IOException {
+        try (Stream<Path> s = Files.walk(dir)) {
+            for (Path p : s.sorted(Comparator.reverseOrder()).toList()) {
+                Files.deleteIfExists(p);
+            }
+        }
+    }
+}

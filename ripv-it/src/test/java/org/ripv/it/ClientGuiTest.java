@@ -1,0 +1,382 @@
+package org.ripv.it;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+import static org.junit.jupiter.api.Assumptions.assumeFalse;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import com.formdev.flatlaf.FlatLightLaf;
+import java.awt.GraphicsEnvironment;
+import java.awt.event.KeyEvent;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.List;
+import java.util.UUID;
+import java.util.concurrent.Callable;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.Executor;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
+import java.util.function.Supplier;
+import java.util.prefs.Preferences;
+import org.assertj.swing.core.BasicRobot;
+import org.assertj.swing.core.Robot;
+import org.assertj.swing.edt.GuiActionRunner;
+import org.assertj.swing.finder.JFileChooserFinder;
+import org.assertj.swing.fixture.DialogFixture;
+import org.assertj.swing.fixture.FrameFixture;
+import org.assertj.swing.fixture.JFileChooserFixture;
+import org.assertj.swing.timing.Condition;
+import org.assertj.swing.timing.Pause;
+import org.assertj.swing.timing.Timeout;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.ripv.client.gui.RIPVClient;
+import org.ripv.client.handlers.ClientSocketHandler;
+import org.ripv.client.handlers.RipvErrorException;
+import org.ripv.client.managers.ClientModel;
+import org.ripv.client.managers.ClientModel.Connection;
+import org.ripv.client.managers.ClientModel.FileArea;
+import org.ripv.client.managers.GuiManager;
+import org.ripv.client.managers.ServiceModel;
+import org.ripv.client.managers.Transfer;
+import org.ripv.client.panels.ServiceLayoutPanel;
+import org.ripv.examples.ClockService;
+import org.ripv.messages.FileListing;
+import org.ripv.messages.SessionInfo;
+import org.ripv.server.RIPVServer;
+import org.ripv.server.ServerConfig;
+import org.ripv.service.ServiceConnector;
+
+/**
+ * The RIPVClient against a real RIPVServer with the example ClockService registered over RMI.
+ *
+ * <p>The {@code manager...} tests drive the {@link GuiManager} and its model headless, as the
+ * window does, and always run. The {@code window...} tests open the Swing window and drive it
+ * with AssertJ-Swing; they need a display and run with {@code -Dripv.gui.tests=true} under Xvfb
+ * (and {@code java.awt.headless=false} in the test JVM), as {@code .ci/run} does.
+ */
+class ClientGuiTest {
+    static final Duration T = Duration.ofSeconds(20);
+    static final String CLOCK = "<ClockService>::<localhost>";
+    static final String CLOCK_BOX = CLOCK + "TTY1";
+
+    @TempDir
+    Path dir;
+    TestSystem sys;
+    UiThread ui;
+    ClientModel model;
+    GuiManager manager;
+
+    @BeforeEach
+    void start() throws Exception {
+        sys = TestSystem.start(dir);
+        sys.user("alice", "operators");
+        sys.register(new ClockService("localhost"));
+    }
+
+    @AfterEach
+    void stop() {
+        if (manager != null) {
+            manager.close();
+        }
+        if (ui != null) {
+            ui.close();
+        }
+        sys.close();
+    }
+
+    // ---------------------------------------------------------------- headless: the manager and model
+
+    /** The Swing event thread's stand-in: one thread owns the model. */
+    static final class UiThread implements Executor, AutoCloseable {
+        final ExecutorService thread = Executors.newSingleThreadExecutor(r -> new Thread(r, "test-ui"));
+
+        @Override
+        public void execute(Runnable r) {
+            thread.execute(r);
+        }
+
+        <V> V get(Callable<V> c) throws Exception {
+            try {
+                return thread.submit(c).get(T.toMillis(), TimeUnit.MILLISECONDS);
+            } catch (ExecutionException e) {
+                throw (Exception) e.getCause();
+            }
+        }
+
+        void run(Runnable r) throws Exception {
+            get(() -> {
+                r.run();
+                return null;
+            });
+        }
+
+        @Override
+        public void close() {
+            thread.shutdownNow();
+        }
+    }
+
+    GuiManager newManager(Duration refresh) {
+        ui = new UiThread();
+        model = new ClientModel();
+        manager = new GuiManager(model, ui, ClientSocketHandler::connect,
+                new GuiManager.Timings(refresh, Duration.ofMillis(200), Duration.ofSeconds(1)));
+        return manager;
+    }
+
+    /** Waits, without polling on a timer, until the model satisfies the condition: re-checks after every change. */
+    <V> V await(String what, Supplier<V> value, java.util.function.Predicate<V> ok) throws Exception {
+        LinkedBlockingQueue<Object> changes = new LinkedBlockingQueue<>();
+        ClientModel.Listener l = changes::add;
+        ui.run(() -> model.addListener(l));
+        long deadline = System.nanoTime() + T.toNanos();
+        try {
+            while (true) {
+                V v = ui.get(value::get);
+                if (ok.test(v)) {
+                    return v;
+                }
+                long left = deadline - System.nanoTime();
+                if (left <= 0 || changes.poll(left, TimeUnit.NANOSECONDS) == null) {
+                    throw new AssertionError("timed out waiting for " + what + "; last value: " + v);
+                }
+            }
+        } finally {
+            ui.run(() -> model.removeListener(l));
+        }
+    }
+
+    @Test
+    void managerLogsInSeesTheServicesAndGetsTheClocksReply() throws Exception {
+        newManager(Duration.ofSeconds(15));
+        SessionInfo s = manager.logIn("localhost", sys.server().port(), "alice", TestSystem.PASSWORD.toCharArray())
+                .get(T.toMillis(), TimeUnit.MILLISECONDS);
+        assertThat(s.user()).isEqualTo("alice");
+        await("the clock in the service list", () -> model.serviceNames(), n -> n.contains(CLOCK));
+        await("the clock's mailbox as the target", () -> model.service(CLOCK).target(), CLOCK_BOX::equals);
+        await("the SS label", () -> model.service(CLOCK).serviceStatus(), ss -> ss.startsWith("available"));
+        await("the FileTree's directories", () -> model.directory(FileArea.DOWNLOAD).path(),
+                p -> p.equals(sys.downloadDir().toString()));
+
+        ui.run(() -> manager.sendCommand(CLOCK, "echo hello glider"));
+        await("the echo in the reply area", () -> model.service(CLOCK).transcriptText(), t -> t.contains("\nhello glider\n"));
+        assertThat(ui.get(() -> model.service(CLOCK).lastAction())).isEqualTo("echo hello glider");
+
+        ui.run(() -> manager.sendCommand(CLOCK, "fly"));
+        await("the clock's error in the reply area", () -> model.service(CLOCK).transcript(),
+                t -> t.stream().anyMatch(l -> l.kind() == ServiceModel.LineKind.ERROR && l.text().contains("not 'fly'")));
+
+        ui.run(() -> manager.sendCommand(CLOCK, "?whoami"));
+        await("?whoami typed in COM is answered there", () -> model.service(CLOCK).transcriptText(),
+                t -> t.contains("alice on client"));
+    }
+
+    @Test
+    void managerReportsAWrongPasswordWithTheServersMessage() throws Exception {
+        newManager(Duration.ofSeconds(15));
+        assertThatThrownBy(() -> manager.logIn("localhost", sys.server().port(), "alice", "wrong".toCharArray())
+                .get(T.toMillis(), TimeUnit.MILLISECONDS))
+                .hasCauseInstanceOf(RipvErrorException.class);
+        Connection c = await("disconnected", () -> model.connection(), x -> x == Connection.DISCONNECTED);
+        assertThat(c).isEqualTo(Connection.DISCONNECTED);
+        assertThat(ui.get(() -> model.connectionDetail())).isNotBlank();
+        assertThat(manager.connection()).isNull();
+    }
+
+    @Test
+    void managerUploadsWithProgressAndSeesTheFileInTheTree() throws Exception {
+        newManager(Duration.ofSeconds(15));
+        manager.logIn("localhost", sys.server().port(), "alice", TestSystem.PASSWORD.toCharArray())
+                .get(T.toMillis(), TimeUnit.MILLISECONDS);
+        Path local = dir.resolve("glider.bin");
+        byte[] data = new byte[ClientSocketHandler.CHUNK * 2 + 100];
+        new java.util.Random(7).nextBytes(data);
+        Files.write(local, data);
+        Transfer t = ui.get(() -> manager.upload(local));
+        await("the upload to finish", () -> t.state(), st -> st != Transfer.State.RUNNING);
+        assertThat(ui.get(t::state)).as(ui.get(t::detail)).isEqualTo(Transfer.State.DONE);
+        assertThat(ui.get(t::done)).isEqualTo(data.length);
+        assertThat(Files.readAllBytes(sys.uploadDir().resolve("glider.bin"))).isEqualTo(data);
+        await("glider.bin under UL", () -> model.directory(FileArea.UPLOAD).files().stream()
+                .map(FileListing.Entry::name).toList(), n -> n.contains("glider.bin"));
+
+        // Download: put a file where services leave theirs, then fetch it.
+        Files.write(sys.downloadDir().resolve("mission.log"), data);
+        Path into = Files.createDirectories(dir.resolve("mine"));
+        Transfer d = ui.get(() -> manager.download("mission.log", into));
+        await("the download to finish", () -> d.state(), st -> st != Transfer.State.RUNNING);
+        assertThat(Files.readAllBytes(into.resolve("mission.log"))).isEqualTo(data);
+
+        Transfer bad = ui.get(() -> manager.download("no-such-file", into));
+        await("the failed download", () -> bad.state(), st -> st == Transfer.State.FAILED);
+        assertThat(ui.get(bad::detail)).contains("no-such-file");
+        try (var files = Files.list(into)) {
+            assertThat(files.map(p -> p.getFileName().toString()).toList()).containsExactly("mission.log");
+        }
+    }
+
+    @Test
+    void managerFollowsServicesThatAppearAndVanish() throws Exception {
+        newManager(Duration.ofMillis(300));
+        manager.logIn("localhost", sys.server().port(), "alice", TestSystem.PASSWORD.toCharArray())
+                .get(T.toMillis(), TimeUnit.MILLISECONDS);
+        await("the clock", () -> model.serviceNames(), n -> n.equals(List.of(CLOCK)));
+        ClockService other = new ClockService("otherhost");
+        ServiceConnector c = sys.register(other);
+        await("the second clock to appear", () -> model.serviceNames(), n -> n.contains("<ClockService>::<otherhost>"));
+        c.close();
+        other.stop();
+        await("the second clock to vanish", () -> model.serviceNames(), n -> n.equals(List.of(CLOCK)));
+    }
+
+    @Test
+    void managerReconnectsAndLogsInAgainWhenTheServerComesBack() throws Exception {
+        newManager(Duration.ofMillis(500));
+        manager.logIn("localhost", sys.server().port(), "alice", TestSystem.PASSWORD.toCharArray())
+                .get(T.toMillis(), TimeUnit.MILLISECONDS);
+        await("connected", () -> model.connection(), c -> c == Connection.CONNECTED);
+        int port = sys.server().port();
+        int registry = sys.server().registryPort();
+        sys.server().stop();
+        await("the lost connection to show", () -> model.connection(), c -> c == Connection.LOST);
+        assertThat(ui.get(() -> model.connectionDetail())).contains("lost the connection");
+
+        try (RIPVServer again = new RIPVServer(ServerConfig.forTests(sys.dataDir()).withPorts(port, registry, -1))) {
+            again.start();
+            await("reconnected", () -> model.connection(), c -> c == Connection.CONNECTED);
+            assertThat(ui.get(() -> model.session().user())).isEqualTo("alice");
+            await("the clock registered again and listed", () -> model.serviceNames(), n -> n.contains(CLOCK));
+            await("the clock's mailbox as the target again", () -> model.service(CLOCK) == null ? ""
+                    : model.service(CLOCK).target(), CLOCK_BOX::equals);
+            ui.run(() -> manager.sendCommand(CLOCK, "echo still here"));
+            await("a reply over the new connection", () -> model.service(CLOCK).transcriptText(),
+                    t -> t.contains("\nstill here\n"));
+            manager.close();
+        }
+    }
+
+    // ---------------------------------------------------------------- the window (AssertJ-Swing, under Xvfb)
+
+    static void requireDisplay() {
+        assumeTrue(Boolean.getBoolean("ripv.gui.tests"),
+                "window tests run with -Dripv.gui.tests=true under a display (xvfb-run), as .ci/run does");
+        assumeFalse(GraphicsEnvironment.isHeadless(),
+                "window tests need java.awt.headless=false and a display (DISPLAY is '" + System.getenv("DISPLAY") + "')");
+    }
+
+    @Test
+    void windowLogsInAfterAWrongPasswordShowsServicesAndTalksToTheClock() throws Exception {
+        requireDisplay();
+        Preferences prefs = Preferences.userRoot().node("org/ripv/test/" + UUID.randomUUID());
+        Robot robot = BasicRobot.robotWithNewAwtHierarchy();
+        RIPVClient client = GuiActionRunner.execute(() -> {
+            FlatLightLaf.setup();
+            return new RIPVClient(new GuiManager(new ClientModel()), prefs);
+        });
+        FrameFixture window = new FrameFixture(robot, client.frame());
+        try {
+            window.show();
+            GuiActionRunner.execute(() -> client.showLogin("localhost:" + sys.server().port(), "alice", null, false));
+
+            DialogFixture login = window.dialog("loginDialog");
+            login.textBox("passwordField").enterText("not the password");
+            login.button("loginButton").click();
+            Pause.pause(new Condition("the server's refusal in the dialog") {
+                @Override
+                public boolean test() {
+                    return GuiActionRunner.execute(() -> login.target().isShowing()
+                            && login.label("loginMessage").target().getText().contains("password"));
+                }
+            }, Timeout.timeout(T.toMillis()));
+            login.requireVisible();
+
+            login.textBox("passwordField").setText("");
+            login.textBox("passwordField").enterText(TestSystem.PASSWORD);
+            login.button("loginButton").click();
+            Pause.pause(new Condition("the dialog to close after logging in") {
+                @Override
+                public boolean test() {
+                    return GuiActionRunner.execute(() -> !login.target().isShowing());
+                }
+            }, Timeout.timeout(T.toMillis()));
+            assertThat(prefs.get("user", "")).isEqualTo("alice");
+            assertThat(prefs.get("server", "")).isEqualTo("localhost:" + sys.server().port());
+            assertThat(prefs.keys()).doesNotContain("password");
+
+            Pause.pause(new Condition("the clock's tab and tree node") {
+                @Override
+                public boolean test() {
+                    return GuiActionRunner.execute(() -> client.panel(CLOCK) != null
+                            && client.serviceTree().services().contains(CLOCK));
+                }
+            }, Timeout.timeout(T.toMillis()));
+            ServiceLayoutPanel tab = GuiActionRunner.execute(() -> client.panel(CLOCK));
+            assertThat(tab.dab()).as("the clock has no fourth panel: COM spans both rows").isNull();
+            Pause.pause(new Condition("TT to name the clock's mailbox") {
+                @Override
+                public boolean test() {
+                    return window.label("talkingTo").text().equals(CLOCK_BOX);
+                }
+            }, Timeout.timeout(T.toMillis()));
+
+            // Xvfb has no window manager to hand focus back after the modal dialog: take it.
+            GuiActionRunner.execute(() -> {
+                client.frame().toFront();
+                client.frame().requestFocus();
+            });
+            robot.waitForIdle();
+            window.textBox("commandField").click();
+            window.textBox("commandField").enterText("echo over the sea");
+            window.textBox("commandField").pressAndReleaseKeys(KeyEvent.VK_ENTER);
+            Pause.pause(new Condition("the reply in the reply area") {
+                @Override
+                public boolean test() {
+                    return GuiActionRunner.execute(() -> tab.com().replyText().contains("\nover the sea\n"));
+                }
+            }, Timeout.timeout(T.toMillis()));
+            window.label("lastAction").requireText("echo over the sea");
+            window.textBox("commandField").pressAndReleaseKeys(KeyEvent.VK_UP);
+            window.textBox("commandField").requireText("echo over the sea");
+
+            // UL through the file chooser; the file shows in the FileTree under UL.
+            Path local = dir.resolve("new-binary.bin");
+            Files.write(local, new byte[5000]);
+            window.button("ulButton").click();
+            // A first JFileChooser is slow to build on a busy machine: allow for it.
+            JFileChooserFixture chooser = JFileChooserFinder.findFileChooser().withTimeout(T.toMillis()).using(robot);
+            chooser.fileNameTextBox().setText(local.toString());
+            chooser.approve();
+            Pause.pause(new Condition("new-binary.bin in the FileTree") {
+                @Override
+                public boolean test() {
+                    return GuiActionRunner.execute(() -> tab.fim().tree().names(FileArea.UPLOAD).contains("new-binary.bin"));
+                }
+            }, Timeout.timeout(T.toMillis()));
+            assertThat(sys.uploadDir().resolve("new-binary.bin")).hasSize(5000);
+        } catch (Throwable t) {
+            screenshot("ClientGuiTest-failure.png");
+            throw t;
+        } finally {
+            window.cleanUp();
+            prefs.removeNode();
+        }
+    }
+
+    /** Saves the screen under target/ to see what a failed window test saw. */
+    static void screenshot(String name) {
+        try {
+            java.awt.Rectangle screen = new java.awt.Rectangle(java.awt.Toolkit.getDefaultToolkit().getScreenSize());
+            javax.imageio.ImageIO.write(new java.awt.Robot().createScreenCapture(screen), "png",
+                    Path.of("target", name).toFile());
+        } catch (Exception | Error e) {
+            System.err.println("could not save a screenshot: " + e);
+        }
+    }
+}

@@ -1,0 +1,322 @@
+package org.ripv.services.database;
+
+import java.sql.Connection;
+import java.sql.DriverManager;
+import java.sql.ResultSet;
+import java.sql.ResultSetMetaData;
+import java.sql.SQLException;
+import java.sql.SQLTimeoutException;
+import java.sql.Statement;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Properties;
+import org.ripv.messages.ErrorCode;
+import org.ripv.messages.TableResult;
+import org.ripv.messages.UpdateCount;
+import org.ripv.service.Availability;
+import org.ripv.service.CommandHandler;
+import org.ripv.service.Reply;
+import org.ripv.service.Request;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * Runs the SQL commands of one DatabaseServer MailBox against one database (thesis 4.1.4.2).
+ *
+ * <p>A query answers OK with a {@link TableResult} (column names, SQL type names, rows as text
+ * with null for SQL NULL, truncated when cut at {@link QueryLimits#maxRows()} or at the result's
+ * size limit); any other statement answers OK with an {@link UpdateCount}; a statement the
+ * database rejects answers ERROR {@link ErrorCode#DATABASE_ERROR} with the database's message
+ * and SQLState, {@link ErrorCode#FORBIDDEN} when it is a permission or read-only refusal, and
+ * {@link ErrorCode#TIMEOUT} when the query timeout cancelled it. The handler keeps serving after
+ * all of them.
+ *
+ * <p>Users whose permit-file roles include {@value #READER_ROLE} run their commands on the
+ * reader connection (a database user that can only read); everyone else on the owner connection.
+ *
+ * <p>Threading: {@link #execute} runs on the MailBox's one worker thread, so the connections
+ * need no locking; {@link #availability} reads a volatile snapshot from any thread.
+ */
+public final class DatabaseHandler implements CommandHandler, AutoCloseable {
+    private static final Logger log = LoggerFactory.getLogger(DatabaseHandler.class);
+
+    /** The permit-file role that sends a user's SQL to the read-only database user. */
+    public static final String READER_ROLE = "db-reader";
+    /** Longest text kept of one cell; the rest is cut with a note. */
+    static final int MAX_CELL_CHARS = 10_000;
+
+    private final DatabaseTarget target;
+    private final QueryLimits limits;
+    private Connection owner;
+    private Connection reader;
+    private volatile Availability availability;
+
+    public DatabaseHandler(DatabaseTarget target, QueryLimits limits) {
+        this.target = target;
+        this.limits = limits;
+        this.availability = Availability.available(describe());
+    }
+
+    /** Loads the driver and opens the owner connection now, so a bad URL shows at start. */
+    public void connect() throws SQLException {
+        connection(false);
+    }
+
+    @Override
+    public Reply execute(Request request) {
+        return run(request.command(), request.roles().contains(READER_ROLE));
+    }
+
+    /** Runs one SQL command as the owner, or as the reader. */
+    public Reply run(String command, boolean asReader) {
+        List<String> statements;
+        try {
+            statements = SqlScript.split(command == null ? "" : command);
+        } catch (IllegalArgumentException e) {
+            return Reply.error(ErrorCode.BAD_REQUEST, "not one SQL statement: " + e.getMessage());
+        }
+        if (statements.isEmpty()) {
+            return Reply.error(ErrorCode.BAD_REQUEST, "the DatabaseServer takes one SQL statement, e.g. SELECT * FROM mission");
+        }
+        if (statements.size() > 1) {
+            return Reply.error(ErrorCode.BAD_REQUEST, "one SQL statement per command, got " + statements.size()
+                    + " separated by ';'");
+        }
+        String sql = statements.get(0);
+        if (asReader && !target.hasReader()) {
+            return Reply.error(ErrorCode.FORBIDDEN, "you may only read this database, and " + target.safeUrl()
+                    + " has no read-only database user configured (the service's --reader-user); ask the operator");
+        }
+        long started = System.nanoTime();
+        Connection c;
+        try {
+            c = connection(asReader);
+        } catch (SQLException e) {
+            return Reply.error(ErrorCode.NOT_AVAILABLE, "cannot connect to " + target.safeUrl() + ": " + describe(e));
+        }
+        try (Statement st = c.createStatement(ResultSet.TYPE_FORWARD_ONLY, ResultSet.CONCUR_READ_ONLY)) {
+            // One row more than we keep tells us the result was cut.
+            st.setMaxRows(limits.maxRows() + 1);
+            st.setFetchSize(Math.min(limits.maxRows() + 1, 1000));
+            st.setQueryTimeout(limits.queryTimeoutSeconds());
+            if (st.execute(sql)) {
+                try (ResultSet rs = st.getResultSet()) {
+                    TableResult table = table(sql, rs);
+                    long ms = (System.nanoTime() - started) / 1_000_000;
+                    log.debug("{} {}: {} rows{} in {} ms", target.handle(), SqlScript.abbreviate(sql), table.rows().size(),
+                            table.truncated() ? " (truncated)" : "", ms);
+                    return Reply.ok(summary(table, ms), table);
+                }
+            }
+            int count = st.getUpdateCount();
+            long ms = (System.nanoTime() - started) / 1_000_000;
+            return Reply.ok((count == 1 ? "1 row" : Math.max(count, 0) + " rows") + " changed in " + ms + " ms",
+                    new UpdateCount(Math.max(count, 0)));
+        } catch (SQLException e) {
+            return failure(sql, e);
+        }
+    }
+
+    private TableResult table(String sql, ResultSet rs) throws SQLException {
+        ResultSetMetaData md = rs.getMetaData();
+        int n = md.getColumnCount();
+        List<String> columns = new ArrayList<>(n);
+        List<String> types = new ArrayList<>(n);
+        for (int i = 1; i <= n; i++) {
+            columns.add(md.getColumnLabel(i));
+            types.add(md.getColumnTypeName(i));
+        }
+        List<String[]> rows = new ArrayList<>(Math.min(limits.maxRows(), 1024));
+        long chars = 0;
+        boolean truncated = false;
+        while (rs.next()) {
+            if (rows.size() == limits.maxRows()) {
+                truncated = true;
+                break;
+            }
+            String[] row = new String[n];
+            for (int i = 0; i < n; i++) {
+                String v = cell(rs, i + 1);
+                row[i] = v;
+                chars += v == null ? 1 : v.length() + 1;
+            }
+            if (chars > limits.maxResultChars()) {
+                truncated = true;
+                break;
+            }
+            rows.add(row);
+        }
+        return new TableResult(sql, columns, types, rows, truncated);
+    }
+
+    private static String cell(ResultSet rs, int column) throws SQLException {
+        String v;
+        try {
+            v = rs.getString(column);
+        } catch (SQLException e) {
+            // e.g. a BLOB: show what it is rather than fail the whole query
+            Object o = rs.getObject(column);
+            v = o == null ? null : "<" + o.getClass().getSimpleName() + ">";
+        }
+        if (v != null && v.length() > MAX_CELL_CHARS) {
+            v = v.substring(0, MAX_CELL_CHARS) + "... (" + v.length() + " characters)";
+        }
+        return v;
+    }
+
+    private String summary(TableResult table, long ms) {
+        int n = table.rows().size();
+        String rows = n == 1 ? "1 row" : n + " rows";
+        if (!table.truncated()) {
+            return rows + " in " + ms + " ms";
+        }
+        if (n == limits.maxRows()) {
+            return "first " + rows + " (truncated: the service returns at most " + limits.maxRows()
+                    + " rows; narrow the query, e.g. with WHERE or FETCH FIRST n ROWS ONLY) in " + ms + " ms";
+        }
+        return "first " + rows + " (truncated: the result is larger than one reply may carry, "
+                + limits.maxResultChars() + " characters; narrow the query) in " + ms + " ms";
+    }
+
+    private Reply failure(String sql, SQLException e) {
+        String state = e.getSQLState() == null ? "" : e.getSQLState();
+        String text = describe(e);
+        if (state.startsWith("08")) {
+            // The connection is gone (server restarted, network down): reconnect on the next command.
+            log.warn("{}: lost the connection to {}: {}", target.handle(), target.safeUrl(), text);
+            closeConnections();
+            availability = Availability.notAvailable("lost the connection to " + target.safeUrl() + ": " + text);
+            return Reply.error(ErrorCode.NOT_AVAILABLE, "lost the connection to the database (" + text
+                    + "); the next command reconnects");
+        }
+        log.debug("{}: '{}' failed: {}", target.handle(), SqlScript.abbreviate(sql), text);
+        if (e instanceof SQLTimeoutException || state.equals("XCL52") || state.equals("57014")) {
+            return Reply.error(ErrorCode.TIMEOUT, "the statement ran longer than the query timeout of "
+                    + limits.queryTimeoutSeconds() + " s and was cancelled: " + text);
+        }
+        if (state.startsWith("4250") || state.equals("25502") || state.equals("25503") || state.equals("25505")
+                || state.equals("25006")) {
+            return Reply.error(ErrorCode.FORBIDDEN, "the database refused: " + text);
+        }
+        return Reply.error(ErrorCode.DATABASE_ERROR, text);
+    }
+
+    /** The database's message and SQLState, with any chained exceptions' messages. */
+    static String describe(SQLException e) {
+        StringBuilder b = new StringBuilder();
+        String last = null;
+        for (SQLException x = e; x != null; x = x.getNextException()) {
+            String m = x.getMessage() == null ? x.toString() : x.getMessage().strip();
+            if (m.equals(last)) {
+                continue;
+            }
+            if (b.length() > 0) {
+                b.append("; ");
+            }
+            b.append(m);
+            if (x.getSQLState() != null) {
+                b.append(" (SQLState ").append(x.getSQLState()).append(')');
+            }
+            last = m;
+            if (b.length() > 2000) {
+                break;
+            }
+        }
+        return b.toString();
+    }
+
+    private Connection connection(boolean asReader) throws SQLException {
+        Connection c = asReader ? reader : owner;
+        if (c != null && !c.isClosed()) {
+            return c;
+        }
+        try {
+            c = open(asReader);
+        } catch (SQLException e) {
+            availability = Availability.notAvailable("cannot connect to " + target.safeUrl() + ": " + describe(e));
+            throw e;
+        }
+        if (asReader) {
+            reader = c;
+        } else {
+            owner = c;
+        }
+        availability = Availability.available(describe());
+        return c;
+    }
+
+    private Connection open(boolean asReader) throws SQLException {
+        if (target.driver() != null && !target.driver().isBlank()) {
+            try {
+                Class.forName(target.driver());
+            } catch (ClassNotFoundException e) {
+                throw new SQLException("JDBC driver class " + target.driver()
+                        + " is not on the class path; add its jar (java -cp ripv-services.jar:driver.jar ...)", "08001", e);
+            }
+        }
+        Properties p = new Properties();
+        String user = asReader ? target.readerUser() : target.user();
+        String password = asReader ? target.readerPassword() : target.password();
+        if (user != null) {
+            p.setProperty("user", user);
+        }
+        if (password != null) {
+            p.setProperty("password", password);
+        }
+        Connection c = DriverManager.getConnection(target.url(), p);
+        try {
+            c.setAutoCommit(true);
+            if (asReader) {
+                c.setReadOnly(true); // a second line of defence; the database user is what enforces it
+                if (target.schema() != null) {
+                    c.setSchema(target.schema());
+                }
+            }
+        } catch (SQLException e) {
+            c.close();
+            throw e;
+        }
+        log.info("{}: connected to {} as {}", target.handle(), target.safeUrl(), user == null ? "(no user)" : user);
+        return c;
+    }
+
+    private String describe() {
+        String product = target.url().startsWith("jdbc:derby:") ? (target.embeddedDerby() ? "embedded Derby" : "Derby network")
+                : target.url().split(":")[1].toLowerCase(Locale.ROOT);
+        return product + " " + target.safeUrl();
+    }
+
+    @Override
+    public Availability availability() {
+        return availability;
+    }
+
+    public DatabaseTarget target() {
+        return target;
+    }
+
+    private void closeConnections() {
+        for (Connection c : new Connection[] {reader, owner}) {
+            if (c != null) {
+                try {
+                    c.close();
+                } catch (SQLException e) {
+                    log.debug("closing a connection to {}: {}", target.safeUrl(), e.getMessage());
+                }
+            }
+        }
+        reader = null;
+        owner = null;
+    }
+
+    /** Closes the connections, and shuts an embedded Derby database down so its files are released. */
+    @Override
+    public void close() {
+        closeConnections();
+        availability = Availability.notAvailable("closed");
+        if (target.embeddedDerby() && target.user() != null) {
+            EmbeddedDatabase.shutdownQuietly(target.url(), target.user(), target.password());
+        }
+    }
+}
