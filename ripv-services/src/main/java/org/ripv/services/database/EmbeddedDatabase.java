@@ -113,8 +113,8 @@ public final class EmbeddedDatabase {
                 // The DBO's credentials must come first. Storing them turns on NATIVE::LOCAL
                 // authentication by itself (Derby sets derby.authentication.provider); it starts
                 // at the next boot.
-                st.execute("CALL SYSCS_UTIL.SYSCS_CREATE_USER('" + OWNER + "', '" + ownerPassword + "')");
-                st.execute("CALL SYSCS_UTIL.SYSCS_CREATE_USER('" + READER + "', '" + readerPassword + "')");
+                st.execute("CALL SYSCS_UTIL.SYSCS_CREATE_USER('" + OWNER + "', " + literal(ownerPassword) + ")");
+                st.execute("CALL SYSCS_UTIL.SYSCS_CREATE_USER('" + READER + "', " + literal(readerPassword) + ")");
                 setProperty(st, "derby.database.sqlAuthorization", "true");
                 setProperty(st, "derby.database.defaultConnectionMode", "noAccess");
                 setProperty(st, "derby.database.fullAccessUsers", OWNER);
@@ -135,6 +135,10 @@ public final class EmbeddedDatabase {
                 st.execute("GRANT SELECT ON " + table + " TO " + READER);
             }
         }
+    }
+
+    private static String literal(String s) {
+        return "'" + s.replace("'", "''") + "'";
     }
 
     private static void setProperty(Statement st, String key, String value) throws SQLException {

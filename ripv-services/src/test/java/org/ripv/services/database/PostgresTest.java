@@ -66,7 +66,7 @@ class PostgresTest {
     @Test
     void schemaDataAndServiceWorkOnPostgres() throws Exception {
         try (Connection c = DriverManager.getConnection(dbUrl, admin)) {
-            SchemaTest.loadAndCheck(c, true);
+            SchemaTest.loadAndCheck(c);
             try (Statement st = c.createStatement()) {
                 // the read-only user of docs/database.md
                 st.execute("GRANT CONNECT ON DATABASE " + dbName + " TO " + readerRole);
