@@ -75,8 +75,10 @@ public final class EmbeddedDatabase {
             try (Reader r = Files.newBufferedReader(credentials, StandardCharsets.UTF_8)) {
                 p.load(r);
             }
+            String ownerPassword = require(p, "owner.password", credentials);
+            checkOpens(url, ownerPassword, db);
             log.info("reusing the vehicle database in {}", db);
-            return target(handle, url, require(p, "owner.password", credentials), require(p, "reader.password", credentials));
+            return target(handle, url, ownerPassword, require(p, "reader.password", credentials));
         }
         if (Files.exists(db)) {
             log.warn("{} has no {}: its first start did not finish; creating it again", db, CREDENTIALS);
@@ -95,6 +97,22 @@ public final class EmbeddedDatabase {
         writeCredentials(credentials, ownerPassword, readerPassword);
         log.info("created and seeded the vehicle database in {} in {} ms", db, (System.nanoTime() - started) / 1_000_000);
         return target(handle, url, ownerPassword, readerPassword);
+    }
+
+    /** Boots the database once, so a database another process holds fails the start with a clear message. */
+    private static void checkOpens(String url, String ownerPassword, Path db) throws SQLException {
+        try (Connection c = DriverManager.getConnection(url, OWNER, ownerPassword)) {
+            c.getMetaData(); // booted and authenticated
+        } catch (SQLException e) {
+            for (SQLException x = e; x != null; x = x.getNextException()) {
+                if ("XSDB6".equals(x.getSQLState())) {
+                    throw new SQLException("the vehicle database in " + db + " is open in another process (another"
+                            + " DatabaseServer, or Derby's ij); stop it or give this one another --data", "XSDB6", e);
+                }
+            }
+            throw new SQLException("cannot open the vehicle database in " + db + ": " + DatabaseHandler.describe(e),
+                    e.getSQLState(), e);
+        }
     }
 
     private static DatabaseTarget target(String handle, String url, String ownerPassword, String readerPassword) {
