@@ -52,7 +52,10 @@ public final class InboxAssistantThread<I extends Message, O extends Message> ex
         log.debug("{} stopped", getName());
     }
 
-    /** Stops after the current command; waits up to the given milliseconds. */
+    /**
+     * Stops: interrupts the command under way (a handler blocked on a device sees the
+     * interrupt and fails, which still answers its request) and waits up to the given milliseconds.
+     */
     public void shutdown(long waitMillis) {
         running = false;
         interrupt();

@@ -6,9 +6,15 @@ import org.ripv.post.MailBox;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
-/** Takes replies off a MailBox's outbox and hands them to the TaskManager's footer side. */
+/**
+ * Takes replies off a MailBox's outbox and hands them to the TaskManager's footer side — one at
+ * a time when they come one at a time, together when several have queued up meanwhile.
+ */
 public final class OutboxAssistantThread<I extends Message, O extends Message> extends Thread {
     private static final Logger log = LoggerFactory.getLogger(OutboxAssistantThread.class);
+
+    /** The most replies handed to the TaskManager at once. */
+    static final int MAX_BATCH = 256;
 
     private final MailBox<I, O> box;
     private final TaskManager<I, O> manager;
@@ -23,23 +29,38 @@ public final class OutboxAssistantThread<I extends Message, O extends Message> e
 
     @Override
     public void run() {
-        while (running) {
+        java.util.List<O> batch = new java.util.ArrayList<>();
+        while (true) {
             O reply;
             try {
-                reply = box.takeReply();
+                // Once stopping, deliver what is left without waiting for more.
+                reply = running ? box.takeReply() : box.pollReply();
             } catch (InterruptedException e) {
+                reply = box.pollReply();
+            }
+            if (reply == null) {
                 break;
             }
+            batch.clear();
+            batch.add(reply);
+            box.drainReplies(batch, MAX_BATCH - 1);
             try {
-                manager.parseFooter(box, reply);
+                if (batch.size() == 1) {
+                    manager.parseFooter(box, reply);
+                } else {
+                    manager.parseFooters(box, batch);
+                }
             } catch (Throwable t) {
-                log.warn("{}: could not deliver reply {}", box.address(), reply, t);
-                manager.undeliverable(box, reply, t);
+                log.warn("{}: could not deliver {} repl{}", box.address(), batch.size(), batch.size() == 1 ? "y" : "ies", t);
+                for (O r : batch) {
+                    manager.undeliverable(box, r, t);
+                }
             }
         }
         log.debug("{} stopped", getName());
     }
 
+    /** Delivers the replies still queued, then stops; waits up to the given milliseconds. */
     public void shutdown(long waitMillis) {
         running = false;
         interrupt();

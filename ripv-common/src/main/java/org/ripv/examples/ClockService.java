@@ -7,7 +7,6 @@ import org.ripv.naming.Handles;
 import org.ripv.service.RIPVService;
 import org.ripv.service.Reply;
 import org.ripv.service.Request;
-import org.ripv.service.ServiceConnector;
 import org.ripv.service.ServiceLaunchOptions;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -67,13 +66,16 @@ public final class ClockService extends RIPVService {
 
         @Override
         public Integer call() throws Exception {
-            ServiceConnector.connect(new ClockService(launch.hostName()), launch.toOptions());
-            Thread.currentThread().join(); // serve until the process is stopped
-            return 0;
+            return launch.serve(new ClockService(launch.hostName()));
         }
     }
 
     public static void main(String[] args) {
-        System.exit(new CommandLine(new Launch()).execute(args));
+        CommandLine cl = new CommandLine(new Launch());
+        cl.setExecutionExceptionHandler((e, line, parsed) -> {
+            line.getErr().println("Error: " + (e.getMessage() == null ? e.toString() : e.getMessage()));
+            return 1;
+        });
+        System.exit(cl.execute(args));
     }
 }

@@ -22,6 +22,21 @@ public abstract class TaskManager<I extends Message, O extends Message> {
     public abstract void parseFooter(MailBox<I, O> box, O reply) throws Exception;
 
     /**
+     * Delivers several replies that were waiting in the outbox together, in order. The default
+     * delivers them one by one; a TaskManager whose delivery has a per-call cost (an RMI call)
+     * sends them at once.
+     */
+    public void parseFooters(MailBox<I, O> box, java.util.List<O> replies) {
+        for (O reply : replies) {
+            try {
+                parseFooter(box, reply);
+            } catch (Exception e) {
+                undeliverable(box, reply, e);
+            }
+        }
+    }
+
+    /**
      * Called when {@link #parseHeader} throws: the request must still get its one final reply.
      */
     public abstract void failed(MailBox<I, O> box, I request, Throwable cause);

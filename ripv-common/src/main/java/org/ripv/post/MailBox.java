@@ -132,6 +132,26 @@ public final class MailBox<I extends Message, O extends Message> {
         }
     }
 
+    /** Removes the first waiting request that matches; true when one was removed. */
+    public boolean remove(java.util.function.Predicate<? super I> which) {
+        lock.lock();
+        try {
+            for (ArrayDeque<I> inbox : inboxes) {
+                var it = inbox.iterator();
+                while (it.hasNext()) {
+                    if (which.test(it.next())) {
+                        it.remove();
+                        waiting--;
+                        return true;
+                    }
+                }
+            }
+            return false;
+        } finally {
+            lock.unlock();
+        }
+    }
+
     /** Queues a reply for the outbox assistant. */
     public void post(O reply) {
         outbox.add(Objects.requireNonNull(reply, "reply"));
@@ -140,6 +160,16 @@ public final class MailBox<I extends Message, O extends Message> {
     /** Waits for and removes the next reply. */
     public O takeReply() throws InterruptedException {
         return outbox.take();
+    }
+
+    /** Removes the next reply if there is one, without waiting. */
+    public O pollReply() {
+        return outbox.poll();
+    }
+
+    /** Moves up to {@code max} replies that are already waiting into {@code into}, without blocking. */
+    public int drainReplies(java.util.Collection<? super O> into, int max) {
+        return outbox.drainTo(into, max);
     }
 
     @Override

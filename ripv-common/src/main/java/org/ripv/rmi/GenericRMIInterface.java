@@ -37,6 +37,12 @@ public interface GenericRMIInterface extends Remote {
     void serviceReply(String token, OutgoingServiceMessage reply) throws RemoteException;
 
     /**
+     * Several replies in one call, in order: what a service sends when replies queue up under
+     * load, so that one RMI round trip carries many.
+     */
+    void serviceReplies(String token, List<OutgoingServiceMessage> replies) throws RemoteException;
+
+    /**
      * A service's periodic sign of life.
      *
      * @return false when the server no longer knows the token (it restarted, or dropped the
@@ -46,6 +52,17 @@ public interface GenericRMIInterface extends Remote {
 
     /** A request for one of the service's MailBoxes; returns once the request is queued. */
     void serviceRequest(String token, IncomingServiceMessage request) throws RemoteException;
+
+    /** Several requests in one call, in order (the server batches what queued up for a service). */
+    void serviceRequests(String token, List<IncomingServiceMessage> requests) throws RemoteException;
+
+    /**
+     * Takes back a request that is still waiting in a MailBox's inbox (it timed out at the
+     * server). A request already running cannot be withdrawn.
+     *
+     * @return true when the request was waiting and now will never run
+     */
+    boolean withdraw(String token, String mailbox, String clientId, long messageId) throws RemoteException;
 
     /** The service's MailBoxes and whether each can take commands now. */
     List<MailboxStatus> mailboxes(String token) throws RemoteException;

@@ -180,6 +180,15 @@ public abstract class RIPVService {
         }
     }
 
+    /**
+     * Withdraws a request still waiting in a MailBox (the server gave up on it), so that a
+     * command the operator was told failed does not run later.
+     */
+    public final boolean withdraw(String mailbox, String clientId, long messageId) {
+        return postOffice.mailbox(mailbox).map(box -> box.remove(m -> m.header().messageId() == messageId
+                && m.header().origin().clientId().equals(clientId))).orElse(false);
+    }
+
     /** The MailBoxes and their availability. */
     public final List<MailboxStatus> mailboxes() {
         List<MailboxStatus> out = new ArrayList<>();

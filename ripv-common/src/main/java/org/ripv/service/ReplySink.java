@@ -6,4 +6,11 @@ import org.ripv.messages.OutgoingServiceMessage;
 @FunctionalInterface
 public interface ReplySink {
     void reply(OutgoingServiceMessage reply) throws Exception;
+
+    /** Several replies at once, in order; the default sends them one by one. */
+    default void replies(java.util.List<OutgoingServiceMessage> replies) throws Exception {
+        for (OutgoingServiceMessage r : replies) {
+            reply(r);
+        }
+    }
 }

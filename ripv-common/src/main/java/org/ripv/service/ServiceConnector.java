@@ -36,6 +36,7 @@ public final class ServiceConnector implements AutoCloseable {
     private volatile String token;
     private volatile CountDownLatch registered = new CountDownLatch(1);
     private volatile boolean warnedAway;
+    private final java.util.concurrent.CompletableFuture<String> fatal = new java.util.concurrent.CompletableFuture<>();
 
     private ServiceConnector(RIPVService service, ServiceOptions options) throws RemoteException {
         this.service = service;
@@ -56,7 +57,7 @@ public final class ServiceConnector implements AutoCloseable {
         RmiSupport.configure(10_000, 30_000);
         service.start();
         ServiceConnector c = new ServiceConnector(service, options);
-        service.replyTo(c::send);
+        service.replyTo(c.new Sink());
         c.timer.execute(c::tick);
         c.timer.scheduleWithFixedDelay(c::tick, options.heartbeat().toMillis(), options.heartbeat().toMillis(),
                 TimeUnit.MILLISECONDS);
@@ -66,6 +67,18 @@ public final class ServiceConnector implements AutoCloseable {
     /** Waits until the service is registered; false when the time ran out. */
     public boolean awaitRegistered(Duration timeout) throws InterruptedException {
         return registered.await(timeout.toMillis(), TimeUnit.MILLISECONDS);
+    }
+
+    /**
+     * Blocks until the connector has given up for good (the server refused the secret), and
+     * returns why. A launcher calls this after {@link #connect} to serve until then.
+     */
+    public String awaitFailure() throws InterruptedException {
+        try {
+            return fatal.get();
+        } catch (java.util.concurrent.ExecutionException e) {
+            return e.getCause().toString();
+        }
     }
 
     public boolean isRegistered() {
@@ -94,7 +107,11 @@ public final class ServiceConnector implements AutoCloseable {
                         options.registryPort(), e.getMessage(), options.heartbeat().toSeconds());
             }
         } catch (SecurityException e) {
+            // Retrying cannot fix a wrong secret: stop and let the launcher say so.
             log.error("{}: the server refused registration: {}", service.name(), e.getMessage());
+            fatal.complete("the server at " + options.serverHost() + ":" + options.registryPort()
+                    + " refused the registration: " + e.getMessage());
+            timer.shutdown();
         } catch (RuntimeException e) {
             log.error("{}: heartbeat failed", service.name(), e);
         }
@@ -119,18 +136,39 @@ public final class ServiceConnector implements AutoCloseable {
         log.info("{} registered with the RIPVServer at {}:{}", d.name(), options.serverHost(), options.registryPort());
     }
 
-    private void send(OutgoingServiceMessage reply) throws Exception {
-        String t = token;
-        GenericRMIInterface s = server;
-        if (t == null || s == null) {
-            throw new RemoteException("not registered with a server");
+    /** Sends replies to the server over RMI. */
+    private final class Sink implements ReplySink {
+        @Override
+        public void reply(OutgoingServiceMessage reply) throws Exception {
+            server().serviceReply(token(), reply);
         }
-        s.serviceReply(t, reply);
+
+        @Override
+        public void replies(List<OutgoingServiceMessage> replies) throws Exception {
+            server().serviceReplies(token(), replies);
+        }
+
+        private GenericRMIInterface server() throws RemoteException {
+            GenericRMIInterface s = server;
+            if (s == null || token == null) {
+                throw new RemoteException("not registered with a server");
+            }
+            return s;
+        }
+
+        private String token() throws RemoteException {
+            String t = token;
+            if (t == null) {
+                throw new RemoteException("not registered with a server");
+            }
+            return t;
+        }
     }
 
     /** Stops checking in and withdraws the service's RMI object. The service itself keeps running. */
     @Override
     public void close() {
+        fatal.complete("closed");
         timer.shutdownNow();
         RmiSupport.unexport(remote);
         token = null;
@@ -152,6 +190,18 @@ public final class ServiceConnector implements AutoCloseable {
         }
 
         @Override
+        public void serviceRequests(String t, List<IncomingServiceMessage> requests) throws RemoteException {
+            check(t);
+            requests.forEach(service::accept);
+        }
+
+        @Override
+        public boolean withdraw(String t, String mailbox, String clientId, long messageId) throws RemoteException {
+            check(t);
+            return service.withdraw(mailbox, clientId, messageId);
+        }
+
+        @Override
         public List<MailboxStatus> mailboxes(String t) throws RemoteException {
             check(t);
             return service.mailboxes();
@@ -164,6 +214,11 @@ public final class ServiceConnector implements AutoCloseable {
 
         @Override
         public void serviceReply(String t, OutgoingServiceMessage reply) {
+            throw new UnsupportedOperationException("a service does not take replies");
+        }
+
+        @Override
+        public void serviceReplies(String t, List<OutgoingServiceMessage> replies) {
             throw new UnsupportedOperationException("a service does not take replies");
         }
 

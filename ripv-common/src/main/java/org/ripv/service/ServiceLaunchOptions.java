@@ -22,6 +22,9 @@ public final class ServiceLaunchOptions {
             description = "The host name to register under and that the server calls back (sets java.rmi.server.hostname). Default: this machine's name.")
     String host;
 
+    /** Where launch messages go (standard error; injectable for tests). */
+    java.io.PrintStream err = System.err;
+
     @Option(names = "--export-port", paramLabel = "PORT", defaultValue = "0",
             description = "The port this service's RMI object listens on (default: any free port; fix it for firewalls).")
     int exportPort;
@@ -39,6 +42,27 @@ public final class ServiceLaunchOptions {
     /** The server option, for launchers that accept the thesis's positional {@code //host}. */
     public void server(String value) {
         this.server = value;
+    }
+
+    /**
+     * Runs a service until the process is stopped: registers it (retrying while the server is
+     * away), stops it cleanly on Ctrl-C, and returns 1 with an {@code Error:} line when the server
+     * refuses it for good. What every service launcher's {@code call()} returns.
+     */
+    public int serve(RIPVService service) throws Exception {
+        ServiceConnector connector = ServiceConnector.connect(service, toOptions());
+        Thread hook = new Thread(() -> {
+            connector.close();
+            service.stop();
+        }, "ripv-service-shutdown");
+        Runtime.getRuntime().addShutdownHook(hook);
+        err.println(service.name() + " (SID " + service.sid() + ") serving; registering with " + server);
+        String why = connector.awaitFailure();
+        Runtime.getRuntime().removeShutdownHook(hook);
+        connector.close();
+        service.stop();
+        err.println("Error: " + why);
+        return 1;
     }
 
     public ServiceOptions toOptions() throws java.io.IOException {

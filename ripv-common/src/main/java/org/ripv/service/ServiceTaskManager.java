@@ -40,6 +40,15 @@ final class ServiceTaskManager extends TaskManager<IncomingServiceMessage, Outgo
     }
 
     @Override
+    public void parseFooters(MailBox<IncomingServiceMessage, OutgoingServiceMessage> box, java.util.List<OutgoingServiceMessage> replies) {
+        try {
+            service.sink().replies(java.util.List.copyOf(replies));
+        } catch (Exception e) {
+            replies.forEach(r -> undeliverable(box, r, e));
+        }
+    }
+
+    @Override
     public void failed(MailBox<IncomingServiceMessage, OutgoingServiceMessage> box, IncomingServiceMessage request,
                        Throwable cause) {
         ErrorCode code = cause instanceof ServiceException se ? se.code() : ErrorCode.INTERNAL;

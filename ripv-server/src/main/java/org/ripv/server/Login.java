@@ -20,6 +20,9 @@ import org.slf4j.LoggerFactory;
 final class Login {
     private static final Logger log = LoggerFactory.getLogger(Login.class);
 
+    /** Failed log-ins one connection may make before it is closed. */
+    static final int MAX_FAILED_LOGINS = 5;
+
     private Login() {}
 
     static OutgoingServerMessage login(RIPVServer server, SocketHandler client, IncomingServerMessage request) {
@@ -36,7 +39,16 @@ final class Login {
         try {
             Optional<PermitFile.User> u = server.permits().authenticate(user, password);
             if (u.isEmpty()) {
-                log.warn("client {} ({}): failed log-in as '{}'", client.clientId(), client.remoteAddress(), user);
+                int failures = client.failedLogin();
+                log.warn("client {} ({}): failed log-in as '{}' ({} on this connection)", client.clientId(),
+                        client.remoteAddress(), user, failures);
+                if (failures >= MAX_FAILED_LOGINS) {
+                    // Guessing passwords costs a new connection (and its own PBKDF2 time) every few tries.
+                    client.send(request.reply(Footer.error(Ids.FID_LOGIN, ErrorCode.FORBIDDEN,
+                            "wrong user name or password; too many failures, disconnecting")));
+                    client.close();
+                    return null;
+                }
                 return request.reply(Footer.error(Ids.FID_LOGIN, ErrorCode.FORBIDDEN, "wrong user name or password"));
             }
             client.loggedIn(user, u.get().roles());

@@ -55,11 +55,11 @@ final class PendingRequests {
         }, timeout.toMillis(), TimeUnit.MILLISECONDS);
     }
 
-    /** A PROGRESS reply arrived: the request is alive, restart its clock. Null if not pending. */
-    Pending touch(Header h) {
+    /** A PROGRESS reply arrived from {@code service}: restart the request's clock. Null if not pending there. */
+    Pending touch(Header h, String service) {
         String k = key(h);
         Pending p = pending.get(k);
-        if (p == null) {
+        if (p == null || !p.service().equals(service)) {
             return null;
         }
         Pending renewed = new Pending(p.header(), p.service(), schedule(k));
@@ -71,12 +71,17 @@ final class PendingRequests {
         return pending.get(k);
     }
 
-    /** The final reply arrived: stop tracking. Null when the request was not pending (late or forged). */
-    Pending complete(Header h) {
-        Pending p = pending.remove(key(h));
-        if (p != null) {
-            p.timer().cancel(false);
+    /**
+     * The final reply arrived from {@code service}: stop tracking. Null when the request was not
+     * pending at that service (late, or a reply from a service it was never sent to).
+     */
+    Pending complete(Header h, String service) {
+        String k = key(h);
+        Pending p = pending.get(k);
+        if (p == null || !p.service().equals(service) || !pending.remove(k, p)) {
+            return null;
         }
+        p.timer().cancel(false);
         return p;
     }
 

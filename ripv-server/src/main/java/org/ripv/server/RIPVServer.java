@@ -76,6 +76,8 @@ public final class RIPVServer implements AutoCloseable {
     private final PostOffice<IncomingServerMessage, OutgoingServerMessage> postOffice = new PostOffice<>(200_000);
     private final ScheduledExecutorService timers;
     private final ExecutorService checkers;
+    private final ExecutorService liveness;
+    private final ExecutorService fileWork;
     private final ServerRemote remote = new ServerRemote();
 
     private volatile PermitFile permits;
@@ -101,7 +103,9 @@ public final class RIPVServer implements AutoCloseable {
     public RIPVServer(ServerConfig config) {
         this.config = config;
         this.timers = Executors.newScheduledThreadPool(1, named("ripv-server-timer"));
-        this.checkers = Executors.newFixedThreadPool(4, named("ripv-service-check"));
+        this.checkers = Executors.newFixedThreadPool(4, named("ripv-service-query"));
+        this.liveness = Executors.newFixedThreadPool(2, named("ripv-service-check"));
+        this.fileWork = Executors.newFixedThreadPool(2, named("ripv-file-work"));
     }
 
     private static java.util.concurrent.ThreadFactory named(String name) {
@@ -120,24 +124,39 @@ public final class RIPVServer implements AutoCloseable {
         }
         RmiSupport.configure(5_000, 15_000);
         Files.createDirectories(config.dataDir());
-        permits = PermitFile.load(config.permitFile());
+        reloadPermits();
         files = new FileStore(config.dataDir().resolve("upload"), config.dataDir().resolve("download"), config.maxUpload());
         secret = loadOrCreateSecret(config.dataDir().resolve("service.secret"));
         codec = new FrameCodec(config.maxFrame());
         pending = new PendingRequests(timers, config.requestTimeout(), this::timedOut);
         box = postOffice.open(POST_OFFICE, new ServerTaskManager(this));
 
-        registryPort = config.registryPort() == 0 ? freePort() : config.registryPort();
-        registry = LocateRegistry.createRegistry(registryPort);
-        GenericRMIInterface stub = RmiSupport.export(remote, registryPort);
-        registry.rebind(GenericRMIInterface.BINDING, stub);
-
-        ServerSocketFactory factory = config.tls() == null ? ServerSocketFactory.getDefault()
-                : config.tls().getServerSocketFactory();
         InetAddress bind = config.bindAddress() == null ? null : InetAddress.getByName(config.bindAddress());
-        listener = factory.createServerSocket();
-        listener.setReuseAddress(true);
-        listener.bind(new InetSocketAddress(bind, config.port()), 128);
+        try {
+            registryPort = config.registryPort() == 0 ? freePort() : config.registryPort();
+            BoundServerSocketFactory rmiSockets = new BoundServerSocketFactory(bind);
+            try {
+                registry = LocateRegistry.createRegistry(registryPort, null, rmiSockets);
+            } catch (RemoteException e) {
+                throw new IOException("cannot open the RMI registry on port " + registryPort + " (in use?): " + e.getMessage(), e);
+            }
+            GenericRMIInterface stub = (GenericRMIInterface) java.rmi.server.UnicastRemoteObject.exportObject(remote,
+                    registryPort, null, rmiSockets, org.ripv.wire.WireFilter.forRmi(RmiSupport.MAX_RMI_BYTES));
+            registry.rebind(GenericRMIInterface.BINDING, stub);
+
+            ServerSocketFactory factory = config.tls() == null ? ServerSocketFactory.getDefault()
+                    : config.tls().getServerSocketFactory();
+            listener = factory.createServerSocket();
+            listener.setReuseAddress(true);
+            try {
+                listener.bind(new InetSocketAddress(bind, config.port()), 128);
+            } catch (IOException e) {
+                throw new IOException("cannot listen for clients on port " + config.port() + " (in use?): " + e.getMessage(), e);
+            }
+        } catch (IOException | RuntimeException e) {
+            releaseAfterFailedStart();
+            throw e;
+        }
         running = true;
         acceptor = new Thread(this::acceptLoop, "ripv-server-acceptor");
         acceptor.setDaemon(true);
@@ -146,6 +165,29 @@ public final class RIPVServer implements AutoCloseable {
         timers.scheduleWithFixedDelay(this::checkServices, check, check, TimeUnit.MILLISECONDS);
         log.info("RIPVServer listening for clients on port {}{}, RMI registry on port {}, data in {}", port(),
                 config.tls() == null ? "" : " (TLS)", registryPort, config.dataDir().toAbsolutePath());
+    }
+
+    private void releaseAfterFailedStart() {
+        if (listener != null) {
+            try {
+                listener.close();
+            } catch (IOException ignored) {
+                // closing anyway
+            }
+        }
+        RmiSupport.unexport(remote);
+        if (registry != null) {
+            try {
+                java.rmi.server.UnicastRemoteObject.unexportObject(registry, true);
+            } catch (java.rmi.NoSuchObjectException ignored) {
+                // not exported
+            }
+        }
+        timers.shutdownNow();
+        checkers.shutdownNow();
+        liveness.shutdownNow();
+        fileWork.shutdownNow();
+        postOffice.stop();
     }
 
     /** Attaches something to stop with the server (the landing page). */
@@ -237,7 +279,10 @@ public final class RIPVServer implements AutoCloseable {
             String body = h.body().trim();
             if (body.equals("?login") || body.startsWith("?login ")) {
                 // On the client's own thread: a slow password hash must not hold up the Post Office.
-                client.send(Login.login(RIPVServer.this, client, request));
+                OutgoingServerMessage answer = Login.login(RIPVServer.this, client, request);
+                if (answer != null) {
+                    client.send(answer);
+                }
                 return;
             }
             if (!client.isLoggedIn() && !body.equals("?help") && !body.equals("?ping")) {
@@ -280,6 +325,11 @@ public final class RIPVServer implements AutoCloseable {
         return checkers;
     }
 
+    /** Where uploads, downloads and listings run, so that disk work never holds up the Post Office. */
+    ExecutorService fileWork() {
+        return fileWork;
+    }
+
     Map<String, OperatorLock> locks() {
         return locks;
     }
@@ -308,38 +358,74 @@ public final class RIPVServer implements AutoCloseable {
                     ErrorCode.BAD_REQUEST, "message id " + request.header().messageId() + " is already in use by a pending request")));
             return;
         }
-        ref.forward(request, (r, e) -> {
-            log.warn("could not reach {}: {}", ref, e.toString());
-            if (pending.complete(r.header()) != null) {
-                reply(new IncomingServerMessage(r.header()).reply(Footer.error(ref.descriptor().sid(), ErrorCode.SERVICE_GONE,
-                        ref.descriptor().name() + " could not be reached: " + e.getMessage()).via(SERVER_SERVICE)));
-            }
-            checkers.execute(() -> check(ref));
-        });
+        ref.forward(request);
     }
 
+    /** A request that could not be handed to its service: fail it, and check whether the service lives. */
+    private void undeliverable(ServiceReference ref, IncomingServiceMessage r, Exception e) {
+        log.warn("could not reach {}: {}", ref, e.toString());
+        if (pending.complete(r.header(), ref.descriptor().name()) != null) {
+            reply(new IncomingServerMessage(r.header()).reply(Footer.error(ref.descriptor().sid(), ErrorCode.SERVICE_GONE,
+                    ref.descriptor().name() + " could not be reached: " + e.getMessage()).via(SERVER_SERVICE)));
+        }
+        if (!liveness.isShutdown()) {
+            liveness.execute(() -> check(ref));
+        }
+    }
+
+    /** A request heard nothing for the timeout: withdraw it if it has not started, and say which happened. */
     private void timedOut(PendingRequests.Pending p) {
         ServiceReference ref = services.get(p.service());
-        String sid = ref == null ? Ids.FID_NONE : ref.descriptor().sid();
-        reply(new IncomingServerMessage(p.header()).reply(Footer.error(sid, ErrorCode.TIMEOUT,
-                p.service() + " did not answer '" + Header.abbreviate(p.header().body()) + "' within "
-                        + config.requestTimeout().toSeconds() + " s").via(SERVER_SERVICE)));
+        Runnable answer = () -> {
+            String sid = ref == null ? Ids.FID_NONE : ref.descriptor().sid();
+            boolean withdrawn = false;
+            try {
+                withdrawn = ref != null && ref.withdraw(p.header());
+            } catch (RemoteException | RuntimeException e) {
+                log.debug("could not withdraw #{}: {}", p.header().messageId(), e.toString());
+            }
+            String what = "'" + Header.abbreviate(p.header().body()) + "'";
+            String text = withdrawn
+                    ? p.service() + " did not start " + what + " within " + config.requestTimeout().toSeconds()
+                            + " s (its MailBox was busy); it was withdrawn and will not run"
+                    : p.service() + " did not answer " + what + " within " + config.requestTimeout().toSeconds()
+                            + " s; it may still complete on the device";
+            reply(new IncomingServerMessage(p.header()).reply(Footer.error(sid, ErrorCode.TIMEOUT, text).via(SERVER_SERVICE)));
+        };
+        if (checkers.isShutdown()) {
+            answer.run();
+        } else {
+            checkers.execute(answer);
+        }
     }
 
     private void checkServices() {
         for (ServiceReference ref : services.values()) {
-            checkers.execute(() -> check(ref));
+            liveness.execute(() -> check(ref));
         }
+        reloadPermitsIfChanged();
     }
 
+    /** Removes a service that failed this many checks in a row. */
+    static final int FAILED_CHECKS_TO_REMOVE = 2;
+
     private void check(ServiceReference ref) {
+        if (!ref.checking.compareAndSet(false, true)) {
+            return; // the last check has not finished; do not pile up more
+        }
         try {
             ref.mailboxes();
+            ref.failedChecks.set(0);
         } catch (RemoteException | RuntimeException e) {
-            if (services.remove(ref.descriptor().name(), ref)) {
+            int failures = ref.failedChecks.incrementAndGet();
+            if (failures >= FAILED_CHECKS_TO_REMOVE && services.remove(ref.descriptor().name(), ref)) {
                 log.warn("{} is gone ({}); removed it from the service list", ref, e.getClass().getSimpleName());
                 drop(ref, "went away");
+            } else if (failures < FAILED_CHECKS_TO_REMOVE) {
+                liveness.execute(() -> check(ref));
             }
+        } finally {
+            ref.checking.set(false);
         }
     }
 
@@ -373,7 +459,7 @@ public final class RIPVServer implements AutoCloseable {
             ServiceName.parse(d.name());
             byte[] t = new byte[24];
             new SecureRandom().nextBytes(t);
-            ServiceReference ref = new ServiceReference(d, service, HexFormat.of().formatHex(t));
+            ServiceReference ref = new ServiceReference(d, service, HexFormat.of().formatHex(t), RIPVServer.this::undeliverable);
             ServiceReference old = services.put(d.name(), ref);
             if (old != null) {
                 drop(old, "registered again");
@@ -390,6 +476,20 @@ public final class RIPVServer implements AutoCloseable {
         }
 
         @Override
+        public void serviceReplies(String token, List<OutgoingServiceMessage> replies) {
+            ServiceReference ref = services.values().stream().filter(r -> r.token().equals(token)).findFirst()
+                    .orElseThrow(() -> new SecurityException("unknown session token: register first"));
+            for (OutgoingServiceMessage reply : replies) {
+                ServiceReplies.accept(RIPVServer.this, ref, reply, pending);
+            }
+        }
+
+        @Override
+        public void serviceRequests(String token, List<IncomingServiceMessage> requests) {
+            throw new UnsupportedOperationException("the RIPVServer takes no service requests");
+        }
+
+        @Override
         public boolean heartbeat(String token) {
             return services.values().stream().anyMatch(r -> r.token().equals(token));
         }
@@ -397,6 +497,11 @@ public final class RIPVServer implements AutoCloseable {
         @Override
         public void serviceRequest(String token, IncomingServiceMessage request) {
             throw new UnsupportedOperationException("the RIPVServer takes no service requests");
+        }
+
+        @Override
+        public boolean withdraw(String token, String mailbox, String clientId, long messageId) {
+            throw new UnsupportedOperationException("the RIPVServer runs no service MailBoxes");
         }
 
         @Override
@@ -430,6 +535,31 @@ public final class RIPVServer implements AutoCloseable {
     /** Reloads the permit file (after {@code ripv passwd}). */
     public void reloadPermits() throws IOException {
         permits = PermitFile.load(config.permitFile());
+        permitStamp = stamp(config.permitFile());
+    }
+
+    private volatile long permitStamp;
+
+    private static long stamp(Path p) {
+        try {
+            return Files.getLastModifiedTime(p).toMillis() ^ Files.size(p);
+        } catch (IOException e) {
+            return -1;
+        }
+    }
+
+    /** Picks up {@code ripv passwd} changes while running; a broken file keeps the old rules. */
+    private void reloadPermitsIfChanged() {
+        long now = stamp(config.permitFile());
+        if (now != permitStamp) {
+            try {
+                reloadPermits();
+                log.info("reloaded the permit file {}", config.permitFile());
+            } catch (IOException | RuntimeException e) {
+                permitStamp = now;
+                log.error("the permit file {} is broken; keeping the rules in force: {}", config.permitFile(), e.getMessage());
+            }
+        }
     }
 
     /** Stops listening, disconnects clients, withdraws from RMI. Idempotent. */
@@ -466,6 +596,8 @@ public final class RIPVServer implements AutoCloseable {
         }
         timers.shutdownNow();
         checkers.shutdownNow();
+        liveness.shutdownNow();
+        fileWork.shutdownNow();
         postOffice.stop();
         log.info("RIPVServer stopped");
     }

@@ -63,16 +63,29 @@ final class ServerCommands {
         this.server = server;
     }
 
+    /** Commands that touch the disk: they run on the file workers, not on the Post Office's thread. */
+    private static final java.util.Set<String> FILE_WORK = java.util.Set.of("?upload", "?upload-cancel", "?download",
+            "?dlfiles", "?ulfiles");
+
     /** Runs one {@code ?} command; its reply (or replies) go to the Post Office's outbox. */
     void run(IncomingServerMessage request) {
         String body = request.header().body().trim();
         String[] w = body.split("\\s+");
-        Command c = COMMANDS.get(w[0].toLowerCase(java.util.Locale.ROOT));
+        String word = w[0].toLowerCase(java.util.Locale.ROOT);
+        Command c = COMMANDS.get(word);
         if (c == null) {
             server.reply(ServerTaskManager.error(request, Ids.FID_NONE, ErrorCode.UNKNOWN_COMMAND,
                     "unknown server command '" + w[0] + "'; ?help lists them"));
             return;
         }
+        if (FILE_WORK.contains(word)) {
+            server.fileWork().execute(() -> runNow(request, c, w));
+        } else {
+            runNow(request, c, w);
+        }
+    }
+
+    private void runNow(IncomingServerMessage request, Command c, String[] w) {
         try {
             OutgoingServerMessage reply = execute(request, c, w);
             if (reply != null) {
@@ -148,9 +161,11 @@ final class ServerCommands {
                         : "received " + r.received() + " of " + r.total() + " bytes of " + w[1], null);
             }
             case "?upload-cancel":
+                permit(request, c);
                 files.abort(request.header().origin().clientId(), arg(w, 1, c));
                 return ok(request, c, "dropped the unfinished upload of " + w[1], null);
             case "?download": {
+                permit(request, c);
                 if (w.length != 4) {
                     throw new IllegalArgumentException("usage: " + c.usage());
                 }

@@ -26,8 +26,9 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
 /**
- * {@code ripv server} and {@code ripv passwd}. Exit codes: 0 stopped normally, 1 failed to start
- * or failed, 2 bad command line.
+ * {@code ripv server} and {@code ripv passwd}. Exit codes: 0 done, 1 failed to start or failed,
+ * 2 bad command line; a server stopped by Ctrl-C or SIGTERM ends as the JVM does (130, 143)
+ * after stopping cleanly.
  */
 @Command(name = "ripv-server", mixinStandardHelpOptions = true, version = "RIPV 1.0",
         description = "The RIPV broker, and its user administration.",
@@ -36,7 +37,7 @@ public final class ServerMain implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        return new CommandLine(new Serve()).execute();
+        return run("server");
     }
 
     @Command(name = "server", mixinStandardHelpOptions = true,
@@ -71,6 +72,9 @@ public final class ServerMain implements Callable<Integer> {
         public Integer call() throws Exception {
             if (rmiHostname != null) {
                 System.setProperty("java.rmi.server.hostname", rmiHostname);
+            } else if (bind != null) {
+                // Stubs must name an address the server actually listens on.
+                System.setProperty("java.rmi.server.hostname", bind);
             }
             Path dataDir = data != null ? data : ServiceOptions.defaultDataDir();
             ServerConfig config = ServerConfig.defaults(dataDir)
@@ -116,7 +120,8 @@ public final class ServerMain implements Callable<Integer> {
             return null;
         }
 
-        private static SSLContext tls(Path keystore, Path passwordFile) throws Exception {
+        /** A TLS context from a PKCS12 key store and a file holding its password. */
+        static SSLContext tls(Path keystore, Path passwordFile) throws Exception {
             if (passwordFile == null) {
                 throw new CommandLine.ParameterException(new CommandLine(new Serve()), "--tls-keystore needs --tls-password-file");
             }
@@ -156,7 +161,12 @@ public final class ServerMain implements Callable<Integer> {
                 err.println("Error: a password needs at least 8 characters");
                 return 1;
             }
+            boolean existed = java.nio.file.Files.exists(permit) && PermitFile.load(permit).user(user).isPresent();
             PermitFile.setUser(permit, user, password, roles, iterations);
+            if (!existed && (roles == null || roles.isEmpty())) {
+                err.println("Warning: '" + user + "' has no roles; only rules that name the user will allow anything"
+                        + " (give --roles operators, or observers)");
+            }
             Arrays.fill(password, '\0');
             spec.commandLine().getOut().println("set the password of '" + user + "' in " + permit
                     + (roles == null ? "" : " with roles " + String.join(",", roles)));
@@ -179,6 +189,11 @@ public final class ServerMain implements Callable<Integer> {
             }
             return line.toCharArray();
         }
+    }
+
+    /** A TLS context for {@link ServerConfig#withTls} from a PKCS12 key store and its password file. */
+    public static SSLContext tlsContext(Path keystore, Path passwordFile) throws Exception {
+        return Serve.tls(keystore, passwordFile);
     }
 
     /** Runs the command line; returns the exit code. */

@@ -1,12 +1,9 @@
 package org.ripv.server;
 
 import java.rmi.RemoteException;
+import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.ExecutorService;
 import java.util.concurrent.LinkedBlockingQueue;
-import java.util.concurrent.ThreadPoolExecutor;
-import java.util.concurrent.TimeUnit;
-import java.util.function.BiConsumer;
 import org.ripv.messages.IncomingServiceMessage;
 import org.ripv.messages.MailboxStatus;
 import org.ripv.messages.ServiceDescriptor;
@@ -15,27 +12,40 @@ import org.ripv.rmi.GenericRMIInterface;
 
 /**
  * The server's handle on one registered service (thesis: ServiceReference): its descriptor,
- * its remote stub and session token, and one sender thread so that requests reach the service
+ * its remote stub and session token, and one sender thread, so that requests reach the service
  * in the order the RIPV Post Office released them while a slow call to one service never holds
- * up the others.
+ * up the others. Requests that queue up while a call is under way go together in the next call.
  */
 final class ServiceReference {
+    /** The most requests sent in one RMI call. */
+    static final int MAX_BATCH = 256;
+
     private final ServiceDescriptor descriptor;
     private final ServiceName name;
     private final GenericRMIInterface stub;
     private final String token;
-    private final ExecutorService sender;
+    private final LinkedBlockingQueue<IncomingServiceMessage> queue = new LinkedBlockingQueue<>();
+    private final Thread sender;
+    private final Failure onFailure;
+    /** Liveness: failed checks in a row, and whether a check is under way. */
+    final java.util.concurrent.atomic.AtomicInteger failedChecks = new java.util.concurrent.atomic.AtomicInteger();
+    final java.util.concurrent.atomic.AtomicBoolean checking = new java.util.concurrent.atomic.AtomicBoolean();
+    private volatile boolean closed;
 
-    ServiceReference(ServiceDescriptor descriptor, GenericRMIInterface stub, String token) {
+    /** Hears of a request that could not be delivered. */
+    interface Failure {
+        void failed(ServiceReference ref, IncomingServiceMessage request, Exception cause);
+    }
+
+    ServiceReference(ServiceDescriptor descriptor, GenericRMIInterface stub, String token, Failure onFailure) {
         this.descriptor = descriptor;
+        this.onFailure = onFailure;
         this.name = ServiceName.parse(descriptor.name());
         this.stub = stub;
         this.token = token;
-        this.sender = new ThreadPoolExecutor(1, 1, 0, TimeUnit.MILLISECONDS, new LinkedBlockingQueue<>(), r -> {
-            Thread t = new Thread(r, "ripv-service-ref-" + descriptor.name());
-            t.setDaemon(true);
-            return t;
-        });
+        this.sender = new Thread(this::sendLoop, "ripv-service-ref-" + descriptor.name());
+        sender.setDaemon(true);
+        sender.start();
     }
 
     ServiceDescriptor descriptor() {
@@ -50,15 +60,47 @@ final class ServiceReference {
         return token;
     }
 
-    /** Sends a request on the sender thread; {@code onFailure} hears of a call that failed. */
-    void forward(IncomingServiceMessage request, BiConsumer<IncomingServiceMessage, Exception> onFailure) {
-        sender.execute(() -> {
+    /** Queues a request for the sender thread. */
+    void forward(IncomingServiceMessage request) {
+        if (closed) {
+            onFailure.failed(this, request, new RemoteException(descriptor.name() + " is no longer registered"));
+            return;
+        }
+        queue.add(request);
+    }
+
+    private void sendLoop() {
+        List<IncomingServiceMessage> batch = new ArrayList<>();
+        while (!closed) {
             try {
-                stub.serviceRequest(token, request);
-            } catch (RemoteException | RuntimeException e) {
-                onFailure.accept(request, e);
+                batch.add(queue.take());
+            } catch (InterruptedException e) {
+                break;
             }
-        });
+            queue.drainTo(batch, MAX_BATCH - 1);
+            try {
+                if (batch.size() == 1) {
+                    stub.serviceRequest(token, batch.get(0));
+                } else {
+                    stub.serviceRequests(token, List.copyOf(batch));
+                }
+            } catch (RemoteException | RuntimeException e) {
+                batch.forEach(r -> onFailure.failed(this, r, e));
+            }
+            batch.clear();
+        }
+        List<IncomingServiceMessage> left = new ArrayList<>();
+        queue.drainTo(left);
+        left.forEach(r -> onFailure.failed(this, r, new RemoteException(descriptor.name() + " is no longer registered")));
+    }
+
+    /** Asks the service to drop a request that has not started; true when it will never run. */
+    boolean withdraw(org.ripv.messages.Header h) throws RemoteException {
+        if (queue.removeIf(r -> r.header().messageId() == h.messageId()
+                && r.header().origin().clientId().equals(h.origin().clientId()))) {
+            return true;
+        }
+        return stub.withdraw(token, h.mailboxAddress(), h.origin().clientId(), h.messageId());
     }
 
     List<MailboxStatus> mailboxes() throws RemoteException {
@@ -66,7 +108,8 @@ final class ServiceReference {
     }
 
     void close() {
-        sender.shutdownNow();
+        closed = true;
+        sender.interrupt();
     }
 
     @Override

@@ -26,14 +26,12 @@ final class ServiceReplies {
     private ServiceReplies() {}
 
     static void accept(RIPVServer server, ServiceReference ref, OutgoingServiceMessage reply, PendingRequests pending) {
-        PendingRequests.Pending p = reply.status().isFinal() ? pending.complete(reply.header()) : pending.touch(reply.header());
+        String service = ref.descriptor().name();
+        PendingRequests.Pending p = reply.status().isFinal() ? pending.complete(reply.header(), service)
+                : pending.touch(reply.header(), service);
         if (p == null) {
-            log.info("dropped a reply from {} to #{} of client {}: the request is no longer pending (timed out or the client left)",
+            log.info("dropped a reply from {} to #{} of client {}: no such request is pending there (timed out, or the client left)",
                     ref, reply.header().messageId(), reply.header().origin().clientId());
-            return;
-        }
-        if (!p.service().equals(ref.descriptor().name())) {
-            log.warn("{} replied to a request that was sent to {}; dropped", ref, p.service());
             return;
         }
         Footer f = reply.footer();

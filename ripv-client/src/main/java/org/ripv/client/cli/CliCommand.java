@@ -13,6 +13,7 @@ import java.util.List;
 import java.util.concurrent.Callable;
 import org.ripv.client.handlers.ClientSocketHandler;
 import org.ripv.client.handlers.RipvErrorException;
+import org.ripv.client.handlers.Tls;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
@@ -38,6 +39,12 @@ public final class CliCommand implements Callable<Integer> {
     boolean json;
     @Option(names = "--exec", paramLabel = "LINE", description = "A line to run (repeatable); without any, lines come from standard input.")
     List<String> exec;
+    @Option(names = "--tls", description = "Connect over TLS (the server runs with --tls-keystore).")
+    boolean tls;
+    @Option(names = "--truststore", description = "Trust the certificates in this key store (implies --tls); default: the JVM's.")
+    Path truststore;
+    @Option(names = "--truststore-password", defaultValue = "changeit", description = "The trust store's password (default ${DEFAULT-VALUE}).")
+    String truststorePassword;
     @Option(names = "--timeout", defaultValue = "3600", description = "Seconds to wait for one reply (default ${DEFAULT-VALUE}; the server fails silent requests sooner).")
     long timeout;
 
@@ -76,7 +83,10 @@ public final class CliCommand implements Callable<Integer> {
         }
         ClientSocketHandler client;
         try {
-            client = ClientSocketHandler.connect(host, port);
+            client = tls || truststore != null
+                    ? ClientSocketHandler.connect(host, port, Tls.socketFactory(truststore, truststorePassword.toCharArray()),
+                            Duration.ofSeconds(10))
+                    : ClientSocketHandler.connect(host, port);
         } catch (IOException e) {
             err.println("Error: cannot connect to " + host + ":" + port + ": " + e.getMessage());
             return EXIT_NO_SESSION;

@@ -305,6 +305,14 @@ public final class ClientSocketHandler implements AutoCloseable {
     }
 
     private void dispatch(OutgoingServerMessage reply) {
+        // Listeners first: whoever waits on the future then finds them up to date.
+        for (Listener l : listeners) {
+            try {
+                l.onReply(reply);
+            } catch (RuntimeException e) {
+                log.warn("a listener failed on {}", reply, e);
+            }
+        }
         long id = reply.header().messageId();
         Pending p = reply.status().isFinal() ? pending.remove(id) : pending.get(id);
         if (p != null) {
@@ -312,13 +320,6 @@ public final class ClientSocketHandler implements AutoCloseable {
                 p.done().complete(reply);
             } else if (p.progress() != null) {
                 p.progress().accept(reply);
-            }
-        }
-        for (Listener l : listeners) {
-            try {
-                l.onReply(reply);
-            } catch (RuntimeException e) {
-                log.warn("a listener failed on {}", reply, e);
             }
         }
     }

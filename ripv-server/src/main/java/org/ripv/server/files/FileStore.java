@@ -93,6 +93,7 @@ public final class FileStore {
 
     /** Drops an unfinished upload. */
     public void abort(String clientId, String name) throws IOException {
+        FileNames.check(name);
         uploads.remove(clientId + "/" + name);
         Files.deleteIfExists(uploadDir.resolve(PARTIAL).resolve(clientId + "-" + name));
     }
@@ -103,7 +104,7 @@ public final class FileStore {
             if (key.startsWith(clientId + "/")) {
                 try {
                     abort(clientId, key.substring(clientId.length() + 1));
-                } catch (IOException ignored) {
+                } catch (IOException | IllegalArgumentException ignored) {
                     // the partial file goes at the next start anyway
                 }
             }

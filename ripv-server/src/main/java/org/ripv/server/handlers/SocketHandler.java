@@ -83,6 +83,13 @@ public final class SocketHandler {
         return roles;
     }
 
+    private int failedLogins;
+
+    /** Counts a failed log-in; returns how many this connection has had. */
+    public synchronized int failedLogin() {
+        return ++failedLogins;
+    }
+
     public boolean isLoggedIn() {
         return !badge.user().isEmpty();
     }
@@ -153,7 +160,16 @@ public final class SocketHandler {
                 if (m == POISON) {
                     break;
                 }
-                codec.writeNoFlush(out, m);
+                try {
+                    codec.writeNoFlush(out, m);
+                } catch (ProtocolException tooLarge) {
+                    // Nothing was written yet: tell the client instead of cutting it off.
+                    log.warn("client {}: reply to #{} not sent: {}", clientId, m.header().messageId(), tooLarge.getMessage());
+                    codec.writeNoFlush(out, new OutgoingServerMessage(m.header(), org.ripv.messages.Footer.error(
+                            m.footer().serviceId(), org.ripv.messages.ErrorCode.TOO_LARGE,
+                            "the reply was too large to send (" + tooLarge.getMessage() + "); ask for less, e.g. fewer rows")
+                            .via("RIPVServer")));
+                }
                 if (replies.isEmpty()) {
                     out.flush();
                 }

@@ -56,8 +56,9 @@ public final class PermitFile {
             "#",
             "# user NAME HASH ROLE[,ROLE...]",
             "# allow|deny WHO SERVICE MAILBOX COMMAND-PATTERN",
-            "#   WHO: a user, @role or *;  SERVICE: e.g. SerialPortServer, RIPVServer (the server's ? commands);",
-            "#   MAILBOX: a handle glob such as ttyS0 or *;  COMMAND-PATTERN: a glob over the whole command.",
+            "#   WHO: a user, @role or *;  SERVICE: e.g. SerialPortServer, or RIPVServer for the server's",
+            "#   ?upload, ?download, ?lock and ?unlock (other ? commands need only a log-in);",
+            "#   MAILBOX: a handle such as ttyS0 or *;  COMMAND-PATTERN: the whole command, * matching anything.",
             "# The first rule that matches decides; a command no rule allows is refused.",
             "",
             "allow @operators * * *",
@@ -70,6 +71,7 @@ public final class PermitFile {
             "allow @observers DatabaseServer * *",
             "allow @observers DataVisServer * *",
             "allow @observers RIPVServer * ?upload*",
+            "allow @observers RIPVServer * ?download *",
             "");
 
     /** Reads a permit file; a missing file is created from {@link #TEMPLATE}. */
@@ -78,7 +80,7 @@ public final class PermitFile {
             if (file.getParent() != null) {
                 Files.createDirectories(file.getParent());
             }
-            Files.writeString(file, TEMPLATE, StandardCharsets.UTF_8);
+            writeOwnerOnly(file, List.of(TEMPLATE.split("\n", -1)), false);
         }
         return parse(file, Files.readAllLines(file, StandardCharsets.UTF_8));
     }
@@ -177,8 +179,21 @@ public final class PermitFile {
             }
             out.add(at, userLine(name, hash, roles == null ? List.of() : roles));
         }
+        writeOwnerOnly(file, out, true);
+    }
+
+    /** Writes through a temporary file readable by its owner only, then moves it into place. */
+    private static void writeOwnerOnly(Path file, List<String> lines, boolean endWithNewline) throws IOException {
         Path tmp = file.resolveSibling(file.getFileName() + ".tmp");
-        Files.write(tmp, out, StandardCharsets.UTF_8);
+        Files.deleteIfExists(tmp);
+        try {
+            Files.createFile(tmp, java.nio.file.attribute.PosixFilePermissions.asFileAttribute(
+                    java.nio.file.attribute.PosixFilePermissions.fromString("rw-------")));
+        } catch (UnsupportedOperationException e) {
+            Files.createFile(tmp);
+        }
+        String text = String.join("\n", lines) + (endWithNewline ? "\n" : "");
+        Files.writeString(tmp, text, StandardCharsets.UTF_8);
         Files.move(tmp, file, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
     }
 

@@ -26,15 +26,14 @@ record Rule(boolean allow, String who, Pattern service, Pattern mailbox, Pattern
                 && command.matcher(commandText.trim()).matches();
     }
 
-    /** A glob: {@code *} any run, {@code ?} one character; everything else literal, case-insensitive. */
+    /**
+     * A glob: {@code *} matches any run; everything else is literal, case-insensitive. ({@code ?}
+     * is literal so that rules can name the server's {@code ?} commands.)
+     */
     static Pattern glob(String g) {
         StringBuilder re = new StringBuilder();
         for (char c : g.toCharArray()) {
-            switch (c) {
-                case '*' -> re.append(".*");
-                case '?' -> re.append('.');
-                default -> re.append(Pattern.quote(String.valueOf(c)));
-            }
+            re.append(c == '*' ? ".*" : Pattern.quote(String.valueOf(c)));
         }
         return Pattern.compile(re.toString(), Pattern.CASE_INSENSITIVE | Pattern.UNICODE_CASE | Pattern.DOTALL);
     }

@@ -1,0 +1,4 @@
+/**
+ * The example ClockService that docs/extending.md walks through.
+ */
+package org.ripv.examples;

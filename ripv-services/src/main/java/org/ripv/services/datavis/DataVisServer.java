@@ -1,0 +1,307 @@
+package org.ripv.services.datavis;
+
+import java.io.BufferedWriter;
+import java.io.IOException;
+import java.io.OutputStreamWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.FileSystems;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardWatchEventKinds;
+import java.nio.file.WatchKey;
+import java.nio.file.WatchService;
+import java.time.Duration;
+import java.util.List;
+import java.util.Objects;
+import java.util.Optional;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicLong;
+import org.ripv.exceptions.ServiceException;
+import org.ripv.messages.Attachment;
+import org.ripv.messages.ErrorCode;
+import org.ripv.messages.Ids;
+import org.ripv.messages.ImageResult;
+import org.ripv.messages.Progress;
+import org.ripv.naming.Handles;
+import org.ripv.service.Availability;
+import org.ripv.service.CommandHandler;
+import org.ripv.service.RIPVService;
+import org.ripv.service.Reply;
+import org.ripv.service.Request;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * The DataVisServer (thesis 4.1.4.3, SID 999999): turns an operator's data file into a JPEG plot.
+ *
+ * <p>{@code vis:NAME [options]} — the server attaches NAME from its upload directory; this
+ * service checks and normalizes it, and hands it to a plot worker through the thesis's file
+ * exchange in its work directory ({@link Exchange}): {@code data.dat}, {@code info.dat}, then the
+ * worker's {@code <output>.jpg} and {@code ok.dat}. The reply carries the JPEG as an
+ * {@link ImageResult}, which the server stores in its download directory and the client shows.
+ *
+ * <p>One MailBox per work directory (handle {@link Handles#platformDefault()}), so one plot at a
+ * time there. The worker is the built-in JFreeChart one, {@code octave-cli} on {@code ripvOut.m}
+ * (started and restarted here), or one started by hand ({@link WorkerMode}).
+ * <pre>{@code
+ * DataVisServer vis = new DataVisServer(host, DataVisServer.Config.of(Path.of("/var/ripv/vis")));
+ * ServiceConnector.connect(vis, options);
+ * }</pre>
+ */
+public final class DataVisServer extends RIPVService {
+    private static final Logger log = LoggerFactory.getLogger(DataVisServer.class);
+
+    /**
+     * How the service runs.
+     *
+     * @param workDir the exchange directory (the thesis's "Matlab working directory")
+     * @param worker  which worker plots
+     * @param timeout how long a plot may take before the request fails
+     * @param octave  the Octave program for {@link WorkerMode#OCTAVE}
+     * @param script  the ripvOut.m to run, or null for the copy in the jar
+     */
+    public record Config(Path workDir, WorkerMode worker, Duration timeout, String octave, Path script) {
+        public static final Duration DEFAULT_TIMEOUT = Duration.ofSeconds(60);
+
+        public Config {
+            Objects.requireNonNull(workDir, "workDir");
+            worker = worker == null ? WorkerMode.BUILTIN : worker;
+            timeout = timeout == null ? DEFAULT_TIMEOUT : timeout;
+            if (timeout.isNegative() || timeout.isZero()) {
+                throw new IllegalArgumentException("the timeout must be positive, not " + timeout);
+            }
+            octave = octave == null || octave.isBlank() ? "octave-cli" : octave;
+        }
+
+        /** The built-in worker in {@code workDir}, 60 s timeout. */
+        public static Config of(Path workDir) {
+            return new Config(workDir, WorkerMode.BUILTIN, DEFAULT_TIMEOUT, null, null);
+        }
+
+        public Config withWorker(WorkerMode mode) {
+            return new Config(workDir, mode, timeout, octave, script);
+        }
+
+        public Config withTimeout(Duration t) {
+            return new Config(workDir, worker, t, octave, script);
+        }
+    }
+
+    private final Config config;
+    private final Path dir;
+    private final AtomicLong sequence = new AtomicLong();
+    private volatile PlotWorker builtin;
+    private volatile OctaveWorker octave;
+
+    public DataVisServer(String host, Config config) {
+        super("DataVisServer", Ids.SID_DATAVIS, host);
+        this.config = config;
+        this.dir = config.workDir().toAbsolutePath().normalize();
+    }
+
+    public DataVisServer(Config config) {
+        this(Handles.localHost(), config);
+    }
+
+    public Config config() {
+        return config;
+    }
+
+    /** The work directory. */
+    public Path workDir() {
+        return dir;
+    }
+
+    @Override
+    protected String description() {
+        return "Plots data files to JPEG: vis:NAME [title=\"...\"] [legend=a|b] [out=NAME] (worker: " + config.worker() + ")";
+    }
+
+    @Override
+    protected String panel() {
+        return "DAV";
+    }
+
+    @Override
+    protected List<String> attachPrefixes() {
+        return List.of(VisCommand.PREFIX);
+    }
+
+    @Override
+    protected void open() throws Exception {
+        Files.createDirectories(dir);
+        int stale = Exchange.clean(dir);
+        if (stale > 0) {
+            log.info("removed {} exchange file(s) left in {} by an earlier run", stale, dir);
+        }
+        switch (config.worker()) {
+            case BUILTIN -> builtin = PlotWorker.start(dir);
+            case OCTAVE -> octave = OctaveWorker.start(dir, config.octave(), config.script());
+            case NONE -> log.info("DataVisServer waits for a worker started by hand in {} (e.g. ripvOut.m in MATLAB)", dir);
+        }
+        openMailBox(Handles.platformDefault(), new Handler());
+    }
+
+    @Override
+    protected void close() {
+        PlotWorker w = builtin;
+        if (w != null) {
+            w.close();
+        }
+        OctaveWorker o = octave;
+        if (o != null) {
+            o.close();
+        }
+    }
+
+    /** The worker's state for {@code ?status}. */
+    Availability workerAvailability() {
+        return switch (config.worker()) {
+            case BUILTIN -> {
+                PlotWorker w = builtin;
+                yield w != null && w.isAlive() ? Availability.available("built-in worker, " + w.plots() + " plot(s) made")
+                        : Availability.available("built-in worker stopped; it restarts with the next command");
+            }
+            case OCTAVE -> {
+                OctaveWorker o = octave;
+                yield o != null && o.isAlive() ? Availability.available("octave-cli on ripvOut.m, pid " + o.pid())
+                        : Availability.notAvailable("octave-cli is not running" + (o == null ? "" : " (" + o.lastExit()
+                                + "); it is being restarted"));
+            }
+            case NONE -> Availability.available("waiting for a worker started by hand in " + dir);
+        };
+    }
+
+    private final class Handler implements CommandHandler {
+        @Override
+        public Availability availability() {
+            return workerAvailability();
+        }
+
+        @Override
+        public Reply execute(Request request) throws Exception {
+            String line = request.command().strip();
+            if (line.equalsIgnoreCase("help")) {
+                return Reply.ok("vis:NAME [out=NAME] [title=\"...\"] [xlabel=\"...\"] [ylabel=\"...\"] [legend=a|b|c] "
+                        + "[size=800x600] plots NAME from the upload directory; worker: " + config.worker());
+            }
+            if (!line.regionMatches(true, 0, VisCommand.PREFIX, 0, VisCommand.PREFIX.length())) {
+                String word = line.split("\\s+", 2)[0];
+                return Reply.error(ErrorCode.UNKNOWN_COMMAND, "the DataVisServer knows vis:NAME [options] and help, not '"
+                        + word + "'");
+            }
+            VisCommand vis;
+            try {
+                vis = VisCommand.parse(line);
+            } catch (IllegalArgumentException e) {
+                return Reply.error(ErrorCode.BAD_REQUEST, e.getMessage());
+            }
+            Optional<Attachment> file = request.attachment();
+            if (file.isEmpty()) {
+                return Reply.error(ErrorCode.BAD_REQUEST, "vis:" + vis.file() + " found no file '" + vis.file()
+                        + "' attached: upload it to the server first (CLI: put " + vis.file() + "), then check ?ulfiles");
+            }
+            return plot(request, vis, file.get());
+        }
+    }
+
+    private Reply plot(Request request, VisCommand vis, Attachment file) throws Exception {
+        long t0 = System.nanoTime();
+        if (config.worker() == WorkerMode.BUILTIN && (builtin == null || !builtin.isAlive())) {
+            log.warn("the built-in plot worker had stopped; starting it again");
+            builtin = PlotWorker.start(dir);
+        }
+        String exchangeName = vis.output() + "-" + sequence.incrementAndGet(); // a late worker's JPEG never passes for ours
+        String jpegName = vis.output() + ".jpg";
+        Exchange.clean(dir);
+        try (WatchService watch = FileSystems.getDefault().newWatchService()) {
+            dir.register(watch, StandardWatchEventKinds.ENTRY_CREATE, StandardWatchEventKinds.ENTRY_MODIFY);
+            DataFile.Summary summary = writeData(vis, file);
+            Exchange.writeAtomically(dir, Exchange.INFO, (exchangeName + "\n").getBytes(StandardCharsets.UTF_8));
+            request.progress("plotting " + summary.rows() + " rows of " + file.name() + " with the " + config.worker()
+                    + " worker", new Progress("rows checked and handed to the " + config.worker() + " worker",
+                            summary.rows(), summary.rows(), 0));
+            String status = awaitWorker(watch, vis);
+            if (!status.equals("1") && !status.isEmpty()) {
+                String why = status.startsWith("0") ? status.substring(1).strip() : status;
+                throw new ServiceException(ErrorCode.WORKER_ERROR, "the " + config.worker() + " worker could not plot "
+                        + file.name() + ": " + (why.isEmpty() ? "(no reason given)" : why));
+            }
+            Path jpeg = dir.resolve(Exchange.jpegName(exchangeName));
+            if (!Files.isRegularFile(jpeg)) {
+                throw new ServiceException(ErrorCode.WORKER_ERROR, "the " + config.worker() + " worker reported success but wrote no "
+                        + jpeg.getFileName() + " in " + dir);
+            }
+            byte[] bytes = Files.readAllBytes(jpeg);
+            if (bytes.length < 4 || (bytes[0] & 0xff) != 0xFF || (bytes[1] & 0xff) != 0xD8) {
+                throw new ServiceException(ErrorCode.WORKER_ERROR, "the " + config.worker() + " worker wrote "
+                        + jpeg.getFileName() + " but it is not a JPEG (" + bytes.length + " bytes)");
+            }
+            long ms = (System.nanoTime() - t0) / 1_000_000;
+            log.info("vis:{} -> {} ({} rows, {} bytes) in {} ms for {}", file.name(), jpegName, summary.rows(), bytes.length,
+                    ms, request.user());
+            return Reply.ok("plotted " + summary.rows() + " rows x " + Math.max(1, summary.columns() - 1) + " series of "
+                    + file.name() + " to " + jpegName + " (" + bytes.length + " bytes) in " + ms + " ms with the "
+                    + config.worker() + " worker", new ImageResult(jpegName, bytes));
+        } finally {
+            Exchange.clean(dir); // whatever happened, the next request starts from an empty exchange
+        }
+    }
+
+    /** Checks the operator's file and writes the canonical data.dat (complete before it appears). */
+    private DataFile.Summary writeData(VisCommand vis, Attachment file) throws IOException, ServiceException {
+        Path tmp = dir.resolve(Exchange.DATA + Exchange.TMP_SUFFIX);
+        DataFile.Summary summary;
+        try (BufferedWriter out = new BufferedWriter(new OutputStreamWriter(Files.newOutputStream(tmp), StandardCharsets.UTF_8),
+                1 << 16)) {
+            summary = DataFile.normalize(file.data(), vis.labels(), out);
+        } catch (DataFormatException e) {
+            throw new ServiceException(ErrorCode.BAD_REQUEST, file.name() + ": " + e.getMessage());
+        }
+        Exchange.move(tmp, dir.resolve(Exchange.DATA));
+        return summary;
+    }
+
+    /**
+     * Waits for this request's ok.dat and returns its first line. An ok.dat that appears while
+     * our data.dat or info.dat is still there was written for an earlier, abandoned request: the
+     * protocol has the worker remove both before it writes ok.dat.
+     */
+    private String awaitWorker(WatchService watch, VisCommand vis) throws IOException, InterruptedException, ServiceException {
+        Path ok = dir.resolve(Exchange.OK);
+        Path data = dir.resolve(Exchange.DATA);
+        Path info = dir.resolve(Exchange.INFO);
+        long deadline = System.nanoTime() + config.timeout().toNanos();
+        while (true) {
+            if (Files.exists(ok)) {
+                if (!Files.exists(data) && !Files.exists(info)) {
+                    return Exchange.firstLine(ok).orElse("");
+                }
+                log.info("removing a stale {} from an earlier request", Exchange.OK);
+                Files.deleteIfExists(ok);
+            }
+            long left = deadline - System.nanoTime();
+            WatchKey key = left > 0 ? watch.poll(left, TimeUnit.NANOSECONDS) : null; // sleeps until the directory changes
+            if (key == null) {
+                throw new ServiceException(ErrorCode.TIMEOUT, timeoutMessage(vis));
+            }
+            key.pollEvents();
+            key.reset();
+        }
+    }
+
+    private String timeoutMessage(VisCommand vis) {
+        String s = "no plot worker answered vis:" + vis.file() + " within " + config.timeout().toSeconds() + " s; ";
+        return s + switch (config.worker()) {
+            case BUILTIN -> "the built-in worker may be stuck on a very large file; try again, or a longer --timeout";
+            case OCTAVE -> {
+                OctaveWorker o = octave;
+                yield o != null && o.isAlive() ? "octave-cli is running but did not finish (a large plot? raise --timeout)"
+                        : "octave-cli is not running" + (o == null ? "" : " (" + o.lastExit() + ")")
+                                + ": is Octave installed with gnuplot and fonts? see docs/datavis.md";
+            }
+            case NONE -> "start one in " + dir + " (MATLAB or octave-cli: cd there and run ripvOut), or run the service with "
+                    + "--worker builtin";
+        };
+    }
+}

@@ -1,0 +1,79 @@
+package org.ripv.services.datavis;
+
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * What a data file's {@code %} comment lines say about its plot: title, axis labels, legend and
+ * picture size. A {@code null} field means "not given" (see {@link #or}).
+ *
+ * @param title  {@code % title: ...}
+ * @param xLabel {@code % xlabel: ...}
+ * @param yLabel {@code % ylabel: ...}
+ * @param legend {@code % legend: a | b | c}, one name per series
+ * @param width  {@code % size: WIDTHxHEIGHT}, pixels; 0 when not given
+ * @param height as {@code width}
+ */
+public record PlotLabels(String title, String xLabel, String yLabel, List<String> legend, int width, int height) {
+    /** Default picture size, as MATLAB's default figure prints at 100 dpi. */
+    public static final int DEFAULT_WIDTH = 800;
+    public static final int DEFAULT_HEIGHT = 600;
+    /** Limits on the picture size, so a typo cannot ask for a gigapixel JPEG. */
+    public static final int MIN_SIZE = 100;
+    public static final int MAX_SIZE = 4000;
+    private static final int MAX_TEXT = 200;
+
+    /** Nothing given. */
+    public static final PlotLabels NONE = new PlotLabels(null, null, null, null, 0, 0);
+
+    public PlotLabels {
+        title = clean(title);
+        xLabel = clean(xLabel);
+        yLabel = clean(yLabel);
+        if (legend != null) {
+            List<String> names = new ArrayList<>();
+            for (String n : legend) {
+                names.add(clean(n).replace('|', '/'));
+            }
+            legend = List.copyOf(names);
+        }
+        if ((width != 0 || height != 0) && (width < MIN_SIZE || width > MAX_SIZE || height < MIN_SIZE || height > MAX_SIZE)) {
+            throw new IllegalArgumentException("picture size " + width + "x" + height + " is outside "
+                    + MIN_SIZE + ".." + MAX_SIZE + " pixels on a side");
+        }
+    }
+
+    /** Each field of this one, or {@code other}'s where this one gives none. */
+    public PlotLabels or(PlotLabels other) {
+        return new PlotLabels(title != null ? title : other.title, xLabel != null ? xLabel : other.xLabel,
+                yLabel != null ? yLabel : other.yLabel, legend != null ? legend : other.legend,
+                width != 0 ? width : other.width, width != 0 ? height : other.height);
+    }
+
+    public int widthOrDefault() {
+        return width == 0 ? DEFAULT_WIDTH : width;
+    }
+
+    public int heightOrDefault() {
+        return height == 0 ? DEFAULT_HEIGHT : height;
+    }
+
+    /** Splits a legend line: entries separated by {@code |}, or by commas when there is no {@code |}. */
+    public static List<String> splitLegend(String text) {
+        String sep = text.indexOf('|') >= 0 ? "\\|" : ",";
+        List<String> out = new ArrayList<>();
+        for (String part : text.split(sep, -1)) {
+            out.add(part.trim());
+        }
+        return out;
+    }
+
+    /** One line of plain text: control characters (a CR, a NUL) would break the file exchange. */
+    private static String clean(String s) {
+        if (s == null) {
+            return null;
+        }
+        String t = s.replaceAll("\\p{Cntrl}", " ").trim();
+        return t.length() > MAX_TEXT ? t.substring(0, MAX_TEXT) : t;
+    }
+}

@@ -1,0 +1,331 @@
+package org.ripv.services.datavis;
+
+import java.awt.BasicStroke;
+import java.awt.Color;
+import java.awt.Graphics2D;
+import java.awt.RenderingHints;
+import java.awt.geom.Rectangle2D;
+import java.awt.image.BufferedImage;
+import java.io.BufferedReader;
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Arrays;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
+import javax.imageio.IIOImage;
+import javax.imageio.ImageIO;
+import javax.imageio.ImageWriteParam;
+import javax.imageio.ImageWriter;
+import javax.imageio.stream.ImageOutputStream;
+import org.jfree.chart.ChartFactory;
+import org.jfree.chart.JFreeChart;
+import org.jfree.chart.axis.NumberAxis;
+import org.jfree.chart.plot.PlotOrientation;
+import org.jfree.chart.plot.XYPlot;
+import org.jfree.chart.renderer.xy.XYLineAndShapeRenderer;
+import org.jfree.data.xy.DefaultXYDataset;
+
+/**
+ * The built-in worker's drawing: a data file to a JFreeChart line plot to JPEG bytes.
+ *
+ * <p>Memory stays bounded whatever the file's length: the file is read twice as a stream
+ * (once to count, once to draw), and a file of more than {@link #EXACT_LIMIT} rows is reduced per
+ * series to the first, lowest, highest and last point of each of {@code 2 x width} row buckets
+ * (the "M4" reduction), which draws the same pixels as every point would. Gaps (NaN, Inf, empty
+ * fields, blank lines) break the line.
+ */
+public final class PlotRenderer {
+    /** Files up to this many rows are drawn point by point. */
+    public static final int EXACT_LIMIT = 20_000;
+    private static final float JPEG_QUALITY = 0.9f;
+
+    private PlotRenderer() {}
+
+    /**
+     * What was drawn.
+     *
+     * @param jpeg   the picture
+     * @param rows   the file's rows
+     * @param series how many series
+     * @param points how many points went to the chart (after any reduction), all series
+     */
+    public record Rendered(byte[] jpeg, long rows, int series, long points) {}
+
+    /** Draws a data file (canonical or as an operator wrote it) as a JPEG. */
+    public static Rendered render(Path dataFile) throws IOException, DataFormatException {
+        DataFile.Summary summary;
+        try (BufferedReader in = Files.newBufferedReader(dataFile, StandardCharsets.UTF_8)) {
+            summary = DataFile.parse(in, (v, t) -> { });
+        }
+        PlotLabels labels = summary.labels();
+        int width = labels.widthOrDefault();
+        int height = labels.heightOrDefault();
+        int columns = summary.columns();
+        int series = Math.max(1, columns - 1);
+        Collector collector = summary.rows() <= EXACT_LIMIT
+                ? new Exact(series, (int) summary.rows())
+                : new M4(series, 2 * width, summary.rows());
+        long[] index = {0};
+        try (BufferedReader in = Files.newBufferedReader(dataFile, StandardCharsets.UTF_8)) {
+            DataFile.parse(in, (v, t) -> {
+                long i = index[0]++;
+                double x = columns == 1 ? i + 1 : v[0];
+                for (int s = 0; s < series; s++) {
+                    double y = columns == 1 ? v[0] : v[s + 1];
+                    collector.add(s, i, finite(x) && finite(y) ? x : Double.NaN, finite(x) && finite(y) ? y : Double.NaN);
+                }
+            });
+        }
+        DefaultXYDataset dataset = new DefaultXYDataset();
+        List<String> names = labels.legend() == null ? List.of() : labels.legend();
+        Set<String> used = new HashSet<>();
+        long points = 0;
+        for (int s = 0; s < series; s++) {
+            String name = s < names.size() && !names.get(s).isEmpty() ? names.get(s) : "column " + (s + 2);
+            String key = name;
+            for (int n = 2; !used.add(key); n++) {
+                key = name + " (" + n + ")"; // series keys must differ
+            }
+            double[][] xy = collector.series(s);
+            points += xy[0].length;
+            dataset.addSeries(key, xy);
+        }
+        boolean legend = labels.legend() != null || series > 1;
+        JFreeChart chart = ChartFactory.createXYLineChart(nz(labels.title()), nz(labels.xLabel()), nz(labels.yLabel()),
+                dataset, PlotOrientation.VERTICAL, legend, false, false);
+        style(chart, series);
+        return new Rendered(jpeg(chart, width, height), summary.rows(), series, points);
+    }
+
+    /**
+     * Draws a small chart in memory, so the JVM loads JFreeChart, Java2D, the fonts and the JPEG
+     * encoder before the first real plot (about 2 s on a slow machine).
+     */
+    public static void warmUp() {
+        try {
+            DefaultXYDataset d = new DefaultXYDataset();
+            d.addSeries("warm-up", new double[][] {{0, 1, 2}, {0, 1, Double.NaN}});
+            JFreeChart chart = ChartFactory.createXYLineChart("warm-up", "x", "y", d, PlotOrientation.VERTICAL, true,
+                    false, false);
+            style(chart, 1);
+            jpeg(chart, 200, 150);
+        } catch (IOException | RuntimeException e) {
+            org.slf4j.LoggerFactory.getLogger(PlotRenderer.class).debug("warm-up plot failed: {}", e.toString());
+        }
+    }
+
+    private static void style(JFreeChart chart, int series) {
+        chart.setBackgroundPaint(Color.WHITE);
+        chart.setAntiAlias(true);
+        XYPlot plot = chart.getXYPlot();
+        plot.setBackgroundPaint(Color.WHITE);
+        plot.setDomainGridlinePaint(Color.LIGHT_GRAY);
+        plot.setRangeGridlinePaint(Color.LIGHT_GRAY);
+        ((NumberAxis) plot.getDomainAxis()).setAutoRangeIncludesZero(false);
+        ((NumberAxis) plot.getRangeAxis()).setAutoRangeIncludesZero(false);
+        XYLineAndShapeRenderer r = (XYLineAndShapeRenderer) plot.getRenderer();
+        for (int s = 0; s < series; s++) {
+            r.setSeriesStroke(s, new BasicStroke(1.2f));
+        }
+    }
+
+    static byte[] jpeg(JFreeChart chart, int width, int height) throws IOException {
+        BufferedImage image = new BufferedImage(width, height, BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = image.createGraphics();
+        try {
+            g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+            chart.draw(g, new Rectangle2D.Double(0, 0, width, height));
+        } finally {
+            g.dispose();
+        }
+        ImageWriter writer = ImageIO.getImageWritersByFormatName("jpeg").next();
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream(64 * 1024);
+        try (ImageOutputStream out = ImageIO.createImageOutputStream(bytes)) {
+            writer.setOutput(out);
+            ImageWriteParam p = writer.getDefaultWriteParam();
+            p.setCompressionMode(ImageWriteParam.MODE_EXPLICIT);
+            p.setCompressionQuality(JPEG_QUALITY);
+            writer.write(null, new IIOImage(image, null, null), p);
+        } finally {
+            writer.dispose();
+        }
+        return bytes.toByteArray();
+    }
+
+    private static boolean finite(double d) {
+        return !Double.isNaN(d) && !Double.isInfinite(d);
+    }
+
+    private static String nz(String s) {
+        return s == null ? "" : s;
+    }
+
+    /** Receives (row, x, y) per series in row order; NaN y is a gap. */
+    private interface Collector {
+        void add(int series, long row, double x, double y);
+
+        double[][] series(int s);
+    }
+
+    /** Every point, for small files. */
+    private static final class Exact implements Collector {
+        private final double[][] xs;
+        private final double[][] ys;
+
+        Exact(int series, int rows) {
+            xs = new double[series][rows];
+            ys = new double[series][rows];
+        }
+
+        @Override
+        public void add(int s, long row, double x, double y) {
+            xs[s][(int) row] = x;
+            ys[s][(int) row] = y;
+        }
+
+        @Override
+        public double[][] series(int s) {
+            return new double[][] {xs[s], ys[s]};
+        }
+    }
+
+    /**
+     * Per series and bucket of consecutive rows: the first, last, lowest and highest point, and
+     * where the first gap was. Memory: 13 numbers per bucket per series, whatever the file's length.
+     */
+    private static final class M4 implements Collector {
+        private final int buckets;
+        private final long rows;
+        private final long[][] firstI;
+        private final long[][] lastI;
+        private final long[][] minI;
+        private final long[][] maxI;
+        private final long[][] gapI;
+        private final double[][] firstX;
+        private final double[][] firstY;
+        private final double[][] lastX;
+        private final double[][] lastY;
+        private final double[][] minX;
+        private final double[][] minY;
+        private final double[][] maxX;
+        private final double[][] maxY;
+
+        M4(int series, int buckets, long rows) {
+            this.buckets = buckets;
+            this.rows = rows;
+            firstI = longs(series, buckets);
+            lastI = longs(series, buckets);
+            minI = longs(series, buckets);
+            maxI = longs(series, buckets);
+            gapI = longs(series, buckets);
+            firstX = new double[series][buckets];
+            firstY = new double[series][buckets];
+            lastX = new double[series][buckets];
+            lastY = new double[series][buckets];
+            minX = new double[series][buckets];
+            minY = new double[series][buckets];
+            maxX = new double[series][buckets];
+            maxY = new double[series][buckets];
+        }
+
+        private static long[][] longs(int series, int buckets) {
+            long[][] a = new long[series][buckets];
+            for (long[] row : a) {
+                Arrays.fill(row, -1);
+            }
+            return a;
+        }
+
+        @Override
+        public void add(int s, long row, double x, double y) {
+            int b = (int) (row * buckets / rows);
+            if (Double.isNaN(y)) {
+                if (gapI[s][b] < 0) {
+                    gapI[s][b] = row;
+                }
+                return;
+            }
+            if (firstI[s][b] < 0) {
+                firstI[s][b] = row;
+                firstX[s][b] = x;
+                firstY[s][b] = y;
+                minI[s][b] = row;
+                minX[s][b] = x;
+                minY[s][b] = y;
+                maxI[s][b] = row;
+                maxX[s][b] = x;
+                maxY[s][b] = y;
+            }
+            if (y < minY[s][b]) {
+                minI[s][b] = row;
+                minX[s][b] = x;
+                minY[s][b] = y;
+            }
+            if (y > maxY[s][b]) {
+                maxI[s][b] = row;
+                maxX[s][b] = x;
+                maxY[s][b] = y;
+            }
+            lastI[s][b] = row;
+            lastX[s][b] = x;
+            lastY[s][b] = y;
+        }
+
+        @Override
+        public double[][] series(int s) {
+            double[] xs = new double[buckets * 5];
+            double[] ys = new double[buckets * 5];
+            int n = 0;
+            long[] idx = new long[4];
+            double[] px = new double[4];
+            double[] py = new double[4];
+            for (int b = 0; b < buckets; b++) {
+                int k = 0;
+                if (firstI[s][b] >= 0) {
+                    k = put(idx, px, py, k, firstI[s][b], firstX[s][b], firstY[s][b]);
+                    k = put(idx, px, py, k, minI[s][b], minX[s][b], minY[s][b]);
+                    k = put(idx, px, py, k, maxI[s][b], maxX[s][b], maxY[s][b]);
+                    k = put(idx, px, py, k, lastI[s][b], lastX[s][b], lastY[s][b]);
+                }
+                long gap = gapI[s][b];
+                boolean gapDone = gap < 0;
+                for (int j = 0; j < k; j++) {
+                    if (!gapDone && idx[j] > gap) {
+                        xs[n] = px[j];
+                        ys[n++] = Double.NaN; // the break comes before this point
+                        gapDone = true;
+                    }
+                    xs[n] = px[j];
+                    ys[n++] = py[j];
+                }
+                if (!gapDone) {
+                    xs[n] = n > 0 ? xs[n - 1] : 0;
+                    ys[n++] = Double.NaN;
+                }
+            }
+            return new double[][] {Arrays.copyOf(xs, n), Arrays.copyOf(ys, n)};
+        }
+
+        /** Adds a point unless its row is there already, keeping the points in row order. */
+        private static int put(long[] idx, double[] px, double[] py, int k, long i, double x, double y) {
+            int j = 0;
+            while (j < k && idx[j] < i) {
+                j++;
+            }
+            if (j < k && idx[j] == i) {
+                return k;
+            }
+            System.arraycopy(idx, j, idx, j + 1, k - j);
+            System.arraycopy(px, j, px, j + 1, k - j);
+            System.arraycopy(py, j, py, j + 1, k - j);
+            idx[j] = i;
+            px[j] = x;
+            py[j] = y;
+            return k + 1;
+        }
+    }
+}

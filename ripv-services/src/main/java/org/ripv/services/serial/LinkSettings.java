@@ -1,0 +1,145 @@
+package org.ripv.services.serial;
+
+import java.time.Duration;
+import java.util.Locale;
+import java.util.Objects;
+import java.util.regex.Pattern;
+import org.ripv.services.serial.ymodem.YmodemConfig;
+
+/**
+ * How one link is opened and talked to.
+ *
+ * @param device          a device path ({@code /dev/ttyUSB0}, {@code /tmp/ttyV0}, {@code COM3}) or
+ *                        {@code tcp://host:port}
+ * @param baud            bits per second (serial only)
+ * @param dataBits        5–8
+ * @param parity          none, odd, even, mark or space
+ * @param stopBits        1, 1.5 or 2
+ * @param lineEnding      what ends a command line written to the vehicle
+ * @param prompt          the vehicle's prompt; a reply ends where the text ends with it
+ * @param idleTimeout     a reply also ends when the vehicle has been silent this long
+ * @param commandTimeout  the longest any plain command may take
+ * @param carrier         whether DCD must be high to talk
+ * @param sendCommand     the vehicle's command that sends files by YMODEM ({@code ys})
+ * @param receiveCommand  the vehicle's command that receives files by YMODEM ({@code yr})
+ * @param reconnectEvery  how often a down link is retried and an idle one checked
+ * @param ymodem          YMODEM timeouts and retries
+ */
+public record LinkSettings(String device, int baud, int dataBits, Parity parity, StopBits stopBits,
+                           String lineEnding, Pattern prompt, Duration idleTimeout, Duration commandTimeout,
+                           CarrierMode carrier, String sendCommand, String receiveCommand,
+                           Duration reconnectEvery, YmodemConfig ymodem) {
+
+    /** PicoDOS's prompt. */
+    public static final String DEFAULT_PROMPT = "C:\\>";
+
+    /** Parity as jSerialComm numbers it. */
+    public enum Parity { NONE, ODD, EVEN, MARK, SPACE;
+        public static Parity parse(String s) {
+            try {
+                return valueOf(s.trim().toUpperCase(Locale.ROOT));
+            } catch (IllegalArgumentException e) {
+                throw new IllegalArgumentException("parity '" + s + "' is not one of none, odd, even, mark, space");
+            }
+        }
+    }
+
+    /** Stop bits as jSerialComm numbers them (1, 1.5, 2). */
+    public enum StopBits { ONE("1"), ONE_POINT_FIVE("1.5"), TWO("2");
+        private final String text;
+
+        StopBits(String text) {
+            this.text = text;
+        }
+
+        public static StopBits parse(String s) {
+            for (StopBits b : values()) {
+                if (b.text.equals(s.trim())) {
+                    return b;
+                }
+            }
+            throw new IllegalArgumentException("stop bits '" + s + "' is not one of 1, 1.5, 2");
+        }
+
+        @Override
+        public String toString() {
+            return text;
+        }
+    }
+
+    public LinkSettings {
+        Objects.requireNonNull(device, "device");
+        if (device.isBlank()) {
+            throw new IllegalArgumentException("empty device name");
+        }
+        if (baud < 50 || baud > 4_000_000) {
+            throw new IllegalArgumentException("baud " + baud + " is outside 50–4000000");
+        }
+        if (dataBits < 5 || dataBits > 8) {
+            throw new IllegalArgumentException("data bits " + dataBits + " is outside 5–8");
+        }
+        Objects.requireNonNull(parity, "parity");
+        Objects.requireNonNull(stopBits, "stopBits");
+        Objects.requireNonNull(lineEnding, "lineEnding");
+        Objects.requireNonNull(prompt, "prompt");
+        requirePositive(idleTimeout, "idle timeout");
+        requirePositive(commandTimeout, "command timeout");
+        requirePositive(reconnectEvery, "reconnect interval");
+        Objects.requireNonNull(carrier, "carrier");
+        Objects.requireNonNull(sendCommand, "sendCommand");
+        Objects.requireNonNull(receiveCommand, "receiveCommand");
+        Objects.requireNonNull(ymodem, "ymodem");
+    }
+
+    private static void requirePositive(Duration d, String what) {
+        if (d == null || d.isNegative() || d.isZero()) {
+            throw new IllegalArgumentException(what + " must be positive, got " + d);
+        }
+    }
+
+    /** The defaults for {@code device}: 115200 8N1, CR LF, prompt {@code C:\>}, 2 s idle, carrier ignored. */
+    public static LinkSettings defaults(String device) {
+        return new LinkSettings(device, 115200, 8, Parity.NONE, StopBits.ONE, "\r\n",
+                Pattern.compile(Pattern.quote(DEFAULT_PROMPT)), Duration.ofSeconds(2), Duration.ofSeconds(60),
+                CarrierMode.IGNORE, "ys", "yr", Duration.ofSeconds(2), YmodemConfig.lrzsz());
+    }
+
+    public boolean isTcp() {
+        return device.startsWith("tcp://");
+    }
+
+    public LinkSettings withDevice(String newDevice) {
+        return new LinkSettings(newDevice, baud, dataBits, parity, stopBits, lineEnding, prompt, idleTimeout,
+                commandTimeout, carrier, sendCommand, receiveCommand, reconnectEvery, ymodem);
+    }
+
+    public LinkSettings withIdleTimeout(Duration idle) {
+        return new LinkSettings(device, baud, dataBits, parity, stopBits, lineEnding, prompt, idle,
+                commandTimeout, carrier, sendCommand, receiveCommand, reconnectEvery, ymodem);
+    }
+
+    public LinkSettings withReconnectEvery(Duration every) {
+        return new LinkSettings(device, baud, dataBits, parity, stopBits, lineEnding, prompt, idleTimeout,
+                commandTimeout, carrier, sendCommand, receiveCommand, every, ymodem);
+    }
+
+    public LinkSettings withYmodem(YmodemConfig config) {
+        return new LinkSettings(device, baud, dataBits, parity, stopBits, lineEnding, prompt, idleTimeout,
+                commandTimeout, carrier, sendCommand, receiveCommand, reconnectEvery, config);
+    }
+
+    public LinkSettings withVehicleCommands(String send, String receive) {
+        return new LinkSettings(device, baud, dataBits, parity, stopBits, lineEnding, prompt, idleTimeout,
+                commandTimeout, carrier, send, receive, reconnectEvery, ymodem);
+    }
+
+    public LinkSettings withCarrier(CarrierMode mode) {
+        return new LinkSettings(device, baud, dataBits, parity, stopBits, lineEnding, prompt, idleTimeout,
+                commandTimeout, mode, sendCommand, receiveCommand, reconnectEvery, ymodem);
+    }
+
+    /** {@code 115200 8N1} */
+    public String frameDescription() {
+        return baud + " " + dataBits + parity.name().charAt(0) + stopBits;
+    }
+}

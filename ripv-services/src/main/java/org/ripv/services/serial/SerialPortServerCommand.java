@@ -1,0 +1,164 @@
+package org.ripv.services.serial;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.Callable;
+import java.util.regex.Pattern;
+import org.ripv.service.ServiceConnector;
+import org.ripv.service.ServiceLaunchOptions;
+import org.ripv.services.serial.ymodem.YmodemConfig;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+
+/**
+ * Launches the SerialPortServer and registers it with a RIPVServer.
+ *
+ * <pre>
+ * ripv service serial --server shore.example.org --link /tmp/ttyV0 --link tcp://localhost:2323 --baud 9600
+ * java -jar ripv-services.jar SerialPortServer //shore.example.org     (the thesis form)
+ * </pre>
+ *
+ * Exit codes: 0 stopped normally, 1 could not start, 2 bad options.
+ */
+@Command(name = "serial", mixinStandardHelpOptions = true,
+        description = "Registers the SerialPortServer: one MailBox per serial port and per --link.")
+public final class SerialPortServerCommand implements Callable<Integer> {
+
+    @Mixin
+    ServiceLaunchOptions launch;
+
+    @Parameters(arity = "0..1", paramLabel = "//HOST", description = "The server, thesis style (same as --server HOST).")
+    String thesisServer;
+
+    @Option(names = "--link", paramLabel = "DEVICE|tcp://HOST:PORT",
+            description = "A link to open besides the enumerated ports: a device path (ptys and symlinks too) or tcp://host:port. Repeatable.")
+    List<String> links = new ArrayList<>();
+
+    @Option(names = "--no-enumerate", description = "Do not open MailBoxes for the serial ports jSerialComm finds; only the --link ones.")
+    boolean noEnumerate;
+
+    @Option(names = "--baud", defaultValue = "115200", description = "Baud rate (default ${DEFAULT-VALUE}).")
+    int baud;
+
+    @Option(names = "--data-bits", defaultValue = "8", description = "Data bits 5-8 (default ${DEFAULT-VALUE}).")
+    int dataBits;
+
+    @Option(names = "--parity", defaultValue = "none", description = "none, odd, even, mark or space (default ${DEFAULT-VALUE}).")
+    String parity;
+
+    @Option(names = "--stop-bits", defaultValue = "1", description = "1, 1.5 or 2 (default ${DEFAULT-VALUE}).")
+    String stopBits;
+
+    @Option(names = "--carrier", defaultValue = "ignore",
+            description = "require: send nothing while DCD is low and report the MailBox not available; ignore (ptys, TCP). Default ${DEFAULT-VALUE}.")
+    String carrier;
+
+    @Option(names = "--line-ending", defaultValue = "crlf", description = "cr, lf or crlf after each command (default ${DEFAULT-VALUE}).")
+    String lineEnding;
+
+    @Option(names = "--prompt", defaultValue = LinkSettings.DEFAULT_PROMPT,
+            description = "The vehicle's prompt, literally (default ${DEFAULT-VALUE}).")
+    String prompt;
+
+    @Option(names = "--prompt-regex", description = "The vehicle's prompt as a Java regular expression (instead of --prompt).")
+    String promptRegex;
+
+    @Option(names = "--idle-timeout", defaultValue = "2000", paramLabel = "MILLIS",
+            description = "A reply ends after this much silence if no prompt came (default ${DEFAULT-VALUE} ms).")
+    long idleMillis;
+
+    @Option(names = "--command-timeout", defaultValue = "60", paramLabel = "SECONDS",
+            description = "The longest a plain command may run (default ${DEFAULT-VALUE} s).")
+    long commandSeconds;
+
+    @Option(names = "--send-command", defaultValue = "ys", description = "The vehicle's YMODEM send command, given the names (default ${DEFAULT-VALUE}).")
+    String sendCommand;
+
+    @Option(names = "--receive-command", defaultValue = "yr", description = "The vehicle's YMODEM receive command (default ${DEFAULT-VALUE}).")
+    String receiveCommand;
+
+    @Option(names = "--reconnect", defaultValue = "2", paramLabel = "SECONDS",
+            description = "How often a link that is down is retried (default ${DEFAULT-VALUE} s).")
+    long reconnectSeconds;
+
+    @Option(names = "--work", paramLabel = "DIR", description = "Where incoming files are assembled (default: a temporary directory).")
+    Path workDir;
+
+    /** Builds the settings a link gets from the options. */
+    LinkSettings settings(String device) {
+        String ending = switch (lineEnding.toLowerCase(java.util.Locale.ROOT)) {
+            case "cr" -> "\r";
+            case "lf" -> "\n";
+            case "crlf" -> "\r\n";
+            default -> throw new IllegalArgumentException("--line-ending '" + lineEnding + "' is not cr, lf or crlf");
+        };
+        CarrierMode mode = switch (carrier.toLowerCase(java.util.Locale.ROOT)) {
+            case "require" -> CarrierMode.REQUIRE;
+            case "ignore" -> CarrierMode.IGNORE;
+            default -> throw new IllegalArgumentException("--carrier '" + carrier + "' is not require or ignore");
+        };
+        Pattern p = promptRegex != null ? Pattern.compile(promptRegex) : Pattern.compile(Pattern.quote(prompt));
+        return new LinkSettings(device, baud, dataBits, LinkSettings.Parity.parse(parity),
+                LinkSettings.StopBits.parse(stopBits), ending, p, Duration.ofMillis(idleMillis),
+                Duration.ofSeconds(commandSeconds), mode, sendCommand, receiveCommand,
+                Duration.ofSeconds(Math.max(1, reconnectSeconds)), YmodemConfig.lrzsz());
+    }
+
+    @Override
+    public Integer call() throws Exception {
+        if (thesisServer != null) {
+            System.err.println("Error: the server is given twice ('--server' and '" + thesisServer + "'); give it once");
+            return 2;
+        }
+        List<LinkSettings> linkSettings = new ArrayList<>();
+        try {
+            for (String link : links) {
+                linkSettings.add(settings(link));
+            }
+            if (links.isEmpty()) {
+                settings("COM1"); // validates the options even when only enumerated ports are used
+            }
+        } catch (IllegalArgumentException e) {
+            System.err.println("Error: " + e.getMessage());
+            return 2;
+        }
+        Path work = workDir != null ? Files.createDirectories(workDir) : Files.createTempDirectory("ripv-serial");
+        SerialPortServer server = new SerialPortServer(launch.hostName(), linkSettings, settings("COM1"),
+                !noEnumerate, work);
+        ServiceConnector.connect(server, launch.toOptions());
+        System.out.println("SerialPortServer " + server.name() + " MailBoxes: " + server.handles());
+        Thread.currentThread().join(); // serve until the process is stopped
+        return 0;
+    }
+
+    /**
+     * Accepts the thesis form {@code SerialPortServer //host} by turning a {@code //host}
+     * argument into {@code --server host} when no {@code --server} is given. Callers that run
+     * this command inside another picocli command (ServicesMain) should pass its arguments
+     * through here first, since {@code --server} is required.
+     */
+    public static String[] normalize(String[] args) {
+        List<String> out = new ArrayList<>(List.of(args));
+        boolean hasServer = out.stream().anyMatch(a -> a.equals("--server") || a.startsWith("--server="));
+        if (!hasServer) {
+            for (int i = 0; i < out.size(); i++) {
+                if (out.get(i).startsWith("//")) {
+                    out.set(i, out.get(i).substring(2));
+                    out.add(i, "--server");
+                    break;
+                }
+            }
+        }
+        return out.toArray(String[]::new);
+    }
+
+    public static void main(String[] args) {
+        System.exit(new CommandLine(new SerialPortServerCommand()).execute(normalize(args)));
+    }
+}

@@ -1,0 +1,65 @@
+package org.ripv.services.serial.ymodem;
+
+import java.io.IOException;
+import java.io.OutputStream;
+import java.nio.file.AtomicMoveNotSupportedException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.nio.file.attribute.FileTime;
+import java.util.HashMap;
+import java.util.Map;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * Receives files into a directory: each is written as a hidden {@code .NAME.part} and renamed
+ * to NAME only when its last block has arrived; a failed one is deleted.
+ */
+public final class DirectorySink implements FileSink {
+    private static final Logger log = LoggerFactory.getLogger(DirectorySink.class);
+    private final Path dir;
+    private final Map<String, Path> parts = new HashMap<>();
+
+    public DirectorySink(Path dir) throws IOException {
+        this.dir = Files.createDirectories(dir);
+    }
+
+    @Override
+    public OutputStream begin(FileHeader file) throws IOException {
+        String name = FileNames.requirePlain(file.name());
+        Path part = dir.resolve("." + name + ".part");
+        parts.put(name, part);
+        return Files.newOutputStream(part);
+    }
+
+    @Override
+    public void complete(FileHeader file) throws IOException {
+        Path part = parts.remove(file.name());
+        Path target = dir.resolve(file.name());
+        try {
+            Files.move(part, target, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+        } catch (AtomicMoveNotSupportedException e) {
+            Files.move(part, target, StandardCopyOption.REPLACE_EXISTING);
+        }
+        if (file.mtimeSeconds() > 0) {
+            Files.setLastModifiedTime(target, FileTime.fromMillis(file.mtimeSeconds() * 1000));
+        }
+    }
+
+    @Override
+    public void discard(FileHeader file) {
+        Path part = parts.remove(file.name());
+        if (part != null) {
+            try {
+                Files.deleteIfExists(part);
+            } catch (IOException e) {
+                log.warn("could not delete partial file {}: {}", part, e.toString());
+            }
+        }
+    }
+
+    public Path directory() {
+        return dir;
+    }
+}

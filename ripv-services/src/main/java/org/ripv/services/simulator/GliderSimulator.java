@@ -1,0 +1,396 @@
+package org.ripv.services.simulator;
+
+import java.io.EOFException;
+import java.io.IOException;
+import java.net.InetSocketAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.DirectoryStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.time.LocalDateTime;
+import java.time.ZoneId;
+import java.time.format.DateTimeFormatter;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Random;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import org.ripv.services.serial.Link;
+import org.ripv.services.serial.LinkSettings;
+import org.ripv.services.serial.SerialLink;
+import org.ripv.services.serial.TcpLink;
+import org.ripv.services.serial.ymodem.DirectorySink;
+import org.ripv.services.serial.ymodem.FileHeader;
+import org.ripv.services.serial.ymodem.FileNames;
+import org.ripv.services.serial.ymodem.SendFile;
+import org.ripv.services.serial.ymodem.YmodemConfig;
+import org.ripv.services.serial.ymodem.YmodemException;
+import org.ripv.services.serial.ymodem.YmodemReceiver;
+import org.ripv.services.serial.ymodem.YmodemSender;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * A PicoDOS-like glider for tests and demos: a {@code C:\>} prompt, echo of what it is sent,
+ * and the commands {@code dir}, {@code del NAME}, {@code type NAME}, {@code ys NAME…} (send by
+ * YMODEM), {@code yr} (receive by YMODEM) and {@code GO}, which "submerges" it: it stops
+ * answering and, on TCP, drops the connection and refuses new ones until it surfaces.
+ *
+ * <p>It serves one connection at a time, on a TCP port ({@link #listen}) or on a serial device
+ * or pseudo-terminal ({@link #attach}). Its files live in one directory.
+ */
+public final class GliderSimulator implements AutoCloseable {
+    private static final Logger log = LoggerFactory.getLogger(GliderSimulator.class);
+    static final String PROMPT = "C:\\>";
+    private static final DateTimeFormatter DIR_TIME = DateTimeFormatter.ofPattern("MM-dd-yy  HH:mm", Locale.ROOT);
+
+    private final Path dir;
+    private final Duration submerge;
+    private final YmodemConfig ymodem;
+    private final CountDownLatch stopped = new CountDownLatch(1);
+    private volatile boolean running = true;
+    private volatile ServerSocket serverSocket;
+    private volatile Link current;
+    private volatile boolean submerged;
+    private int port;
+    private Thread thread;
+
+    /**
+     * @param dir      the vehicle's file system; seeded with mission logs and a config file if empty
+     * @param submerge how long {@code GO} keeps it under water
+     */
+    public GliderSimulator(Path dir, Duration submerge, YmodemConfig ymodem) throws IOException {
+        this.dir = Files.createDirectories(dir);
+        this.submerge = submerge;
+        this.ymodem = ymodem;
+        seed(this.dir);
+    }
+
+    /** Writes the starting files into an empty directory. */
+    static void seed(Path dir) throws IOException {
+        try (var entries = Files.list(dir)) {
+            if (entries.findAny().isPresent()) {
+                return;
+            }
+        }
+        Files.writeString(dir.resolve("GLIDER.CFG"), String.join("\r\n",
+                "# glider configuration", "vehicle=SIM01", "dive_depth_m=200", "climb_depth_m=5",
+                "pitch_deg=26", "surface_interval_s=900", ""), StandardCharsets.US_ASCII);
+        Random random = new Random(42);
+        for (int m = 1; m <= 2; m++) {
+            StringBuilder log = new StringBuilder("% mission " + m + ": time depth temperature salinity\r\n");
+            for (int i = 0; i < 400 * m; i++) {
+                log.append(String.format(Locale.ROOT, "%d %.2f %.3f %.3f\r\n", i * 10, 100 + 90 * Math.sin(i / 20.0),
+                        12 - i / 100.0 + random.nextGaussian() * 0.01, 35 + random.nextGaussian() * 0.02));
+            }
+            Files.writeString(dir.resolve("MISSION" + m + ".LOG"), log, StandardCharsets.US_ASCII);
+        }
+        byte[] binary = new byte[4096];
+        random.nextBytes(binary);
+        Files.write(dir.resolve("SENSOR.DAT"), binary);
+    }
+
+    public Path directory() {
+        return dir;
+    }
+
+    /** Serves TCP connections on {@code port} (0: any free port). Returns the bound port. */
+    public synchronized int listen(int listenPort) throws IOException {
+        serverSocket = bind(listenPort);
+        port = serverSocket.getLocalPort();
+        thread = new Thread(this::serveTcp, "glider-simulator-" + port);
+        thread.setDaemon(true);
+        thread.start();
+        log.info("glider simulator listening on port {} with files in {}", port, dir);
+        return port;
+    }
+
+    /** Serves the serial device or pseudo-terminal at {@code path}. */
+    public synchronized void attach(String path) throws IOException {
+        Link link = SerialLink.open(LinkSettings.defaults(path));
+        current = link;
+        thread = new Thread(() -> serveTty(link), "glider-simulator-tty");
+        thread.setDaemon(true);
+        thread.start();
+        log.info("glider simulator on {} with files in {}", path, dir);
+    }
+
+    private static ServerSocket bind(int port) throws IOException {
+        ServerSocket s = new ServerSocket();
+        s.setReuseAddress(true);
+        s.bind(new InetSocketAddress(port));
+        return s;
+    }
+
+    private void serveTcp() {
+        try {
+            while (running) {
+                Socket socket;
+                try {
+                    socket = serverSocket.accept();
+                } catch (IOException e) {
+                    if (!running) {
+                        return;
+                    }
+                    throw e;
+                }
+                try (Link link = new TcpLink(socket)) {
+                    current = link;
+                    boolean dive = session(link);
+                    current = null;
+                    if (dive) {
+                        link.close();
+                        serverSocket.close(); // under water nobody can connect
+                        dive();
+                        if (running) {
+                            serverSocket = bind(port);
+                            log.info("surfaced; listening on port {} again", port);
+                        }
+                    }
+                } catch (EOFException e) {
+                    log.info("connection closed: {}", e.getMessage());
+                } catch (IOException e) {
+                    log.warn("connection failed: {}", e.toString());
+                }
+            }
+        } catch (IOException e) {
+            log.error("simulator stopped: {}", e.toString());
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        } finally {
+            stopped.countDown();
+        }
+    }
+
+    private void serveTty(Link link) {
+        try {
+            while (running) {
+                if (session(link)) {
+                    dive();
+                    // under water the modem hears nothing: drop what arrived meanwhile
+                    byte[] junk = new byte[4096];
+                    while (link.read(junk, 0, junk.length, 1) > 0) {
+                        log.debug("dropped input that arrived while submerged");
+                    }
+                }
+            }
+        } catch (IOException e) {
+            log.warn("tty session ended: {}", e.toString());
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        } finally {
+            link.close();
+            stopped.countDown();
+        }
+    }
+
+    private void dive() throws InterruptedException {
+        log.info("submerged for {} s", submerge.toSeconds());
+        try {
+            // the glider is away for this long; stop() wakes it early
+            stopped.await(submerge.toMillis(), TimeUnit.MILLISECONDS);
+        } finally {
+            submerged = false;
+        }
+    }
+
+    public boolean submerged() {
+        return submerged;
+    }
+
+    /** Runs one conversation; returns true when the operator sent GO. */
+    private boolean session(Link link) throws IOException {
+        ShellLink shell = new ShellLink(link);
+        say(shell, "\r\nPicoDOS (RIPV glider simulator)\r\n" + PROMPT);
+        StringBuilder line = new StringBuilder();
+        byte[] buf = new byte[1024];
+        boolean lastWasCr = false;
+        while (running) {
+            int n = shell.read(buf, 0, buf.length, 1000);
+            for (int i = 0; i < n; i++) {
+                int c = buf[i] & 0xFF;
+                if (c == '\n' && lastWasCr) {
+                    lastWasCr = false;
+                    continue;
+                }
+                lastWasCr = c == '\r';
+                if (c == '\r' || c == '\n') {
+                    say(shell, "\r\n");
+                    shell.unread(buf, i + 1, n - i - 1);
+                    String command = line.toString().trim();
+                    line.setLength(0);
+                    if (execute(shell, command)) {
+                        return true;
+                    }
+                    say(shell, PROMPT);
+                    break;
+                } else if (c == 8 || c == 0x7F) {
+                    if (!line.isEmpty()) {
+                        line.setLength(line.length() - 1);
+                        say(shell, "\b \b");
+                    }
+                } else if (c >= 0x20 && c < 0x7F) {
+                    line.append((char) c);
+                    shell.write(new byte[] {(byte) c}, 0, 1); // echo, like the real vehicle
+                }
+                // other control bytes (CAN, stray ACKs after a transfer) are not echoed
+            }
+            shell.flush();
+        }
+        return false;
+    }
+
+    private boolean execute(ShellLink shell, String command) throws IOException {
+        if (command.isEmpty()) {
+            return false;
+        }
+        String[] words = command.split("\\s+");
+        String verb = words[0].toUpperCase(Locale.ROOT);
+        switch (verb) {
+            case "DIR" -> say(shell, dir());
+            case "TYPE" -> {
+                Path file = file(shell, words);
+                if (file != null) {
+                    String text = new String(Files.readAllBytes(file), StandardCharsets.ISO_8859_1);
+                    say(shell, text.replace("\r\n", "\n").replace("\n", "\r\n") + (text.endsWith("\n") ? "" : "\r\n"));
+                }
+            }
+            case "DEL" -> {
+                Path file = file(shell, words);
+                if (file != null) {
+                    Files.delete(file);
+                }
+            }
+            case "YS" -> send(shell, words);
+            case "YR" -> receive(shell);
+            case "GO" -> {
+                submerged = true; // from now on, before the link drops
+                say(shell, "Mission started; submerging for " + submerge.toSeconds() + " s\r\n");
+                return true;
+            }
+            case "HELP", "?" -> say(shell, "dir, type NAME, del NAME, ys NAME..., yr, go\r\n");
+            default -> say(shell, "Bad command or file name\r\n");
+        }
+        return false;
+    }
+
+    private Path file(ShellLink shell, String[] words) throws IOException {
+        if (words.length != 2) {
+            say(shell, "Required parameter missing\r\n");
+            return null;
+        }
+        Path file = resolve(words[1]);
+        if (file == null) {
+            say(shell, "File not found - " + words[1] + "\r\n");
+        }
+        return file;
+    }
+
+    /** The file of that name, matched without regard to case as on FAT; null if none. */
+    private Path resolve(String name) throws IOException {
+        try {
+            FileNames.requirePlain(name);
+        } catch (IllegalArgumentException e) {
+            return null;
+        }
+        try (DirectoryStream<Path> files = Files.newDirectoryStream(dir)) {
+            for (Path p : files) {
+                if (Files.isRegularFile(p) && p.getFileName().toString().equalsIgnoreCase(name)) {
+                    return p;
+                }
+            }
+        }
+        return null;
+    }
+
+    private String dir() throws IOException {
+        StringBuilder b = new StringBuilder(" Volume in drive C is GLIDER\r\n Directory of C:\\\r\n\r\n");
+        List<Path> files = new ArrayList<>();
+        try (DirectoryStream<Path> stream = Files.newDirectoryStream(dir)) {
+            for (Path p : stream) {
+                if (Files.isRegularFile(p) && !p.getFileName().toString().startsWith(".")) {
+                    files.add(p);
+                }
+            }
+        }
+        files.sort(null);
+        long total = 0;
+        for (Path p : files) {
+            long size = Files.size(p);
+            total += size;
+            LocalDateTime t = LocalDateTime.ofInstant(Files.getLastModifiedTime(p).toInstant(), ZoneId.systemDefault());
+            b.append(String.format(Locale.ROOT, "%-12s %10d  %s\r\n", p.getFileName(), size, DIR_TIME.format(t)));
+        }
+        b.append(String.format(Locale.ROOT, "%9d file(s) %12d bytes\r\n", files.size(), total));
+        return b.toString();
+    }
+
+    private void send(ShellLink shell, String[] words) throws IOException {
+        if (words.length < 2) {
+            say(shell, "usage: ys NAME...\r\n");
+            return;
+        }
+        List<SendFile> files = new ArrayList<>();
+        for (int i = 1; i < words.length; i++) {
+            Path p = resolve(words[i]);
+            if (p == null) {
+                say(shell, "File not found - " + words[i] + "\r\n");
+                return;
+            }
+            files.add(SendFile.of(p));
+        }
+        try {
+            new YmodemSender(shell, ymodem, null).sendBatch(files);
+            say(shell, "\r\n" + files.size() + " file(s) sent\r\n");
+        } catch (YmodemException e) {
+            say(shell, "\r\nYMODEM send failed: " + e.getMessage() + "\r\n");
+        }
+    }
+
+    private void receive(ShellLink shell) throws IOException {
+        try {
+            List<FileHeader> got = new YmodemReceiver(shell, ymodem, null).receiveBatch(new DirectorySink(dir));
+            say(shell, "\r\n" + got.size() + " file(s) received\r\n");
+        } catch (YmodemException e) {
+            say(shell, "\r\nYMODEM receive failed: " + e.getMessage() + "\r\n");
+        }
+    }
+
+    private static void say(ShellLink shell, String text) throws IOException {
+        byte[] bytes = text.getBytes(StandardCharsets.ISO_8859_1);
+        shell.write(bytes, 0, bytes.length);
+        shell.flush();
+    }
+
+    /** The TCP port it listens on (0 when attached to a tty). */
+    public int port() {
+        return port;
+    }
+
+    /** Blocks until the simulator stops. */
+    public void await() throws InterruptedException {
+        stopped.await();
+    }
+
+    @Override
+    public void close() {
+        running = false;
+        stopped.countDown();
+        ServerSocket s = serverSocket;
+        if (s != null) {
+            try {
+                s.close();
+            } catch (IOException ignored) {
+                // closing anyway
+            }
+        }
+        Link l = current;
+        if (l != null) {
+            l.close();
+        }
+    }
+}

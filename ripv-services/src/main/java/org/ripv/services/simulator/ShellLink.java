@@ -1,0 +1,48 @@
+package org.ripv.services.simulator;
+
+import java.io.IOException;
+import org.ripv.services.serial.Link;
+import org.ripv.services.serial.ymodem.ByteLink;
+
+/**
+ * The simulator's view of its link: bytes the shell read past the end of a command line are
+ * pushed back, so a YMODEM 'C' that arrives right behind {@code ys NAME} reaches the sender.
+ */
+final class ShellLink implements ByteLink {
+    private final Link link;
+    private byte[] pending = new byte[0];
+    private int position;
+
+    ShellLink(Link link) {
+        this.link = link;
+    }
+
+    void unread(byte[] bytes, int offset, int len) {
+        byte[] rest = new byte[len + pending.length - position];
+        System.arraycopy(bytes, offset, rest, 0, len);
+        System.arraycopy(pending, position, rest, len, pending.length - position);
+        pending = rest;
+        position = 0;
+    }
+
+    @Override
+    public int read(byte[] buffer, int offset, int len, long timeoutMillis) throws IOException {
+        if (position < pending.length) {
+            int n = Math.min(len, pending.length - position);
+            System.arraycopy(pending, position, buffer, offset, n);
+            position += n;
+            return n;
+        }
+        return link.read(buffer, offset, len, timeoutMillis);
+    }
+
+    @Override
+    public void write(byte[] buffer, int offset, int len) throws IOException {
+        link.write(buffer, offset, len);
+    }
+
+    @Override
+    public void flush() throws IOException {
+        link.flush();
+    }
+}

@@ -1,0 +1,91 @@
+package org.ripv.services.datavis;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.within;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.awt.image.BufferedImage;
+import java.io.File;
+import java.io.InputStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.ripv.messages.ImageResult;
+import org.ripv.messages.OutgoingServiceMessage;
+import org.ripv.messages.Status;
+
+/**
+ * ripvOut.m under GNU Octave ({@code octave-cli}), started and restarted by the service.
+ * Skipped when Octave is not installed; CI installs it (docs/datavis.md lists the packages).
+ * Two plots only: each Octave start costs seconds.
+ */
+class DataVisOctaveTest {
+    @TempDir
+    Path tmp;
+
+    static boolean octaveInstalled() {
+        String path = System.getenv("PATH");
+        if (path == null) {
+            return false;
+        }
+        for (String d : path.split(File.pathSeparator)) {
+            if (Files.isExecutable(Path.of(d, "octave-cli"))) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    @Test
+    void theJarCarriesTheSameRipvOutAsTheMatlabDirectory() throws Exception {
+        Path repoCopy = Path.of("..", "matlab", "ripvOut.m");
+        assumeTrue(Files.exists(repoCopy), "not run from the ripv-services module directory");
+        try (InputStream in = OctaveWorker.class.getResourceAsStream(OctaveWorker.SCRIPT_RESOURCE)) {
+            assertThat(in).as("ripvOut.m resource").isNotNull();
+            assertThat(in.readAllBytes()).as("src/main/resources/.../ripvOut.m must be a copy of matlab/ripvOut.m")
+                    .isEqualTo(Files.readAllBytes(repoCopy));
+        }
+    }
+
+    @Test
+    void ripvOutUnderOctavePlotsAndIsRestartedWhenItDies() throws Exception {
+        assumeTrue(octaveInstalled(), "octave-cli is not on the PATH: install octave gnuplot-nox ghostscript "
+                + "fonts-dejavu-core fonts-freefont-otf to run ripvOut.m");
+        DataVisServer.Config config = DataVisServer.Config.of(tmp).withWorker(WorkerMode.OCTAVE)
+                .withTimeout(Duration.ofSeconds(90));
+        try (VisHarness h = new VisHarness(config)) {
+            OutgoingServiceMessage first = h.run("vis:glider-temperature.dat size=640x480", "glider-temperature.dat",
+                    DataVisServerTest.SAMPLE);
+            assertThat(first.footer().status()).as(first.footer().replyText()).isEqualTo(Status.OK);
+            ImageResult img = (ImageResult) first.footer().result();
+            assertThat(img.name()).isEqualTo("glider-temperature.jpg");
+            BufferedImage pic = VisHarness.decode(img.jpeg());
+            assertThat(pic.getWidth()).isCloseTo(640, within(2)); // gnuplot rounds the paper size
+            assertThat(pic.getHeight()).isCloseTo(480, within(2));
+            assertThat(h.leftovers()).isEmpty();
+            assertThat(h.service.mailboxes().get(0).available()).isTrue();
+
+            // Kill Octave: the service starts it again, and the next plot is served by the new one.
+            OctaveWorker octave = octaveOf(h.service);
+            long pid = octave.pid();
+            assertThat(pid).isPositive();
+            ProcessHandle.of(pid).ifPresent(ProcessHandle::destroyForcibly);
+            assertThat(ProcessHandle.of(pid).map(p -> p.onExit().orTimeout(10, TimeUnit.SECONDS).join()).isPresent()).isTrue();
+
+            OutgoingServiceMessage second = h.run("vis:two.dat", "two.dat", "% title: after restart\n1\n3\n2\n");
+            assertThat(second.footer().status()).as(second.footer().replyText()).isEqualTo(Status.OK);
+            VisHarness.decode(((ImageResult) second.footer().result()).jpeg());
+            assertThat(octave.starts()).isGreaterThanOrEqualTo(2);
+            assertThat(h.leftovers()).isEmpty();
+        }
+    }
+
+    private static OctaveWorker octaveOf(DataVisServer s) throws Exception {
+        java.lang.reflect.Field f = DataVisServer.class.getDeclaredField("octave");
+        f.setAccessible(true);
+        return (OctaveWorker) f.get(s);
+    }
+}

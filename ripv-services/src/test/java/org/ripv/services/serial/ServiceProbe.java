@@ -1,0 +1,76 @@
+package org.ripv.services.serial;
+
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicLong;
+import org.ripv.messages.Attachment;
+import org.ripv.messages.Header;
+import org.ripv.messages.IdBadge;
+import org.ripv.messages.IncomingServiceMessage;
+import org.ripv.messages.MailboxStatus;
+import org.ripv.messages.OutgoingServiceMessage;
+import org.ripv.messages.Priority;
+import org.ripv.messages.Status;
+import org.ripv.service.RIPVService;
+
+/**
+ * Drives a service in-process the way the RMI adapter does: {@code accept} a request and
+ * collect every reply (PROGRESS ones too) until the final one.
+ */
+public final class ServiceProbe {
+    private final RIPVService service;
+    private final LinkedBlockingQueue<OutgoingServiceMessage> replies = new LinkedBlockingQueue<>();
+    private final AtomicLong ids = new AtomicLong();
+
+    public ServiceProbe(RIPVService service) {
+        this.service = service;
+        service.replyTo(replies::add);
+    }
+
+    /** What one request produced. */
+    public record Answer(List<OutgoingServiceMessage> progress, OutgoingServiceMessage last) {
+        public String text() {
+            return last.footer().replyText();
+        }
+
+        public boolean ok() {
+            return last.footer().status() == Status.OK;
+        }
+    }
+
+    public Answer send(String handle, String command, Duration timeout) throws InterruptedException {
+        return send(handle, command, null, timeout);
+    }
+
+    public Answer send(String handle, String command, Attachment attachment, Duration timeout)
+            throws InterruptedException {
+        long id = ids.incrementAndGet();
+        service.accept(new IncomingServiceMessage(new Header(id, new IdBadge("123456", "alice"), List.of(),
+                service.name().toString(), service.name().mailbox(handle).toString(), command, Priority.NORMAL,
+                attachment)));
+        List<OutgoingServiceMessage> progress = new ArrayList<>();
+        long deadline = System.nanoTime() + timeout.toNanos();
+        while (true) {
+            OutgoingServiceMessage m = replies.poll(deadline - System.nanoTime(), TimeUnit.NANOSECONDS);
+            assertNotNull(m, "no final reply to '" + command + "' within " + timeout);
+            if (m.header().messageId() != id) {
+                continue;
+            }
+            if (m.footer().status() == Status.PROGRESS) {
+                progress.add(m);
+            } else {
+                return new Answer(progress, m);
+            }
+        }
+    }
+
+    public MailboxStatus status(String handle) {
+        String address = service.name().mailbox(handle).toString();
+        return service.mailboxes().stream().filter(s -> s.address().equals(address)).findFirst().orElseThrow();
+    }
+}

@@ -1,0 +1,116 @@
+package org.ripv.services.simulator;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.net.ConnectException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.ripv.services.serial.Eventually;
+import org.ripv.services.serial.TcpLink;
+import org.ripv.services.serial.ymodem.YmodemConfig;
+import picocli.CommandLine;
+
+/** The simulator's shell as a raw TCP client sees it. */
+class GliderSimulatorTest {
+    @TempDir
+    Path tmp;
+    GliderSimulator glider;
+    TcpLink link;
+
+    @BeforeEach
+    void start() throws IOException {
+        glider = new GliderSimulator(tmp.resolve("c"), Duration.ofSeconds(1), YmodemConfig.lrzsz());
+        link = TcpLink.connect("tcp://127.0.0.1:" + glider.listen(0), 2000);
+    }
+
+    @AfterEach
+    void stop() {
+        link.close();
+        glider.close();
+    }
+
+    /** Reads until the text ends with the prompt. */
+    private String untilPrompt() throws IOException {
+        StringBuilder b = new StringBuilder();
+        byte[] buf = new byte[4096];
+        while (!b.toString().endsWith(GliderSimulator.PROMPT)) {
+            int n = link.read(buf, 0, buf.length, 3000);
+            if (n == 0) {
+                throw new AssertionError("no prompt; got: " + b);
+            }
+            b.append(new String(buf, 0, n, StandardCharsets.ISO_8859_1));
+        }
+        return b.toString();
+    }
+
+    private String run(String command) throws IOException {
+        link.write((command + "\r\n").getBytes(StandardCharsets.ISO_8859_1));
+        return untilPrompt();
+    }
+
+    @Test
+    void seededFileSystemPromptAndEcho() throws IOException {
+        assertTrue(untilPrompt().contains("PicoDOS"));
+        String dir = run("dir");
+        assertTrue(dir.startsWith("dir\r\n"), "echo: " + dir);
+        for (String f : new String[] {"GLIDER.CFG", "MISSION1.LOG", "MISSION2.LOG", "SENSOR.DAT"}) {
+            assertTrue(dir.contains(f), f + " in " + dir);
+        }
+        assertTrue(dir.contains("4 file(s)"), dir);
+    }
+
+    @Test
+    void typeDelAndErrors() throws IOException {
+        untilPrompt();
+        assertTrue(run("type glider.cfg").contains("dive_depth_m=200"));
+        assertTrue(run("type NOPE.TXT").contains("File not found - NOPE.TXT"));
+        assertTrue(run("type ../etc/passwd").contains("File not found"));
+        run("del MISSION2.LOG");
+        assertFalse(Files.exists(glider.directory().resolve("MISSION2.LOG")));
+        assertFalse(run("dir").contains("MISSION2.LOG"));
+        assertTrue(run("launch").contains("Bad command or file name"));
+        assertTrue(run("del").contains("Required parameter missing"));
+    }
+
+    @Test
+    void goDropsTheConnectionAndRefusesNewOnesUntilItSurfaces() throws Exception {
+        untilPrompt();
+        link.write("GO\r\n".getBytes(StandardCharsets.US_ASCII));
+        StringBuilder said = new StringBuilder();
+        byte[] buf = new byte[1024];
+        assertThrows(java.io.EOFException.class, () -> {
+            while (true) {
+                int n = link.read(buf, 0, buf.length, 3000);
+                said.append(new String(buf, 0, n, StandardCharsets.US_ASCII));
+            }
+        });
+        assertTrue(said.toString().contains("submerging for 1 s"), said.toString());
+        assertTrue(glider.submerged());
+        assertThrows(ConnectException.class, () -> TcpLink.connect("tcp://127.0.0.1:" + glider.port(), 1000));
+        Eventually.await("surfaced", Duration.ofSeconds(5), () -> !glider.submerged());
+        Eventually.await("listening again", Duration.ofSeconds(5), () -> {
+            try (TcpLink again = TcpLink.connect("tcp://127.0.0.1:" + glider.port(), 1000)) {
+                return true;
+            } catch (IOException e) {
+                return false;
+            }
+        });
+    }
+
+    @Test
+    void launcherRejectsBothPlaces() {
+        int code = new CommandLine(new SimulatorCommand()).setErr(new java.io.PrintWriter(java.io.Writer.nullWriter()))
+                .execute("--listen", "1", "--tty", "/dev/null");
+        assertEquals(2, code);
+    }
+}

@@ -1,0 +1,109 @@
+#!/usr/bin/env bash
+# ./ripv demo — the whole system on this machine: RIPVServer, the three services on their
+# embedded defaults, a simulated glider on TCP, and the GUI logged in as the demo operator.
+# With no display it prints how to connect with the CLI instead. Ctrl-C stops everything.
+set -euo pipefail
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+JAVA="${JAVA:-java}"
+DEMO="${RIPV_DEMO_DIR:-$ROOT/.ripv-demo}"
+PORT="${RIPV_PORT:-4444}"
+REGISTRY="${RIPV_REGISTRY_PORT:-1099}"
+HTTP="${RIPV_HTTP_PORT:-8080}"
+GLIDER="${RIPV_GLIDER_PORT:-5555}"
+USER_NAME=demo
+PASSWORD=ripv-demo-operator
+jar() { echo "$ROOT/$1/target/$1.jar"; }
+
+mkdir -p "$DEMO/logs" "$DEMO/server"
+pids=()
+stop_all() {
+  trap - INT TERM EXIT
+  if [ ${#pids[@]} -gt 0 ]; then
+    echo "demo: stopping..." >&2
+    kill "${pids[@]}" 2>/dev/null || true
+    wait "${pids[@]}" 2>/dev/null || true
+  fi
+}
+trap stop_all EXIT
+trap 'exit 130' INT TERM
+
+port_free() { ! (exec 3<>"/dev/tcp/127.0.0.1/$1") 2>/dev/null; }
+wait_port() {
+  local i
+  for i in $(seq 1 150); do
+    (exec 3<>"/dev/tcp/127.0.0.1/$1") 2>/dev/null && return 0
+    sleep 0.2
+  done
+  echo "demo: nothing answered on port $1; see $DEMO/logs/" >&2
+  exit 1
+}
+for p in "$PORT" "$REGISTRY" "$HTTP" "$GLIDER"; do
+  if ! port_free "$p"; then
+    echo "demo: port $p is in use. Stop what uses it, or set RIPV_PORT / RIPV_REGISTRY_PORT / RIPV_HTTP_PORT / RIPV_GLIDER_PORT." >&2
+    exit 1
+  fi
+done
+
+permit="$DEMO/server/permit.txt"
+if ! grep -q "^user $USER_NAME " "$permit" 2>/dev/null; then
+  echo "$PASSWORD" | "$JAVA" -jar "$(jar ripv-server)" passwd --permit "$permit" "$USER_NAME" --roles operators >/dev/null
+  echo "ripv-demo-observer" | "$JAVA" -jar "$(jar ripv-server)" passwd --permit "$permit" observer --roles observers,db-reader >/dev/null
+fi
+printf '%s\n' "$PASSWORD" > "$DEMO/password"
+chmod 600 "$DEMO/password"
+
+echo "demo: starting the RIPVServer (logs in $DEMO/logs)" >&2
+"$JAVA" -jar "$(jar ripv-server)" server --data "$DEMO/server" --port "$PORT" --registry-port "$REGISTRY" \
+  --http-port "$HTTP" >"$DEMO/logs/server.log" 2>&1 &
+pids+=($!)
+wait_port "$PORT"
+secret="$DEMO/server/service.secret"
+for s in "$ROOT"/docs/samples/*.dat; do
+  [ -f "$s" ] && [ ! -f "$DEMO/server/upload/$(basename "$s")" ] && cp "$s" "$DEMO/server/upload/"
+done
+
+echo "demo: starting the glider simulator on port $GLIDER" >&2
+"$JAVA" -jar "$(jar ripv-services)" simulator --listen "$GLIDER" --dir "$DEMO/glider" >"$DEMO/logs/simulator.log" 2>&1 &
+pids+=($!)
+wait_port "$GLIDER"
+
+echo "demo: starting the SerialPortServer, DatabaseServer and DataVisServer" >&2
+"$JAVA" -Dripv.host=localhost -jar "$(jar ripv-services)" serial --server "localhost:$REGISTRY" --secret-file "$secret" \
+  --link "tcp://localhost:$GLIDER" --carrier ignore --no-enumerate >"$DEMO/logs/serial.log" 2>&1 &
+pids+=($!)
+"$JAVA" -Dripv.host=localhost -jar "$(jar ripv-services)" database --server "localhost:$REGISTRY" --secret-file "$secret" \
+  --data "$DEMO/database" >"$DEMO/logs/database.log" 2>&1 &
+pids+=($!)
+"$JAVA" -Dripv.host=localhost -jar "$(jar ripv-services)" datavis --server "localhost:$REGISTRY" --secret-file "$secret" \
+  --workdir "$DEMO/datavis" >"$DEMO/logs/datavis.log" 2>&1 &
+pids+=($!)
+
+cli_hint() {
+  cat <<HINT
+
+RIPV demo is running. Connect with the CLI, e.g.:
+
+  ./ripv cli --server localhost:$PORT --user $USER_NAME --password-file $DEMO/password \\
+      --exec '?services' --exec '?mailboxes' \\
+      --exec 'use <SerialPortServer>::<localhost>tcp-localhost-$GLIDER' --exec 'dir'
+
+  Database:  --exec 'use <DatabaseServer>::<localhost>TTY1' --exec 'SELECT * FROM mission'
+  Plot:      --exec 'use <DataVisServer>::<localhost>TTY1' --exec 'vis:glider-temperature.dat'
+  Landing page: http://localhost:$HTTP/      Logs: $DEMO/logs/
+
+Press Ctrl-C to stop everything.
+HINT
+}
+
+if [ -n "${DISPLAY:-}" ] && [ "${RIPV_DEMO_HEADLESS:-}" != 1 ]; then
+  echo "demo: opening the client as '$USER_NAME'" >&2
+  "$JAVA" -jar "$(jar ripv-client)" client "localhost:$PORT" --user "$USER_NAME" --password-file "$DEMO/password" \
+    >"$DEMO/logs/client.log" 2>&1 &
+  pids+=($!)
+  cli_hint
+  wait "${pids[-1]}" || true
+else
+  echo "demo: no display (DISPLAY is not set), so no GUI." >&2
+  cli_hint
+  wait
+fi
