@@ -2,6 +2,7 @@ package org.ripv.client;
 
 import org.ripv.client.cli.CliCommand;
 import org.ripv.client.gui.ClientCommand;
+import org.ripv.launch.Launchers;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
@@ -19,11 +20,7 @@ public final class ClientMain implements Runnable {
         if (args.length == 0) {
             args = new String[] {"client"}; // double-clicking the jar opens the GUI
         }
-        CommandLine cl = new CommandLine(new ClientMain());
-        cl.setExecutionExceptionHandler((e, line, parsed) -> {
-            line.getErr().println("Error: " + (e.getMessage() == null ? e.toString() : e.getMessage()));
-            return 1;
-        });
+        CommandLine cl = Launchers.commandLine(new ClientMain());
         return cl.execute(args);
     }
 

@@ -12,18 +12,16 @@ import org.slf4j.LoggerFactory;
  * message of the highest non-empty priority, holds the MailBox's key while the TaskManager runs
  * it, and takes the next only when that command has finished.
  */
-public final class InboxAssistantThread<I extends Message, O extends Message> extends Thread {
+public final class InboxAssistantThread<I extends Message, O extends Message> extends AssistantThread {
     private static final Logger log = LoggerFactory.getLogger(InboxAssistantThread.class);
 
     private final MailBox<I, O> box;
     private final TaskManager<I, O> manager;
-    private volatile boolean running = true;
 
     public InboxAssistantThread(MailBox<I, O> box, TaskManager<I, O> manager) {
         super("mailbox-" + box.address() + "-inbox");
         this.box = box;
         this.manager = manager;
-        setDaemon(true);
     }
 
     @Override
@@ -52,17 +50,4 @@ public final class InboxAssistantThread<I extends Message, O extends Message> ex
         log.debug("{} stopped", getName());
     }
 
-    /**
-     * Stops: interrupts the command under way (a handler blocked on a device sees the
-     * interrupt and fails, which still answers its request) and waits up to the given milliseconds.
-     */
-    public void shutdown(long waitMillis) {
-        running = false;
-        interrupt();
-        try {
-            join(waitMillis);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
-    }
 }

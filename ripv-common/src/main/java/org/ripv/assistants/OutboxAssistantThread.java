@@ -10,7 +10,7 @@ import org.slf4j.LoggerFactory;
  * Takes replies off a MailBox's outbox and hands them to the TaskManager's footer side — one at
  * a time when they come one at a time, together when several have queued up meanwhile.
  */
-public final class OutboxAssistantThread<I extends Message, O extends Message> extends Thread {
+public final class OutboxAssistantThread<I extends Message, O extends Message> extends AssistantThread {
     private static final Logger log = LoggerFactory.getLogger(OutboxAssistantThread.class);
 
     /** The most replies handed to the TaskManager at once. */
@@ -18,13 +18,11 @@ public final class OutboxAssistantThread<I extends Message, O extends Message> e
 
     private final MailBox<I, O> box;
     private final TaskManager<I, O> manager;
-    private volatile boolean running = true;
 
     public OutboxAssistantThread(MailBox<I, O> box, TaskManager<I, O> manager) {
         super("mailbox-" + box.address() + "-outbox");
         this.box = box;
         this.manager = manager;
-        setDaemon(true);
     }
 
     @Override
@@ -60,14 +58,4 @@ public final class OutboxAssistantThread<I extends Message, O extends Message> e
         log.debug("{} stopped", getName());
     }
 
-    /** Delivers the replies still queued, then stops; waits up to the given milliseconds. */
-    public void shutdown(long waitMillis) {
-        running = false;
-        interrupt();
-        try {
-            join(waitMillis);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
-    }
 }

@@ -8,6 +8,7 @@ import org.ripv.service.RIPVService;
 import org.ripv.service.Reply;
 import org.ripv.service.Request;
 import org.ripv.service.ServiceLaunchOptions;
+import org.ripv.launch.Launchers;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -71,11 +72,7 @@ public final class ClockService extends RIPVService {
     }
 
     public static void main(String[] args) {
-        CommandLine cl = new CommandLine(new Launch());
-        cl.setExecutionExceptionHandler((e, line, parsed) -> {
-            line.getErr().println("Error: " + (e.getMessage() == null ? e.toString() : e.getMessage()));
-            return 1;
-        });
+        CommandLine cl = Launchers.commandLine(new Launch());
         System.exit(cl.execute(args));
     }
 }

@@ -3,6 +3,7 @@ package org.ripv.bench;
 import java.util.Arrays;
 import org.ripv.services.bench.DataVisBenchmark;
 import org.ripv.services.bench.YmodemBenchmark;
+import org.ripv.launch.Launchers;
 import picocli.CommandLine;
 
 /**
@@ -29,7 +30,7 @@ public final class BenchMain {
         }
         String[] rest = Arrays.copyOfRange(args, 1, args.length);
         switch (args[0]) {
-            case "broker" -> System.exit(new CommandLine(new BrokerBench()).execute(rest));
+            case "broker" -> System.exit(Launchers.commandLine(new BrokerBench()).execute(rest));
             case "database" -> DatabaseBench.main(rest);
             case "ymodem" -> YmodemBenchmark.main(rest);
             case "datavis" -> DataVisBenchmark.main(rest);

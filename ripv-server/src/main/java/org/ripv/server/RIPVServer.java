@@ -175,11 +175,16 @@ public final class RIPVServer implements AutoCloseable {
     }
 
     private void releaseAfterFailedStart() {
+        release();
+    }
+
+    /** Closes every port, thread and export the server may have opened; safe on a half-started server. */
+    private void release() {
         if (landingPage != null) {
             try {
                 landingPage.close();
-            } catch (Exception ignored) {
-                // closing anyway
+            } catch (Exception e) {
+                log.debug("landing page close: {}", e.toString());
             }
         }
         if (listener != null) {
@@ -189,14 +194,22 @@ public final class RIPVServer implements AutoCloseable {
                 // closing anyway
             }
         }
-        RmiSupport.unexport(remote);
+        clients.values().forEach(SocketHandler::close);
+        services.values().forEach(ServiceReference::close);
+        services.clear();
         if (registry != null) {
+            try {
+                registry.unbind(GenericRMIInterface.BINDING);
+            } catch (Exception ignored) {
+                // not bound, or already gone
+            }
             try {
                 java.rmi.server.UnicastRemoteObject.unexportObject(registry, true);
             } catch (java.rmi.NoSuchObjectException ignored) {
                 // not exported
             }
         }
+        RmiSupport.unexport(remote);
         timers.shutdownNow();
         checkers.shutdownNow();
         liveness.shutdownNow();
@@ -609,37 +622,7 @@ public final class RIPVServer implements AutoCloseable {
             return;
         }
         running = false;
-        if (landingPage != null) {
-            try {
-                landingPage.close();
-            } catch (Exception e) {
-                log.debug("landing page close: {}", e.toString());
-            }
-        }
-        try {
-            listener.close();
-        } catch (IOException ignored) {
-            // closing anyway
-        }
-        clients.values().forEach(SocketHandler::close);
-        services.values().forEach(ServiceReference::close);
-        services.clear();
-        try {
-            registry.unbind(GenericRMIInterface.BINDING);
-        } catch (Exception ignored) {
-            // already gone
-        }
-        RmiSupport.unexport(remote);
-        try {
-            java.rmi.server.UnicastRemoteObject.unexportObject(registry, true);
-        } catch (java.rmi.NoSuchObjectException ignored) {
-            // already gone
-        }
-        timers.shutdownNow();
-        checkers.shutdownNow();
-        liveness.shutdownNow();
-        fileWork.shutdownNow();
-        postOffice.stop();
+        release();
         log.info("RIPVServer stopped");
     }
 

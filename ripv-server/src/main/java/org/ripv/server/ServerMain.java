@@ -20,6 +20,7 @@ import javax.net.ssl.SSLContext;
 import org.ripv.server.permit.Passwords;
 import org.ripv.server.permit.PermitFile;
 import org.ripv.service.ServiceOptions;
+import org.ripv.launch.Launchers;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -202,11 +203,7 @@ public final class ServerMain implements Callable<Integer> {
         if (args.length == 1 && args[0].matches("\\d{1,5}")) {
             args = new String[] {"server", "--port", args[0]};
         }
-        CommandLine cl = new CommandLine(new ServerMain());
-        cl.setExecutionExceptionHandler((e, line, parsed) -> {
-            line.getErr().println("Error: " + (e.getMessage() == null ? e.toString() : e.getMessage()));
-            return 1;
-        });
+        CommandLine cl = Launchers.commandLine(new ServerMain());
         return cl.execute(args);
     }
 

@@ -7,6 +7,7 @@ import org.ripv.services.database.DatabaseServerCommand;
 import org.ripv.services.datavis.DataVisServerCommand;
 import org.ripv.services.serial.SerialPortServerCommand;
 import org.ripv.services.simulator.SimulatorCommand;
+import org.ripv.launch.Launchers;
 import picocli.CommandLine;
 
 /**
@@ -47,11 +48,7 @@ public final class ServicesMain {
     }
 
     private static int execute(Object command, String[] args) {
-        CommandLine cl = new CommandLine(command);
-        cl.setExecutionExceptionHandler((e, line, parsed) -> {
-            line.getErr().println("Error: " + (e.getMessage() == null ? e.toString() : e.getMessage()));
-            return 1;
-        });
+        CommandLine cl = Launchers.commandLine(command);
         return cl.execute(args);
     }
 

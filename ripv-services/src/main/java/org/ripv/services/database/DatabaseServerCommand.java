@@ -9,6 +9,7 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.Callable;
 import org.ripv.service.ServiceLaunchOptions;
+import org.ripv.launch.Launchers;
 import picocli.CommandLine;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
@@ -172,7 +173,7 @@ public final class DatabaseServerCommand implements Callable<Integer> {
 
     /** Runs the command with the given arguments (either form) and returns its exit code. */
     public static int run(String... args) {
-        return new CommandLine(new DatabaseServerCommand()).execute(thesisArgs(args));
+        return Launchers.commandLine(new DatabaseServerCommand()).execute(thesisArgs(args));
     }
 
     public static void main(String[] args) {

@@ -5,6 +5,7 @@ import java.nio.file.Path;
 import java.time.Duration;
 import java.util.concurrent.Callable;
 import org.ripv.service.ServiceLaunchOptions;
+import org.ripv.launch.Launchers;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -94,7 +95,7 @@ public final class DataVisServerCommand implements Callable<Integer> {
 
     /** Parses and runs; returns the exit code. */
     public static int run(String... args) {
-        return new CommandLine(new DataVisServerCommand()).execute(ServiceLaunchOptions.thesisForm(args));
+        return Launchers.commandLine(new DataVisServerCommand()).execute(ServiceLaunchOptions.thesisForm(args));
     }
 
     public static void main(String[] args) {

@@ -9,6 +9,7 @@ import java.util.concurrent.Callable;
 import java.util.regex.Pattern;
 import org.ripv.service.ServiceLaunchOptions;
 import org.ripv.services.serial.ymodem.YmodemConfig;
+import org.ripv.launch.Launchers;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -136,6 +137,6 @@ public final class SerialPortServerCommand implements Callable<Integer> {
     }
 
     public static void main(String[] args) {
-        System.exit(new CommandLine(new SerialPortServerCommand()).execute(ServiceLaunchOptions.thesisForm(args)));
+        System.exit(Launchers.commandLine(new SerialPortServerCommand()).execute(ServiceLaunchOptions.thesisForm(args)));
     }
 }

@@ -45,7 +45,7 @@ class DataVisOctaveTest {
         assumeTrue(Files.exists(repoCopy), "not run from the ripv-services module directory");
         try (InputStream in = OctaveWorker.class.getResourceAsStream(OctaveWorker.SCRIPT_RESOURCE)) {
             assertThat(in).as("ripvOut.m resource").isNotNull();
-            assertThat(in.readAllBytes()).as("src/main/resources/.../ripvOut.m must be a copy of matlab/ripvOut.m")
+            assertThat(in.readAllBytes()).as("the jar must carry matlab/ripvOut.m")
                     .isEqualTo(Files.readAllBytes(repoCopy));
         }
     }
