@@ -52,6 +52,14 @@ import org.ripv.messages.SessionInfo;
 import org.ripv.server.RIPVServer;
 import org.ripv.server.ServerConfig;
 import org.ripv.service.ServiceConnector;
+import org.ripv.services.database.DatabaseServer;
+import org.ripv.services.database.EmbeddedDatabase;
+import org.ripv.services.database.QueryLimits;
+import org.ripv.services.datavis.DataVisServer;
+import org.ripv.services.serial.LinkSettings;
+import org.ripv.services.serial.SerialPortServer;
+import org.ripv.services.serial.ymodem.YmodemConfig;
+import org.ripv.services.simulator.GliderSimulator;
 
 /**
  * The RIPVClient against a real RIPVServer with the example ClockService registered over RMI.
@@ -66,12 +74,20 @@ class ClientGuiTest {
     static final String CLOCK = "<ClockService>::<localhost>";
     static final String CLOCK_BOX = CLOCK + "TTY1";
 
+    static final String SERIAL = "<SerialPortServer>::<localhost>";
+    static final String DATABASE = "<DatabaseServer>::<localhost>";
+    static final String DATAVIS = "<DataVisServer>::<localhost>";
+    static final YmodemConfig YMODEM = YmodemConfig.lrzsz().withTimeouts(Duration.ofSeconds(10),
+            Duration.ofSeconds(1), Duration.ofSeconds(2), Duration.ofSeconds(1));
+    static final String QUERY = "SELECT mission_id, name, startt, endt FROM mission ORDER BY startt DESC";
+
     @TempDir
     Path dir;
     TestSystem sys;
     UiThread ui;
     ClientModel model;
     GuiManager manager;
+    GliderSimulator glider;
 
     @BeforeEach
     void start() throws Exception {
@@ -89,6 +105,27 @@ class ClientGuiTest {
             ui.close();
         }
         sys.close();
+        if (glider != null) {
+            glider.close();
+        }
+    }
+
+    /** The three services of the reference scenario, on their embedded defaults, plus a simulated glider on TCP. */
+    void startTheThreeServices() throws Exception {
+        glider = new GliderSimulator(dir.resolve("glider"), Duration.ofSeconds(3), YMODEM);
+        int port = glider.listen(0);
+        LinkSettings link = LinkSettings.defaults("tcp://127.0.0.1:" + port).withIdleTimeout(Duration.ofSeconds(1))
+                .withReconnectEvery(Duration.ofMillis(300)).withYmodem(YMODEM);
+        sys.register(new SerialPortServer("localhost", List.of(link), null, false, dir.resolve("serial-work")));
+        sys.register(new DatabaseServer("localhost", List.of(EmbeddedDatabase.prepare(dir.resolve("database"), "TTY1")),
+                new QueryLimits(1000, 30, QueryLimits.DEFAULT_MAX_RESULT_CHARS)));
+        sys.register(new DataVisServer("localhost", DataVisServer.Config.of(dir.resolve("vis"))));
+    }
+
+    static Path sample() {
+        Path p = Path.of("..", "docs", "samples", "glider-temperature.dat");
+        assertThat(p).as("the demo's sample data file").exists();
+        return p.toAbsolutePath().normalize();
     }
 
     // ---------------------------------------------------------------- headless: the manager and model
@@ -261,6 +298,60 @@ class ClientGuiTest {
             manager.close();
         }
     }
+
+    @Test
+    void managerRunsTheReferenceScenarioIntoEveryPanel() throws Exception {
+        startTheThreeServices();
+        newManager(Duration.ofSeconds(15));
+        manager.logIn("localhost", sys.server().port(), "alice", TestSystem.PASSWORD.toCharArray())
+                .get(T.toMillis(), TimeUnit.MILLISECONDS);
+        await("the three services", () -> model.serviceNames(),
+                n -> n.containsAll(List.of(SERIAL, DATABASE, DATAVIS, CLOCK)));
+        await("the glider as the serial target", () -> model.service(SERIAL).target(), t -> t.startsWith(SERIAL + "tcp-"));
+        await("the database target", () -> model.service(DATABASE).target(), t -> t.startsWith(DATABASE));
+        await("the plotter target", () -> model.service(DATAVIS).target(), t -> t.startsWith(DATAVIS));
+
+        // Upload a new binary and the data file; both show under UL.
+        Path binary = dir.resolve("GLIDER.BIN");
+        Files.write(binary, new byte[20_000]);
+        ui.run(() -> {
+            manager.upload(binary);
+            manager.upload(sample());
+        });
+        await("both uploads in the FileTree", () -> model.directory(FileArea.UPLOAD).files().stream()
+                .map(FileListing.Entry::name).toList(), n -> n.containsAll(List.of("GLIDER.BIN", "glider-temperature.dat")));
+
+        // The glider: dir, then offload a log with YMODEM (progress, then the stored file under DL).
+        ui.run(() -> manager.sendCommand(SERIAL, "dir"));
+        await("the glider's listing", () -> model.service(SERIAL).transcriptText(), t -> t.contains("MISSION1.LOG"));
+        ui.run(() -> manager.sendCommand(SERIAL, "ymodem:get MISSION1.LOG"));
+        await("the offloaded log under DL", () -> model.directory(FileArea.DOWNLOAD).files().stream()
+                .map(FileListing.Entry::name).toList(), n -> n.contains("MISSION1.LOG"));
+        assertThat(ui.get(() -> model.service(SERIAL).progress())).as("progress cleared at the end").isNull();
+
+        // The database: a query opens a table in DAB.
+        ui.run(() -> manager.sendCommand(DATABASE, QUERY));
+        TableResultView table = await("the query's table", () -> model.service(DATABASE).tables().isEmpty() ? null
+                : new TableResultView(model.service(DATABASE).tables().get(0).query(),
+                model.service(DATABASE).tables().get(0).rows().size()), v -> v != null);
+        assertThat(table.query()).isEqualTo(QUERY);
+        assertThat(table.rows()).isPositive();
+
+        // The plotter: vis: of the uploaded file shows a JPEG in DAV.
+        ui.run(() -> manager.sendCommand(DATAVIS, "vis:glider-temperature.dat"));
+        ServiceModel.Picture pic = await("the plot", () -> model.service(DATAVIS).picture(), p -> p != null);
+        assertThat(pic.image()).as("the JPEG decodes").isNotNull();
+        assertThat(pic.image().getWidth()).isGreaterThan(100);
+
+        // The new binary goes to the glider; then GO.
+        ui.run(() -> manager.sendCommand(SERIAL, "ymodem:put GLIDER.BIN"));
+        await("the binary on the glider", () -> model.service(SERIAL).transcriptText(), t -> t.contains("sent GLIDER.BIN"));
+        assertThat(glider.directory().resolve("GLIDER.BIN")).hasSize(20_000);
+        ui.run(() -> manager.sendCommand(SERIAL, "GO"));
+        await("the glider submerging", () -> model.service(SERIAL).transcriptText(), t -> t.contains("submerging"));
+    }
+
+    record TableResultView(String query, int rows) {}
 
     // ---------------------------------------------------------------- the window (AssertJ-Swing, under Xvfb)
 
