@@ -460,6 +460,127 @@ class ClientGuiTest {
         }
     }
 
+    /** Waits for a condition evaluated on the event thread. */
+    static void waitFor(String what, java.util.function.BooleanSupplier check) {
+        Pause.pause(new Condition(what) {
+            @Override
+            public boolean test() {
+                return GuiActionRunner.execute(check::getAsBoolean);
+            }
+        }, Timeout.timeout(2 * T.toMillis()));
+    }
+
+    /** Types a command into the showing tab's COM panel and presses Enter. */
+    static void command(FrameFixture window, String text) {
+        window.textBox("commandField").setText(text);
+        window.textBox("commandField").pressAndReleaseKeys(KeyEvent.VK_ENTER);
+    }
+
+    @Test
+    void windowShowsEveryPanelAfterTheReferenceScenario() throws Exception {
+        requireDisplay();
+        startTheThreeServices();
+        Preferences prefs = Preferences.userRoot().node("org/ripv/test/" + UUID.randomUUID());
+        Robot robot = BasicRobot.robotWithNewAwtHierarchy();
+        GuiManager gm = GuiActionRunner.execute(() -> new GuiManager(new ClientModel()));
+        RIPVClient client = GuiActionRunner.execute(() -> {
+            FlatLightLaf.setup();
+            return new RIPVClient(gm, prefs);
+        });
+        FrameFixture window = new FrameFixture(robot, client.frame());
+        try {
+            window.show();
+            GuiActionRunner.execute(() -> client.showLogin("localhost:" + sys.server().port(), "alice",
+                    TestSystem.PASSWORD.toCharArray(), true));
+            waitFor("all four services as tabs", () -> client.tabs().getTabCount() == 4);
+            GuiActionRunner.execute(() -> {
+                client.frame().toFront();
+                client.frame().requestFocus();
+            });
+            robot.waitForIdle();
+
+            // Upload the new binary and the data file (UL's chooser is driven in the other window test).
+            Path binary = dir.resolve("GLIDER.BIN");
+            Files.write(binary, new byte[20_000]);
+            GuiActionRunner.execute(() -> {
+                gm.upload(binary);
+                gm.upload(sample());
+            });
+
+            ServiceLayoutPanel serial = GuiActionRunner.execute(() -> client.panel(SERIAL));
+            ServiceLayoutPanel db = GuiActionRunner.execute(() -> client.panel(DATABASE));
+            ServiceLayoutPanel vis = GuiActionRunner.execute(() -> client.panel(DATAVIS));
+            window.tabbedPane("serviceTabs").selectTab(RIPVClientTitles.of(SERIAL));
+            waitFor("the glider as TT", () -> gm.model().service(SERIAL).target().startsWith(SERIAL + "tcp-"));
+            window.textBox("commandField").click();
+            command(window, "?ulfiles");
+            waitFor("the upload listing", () -> serial.com().replyText().contains("glider-temperature.dat"));
+            command(window, "dir");
+            waitFor("the glider's dir", () -> serial.com().replyText().contains("MISSION1.LOG"));
+            command(window, "ymodem:get MISSION1.LOG");
+            waitFor("the offloaded log under DL", () -> serial.fim().tree().names(FileArea.DOWNLOAD).contains("MISSION1.LOG"));
+
+            window.tabbedPane("serviceTabs").selectTab(RIPVClientTitles.of(DATABASE));
+            waitFor("the database as TT", () -> gm.model().service(DATABASE).target().startsWith(DATABASE));
+            command(window, QUERY);
+            waitFor("a DAB tab titled with the query", () -> db.dab().tabs().getTabCount() == 1
+                    && QUERY.equals(db.dab().tabs().getToolTipTextAt(0)) && db.dab().selectedTable().getRowCount() > 0);
+
+            window.tabbedPane("serviceTabs").selectTab(RIPVClientTitles.of(DATAVIS));
+            waitFor("the plotter as TT", () -> gm.model().service(DATAVIS).target().startsWith(DATAVIS));
+            command(window, "vis:glider-temperature.dat");
+            waitFor("the plot in DAV", () -> vis.dav().image() != null);
+            waitFor("the plot under DL", () -> vis.fim().tree().names(FileArea.DOWNLOAD).contains("glider-temperature.jpg"));
+            waitFor("the progress bar gone", () -> gm.model().service(DATAVIS).progress() == null);
+            screenshotOf(client, "client.png");
+
+            window.tabbedPane("serviceTabs").selectTab(RIPVClientTitles.of(DATABASE));
+            robot.waitForIdle();
+            screenshotOf(client, "client-database.png");
+
+            window.tabbedPane("serviceTabs").selectTab(RIPVClientTitles.of(SERIAL));
+            command(window, "ymodem:put GLIDER.BIN");
+            waitFor("the binary sent", () -> serial.com().replyText().contains("sent GLIDER.BIN"));
+            command(window, "GO");
+            waitFor("the glider submerging", () -> serial.com().replyText().contains("submerging"));
+            waitFor("SS to say the glider is not available", () -> gm.model().service(SERIAL).serviceStatus()
+                    .startsWith("not available"));
+            robot.waitForIdle();
+            screenshotOf(client, "client-serial.png");
+        } catch (Throwable t) {
+            screenshot("ClientGuiTest-scenario-failure.png");
+            throw t;
+        } finally {
+            window.cleanUp();
+            prefs.removeNode();
+        }
+    }
+
+    /** The tab titles RIPVClient gives services. */
+    static final class RIPVClientTitles {
+        static String of(String service) {
+            org.ripv.naming.ServiceName n = org.ripv.naming.ServiceName.parse(service);
+            return n.service() + " @ " + n.host();
+        }
+    }
+
+    /** With -Dripv.screenshot.dir=DIR, saves the window as DIR/name (the docs' pictures). */
+    static void screenshotOf(RIPVClient client, String name) throws Exception {
+        String target = System.getProperty("ripv.screenshot.dir");
+        if (target == null || target.isBlank()) {
+            return;
+        }
+        java.awt.Rectangle r = GuiActionRunner.execute(() -> new java.awt.Rectangle(client.frame().getLocationOnScreen(),
+                client.frame().getSize()));
+        // Park the mouse outside the window so no tooltip covers the picture.
+        java.awt.Robot awt = new java.awt.Robot();
+        awt.mouseMove(r.x + r.width + 50, r.y + r.height + 50);
+        awt.waitForIdle();
+        Thread.sleep(1500); // let a tooltip that was showing time out; a picture, not a test, waits here
+        Files.createDirectories(Path.of(target));
+        javax.imageio.ImageIO.write(new java.awt.Robot().createScreenCapture(r), "png", Path.of(target, name).toFile());
+    }
+
     /** Saves the screen under target/ to see what a failed window test saw. */
     static void screenshot(String name) {
         try {
