@@ -103,7 +103,8 @@ class BrokerTest {
                 order.add(r.footer().replyText());
             }
         });
-        CompletableFuture<OutgoingServerMessage> busy = c.send(CLOCK, "sleep 1500", Priority.NORMAL, null);
+        // Long enough that all 101 requests are queued behind it even on a loaded machine.
+        CompletableFuture<OutgoingServerMessage> busy = c.send(CLOCK, "sleep 3000", Priority.NORMAL, null);
         awaitBusy(c);
         List<CompletableFuture<OutgoingServerMessage>> all = new ArrayList<>();
         for (int i = 0; i < 100; i++) {

@@ -248,11 +248,20 @@ class HostileInputTest {
         OutgoingServerMessage q = queued.get(20, TimeUnit.SECONDS);
         assertThat(q.footer().errorCode()).isEqualTo(ErrorCode.TIMEOUT);
         assertThat(q.footer().replyText()).contains("withdrawn and will not run");
-        // After the sleep ends, the MailBox serves again and the withdrawn echo never ran.
+        // Once the sleep has ended the MailBox serves again, and the withdrawn echo never ran.
+        awaitIdle(c);
         assertThat(c.call(CLOCK, "echo after", Priority.NORMAL, T, null).footer().replyText()).isEqualTo("after");
         assertThat(finals).extracting(m -> m.header().body())
                 .containsExactlyInAnyOrder("sleep 5000", "echo queued behind", "echo after");
         assertThat(finals.get(2).header().body()).isEqualTo("echo after");
+    }
+
+    private static void awaitIdle(ClientSocketHandler c) throws Exception {
+        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
+        while (((org.ripv.messages.MailboxStatus) c.call("", "?status " + CLOCK, Priority.NORMAL, T, null).footer().result()).busy()) {
+            assertThat(System.nanoTime()).as("the MailBox becomes idle").isLessThan(end);
+            Thread.sleep(50);
+        }
     }
 
     @Test

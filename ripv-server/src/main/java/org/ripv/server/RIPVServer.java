@@ -42,6 +42,7 @@ import org.ripv.rmi.GenericRMIInterface;
 import org.ripv.rmi.RmiSupport;
 import org.ripv.server.files.FileStore;
 import org.ripv.server.handlers.SocketHandler;
+import org.ripv.server.http.LandingPage;
 import org.ripv.server.permit.PermitFile;
 import org.ripv.wire.FrameCodec;
 import org.slf4j.Logger;
@@ -90,7 +91,7 @@ public final class RIPVServer implements AutoCloseable {
     private Thread acceptor;
     private Registry registry;
     private int registryPort;
-    private AutoCloseable landingPage;
+    private LandingPage landingPage;
     private volatile boolean running;
 
     /** An operator's hold on a MailBox ({@code ?lock}). */
@@ -157,6 +158,12 @@ public final class RIPVServer implements AutoCloseable {
             releaseAfterFailedStart();
             throw e;
         }
+        try {
+            startLandingPage(bind);
+        } catch (IOException | RuntimeException e) {
+            releaseAfterFailedStart();
+            throw e;
+        }
         running = true;
         acceptor = new Thread(this::acceptLoop, "ripv-server-acceptor");
         acceptor.setDaemon(true);
@@ -168,6 +175,13 @@ public final class RIPVServer implements AutoCloseable {
     }
 
     private void releaseAfterFailedStart() {
+        if (landingPage != null) {
+            try {
+                landingPage.close();
+            } catch (Exception ignored) {
+                // closing anyway
+            }
+        }
         if (listener != null) {
             try {
                 listener.close();
@@ -190,9 +204,36 @@ public final class RIPVServer implements AutoCloseable {
         postOffice.stop();
     }
 
-    /** Attaches something to stop with the server (the landing page). */
-    public void attach(AutoCloseable part) {
-        this.landingPage = part;
+    /** Starts the landing page on the configured HTTP port (-1: none). */
+    private void startLandingPage(InetAddress bind) throws IOException {
+        if (config.httpPort() < 0) {
+            return;
+        }
+        LandingPage page = new LandingPage(new LandingPage.Options(new InetSocketAddress(bind, config.httpPort()),
+                files.uploadDir(), config.maxUpload(), config.clientJar(), this::describe, port()));
+        try {
+            page.start();
+        } catch (IOException e) {
+            throw new IOException("cannot serve the landing page on port " + config.httpPort() + " (in use? --http-port 0 turns it off): "
+                    + e.getMessage(), e);
+        }
+        landingPage = page;
+    }
+
+    /** What the landing page says this server is. */
+    private String describe() {
+        StringBuilder b = new StringBuilder("RIPVServer on " + org.ripv.naming.Handles.localHost() + "\n");
+        b.append("Clients connect to port ").append(port()).append(config.tls() == null ? "" : " (TLS)").append('\n');
+        b.append("Services register in the RMI registry on port ").append(registryPort).append('\n');
+        List<ServiceReference> list = services();
+        b.append(list.size()).append(" service(s) registered");
+        list.forEach(r -> b.append("\n  ").append(r.descriptor().name()).append("  ").append(r.descriptor().description()));
+        return b.toString();
+    }
+
+    /** The landing page's port, or -1 when it is off. */
+    public int httpPort() {
+        return landingPage == null ? -1 : landingPage.port();
     }
 
     private static int freePort() throws IOException {

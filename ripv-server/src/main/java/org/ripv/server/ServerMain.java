@@ -89,7 +89,6 @@ public final class ServerMain implements Callable<Integer> {
             }
             RIPVServer server = new RIPVServer(config);
             server.start();
-            LandingPages.start(server, config);
             CountDownLatch stopped = new CountDownLatch(1);
             Runtime.getRuntime().addShutdownHook(new Thread(() -> {
                 server.stop();
@@ -100,7 +99,8 @@ public final class ServerMain implements Callable<Integer> {
                 System.err.println("No users yet: add one with  ripv passwd --permit " + config.permitFile() + " USER --roles operators");
             }
             System.err.println("RIPVServer ready: clients on port " + server.port() + ", services register at "
-                    + "localhost:" + server.registryPort() + " with --secret-file " + server.secretFile());
+                    + "localhost:" + server.registryPort() + " with --secret-file " + server.secretFile()
+                    + (server.httpPort() > 0 ? ", landing page on http://localhost:" + server.httpPort() + "/" : ""));
             stopped.await();
             return 0;
         }

@@ -221,7 +221,7 @@ public final class DataVisServer extends RIPVService {
             request.progress("plotting " + summary.rows() + " rows of " + file.name() + " with the " + config.worker()
                     + " worker", new Progress("rows checked and handed to the " + config.worker() + " worker",
                             summary.rows(), summary.rows(), 0));
-            String status = awaitWorker(watch, vis);
+            String status = awaitWorker(watch, vis, exchangeName);
             if (!status.equals("1") && !status.isEmpty()) {
                 String why = status.startsWith("0") ? status.substring(1).strip() : status;
                 throw new ServiceException(ErrorCode.WORKER_ERROR, "the " + config.worker() + " worker could not plot "
@@ -264,17 +264,20 @@ public final class DataVisServer extends RIPVService {
 
     /**
      * Waits for this request's ok.dat and returns its first line. An ok.dat that appears while
-     * our data.dat or info.dat is still there was written for an earlier, abandoned request: the
-     * protocol has the worker remove both before it writes ok.dat.
+     * our data.dat or info.dat is still there, and without our JPEG, was written for an earlier,
+     * abandoned request: the protocol has the worker remove both inputs before it writes ok.dat.
+     * (With our JPEG present it is ours even so: appendix D's original script wrote ok.dat first.)
      */
-    private String awaitWorker(WatchService watch, VisCommand vis) throws IOException, InterruptedException, ServiceException {
+    private String awaitWorker(WatchService watch, VisCommand vis, String exchangeName)
+            throws IOException, InterruptedException, ServiceException {
         Path ok = dir.resolve(Exchange.OK);
         Path data = dir.resolve(Exchange.DATA);
         Path info = dir.resolve(Exchange.INFO);
+        Path jpeg = dir.resolve(Exchange.jpegName(exchangeName));
         long deadline = System.nanoTime() + config.timeout().toNanos();
         while (true) {
             if (Files.exists(ok)) {
-                if (!Files.exists(data) && !Files.exists(info)) {
+                if (Files.exists(jpeg) || (!Files.exists(data) && !Files.exists(info))) {
                     return Exchange.firstLine(ok).orElse("");
                 }
                 log.info("removing a stale {} from an earlier request", Exchange.OK);

@@ -105,7 +105,7 @@ public final class DataVisServerCommand implements Callable<Integer> {
      * Rewrites the thesis's positional {@code //host} to {@code --server} when no --server is
      * given, since the shared launch options require it.
      */
-    static String[] thesisForm(String[] args) {
+    public static String[] thesisForm(String[] args) {
         List<String> in = List.of(args);
         boolean hasServer = in.stream().anyMatch(a -> a.equals("--server") || a.startsWith("--server="));
         if (hasServer) {

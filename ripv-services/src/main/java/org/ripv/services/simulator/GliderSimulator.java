@@ -138,12 +138,17 @@ public final class GliderSimulator implements AutoCloseable {
                     }
                     throw e;
                 }
-                try (Link link = new TcpLink(socket)) {
+                try {
+                    boolean dive;
+                    Link link = new TcpLink(socket);
                     current = link;
-                    boolean dive = session(link);
-                    current = null;
-                    if (dive) {
+                    try {
+                        dive = session(link);
+                    } finally {
+                        current = null;
                         link.close();
+                    }
+                    if (dive) {
                         serverSocket.close(); // under water nobody can connect
                         dive();
                         if (running) {

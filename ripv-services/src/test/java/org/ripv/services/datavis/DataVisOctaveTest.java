@@ -72,8 +72,9 @@ class DataVisOctaveTest {
             OctaveWorker octave = octaveOf(h.service);
             long pid = octave.pid();
             assertThat(pid).isPositive();
-            ProcessHandle.of(pid).ifPresent(ProcessHandle::destroyForcibly);
-            assertThat(ProcessHandle.of(pid).map(p -> p.onExit().orTimeout(10, TimeUnit.SECONDS).join()).isPresent()).isTrue();
+            ProcessHandle running = ProcessHandle.of(pid).orElseThrow();
+            running.destroyForcibly();
+            running.onExit().get(10, TimeUnit.SECONDS);
 
             OutgoingServiceMessage second = h.run("vis:two.dat", "two.dat", "% title: after restart\n1\n3\n2\n");
             assertThat(second.footer().status()).as(second.footer().replyText()).isEqualTo(Status.OK);

@@ -170,6 +170,16 @@ class DataVisServerTest {
     }
 
     @Test
+    void aWorkerThatSignalsBeforeDeletingItsInputsAsTheThesisDidIsStillUnderstood() throws Exception {
+        DataVisServer.Config config = DataVisServer.Config.of(tmp).withWorker(WorkerMode.NONE).withTimeout(Duration.ofSeconds(30));
+        try (VisHarness h = new VisHarness(config); FakeWorker w = new FakeWorker(tmp, FakeWorker.Mode.THESIS_ORDER)) {
+            VisHarness.decode(image(h.run("vis:a.dat", "a.dat", SAMPLE)).jpeg());
+            assertThat(w.handled.getCount()).isZero();
+            assertThat(h.leftovers()).isEmpty();
+        }
+    }
+
+    @Test
     void plotsOneAtATimeAndEachGetsItsOwnPicture() throws Exception {
         try (VisHarness h = new VisHarness(DataVisServer.Config.of(tmp))) {
             List<Long> ids = new ArrayList<>();

@@ -14,10 +14,11 @@ import java.util.concurrent.CountDownLatch;
 /**
  * A scriptable worker for the file exchange, told how to misbehave: FAIL answers {@code 0 message},
  * GARBLE writes a JPEG that is not one, NO_JPEG claims success without a picture, STALE writes
- * ok.dat without consuming data.dat (as a worker of an abandoned request would).
+ * ok.dat without consuming data.dat (as a worker of an abandoned request would), THESIS_ORDER
+ * plots but writes ok.dat before deleting the inputs, as appendix D's original script did.
  */
 final class FakeWorker implements AutoCloseable {
-    enum Mode { FAIL, GARBLE, NO_JPEG, STALE }
+    enum Mode { FAIL, GARBLE, NO_JPEG, STALE, THESIS_ORDER }
 
     private final Path dir;
     private final Mode mode;
@@ -29,7 +30,7 @@ final class FakeWorker implements AutoCloseable {
         this.dir = dir;
         this.mode = mode;
         this.watch = FileSystems.getDefault().newWatchService();
-        dir.register(watch, StandardWatchEventKinds.ENTRY_CREATE);
+        dir.register(watch, StandardWatchEventKinds.ENTRY_CREATE, StandardWatchEventKinds.ENTRY_DELETE);
         thread = new Thread(this::run, "fake-worker-" + mode);
         thread.setDaemon(true);
         thread.start();
@@ -49,6 +50,17 @@ final class FakeWorker implements AutoCloseable {
                             ok("1");
                         }
                         case NO_JPEG -> ok("1");
+                        case THESIS_ORDER -> {
+                            Exchange.writeAtomically(dir, out + ".jpg", PlotRenderer.render(data).jpeg());
+                            Exchange.writeAtomically(dir, Exchange.OK, "1\n".getBytes(StandardCharsets.UTF_8));
+                            while (Files.exists(dir.resolve(Exchange.OK))) { // a slow script: inputs go after the service looked
+                                WatchKey k = watch.take();
+                                k.pollEvents();
+                                k.reset();
+                            }
+                            Files.deleteIfExists(data);
+                            Files.deleteIfExists(info);
+                        }
                         case STALE -> {
                             Exchange.writeAtomically(dir, Exchange.OK, "1\n".getBytes(StandardCharsets.UTF_8));
                             handled.countDown();
@@ -62,7 +74,7 @@ final class FakeWorker implements AutoCloseable {
                 k.pollEvents();
                 k.reset();
             }
-        } catch (InterruptedException | ClosedWatchServiceException | IOException e) {
+        } catch (InterruptedException | ClosedWatchServiceException | IOException | DataFormatException e) {
             // closing
         }
     }

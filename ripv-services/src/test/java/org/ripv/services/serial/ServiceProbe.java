@@ -26,6 +26,8 @@ public final class ServiceProbe {
     private final RIPVService service;
     private final LinkedBlockingQueue<OutgoingServiceMessage> replies = new LinkedBlockingQueue<>();
     private final AtomicLong ids = new AtomicLong();
+    /** Called with each PROGRESS reply as it is collected (a test can inject a fault mid-transfer). */
+    public volatile java.util.function.Consumer<OutgoingServiceMessage> onProgress = m -> { };
 
     public ServiceProbe(RIPVService service) {
         this.service = service;
@@ -63,6 +65,7 @@ public final class ServiceProbe {
             }
             if (m.footer().status() == Status.PROGRESS) {
                 progress.add(m);
+                onProgress.accept(m);
             } else {
                 return new Answer(progress, m);
             }

@@ -41,6 +41,7 @@ class SimulatorOverPtyTest {
     }
 
     @Test
+    @SuppressWarnings("try") // socat only has to live as long as the block
     void commandsAndYmodemOverAPseudoTerminal() throws Exception {
         Path server = tmp.resolve("ttyV0");
         Path vehicle = tmp.resolve("ttyV1");
@@ -79,6 +80,7 @@ class SimulatorOverPtyTest {
     }
 
     @Test
+    @SuppressWarnings("try")
     void carrierRequiredOnAPtyMeansNothingIsSent() throws Exception {
         Path server = tmp.resolve("ttyC0");
         Path far = tmp.resolve("ttyC1");

@@ -104,6 +104,38 @@ class SimulatorOverTcpTest {
     }
 
     @Test
+    void vehicleLostMidTransferGivesAClearErrorAndNoFile() throws Exception {
+        byte[] log = new byte[8 * 1024 * 1024];
+        new Random(5).nextBytes(log);
+        Files.write(glider.directory().resolve("HUGE.LOG"), log);
+        java.util.concurrent.atomic.AtomicBoolean cut = new java.util.concurrent.atomic.AtomicBoolean();
+        probe.onProgress = m -> {
+            Progress p = (Progress) m.footer().result();
+            if (p.done() > 0 && cut.compareAndSet(false, true)) {
+                glider.close(); // the vehicle vanishes with the transfer under way
+            }
+        };
+        ServiceProbe.Answer got = probe.send(handle, "ymodem:get HUGE.LOG", T);
+        assertTrue(cut.get(), "the fault was injected mid-transfer");
+        assertFalse(got.ok());
+        assertEquals(ErrorCode.DEVICE_ERROR, got.last().footer().errorCode(), got.text());
+        assertTrue(got.text().contains("reopened when it comes back"), got.text());
+        assertFalse(probe.status(handle).available());
+        try (var left = Files.walk(tmp.resolve("work"))) {
+            assertEquals(List.of(), left.filter(Files::isRegularFile).toList(), "no partial file left");
+        }
+    }
+
+    @Test
+    void echoAndPromptAreFoundWhereverTheyAre() {
+        SerialPortHandler h = new SerialPortHandler("x", settings("tcp://h:1"), tmp, s -> null);
+        assertEquals(5, SerialPortHandler.echoEnd("dir\r\nabc", "dir"));
+        assertEquals(-1, SerialPortHandler.echoEnd("dirt\r\n", "dir"));
+        assertEquals("a\nb", h.clean("\r\nBanner\r\nC:\\>dir\r\na\r\nb\r\nC:\\>", "dir"));
+        assertEquals("no echo", h.clean("no echo\r\nC:\\>  ", "dir"));
+    }
+
+    @Test
     void ymodemGetOfSeveralFilesIsABundle() throws Exception {
         ServiceProbe.Answer got = probe.send(handle, "ymodem:get MISSION1.LOG GLIDER.CFG SENSOR.DAT", T);
         assertTrue(got.ok(), got.text());

@@ -83,6 +83,7 @@ class GliderSimulatorTest {
     }
 
     @Test
+    @SuppressWarnings("try") // a connection that opens is all the check needs
     void goDropsTheConnectionAndRefusesNewOnesUntilItSurfaces() throws Exception {
         untilPrompt();
         link.write("GO\r\n".getBytes(StandardCharsets.US_ASCII));

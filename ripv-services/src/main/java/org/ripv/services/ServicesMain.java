@@ -1,0 +1,60 @@
+package org.ripv.services;
+
+import java.io.PrintStream;
+import java.util.Arrays;
+import org.ripv.services.database.DatabaseServerCommand;
+import org.ripv.services.datavis.DataVisServerCommand;
+import org.ripv.services.serial.SerialPortServerCommand;
+import org.ripv.services.simulator.SimulatorCommand;
+import picocli.CommandLine;
+
+/**
+ * {@code java -jar ripv-services.jar SERVICE [OPTIONS]}: runs one of the services (or the glider
+ * simulator). The thesis's names and forms work too: {@code SerialPortServer //host},
+ * {@code DatabaseServer //host [<driver> <url>]}, {@code DataVisServer //host}.
+ */
+public final class ServicesMain {
+    private ServicesMain() {}
+
+    static final String USAGE = String.join("\n",
+            "Usage: java -jar ripv-services.jar SERVICE [OPTIONS]   (SERVICE --help for its options)",
+            "  serial    | SerialPortServer   talk to vehicles on serial ports, ptys and TCP links; YMODEM",
+            "  database  | DatabaseServer     SQL on embedded Derby, or any JDBC database",
+            "  datavis   | DataVisServer      plots from data files through a plotting worker",
+            "  simulator                      a simulated glider (PicoDOS-like) on TCP or a pty");
+
+    public static int run(PrintStream err, String... args) {
+        if (args.length == 0 || args[0].equals("--help") || args[0].equals("-h")) {
+            err.println(USAGE);
+            return args.length == 0 ? 2 : 0;
+        }
+        String[] rest = Arrays.copyOfRange(args, 1, args.length);
+        switch (args[0]) {
+            case "serial", "SerialPortServer":
+                return execute(new SerialPortServerCommand(), SerialPortServerCommand.normalize(rest));
+            case "database", "DatabaseServer":
+                return execute(new DatabaseServerCommand(), DatabaseServerCommand.thesisArgs(rest));
+            case "datavis", "DataVisServer":
+                return execute(new DataVisServerCommand(), DataVisServerCommand.thesisForm(rest));
+            case "simulator":
+                return execute(new SimulatorCommand(), rest);
+            default:
+                err.println("Error: unknown service '" + args[0] + "'");
+                err.println(USAGE);
+                return 2;
+        }
+    }
+
+    private static int execute(Object command, String[] args) {
+        CommandLine cl = new CommandLine(command);
+        cl.setExecutionExceptionHandler((e, line, parsed) -> {
+            line.getErr().println("Error: " + (e.getMessage() == null ? e.toString() : e.getMessage()));
+            return 1;
+        });
+        return cl.execute(args);
+    }
+
+    public static void main(String[] args) {
+        System.exit(run(System.err, args));
+    }
+}
