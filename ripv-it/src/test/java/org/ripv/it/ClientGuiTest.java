@@ -260,6 +260,39 @@ class ClientGuiTest {
     }
 
     @Test
+    void cancelledTransfersLeaveNothingBehind() throws Exception {
+        newManager(Duration.ofSeconds(15));
+        manager.logIn("localhost", sys.server().port(), "alice", TestSystem.PASSWORD.toCharArray())
+                .get(T.toMillis(), TimeUnit.MILLISECONDS);
+        byte[] data = new byte[ClientSocketHandler.CHUNK * 8];
+        Path local = dir.resolve("big.bin");
+        Files.write(local, data);
+        // Cancelled before the first chunk is acknowledged: the transfer stops after it.
+        Transfer up = ui.get(() -> {
+            Transfer t = manager.upload(local);
+            t.cancel();
+            return t;
+        });
+        await("the upload to stop", () -> up.state(), st -> st != Transfer.State.RUNNING);
+        assertThat(ui.get(up::state)).as(ui.get(up::detail)).isEqualTo(Transfer.State.CANCELLED);
+        assertThat(ui.get(up::done)).isLessThan(data.length);
+        assertThat(sys.uploadDir().resolve("big.bin")).doesNotExist();
+
+        Files.write(sys.downloadDir().resolve("big.log"), data);
+        Path into = Files.createDirectories(dir.resolve("into"));
+        Transfer down = ui.get(() -> {
+            Transfer t = manager.download("big.log", into);
+            t.cancel();
+            return t;
+        });
+        await("the download to stop", () -> down.state(), st -> st != Transfer.State.RUNNING);
+        assertThat(ui.get(down::state)).isEqualTo(Transfer.State.CANCELLED);
+        try (var files = Files.list(into)) {
+            assertThat(files.toList()).as("no partial file").isEmpty();
+        }
+    }
+
+    @Test
     void managerFollowsServicesThatAppearAndVanish() throws Exception {
         newManager(Duration.ofMillis(300));
         manager.logIn("localhost", sys.server().port(), "alice", TestSystem.PASSWORD.toCharArray())
