@@ -39,6 +39,26 @@ public final class ServiceLaunchOptions {
         return Handles.localHost();
     }
 
+    /**
+     * Accepts the thesis's form {@code SerialPortServer //host}: when no {@code --server} is
+     * given, the first {@code //host} argument becomes {@code --server host}. Launchers pass
+     * their arguments through this before parsing, since {@code --server} is required.
+     */
+    public static String[] thesisForm(String[] args) {
+        java.util.List<String> out = new java.util.ArrayList<>(java.util.List.of(args));
+        boolean hasServer = out.stream().anyMatch(a -> a.equals("--server") || a.startsWith("--server="));
+        if (!hasServer) {
+            for (int i = 0; i < out.size(); i++) {
+                if (out.get(i).startsWith("//")) {
+                    out.set(i, out.get(i).substring(2));
+                    out.add(i, "--server");
+                    break;
+                }
+            }
+        }
+        return out.toArray(String[]::new);
+    }
+
     /** The server option, for launchers that accept the thesis's positional {@code //host}. */
     public void server(String value) {
         this.server = value;

@@ -1,19 +1,42 @@
 package org.ripv.bench;
 
+import java.util.Arrays;
+import org.ripv.services.bench.DataVisBenchmark;
+import org.ripv.services.bench.YmodemBenchmark;
 import picocli.CommandLine;
-import picocli.CommandLine.Command;
 
-/** {@code ./ripv bench [broker|...]}: the benchmarks whose figures docs/performance.md records. */
-@Command(name = "ripv-bench", mixinStandardHelpOptions = true,
-        description = "RIPV benchmarks. Each reports ratios against a baseline measured in the same run.",
-        subcommands = {BrokerBench.class})
-public final class BenchMain implements Runnable {
-    @Override
-    public void run() {
-        new CommandLine(new BrokerBench()).execute();
-    }
+/**
+ * {@code ./ripv bench NAME [OPTIONS]}: the benchmarks whose figures docs/performance.md records.
+ * Each measures its baseline in the same run and reports against it.
+ */
+public final class BenchMain {
+    private BenchMain() {}
 
-    public static void main(String[] args) {
-        System.exit(new CommandLine(new BenchMain()).execute(args));
+    static final String USAGE = String.join("\n",
+            "Usage: ./ripv bench NAME [OPTIONS]",
+            "  broker     the client → server → service → client round trip against a bare socket and RMI call;",
+            "             throughput with 1, 8 and 32 clients   [--seconds S] [--warmup S] [--clients 1,8,32]",
+            "  database   a 100,000-row query end to end against direct JDBC   [--rows N] [--runs N] [--warmup N]",
+            "  ymodem     YMODEM over a baud-paced relay as a share of the line rate, and against lrzsz",
+            "             [BAUD:BYTES ...], e.g. 9600:65536 115200:1048576",
+            "  datavis    vis: to JPEG for 10,000 and 1,000,000 points, built-in worker and Octave   [--no-octave]",
+            "See docs/performance.md for what each measures and the figures.");
+
+    public static void main(String[] args) throws Exception {
+        if (args.length == 0 || args[0].equals("--help") || args[0].equals("-h")) {
+            System.out.println(USAGE);
+            System.exit(args.length == 0 ? 2 : 0);
+        }
+        String[] rest = Arrays.copyOfRange(args, 1, args.length);
+        switch (args[0]) {
+            case "broker" -> System.exit(new CommandLine(new BrokerBench()).execute(rest));
+            case "database" -> DatabaseBench.main(rest);
+            case "ymodem" -> YmodemBenchmark.main(rest);
+            case "datavis" -> DataVisBenchmark.main(rest);
+            default -> {
+                System.err.println("Error: unknown benchmark '" + args[0] + "'\n" + USAGE);
+                System.exit(2);
+            }
+        }
     }
 }

@@ -52,6 +52,12 @@ class SerialEndToEndTest {
         }
         if (socat != null) {
             socat.destroy();
+            try {
+                // socat removes its pty links as it exits; let it finish before @TempDir is deleted.
+                socat.waitFor(10, java.util.concurrent.TimeUnit.SECONDS);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
         }
     }
 

@@ -2,6 +2,7 @@ package org.ripv.services;
 
 import java.io.PrintStream;
 import java.util.Arrays;
+import org.ripv.service.ServiceLaunchOptions;
 import org.ripv.services.database.DatabaseServerCommand;
 import org.ripv.services.datavis.DataVisServerCommand;
 import org.ripv.services.serial.SerialPortServerCommand;
@@ -31,11 +32,11 @@ public final class ServicesMain {
         String[] rest = Arrays.copyOfRange(args, 1, args.length);
         switch (args[0]) {
             case "serial", "SerialPortServer":
-                return execute(new SerialPortServerCommand(), SerialPortServerCommand.normalize(rest));
+                return execute(new SerialPortServerCommand(), ServiceLaunchOptions.thesisForm(rest));
             case "database", "DatabaseServer":
                 return execute(new DatabaseServerCommand(), DatabaseServerCommand.thesisArgs(rest));
             case "datavis", "DataVisServer":
-                return execute(new DataVisServerCommand(), DataVisServerCommand.thesisForm(rest));
+                return execute(new DataVisServerCommand(), ServiceLaunchOptions.thesisForm(rest));
             case "simulator":
                 return execute(new SimulatorCommand(), rest);
             default:

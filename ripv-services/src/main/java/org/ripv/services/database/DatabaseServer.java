@@ -1,11 +1,11 @@
 package org.ripv.services.database;
 
+import java.sql.SQLException;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Objects;
 import java.util.Set;
-import java.sql.SQLException;
 import org.ripv.messages.Ids;
 import org.ripv.naming.Handles;
 import org.ripv.service.RIPVService;

@@ -8,7 +8,6 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.Callable;
-import org.ripv.service.ServiceConnector;
 import org.ripv.service.ServiceLaunchOptions;
 import picocli.CommandLine;
 import picocli.CommandLine.ArgGroup;
@@ -138,23 +137,16 @@ public final class DatabaseServerCommand implements Callable<Integer> {
             System.err.println("Error: cannot open the database: " + e.getMessage());
             return 1;
         }
-        ServiceConnector connector;
+        for (DatabaseTarget t : service.targets()) {
+            System.out.println(service.name() + t.handle() + " -> " + t.safeUrl());
+        }
         try {
-            connector = ServiceConnector.connect(service, launch.toOptions());
+            return launch.serve(service); // stopping the service shuts embedded Derby down cleanly
         } catch (IOException | IllegalArgumentException e) {
             service.stop();
             System.err.println("Error: " + e.getMessage());
             return 1;
         }
-        Runtime.getRuntime().addShutdownHook(new Thread(() -> {
-            connector.close();
-            service.stop(); // shuts embedded Derby down cleanly
-        }, "ripv-database-shutdown"));
-        for (DatabaseTarget t : service.targets()) {
-            System.out.println(service.name() + t.handle() + " -> " + t.safeUrl());
-        }
-        Thread.currentThread().join(); // serve until the process is stopped
-        return 0;
     }
 
     /**

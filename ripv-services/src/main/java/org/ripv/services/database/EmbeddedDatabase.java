@@ -75,8 +75,10 @@ public final class EmbeddedDatabase {
             try (Reader r = Files.newBufferedReader(credentials, StandardCharsets.UTF_8)) {
                 p.load(r);
             }
+            String ownerPassword = require(p, "owner.password", credentials);
+            checkOpens(url, ownerPassword, db);
             log.info("reusing the vehicle database in {}", db);
-            return target(handle, url, require(p, "owner.password", credentials), require(p, "reader.password", credentials));
+            return target(handle, url, ownerPassword, require(p, "reader.password", credentials));
         }
         if (Files.exists(db)) {
             log.warn("{} has no {}: its first start did not finish; creating it again", db, CREDENTIALS);
@@ -97,6 +99,22 @@ public final class EmbeddedDatabase {
         return target(handle, url, ownerPassword, readerPassword);
     }
 
+    /** Boots the database once, so a database another process holds fails the start with a clear message. */
+    private static void checkOpens(String url, String ownerPassword, Path db) throws SQLException {
+        try (Connection c = DriverManager.getConnection(url, OWNER, ownerPassword)) {
+            c.getMetaData(); // booted and authenticated
+        } catch (SQLException e) {
+            for (SQLException x = e; x != null; x = x.getNextException()) {
+                if ("XSDB6".equals(x.getSQLState())) {
+                    throw new SQLException("the vehicle database in " + db + " is open in another process (another"
+                            + " DatabaseServer, or Derby's ij); stop it or give this one another --data", "XSDB6", e);
+                }
+            }
+            throw new SQLException("cannot open the vehicle database in " + db + ": " + DatabaseHandler.describe(e),
+                    e.getSQLState(), e);
+        }
+    }
+
     private static DatabaseTarget target(String handle, String url, String ownerPassword, String readerPassword) {
         return new DatabaseTarget(handle, null, url, OWNER, ownerPassword, READER, readerPassword, OWNER);
     }
@@ -113,8 +131,8 @@ public final class EmbeddedDatabase {
                 // The DBO's credentials must come first. Storing them turns on NATIVE::LOCAL
                 // authentication by itself (Derby sets derby.authentication.provider); it starts
                 // at the next boot.
-                st.execute("CALL SYSCS_UTIL.SYSCS_CREATE_USER('" + OWNER + "', '" + ownerPassword + "')");
-                st.execute("CALL SYSCS_UTIL.SYSCS_CREATE_USER('" + READER + "', '" + readerPassword + "')");
+                st.execute("CALL SYSCS_UTIL.SYSCS_CREATE_USER('" + OWNER + "', " + literal(ownerPassword) + ")");
+                st.execute("CALL SYSCS_UTIL.SYSCS_CREATE_USER('" + READER + "', " + literal(readerPassword) + ")");
                 setProperty(st, "derby.database.sqlAuthorization", "true");
                 setProperty(st, "derby.database.defaultConnectionMode", "noAccess");
                 setProperty(st, "derby.database.fullAccessUsers", OWNER);
@@ -135,6 +153,10 @@ public final class EmbeddedDatabase {
                 st.execute("GRANT SELECT ON " + table + " TO " + READER);
             }
         }
+    }
+
+    private static String literal(String s) {
+        return "'" + s.replace("'", "''") + "'";
     }
 
     private static void setProperty(Statement st, String key, String value) throws SQLException {

@@ -3,10 +3,7 @@ package org.ripv.services.datavis;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.time.Duration;
-import java.util.ArrayList;
-import java.util.List;
 import java.util.concurrent.Callable;
-import org.ripv.service.ServiceConnector;
 import org.ripv.service.ServiceLaunchOptions;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -81,46 +78,23 @@ public final class DataVisServerCommand implements Callable<Integer> {
         }
         DataVisServer service = new DataVisServer(launch.hostName(), config);
         PrintWriter out = spec.commandLine().getOut();
-        ServiceConnector connector;
         try {
-            connector = ServiceConnector.connect(service, launch.toOptions());
-        } catch (java.io.IOException e) {
+            service.start();
+        } catch (Exception e) {
             spec.commandLine().getErr().println("Error: cannot start the DataVisServer: " + e.getMessage()
                     + (config.worker() == WorkerMode.OCTAVE ? " (is Octave installed? try --octave PATH or --worker builtin)" : ""));
             service.stop();
             return 1;
         }
-        Runtime.getRuntime().addShutdownHook(new Thread(() -> {
-            connector.close();
-            service.stop(); // stops octave-cli too
-        }, "ripv-datavis-shutdown"));
         out.println(service.name() + " running: worker " + config.worker() + ", work directory " + service.workDir()
                 + "; registering with the server");
         out.flush();
-        Thread.currentThread().join(); // serve until the process is stopped
-        return 0;
-    }
-
-    /**
-     * Rewrites the thesis's positional {@code //host} to {@code --server} when no --server is
-     * given, since the shared launch options require it.
-     */
-    public static String[] thesisForm(String[] args) {
-        List<String> in = List.of(args);
-        boolean hasServer = in.stream().anyMatch(a -> a.equals("--server") || a.startsWith("--server="));
-        if (hasServer) {
-            return args;
-        }
-        List<String> out = new ArrayList<>();
-        for (String a : in) {
-            out.add(a.startsWith("//") ? "--server=" + a : a);
-        }
-        return out.toArray(String[]::new);
+        return launch.serve(service);
     }
 
     /** Parses and runs; returns the exit code. */
     public static int run(String... args) {
-        return new CommandLine(new DataVisServerCommand()).execute(thesisForm(args));
+        return new CommandLine(new DataVisServerCommand()).execute(ServiceLaunchOptions.thesisForm(args));
     }
 
     public static void main(String[] args) {

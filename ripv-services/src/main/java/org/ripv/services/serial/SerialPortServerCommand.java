@@ -7,7 +7,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
 import java.util.regex.Pattern;
-import org.ripv.service.ServiceConnector;
 import org.ripv.service.ServiceLaunchOptions;
 import org.ripv.services.serial.ymodem.YmodemConfig;
 import picocli.CommandLine;
@@ -131,34 +130,12 @@ public final class SerialPortServerCommand implements Callable<Integer> {
         Path work = workDir != null ? Files.createDirectories(workDir) : Files.createTempDirectory("ripv-serial");
         SerialPortServer server = new SerialPortServer(launch.hostName(), linkSettings, settings("COM1"),
                 !noEnumerate, work);
-        ServiceConnector.connect(server, launch.toOptions());
+        server.start();
         System.out.println("SerialPortServer " + server.name() + " MailBoxes: " + server.handles());
-        Thread.currentThread().join(); // serve until the process is stopped
-        return 0;
-    }
-
-    /**
-     * Accepts the thesis form {@code SerialPortServer //host} by turning a {@code //host}
-     * argument into {@code --server host} when no {@code --server} is given. Callers that run
-     * this command inside another picocli command (ServicesMain) should pass its arguments
-     * through here first, since {@code --server} is required.
-     */
-    public static String[] normalize(String[] args) {
-        List<String> out = new ArrayList<>(List.of(args));
-        boolean hasServer = out.stream().anyMatch(a -> a.equals("--server") || a.startsWith("--server="));
-        if (!hasServer) {
-            for (int i = 0; i < out.size(); i++) {
-                if (out.get(i).startsWith("//")) {
-                    out.set(i, out.get(i).substring(2));
-                    out.add(i, "--server");
-                    break;
-                }
-            }
-        }
-        return out.toArray(String[]::new);
+        return launch.serve(server);
     }
 
     public static void main(String[] args) {
-        System.exit(new CommandLine(new SerialPortServerCommand()).execute(normalize(args)));
+        System.exit(new CommandLine(new SerialPortServerCommand()).execute(ServiceLaunchOptions.thesisForm(args)));
     }
 }

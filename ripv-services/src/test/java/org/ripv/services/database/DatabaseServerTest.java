@@ -65,7 +65,7 @@ class DatabaseServerTest {
         List<MailboxStatus> boxes = service.mailboxes();
         assertThat(boxes).extracting(MailboxStatus::address).containsExactly("<DatabaseServer>::<testhost>TTY1");
         assertThat(boxes.get(0).available()).isTrue();
-        assertThat(service.descriptor().toString()).doesNotContain(((DatabaseTarget) service.targets().get(0)).password());
+        assertThat(service.descriptor().toString()).doesNotContain(service.targets().get(0).password());
     }
 
     @Test

@@ -10,7 +10,6 @@ import java.sql.ResultSet;
 import java.sql.SQLException;
 import java.sql.SQLIntegrityConstraintViolationException;
 import java.sql.Statement;
-import java.util.List;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -49,7 +48,7 @@ class SchemaTest {
     void loadsIntoEmbeddedDerbyOnDisk(@TempDir Path dir) throws Exception {
         String url = "jdbc:derby:" + dir.resolve("db");
         try (Connection c = DriverManager.getConnection(url + ";create=true")) {
-            loadAndCheck(c, true);
+            loadAndCheck(c);
         }
         shutdown(url);
     }
@@ -58,7 +57,7 @@ class SchemaTest {
     void loadsIntoDerbyInMemory() throws Exception {
         String url = "jdbc:derby:memory:schemaTest";
         try (Connection c = DriverManager.getConnection(url + ";create=true")) {
-            loadAndCheck(c, true);
+            loadAndCheck(c);
         }
         drop(url);
     }
@@ -81,12 +80,12 @@ class SchemaTest {
     void loadsOverTheDerbyNetworkServer() throws Exception {
         String url = network.url("memory:networkSchemaTest");
         try (Connection c = DriverManager.getConnection(url + ";create=true")) {
-            loadAndCheck(c, true);
+            loadAndCheck(c);
         }
     }
 
     /** Loads both scripts and checks the data and constraints; shared with {@link PostgresTest}. */
-    static void loadAndCheck(Connection c, boolean checkCounts) throws Exception {
+    static void loadAndCheck(Connection c) throws Exception {
         SqlScript.run(c, SqlScript.resource("vehicleDB.sql"), "vehicleDB.sql");
         SqlScript.run(c, SqlScript.resource("sample-data.sql"), "sample-data.sql");
         try (Statement st = c.createStatement()) {
@@ -152,9 +151,5 @@ class SchemaTest {
         } catch (SQLException expected) {
             assertThat(expected.getSQLState()).isIn("08006", "08004");
         }
-    }
-
-    static List<String> tables() {
-        return EmbeddedDatabase.TABLES;
     }
 }

@@ -208,9 +208,9 @@ class DataVisServerTest {
 
     @Test
     void launcherParsesOptionsAndTheThesisForm() {
-        assertThat(DataVisServerCommand.thesisForm(new String[] {"//deslab.mit.edu", "--worker", "octave"}))
-                .containsExactly("--server=//deslab.mit.edu", "--worker", "octave");
-        assertThat(DataVisServerCommand.thesisForm(new String[] {"--server", "h", "--timeout", "5"}))
+        assertThat(org.ripv.service.ServiceLaunchOptions.thesisForm(new String[] {"//deslab.mit.edu", "--worker", "octave"}))
+                .containsExactly("--server", "deslab.mit.edu", "--worker", "octave");
+        assertThat(org.ripv.service.ServiceLaunchOptions.thesisForm(new String[] {"--server", "h", "--timeout", "5"}))
                 .containsExactly("--server", "h", "--timeout", "5");
         DataVisServerCommand c = new DataVisServerCommand();
         new picocli.CommandLine(c).parseArgs("--server", "h", "--workdir", tmp.toString(), "--worker", "none",
@@ -230,7 +230,7 @@ class DataVisServerTest {
         java.io.StringWriter err = new java.io.StringWriter();
         picocli.CommandLine cl = new picocli.CommandLine(new DataVisServerCommand());
         cl.setErr(new java.io.PrintWriter(err, true));
-        int exit = cl.execute(DataVisServerCommand.thesisForm(new String[] {"//localhost:1", "--secret-file",
+        int exit = cl.execute(org.ripv.service.ServiceLaunchOptions.thesisForm(new String[] {"//localhost:1", "--secret-file",
                 secret.toString(), "--workdir", tmp.resolve("vis").toString(), "--worker", "octave", "--octave",
                 tmp.resolve("no-such-octave").toString()}));
         assertThat(exit).isEqualTo(1);

@@ -13,16 +13,16 @@ class SerialPortServerCommandTest {
 
     private static SerialPortServerCommand parse(String... args) {
         SerialPortServerCommand c = new SerialPortServerCommand();
-        new CommandLine(c).parseArgs(SerialPortServerCommand.normalize(args));
+        new CommandLine(c).parseArgs(org.ripv.service.ServiceLaunchOptions.thesisForm(args));
         return c;
     }
 
     @Test
     void thesisFormBecomesServerOption() {
         assertArrayEquals(new String[] {"--server", "deslab.mit.edu"},
-                SerialPortServerCommand.normalize(new String[] {"//deslab.mit.edu"}));
+                org.ripv.service.ServiceLaunchOptions.thesisForm(new String[] {"//deslab.mit.edu"}));
         assertArrayEquals(new String[] {"--server", "a", "//b"},
-                SerialPortServerCommand.normalize(new String[] {"--server", "a", "//b"}));
+                org.ripv.service.ServiceLaunchOptions.thesisForm(new String[] {"--server", "a", "//b"}));
     }
 
     @Test
