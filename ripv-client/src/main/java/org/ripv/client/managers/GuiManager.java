@@ -519,7 +519,11 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
         Result result = f.result();
         if (f.status() == Status.ERROR) {
             error(reply, origin);
-            showProgress(serviceOf(h, originService), null);
+            if (h.isServerCommand()) {
+                showProgress(serviceOf(h, originService), null);
+            } else {
+                afterServiceReply(reply, originService);
+            }
             return;
         }
         switch (f.serviceId()) {
@@ -572,19 +576,23 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
             }
             case Ids.SID_DATABASE -> {
                 database(reply, serviceOf(h, originService));
+                afterServiceReply(reply, originService);
                 return;
             }
             case Ids.SID_DATAVIS -> {
                 datavis(reply, serviceOf(h, originService));
+                afterServiceReply(reply, originService);
                 return;
             }
             case Ids.SID_SERIAL -> {
                 serial(reply, serviceOf(h, originService));
+                afterServiceReply(reply, originService);
                 return;
             }
             default -> {
                 if (!h.isServerCommand()) {
                     other(reply, serviceOf(h, originService));
+                    afterServiceReply(reply, originService);
                     return;
                 }
             }
@@ -592,6 +600,22 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
         // A server command typed in a COM panel: its text goes to that panel too.
         if (echo && f.status().isFinal()) {
             showReply(originService, LineKind.REPLY, serverText(reply));
+        }
+    }
+
+    /**
+     * After a service's final reply: the progress bar goes, and the MailBox's status is asked
+     * again, since a command may have changed it (GO submerges a glider, a plot counts).
+     */
+    private void afterServiceReply(OutgoingServerMessage reply, String originService) {
+        if (!reply.status().isFinal()) {
+            return;
+        }
+        String service = serviceOf(reply.header(), originService);
+        showProgress(service, null);
+        String mailbox = reply.header().mailboxAddress();
+        if (!mailbox.isBlank() && service != null) {
+            send("", "?status " + mailbox, Priority.NORMAL, new Origin(service, false));
         }
     }
 

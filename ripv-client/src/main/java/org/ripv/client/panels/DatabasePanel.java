@@ -105,8 +105,15 @@ public final class DatabasePanel extends JPanel {
         table.setRowSorter(new TableRowSorter<>(table.getModel()));
         table.setAutoResizeMode(JTable.AUTO_RESIZE_OFF);
         table.setFillsViewportHeight(true);
+        // Widths from the header and the first rows' text, so short tables need no dragging.
+        java.awt.FontMetrics fm = table.getFontMetrics(table.getFont());
         for (int c = 0; c < t.columns().size(); c++) {
-            table.getColumnModel().getColumn(c).setPreferredWidth(Math.max(70, Math.min(240, 9 * t.columns().get(c).length() + 30)));
+            int w = fm.stringWidth(t.columns().get(c)) + 24;
+            for (int r = 0; r < Math.min(50, t.rows().size()); r++) {
+                String v = t.rows().get(r)[c];
+                w = Math.max(w, (v == null ? 0 : fm.stringWidth(v)) + 16);
+            }
+            table.getColumnModel().getColumn(c).setPreferredWidth(Math.max(60, Math.min(360, w)));
         }
         JPanel p = new JPanel(new BorderLayout());
         p.add(new JScrollPane(table), BorderLayout.CENTER);

@@ -99,16 +99,16 @@ public final class FimPanel extends JPanel {
             manager.showNotice("pick a file in the FIM tree first, then DL", true);
             return;
         }
+        if (f.area() == FileArea.UPLOAD) {
+            manager.showNotice("DL fetches from the download directory; " + f.entry().name()
+                    + " is in the upload directory", true);
+            return;
+        }
         JFileChooser chooser = new JFileChooser(lastDir.toFile());
         chooser.setDialogTitle("Download " + f.entry().name() + " into");
         chooser.setFileSelectionMode(JFileChooser.DIRECTORIES_ONLY);
         if (chooser.showSaveDialog(this) == JFileChooser.APPROVE_OPTION) {
             lastDir = chooser.getSelectedFile().toPath();
-            if (f.area() == FileArea.UPLOAD) {
-                manager.showNotice("DL fetches from the download directory; " + f.entry().name()
-                        + " is in the upload directory", true);
-                return;
-            }
             manager.download(f.entry().name(), lastDir);
         }
     }

@@ -188,6 +188,28 @@ class PanelsTest {
     }
 
     @Test
+    void theDavPanelShowsTheLatestPlotAndScalesIt() throws IOException {
+        ServiceLayoutPanel p = new ServiceLayoutPanel(model.service(VIS), manager);
+        java.awt.image.BufferedImage img = new java.awt.image.BufferedImage(800, 600, java.awt.image.BufferedImage.TYPE_INT_RGB);
+        java.io.ByteArrayOutputStream jpeg = new java.io.ByteArrayOutputStream();
+        javax.imageio.ImageIO.write(img, "jpg", jpeg);
+        dispatch("vis:data.dat", Ids.SID_DATAVIS, VIS + "TTY1", "plotted",
+                new org.ripv.messages.ImageResult("data.jpg", jpeg.toByteArray()));
+        p.updateAll(model);
+        ImagePanel dav = p.dav();
+        assertThat(dav.image().getWidth()).isEqualTo(800);
+        // Fit into a 400x400 view: the width decides.
+        p.setSize(1200, 900);
+        dav.setSize(420, 460);
+        javax.swing.JScrollPane scroll = (javax.swing.JScrollPane) dav.getComponent(0);
+        scroll.setSize(400, 400);
+        scroll.getViewport().setSize(400, 400);
+        scroll.getViewport().setExtentSize(new java.awt.Dimension(400, 400));
+        assertThat(dav.currentScale()).isEqualTo(0.5);
+        assertThat(find(dav, "fitButton")).isInstanceOf(javax.swing.JToggleButton.class);
+    }
+
+    @Test
     void csvQuotesWhatNeedsQuotingAndTsvFollowsTheViewOrder() {
         TableResult t = new TableResult("q", List.of("A", "B"), List.of("VARCHAR", "INTEGER"), List.<String[]>of(
                 new String[] {"plain", "2"}, new String[] {"has,comma", "1"}, new String[] {"say \"hi\"", null},
