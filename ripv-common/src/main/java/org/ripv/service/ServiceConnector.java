@@ -36,6 +36,9 @@ public final class ServiceConnector implements AutoCloseable {
     private volatile String token;
     private volatile CountDownLatch registered = new CountDownLatch(1);
     private volatile boolean warnedAway;
+    /** Guards the window in which the server knows the new token and this side does not yet. */
+    private final Object tokenLock = new Object();
+    private boolean registering;
     private final java.util.concurrent.CompletableFuture<String> fatal = new java.util.concurrent.CompletableFuture<>();
 
     private ServiceConnector(RIPVService service, ServiceOptions options) throws RemoteException {
@@ -128,9 +131,22 @@ public final class ServiceConnector implements AutoCloseable {
         Registry registry = LocateRegistry.getRegistry(options.serverHost(), options.registryPort());
         GenericRMIInterface s = (GenericRMIInterface) registry.lookup(GenericRMIInterface.BINDING);
         ServiceDescriptor d = service.descriptor();
-        String t = s.register(d, stub, options.secret());
+        String t;
+        synchronized (tokenLock) {
+            registering = true;
+        }
+        try {
+            t = s.register(d, stub, options.secret());
+        } finally {
+            synchronized (tokenLock) {
+                registering = false;
+                tokenLock.notifyAll();
+            }
+        }
         server = s;
-        token = t;
+        synchronized (tokenLock) {
+            token = t;
+        }
         warnedAway = false;
         registered.countDown();
         log.info("{} registered with the RIPVServer at {}:{}", d.name(), options.serverHost(), options.registryPort());
@@ -177,9 +193,20 @@ public final class ServiceConnector implements AutoCloseable {
     /** The service's side of {@link GenericRMIInterface}. */
     private final class Remote implements GenericRMIInterface {
         private void check(String t) throws RemoteException {
-            String mine = token;
-            if (mine == null || !mine.equals(t)) {
-                throw new RemoteException("unknown session token: register first");
+            synchronized (tokenLock) {
+                // The server may call as soon as it has registered us, before register() returned here.
+                long end = System.nanoTime() + 5_000_000_000L;
+                while (registering && (token == null || !token.equals(t)) && System.nanoTime() < end) {
+                    try {
+                        tokenLock.wait(100);
+                    } catch (InterruptedException e) {
+                        Thread.currentThread().interrupt();
+                        break;
+                    }
+                }
+                if (token == null || !token.equals(t)) {
+                    throw new RemoteException("unknown session token: register first");
+                }
             }
         }
 

@@ -475,8 +475,10 @@ public final class RIPVServer implements AutoCloseable {
             if (failures >= FAILED_CHECKS_TO_REMOVE && services.remove(ref.descriptor().name(), ref)) {
                 log.warn("{} is gone ({}); removed it from the service list", ref, e.getClass().getSimpleName());
                 drop(ref, "went away");
-            } else if (failures < FAILED_CHECKS_TO_REMOVE) {
-                liveness.execute(() -> check(ref));
+            } else if (failures < FAILED_CHECKS_TO_REMOVE && !timers.isShutdown()) {
+                // Look again soon, not at once: a passing hiccup should have passed by then.
+                timers.schedule(() -> liveness.execute(() -> check(ref)), config.serviceCheck().toMillis() / 2 + 1,
+                        TimeUnit.MILLISECONDS);
             }
         } finally {
             ref.checking.set(false);
