@@ -1,14 +1,11 @@
 package org.ripv.messages;
 
-import java.util.regex.Pattern;
-
 /**
  * The six-digit identifiers of Appendix B. A reply's {@link Footer#serviceId()} carries the SID of
  * the service that produced it or the FID of the server command that answered it; clients
  * dispatch on it. New server commands take new FIDs here and in {@code docs/protocol.md}.
  */
 public final class Ids {
-    private static final Pattern SIX_DIGITS = Pattern.compile("\\d{6}");
 
     // Service IDs (SID), Appendix B.
     public static final String SID_DATABASE = "666666";
@@ -41,7 +38,16 @@ public final class Ids {
 
     /** True when {@code id} is six ASCII digits. */
     public static boolean isValid(String id) {
-        return id != null && SIX_DIGITS.matcher(id).matches();
+        if (id == null || id.length() != 6) {
+            return false;
+        }
+        for (int i = 0; i < 6; i++) {
+            char c = id.charAt(i);
+            if (c < '0' || c > '9') {
+                return false;
+            }
+        }
+        return true;
     }
 
     /** Returns {@code id} or throws when it is not six digits. */

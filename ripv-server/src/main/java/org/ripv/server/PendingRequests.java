@@ -6,7 +6,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ScheduledExecutorService;
-import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
 import org.ripv.messages.Header;
@@ -15,20 +14,40 @@ import org.ripv.messages.Header;
  * The requests forwarded to services and not yet answered. It is what makes every request end
  * in exactly one final reply: a request that hears nothing (not even PROGRESS) for the timeout,
  * or whose service goes away, is failed here; a reply that arrives after that is dropped.
+ * Deadlines are checked by one sweep a few times a second rather than one timer per request,
+ * which costs nothing per request on the hot path.
  */
 final class PendingRequests {
-    /** One forwarded request. */
-    record Pending(Header header, String service, ScheduledFuture<?> timer) {}
+    /** One forwarded request; its deadline moves on with each PROGRESS reply. */
+    static final class Pending {
+        private final Header header;
+        private final String service;
+        private volatile long deadlineNanos;
+
+        Pending(Header header, String service, long deadlineNanos) {
+            this.header = header;
+            this.service = service;
+            this.deadlineNanos = deadlineNanos;
+        }
+
+        Header header() {
+            return header;
+        }
+
+        String service() {
+            return service;
+        }
+    }
 
     private final Map<String, Pending> pending = new ConcurrentHashMap<>();
-    private final ScheduledExecutorService timers;
-    private final Duration timeout;
+    private final long timeoutNanos;
     private final Consumer<Pending> onTimeout;
 
     PendingRequests(ScheduledExecutorService timers, Duration timeout, Consumer<Pending> onTimeout) {
-        this.timers = timers;
-        this.timeout = timeout;
+        this.timeoutNanos = timeout.toNanos();
         this.onTimeout = onTimeout;
+        long sweep = Math.max(20, Math.min(250, timeout.toMillis() / 10));
+        timers.scheduleWithFixedDelay(this::sweep, sweep, sweep, TimeUnit.MILLISECONDS);
     }
 
     static String key(Header h) {
@@ -37,38 +56,17 @@ final class PendingRequests {
 
     /** Starts tracking a request; false when one with the same id is already pending. */
     boolean add(Header h, String service) {
-        String k = key(h);
-        Pending p = new Pending(h, service, schedule(k));
-        if (pending.putIfAbsent(k, p) != null) {
-            p.timer().cancel(false);
-            return false;
-        }
-        return true;
-    }
-
-    private ScheduledFuture<?> schedule(String k) {
-        return timers.schedule(() -> {
-            Pending p = pending.remove(k);
-            if (p != null) {
-                onTimeout.accept(p);
-            }
-        }, timeout.toMillis(), TimeUnit.MILLISECONDS);
+        return pending.putIfAbsent(key(h), new Pending(h, service, System.nanoTime() + timeoutNanos)) == null;
     }
 
     /** A PROGRESS reply arrived from {@code service}: restart the request's clock. Null if not pending there. */
     Pending touch(Header h, String service) {
-        String k = key(h);
-        Pending p = pending.get(k);
+        Pending p = pending.get(key(h));
         if (p == null || !p.service().equals(service)) {
             return null;
         }
-        Pending renewed = new Pending(p.header(), p.service(), schedule(k));
-        if (pending.replace(k, p, renewed)) {
-            p.timer().cancel(false);
-            return renewed;
-        }
-        renewed.timer().cancel(false);
-        return pending.get(k);
+        p.deadlineNanos = System.nanoTime() + timeoutNanos;
+        return p;
     }
 
     /**
@@ -81,16 +79,26 @@ final class PendingRequests {
         if (p == null || !p.service().equals(service) || !pending.remove(k, p)) {
             return null;
         }
-        p.timer().cancel(false);
         return p;
+    }
+
+    /** Fails every request whose deadline has passed. */
+    private void sweep() {
+        long now = System.nanoTime();
+        for (Map.Entry<String, Pending> e : pending.entrySet()) {
+            Pending p = e.getValue();
+            if (now - p.deadlineNanos >= 0 && pending.remove(e.getKey(), p)) {
+                onTimeout.accept(p);
+            }
+        }
     }
 
     /** Removes and returns every request pending at a service. */
     List<Pending> failService(String service) {
         List<Pending> out = new ArrayList<>();
-        for (Pending p : pending.values()) {
-            if (p.service().equals(service) && pending.remove(key(p.header()), p)) {
-                p.timer().cancel(false);
+        for (Map.Entry<String, Pending> e : pending.entrySet()) {
+            Pending p = e.getValue();
+            if (p.service().equals(service) && pending.remove(e.getKey(), p)) {
                 out.add(p);
             }
         }
@@ -99,13 +107,7 @@ final class PendingRequests {
 
     /** Forgets the requests of a client that went away (their replies will be dropped anyway). */
     void forgetClient(String clientId) {
-        pending.values().removeIf(p -> {
-            if (p.header().origin().clientId().equals(clientId)) {
-                p.timer().cancel(false);
-                return true;
-            }
-            return false;
-        });
+        pending.values().removeIf(p -> p.header().origin().clientId().equals(clientId));
     }
 
     int size() {
