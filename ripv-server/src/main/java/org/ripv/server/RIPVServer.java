@@ -5,16 +5,11 @@ import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.attribute.PosixFilePermissions;
 import java.rmi.RemoteException;
 import java.rmi.registry.LocateRegistry;
 import java.rmi.registry.Registry;
-import java.security.MessageDigest;
-import java.security.SecureRandom;
-import java.util.HexFormat;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
@@ -33,9 +28,6 @@ import org.ripv.messages.IncomingServerMessage;
 import org.ripv.messages.IncomingServiceMessage;
 import org.ripv.messages.MailboxStatus;
 import org.ripv.messages.OutgoingServerMessage;
-import org.ripv.messages.OutgoingServiceMessage;
-import org.ripv.messages.ServiceDescriptor;
-import org.ripv.naming.ServiceName;
 import org.ripv.post.MailBox;
 import org.ripv.post.PostOffice;
 import org.ripv.rmi.GenericRMIInterface;
@@ -79,7 +71,7 @@ public final class RIPVServer implements AutoCloseable {
     private final ExecutorService checkers;
     private final ExecutorService liveness;
     private final ExecutorService fileWork;
-    private final ServerRemote remote = new ServerRemote();
+    private final ServerRemote remote = new ServerRemote(this);
 
     private volatile PermitFile permits;
     private FileStore files;
@@ -127,7 +119,7 @@ public final class RIPVServer implements AutoCloseable {
         Files.createDirectories(config.dataDir());
         reloadPermits();
         files = new FileStore(config.dataDir().resolve("upload"), config.dataDir().resolve("download"), config.maxUpload());
-        secret = loadOrCreateSecret(config.dataDir().resolve("service.secret"));
+        secret = ServiceSecret.loadOrCreate(config.dataDir().resolve("service.secret"));
         codec = new FrameCodec(config.maxFrame());
         pending = new PendingRequests(timers, config.requestTimeout(), this::timedOut);
         box = postOffice.open(POST_OFFICE, new ServerTaskManager(this));
@@ -255,29 +247,6 @@ public final class RIPVServer implements AutoCloseable {
         }
     }
 
-    private static String loadOrCreateSecret(Path file) throws IOException {
-        if (Files.exists(file)) {
-            String s = Files.readString(file, StandardCharsets.UTF_8).trim();
-            if (s.length() >= 16) {
-                return s;
-            }
-            log.warn("{} holds no usable secret; writing a new one", file);
-        }
-        byte[] b = new byte[32];
-        new SecureRandom().nextBytes(b);
-        String s = HexFormat.of().formatHex(b);
-        Path tmp = file.resolveSibling(file.getFileName() + ".tmp");
-        Files.deleteIfExists(tmp);
-        try {
-            Files.createFile(tmp, PosixFilePermissions.asFileAttribute(PosixFilePermissions.fromString("rw-------")));
-        } catch (UnsupportedOperationException e) {
-            Files.createFile(tmp);
-        }
-        Files.writeString(tmp, s + "\n", StandardCharsets.UTF_8);
-        Files.move(tmp, file, java.nio.file.StandardCopyOption.REPLACE_EXISTING, java.nio.file.StandardCopyOption.ATOMIC_MOVE);
-        log.info("wrote a new service secret to {} (readable by its owner only)", file);
-        return s;
-    }
 
     private void acceptLoop() {
         while (running) {
@@ -392,6 +361,18 @@ public final class RIPVServer implements AutoCloseable {
         return Optional.ofNullable(clients.get(clientId));
     }
 
+    Map<String, ServiceReference> serviceMap() {
+        return services;
+    }
+
+    String secret() {
+        return secret;
+    }
+
+    PendingRequests pending() {
+        return pending;
+    }
+
     Optional<ServiceReference> service(String fullName) {
         return Optional.ofNullable(services.get(fullName));
     }
@@ -416,7 +397,7 @@ public final class RIPVServer implements AutoCloseable {
     }
 
     /** A request that could not be handed to its service: fail it, and check whether the service lives. */
-    private void undeliverable(ServiceReference ref, IncomingServiceMessage r, Exception e) {
+    void undeliverable(ServiceReference ref, IncomingServiceMessage r, Exception e) {
         log.warn("could not reach {}: {}", ref, e.toString());
         if (pending.complete(r.header(), ref.descriptor().name()) != null) {
             reply(new IncomingServerMessage(r.header()).reply(Footer.error(ref.descriptor().sid(), ErrorCode.SERVICE_GONE,
@@ -485,7 +466,7 @@ public final class RIPVServer implements AutoCloseable {
         }
     }
 
-    private void drop(ServiceReference ref, String why) {
+    void drop(ServiceReference ref, String why) {
         ref.close();
         for (PendingRequests.Pending p : pending.failService(ref.descriptor().name())) {
             reply(new IncomingServerMessage(p.header()).reply(Footer.error(ref.descriptor().sid(), ErrorCode.SERVICE_GONE,
@@ -500,71 +481,6 @@ public final class RIPVServer implements AutoCloseable {
         return l == null || l.expired() ? s : s.withLock(l.user());
     }
 
-    /** The server's side of {@link GenericRMIInterface}. */
-    private final class ServerRemote implements GenericRMIInterface {
-        @Override
-        public String register(ServiceDescriptor d, GenericRMIInterface service, String given) {
-            if (given == null || !MessageDigest.isEqual(given.getBytes(StandardCharsets.UTF_8),
-                    secret.getBytes(StandardCharsets.UTF_8))) {
-                log.warn("refused a registration of {}: wrong service secret", d == null ? "?" : d.name());
-                throw new SecurityException("wrong service secret: give the server's DATA/service.secret with --secret-file");
-            }
-            if (d == null || service == null) {
-                throw new IllegalArgumentException("a registration needs a descriptor and the service's stub");
-            }
-            ServiceName.parse(d.name());
-            byte[] t = new byte[24];
-            new SecureRandom().nextBytes(t);
-            ServiceReference ref = new ServiceReference(d, service, HexFormat.of().formatHex(t), RIPVServer.this::undeliverable);
-            ServiceReference old = services.put(d.name(), ref);
-            if (old != null) {
-                drop(old, "registered again");
-            }
-            log.info("{} registered ({})", ref, d.description());
-            return ref.token();
-        }
-
-        @Override
-        public void serviceReply(String token, OutgoingServiceMessage reply) {
-            ServiceReference ref = services.values().stream().filter(r -> r.token().equals(token)).findFirst()
-                    .orElseThrow(() -> new SecurityException("unknown session token: register first"));
-            ServiceReplies.accept(RIPVServer.this, ref, reply, pending);
-        }
-
-        @Override
-        public void serviceReplies(String token, List<OutgoingServiceMessage> replies) {
-            ServiceReference ref = services.values().stream().filter(r -> r.token().equals(token)).findFirst()
-                    .orElseThrow(() -> new SecurityException("unknown session token: register first"));
-            for (OutgoingServiceMessage reply : replies) {
-                ServiceReplies.accept(RIPVServer.this, ref, reply, pending);
-            }
-        }
-
-        @Override
-        public void serviceRequests(String token, List<IncomingServiceMessage> requests) {
-            throw new UnsupportedOperationException("the RIPVServer takes no service requests");
-        }
-
-        @Override
-        public boolean heartbeat(String token) {
-            return services.values().stream().anyMatch(r -> r.token().equals(token));
-        }
-
-        @Override
-        public void serviceRequest(String token, IncomingServiceMessage request) {
-            throw new UnsupportedOperationException("the RIPVServer takes no service requests");
-        }
-
-        @Override
-        public boolean withdraw(String token, String mailbox, String clientId, long messageId) {
-            throw new UnsupportedOperationException("the RIPVServer runs no service MailBoxes");
-        }
-
-        @Override
-        public List<MailboxStatus> mailboxes(String token) {
-            throw new UnsupportedOperationException("ask ?mailboxes over the client socket");
-        }
-    }
 
     /** The client port (useful with port 0). */
     public int port() {

@@ -1,0 +1,98 @@
+package org.ripv.server;
+
+import java.nio.charset.StandardCharsets;
+import java.security.MessageDigest;
+import java.security.SecureRandom;
+import java.util.HexFormat;
+import java.util.List;
+import org.ripv.messages.IncomingServiceMessage;
+import org.ripv.messages.MailboxStatus;
+import org.ripv.messages.OutgoingServiceMessage;
+import org.ripv.messages.ServiceDescriptor;
+import org.ripv.naming.ServiceName;
+import org.ripv.rmi.GenericRMIInterface;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * The server's side of {@link GenericRMIInterface}: registration with the service secret,
+ * replies called back by services, and their heartbeats. Every call but {@code register}
+ * must carry the token the registration handed out.
+ */
+final class ServerRemote implements GenericRMIInterface {
+    private static final Logger log = LoggerFactory.getLogger(ServerRemote.class);
+
+    private final RIPVServer server;
+
+    ServerRemote(RIPVServer server) {
+        this.server = server;
+    }
+
+    @Override
+    public String register(ServiceDescriptor d, GenericRMIInterface service, String given) {
+        if (given == null || !MessageDigest.isEqual(given.getBytes(StandardCharsets.UTF_8),
+                server.secret().getBytes(StandardCharsets.UTF_8))) {
+            log.warn("refused a registration of {}: wrong service secret", d == null ? "?" : d.name());
+            throw new SecurityException("wrong service secret: give the server's DATA/service.secret with --secret-file");
+        }
+        if (d == null || service == null) {
+            throw new IllegalArgumentException("a registration needs a descriptor and the service's stub");
+        }
+        ServiceName.parse(d.name());
+        byte[] t = new byte[24];
+        new SecureRandom().nextBytes(t);
+        ServiceReference ref = new ServiceReference(d, service, HexFormat.of().formatHex(t), server::undeliverable);
+        ServiceReference old = server.serviceMap().put(d.name(), ref);
+        if (old != null) {
+            server.drop(old, "registered again");
+        }
+        log.info("{} registered ({})", ref, d.description());
+        return ref.token();
+    }
+
+    @Override
+    public void serviceReply(String token, OutgoingServiceMessage reply) {
+        ServiceReference ref = server.serviceMap().values().stream().filter(r -> r.token().equals(token)).findFirst()
+                .orElseThrow(() -> new SecurityException("unknown session token: register first"));
+        ServiceReplies.accept(server, ref, reply, server.pending());
+    }
+
+    @Override
+    public void serviceReplies(String token, List<OutgoingServiceMessage> replies) {
+        ServiceReference ref = server.serviceMap().values().stream().filter(r -> r.token().equals(token)).findFirst()
+                .orElseThrow(() -> new SecurityException("unknown session token: register first"));
+        for (OutgoingServiceMessage reply : replies) {
+            ServiceReplies.accept(server, ref, reply, server.pending());
+        }
+    }
+
+    @Override
+    public void serviceRequests(String token, List<IncomingServiceMessage> requests) {
+        throw new UnsupportedOperationException("the RIPVServer takes no service requests");
+    }
+
+    @Override
+    public boolean heartbeat(String token) {
+        return server.serviceMap().values().stream().anyMatch(r -> r.token().equals(token));
+    }
+
+    @Override
+    public void serviceRequest(String token, IncomingServiceMessage request) {
+        throw new UnsupportedOperationException("the RIPVServer takes no service requests");
+    }
+
+    @Override
+    public boolean withdraw(String token, String mailbox, String clientId, long messageId) {
+        throw new UnsupportedOperationException("the RIPVServer runs no service MailBoxes");
+    }
+
+    @Override
+    public List<MailboxStatus> mailboxes(String token) {
+        throw new UnsupportedOperationException("ask ?mailboxes over the client socket");
+    }
+
+    private ServiceReference byToken(String token) {
+        return server.serviceMap().values().stream().filter(r -> r.token().equals(token)).findFirst()
+                .orElseThrow(() -> new SecurityException("unknown session token: register first"));
+    }
+}
