@@ -73,6 +73,6 @@ public final class ClockService extends RIPVService {
 
     public static void main(String[] args) {
         CommandLine cl = Launchers.commandLine(new Launch());
-        System.exit(cl.execute(args));
+        System.exit(cl.execute(ServiceLaunchOptions.thesisForm(args)));
     }
 }

@@ -21,7 +21,7 @@ import java.util.List;
  */
 final class PackedMessage implements Serializable {
     private static final long serialVersionUID = 1L;
-    private static final int MAX_LIST = 64;
+    private static final int MAX_LIST = 255;
 
     private final byte kind;
     private final byte[] fields;

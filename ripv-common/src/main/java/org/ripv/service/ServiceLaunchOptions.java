@@ -71,16 +71,21 @@ public final class ServiceLaunchOptions {
      */
     public int serve(RIPVService service) throws Exception {
         ServiceConnector connector = ServiceConnector.connect(service, toOptions());
+        java.util.concurrent.atomic.AtomicBoolean stopping = new java.util.concurrent.atomic.AtomicBoolean();
         Thread hook = new Thread(() -> {
-            connector.close();
-            service.stop();
+            stopping.set(true);
+            service.stop();    // first: running commands end and the last replies reach the server
+            connector.close(); // then withdraw from RMI
         }, "ripv-service-shutdown");
         Runtime.getRuntime().addShutdownHook(hook);
         err.println(service.name() + " (SID " + service.sid() + ") serving; registering with " + server);
         String why = connector.awaitFailure();
+        if (stopping.get()) {
+            return 0; // Ctrl-C or SIGTERM: the hook is stopping everything
+        }
         Runtime.getRuntime().removeShutdownHook(hook);
-        connector.close();
         service.stop();
+        connector.close();
         err.println("Error: " + why);
         return 1;
     }

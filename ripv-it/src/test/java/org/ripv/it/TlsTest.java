@@ -58,6 +58,13 @@ class TlsTest {
                 plain = e;
             }
             assertThat(plain).as("a plain-TCP client cannot talk to a TLS port").isNotNull();
+
+            // 127.0.0.2 reaches the same server, but the certificate names only localhost and 127.0.0.1.
+            err.reset();
+            code = new CommandLine(new CliCommand(new ByteArrayInputStream(new byte[0]), new PrintStream(out), new PrintStream(err)))
+                    .execute("--server", "127.0.0.2:" + sys.server().port(), "--user", "alice", "--password", TestSystem.PASSWORD,
+                            "--truststore", trust.toString(), "--truststore-password", "trustpass", "--exec", "?ping");
+            assertThat(code).as("a certificate that does not name the host is refused").isEqualTo(CliCommand.EXIT_NO_SESSION);
         }
     }
 

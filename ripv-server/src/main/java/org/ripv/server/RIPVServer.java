@@ -523,6 +523,14 @@ public final class RIPVServer implements AutoCloseable {
     /** Picks up {@code ripv passwd} changes while running; a broken file keeps the old rules. */
     private void reloadPermitsIfChanged() {
         long now = stamp(config.permitFile());
+        if (now == -1) {
+            if (permitStamp != -1) {
+                // An editor may be mid-save; never fall back to the template (which has no users).
+                log.error("the permit file {} is gone; keeping the rules in force until it is back", config.permitFile());
+                permitStamp = -1;
+            }
+            return;
+        }
         if (now != permitStamp) {
             try {
                 reloadPermits();

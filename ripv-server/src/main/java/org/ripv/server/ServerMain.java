@@ -100,7 +100,7 @@ public final class ServerMain implements Callable<Integer> {
                 System.err.println("No users yet: add one with  ripv passwd --permit " + config.permitFile() + " USER --roles operators");
             }
             System.err.println("RIPVServer ready: clients on port " + server.port() + ", services register at "
-                    + "localhost:" + server.registryPort() + " with --secret-file " + server.secretFile()
+                    + (bind != null ? bind : "this host") + ":" + server.registryPort() + " with --secret-file " + server.secretFile()
                     + (server.httpPort() > 0 ? ", landing page on http://localhost:" + server.httpPort() + "/" : ""));
             stopped.await();
             return 0;

@@ -100,6 +100,12 @@ public final class ClientSocketHandler implements AutoCloseable {
     public static ClientSocketHandler connect(String host, int port, SocketFactory factory, Duration timeout)
             throws IOException {
         Socket s = factory.createSocket();
+        if (s instanceof javax.net.ssl.SSLSocket tls) {
+            // Check that the certificate names the host we asked for, not only that a CA signed it.
+            javax.net.ssl.SSLParameters p = tls.getSSLParameters();
+            p.setEndpointIdentificationAlgorithm("HTTPS");
+            tls.setSSLParameters(p);
+        }
         try {
             s.setTcpNoDelay(true);
             s.connect(new InetSocketAddress(host, port), (int) timeout.toMillis());

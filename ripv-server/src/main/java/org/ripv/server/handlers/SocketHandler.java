@@ -163,8 +163,12 @@ public final class SocketHandler {
                 try {
                     codec.writeNoFlush(out, m);
                 } catch (ProtocolException tooLarge) {
-                    // Nothing was written yet: tell the client instead of cutting it off.
+                    // Nothing was written yet: tell the client instead of cutting it off. A progress
+                    // report is only dropped, so the request still ends in its one real final reply.
                     log.warn("client {}: reply to #{} not sent: {}", clientId, m.header().messageId(), tooLarge.getMessage());
+                    if (!m.status().isFinal()) {
+                        continue;
+                    }
                     codec.writeNoFlush(out, new OutgoingServerMessage(m.header(), org.ripv.messages.Footer.error(
                             m.footer().serviceId(), org.ripv.messages.ErrorCode.TOO_LARGE,
                             "the reply was too large to send (" + tooLarge.getMessage() + "); ask for less, e.g. fewer rows")

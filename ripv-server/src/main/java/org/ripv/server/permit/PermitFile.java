@@ -37,6 +37,9 @@ public final class PermitFile {
     /** The verdict on a command, with the rule that decided it. */
     public record Decision(boolean allowed, String because) {}
 
+    /** The most roles one user may have (they travel with every request). */
+    public static final int MAX_ROLES = 64;
+
     private final Path file;
     private final Map<String, User> users;
     private final List<Rule> rules;
@@ -57,7 +60,7 @@ public final class PermitFile {
             "# user NAME HASH ROLE[,ROLE...]",
             "# allow|deny WHO SERVICE MAILBOX COMMAND-PATTERN",
             "#   WHO: a user, @role or *;  SERVICE: e.g. SerialPortServer, or RIPVServer for the server's",
-            "#   ?upload, ?download, ?lock and ?unlock (other ? commands need only a log-in);",
+            "#   ?upload, ?upload-cancel, ?download, ?lock and ?unlock (other ? commands need only a log-in);",
             "#   MAILBOX: a handle such as ttyS0 or *;  COMMAND-PATTERN: the whole command, * matching anything.",
             "# The first rule that matches decides; a command no rule allows is refused.",
             "",
@@ -103,6 +106,10 @@ public final class PermitFile {
                         throw new IllegalArgumentException(where + "a user line is 'user NAME HASH [ROLES]'");
                     }
                     List<String> roles = w.length >= 4 ? Arrays.asList(w[3].split(",")) : List.of();
+                    if (roles.size() > MAX_ROLES) {
+                        throw new IllegalArgumentException(where + "user " + w[1] + " has " + roles.size() + " roles; at most "
+                                + MAX_ROLES + " are allowed");
+                    }
                     users.put(w[1], new User(w[1], w[2], roles));
                 }
                 case "allow", "deny" -> {
