@@ -1,0 +1,125 @@
+package org.ripv.client.managers;
+
+import java.io.IOException;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.Executor;
+import java.util.function.Supplier;
+import org.ripv.client.handlers.ClientSocketHandler;
+import org.ripv.client.managers.ServiceModel.LineKind;
+import org.ripv.messages.Header;
+import org.ripv.messages.Priority;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/** Owns the requests the client sends: off the UI thread, each remembered with the COM panel it came from. */
+final class Requests {
+    // Logs under the façade's name, as before the split.
+    private static final Logger log = LoggerFactory.getLogger(GuiManager.class);
+
+    /** Where a request came from: the service tab whose COM panel sent it, and whether to echo its text. */
+    record Origin(String service, boolean echo) {}
+
+    private final ClientModel model;
+    private final Executor io;
+    private final Supplier<ClientSocketHandler> conn;
+    private final GuiInterface gui;
+    private final Map<Long, Origin> origins = new ConcurrentHashMap<>();
+
+    Requests(ClientModel model, Executor io, Supplier<ClientSocketHandler> conn, GuiInterface gui) {
+        this.model = model;
+        this.io = io;
+        this.conn = conn;
+        this.gui = gui;
+    }
+
+    /** {@code ?services} and {@code ?mailboxes}: the SEL tree, the tabs and the MAM trees. */
+    void refreshServices() {
+        background("?services");
+        background("?mailboxes");
+    }
+
+    /** {@code ?uldir ?dldir ?ulfiles ?dlfiles}: the FIM FileTree. */
+    void refreshFiles() {
+        background("?uldir");
+        background("?dldir");
+        background("?ulfiles");
+        background("?dlfiles");
+    }
+
+    void background(String command) {
+        send("", command, Priority.NORMAL, null);
+    }
+
+    /** See {@link GuiManager#sendCommand}; on the UI thread. */
+    void sendCommand(String service, String line) {
+        ServiceModel m = model.service(service);
+        String command = line == null ? "" : line.strip();
+        if (m == null || command.isEmpty()) {
+            return;
+        }
+        if (command.startsWith("?")) {
+            m.sent(command);
+            model.fire(ClientModel.Kind.COM, service);
+            send("", command, m.priority(), new Origin(service, true));
+            return;
+        }
+        if (m.target().isEmpty()) {
+            m.append(LineKind.ERROR, "pick a mailbox in the MAM tree first: '" + command + "' was not sent");
+            model.fire(ClientModel.Kind.COM, service);
+            return;
+        }
+        m.sent(command);
+        model.fire(ClientModel.Kind.COM, service);
+        send(m.target(), command, m.priority(), new Origin(service, true));
+    }
+
+    /** See {@link GuiManager#selectMailbox}; on the UI thread. */
+    void selectMailbox(String service, String mailbox) {
+        ServiceModel m = model.service(service);
+        if (m == null || mailbox == null || mailbox.equals(m.target())) {
+            return;
+        }
+        m.target(mailbox);
+        model.fire(ClientModel.Kind.COM, service);
+        send("", "?status " + mailbox, Priority.NORMAL, new Origin(service, false));
+    }
+
+    /** Where the request a reply answers came from, or null; forgotten once the reply is final. */
+    Origin origin(long messageId, boolean isFinal) {
+        return isFinal ? origins.remove(messageId) : origins.get(messageId);
+    }
+
+    /** Sends off the UI thread; a send that fails is reported where the operator looks. */
+    void send(String mailbox, String body, Priority priority, Origin origin) {
+        io.execute(() -> {
+            ClientSocketHandler h = conn.get();
+            if (h == null) {
+                failed(origin, body, "not connected to a server");
+                return;
+            }
+            Header header = Header.request(h.nextId(), mailbox, body, priority);
+            if (origin != null) {
+                origins.put(header.messageId(), origin); // before sending: the reply may beat us back
+            }
+            try {
+                h.send(header, null).whenComplete((reply, e) -> {
+                    if (e != null) {
+                        origins.remove(header.messageId());
+                        failed(origin, body, Failures.describe(e));
+                    }
+                });
+            } catch (IOException | RuntimeException e) {
+                origins.remove(header.messageId());
+                failed(origin, body, Failures.describe(e));
+            }
+        });
+    }
+
+    private void failed(Origin origin, String body, String why) {
+        log.debug("'{}' failed: {}", body, why);
+        if (origin != null && origin.echo()) {
+            gui.showReply(origin.service(), LineKind.ERROR, "'" + body + "' got no reply: " + why);
+        }
+    }
+}
