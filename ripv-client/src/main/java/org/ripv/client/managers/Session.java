@@ -94,6 +94,10 @@ final class Session {
             throw e;
         }
         h.addListener(new ConnectionListener(h));
+        if (!h.isOpen()) {
+            // It dropped between log-in and the listener: nobody would hear of it, so fail now.
+            throw new IOException("the connection to " + h.server() + " closed right after log-in");
+        }
         ClientSocketHandler old = conn;
         conn = h;
         if (old != null && old != h) {
@@ -129,8 +133,16 @@ final class Session {
         forget();
     }
 
-    /** Wipes the credentials (so no reconnect) and closes the connection. */
+    private synchronized void stopRefresher() {
+        if (refresher != null) {
+            refresher.cancel(false);
+            refresher = null;
+        }
+    }
+
+    /** Wipes the credentials (so no reconnect), stops refreshing and closes the connection. */
     private void forget() {
+        stopRefresher();
         Credentials c = credentials;
         credentials = null;
         if (c != null) {
