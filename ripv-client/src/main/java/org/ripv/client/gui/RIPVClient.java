@@ -72,8 +72,11 @@ public final class RIPVClient {
         serviceTree = new ServiceTree(this::selectService);
         tabs.setName("serviceTabs");
         tabs.addChangeListener(e -> {
-            if (!syncing && tabs.getSelectedComponent() instanceof ServiceLayoutPanel p) {
-                serviceTree.select(p.service());
+            if (tabs.getSelectedComponent() instanceof ServiceLayoutPanel p) {
+                if (!syncing) {
+                    serviceTree.select(p.service());
+                }
+                p.com().focusCommand(); // the operator can type at once
             }
         });
 

@@ -180,6 +180,11 @@ public final class ComPanel extends JPanel {
     }
 
     /** The reply area's text (for tests and copy). */
+    /** Puts the keyboard focus in the command line (when its tab is shown). */
+    public void focusCommand() {
+        javax.swing.SwingUtilities.invokeLater(command::requestFocusInWindow);
+    }
+
     public String replyText() {
         return replies.getText();
     }

@@ -1,0 +1,47 @@
+package org.ripv.server;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.io.ByteArrayInputStream;
+import java.io.InputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.ripv.server.permit.PermitFile;
+
+/** The launcher's {@code passwd}, scripted: the password comes from standard input. */
+class ServerMainTest {
+    @TempDir
+    Path dir;
+
+    private static int withStdin(String input, String... args) {
+        InputStream old = System.in;
+        System.setIn(new ByteArrayInputStream(input.getBytes(StandardCharsets.UTF_8)));
+        try {
+            return ServerMain.run(args);
+        } finally {
+            System.setIn(old);
+        }
+    }
+
+    @Test
+    void passwdAddsAUserFromStandardInputAndChangesItLater() throws Exception {
+        Path permit = dir.resolve("permit.txt");
+        assertThat(withStdin("first secret\n", "passwd", "--permit", permit.toString(), "bob", "--roles", "operators",
+                "--iterations", "1000")).isZero();
+        assertThat(PermitFile.load(permit).authenticate("bob", "first secret".toCharArray())).isPresent();
+        assertThat(withStdin("second secret\n", "passwd", "--permit", permit.toString(), "bob", "--iterations", "1000")).isZero();
+        PermitFile p = PermitFile.load(permit);
+        assertThat(p.authenticate("bob", "second secret".toCharArray())).isPresent();
+        assertThat(p.user("bob").orElseThrow().roles()).containsExactly("operators");
+    }
+
+    @Test
+    void passwdRefusesAShortPasswordAndAMissingOne() {
+        Path permit = dir.resolve("permit.txt");
+        assertThat(withStdin("short\n", "passwd", "--permit", permit.toString(), "bob")).isEqualTo(1);
+        assertThat(withStdin("", "passwd", "--permit", permit.toString(), "bob")).isEqualTo(1);
+        assertThat(ServerMain.run("passwd", "--permit", permit.toString())).isEqualTo(2);
+    }
+}
