@@ -37,7 +37,10 @@ public final class SerialPortServerCommand implements Callable<Integer> {
     String thesisServer;
 
     @Option(names = "--link", paramLabel = "DEVICE|tcp://HOST:PORT",
-            description = "A link to open besides the enumerated ports: a device path (ptys and symlinks too) or tcp://host:port. Repeatable.")
+            description = "A link to open besides the enumerated ports: a device path (ptys and symlinks too) or tcp://host:port, "
+                    + "optionally followed by its own settings, e.g. /dev/ttyUSB0,baud=9600,carrier=require "
+                    + "(keys: baud, data-bits, parity, stop-bits, carrier, line-ending, prompt, prompt-regex, idle-timeout, "
+                    + "command-timeout, send-command, receive-command). Repeatable.")
     List<String> links = new ArrayList<>();
 
     @Option(names = "--no-enumerate", description = "Do not open MailBoxes for the serial ports jSerialComm finds; only the --link ones.")
@@ -90,24 +93,60 @@ public final class SerialPortServerCommand implements Callable<Integer> {
     @Option(names = "--work", paramLabel = "DIR", description = "Where incoming files are assembled (default: a temporary directory).")
     Path workDir;
 
-    /** Builds the settings a link gets from the options. */
-    LinkSettings settings(String device) {
-        String ending = switch (lineEnding.toLowerCase(java.util.Locale.ROOT)) {
+    /** The keys a {@code --link} may override for itself, after its device: {@code DEVICE,baud=9600,...}. */
+    static final java.util.Set<String> LINK_KEYS = java.util.Set.of("baud", "data-bits", "parity", "stop-bits", "carrier",
+            "line-ending", "prompt", "prompt-regex", "idle-timeout", "command-timeout", "send-command", "receive-command");
+
+    /**
+     * Builds a link's settings: the command line's options, overridden by any {@code key=value}
+     * pairs after the device ({@code --link /dev/ttyUSB0,baud=9600,carrier=require}).
+     */
+    LinkSettings settings(String spec) {
+        String[] parts = spec.split(",(?=[a-z-]+=)");
+        String device = parts[0];
+        java.util.Map<String, String> o = new java.util.HashMap<>();
+        for (int i = 1; i < parts.length; i++) {
+            String key = parts[i].substring(0, parts[i].indexOf('='));
+            if (!LINK_KEYS.contains(key)) {
+                throw new IllegalArgumentException("--link '" + spec + "': unknown setting '" + key + "'; a link may set "
+                        + new java.util.TreeSet<>(LINK_KEYS));
+            }
+            o.put(key, parts[i].substring(key.length() + 1));
+        }
+        String ending = o.getOrDefault("line-ending", lineEnding);
+        String end = switch (ending.toLowerCase(java.util.Locale.ROOT)) {
             case "cr" -> "\r";
             case "lf" -> "\n";
             case "crlf" -> "\r\n";
-            default -> throw new IllegalArgumentException("--line-ending '" + lineEnding + "' is not cr, lf or crlf");
+            default -> throw new IllegalArgumentException("line ending '" + ending + "' is not cr, lf or crlf");
         };
-        CarrierMode mode = switch (carrier.toLowerCase(java.util.Locale.ROOT)) {
+        String carrierMode = o.getOrDefault("carrier", carrier);
+        CarrierMode mode = switch (carrierMode.toLowerCase(java.util.Locale.ROOT)) {
             case "require" -> CarrierMode.REQUIRE;
             case "ignore" -> CarrierMode.IGNORE;
-            default -> throw new IllegalArgumentException("--carrier '" + carrier + "' is not require or ignore");
+            default -> throw new IllegalArgumentException("carrier '" + carrierMode + "' is not require or ignore");
         };
-        Pattern p = promptRegex != null ? Pattern.compile(promptRegex) : Pattern.compile(Pattern.quote(prompt));
-        return new LinkSettings(device, baud, dataBits, LinkSettings.Parity.parse(parity),
-                LinkSettings.StopBits.parse(stopBits), ending, p, Duration.ofMillis(idleMillis),
-                Duration.ofSeconds(commandSeconds), mode, sendCommand, receiveCommand,
+        String regex = o.getOrDefault("prompt-regex", o.containsKey("prompt") ? null : promptRegex);
+        Pattern p = regex != null ? Pattern.compile(regex) : Pattern.compile(Pattern.quote(o.getOrDefault("prompt", prompt)));
+        return new LinkSettings(device, number(o, "baud", baud), (int) number(o, "data-bits", dataBits),
+                LinkSettings.Parity.parse(o.getOrDefault("parity", parity)),
+                LinkSettings.StopBits.parse(o.getOrDefault("stop-bits", stopBits)), end, p,
+                Duration.ofMillis(number(o, "idle-timeout", idleMillis)),
+                Duration.ofSeconds(number(o, "command-timeout", commandSeconds)), mode,
+                o.getOrDefault("send-command", sendCommand), o.getOrDefault("receive-command", receiveCommand),
                 Duration.ofSeconds(Math.max(1, reconnectSeconds)), YmodemConfig.lrzsz());
+    }
+
+    private static int number(java.util.Map<String, String> o, String key, long fallback) {
+        String v = o.get(key);
+        if (v == null) {
+            return (int) fallback;
+        }
+        try {
+            return Integer.parseInt(v);
+        } catch (NumberFormatException e) {
+            throw new IllegalArgumentException(key + " must be a whole number, got '" + v + "'");
+        }
     }
 
     @Override

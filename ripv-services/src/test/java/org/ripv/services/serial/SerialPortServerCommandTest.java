@@ -44,6 +44,28 @@ class SerialPortServerCommandTest {
     }
 
     @Test
+    void eachLinkMayOverrideTheSettingsForItself() {
+        SerialPortServerCommand c = parse("--server", "h", "--baud", "115200", "--carrier", "ignore",
+                "--link", "/dev/ttyUSB0,baud=9600,carrier=require,parity=odd,prompt=GLIDER>",
+                "--link", "tcp://gw:4001,line-ending=lf,idle-timeout=250");
+        LinkSettings radio = c.settings(c.links.get(0));
+        assertEquals("/dev/ttyUSB0", radio.device());
+        assertEquals("9600 8O1", radio.frameDescription());
+        assertEquals(CarrierMode.REQUIRE, radio.carrier());
+        assertTrue(radio.prompt().matcher("GLIDER>").find());
+        LinkSettings tcp = c.settings(c.links.get(1));
+        assertEquals("tcp://gw:4001", tcp.device());
+        assertEquals("115200 8N1", tcp.frameDescription());
+        assertEquals(CarrierMode.IGNORE, tcp.carrier());
+        assertEquals("\n", tcp.lineEnding());
+        assertEquals(250, tcp.idleTimeout().toMillis());
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> c.settings("/dev/x,speed=9600"));
+        assertTrue(e.getMessage().contains("unknown setting 'speed'"), e.getMessage());
+        e = assertThrows(IllegalArgumentException.class, () -> c.settings("/dev/x,baud=fast"));
+        assertTrue(e.getMessage().contains("'fast'"), e.getMessage());
+    }
+
+    @Test
     void defaultsArePicoDos() {
         LinkSettings s = parse("--server", "h").settings("COM1");
         assertEquals("115200 8N1", s.frameDescription());
