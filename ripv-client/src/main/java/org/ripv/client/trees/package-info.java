@@ -1,0 +1,4 @@
+/**
+ * The thesis's trees: ServiceTree (SEL), MailboxTree (MAM) and FileTree (FIM).
+ */
+package org.ripv.client.trees;
