@@ -31,6 +31,24 @@ public final class RmiSupport {
         }
     }
 
+    /**
+     * Filters every object stream of this process that has no filter of its own — above all the
+     * return values of RMI calls to other RIPV processes — with {@link WireFilter#forProcess}.
+     * For the launchers of servers and services, which own their JVM; a library user keeps
+     * control of theirs. Idempotent; false when another filter was installed first.
+     */
+    public static synchronized boolean filterProcess() {
+        if (java.io.ObjectInputFilter.Config.getSerialFilter() instanceof WireFilter) {
+            return true;
+        }
+        try {
+            java.io.ObjectInputFilter.Config.setSerialFilter(WireFilter.forProcess(MAX_RMI_BYTES));
+            return true;
+        } catch (IllegalStateException e) {
+            return false;
+        }
+    }
+
     /** Exports an object on the given port (0: any) with the RIPV allowlist on its arguments. */
     public static GenericRMIInterface export(GenericRMIInterface object, int port) throws RemoteException {
         return (GenericRMIInterface) UnicastRemoteObject.exportObject(object, port, WireFilter.forRmi(MAX_RMI_BYTES));

@@ -70,6 +70,7 @@ public final class ServiceLaunchOptions {
      * refuses it for good. What every service launcher's {@code call()} returns.
      */
     public int serve(RIPVService service) throws Exception {
+        org.ripv.rmi.RmiSupport.filterProcess();
         ServiceConnector connector = ServiceConnector.connect(service, toOptions());
         java.util.concurrent.atomic.AtomicBoolean stopping = new java.util.concurrent.atomic.AtomicBoolean();
         Thread hook = new Thread(() -> {

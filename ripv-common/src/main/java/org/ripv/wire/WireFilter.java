@@ -25,13 +25,21 @@ public final class WireFilter implements ObjectInputFilter {
             "java.rmi.server.RemoteObject", "java.rmi.server.RemoteStub", "java.rmi.Remote");
     private static final String REMOTE_INTERFACE = "org.ripv.rmi.GenericRMIInterface";
 
+    /** What RMI itself reads back in a process that calls other RIPV processes: DGC leases and exceptions. */
+    private static final Set<String> RMI_RUNTIME = Set.of(
+            "java.rmi.dgc.Lease", "java.rmi.dgc.VMID", "java.rmi.server.UID", "java.rmi.server.ObjID",
+            "java.lang.StackTraceElement", "[Ljava.lang.StackTraceElement;", "java.util.Collections$EmptyList");
+
     private final long maxBytes;
+    private final boolean allowRmiRuntime;
     private final long maxDepth;
     private final long maxRefs;
     private final long maxArray;
     private final boolean allowRemoteStubs;
 
-    private WireFilter(long maxBytes, long maxDepth, long maxRefs, long maxArray, boolean allowRemoteStubs) {
+    private WireFilter(long maxBytes, long maxDepth, long maxRefs, long maxArray, boolean allowRemoteStubs,
+                       boolean allowRmiRuntime) {
+        this.allowRmiRuntime = allowRmiRuntime;
         this.maxBytes = maxBytes;
         this.maxDepth = maxDepth;
         this.maxRefs = maxRefs;
@@ -41,12 +49,22 @@ public final class WireFilter implements ObjectInputFilter {
 
     /** The filter for one socket frame of at most {@code maxFrameBytes}. */
     public static WireFilter forFrames(int maxFrameBytes) {
-        return new WireFilter(maxFrameBytes, 16, 2_000_000, maxFrameBytes, false);
+        return new WireFilter(maxFrameBytes, 16, 2_000_000, maxFrameBytes, false, false);
     }
 
     /** The filter for RMI calls carrying messages of at most {@code maxBytes}. */
     public static WireFilter forRmi(long maxBytes) {
-        return new WireFilter(maxBytes, 24, 2_000_000, maxBytes, true);
+        return new WireFilter(maxBytes, 24, 2_000_000, maxBytes, true, false);
+    }
+
+    /**
+     * The filter for a whole RIPV server or service process ({@link ObjectInputFilter.Config}):
+     * what {@link #forRmi} accepts, plus what RMI's own machinery reads back from the processes
+     * this one calls — distributed-GC leases and exceptions from the {@code java.*} packages.
+     * With it, return values of RMI calls are filtered too, not only arguments.
+     */
+    public static WireFilter forProcess(long maxBytes) {
+        return new WireFilter(maxBytes, 24, 2_000_000, maxBytes, true, true);
     }
 
     @Override
@@ -64,7 +82,8 @@ public final class WireFilter implements ObjectInputFilter {
 
     private boolean allowed(Class<?> c) {
         while (c.isArray()) {
-            if (c == byte[].class || c == String[].class || c == Object[].class) {
+            if (c == byte[].class || c == String[].class || c == Object[].class
+                    || allowRmiRuntime && c == StackTraceElement[].class) {
                 return true;
             }
             c = c.getComponentType();
@@ -77,6 +96,10 @@ public final class WireFilter implements ObjectInputFilter {
             return false;
         }
         if (RMI.contains(name) || name.equals(REMOTE_INTERFACE)) {
+            return true;
+        }
+        if (allowRmiRuntime && (RMI_RUNTIME.contains(name)
+                || Throwable.class.isAssignableFrom(c) && name.startsWith("java."))) {
             return true;
         }
         if (Proxy.isProxyClass(c)) {

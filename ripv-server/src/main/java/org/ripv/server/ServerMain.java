@@ -88,6 +88,7 @@ public final class ServerMain implements Callable<Integer> {
             if (tlsKeystore != null) {
                 config = config.withTls(tls(tlsKeystore, tlsPasswordFile));
             }
+            org.ripv.rmi.RmiSupport.filterProcess();
             RIPVServer server = new RIPVServer(config);
             server.start();
             CountDownLatch stopped = new CountDownLatch(1);
