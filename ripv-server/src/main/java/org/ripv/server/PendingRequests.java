@@ -109,8 +109,4 @@ final class PendingRequests {
     void forgetClient(String clientId) {
         pending.values().removeIf(p -> p.header().origin().clientId().equals(clientId));
     }
-
-    int size() {
-        return pending.size();
-    }
 }

@@ -36,6 +36,7 @@ import org.ripv.server.files.FileStore;
 import org.ripv.server.handlers.SocketHandler;
 import org.ripv.server.http.LandingPage;
 import org.ripv.server.permit.PermitFile;
+import org.ripv.server.permit.PermitWatcher;
 import org.ripv.wire.FrameCodec;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -70,10 +71,11 @@ public final class RIPVServer implements AutoCloseable {
     private final ScheduledExecutorService timers;
     private final ExecutorService checkers;
     private final ExecutorService liveness;
+    private final ServiceLiveness serviceLiveness;
     private final ExecutorService fileWork;
     private final ServerRemote remote = new ServerRemote(this);
 
-    private volatile PermitFile permits;
+    private PermitWatcher permits;
     private FileStore files;
     private String secret;
     private FrameCodec codec;
@@ -99,6 +101,7 @@ public final class RIPVServer implements AutoCloseable {
         this.checkers = Executors.newFixedThreadPool(4, named("ripv-service-query"));
         this.liveness = Executors.newFixedThreadPool(2, named("ripv-service-check"));
         this.fileWork = Executors.newFixedThreadPool(2, named("ripv-file-work"));
+        this.serviceLiveness = new ServiceLiveness(services, liveness, timers, config.serviceCheck(), this::drop);
     }
 
     private static java.util.concurrent.ThreadFactory named(String name) {
@@ -117,7 +120,7 @@ public final class RIPVServer implements AutoCloseable {
         }
         RmiSupport.configure(5_000, 15_000);
         Files.createDirectories(config.dataDir());
-        reloadPermits();
+        permits = new PermitWatcher(config.permitFile());
         files = new FileStore(config.dataDir().resolve("upload"), config.dataDir().resolve("download"), config.maxUpload());
         secret = ServiceSecret.loadOrCreate(config.dataDir().resolve("service.secret"));
         codec = new FrameCodec(config.maxFrame());
@@ -147,13 +150,13 @@ public final class RIPVServer implements AutoCloseable {
                 throw new IOException("cannot listen for clients on port " + config.port() + " (in use?): " + e.getMessage(), e);
             }
         } catch (IOException | RuntimeException e) {
-            releaseAfterFailedStart();
+            release();
             throw e;
         }
         try {
             startLandingPage(bind);
         } catch (IOException | RuntimeException e) {
-            releaseAfterFailedStart();
+            release();
             throw e;
         }
         running = true;
@@ -164,10 +167,6 @@ public final class RIPVServer implements AutoCloseable {
         timers.scheduleWithFixedDelay(this::checkServices, check, check, TimeUnit.MILLISECONDS);
         log.info("RIPVServer listening for clients on port {}{}, RMI registry on port {}, data in {}", port(),
                 config.tls() == null ? "" : " (TLS)", registryPort, config.dataDir().toAbsolutePath());
-    }
-
-    private void releaseAfterFailedStart() {
-        release();
     }
 
     /** Closes every port, thread and export the server may have opened; safe on a half-started server. */
@@ -337,7 +336,7 @@ public final class RIPVServer implements AutoCloseable {
     }
 
     PermitFile permits() {
-        return permits;
+        return permits.current();
     }
 
     FileStore files() {
@@ -403,9 +402,7 @@ public final class RIPVServer implements AutoCloseable {
             reply(new IncomingServerMessage(r.header()).reply(Footer.error(ref.descriptor().sid(), ErrorCode.SERVICE_GONE,
                     ref.descriptor().name() + " could not be reached: " + e.getMessage()).via(SERVER_SERVICE)));
         }
-        if (!liveness.isShutdown()) {
-            liveness.execute(() -> check(ref));
-        }
+        serviceLiveness.soon(ref);
     }
 
     /** A request heard nothing for the timeout: withdraw it if it has not started, and say which happened. */
@@ -435,35 +432,8 @@ public final class RIPVServer implements AutoCloseable {
     }
 
     private void checkServices() {
-        for (ServiceReference ref : services.values()) {
-            liveness.execute(() -> check(ref));
-        }
-        reloadPermitsIfChanged();
-    }
-
-    /** Removes a service that failed this many checks in a row. */
-    static final int FAILED_CHECKS_TO_REMOVE = 2;
-
-    private void check(ServiceReference ref) {
-        if (!ref.checking.compareAndSet(false, true)) {
-            return; // the last check has not finished; do not pile up more
-        }
-        try {
-            ref.mailboxes();
-            ref.failedChecks.set(0);
-        } catch (RemoteException | RuntimeException e) {
-            int failures = ref.failedChecks.incrementAndGet();
-            if (failures >= FAILED_CHECKS_TO_REMOVE && services.remove(ref.descriptor().name(), ref)) {
-                log.warn("{} is gone ({}); removed it from the service list", ref, e.getClass().getSimpleName());
-                drop(ref, "went away");
-            } else if (failures < FAILED_CHECKS_TO_REMOVE && !timers.isShutdown()) {
-                // Look again soon, not at once: a passing hiccup should have passed by then.
-                timers.schedule(() -> liveness.execute(() -> check(ref)), config.serviceCheck().toMillis() / 2 + 1,
-                        TimeUnit.MILLISECONDS);
-            }
-        } finally {
-            ref.checking.set(false);
-        }
+        serviceLiveness.checkAll();
+        permits.reloadIfChanged();
     }
 
     void drop(ServiceReference ref, String why) {
@@ -504,42 +474,9 @@ public final class RIPVServer implements AutoCloseable {
         return services.size();
     }
 
-    /** Reloads the permit file (after {@code ripv passwd}). */
+    /** Reloads the permit file now (the server also notices changes by itself). */
     public void reloadPermits() throws IOException {
-        permits = PermitFile.load(config.permitFile());
-        permitStamp = stamp(config.permitFile());
-    }
-
-    private volatile long permitStamp;
-
-    private static long stamp(Path p) {
-        try {
-            return Files.getLastModifiedTime(p).toMillis() ^ Files.size(p);
-        } catch (IOException e) {
-            return -1;
-        }
-    }
-
-    /** Picks up {@code ripv passwd} changes while running; a broken file keeps the old rules. */
-    private void reloadPermitsIfChanged() {
-        long now = stamp(config.permitFile());
-        if (now == -1) {
-            if (permitStamp != -1) {
-                // An editor may be mid-save; never fall back to the template (which has no users).
-                log.error("the permit file {} is gone; keeping the rules in force until it is back", config.permitFile());
-                permitStamp = -1;
-            }
-            return;
-        }
-        if (now != permitStamp) {
-            try {
-                reloadPermits();
-                log.info("reloaded the permit file {}", config.permitFile());
-            } catch (IOException | RuntimeException e) {
-                permitStamp = now;
-                log.error("the permit file {} is broken; keeping the rules in force: {}", config.permitFile(), e.getMessage());
-            }
-        }
+        permits.reload();
     }
 
     /** Stops listening, disconnects clients, withdraws from RMI. Idempotent. */

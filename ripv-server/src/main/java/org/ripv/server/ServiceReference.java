@@ -21,7 +21,6 @@ final class ServiceReference {
     static final int MAX_BATCH = 256;
 
     private final ServiceDescriptor descriptor;
-    private final ServiceName name;
     private final GenericRMIInterface stub;
     private final String token;
     private final LinkedBlockingQueue<IncomingServiceMessage> queue = new LinkedBlockingQueue<>();
@@ -40,7 +39,7 @@ final class ServiceReference {
     ServiceReference(ServiceDescriptor descriptor, GenericRMIInterface stub, String token, Failure onFailure) {
         this.descriptor = descriptor;
         this.onFailure = onFailure;
-        this.name = ServiceName.parse(descriptor.name());
+        ServiceName.parse(descriptor.name()); // refuses a malformed name before any thread starts
         this.stub = stub;
         this.token = token;
         this.sender = new Thread(this::sendLoop, "ripv-service-ref-" + descriptor.name());
@@ -50,10 +49,6 @@ final class ServiceReference {
 
     ServiceDescriptor descriptor() {
         return descriptor;
-    }
-
-    ServiceName name() {
-        return name;
     }
 
     String token() {

@@ -2,7 +2,6 @@ package org.ripv.server.files;
 
 import java.io.IOException;
 import java.io.InputStream;
-import java.io.OutputStream;
 import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
@@ -184,29 +183,6 @@ public final class FileStore {
             for (Path p : ds) {
                 Files.deleteIfExists(p);
             }
-        }
-    }
-
-    /** Copies a stream to a new file in the upload directory, all or nothing (the landing page's form). */
-    public Path storeUpload(String name, InputStream data, long limit) throws IOException {
-        FileNames.check(name);
-        Path tmp = Files.createTempFile(uploadDir.resolve(PARTIAL), "form-", ".part");
-        try {
-            try (OutputStream out = Files.newOutputStream(tmp)) {
-                byte[] buf = new byte[64 * 1024];
-                long n = 0;
-                int r;
-                while ((r = data.read(buf)) > 0) {
-                    n += r;
-                    if (n > limit) {
-                        throw new FileTooLargeException("'" + name + "' is over the upload limit of " + limit + " bytes");
-                    }
-                    out.write(buf, 0, r);
-                }
-            }
-            return Files.move(tmp, uploadDir.resolve(name), StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-        } finally {
-            Files.deleteIfExists(tmp);
         }
     }
 }
