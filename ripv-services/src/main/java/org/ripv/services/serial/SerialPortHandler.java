@@ -13,13 +13,11 @@ import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.locks.ReentrantLock;
-import java.util.regex.Matcher;
 import java.util.stream.Stream;
 import org.ripv.exceptions.ServiceException;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.FileBundle;
 import org.ripv.messages.FileData;
-import org.ripv.messages.Progress;
 import org.ripv.service.Availability;
 import org.ripv.service.CommandHandler;
 import org.ripv.service.Reply;
@@ -28,7 +26,6 @@ import org.ripv.services.serial.ymodem.DirectorySink;
 import org.ripv.services.serial.ymodem.FileHeader;
 import org.ripv.services.serial.ymodem.FileNames;
 import org.ripv.services.serial.ymodem.SendFile;
-import org.ripv.services.serial.ymodem.TransferListener;
 import org.ripv.services.serial.ymodem.YmodemException;
 import org.ripv.services.serial.ymodem.YmodemReceiver;
 import org.ripv.services.serial.ymodem.YmodemSender;
@@ -64,6 +61,7 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
 
     private final String handle;
     private final LinkSettings settings;
+    private final VehicleText vehicleText;
     private final Path workDir;
     private final LinkOpener opener;
     private final ReentrantLock lock = new ReentrantLock();
@@ -79,6 +77,7 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
     public SerialPortHandler(String handle, LinkSettings settings, Path workDir, LinkOpener opener) {
         this.handle = handle;
         this.settings = settings;
+        this.vehicleText = new VehicleText(settings.prompt());
         this.workDir = workDir;
         this.opener = opener;
     }
@@ -173,7 +172,7 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
             throw new ServiceException(ErrorCode.TIMEOUT, "no answer to '" + command + "' from " + l.describe()
                     + " within " + settings.idleTimeout().toMillis() + " ms");
         }
-        String reply = clean(text.toString(), command);
+        String reply = vehicleText.clean(text.toString(), command);
         if (closed) {
             linkFailed(l, new EOFException("closed by the vehicle"));
             return Reply.ok(reply + (reply.isEmpty() ? "" : "\n") + "(the vehicle closed the link)");
@@ -202,8 +201,8 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
                 return false;
             }
             text.append(new String(buf, 0, n, StandardCharsets.ISO_8859_1));
-            if (endsWithPrompt(text)) {
-                if (command == null || echoEnd(text, command) >= 0) {
+            if (vehicleText.endsWithPrompt(text)) {
+                if (command == null || VehicleText.echoEnd(text, command) >= 0) {
                     return false;
                 }
                 wait = Math.min(idle, 200); // a banner's prompt, or a vehicle that does not echo
@@ -216,62 +215,6 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
 
     private boolean readReply(Link l, StringBuilder text, long maxMillis) throws IOException {
         return readReply(l, text, maxMillis, null);
-    }
-
-    /** Where the echoed command line ends in {@code text}, or -1 if it has not been echoed. */
-    static int echoEnd(CharSequence text, String command) {
-        String t = text.toString();
-        int from = 0;
-        while (true) {
-            int i = t.indexOf(command, from);
-            if (i < 0) {
-                return -1;
-            }
-            int after = i + command.length();
-            if (after < t.length() && (t.charAt(after) == '\r' || t.charAt(after) == '\n')) {
-                return t.charAt(after) == '\r' && after + 1 < t.length() && t.charAt(after + 1) == '\n'
-                        ? after + 2 : after + 1;
-            }
-            from = i + 1;
-        }
-    }
-
-    /** True when the vehicle has echoed {@code command} and is back at its prompt after it. */
-    private boolean promptAfterEcho(CharSequence text, String command) {
-        int end = echoEnd(text, command);
-        return end >= 0 && endsWithPrompt(text.subSequence(end, text.length()));
-    }
-
-    private boolean endsWithPrompt(CharSequence text) {
-        int from = Math.max(0, text.length() - 256);
-        Matcher m = settings.prompt().matcher(text.subSequence(from, text.length()));
-        while (m.find()) {
-            if (text.subSequence(from + m.end(), text.length()).toString().isBlank()) {
-                return true;
-            }
-        }
-        return false;
-    }
-
-    /** Drops the echoed command line at the start and the prompt at the end. */
-    String clean(String raw, String command) {
-        int echo = echoEnd(raw, command);
-        String s = echo >= 0 ? raw.substring(echo) : raw;
-        int from = Math.max(0, s.length() - 256);
-        Matcher m = settings.prompt().matcher(s);
-        int cut = -1;
-        if (m.find(from)) {
-            do {
-                if (s.substring(m.end()).isBlank()) {
-                    cut = m.start();
-                    break;
-                }
-            } while (m.find());
-        }
-        if (cut >= 0) {
-            s = s.substring(0, cut);
-        }
-        return s.replace("\r\n", "\n").replace('\r', '\n').stripTrailing();
     }
 
     /** Throws away whatever the vehicle said unasked, so it does not end up in the next reply. */
@@ -327,7 +270,7 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
             List<FileHeader> files;
             try {
                 files = new YmodemReceiver(l, settings.ymodem(), progress)
-                        .stopWaitingWhen(text -> promptAfterEcho(text, vehicleCommand)).receiveBatch(sink);
+                        .stopWaitingWhen(text -> vehicleText.promptAfterEcho(text, vehicleCommand)).receiveBatch(sink);
             } catch (YmodemException e) {
                 // our 'C's may sit in the shell's line: end that line so the shell is clean again
                 l.write(settings.lineEnding().getBytes(StandardCharsets.ISO_8859_1));
@@ -394,7 +337,7 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
             if (n > 0) {
                 said.append(new String(buf, 0, n, StandardCharsets.ISO_8859_1));
             }
-            int echo = echoEnd(said, vehicleCommand);
+            int echo = VehicleText.echoEnd(said, vehicleCommand);
             String rest = echo >= 0 ? said.substring(echo) : said.toString();
             if (rest.strip().equals("C")) {
                 // a receiver sends 'C' and waits; a shell's text goes on at once
@@ -405,9 +348,9 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
                 said.append(new String(buf, 0, more, StandardCharsets.ISO_8859_1));
                 continue;
             }
-            if (echo >= 0 && endsWithPrompt(rest) || n == 0 && !rest.isBlank()) {
+            if (echo >= 0 && vehicleText.endsWithPrompt(rest) || n == 0 && !rest.isBlank()) {
                 throw new ServiceException(ErrorCode.TRANSFER_FAILED, "the vehicle did not start receiving after '"
-                        + vehicleCommand + "'; it said: " + clean(rest, vehicleCommand));
+                        + vehicleCommand + "'; it said: " + vehicleText.clean(rest, vehicleCommand));
             }
         }
         throw new ServiceException(ErrorCode.TRANSFER_FAILED, "the vehicle did not start receiving within "
@@ -420,50 +363,6 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
             b.append(b.isEmpty() ? "" : ", ").append(f.name()).append(" (").append(f.total()).append(" bytes)");
         }
         return b.toString();
-    }
-
-    /** Turns transfer events into PROGRESS replies, at most a few per second. */
-    private static final class ProgressReporter implements TransferListener {
-        private final Request request;
-        private final String verb;
-        private final long start = System.nanoTime();
-        private long fileStart;
-        private long lastSent;
-
-        ProgressReporter(Request request, String verb) {
-            this.request = request;
-            this.verb = verb;
-        }
-
-        @Override
-        public void started(FileHeader file) {
-            fileStart = System.nanoTime();
-            send(file, 0);
-        }
-
-        @Override
-        public void progress(FileHeader file, long done) {
-            long now = System.nanoTime();
-            if (now - lastSent > 500_000_000L) {
-                send(file, done);
-            }
-        }
-
-        @Override
-        public void finished(FileHeader file) {
-            send(file, Math.max(0, file.length()));
-        }
-
-        private void send(FileHeader file, long done) {
-            lastSent = System.nanoTime();
-            double seconds = Math.max(1e-3, (lastSent - fileStart) / 1e9);
-            request.progress(verb + " " + file.name(), new Progress(file.name(), done, file.length(), done / seconds));
-        }
-
-        String summary(long bytes) {
-            double seconds = Math.max(1e-3, (System.nanoTime() - start) / 1e9);
-            return String.format(java.util.Locale.ROOT, "%.1f s (%.0f bytes/s)", seconds, bytes / seconds);
-        }
     }
 
     // ---- link state
