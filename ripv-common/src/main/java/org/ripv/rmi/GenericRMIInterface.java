@@ -3,6 +3,7 @@ package org.ripv.rmi;
 import java.rmi.Remote;
 import java.rmi.RemoteException;
 import java.util.List;
+import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.IncomingServiceMessage;
 import org.ripv.messages.MailboxStatus;
 import org.ripv.messages.OutgoingServiceMessage;
@@ -41,6 +42,13 @@ public interface GenericRMIInterface extends Remote {
      * load, so that one RMI round trip carries many.
      */
     void serviceReplies(String token, List<OutgoingServiceMessage> replies) throws RemoteException;
+
+    /**
+     * What a service's vehicles said and did on their own, in order: console lines, commands,
+     * events and transfer lines (the live console). The server fans them out to watchers and keeps
+     * the transcript; it never blocks the service on a slow watcher.
+     */
+    void console(String token, List<ConsoleEntry> entries) throws RemoteException;
 
     /**
      * A service's periodic sign of life.

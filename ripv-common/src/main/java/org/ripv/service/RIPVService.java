@@ -5,6 +5,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.concurrent.ConcurrentHashMap;
+import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.Footer;
 import org.ripv.messages.Ids;
@@ -57,6 +58,7 @@ public abstract class RIPVService {
     private final Map<String, CommandHandler> handlers = new ConcurrentHashMap<>();
     private volatile ReplySink sink = reply -> log.warn("not connected to a server: dropped {}", reply);
     private volatile boolean started;
+    private volatile ConsolePublisher console;
 
     /**
      * @param serviceName the service's name (Appendix A, II), e.g. {@code "SerialPortServer"}
@@ -146,7 +148,30 @@ public abstract class RIPVService {
                 closeMailBox(box.address().substring(name.toString().length()));
             }
             close();
+            if (console != null) {
+                console.stop();
+                console = null;
+            }
         }
+    }
+
+    /**
+     * Publishes what a resource did on its own — a vehicle's unsolicited line, a command sent,
+     * an event, a transfer's progress — to everyone watching its MailBox (the live console). Never
+     * blocks: entries travel on a thread of their own, and are skipped (and counted) if the
+     * server cannot keep up.
+     */
+    protected final void publish(ConsoleEntry entry) {
+        ConsolePublisher p = console;
+        if (p == null) {
+            synchronized (this) {
+                if (console == null) {
+                    console = new ConsolePublisher(name.toString(), 10_000, this::sink);
+                }
+                p = console;
+            }
+        }
+        p.publish(entry);
     }
 
     /** Sets where replies go (the server link, or a test's collector). */

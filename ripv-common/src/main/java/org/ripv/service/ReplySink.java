@@ -13,4 +13,8 @@ public interface ReplySink {
             reply(r);
         }
     }
+
+    /** Console entries the service published ({@code RIPVService.publish}); the default drops them. */
+    default void console(java.util.List<org.ripv.messages.ConsoleEntry> entries) throws Exception {
+    }
 }

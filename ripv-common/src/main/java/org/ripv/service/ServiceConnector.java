@@ -10,6 +10,7 @@ import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
+import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.IncomingServiceMessage;
 import org.ripv.messages.MailboxStatus;
 import org.ripv.messages.OutgoingServiceMessage;
@@ -164,6 +165,11 @@ public final class ServiceConnector implements AutoCloseable {
             server().serviceReplies(token(), replies);
         }
 
+        @Override
+        public void console(List<ConsoleEntry> entries) throws Exception {
+            server().console(token(), entries);
+        }
+
         private GenericRMIInterface server() throws RemoteException {
             GenericRMIInterface s = server;
             if (s == null || token == null) {
@@ -252,6 +258,11 @@ public final class ServiceConnector implements AutoCloseable {
         @Override
         public boolean heartbeat(String t) {
             throw new UnsupportedOperationException("a service does not take heartbeats");
+        }
+
+        @Override
+        public void console(String t, List<ConsoleEntry> entries) {
+            throw new UnsupportedOperationException("a service does not take console entries");
         }
     }
 }

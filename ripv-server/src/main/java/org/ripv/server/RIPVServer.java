@@ -445,6 +445,19 @@ public final class RIPVServer implements AutoCloseable {
         }
     }
 
+    /**
+     * Console entries a service published for its MailBoxes (the live console). Only entries for
+     * the calling service's own MailBoxes are taken.
+     */
+    void console(ServiceReference ref, List<org.ripv.messages.ConsoleEntry> entries) {
+        String prefix = ref.descriptor().name();
+        for (org.ripv.messages.ConsoleEntry e : entries) {
+            if (e != null && e.mailbox().startsWith(prefix)) {
+                log.debug("console {}: {} {}", e.mailbox(), e.kind(), Header.abbreviate(e.text()));
+            }
+        }
+    }
+
     /** Current MailBox status with the operator lock added. */
     MailboxStatus withLock(MailboxStatus s) {
         OperatorLock l = locks.get(s.address());

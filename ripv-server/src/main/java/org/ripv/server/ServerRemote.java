@@ -5,6 +5,7 @@ import java.security.MessageDigest;
 import java.security.SecureRandom;
 import java.util.HexFormat;
 import java.util.List;
+import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.IncomingServiceMessage;
 import org.ripv.messages.MailboxStatus;
 import org.ripv.messages.OutgoingServiceMessage;
@@ -64,6 +65,11 @@ final class ServerRemote implements GenericRMIInterface {
         for (OutgoingServiceMessage reply : replies) {
             ServiceReplies.accept(server, ref, reply, server.pending());
         }
+    }
+
+    @Override
+    public void console(String token, List<ConsoleEntry> entries) {
+        server.console(byToken(token), entries);
     }
 
     @Override

@@ -1,0 +1,23 @@
+package org.ripv.messages;
+
+/**
+ * What happened on a vehicle link, as watchers, the transcript and notifications see it. The
+ * service reports the call's life (SURFACED, DIVED, LINK_LOST), ALERTs and transfers; the server
+ * adds what only it knows (locks, workflows).
+ */
+public enum VehicleEvent {
+    /** A call began: carrier rose, a caller connected, or the surface dialog was seen. */
+    SURFACED,
+    /** The call ended normally: carrier fell, the caller hung up, or the vehicle went quiet. */
+    DIVED,
+    /** The link failed (I/O error, the device vanished, the service restarted mid-call). */
+    LINK_LOST,
+    /** A line of the vehicle's output matched the link's alert pattern. */
+    ALERT,
+    TRANSFER_DONE,
+    TRANSFER_FAILED,
+    LOCK_TAKEN,
+    LOCK_RELEASED,
+    WORKFLOW_DONE,
+    WORKFLOW_FAILED
+}
