@@ -15,6 +15,8 @@ public enum ErrorCode {
     MAILBOX_LOCKED(409),
     TOO_LARGE(413),
     BAD_FILE_NAME(422),
+    /** A file of that name is in the store already: nothing is replaced unless asked, with rights. */
+    FILE_EXISTS(423),
     NOT_AVAILABLE(503),
     TIMEOUT(504),
     SERVICE_GONE(502),
