@@ -31,6 +31,11 @@ public final class Ids {
     public static final String FID_DOWNLOAD = "444470";
     public static final String FID_LOCK = "555667";
     public static final String FID_UNLOCK = "555668";
+    // Log-in security (issue 10 part A, FIDs 111120-111139).
+    /** {@code ?logins}: users and addresses with failed log-ins, and their blocks. */
+    public static final String FID_LOGINS = "111120";
+    /** {@code ?unlock-login USER|ADDRESS}: lifts a log-in block or lock. */
+    public static final String FID_UNLOCK_LOGIN = "111121";
     /** Replies to a message the server could not attribute to any command or service. */
     public static final String FID_NONE = "000000";
 

@@ -24,15 +24,29 @@ public interface GenericRMIInterface extends Remote {
     String BINDING = "RIPVServer";
 
     /**
-     * Registers a service with the server.
+     * The first step of registering: the service sends a fresh nonce and the server proves that
+     * it holds the service secret without revealing it ({@link org.ripv.security.ServiceProof}).
+     * A service sends nothing derived from the secret to a server whose proof is wrong.
+     *
+     * @param serviceNonce 32 hex digits from {@link org.ripv.security.ServiceProof#nonce}
+     * @return {@code "SERVERNONCE PROOF"}: the server's own nonce and
+     *         {@link org.ripv.security.ServiceProof#serverProof}
+     */
+    String challenge(String serviceNonce) throws RemoteException;
+
+    /**
+     * Registers a service with the server, after {@link #challenge}.
      *
      * @param descriptor the service's name, SID and client-side hints
      * @param service    the service's own exported stub, which the server will call
-     * @param secret     the server's service secret ({@code DATA/service.secret})
-     * @return the session token for all later calls in both directions
-     * @throws SecurityException when the secret is wrong
+     * @param proof      {@code "SERVERNONCE PROOF"}: the nonce the challenge returned and
+     *                   {@link org.ripv.security.ServiceProof#serviceProof}; never the secret itself
+     * @return {@link org.ripv.security.ServiceProof#serverProof} over the two nonces in reverse
+     *         order, confirming the registration. Both sides use
+     *         {@link org.ripv.security.ServiceProof#token} as the session token of all later calls.
+     * @throws SecurityException when the proof is wrong, or the challenge unknown or used
      */
-    String register(ServiceDescriptor descriptor, GenericRMIInterface service, String secret) throws RemoteException;
+    String register(ServiceDescriptor descriptor, GenericRMIInterface service, String proof) throws RemoteException;
 
     /** A service's reply (PROGRESS, OK or ERROR) to a request; called back on the server. */
     void serviceReply(String token, OutgoingServiceMessage reply) throws RemoteException;

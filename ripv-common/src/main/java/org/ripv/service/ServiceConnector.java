@@ -17,12 +17,14 @@ import org.ripv.messages.OutgoingServiceMessage;
 import org.ripv.messages.ServiceDescriptor;
 import org.ripv.rmi.GenericRMIInterface;
 import org.ripv.rmi.RmiSupport;
+import org.ripv.security.ServiceProof;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
  * Keeps a {@link RIPVService} registered with a RIPVServer over RMI: exports the service, looks
- * the server up, registers with the secret, checks in every heartbeat, and registers again
+ * the server up, registers by challenge–response over the secret ({@link ServiceProof}; the
+ * secret itself never crosses the wire, and an impostor in the registry gets none of it), checks in every heartbeat, and registers again
  * whenever the server has gone away and come back — no restart by hand.
  */
 public final class ServiceConnector implements AutoCloseable {
@@ -37,6 +39,7 @@ public final class ServiceConnector implements AutoCloseable {
     private volatile String token;
     private volatile CountDownLatch registered = new CountDownLatch(1);
     private volatile boolean warnedAway;
+    private volatile boolean warnedImpostor;
     /** Guards the window in which the server knows the new token and this side does not yet. */
     private final Object tokenLock = new Object();
     private boolean registering;
@@ -110,6 +113,14 @@ public final class ServiceConnector implements AutoCloseable {
                 log.warn("{}: no RIPVServer at {}:{} yet ({}); retrying every {} s", service.name(), options.serverHost(),
                         options.registryPort(), e.getMessage(), options.heartbeat().toSeconds());
             }
+        } catch (Impostor e) {
+            // Someone else holds the name: say so loudly, and keep trying until the real server is back.
+            if (!warnedImpostor) {
+                warnedImpostor = true;
+                log.error("{}: POSSIBLE IMPOSTOR: {}; sent it no secret and nothing derived from it; retrying every {} s",
+                        service.name(), e.getMessage(), options.heartbeat().toSeconds());
+            }
+            lost();
         } catch (SecurityException e) {
             // Retrying cannot fix a wrong secret: stop and let the launcher say so.
             log.error("{}: the server refused registration: {}", service.name(), e.getMessage());
@@ -132,12 +143,25 @@ public final class ServiceConnector implements AutoCloseable {
         Registry registry = LocateRegistry.getRegistry(options.serverHost(), options.registryPort());
         GenericRMIInterface s = (GenericRMIInterface) registry.lookup(GenericRMIInterface.BINDING);
         ServiceDescriptor d = service.descriptor();
+        String secret = options.secret();
+        // The server proves it holds the secret before anything derived from it goes out.
+        String mine = ServiceProof.nonce();
+        String[] answer = answer(s.challenge(mine));
+        if (answer == null || !ServiceProof.same(answer[1], ServiceProof.serverProof(secret, mine, answer[0]))) {
+            throw new Impostor("the object bound as '" + GenericRMIInterface.BINDING + "' in the registry at "
+                    + options.serverHost() + ":" + options.registryPort() + " cannot prove it holds the service secret");
+        }
         String t;
         synchronized (tokenLock) {
             registering = true;
         }
         try {
-            t = s.register(d, stub, options.secret());
+            String confirmation = s.register(d, stub, answer[0] + " " + ServiceProof.serviceProof(secret, mine, answer[0], d.name(), stub));
+            if (!ServiceProof.same(confirmation, ServiceProof.serverProof(secret, answer[0], mine))) {
+                throw new Impostor("the server at " + options.serverHost() + ":" + options.registryPort()
+                        + " accepted the registration without proving it holds the service secret");
+            }
+            t = ServiceProof.token(secret, mine, answer[0]);
         } finally {
             synchronized (tokenLock) {
                 registering = false;
@@ -149,8 +173,23 @@ public final class ServiceConnector implements AutoCloseable {
             token = t;
         }
         warnedAway = false;
+        warnedImpostor = false;
         registered.countDown();
         log.info("{} registered with the RIPVServer at {}:{}", d.name(), options.serverHost(), options.registryPort());
+    }
+
+    private static String[] answer(String a) {
+        String[] w = a == null ? new String[0] : a.split(" ");
+        return w.length == 2 && ServiceProof.isNonce(w[0]) ? w : null;
+    }
+
+    /** The object in the registry is not the RIPVServer: nothing was sent to it but a nonce. */
+    private static final class Impostor extends RuntimeException {
+        private static final long serialVersionUID = 1L;
+
+        Impostor(String message) {
+            super(message);
+        }
     }
 
     /** Sends replies to the server over RMI. */
@@ -241,7 +280,12 @@ public final class ServiceConnector implements AutoCloseable {
         }
 
         @Override
-        public String register(ServiceDescriptor d, GenericRMIInterface s, String secret) {
+        public String challenge(String nonce) {
+            throw new UnsupportedOperationException("a service does not take registrations");
+        }
+
+        @Override
+        public String register(ServiceDescriptor d, GenericRMIInterface s, String proof) {
             throw new UnsupportedOperationException("a service does not take registrations");
         }
 

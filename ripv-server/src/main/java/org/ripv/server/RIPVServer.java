@@ -8,7 +8,6 @@ import java.net.Socket;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.rmi.RemoteException;
-import java.rmi.registry.LocateRegistry;
 import java.rmi.registry.Registry;
 import java.util.List;
 import java.util.Map;
@@ -20,6 +19,7 @@ import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import javax.net.ServerSocketFactory;
+import javax.net.ssl.SSLContext;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.Footer;
 import org.ripv.messages.Header;
@@ -37,6 +37,12 @@ import org.ripv.server.handlers.SocketHandler;
 import org.ripv.server.http.LandingPage;
 import org.ripv.server.permit.PermitFile;
 import org.ripv.server.permit.PermitWatcher;
+import org.ripv.server.security.Audit;
+import org.ripv.server.security.LoginThrottle;
+import org.ripv.server.security.RegistryGuard;
+import org.ripv.server.security.SelfSignedTls;
+import org.ripv.server.security.ServerSecurity;
+import org.ripv.server.security.ServiceChallenges;
 import org.ripv.wire.FrameCodec;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -86,6 +92,9 @@ public final class RIPVServer implements AutoCloseable {
     private Registry registry;
     private int registryPort;
     private LandingPage landingPage;
+    private ServerSecurity security;
+    private RegistryGuard registryGuard;
+    private SelfSignedTls.Identity tlsIdentity;
     private volatile boolean running;
 
     /** An operator's hold on a MailBox ({@code ?lock}). */
@@ -126,22 +135,23 @@ public final class RIPVServer implements AutoCloseable {
         codec = new FrameCodec(config.maxFrame());
         pending = new PendingRequests(timers, config.requestTimeout(), this::timedOut);
         box = postOffice.open(POST_OFFICE, new ServerTaskManager(this));
+        security = new ServerSecurity(config.security(), config.maxClients(), timers, permits::current, () -> secret);
 
         InetAddress bind = config.bindAddress() == null ? null : InetAddress.getByName(config.bindAddress());
         try {
             registryPort = config.registryPort() == 0 ? freePort() : config.registryPort();
             BoundServerSocketFactory rmiSockets = new BoundServerSocketFactory(bind);
             try {
-                registry = LocateRegistry.createRegistry(registryPort, null, rmiSockets);
+                registry = RegistryGuard.create(registryPort, rmiSockets);
             } catch (RemoteException e) {
                 throw new IOException("cannot open the RMI registry on port " + registryPort + " (in use?): " + e.getMessage(), e);
             }
             GenericRMIInterface stub = (GenericRMIInterface) java.rmi.server.UnicastRemoteObject.exportObject(remote,
                     registryPort, null, rmiSockets, org.ripv.wire.WireFilter.forRmi(RmiSupport.MAX_RMI_BYTES));
-            registry.rebind(GenericRMIInterface.BINDING, stub);
+            registryGuard = RegistryGuard.bind(registry, stub);
 
-            ServerSocketFactory factory = config.tls() == null ? ServerSocketFactory.getDefault()
-                    : config.tls().getServerSocketFactory();
+            SSLContext tls = tls();
+            ServerSocketFactory factory = tls == null ? ServerSocketFactory.getDefault() : tls.getServerSocketFactory();
             listener = factory.createServerSocket();
             listener.setReuseAddress(true);
             try {
@@ -166,7 +176,27 @@ public final class RIPVServer implements AutoCloseable {
         long check = config.serviceCheck().toMillis();
         timers.scheduleWithFixedDelay(this::checkServices, check, check, TimeUnit.MILLISECONDS);
         log.info("RIPVServer listening for clients on port {}{}, RMI registry on port {}, data in {}", port(),
-                config.tls() == null ? "" : " (TLS)", registryPort, config.dataDir().toAbsolutePath());
+                tls() == null ? " (plain TCP)" : " (TLS)", registryPort, config.dataDir().toAbsolutePath());
+    }
+
+    /** The TLS context to serve with: the operator's, the server's own (made on first start), or none with --plain. */
+    private SSLContext tls() throws IOException {
+        if (config.tls() != null) {
+            return config.tls();
+        }
+        if (config.security().plain()) {
+            return null;
+        }
+        if (tlsIdentity == null) {
+            tlsIdentity = SelfSignedTls.loadOrCreate(config.dataDir().resolve("tls"));
+            log.info("TLS certificate fingerprint {} (clients see it on first connecting)", tlsIdentity.fingerprint());
+        }
+        return tlsIdentity.context();
+    }
+
+    /** The fingerprint of the server's own certificate, or null (plain, or the operator's key store). */
+    public String tlsFingerprint() {
+        return tlsIdentity == null ? null : tlsIdentity.fingerprint();
     }
 
     /** Closes every port, thread and export the server may have opened; safe on a half-started server. */
@@ -205,6 +235,9 @@ public final class RIPVServer implements AutoCloseable {
         checkers.shutdownNow();
         liveness.shutdownNow();
         fileWork.shutdownNow();
+        if (security != null) {
+            security.close();
+        }
         postOffice.stop();
     }
 
@@ -224,14 +257,20 @@ public final class RIPVServer implements AutoCloseable {
         landingPage = page;
     }
 
-    /** What the landing page says this server is. */
+    /**
+     * What the landing page tells any visitor: ports, the TLS fingerprint and service names only;
+     * no paths, and no service descriptions (a database's names its JDBC URL).
+     */
     private String describe() {
         StringBuilder b = new StringBuilder("RIPVServer on " + org.ripv.naming.Handles.localHost() + "\n");
-        b.append("Clients connect to port ").append(port()).append(config.tls() == null ? "" : " (TLS)").append('\n');
-        b.append("Services register in the RMI registry on port ").append(registryPort).append('\n');
+        b.append("Clients connect to port ").append(port()).append(config.security().plain() && config.tls() == null ? " (plain TCP)" : " (TLS)");
+        if (tlsFingerprint() != null) {
+            b.append("; certificate ").append(tlsFingerprint());
+        }
+        b.append('\n');
         List<ServiceReference> list = services();
         b.append(list.size()).append(" service(s) registered");
-        list.forEach(r -> b.append("\n  ").append(r.descriptor().name()).append("  ").append(r.descriptor().description()));
+        list.forEach(r -> b.append("\n  ").append(r.descriptor().name()));
         return b.toString();
     }
 
@@ -258,15 +297,20 @@ public final class RIPVServer implements AutoCloseable {
                 }
                 continue;
             }
-            if (clients.size() >= config.maxClients()) {
-                log.warn("refusing {}: {} clients connected already", s.getRemoteSocketAddress(), clients.size());
+            String id = newClientId();
+            SocketHandler h = new SocketHandler(s, id, codec, new Dispatch());
+            String from = s.getInetAddress().getHostAddress();
+            String refused = security.gate().admit(id, s.getInetAddress(), () -> {
+                Audit.log(true, "login-deadline", "from", from, "client", id);
+                h.close();
+            });
+            if (refused != null) {
+                Audit.log(true, "connection-refused", "from", from, "reason", refused);
                 closeQuietly(s);
                 continue;
             }
-            String id = newClientId();
-            SocketHandler h = new SocketHandler(s, id, codec, new Dispatch());
             clients.put(id, h);
-            log.info("client {} connected from {}", id, s.getRemoteSocketAddress());
+            log.debug("client {} connected from {}", id, s.getRemoteSocketAddress());
             h.start();
         }
     }
@@ -300,11 +344,9 @@ public final class RIPVServer implements AutoCloseable {
             Header h = request.header();
             String body = h.body().trim();
             if (body.equals("?login") || body.startsWith("?login ")) {
-                // On the client's own thread: a slow password hash must not hold up the Post Office.
-                OutgoingServerMessage answer = Login.login(RIPVServer.this, client, request);
-                if (answer != null) {
-                    client.send(answer);
-                }
+                // On the client's own thread, which waits for the bounded log-in pool: a slow
+                // password hash holds up neither the Post Office nor anyone logged in.
+                security.logins().login(client, request);
                 return;
             }
             if (!client.isLoggedIn() && !body.equals("?help") && !body.equals("?ping")) {
@@ -323,6 +365,7 @@ public final class RIPVServer implements AutoCloseable {
         @Override
         public void closed(SocketHandler client) {
             clients.remove(client.clientId(), client);
+            security.gate().closed(client.clientId());
             pending.forgetClient(client.clientId());
             files.abortAll(client.clientId());
             locks.values().removeIf(l -> l.clientId().equals(client.clientId()));
@@ -366,6 +409,15 @@ public final class RIPVServer implements AutoCloseable {
 
     String secret() {
         return secret;
+    }
+
+    ServiceChallenges challenges() {
+        return security.challenges();
+    }
+
+    /** The brute-force limits ({@code ?logins}, {@code ?unlock-login}). */
+    LoginThrottle loginThrottle() {
+        return security.throttle();
     }
 
     PendingRequests pending() {
@@ -433,6 +485,7 @@ public final class RIPVServer implements AutoCloseable {
 
     private void checkServices() {
         serviceLiveness.checkAll();
+        registryGuard.check();
         permits.reloadIfChanged();
     }
 

@@ -24,6 +24,7 @@ import org.ripv.naming.MailboxAddress;
 import org.ripv.server.files.FileStore;
 import org.ripv.server.files.FileTooLargeException;
 import org.ripv.server.permit.PermitFile;
+import org.ripv.server.security.SecurityCommands;
 
 /**
  * The server's own {@code ?} commands (Appendix B and docs/protocol.md). Each reply carries the
@@ -54,6 +55,8 @@ final class ServerCommands {
         COMMANDS.put("?download", new Command(Ids.FID_DOWNLOAD, "?download NAME OFFSET LENGTH", "one chunk of a download (the clients' get)"));
         COMMANDS.put("?lock", new Command(Ids.FID_LOCK, "?lock MAILBOX [SECONDS]", "keep others from commanding a MailBox (default 300 s)"));
         COMMANDS.put("?unlock", new Command(Ids.FID_UNLOCK, "?unlock MAILBOX", "release your lock"));
+        COMMANDS.put("?logins", new Command(Ids.FID_LOGINS, "?logins", "users and addresses with failed log-ins, and their blocks (needs a right)"));
+        COMMANDS.put("?unlock-login", new Command(Ids.FID_UNLOCK_LOGIN, "?unlock-login USER|ADDRESS", "lift a log-in block or lock (needs a right)"));
         COMMANDS.put("?logout", new Command(Ids.FID_LOGOUT, "?logout", "end the session and close the connection"));
     }
 
@@ -205,6 +208,9 @@ final class ServerCommands {
                 server.locks().remove(address.toString());
                 return ok(request, c, address + " unlocked", null);
             }
+            case "?logins", "?unlock-login":
+                permit(request, c);
+                return SecurityCommands.run(request, c.fid(), w, server.loginThrottle());
             default:
                 throw new IllegalStateException("no handler for " + w[0]);
         }

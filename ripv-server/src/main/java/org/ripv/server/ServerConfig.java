@@ -21,10 +21,12 @@ import javax.net.ssl.SSLContext;
  * @param maxClients     how many clients may be connected at once
  * @param tls            a TLS context for the client port, or null for plain TCP
  * @param clientJar      the client jar the landing page offers, or null
+ * @param security       log-in deadline, per-address and brute-force limits, TLS on or off (docs/security.md)
  */
 public record ServerConfig(String bindAddress, int port, int registryPort, int httpPort, Path dataDir, Path permitFile,
                            Duration requestTimeout, Duration serviceCheck, long maxUpload, int maxFrame, int maxClients,
-                           SSLContext tls, Path clientJar) {
+                           SSLContext tls, Path clientJar,
+                           org.ripv.server.security.SecuritySettings security) {
 
     public static final int DEFAULT_PORT = 4444;
     public static final int DEFAULT_REGISTRY_PORT = 1099;
@@ -34,13 +36,16 @@ public record ServerConfig(String bindAddress, int port, int registryPort, int h
         if (permitFile == null) {
             permitFile = dataDir.resolve("permit.txt");
         }
+        if (security == null) {
+            security = org.ripv.server.security.SecuritySettings.defaults();
+        }
     }
 
     /** Defaults for a data directory. */
     public static ServerConfig defaults(Path dataDir) {
         return new ServerConfig(null, DEFAULT_PORT, DEFAULT_REGISTRY_PORT, DEFAULT_HTTP_PORT, dataDir, null,
                 Duration.ofSeconds(60), Duration.ofSeconds(3), 256L * 1024 * 1024,
-                org.ripv.wire.FrameCodec.DEFAULT_MAX_FRAME, 1000, null, null);
+                org.ripv.wire.FrameCodec.DEFAULT_MAX_FRAME, 1000, null, null, null);
     }
 
     /** Defaults for tests: free ports, no landing page, short checks. */
@@ -50,41 +55,56 @@ public record ServerConfig(String bindAddress, int port, int registryPort, int h
 
     public ServerConfig withPorts(int clientPort, int registry, int http) {
         return new ServerConfig(bindAddress, clientPort, registry, http, dataDir, permitFile, requestTimeout, serviceCheck,
-                maxUpload, maxFrame, maxClients, tls, clientJar);
+                maxUpload, maxFrame, maxClients, tls, clientJar, security);
     }
 
     public ServerConfig withRequestTimeout(Duration t) {
         return new ServerConfig(bindAddress, port, registryPort, httpPort, dataDir, permitFile, t, serviceCheck,
-                maxUpload, maxFrame, maxClients, tls, clientJar);
+                maxUpload, maxFrame, maxClients, tls, clientJar, security);
     }
 
     public ServerConfig withServiceCheck(Duration t) {
         return new ServerConfig(bindAddress, port, registryPort, httpPort, dataDir, permitFile, requestTimeout, t,
-                maxUpload, maxFrame, maxClients, tls, clientJar);
+                maxUpload, maxFrame, maxClients, tls, clientJar, security);
     }
 
     public ServerConfig withMaxUpload(long bytes) {
         return new ServerConfig(bindAddress, port, registryPort, httpPort, dataDir, permitFile, requestTimeout,
-                serviceCheck, bytes, maxFrame, maxClients, tls, clientJar);
+                serviceCheck, bytes, maxFrame, maxClients, tls, clientJar, security);
     }
 
     public ServerConfig withPermitFile(Path file) {
         return new ServerConfig(bindAddress, port, registryPort, httpPort, dataDir, file, requestTimeout,
-                serviceCheck, maxUpload, maxFrame, maxClients, tls, clientJar);
+                serviceCheck, maxUpload, maxFrame, maxClients, tls, clientJar, security);
     }
 
     public ServerConfig withTls(SSLContext context) {
         return new ServerConfig(bindAddress, port, registryPort, httpPort, dataDir, permitFile, requestTimeout,
-                serviceCheck, maxUpload, maxFrame, maxClients, context, clientJar);
+                serviceCheck, maxUpload, maxFrame, maxClients, context, clientJar, security);
     }
 
     public ServerConfig withClientJar(Path jar) {
         return new ServerConfig(bindAddress, port, registryPort, httpPort, dataDir, permitFile, requestTimeout,
-                serviceCheck, maxUpload, maxFrame, maxClients, tls, jar);
+                serviceCheck, maxUpload, maxFrame, maxClients, tls, jar, security);
     }
 
     public ServerConfig withBindAddress(String address) {
         return new ServerConfig(address, port, registryPort, httpPort, dataDir, permitFile, requestTimeout,
-                serviceCheck, maxUpload, maxFrame, maxClients, tls, clientJar);
+                serviceCheck, maxUpload, maxFrame, maxClients, tls, clientJar, security);
+    }
+
+    public ServerConfig withSecurity(org.ripv.server.security.SecuritySettings s) {
+        return new ServerConfig(bindAddress, port, registryPort, httpPort, dataDir, permitFile, requestTimeout,
+                serviceCheck, maxUpload, maxFrame, maxClients, tls, clientJar, s);
+    }
+
+    public ServerConfig withMaxClients(int n) {
+        return new ServerConfig(bindAddress, port, registryPort, httpPort, dataDir, permitFile, requestTimeout,
+                serviceCheck, maxUpload, maxFrame, n, tls, clientJar, security);
+    }
+
+    /** Plain TCP on the client port and the landing page, for a test lab ({@code --plain}). */
+    public ServerConfig plain() {
+        return withSecurity(security.withPlain(true));
     }
 }

@@ -3,19 +3,16 @@ package org.ripv.server;
 import java.io.BufferedReader;
 import java.io.Console;
 import java.io.IOException;
-import java.io.InputStream;
 import java.io.InputStreamReader;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.security.KeyStore;
 import java.time.Duration;
 import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
-import javax.net.ssl.KeyManagerFactory;
 import javax.net.ssl.SSLContext;
 import org.ripv.server.permit.Passwords;
 import org.ripv.server.permit.PermitFile;
@@ -62,8 +59,13 @@ public final class ServerMain implements Callable<Integer> {
         long requestTimeout;
         @Option(names = "--max-upload", defaultValue = "268435456", description = "Largest upload in bytes (default ${DEFAULT-VALUE}).")
         long maxUpload;
-        @Option(names = "--tls-keystore", description = "A PKCS12 key store: serve the client port over TLS.")
+        @Option(names = "--tls-keystore", description = "A PKCS12 key store with a real certificate (default: the server's own,"
+                + " made on first start in DATA/tls/).")
         Path tlsKeystore;
+        @Option(names = "--plain", description = "No TLS on the client port and the landing page (a test lab only: passwords cross in clear).")
+        boolean plain;
+        @Option(names = "--login-deadline", defaultValue = "10", description = "Seconds a connection may take to log in (default ${DEFAULT-VALUE}).")
+        long loginDeadline;
         @Option(names = "--tls-password-file", description = "File holding the key store's password.")
         Path tlsPasswordFile;
         @Option(names = "--client-jar", description = "The client jar the landing page offers (default: ripv-client.jar beside this jar).")
@@ -85,8 +87,15 @@ public final class ServerMain implements Callable<Integer> {
                     .withPermitFile(permit)
                     .withBindAddress(bind)
                     .withClientJar(clientJar != null ? clientJar : defaultClientJar());
+            config = config.withSecurity(config.security().withPlain(plain).withLoginDeadline(Duration.ofSeconds(loginDeadline)));
+            String fingerprint = null;
+            if (tlsKeystore != null && plain) {
+                throw new CommandLine.ParameterException(new CommandLine(new Serve()), "--plain and --tls-keystore exclude each other");
+            }
             if (tlsKeystore != null) {
-                config = config.withTls(tls(tlsKeystore, tlsPasswordFile));
+                org.ripv.server.security.SelfSignedTls.Identity id = identity(tlsKeystore, tlsPasswordFile);
+                config = config.withTls(id.context());
+                fingerprint = id.fingerprint();
             }
             org.ripv.rmi.RmiSupport.filterProcess();
             RIPVServer server = new RIPVServer(config);
@@ -100,9 +109,17 @@ public final class ServerMain implements Callable<Integer> {
             if (p.users().isEmpty()) {
                 System.err.println("No users yet: add one with  ripv passwd --permit " + config.permitFile() + " USER --roles operators");
             }
-            System.err.println("RIPVServer ready: clients on port " + server.port() + ", services register at "
-                    + (bind != null ? bind : "this host") + ":" + server.registryPort() + " with --secret-file " + server.secretFile()
-                    + (server.httpPort() > 0 ? ", landing page on http://localhost:" + server.httpPort() + "/" : ""));
+            if (fingerprint == null) {
+                fingerprint = server.tlsFingerprint();
+            }
+            System.err.println("RIPVServer ready: clients on port " + server.port() + (plain ? " (plain TCP, no TLS)" : " (TLS)")
+                    + ", services register at " + (bind != null ? bind : "this host") + ":" + server.registryPort()
+                    + " with --secret-file " + server.secretFile()
+                    + (server.httpPort() > 0 ? ", landing page on " + (plain ? "http" : "https") + "://localhost:" + server.httpPort() + "/" : ""));
+            if (fingerprint != null) {
+                System.err.println("TLS certificate fingerprint: " + fingerprint
+                        + "\n  (clients show it when they first connect; compare before trusting)");
+            }
             stopped.await();
             return 0;
         }
@@ -122,21 +139,13 @@ public final class ServerMain implements Callable<Integer> {
             return null;
         }
 
-        /** A TLS context from a PKCS12 key store and a file holding its password. */
-        static SSLContext tls(Path keystore, Path passwordFile) throws Exception {
+        /** A TLS identity from a PKCS12 key store and a file holding its password. */
+        static org.ripv.server.security.SelfSignedTls.Identity identity(Path keystore, Path passwordFile) throws Exception {
             if (passwordFile == null) {
                 throw new CommandLine.ParameterException(new CommandLine(new Serve()), "--tls-keystore needs --tls-password-file");
             }
             char[] pw = Files.readString(passwordFile, StandardCharsets.UTF_8).trim().toCharArray();
-            KeyStore ks = KeyStore.getInstance("PKCS12");
-            try (InputStream in = Files.newInputStream(keystore)) {
-                ks.load(in, pw);
-            }
-            KeyManagerFactory kmf = KeyManagerFactory.getInstance(KeyManagerFactory.getDefaultAlgorithm());
-            kmf.init(ks, pw);
-            SSLContext ctx = SSLContext.getInstance("TLS");
-            ctx.init(kmf.getKeyManagers(), null, null);
-            return ctx;
+            return org.ripv.server.security.SelfSignedTls.load(keystore, pw);
         }
     }
 
@@ -195,7 +204,7 @@ public final class ServerMain implements Callable<Integer> {
 
     /** A TLS context for {@link ServerConfig#withTls} from a PKCS12 key store and its password file. */
     public static SSLContext tlsContext(Path keystore, Path passwordFile) throws Exception {
-        return Serve.tls(keystore, passwordFile);
+        return Serve.identity(keystore, passwordFile).context();
     }
 
     /** Runs the command line; returns the exit code. */

@@ -1,9 +1,5 @@
 package org.ripv.server;
 
-import java.nio.charset.StandardCharsets;
-import java.security.MessageDigest;
-import java.security.SecureRandom;
-import java.util.HexFormat;
 import java.util.List;
 import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.IncomingServiceMessage;
@@ -12,11 +8,13 @@ import org.ripv.messages.OutgoingServiceMessage;
 import org.ripv.messages.ServiceDescriptor;
 import org.ripv.naming.ServiceName;
 import org.ripv.rmi.GenericRMIInterface;
+import org.ripv.server.security.ServiceChallenges;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * The server's side of {@link GenericRMIInterface}: registration with the service secret,
+ * The server's side of {@link GenericRMIInterface}: registration by challenge–response over the
+ * service secret ({@link ServiceChallenges}),
  * replies called back by services, and their heartbeats. Every call but {@code register}
  * must carry the token the registration handed out.
  */
@@ -30,25 +28,24 @@ final class ServerRemote implements GenericRMIInterface {
     }
 
     @Override
-    public String register(ServiceDescriptor d, GenericRMIInterface service, String given) {
-        if (given == null || !MessageDigest.isEqual(given.getBytes(StandardCharsets.UTF_8),
-                server.secret().getBytes(StandardCharsets.UTF_8))) {
-            log.warn("refused a registration of {}: wrong service secret", d == null ? "?" : d.name());
-            throw new SecurityException("wrong service secret: give the server's DATA/service.secret with --secret-file");
-        }
+    public String challenge(String serviceNonce) {
+        return server.challenges().challenge(serviceNonce);
+    }
+
+    @Override
+    public String register(ServiceDescriptor d, GenericRMIInterface service, String proof) {
         if (d == null || service == null) {
             throw new IllegalArgumentException("a registration needs a descriptor and the service's stub");
         }
+        ServiceChallenges.Accepted accepted = server.challenges().verify(proof, d.name(), service);
         ServiceName.parse(d.name());
-        byte[] t = new byte[24];
-        new SecureRandom().nextBytes(t);
-        ServiceReference ref = new ServiceReference(d, service, HexFormat.of().formatHex(t), server::undeliverable);
+        ServiceReference ref = new ServiceReference(d, service, accepted.token(), server::undeliverable);
         ServiceReference old = server.serviceMap().put(d.name(), ref);
         if (old != null) {
             server.drop(old, "registered again");
         }
         log.info("{} registered ({})", ref, d.description());
-        return ref.token();
+        return accepted.confirmation();
     }
 
     @Override

@@ -39,9 +39,15 @@ public final class CliCommand implements Callable<Integer> {
     boolean json;
     @Option(names = "--exec", paramLabel = "LINE", description = "A line to run (repeatable); without any, lines come from standard input.")
     List<String> exec;
-    @Option(names = "--tls", description = "Connect over TLS (the server runs with --tls-keystore).")
+    @Option(names = "--tls", hidden = true, description = "Connect over TLS (the default; kept for old scripts).")
     boolean tls;
-    @Option(names = "--truststore", description = "Trust the certificates in this key store (implies --tls); default: the JVM's.")
+    @Option(names = "--plain", description = "Connect over plain TCP, to a server started with --plain (a test lab).")
+    boolean plain;
+    @Option(names = "--known-hosts", paramLabel = "FILE",
+            description = "Where server certificates are remembered on first use (default $RIPV_KNOWN_HOSTS or ~/.ripv/known_hosts).")
+    Path knownHosts;
+    @Option(names = "--truststore", description = "Check the server's certificate against this key store (a CA-signed or"
+            + " exported certificate) instead of trusting it on first use.")
     Path truststore;
     @Option(names = "--truststore-password", defaultValue = "changeit", description = "The trust store's password (default ${DEFAULT-VALUE}).")
     String truststorePassword;
@@ -83,10 +89,14 @@ public final class CliCommand implements Callable<Integer> {
         }
         ClientSocketHandler client;
         try {
-            client = tls || truststore != null
-                    ? ClientSocketHandler.connect(host, port, Tls.socketFactory(truststore, truststorePassword.toCharArray()),
-                            Duration.ofSeconds(10))
-                    : ClientSocketHandler.connect(host, port);
+            if (plain && (truststore != null || tls)) {
+                err.println("Error: --plain excludes --tls and --truststore");
+                return 2;
+            }
+            javax.net.SocketFactory factory = plain ? javax.net.SocketFactory.getDefault()
+                    : truststore != null ? Tls.socketFactory(truststore, truststorePassword.toCharArray())
+                    : Tls.trustOnFirstUse(host, port, knownHosts != null ? knownHosts : Tls.defaultKnownHosts(), err::println);
+            client = ClientSocketHandler.connect(host, port, factory, Duration.ofSeconds(10));
         } catch (IOException e) {
             err.println("Error: cannot connect to " + host + ":" + port + ": " + e.getMessage());
             return EXIT_NO_SESSION;

@@ -50,6 +50,13 @@ public final class ClientCommand implements Callable<Integer> {
             description = "The password, logging in at once (for the demo; it shows in the process list).")
     String password;
 
+    @Option(names = "--plain", description = "Connect over plain TCP, to a server started with --plain (a test lab).")
+    boolean plain;
+
+    @Option(names = "--known-hosts", paramLabel = "FILE",
+            description = "Where server certificates are remembered on first use (default $RIPV_KNOWN_HOSTS or ~/.ripv/known_hosts).")
+    Path knownHosts;
+
     private final PrintStream err;
 
     public ClientCommand() {
@@ -90,9 +97,12 @@ public final class ClientCommand implements Callable<Integer> {
             noDisplay("DISPLAY unset or java.awt.headless=true");
             return EXIT_USAGE;
         }
+        if (knownHosts != null) {
+            System.setProperty(org.ripv.client.handlers.Tls.KNOWN_HOSTS_PROPERTY, knownHosts.toString());
+        }
         RIPVClient client;
         try {
-            client = open(server, user, pw);
+            client = open(server, user, pw, plain);
         } catch (java.awt.AWTError | java.awt.HeadlessException e) {
             // DISPLAY is set but no X server answers there.
             noDisplay(e.getMessage());
@@ -121,10 +131,17 @@ public final class ClientCommand implements Callable<Integer> {
      * is showing. A non-null password logs in at once.
      */
     public static RIPVClient open(String server, String user, char[] password) throws Exception {
+        return open(server, user, password, false);
+    }
+
+    /** As {@link #open(String, String, char[])}; {@code plain} connects without TLS. */
+    public static RIPVClient open(String server, String user, char[] password, boolean plain) throws Exception {
         AtomicReference<RIPVClient> ref = new AtomicReference<>();
         SwingUtilities.invokeAndWait(() -> {
             FlatLightLaf.setup();
-            GuiManager manager = new GuiManager(new ClientModel());
+            GuiManager manager = plain ? new GuiManager(new ClientModel(), SwingUtilities::invokeLater,
+                    org.ripv.client.handlers.ClientSocketHandler::connectPlain, GuiManager.Timings.DEFAULT)
+                    : new GuiManager(new ClientModel());
             RIPVClient client = new RIPVClient(manager, Preferences.userNodeForPackage(RIPVClient.class));
             client.show();
             client.showLogin(server, user, password, password != null);

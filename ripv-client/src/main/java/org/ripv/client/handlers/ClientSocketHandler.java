@@ -91,8 +91,17 @@ public final class ClientSocketHandler implements AutoCloseable {
         reader.start();
     }
 
-    /** Connects over plain TCP. */
+    /**
+     * Connects over TLS, trusting the server's certificate on first use ({@link Tls#trustOnFirstUse}
+     * with {@link Tls#defaultKnownHosts}); a server whose certificate changed is refused.
+     */
     public static ClientSocketHandler connect(String host, int port) throws IOException {
+        return connect(host, port, Tls.trustOnFirstUse(host, port, Tls.defaultKnownHosts(), n -> log.warn("{}", n)),
+                Duration.ofSeconds(10));
+    }
+
+    /** Connects over plain TCP, to a server started with {@code --plain} (a test lab). */
+    public static ClientSocketHandler connectPlain(String host, int port) throws IOException {
         return connect(host, port, SocketFactory.getDefault(), Duration.ofSeconds(10));
     }
 
@@ -109,11 +118,30 @@ public final class ClientSocketHandler implements AutoCloseable {
         try {
             s.setTcpNoDelay(true);
             s.connect(new InetSocketAddress(host, port), (int) timeout.toMillis());
+            if (s instanceof javax.net.ssl.SSLSocket tls) {
+                s.setSoTimeout((int) timeout.toMillis());
+                handshake(tls);
+            }
             s.setSoTimeout(0);
             return new ClientSocketHandler(s, host + ":" + port, FrameCodec.DEFAULT_MAX_FRAME);
         } catch (IOException | RuntimeException e) {
             s.close();
             throw e;
+        }
+    }
+
+    /** Runs the TLS handshake now, so that a refused certificate says why in plain words. */
+    private static void handshake(javax.net.ssl.SSLSocket tls) throws IOException {
+        try {
+            tls.startHandshake();
+        } catch (javax.net.ssl.SSLException e) {
+            for (Throwable t = e; t != null; t = t.getCause()) {
+                if (t instanceof Tls.ChangedCertificateException changed) {
+                    throw new IOException(changed.getMessage(), e);
+                }
+            }
+            throw new IOException("TLS handshake failed: " + e.getMessage()
+                    + " (is the server started with --plain? then connect with --plain too)", e);
         }
     }
 

@@ -2,18 +2,50 @@ package org.ripv.client.handlers;
 
 import java.io.IOException;
 import java.io.InputStream;
+import java.net.Socket;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
+import java.nio.file.attribute.PosixFilePermissions;
 import java.security.GeneralSecurityException;
 import java.security.KeyStore;
+import java.security.cert.CertificateException;
+import java.security.cert.X509Certificate;
+import java.util.List;
+import java.util.Locale;
+import java.util.function.Consumer;
 import javax.net.SocketFactory;
 import javax.net.ssl.SSLContext;
+import javax.net.ssl.SSLEngine;
 import javax.net.ssl.SSLSocketFactory;
+import javax.net.ssl.TrustManager;
 import javax.net.ssl.TrustManagerFactory;
+import javax.net.ssl.X509ExtendedTrustManager;
+import org.ripv.security.Fingerprint;
 
-/** Socket factories for connecting to a server that serves its client port over TLS. */
+/**
+ * Socket factories for the server's TLS client port. By default a client trusts a server's
+ * certificate on first use, as ssh does: the first connection to {@code HOST:PORT} remembers the
+ * certificate's SHA-256 fingerprint in {@code ~/.ripv/known_hosts} (or {@code $RIPV_KNOWN_HOSTS},
+ * or the system property {@code ripv.knownHosts}); later connections must present the same
+ * certificate or are refused with {@link ChangedCertificateException}. With a trust store the
+ * usual certificate-authority checks (and host-name checks) apply instead.
+ */
 public final class Tls {
+    /** The system property naming the known-hosts file (tests point it at a temporary file). */
+    public static final String KNOWN_HOSTS_PROPERTY = "ripv.knownHosts";
+
     private Tls() {}
+
+    /** A certificate differs from the one remembered for this host and port. */
+    public static final class ChangedCertificateException extends CertificateException {
+        private static final long serialVersionUID = 1L;
+
+        ChangedCertificateException(String message) {
+            super(message);
+        }
+    }
 
     /**
      * A TLS factory that trusts the certificates in {@code truststore} (PKCS12 or JKS), or the
@@ -33,6 +65,138 @@ public final class Tls {
             return ctx.getSocketFactory();
         } catch (GeneralSecurityException e) {
             throw new IOException("cannot use the trust store " + truststore + ": " + e.getMessage(), e);
+        }
+    }
+
+    /** The known-hosts file: the system property, else $RIPV_KNOWN_HOSTS, else ~/.ripv/known_hosts. */
+    public static Path defaultKnownHosts() {
+        String p = System.getProperty(KNOWN_HOSTS_PROPERTY);
+        if (p == null || p.isBlank()) {
+            p = System.getenv("RIPV_KNOWN_HOSTS");
+        }
+        if (p != null && !p.isBlank()) {
+            return Path.of(p);
+        }
+        return Path.of(System.getProperty("user.home"), ".ripv", "known_hosts");
+    }
+
+    /**
+     * A TLS factory for {@code host:port} that trusts on first use.
+     *
+     * @param notices told, once, when a new server's fingerprint is remembered
+     */
+    public static SocketFactory trustOnFirstUse(String host, int port, Path knownHosts, Consumer<String> notices) throws IOException {
+        try {
+            SSLContext ctx = SSLContext.getInstance("TLS");
+            ctx.init(null, new TrustManager[] {new FirstUse(host.toLowerCase(Locale.ROOT) + ":" + port, knownHosts, notices)}, null);
+            return ctx.getSocketFactory();
+        } catch (GeneralSecurityException e) {
+            throw new IOException("TLS is not available: " + e.getMessage(), e);
+        }
+    }
+
+    /** Pins the first certificate seen; ignores host names (the pin is the identity, as in ssh). */
+    private static final class FirstUse extends X509ExtendedTrustManager {
+        private final String server;
+        private final Path file;
+        private final Consumer<String> notices;
+
+        FirstUse(String server, Path file, Consumer<String> notices) {
+            this.server = server;
+            this.file = file;
+            this.notices = notices == null ? s -> { } : notices;
+        }
+
+        @Override
+        public void checkServerTrusted(X509Certificate[] chain, String authType) throws CertificateException {
+            if (chain == null || chain.length == 0) {
+                throw new CertificateException("the server sent no certificate");
+            }
+            String offered = Fingerprint.of(chain[0]);
+            synchronized (Tls.class) {
+                List<String> lines;
+                try {
+                    lines = Files.exists(file) ? Files.readAllLines(file, StandardCharsets.UTF_8) : List.of();
+                } catch (IOException e) {
+                    throw new CertificateException("cannot read " + file + ": " + e.getMessage(), e);
+                }
+                for (int i = 0; i < lines.size(); i++) {
+                    String[] w = lines.get(i).trim().split("\\s+");
+                    if (w.length >= 2 && w[0].equals(server)) {
+                        if (w[1].equals(offered)) {
+                            return;
+                        }
+                        throw new ChangedCertificateException(changed(i + 1, w[1], offered));
+                    }
+                }
+                remember(offered);
+            }
+            notices.accept("The server " + server + " presents a certificate not seen before:\n  " + offered
+                    + "\nTrusting it on first use and remembering it in " + file
+                    + " (compare it with the fingerprint the server printed at its start).");
+        }
+
+        private String changed(int line, String remembered, String offered) {
+            return String.join("\n",
+                    "@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@",
+                    "@    WARNING: THE SERVER'S CERTIFICATE HAS CHANGED!       @",
+                    "@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@@",
+                    "IT IS POSSIBLE THAT SOMEONE IS DOING SOMETHING NASTY: someone could be",
+                    "listening in on you right now (a man-in-the-middle attack), or the server",
+                    "was given a new certificate.",
+                    "The certificate of " + server + " is " + offered + ",",
+                    "but " + file + " line " + line + " remembers " + remembered + ".",
+                    "Not connecting. If you know why it changed (ask the server's operator for the",
+                    "fingerprint it prints at start), delete line " + line + " of " + file + " and connect again.");
+        }
+
+        private void remember(String offered) throws CertificateException {
+            try {
+                Path dir = file.toAbsolutePath().getParent();
+                if (dir != null && !Files.isDirectory(dir)) {
+                    Files.createDirectories(dir);
+                }
+                if (!Files.exists(file)) {
+                    try {
+                        Files.createFile(file, PosixFilePermissions.asFileAttribute(PosixFilePermissions.fromString("rw-------")));
+                    } catch (UnsupportedOperationException e) {
+                        Files.createFile(file);
+                    }
+                }
+                Files.writeString(file, server + " " + offered + "\n", StandardCharsets.UTF_8, StandardOpenOption.APPEND);
+            } catch (IOException e) {
+                throw new CertificateException("cannot remember the server's certificate in " + file + ": " + e.getMessage(), e);
+            }
+        }
+
+        @Override
+        public void checkServerTrusted(X509Certificate[] chain, String authType, Socket socket) throws CertificateException {
+            checkServerTrusted(chain, authType);
+        }
+
+        @Override
+        public void checkServerTrusted(X509Certificate[] chain, String authType, SSLEngine engine) throws CertificateException {
+            checkServerTrusted(chain, authType);
+        }
+
+        @Override
+        public void checkClientTrusted(X509Certificate[] chain, String authType) throws CertificateException {
+            throw new CertificateException("a client does not take connections");
+        }
+
+        @Override
+        public void checkClientTrusted(X509Certificate[] chain, String authType, Socket socket) throws CertificateException {
+            checkClientTrusted(chain, authType);
+        }
+
+        @Override
+        public void checkClientTrusted(X509Certificate[] chain, String authType, SSLEngine engine) throws CertificateException {
+            checkClientTrusted(chain, authType);
+        }
+
+        @Override
+        public X509Certificate[] getAcceptedIssuers() {
+            return new X509Certificate[0];
         }
     }
 }

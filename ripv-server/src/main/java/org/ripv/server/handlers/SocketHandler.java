@@ -104,6 +104,18 @@ public final class SocketHandler {
         return String.valueOf(socket.getRemoteSocketAddress());
     }
 
+    /** The peer's IP address, the key of per-address limits. */
+    public java.net.InetAddress remoteInetAddress() {
+        return socket.getInetAddress();
+    }
+
+    /** Sends this last reply, then closes: the client reads why it was cut off. */
+    public void sendAndClose(OutgoingServerMessage last) {
+        if (closed || !replies.offer(last) || !replies.offer(POISON)) {
+            close();
+        }
+    }
+
     /** Queues a reply for this client; a client too far behind is disconnected. */
     public void send(OutgoingServerMessage reply) {
         if (closed) {

@@ -1,0 +1,40 @@
+package org.ripv.server.security;
+
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * One line per security event on the logger {@code ripv.audit}, as {@code event key=value ...}
+ * so that grep and awk read it (docs/security.md, "Reading the audit lines"). Values are cut and
+ * stripped of white space and control characters: a user name an attacker chose cannot forge a line.
+ */
+public final class Audit {
+    private static final Logger AUDIT = LoggerFactory.getLogger("ripv.audit");
+
+    private Audit() {}
+
+    /** Logs {@code event k1=v1 k2=v2 ...} at WARN (failures, refusals) or INFO (the rest). */
+    public static void log(boolean warn, String event, Object... keyValues) {
+        StringBuilder b = new StringBuilder(event);
+        for (int i = 0; i + 1 < keyValues.length; i += 2) {
+            b.append(' ').append(keyValues[i]).append('=').append(clean(String.valueOf(keyValues[i + 1])));
+        }
+        if (warn) {
+            AUDIT.warn("{}", b);
+        } else {
+            AUDIT.info("{}", b);
+        }
+    }
+
+    static String clean(String s) {
+        StringBuilder b = new StringBuilder();
+        for (int i = 0; i < s.length() && b.length() < 64; i++) {
+            char c = s.charAt(i);
+            b.append(c <= ' ' || c == 0x7f || (c >= 0x80 && c < 0xa0) || c == '=' ? '_' : c);
+        }
+        if (s.length() > 64) {
+            b.append("...");
+        }
+        return b.length() == 0 ? "-" : b.toString();
+    }
+}

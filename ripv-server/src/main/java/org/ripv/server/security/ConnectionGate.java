@@ -1,0 +1,125 @@
+package org.ripv.server.security;
+
+import java.net.InetAddress;
+import java.time.Duration;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.Map;
+import java.util.Set;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.ScheduledFuture;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * Who may hold a connection to the client port. A connection that has not logged in is
+ * <em>pending</em>: it must log in within the deadline or is closed, and one source address may
+ * hold only so many pending connections. The client cap counts logged-in clients only, so
+ * connections that never log in cannot lock anybody out (issue 10, item 3).
+ */
+public final class ConnectionGate {
+
+    /**
+     * @param loginDeadline how long a connection may stay without logging in (default 10 s)
+     * @param perAddress    pending connections one source address may hold (default 16)
+     * @param maxPending    pending connections in all (default 4,096), a bound on threads
+     * @param maxLoggedIn   logged-in clients at once (the client cap, default 1,000)
+     */
+    public record Limits(Duration loginDeadline, int perAddress, int maxPending, int maxLoggedIn) {
+        public static Limits defaults() {
+            return new Limits(Duration.ofSeconds(10), 16, 4096, 1000);
+        }
+
+        public Limits withLoginDeadline(Duration d) {
+            return new Limits(d, perAddress, maxPending, maxLoggedIn);
+        }
+
+        public Limits withPerAddress(int n) {
+            return new Limits(loginDeadline, n, maxPending, maxLoggedIn);
+        }
+
+        public Limits withMaxLoggedIn(int n) {
+            return new Limits(loginDeadline, perAddress, maxPending, n);
+        }
+    }
+
+    private record Pending(InetAddress address, ScheduledFuture<?> deadline) {}
+
+    private final Limits limits;
+    private final ScheduledExecutorService timer;
+    private final Map<String, Pending> pending = new HashMap<>();
+    private final Map<InetAddress, Integer> pendingPerAddress = new HashMap<>();
+    private final Set<String> loggedIn = new HashSet<>();
+
+    public ConnectionGate(Limits limits, ScheduledExecutorService timer) {
+        this.limits = limits;
+        this.timer = timer;
+    }
+
+    public Limits limits() {
+        return limits;
+    }
+
+    /**
+     * A new connection: admitted (and {@code expire} runs at the deadline unless it logged in by
+     * then), or refused with the reason, which the caller logs before closing the socket.
+     *
+     * @return null when admitted, else why not
+     */
+    public synchronized String admit(String clientId, InetAddress address, Runnable expire) {
+        int fromHere = pendingPerAddress.getOrDefault(address, 0);
+        if (fromHere >= limits.perAddress()) {
+            return fromHere + " connections from " + address.getHostAddress() + " have not logged in yet";
+        }
+        if (pending.size() >= limits.maxPending()) {
+            return pending.size() + " connections have not logged in yet";
+        }
+        ScheduledFuture<?> f = timer.schedule(() -> {
+            if (isPending(clientId)) {
+                expire.run();
+            }
+        }, limits.loginDeadline().toMillis(), TimeUnit.MILLISECONDS);
+        pending.put(clientId, new Pending(address, f));
+        pendingPerAddress.merge(address, 1, Integer::sum);
+        return null;
+    }
+
+    private synchronized boolean isPending(String clientId) {
+        return pending.containsKey(clientId);
+    }
+
+    /**
+     * The connection logged in: it is no longer pending.
+     *
+     * @return false when the client cap is reached (the caller refuses the log-in and closes)
+     */
+    public synchronized boolean loggedIn(String clientId) {
+        if (!loggedIn.contains(clientId) && loggedIn.size() >= limits.maxLoggedIn()) {
+            return false;
+        }
+        release(clientId);
+        loggedIn.add(clientId);
+        return true;
+    }
+
+    /** The connection closed, logged in or not. */
+    public synchronized void closed(String clientId) {
+        release(clientId);
+        loggedIn.remove(clientId);
+    }
+
+    private void release(String clientId) {
+        Pending p = pending.remove(clientId);
+        if (p != null) {
+            p.deadline().cancel(false);
+            pendingPerAddress.computeIfPresent(p.address(), (a, n) -> n <= 1 ? null : n - 1);
+        }
+    }
+
+    public synchronized int pendingCount() {
+        return pending.size();
+    }
+
+    public synchronized int loggedInCount() {
+        return loggedIn.size();
+    }
+}
