@@ -52,6 +52,12 @@ fi
 printf '%s\n' "$PASSWORD" > "$DEMO/password"
 chmod 600 "$DEMO/password"
 
+# The server makes its TLS certificate on first start; the demo's clients remember it in a file of
+# the demo's own (a fresh demo directory means a new certificate, so forget the old one then).
+KNOWN="$DEMO/known_hosts"
+[ -f "$DEMO/server/tls/server.p12" ] || rm -f "$KNOWN"
+export RIPV_KNOWN_HOSTS="$KNOWN"
+
 echo "demo: starting the RIPVServer (logs in $DEMO/logs)" >&2
 "$JAVA" -jar "$(jar ripv-server)" server --data "$DEMO/server" --port "$PORT" --registry-port "$REGISTRY" \
   --http-port "$HTTP" >"$DEMO/logs/server.log" 2>&1 &
@@ -83,13 +89,15 @@ cli_hint() {
 
 RIPV demo is running. Connect with the CLI, e.g.:
 
-  ./ripv cli --server localhost:$PORT --user $USER_NAME --password-file $DEMO/password \\
+  ./ripv cli --server localhost:$PORT --known-hosts $KNOWN --user $USER_NAME --password-file $DEMO/password \\
       --exec '?services' --exec '?mailboxes' \\
       --exec 'use <SerialPortServer>::<localhost>tcp-localhost-$GLIDER' --exec 'dir'
 
   Database:  --exec 'use <DatabaseServer>::<localhost>TTY1' --exec 'SELECT * FROM mission'
   Plot:      --exec 'use <DataVisServer>::<localhost>TTY1' --exec 'vis:glider-temperature.dat'
-  Landing page: http://localhost:$HTTP/      Logs: $DEMO/logs/
+  Landing page: https://localhost:$HTTP/ (the server's own certificate: your browser asks first)
+  Server certificate: $(grep -o 'SHA256:[0-9A-F:]*' "$DEMO/logs/server.log" | head -1)
+  Logs: $DEMO/logs/
 
 Press Ctrl-C to stop everything.
 HINT

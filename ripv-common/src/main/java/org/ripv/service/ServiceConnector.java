@@ -149,7 +149,8 @@ public final class ServiceConnector implements AutoCloseable {
         String[] answer = answer(s.challenge(mine));
         if (answer == null || !ServiceProof.same(answer[1], ServiceProof.serverProof(secret, mine, answer[0]))) {
             throw new Impostor("the object bound as '" + GenericRMIInterface.BINDING + "' in the registry at "
-                    + options.serverHost() + ":" + options.registryPort() + " cannot prove it holds the service secret");
+                    + options.serverHost() + ":" + options.registryPort() + " cannot prove it holds the service secret:"
+                    + " it is an impostor, or this service's --secret-file is not that server's DATA/service.secret");
         }
         String t;
         synchronized (tokenLock) {

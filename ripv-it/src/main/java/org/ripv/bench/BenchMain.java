@@ -29,6 +29,10 @@ public final class BenchMain {
             System.exit(args.length == 0 ? 2 : 0);
         }
         String[] rest = Arrays.copyOfRange(args, 1, args.length);
+        // Each run's server makes a new certificate: keep them out of the user's ~/.ripv/known_hosts.
+        java.nio.file.Path known = java.nio.file.Files.createTempFile("ripv-bench-known-hosts", "");
+        known.toFile().deleteOnExit();
+        System.setProperty(org.ripv.client.handlers.Tls.KNOWN_HOSTS_PROPERTY, known.toString());
         switch (args[0]) {
             case "broker" -> System.exit(Launchers.commandLine(new BrokerBench()).execute(rest));
             case "database" -> DatabaseBench.main(rest);

@@ -8,6 +8,7 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import org.ripv.client.handlers.ClientSocketHandler;
+import org.ripv.client.handlers.Tls;
 import org.ripv.server.RIPVServer;
 import org.ripv.server.ServerConfig;
 import org.ripv.server.permit.PermitFile;
@@ -44,7 +45,45 @@ public final class TestSystem implements AutoCloseable {
         return start(ServerConfig.forTests(dir.resolve("server")));
     }
 
+    static {
+        // Every test server is new: remember their certificates in a file of this JVM's own.
+        if (System.getProperty(Tls.KNOWN_HOSTS_PROPERTY) == null) {
+            try {
+                Path f = Files.createTempFile("ripv-known-hosts", "");
+                f.toFile().deleteOnExit();
+                System.setProperty(Tls.KNOWN_HOSTS_PROPERTY, f.toString());
+            } catch (IOException e) {
+                throw new java.io.UncheckedIOException(e);
+            }
+        }
+    }
+
+    private static Path sharedTls;
+
+    /**
+     * Gives a new data directory the TLS key store made once for this JVM, as if the server had
+     * made it on its first start (keytool takes a second; tests start many servers).
+     */
+    private static synchronized void seedTls(ServerConfig config) throws IOException {
+        if (config.tls() != null || config.security().plain()) {
+            return;
+        }
+        if (sharedTls == null) {
+            Path dir = Files.createTempDirectory("ripv-test-tls");
+            org.ripv.server.security.SelfSignedTls.loadOrCreate(dir);
+            sharedTls = dir;
+        }
+        Path tls = config.dataDir().resolve("tls");
+        if (!Files.exists(tls.resolve("server.p12"))) {
+            Files.createDirectories(tls);
+            for (String f : List.of("server.p12", "server.pass")) {
+                Files.copy(sharedTls.resolve(f), tls.resolve(f), java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+            }
+        }
+    }
+
     public static TestSystem start(ServerConfig config) throws IOException {
+        seedTls(config);
         RIPVServer server = new RIPVServer(config);
         server.start();
         return new TestSystem(config.dataDir(), server);
@@ -107,10 +146,29 @@ public final class TestSystem implements AutoCloseable {
         return c;
     }
 
+    /** A connection over TLS (trusting the test server on first use), or plain TCP to a --plain server. */
     public ClientSocketHandler connect() throws IOException {
-        ClientSocketHandler c = ClientSocketHandler.connect("localhost", server.port());
+        ClientSocketHandler c = isPlain() ? ClientSocketHandler.connectPlain("localhost", server.port())
+                : ClientSocketHandler.connect("localhost", server.port());
         closeables.add(c);
         return c;
+    }
+
+    private boolean isPlain() {
+        return server.tlsFingerprint() == null;
+    }
+
+    /** A raw socket to the client port (TLS unless the server is plain), for tests that write bytes by hand. */
+    public java.net.Socket rawSocket() throws IOException {
+        java.net.Socket s = isPlain() ? new java.net.Socket("localhost", server.port())
+                : Tls.trustOnFirstUse("localhost", server.port(), Tls.defaultKnownHosts(), n -> { }).createSocket("localhost", server.port());
+        closeables.add(s);
+        return s;
+    }
+
+    /** The known-hosts file the test clients use. */
+    public static Path knownHosts() {
+        return Tls.defaultKnownHosts();
     }
 
     /** A client logged in as the user. */

@@ -52,7 +52,7 @@ class TlsTest {
             assertThat(out.toString(StandardCharsets.UTF_8)).contains("pong");
 
             Throwable plain = null;
-            try (ClientSocketHandler c = ClientSocketHandler.connect("localhost", sys.server().port())) {
+            try (ClientSocketHandler c = ClientSocketHandler.connectPlain("localhost", sys.server().port())) {
                 c.call("", "?ping", org.ripv.messages.Priority.NORMAL, Duration.ofSeconds(5), null);
             } catch (Exception e) {
                 plain = e;

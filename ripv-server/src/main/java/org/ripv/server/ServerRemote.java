@@ -34,10 +34,10 @@ final class ServerRemote implements GenericRMIInterface {
 
     @Override
     public String register(ServiceDescriptor d, GenericRMIInterface service, String proof) {
+        ServiceChallenges.Accepted accepted = server.challenges().verify(proof, d == null ? null : d.name(), service);
         if (d == null || service == null) {
             throw new IllegalArgumentException("a registration needs a descriptor and the service's stub");
         }
-        ServiceChallenges.Accepted accepted = server.challenges().verify(proof, d.name(), service);
         ServiceName.parse(d.name());
         ServiceReference ref = new ServiceReference(d, service, accepted.token(), server::undeliverable);
         ServiceReference old = server.serviceMap().put(d.name(), ref);

@@ -65,7 +65,7 @@ public final class ServiceChallenges {
             throw new SecurityException("the registration's challenge is unknown, used or expired; register again");
         }
         String s = secret.get();
-        if (!ServiceProof.same(w[1], ServiceProof.serviceProof(s, i.serviceNonce(), w[0], serviceName, stub))) {
+        if (serviceName == null || stub == null || !ServiceProof.same(w[1], ServiceProof.serviceProof(s, i.serviceNonce(), w[0], serviceName, stub))) {
             Audit.log(true, "register-refused", "service", serviceName, "reason", "wrong-secret");
             throw new SecurityException("wrong service secret: give the server's DATA/service.secret with --secret-file");
         }
