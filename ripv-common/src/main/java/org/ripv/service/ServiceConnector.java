@@ -117,8 +117,8 @@ public final class ServiceConnector implements AutoCloseable {
             // Someone else holds the name: say so loudly, and keep trying until the real server is back.
             if (!warnedImpostor) {
                 warnedImpostor = true;
-                log.error("{}: POSSIBLE IMPOSTOR: {}; sent it no secret and nothing derived from it; retrying every {} s",
-                        service.name(), e.getMessage(), options.heartbeat().toSeconds());
+                log.error("{}: POSSIBLE IMPOSTOR: {}; sent it no secret and nothing derived from it; retrying every {} ms",
+                        service.name(), e.getMessage(), options.heartbeat().toMillis());
             }
             lost();
         } catch (SecurityException e) {
