@@ -247,7 +247,8 @@ public final class RIPVServer implements AutoCloseable {
             return;
         }
         LandingPage page = new LandingPage(new LandingPage.Options(new InetSocketAddress(bind, config.httpPort()),
-                files.uploadDir(), config.maxUpload(), config.clientJar(), this::describe, port()));
+                files.uploadDir(), config.maxUpload(), config.clientJar(), this::describe, port(),
+                config.security().httpUpload() ? security.webAccess() : null, tls()));
         try {
             page.start();
         } catch (IOException e) {

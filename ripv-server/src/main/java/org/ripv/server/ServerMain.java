@@ -64,6 +64,9 @@ public final class ServerMain implements Callable<Integer> {
         Path tlsKeystore;
         @Option(names = "--plain", description = "No TLS on the client port and the landing page (a test lab only: passwords cross in clear).")
         boolean plain;
+        @Option(names = "--http-upload", description = "Let users who log in on the landing page upload files (off by default;"
+                + " the permit file's ?upload rules apply).")
+        boolean httpUpload;
         @Option(names = "--login-deadline", defaultValue = "10", description = "Seconds a connection may take to log in (default ${DEFAULT-VALUE}).")
         long loginDeadline;
         @Option(names = "--tls-password-file", description = "File holding the key store's password.")
@@ -87,7 +90,8 @@ public final class ServerMain implements Callable<Integer> {
                     .withPermitFile(permit)
                     .withBindAddress(bind)
                     .withClientJar(clientJar != null ? clientJar : defaultClientJar());
-            config = config.withSecurity(config.security().withPlain(plain).withLoginDeadline(Duration.ofSeconds(loginDeadline)));
+            config = config.withSecurity(config.security().withPlain(plain).withHttpUpload(httpUpload)
+                    .withLoginDeadline(Duration.ofSeconds(loginDeadline)));
             String fingerprint = null;
             if (tlsKeystore != null && plain) {
                 throw new CommandLine.ParameterException(new CommandLine(new Serve()), "--plain and --tls-keystore exclude each other");

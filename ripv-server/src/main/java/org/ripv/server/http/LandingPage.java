@@ -14,6 +14,7 @@ import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.Objects;
 import java.util.Set;
 import java.util.concurrent.ExecutorService;
@@ -61,9 +62,17 @@ public final class LandingPage implements AutoCloseable {
      * @param clientJar      the client jar to offer, or null
      * @param status         one or more lines saying what this server is (name, ports, services)
      * @param clientPort     the RIPV client port the JNLP client should connect to, or 0 to let it ask
+     * @param access         who may upload after logging in on the page; null: no uploads at all (the default)
+     * @param tls            serve HTTPS with this context; null: plain HTTP
      */
     public record Options(InetSocketAddress bind, Path uploadDir, long maxUploadBytes, Path clientJar,
-                          Supplier<String> status, int clientPort) {
+                          Supplier<String> status, int clientPort, WebAccess access, javax.net.ssl.SSLContext tls) {
+        /** Without uploads, over plain HTTP. */
+        public Options(InetSocketAddress bind, Path uploadDir, long maxUploadBytes, Path clientJar,
+                       Supplier<String> status, int clientPort) {
+            this(bind, uploadDir, maxUploadBytes, clientJar, status, clientPort, null, null);
+        }
+
         public Options {
             Objects.requireNonNull(bind, "bind");
             Objects.requireNonNull(uploadDir, "uploadDir");
@@ -78,6 +87,7 @@ public final class LandingPage implements AutoCloseable {
     }
 
     private final Options options;
+    private final WebSessions sessions = new WebSessions();
     private HttpServer http;
     private ExecutorService pool;
 
@@ -96,7 +106,14 @@ public final class LandingPage implements AutoCloseable {
             return;
         }
         Files.createDirectories(options.uploadDir());
-        HttpServer s = HttpServer.create(options.bind(), 32);
+        HttpServer s;
+        if (options.tls() != null) {
+            com.sun.net.httpserver.HttpsServer https = com.sun.net.httpserver.HttpsServer.create(options.bind(), 32);
+            https.setHttpsConfigurator(new com.sun.net.httpserver.HttpsConfigurator(options.tls()));
+            s = https;
+        } else {
+            s = HttpServer.create(options.bind(), 32);
+        }
         AtomicInteger n = new AtomicInteger();
         pool = Executors.newFixedThreadPool(4, r -> {
             Thread t = new Thread(r, "ripv-http-" + n.incrementAndGet());
@@ -107,7 +124,8 @@ public final class LandingPage implements AutoCloseable {
         s.createContext("/", this::handle);
         s.start();
         http = s;
-        log.info("landing page on http://{}:{}/", options.bind().getHostString(), port());
+        log.info("landing page on {}://{}:{}/{}", scheme(), options.bind().getHostString(), port(),
+                options.access() == null ? " (uploads off)" : " (uploads after log-in)");
     }
 
     /** The bound port. */
@@ -157,9 +175,13 @@ public final class LandingPage implements AutoCloseable {
                         ex.getResponseHeaders().set("Allow", "POST");
                         send(ex, 405, "text/plain; charset=utf-8", "use POST with multipart/form-data (the form on /)\n");
                     } else {
-                        upload(ex);
+                        WebSessions.Session session = uploader(ex);
+                        if (session != null) {
+                            upload(ex, session);
+                        }
                     }
                 }
+                case "/login" -> login(ex, method);
                 default -> send(ex, 404, "text/plain; charset=utf-8", "no page " + path + " here; see /\n");
             }
         } catch (IOException | RuntimeException e) {
@@ -174,6 +196,102 @@ public final class LandingPage implements AutoCloseable {
         ex.getResponseHeaders().set("Allow", "GET, HEAD");
         send(ex, 405, "text/plain; charset=utf-8", method + " is not allowed here; use GET\n");
         return false;
+    }
+
+    private String scheme() {
+        return options.tls() == null ? "http" : "https";
+    }
+
+    /** The logged-in visitor an upload comes from, or null after answering why not. */
+    private WebSessions.Session uploader(HttpExchange ex) throws IOException {
+        if (options.access() == null) {
+            drainAndFail(ex, 403, "Uploads are off", "This server takes no uploads through its web page (its operator"
+                    + " turns them on with --http-upload). Use the RIPV client's put instead. Nothing was saved.");
+            return null;
+        }
+        WebSessions.Session s = sessions.find(ex);
+        if (s == null) {
+            drainAndFail(ex, 403, "Log in first", "Uploads need a log-in: use the log-in form on /login. Nothing was saved.");
+            return null;
+        }
+        String query = ex.getRequestURI().getRawQuery();
+        if (query == null || !java.security.MessageDigest.isEqual(("csrf=" + s.csrf).getBytes(StandardCharsets.UTF_8),
+                query.getBytes(StandardCharsets.UTF_8))) {
+            drainAndFail(ex, 403, "Form expired", "The upload did not come from this server's own form (no or a wrong"
+                    + " CSRF token); reload / and try again. Nothing was saved.");
+            return null;
+        }
+        return s;
+    }
+
+    /** GET: the log-in form; POST: checks the password with the server's limits and starts a session. */
+    private void login(HttpExchange ex, String method) throws IOException {
+        if (options.access() == null) {
+            send(ex, 404, "text/plain; charset=utf-8", "this server takes no uploads through its web page, so there is no log-in\n");
+            return;
+        }
+        if ("GET".equals(method) || "HEAD".equals(method)) {
+            send(ex, 200, "text/html; charset=utf-8", page("Log in to upload",
+                    "<form id=\"login\" method=\"post\" action=\"/login\"><p>User <input name=\"user\" autocomplete=\"username\"></p>"
+                    + "<p>Password <input name=\"password\" type=\"password\" autocomplete=\"current-password\"></p>"
+                    + "<p><input type=\"submit\" value=\"Log in\"></p></form>"));
+            return;
+        }
+        if (!"POST".equals(method)) {
+            ex.getResponseHeaders().set("Allow", "GET, POST");
+            send(ex, 405, "text/plain; charset=utf-8", method + " is not allowed here\n");
+            return;
+        }
+        byte[] body = ex.getRequestBody().readNBytes(4096);
+        Map<String, String> f = formFields(new String(body, StandardCharsets.UTF_8));
+        String user = f.getOrDefault("user", "");
+        char[] password = f.getOrDefault("password", "").toCharArray();
+        WebAccess.Result r = options.access().login(user, password, ex.getRemoteAddress().getAddress().getHostAddress());
+        if (r.user() == null) {
+            fail(ex, 403, "Log-in refused", r.refusal());
+            return;
+        }
+        WebSessions.Session s = sessions.create(r.user());
+        ex.getResponseHeaders().add("Set-Cookie", WebSessions.cookie(s, options.tls() != null));
+        ex.getResponseHeaders().set("Location", "/");
+        send(ex, 303, "text/html; charset=utf-8", page("Logged in", "<p>Logged in as " + html(r.user())
+                + ". <a href=\"/\">Back</a></p>"));
+    }
+
+    private static Map<String, String> formFields(String body) {
+        Map<String, String> m = new java.util.HashMap<>();
+        for (String pair : body.split("&")) {
+            String[] kv = pair.split("=", 2);
+            if (kv.length == 2) {
+                try {
+                    m.put(java.net.URLDecoder.decode(kv[0], StandardCharsets.UTF_8), java.net.URLDecoder.decode(kv[1], StandardCharsets.UTF_8));
+                } catch (IllegalArgumentException ignored) {
+                    // a malformed field is no field
+                }
+            }
+        }
+        return m;
+    }
+
+    private String uploadSection(HttpExchange ex) {
+        if (options.access() == null) {
+            return "<h2>Upload files to the server</h2>\n<p id=\"upload-off\">This page takes no uploads (the operator turns"
+                    + " them on with <code>--http-upload</code>). Use the client's <code>put</code>.</p>\n";
+        }
+        WebSessions.Session s = sessions.find(ex);
+        if (s == null) {
+            return "<h2>Upload files to the server</h2>\n<p><a id=\"login\" href=\"/login\">Log in</a> to upload files"
+                    + " (the same users and rights as the client).</p>\n";
+        }
+        return "<h2>Upload files to the server</h2>\n"
+                + "<p>Logged in as " + html(s.user) + ". Files go to the server's upload directory, where services can use"
+                + " them (for example <code>vis:NAME</code> or <code>ymodem:put NAME</code>). Plain file names only: no slashes or "
+                + "backslashes, no leading dot; an existing file is never replaced. At most " + options.maxUploadBytes()
+                + " bytes per upload, all files together. If any file breaks a rule, none is saved.</p>\n"
+                + "<form id=\"upload\" method=\"post\" action=\"/upload?csrf=" + s.csrf + "\" enctype=\"multipart/form-data\">\n"
+                + "<p><input type=\"file\" name=\"file-to-upload-1\"><br><input type=\"file\" name=\"file-to-upload-2\"><br>"
+                + "<input type=\"file\" name=\"file-to-upload-3\"></p>\n"
+                + "<p><input type=\"submit\" value=\"Upload\"></p></form>\n";
     }
 
     private String index(HttpExchange ex) {
@@ -194,15 +312,7 @@ public final class LandingPage implements AutoCloseable {
                 + "<code>mvn -DskipTests package</code>; it is <code>ripv-client/target/ripv-client.jar</code>.</p>\n")
                 + "<p>Without a display, use the command-line client: <code>ripv cli --server " + html(connect)
                 + " --user USER --password-file FILE</code>.</p>\n"
-                + "<h2>Upload files to the server</h2>\n"
-                + "<p>Files go to the server's upload directory, where services can use them (for example "
-                + "<code>vis:NAME</code> or <code>ymodem:put NAME</code>). Plain file names only: no slashes or "
-                + "backslashes, no leading dot. At most " + options.maxUploadBytes() + " bytes per upload, all files "
-                + "together. If any file breaks a rule, none is saved.</p>\n"
-                + "<form id=\"upload\" method=\"post\" action=\"/upload\" enctype=\"multipart/form-data\">\n"
-                + "<p><input type=\"file\" name=\"file-to-upload-1\"><br><input type=\"file\" name=\"file-to-upload-2\"><br>"
-                + "<input type=\"file\" name=\"file-to-upload-3\"></p>\n"
-                + "<p><input type=\"submit\" value=\"Upload\"></p></form>\n</body></html>\n";
+                + uploadSection(ex) + "</body></html>\n";
     }
 
     private void jar(HttpExchange ex, String method) throws IOException {
@@ -229,7 +339,7 @@ public final class LandingPage implements AutoCloseable {
     private String jnlp(HttpExchange ex) {
         String host = host(ex);
         String hostOnly = host.replaceFirst(":\\d+$", "");
-        String codebase = "http://" + host + "/";
+        String codebase = scheme() + "://" + host + "/";
         String server = hostOnly + (options.clientPort() > 0 ? ":" + options.clientPort() : "");
         return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
                 + "<jnlp spec=\"1.0+\" codebase=\"" + xml(codebase) + "\" href=\"ripv-client.jnlp\">\n"
@@ -261,7 +371,7 @@ public final class LandingPage implements AutoCloseable {
         return (a.indexOf(':') >= 0 ? "[" + a + "]" : a) + ":" + local.getPort();
     }
 
-    private void upload(HttpExchange ex) throws IOException {
+    private void upload(HttpExchange ex, WebSessions.Session session) throws IOException {
         String boundary = MultipartStream.boundary(ex.getRequestHeaders().getFirst("Content-Type"));
         if (boundary == null) {
             drainAndFail(ex, 400, "Not a form upload", "The upload must be sent as multipart/form-data (use the form on the front page).");
@@ -284,7 +394,7 @@ public final class LandingPage implements AutoCloseable {
         }
         Path dir = options.uploadDir();
         if (!Files.isDirectory(dir) || !Files.isWritable(dir)) {
-            drainAndFail(ex, 500, "Bad directory", "The server's upload directory " + dir
+            drainAndFail(ex, 500, "Bad directory", "The server's upload directory"
                     + " does not exist or is not writable; tell the server's administrator. None of the files were saved.");
             return;
         }
@@ -306,6 +416,14 @@ public final class LandingPage implements AutoCloseable {
                             + ". Files may not have forward or backward slashes in their names, nor begin with a dot. "
                             + "Rename the file on your computer and upload it again.");
                 }
+                if (!options.access().mayUpload(session.user, name)) {
+                    throw new Refused(403, "Not allowed", "User " + session.user + " may not upload " + name
+                            + " (the permit file has no rule allowing ?upload for them).");
+                }
+                if (Files.exists(dir.resolve(name))) {
+                    throw new Refused(409, "File exists", "A file named " + name + " is in the upload directory"
+                            + " already, and this page never replaces one. Rename yours, or ask an operator.");
+                }
                 if (!names.add(name)) {
                     throw new Refused(400, "Filename problem", "'" + name + "' is given twice in one upload.");
                 }
@@ -324,12 +442,20 @@ public final class LandingPage implements AutoCloseable {
             if (pending.isEmpty()) {
                 throw new Refused(400, "No files", "The form held no files to upload.");
             }
-            // Every file arrived and passed the rules: now, and only now, put them in place.
+            if (!sessions.charge(session, pending.size(), total, 4 * limit)) {
+                throw new Refused(429, "Too much", "This log-in has uploaded as much as one session may ("
+                        + WebSessions.MAX_FILES + " files, " + 4 * limit + " bytes); log in again later.");
+            }
+            // Every file arrived and passed the rules: now, and only now, put them in place (never over another).
             StringBuilder saved = new StringBuilder();
             for (Pending p : pending) {
-                Files.move(p.tmp(), dir.resolve(p.name()), StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+                try {
+                    Files.move(p.tmp(), dir.resolve(p.name()));
+                } catch (java.nio.file.FileAlreadyExistsException e) {
+                    throw new Refused(409, "File exists", "A file named " + p.name() + " arrived meanwhile; nothing of it was replaced.");
+                }
                 saved.append("<li>").append(html(p.name())).append(" (").append(p.size()).append(" bytes)</li>");
-                log.info("landing page upload stored {} ({} bytes) from {}", p.name(), p.size(), ex.getRemoteAddress());
+                log.info("landing page upload stored {} ({} bytes) for {} from {}", p.name(), p.size(), session.user, ex.getRemoteAddress());
             }
             pending.clear();
             send(ex, 200, "text/html; charset=utf-8", page("Upload complete",

@@ -54,43 +54,38 @@ public final class Logins {
         }
         String user = words[1];
         String address = client.remoteInetAddress().getHostAddress();
-        LoginThrottle.Block block = throttle.blocked(user, address);
-        if (block != null) {
-            Audit.log(true, "login-refused", "user", user, "from", address, "client", client.clientId(),
-                    "reason", block.locked() ? "locked" : "blocked", "blocked", block.who(), "seconds-left", seconds(block));
-            client.sendAndClose(refusal(request, ErrorCode.FORBIDDEN, tooMany(block)));
-            return;
-        }
         byte[] raw = request.header().attachment().data();
         CharBuffer chars = StandardCharsets.UTF_8.decode(ByteBuffer.wrap(raw));
         char[] password = Arrays.copyOf(chars.array(), chars.limit());
         Arrays.fill(chars.array(), '\0');
-        Optional<PermitFile.User> u;
-        try {
-            PermitFile file = permits.get();
-            u = pool.run(() -> file.authenticate(user, password));
-        } catch (LoginPool.Busy e) {
-            Audit.log(true, "login-busy", "user", user, "from", address, "client", client.clientId());
-            client.send(refusal(request, ErrorCode.NOT_AVAILABLE, e.getMessage()));
-            return;
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            client.close();
-            return;
-        } finally {
-            Arrays.fill(password, '\0');
-        }
-        if (u.isEmpty()) {
-            failed(client, request, user, address);
+        Check c = check(user, password, address, "client " + client.clientId());
+        if (c.busy() != null) {
+            client.send(refusal(request, ErrorCode.NOT_AVAILABLE, c.busy()));
             return;
         }
+        if (c.block() != null && c.user() == null && !c.failed()) {
+            client.sendAndClose(refusal(request, ErrorCode.FORBIDDEN, tooMany(c.block())));
+            return;
+        }
+        if (c.failed()) {
+            int onConnection = client.failedLogin();
+            if (c.block() != null) {
+                client.sendAndClose(refusal(request, ErrorCode.FORBIDDEN, "wrong user name or password; " + tooMany(c.block())));
+            } else if (onConnection >= MAX_FAILED_PER_CONNECTION) {
+                client.sendAndClose(refusal(request, ErrorCode.FORBIDDEN,
+                        "wrong user name or password; too many failures, disconnecting"));
+            } else {
+                client.send(refusal(request, ErrorCode.FORBIDDEN, "wrong user name or password"));
+            }
+            return;
+        }
+        Optional<PermitFile.User> u = Optional.of(c.user());
         if (!gate.loggedIn(client.clientId())) {
             Audit.log(true, "login-refused", "user", user, "from", address, "client", client.clientId(), "reason", "server-full");
             client.sendAndClose(refusal(request, ErrorCode.NOT_AVAILABLE, "the server has " + gate.limits().maxLoggedIn()
                     + " clients logged in, the most it takes; try again later"));
             return;
         }
-        throttle.success(user);
         client.loggedIn(user, u.get().roles());
         Audit.log(false, "login", "user", user, "from", address, "client", client.clientId());
         log.info("client {} ({}) logged in as {} {}", client.clientId(), client.remoteAddress(), user, u.get().roles());
@@ -98,20 +93,53 @@ public final class Logins {
                 new SessionInfo(client.clientId(), user, u.get().roles(), "RIPVServer"))));
     }
 
-    private void failed(SocketHandler client, IncomingServerMessage request, String user, String address) {
-        int onConnection = client.failedLogin();
-        LoginThrottle.Block block = throttle.failure(user, address);
-        Audit.log(true, "login-failed", "user", user, "from", address, "client", client.clientId(),
-                "on-connection", onConnection, "blocked", block == null ? "no" : block.who(),
-                "seconds", block == null ? 0 : seconds(block));
-        if (block != null) {
-            client.sendAndClose(refusal(request, ErrorCode.FORBIDDEN, "wrong user name or password; " + tooMany(block)));
-        } else if (onConnection >= MAX_FAILED_PER_CONNECTION) {
-            client.sendAndClose(refusal(request, ErrorCode.FORBIDDEN,
-                    "wrong user name or password; too many failures, disconnecting"));
-        } else {
-            client.send(refusal(request, ErrorCode.FORBIDDEN, "wrong user name or password"));
+    /**
+     * The outcome of checking a password: the user, or a failure (with the block it caused), or a
+     * block in force before any hashing, or the pool too busy to check.
+     */
+    public record Check(PermitFile.User user, boolean failed, LoginThrottle.Block block, String busy) {}
+
+    /**
+     * Checks a password with the limits and the audit of every log-in, wherever it comes from (the
+     * client port, the landing page). Clears the password.
+     *
+     * @param where what to name in the audit line, e.g. {@code client 100001} or {@code web}
+     */
+    public Check check(String user, char[] password, String address, String where) {
+        try {
+            LoginThrottle.Block block = throttle.blocked(user, address);
+            if (block != null) {
+                Audit.log(true, "login-refused", "user", user, "from", address, "via", where,
+                        "reason", block.locked() ? "locked" : "blocked", "blocked", block.who(), "seconds-left", seconds(block));
+                return new Check(null, false, block, null);
+            }
+            Optional<PermitFile.User> u;
+            try {
+                PermitFile file = permits.get();
+                u = pool.run(() -> file.authenticate(user, password));
+            } catch (LoginPool.Busy e) {
+                Audit.log(true, "login-busy", "user", user, "from", address, "via", where);
+                return new Check(null, false, null, e.getMessage());
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                return new Check(null, false, null, "interrupted");
+            }
+            if (u.isPresent()) {
+                throttle.success(user);
+                return new Check(u.get(), false, null, null);
+            }
+            LoginThrottle.Block caused = throttle.failure(user, address);
+            Audit.log(true, "login-failed", "user", user, "from", address, "via", where,
+                    "blocked", caused == null ? "no" : caused.who(), "seconds", caused == null ? 0 : seconds(caused));
+            return new Check(null, true, caused, null);
+        } finally {
+            Arrays.fill(password, '\0');
         }
+    }
+
+    /** What to tell someone who is blocked. */
+    public static String refusalText(LoginThrottle.Block b) {
+        return tooMany(b);
     }
 
     private static String tooMany(LoginThrottle.Block b) {

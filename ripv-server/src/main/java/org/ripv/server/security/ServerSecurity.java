@@ -11,6 +11,7 @@ public final class ServerSecurity implements AutoCloseable {
     private final LoginPool pool;
     private final Logins logins;
     private final ServiceChallenges challenges;
+    private final WebLogins web;
 
     public ServerSecurity(SecuritySettings settings, int maxClients, ScheduledExecutorService timer,
                           Supplier<PermitFile> permits, Supplier<String> secret) {
@@ -20,6 +21,7 @@ public final class ServerSecurity implements AutoCloseable {
         this.pool = new LoginPool();
         this.logins = new Logins(permits, throttle, pool, gate);
         this.challenges = new ServiceChallenges(secret);
+        this.web = new WebLogins(logins, permits);
     }
 
     public ConnectionGate gate() {
@@ -32,6 +34,11 @@ public final class ServerSecurity implements AutoCloseable {
 
     public Logins logins() {
         return logins;
+    }
+
+    /** The landing page's log-in, for {@code --http-upload}. */
+    public WebLogins webAccess() {
+        return web;
     }
 
     public ServiceChallenges challenges() {

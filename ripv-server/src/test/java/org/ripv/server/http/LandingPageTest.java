@@ -39,7 +39,8 @@ class LandingPageTest {
         uploads = tmp.resolve("upload");
         jar = tmp.resolve("ripv-client.jar");
         page = new LandingPage(new LandingPage.Options(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0),
-                uploads, LIMIT, jar, () -> "RIPVServer on testhost\nclient port 4444, 3 service(s) registered", 4444));
+                uploads, LIMIT, jar, () -> "RIPVServer on testhost\nclient port 4444, 3 service(s) registered", 4444,
+                TESTER, null));
         page.start();
         base = "http://127.0.0.1:" + page.port();
     }
@@ -47,6 +48,39 @@ class LandingPageTest {
     @AfterEach
     void stop() {
         page.stop();
+    }
+
+    /** Lets "tester" in with "pass"; refuses files named forbidden*. */
+    static final WebAccess TESTER = new WebAccess() {
+        @Override
+        public Result login(String user, char[] password, String address) {
+            return user.equals("tester") && new String(password).equals("pass") ? Result.ok(user)
+                    : Result.refused("wrong user name or password");
+        }
+
+        @Override
+        public boolean mayUpload(String user, String fileName) {
+            return !fileName.startsWith("forbidden");
+        }
+    };
+
+    String cookie;
+    String csrf;
+
+    /** Logs in through the form; keeps the session cookie and the form's CSRF token. */
+    void logIn() throws Exception {
+        HttpResponse<String> r = http.send(HttpRequest.newBuilder(URI.create(base + "/login"))
+                .header("Content-Type", "application/x-www-form-urlencoded")
+                .POST(HttpRequest.BodyPublishers.ofString("user=tester&password=pass")).build(), HttpResponse.BodyHandlers.ofString());
+        assertThat(r.statusCode()).as(r.body()).isEqualTo(303);
+        String set = r.headers().firstValue("Set-Cookie").orElseThrow();
+        assertThat(set).contains("HttpOnly").contains("SameSite=Strict");
+        cookie = set.split(";")[0];
+        String index = http.send(HttpRequest.newBuilder(URI.create(base + "/")).header("Cookie", cookie).build(),
+                HttpResponse.BodyHandlers.ofString()).body();
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile("action=\"/upload\\?csrf=([0-9a-f]+)\"").matcher(index);
+        assertThat(m.find()).as(index).isTrue();
+        csrf = m.group(1);
     }
 
     HttpResponse<String> get(String path) throws Exception {
@@ -62,7 +96,7 @@ class LandingPageTest {
         assertThat(r.headers().firstValue("Content-Type")).hasValue("text/html; charset=utf-8");
         assertThat(r.body()).contains("RIPVServer on testhost").contains("3 service(s) registered")
                 .contains("href=\"/ripv-client.jar\"").contains("href=\"/ripv-client.jnlp\"")
-                .contains("enctype=\"multipart/form-data\"").contains("action=\"/upload\"")
+                .contains("href=\"/login\"").doesNotContain("action=\"/upload")
                 .contains("client 127.0.0.1:4444").contains("ripv cli --server 127.0.0.1:4444");
     }
 
@@ -156,7 +190,10 @@ class LandingPageTest {
     }
 
     HttpResponse<String> post(byte[] body) throws Exception {
-        return http.send(HttpRequest.newBuilder(URI.create(base + "/upload"))
+        if (cookie == null) {
+            logIn();
+        }
+        return http.send(HttpRequest.newBuilder(URI.create(base + "/upload?csrf=" + csrf)).header("Cookie", cookie)
                 .header("Content-Type", "multipart/form-data; boundary=" + BOUNDARY)
                 .POST(HttpRequest.BodyPublishers.ofByteArray(body)).build(), HttpResponse.BodyHandlers.ofString());
     }
@@ -173,6 +210,61 @@ class LandingPageTest {
         try (Stream<Path> s = Files.list(uploads)) {
             return s.count();
         }
+    }
+
+    HttpResponse<String> postAs(String query, String cookieHeader, byte[] body) throws Exception {
+        HttpRequest.Builder b = HttpRequest.newBuilder(URI.create(base + "/upload" + query))
+                .header("Content-Type", "multipart/form-data; boundary=" + BOUNDARY);
+        if (cookieHeader != null) {
+            b.header("Cookie", cookieHeader);
+        }
+        return http.send(b.POST(HttpRequest.BodyPublishers.ofByteArray(body)).build(), HttpResponse.BodyHandlers.ofString());
+    }
+
+    static byte[] oneFile(String name) throws IOException {
+        Map<String, Object[]> f = new LinkedHashMap<>();
+        f.put("file-to-upload-1", new Object[] {name, bytes(100, 9)});
+        return form(f);
+    }
+
+    @Test
+    void anAnonymousUploadIsRefusedAndWritesNothing() throws Exception {
+        // Issue 10 item 2: curl -F file-to-upload-1=@x;filename=mission.bin http://server:8080/upload
+        HttpResponse<String> r = postAs("", null, oneFile("mission.bin"));
+        assertThat(r.statusCode()).isEqualTo(403);
+        assertThat(r.body()).contains("Log in first");
+        assertThat(visibleFiles()).isZero();
+        // A wrong password gives no session; a session without the form's CSRF token is refused too.
+        HttpResponse<String> bad = http.send(HttpRequest.newBuilder(URI.create(base + "/login"))
+                .POST(HttpRequest.BodyPublishers.ofString("user=tester&password=guess")).build(), HttpResponse.BodyHandlers.ofString());
+        assertThat(bad.statusCode()).isEqualTo(403);
+        assertThat(bad.headers().firstValue("Set-Cookie")).isEmpty();
+        logIn();
+        assertThat(postAs("", cookie, oneFile("mission.bin")).statusCode()).isEqualTo(403);
+        assertThat(postAs("?csrf=" + "0".repeat(48), cookie, oneFile("mission.bin")).statusCode()).isEqualTo(403);
+        assertThat(visibleFiles()).isZero();
+        // The permit decides per name; an existing file is never replaced.
+        assertThat(post(oneFile("forbidden.bin")).statusCode()).isEqualTo(403);
+        assertThat(post(oneFile("mission.bin")).statusCode()).isEqualTo(200);
+        Files.write(uploads.resolve("mission.bin"), new byte[] {1, 2, 3});
+        HttpResponse<String> again = post(oneFile("mission.bin"));
+        assertThat(again.statusCode()).isEqualTo(409);
+        assertThat(Files.readAllBytes(uploads.resolve("mission.bin"))).containsExactly(1, 2, 3);
+        assertThat(visibleFiles()).isEqualTo(1);
+    }
+
+    @Test
+    void withoutAccessThePageTakesNoUploadsAtAll() throws Exception {
+        page.stop();
+        page = new LandingPage(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0), uploads, LIMIT, null, () -> "x");
+        page.start();
+        base = "http://127.0.0.1:" + page.port();
+        assertThat(get("/").body()).contains("takes no uploads").doesNotContain("<form");
+        HttpResponse<String> r = postAs("", null, oneFile("mission.bin"));
+        assertThat(r.statusCode()).isEqualTo(403);
+        assertThat(r.body()).contains("--http-upload");
+        assertThat(get("/login").statusCode()).isEqualTo(404);
+        assertThat(visibleFiles()).isZero();
     }
 
     @Test
@@ -228,8 +320,9 @@ class LandingPageTest {
 
     @Test
     void malformedFormsAreClearErrors() throws Exception {
-        HttpResponse<String> notMultipart = http.send(HttpRequest.newBuilder(URI.create(base + "/upload"))
-                .header("Content-Type", "text/plain").POST(HttpRequest.BodyPublishers.ofString("hello")).build(),
+        logIn();
+        HttpResponse<String> notMultipart = http.send(HttpRequest.newBuilder(URI.create(base + "/upload?csrf=" + csrf))
+                .header("Cookie", cookie).header("Content-Type", "text/plain").POST(HttpRequest.BodyPublishers.ofString("hello")).build(),
                 HttpResponse.BodyHandlers.ofString());
         assertThat(notMultipart.statusCode()).isEqualTo(400);
         assertThat(notMultipart.body()).contains("multipart/form-data");

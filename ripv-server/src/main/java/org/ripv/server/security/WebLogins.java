@@ -1,0 +1,43 @@
+package org.ripv.server.security;
+
+import java.util.function.Supplier;
+import org.ripv.server.http.WebAccess;
+import org.ripv.server.permit.PermitFile;
+
+/**
+ * The landing page's log-in ({@code --http-upload}): the client port's users, limits, pool and
+ * audit, and the permit file's rule for {@code ?upload NAME} on {@code RIPVServer}.
+ */
+public final class WebLogins implements WebAccess {
+    private final Logins logins;
+    private final Supplier<PermitFile> permits;
+
+    public WebLogins(Logins logins, Supplier<PermitFile> permits) {
+        this.logins = logins;
+        this.permits = permits;
+    }
+
+    @Override
+    public Result login(String user, char[] password, String address) {
+        if (user.isEmpty() || user.length() > 64) {
+            java.util.Arrays.fill(password, '\0');
+            return Result.refused("wrong user name or password");
+        }
+        Logins.Check c = logins.check(user, password, address, "web");
+        if (c.busy() != null) {
+            return Result.refused(c.busy());
+        }
+        if (c.user() == null) {
+            return Result.refused(c.block() != null ? "wrong user name or password, or " + Logins.refusalText(c.block())
+                    : "wrong user name or password");
+        }
+        Audit.log(false, "login", "user", user, "from", address, "via", "web");
+        return Result.ok(user);
+    }
+
+    @Override
+    public boolean mayUpload(String user, String fileName) {
+        PermitFile p = permits.get();
+        return p.user(user).map(u -> p.decide(u, "RIPVServer", "", "?upload " + fileName + " 0 0").allowed()).orElse(false);
+    }
+}
