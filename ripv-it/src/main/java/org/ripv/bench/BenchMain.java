@@ -17,6 +17,7 @@ public final class BenchMain {
             "Usage: ./ripv bench NAME [OPTIONS]",
             "  broker     the client → server → service → client round trip against a bare socket and RMI call;",
             "             throughput with 1, 8 and 32 clients   [--seconds S] [--warmup S] [--clients 1,8,32]",
+            "  connections  threads and memory an idle logged-in client costs the server   [--clients N]",
             "  database   a 100,000-row query end to end against direct JDBC   [--rows N] [--runs N] [--warmup N]",
             "  ymodem     YMODEM over a baud-paced relay as a share of the line rate, and against lrzsz",
             "             [BAUD:BYTES ...], e.g. 9600:65536 115200:1048576",
@@ -36,6 +37,7 @@ public final class BenchMain {
         switch (args[0]) {
             case "broker" -> System.exit(Launchers.commandLine(new BrokerBench()).execute(rest));
             case "database" -> DatabaseBench.main(rest);
+            case "connections" -> System.exit(Launchers.commandLine(new ConnectionCostBench()).execute(rest));
             case "ymodem" -> YmodemBenchmark.main(rest);
             case "datavis" -> DataVisBenchmark.main(rest);
             default -> {

@@ -9,7 +9,7 @@ import java.io.IOException;
 import java.net.Socket;
 import java.net.SocketException;
 import java.util.List;
-import java.util.concurrent.ArrayBlockingQueue;
+import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.BlockingQueue;
 import org.ripv.messages.IdBadge;
 import org.ripv.messages.IncomingServerMessage;
@@ -32,6 +32,8 @@ public final class SocketHandler {
     static final int MAX_QUEUED_REPLIES = 20_000;
     /** How long a peer may take to send its greeting, or the rest of a frame it began. */
     static final int READ_TIMEOUT_MILLIS = 30_000;
+    /** Stream buffers: small, since every idle client keeps two; large frames bypass them anyway. */
+    static final int BUFFER = 8 * 1024;
 
     /** What the server does with a client's requests. */
     public interface Dispatcher {
@@ -47,7 +49,8 @@ public final class SocketHandler {
     private final String clientId;
     private final FrameCodec codec;
     private final Dispatcher dispatcher;
-    private final BlockingQueue<OutgoingServerMessage> replies = new ArrayBlockingQueue<>(MAX_QUEUED_REPLIES);
+    /** Linked, not an array: an idle client must not hold 20,000 empty slots (docs/performance.md). */
+    private final BlockingQueue<OutgoingServerMessage> replies = new LinkedBlockingQueue<>(MAX_QUEUED_REPLIES);
     private final Thread reader;
     private final Thread writer;
     private volatile IdBadge badge;
@@ -132,7 +135,7 @@ public final class SocketHandler {
         try {
             socket.setTcpNoDelay(true);
             socket.setSoTimeout(READ_TIMEOUT_MILLIS);
-            DataInputStream in = new DataInputStream(new BufferedInputStream(socket.getInputStream(), 64 * 1024));
+            DataInputStream in = new DataInputStream(new BufferedInputStream(socket.getInputStream(), BUFFER));
             DataOutputStream greet = new DataOutputStream(socket.getOutputStream());
             FrameCodec.readGreeting(in);
             FrameCodec.writeGreeting(greet);
@@ -166,7 +169,7 @@ public final class SocketHandler {
     }
 
     private void writeLoop() {
-        try (DataOutputStream out = new DataOutputStream(new BufferedOutputStream(socket.getOutputStream(), 64 * 1024))) {
+        try (DataOutputStream out = new DataOutputStream(new BufferedOutputStream(socket.getOutputStream(), BUFFER))) {
             while (!closed) {
                 OutgoingServerMessage m = replies.take();
                 if (m == POISON) {
