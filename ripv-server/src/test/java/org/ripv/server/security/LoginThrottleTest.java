@@ -1,0 +1,59 @@
+package org.ripv.server.security;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.time.Duration;
+import java.util.concurrent.atomic.AtomicLong;
+import org.junit.jupiter.api.Test;
+
+/** Back-off per user and per address, on a clock the test turns. */
+class LoginThrottleTest {
+    final AtomicLong now = new AtomicLong(1_000_000);
+    final LoginThrottle t = new LoginThrottle(new LoginThrottle.Policy(3, 5, Duration.ofSeconds(1), Duration.ofSeconds(8)), now::get);
+
+    @Test
+    void afterTheFreeFailuresEachFailureDoublesTheBlockUpToTheLock() {
+        for (int i = 0; i < 3; i++) {
+            assertThat(t.failure("alice", "10.0.0." + i)).isNull();
+        }
+        assertThat(t.failure("alice", "10.0.0.9").left()).isEqualTo(Duration.ofSeconds(1));
+        assertThat(t.blocked("alice", "10.0.0.77")).as("a block follows the user to any address").isNotNull();
+        now.addAndGet(1_000);
+        assertThat(t.blocked("alice", "10.0.0.77")).isNull();
+        assertThat(t.failure("alice", "10.0.0.9").left()).isEqualTo(Duration.ofSeconds(2));
+        now.addAndGet(2_000);
+        assertThat(t.failure("alice", "10.0.0.9").left()).isEqualTo(Duration.ofSeconds(4));
+        now.addAndGet(4_000);
+        LoginThrottle.Block lock = t.failure("alice", "10.0.0.9");
+        assertThat(lock.left()).isEqualTo(Duration.ofSeconds(8));
+        assertThat(lock.locked()).isTrue();
+        now.addAndGet(8_000);
+        assertThat(t.failure("alice", "10.0.0.9").left()).as("capped at the lock").isEqualTo(Duration.ofSeconds(8));
+        assertThat(t.describe()).anyMatch(l -> l.startsWith("user alice") && l.contains("LOCKED"));
+        assertThat(t.lift("alice")).isTrue();
+        assertThat(t.blocked("alice", "10.0.0.5")).isNull();
+    }
+
+    @Test
+    void anAddressGuessingManyNamesIsBlockedAndASuccessDoesNotClearIt() {
+        for (int i = 0; i < 5; i++) {
+            assertThat(t.failure("user" + i, "192.0.2.7")).isNull();
+        }
+        LoginThrottle.Block b = t.failure("user9", "192.0.2.7");
+        assertThat(b.who()).isEqualTo("address 192.0.2.7");
+        t.success("user9");
+        assertThat(t.blocked("someone", "192.0.2.7")).isNotNull();
+        assertThat(t.blocked("someone", "192.0.2.8")).isNull();
+        assertThat(t.lift("192.0.2.7")).isTrue();
+        assertThat(t.blocked("someone", "192.0.2.7")).isNull();
+    }
+
+    @Test
+    void aLockLengthOfQuietStartsTheCountAfresh() {
+        for (int i = 0; i < 3; i++) {
+            t.failure("bob", "10.1.1.1");
+        }
+        now.addAndGet(9_000);
+        assertThat(t.failure("bob", "10.1.1.1")).as("the old failures are forgotten").isNull();
+    }
+}
