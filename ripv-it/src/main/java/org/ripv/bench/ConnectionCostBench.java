@@ -63,7 +63,7 @@ public final class ConnectionCostBench implements Callable<Integer> {
                 c.login("bench", "bench-password".toCharArray());
                 open.add(c);
             }
-            Thread.sleep(2_000);
+            Thread.sleep(8_000); // longer than a writer's idle time: the clients are idle now
             gc(pid);
             long[] after = sample(pid);
             double threads = (after[0] - before[0]) / (double) clients;

@@ -10,6 +10,7 @@ import java.net.Socket;
 import java.net.SocketException;
 import java.util.List;
 import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.BlockingQueue;
 import org.ripv.messages.IdBadge;
 import org.ripv.messages.IncomingServerMessage;
@@ -22,7 +23,9 @@ import org.slf4j.LoggerFactory;
 
 /**
  * One connected client (thesis: SocketHandler). A reader thread reads frames and hands each
- * request to the server; a writer thread drains this client's own reply queue, so a client that
+ * request to the server; a writer thread drains this client's own reply queue — started when
+ * there is something to send and gone after {@link #WRITER_IDLE_MILLIS} of nothing, so an idle
+ * client costs one thread (docs/performance.md) — so a client that
  * stops reading fills only its own queue — and is then disconnected — while everyone else is
  * served. Anything that breaks the protocol closes this connection and nothing else.
  */
@@ -32,6 +35,8 @@ public final class SocketHandler {
     static final int MAX_QUEUED_REPLIES = 20_000;
     /** How long a peer may take to send its greeting, or the rest of a frame it began. */
     static final int READ_TIMEOUT_MILLIS = 30_000;
+    /** How long a writer thread waits for more replies before it ends (the next reply starts one). */
+    static final long WRITER_IDLE_MILLIS = 5_000;
     /** Stream buffers: small, since every idle client keeps two; large frames bypass them anyway. */
     static final int BUFFER = 8 * 1024;
 
@@ -52,7 +57,10 @@ public final class SocketHandler {
     /** Linked, not an array: an idle client must not hold 20,000 empty slots (docs/performance.md). */
     private final BlockingQueue<OutgoingServerMessage> replies = new LinkedBlockingQueue<>(MAX_QUEUED_REPLIES);
     private final Thread reader;
-    private final Thread writer;
+    /** Guards starting and ending the writer thread, so that at most one runs and none is missed. */
+    private final Object writerLock = new Object();
+    private boolean writerRunning;
+    private volatile DataOutputStream out;
     private volatile IdBadge badge;
     private volatile List<String> roles = List.of();
     private volatile boolean closed;
@@ -64,9 +72,7 @@ public final class SocketHandler {
         this.dispatcher = dispatcher;
         this.badge = new IdBadge(clientId, "");
         this.reader = new Thread(this::readLoop, "ripv-socket-handler-" + clientId);
-        this.writer = new Thread(this::writeLoop, "ripv-socket-writer-" + clientId);
         reader.setDaemon(true);
-        writer.setDaemon(true);
     }
 
     public void start() {
@@ -116,7 +122,9 @@ public final class SocketHandler {
     public void sendAndClose(OutgoingServerMessage last) {
         if (closed || !replies.offer(last) || !replies.offer(POISON)) {
             close();
+            return;
         }
+        startWriter();
     }
 
     /** Queues a reply for this client; a client too far behind is disconnected. */
@@ -127,7 +135,22 @@ public final class SocketHandler {
         if (!replies.offer(reply)) {
             log.warn("client {} ({}) is not reading its replies; disconnecting it", clientId, remoteAddress());
             close();
+            return;
         }
+        startWriter();
+    }
+
+    /** Starts a writer unless one runs, the greeting is not done yet, or nothing waits. */
+    private void startWriter() {
+        synchronized (writerLock) {
+            if (writerRunning || out == null || closed || replies.isEmpty()) {
+                return;
+            }
+            writerRunning = true;
+        }
+        Thread t = new Thread(this::writeLoop, "ripv-socket-writer-" + clientId);
+        t.setDaemon(true);
+        t.start();
     }
 
     private void readLoop() {
@@ -139,7 +162,8 @@ public final class SocketHandler {
             DataOutputStream greet = new DataOutputStream(socket.getOutputStream());
             FrameCodec.readGreeting(in);
             FrameCodec.writeGreeting(greet);
-            writer.start();
+            out = new DataOutputStream(new BufferedOutputStream(socket.getOutputStream(), BUFFER));
+            startWriter();
             while (!closed) {
                 socket.setSoTimeout(0);
                 int length = in.readInt();
@@ -169,10 +193,23 @@ public final class SocketHandler {
     }
 
     private void writeLoop() {
-        try (DataOutputStream out = new DataOutputStream(new BufferedOutputStream(socket.getOutputStream(), BUFFER))) {
+        boolean end = true;
+        try {
             while (!closed) {
-                OutgoingServerMessage m = replies.take();
+                OutgoingServerMessage m = replies.poll(WRITER_IDLE_MILLIS, TimeUnit.MILLISECONDS);
+                if (m == null) {
+                    synchronized (writerLock) {
+                        if (replies.isEmpty()) {
+                            // Idle: end this thread (all is flushed); the next send starts another.
+                            writerRunning = false;
+                            end = false;
+                            return;
+                        }
+                    }
+                    continue;
+                }
                 if (m == POISON) {
+                    out.flush();
                     break;
                 }
                 try {
@@ -198,7 +235,9 @@ public final class SocketHandler {
         } catch (IOException e) {
             log.debug("client {}: write failed: {}", clientId, e.toString());
         } finally {
-            close();
+            if (end) {
+                close();
+            }
         }
     }
 
