@@ -14,7 +14,9 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.locks.ReentrantLock;
 import java.util.stream.Stream;
+import org.ripv.commands.SingleLineCommand;
 import org.ripv.exceptions.ServiceException;
+import org.ripv.messages.Header;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.FileBundle;
 import org.ripv.messages.FileData;
@@ -111,6 +113,12 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
 
     @Override
     public Reply execute(Request request) throws Exception {
+        // Defence in depth: the server refuses these already, but nothing but one line ever reaches the link.
+        try {
+            SingleLineCommand.check(request.command(), settings.maxCommand());
+        } catch (IllegalArgumentException e) {
+            throw new ServiceException(ErrorCode.BAD_REQUEST, e.getMessage() + " (link " + handle + ")");
+        }
         lock.lockInterruptibly();
         try {
             Link l = usableLink();
@@ -169,7 +177,7 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
         StringBuilder text = new StringBuilder();
         boolean closed = readReply(l, text, settings.commandTimeout().toMillis(), command);
         if (text.isEmpty() && !closed) {
-            throw new ServiceException(ErrorCode.TIMEOUT, "no answer to '" + command + "' from " + l.describe()
+            throw new ServiceException(ErrorCode.TIMEOUT, "no answer to '" + Header.abbreviate(command) + "' from " + l.describe()
                     + " within " + settings.idleTimeout().toMillis() + " ms");
         }
         String reply = vehicleText.clean(text.toString(), command);
