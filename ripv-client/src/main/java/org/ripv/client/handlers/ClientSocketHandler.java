@@ -253,7 +253,8 @@ public final class ClientSocketHandler implements AutoCloseable {
     public Path download(String name, Path localDir, TransferListener listener) throws IOException, RipvErrorException {
         listener = listener == null ? TransferListener.NONE : listener;
         Files.createDirectories(localDir);
-        Path target = localDir.resolve(name).normalize();
+        // a download is listed as FOLDER/NAME (the MailBox it came from): saved locally as NAME
+        Path target = localDir.resolve(name.substring(name.lastIndexOf('/') + 1)).normalize();
         if (!target.getParent().equals(localDir.normalize())) {
             throw new IOException("refusing to write '" + name + "' outside " + localDir);
         }

@@ -173,7 +173,8 @@ public final class SerialPortServerCommand implements Callable<Integer> {
             System.err.println("Error: " + e.getMessage());
             return 2;
         }
-        Path work = workDir != null ? Files.createDirectories(workDir) : Files.createTempDirectory("ripv-serial");
+        Path work = workDir != null ? org.ripv.files.PrivateFiles.createDirectories(workDir)
+                : Files.createTempDirectory("ripv-serial"); // createTempDirectory makes it 0700
         SerialPortServer server = new SerialPortServer(launch.hostName(), linkSettings, settings("COM1"),
                 !noEnumerate, work);
         server.start();
