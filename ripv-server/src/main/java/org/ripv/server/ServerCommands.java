@@ -8,6 +8,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import org.ripv.commands.SingleLineCommand;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.FileData;
 import org.ripv.messages.FileListing;
@@ -73,6 +74,12 @@ final class ServerCommands {
 
     /** Runs one {@code ?} command; its reply (or replies) go to the Post Office's outbox. */
     void run(IncomingServerMessage request) {
+        try {
+            SingleLineCommand.check(request.header().body(), SingleLineCommand.SERVER_MAX);
+        } catch (IllegalArgumentException e) {
+            server.reply(ServerTaskManager.error(request, Ids.FID_NONE, ErrorCode.BAD_REQUEST, e.getMessage()));
+            return;
+        }
         String body = request.header().body().trim();
         String[] w = body.split("\\s+");
         String word = w[0].toLowerCase(java.util.Locale.ROOT);

@@ -254,7 +254,12 @@ public final class ClientSocketHandler implements AutoCloseable {
         listener = listener == null ? TransferListener.NONE : listener;
         Files.createDirectories(localDir);
         // a download is listed as FOLDER/NAME (the MailBox it came from): saved locally as NAME
-        Path target = localDir.resolve(name.substring(name.lastIndexOf('/') + 1)).normalize();
+        int slash = name.lastIndexOf('/');
+        String folder = slash < 0 ? "x" : name.substring(0, slash);
+        if (folder.isEmpty() || folder.contains("/") || folder.equals("..") || folder.equals(".")) {
+            throw new IOException("refusing to write '" + name + "' outside " + localDir);
+        }
+        Path target = localDir.resolve(name.substring(slash + 1)).normalize();
         if (!target.getParent().equals(localDir.normalize())) {
             throw new IOException("refusing to write '" + name + "' outside " + localDir);
         }
