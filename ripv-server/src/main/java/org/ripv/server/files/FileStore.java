@@ -367,10 +367,15 @@ public final class FileStore {
         if (slash >= 0) {
             String folder = name.substring(0, slash);
             String file = name.substring(slash + 1);
-            if (folder.equals(PARTIAL)) {
-                throw new IllegalArgumentException("'" + name + "' is not a download");
+            try {
+                if (folder.equals(PARTIAL)) {
+                    throw new IllegalArgumentException("'" + name + "' is not a download");
+                }
+                return downloadDir.resolve(FileNames.check(folder)).resolve(FileNames.check(file));
+            } catch (IllegalArgumentException e) {
+                throw new IllegalArgumentException("a download name holds at most one slash, between a MailBox's folder and"
+                        + " a plain file name (FOLDER/NAME as ?dlfiles lists it): " + e.getMessage());
             }
-            return downloadDir.resolve(FileNames.check(folder)).resolve(FileNames.check(file));
         }
         FileNames.check(name);
         Path top = downloadDir.resolve(name);
