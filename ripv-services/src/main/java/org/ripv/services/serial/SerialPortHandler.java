@@ -91,7 +91,7 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
         if (settings.carrier() == CarrierMode.REQUIRE && settings.isTcp()) {
             log.warn("{}: --carrier require has no effect on {}: TCP has no DCD line", handle, settings.device());
         }
-        DirectorySink.cleanStale(workDir); // partial files of an earlier run that was killed
+        DirectorySink.prepareWorkDir(workDir); // owner-only; partial files of an earlier run that was killed go
         scheduler.execute(this::monitor);
         long every = settings.reconnectEvery().toMillis();
         monitor = scheduler.scheduleWithFixedDelay(this::monitor, every, every, TimeUnit.MILLISECONDS);

@@ -27,11 +27,16 @@ public final class DirectorySink implements FileSink {
     }
 
     /**
-     * Deletes what an earlier run left in a work directory: {@code .NAME.part} files and
-     * {@code get-N} transfer directories (a crash or kill mid-transfer). Called at start.
+     * Readies a work directory at start: creates it owner-only (0700, also when it existed) and
+     * deletes what an earlier run left there: {@code .NAME.part} files and {@code get-N}
+     * transfer directories (a crash or kill mid-transfer).
      */
-    public static void cleanStale(Path workDir) {
-        if (!Files.isDirectory(workDir)) {
+    public static void prepareWorkDir(Path workDir) {
+        try {
+            PrivateFiles.createDirectories(workDir);
+            PrivateFiles.restrict(workDir);
+        } catch (IOException e) {
+            log.warn("cannot prepare the work directory {}: {}", workDir, e.toString());
             return;
         }
         try (var walk = Files.walk(workDir)) {
