@@ -69,13 +69,18 @@ public final class PermitFile {
             "# user NAME HASH ROLE[,ROLE...]",
             "# allow|deny WHO SERVICE MAILBOX COMMAND-PATTERN",
             "#   WHO: a user, @role or *;  SERVICE: e.g. SerialPortServer, or RIPVServer for the server's",
-            "#   ?upload, ?upload-cancel, ?download, ?lock and ?unlock (other ? commands need only a log-in);",
-            "#   MAILBOX: a handle such as ttyS0 or *;  COMMAND-PATTERN: the whole command, * matching anything.",
+            "#   ?upload, ?upload-cancel, ?download, ?delete, ?replace NAME (the right to upload with 'replace'),",
+            "#   ?lock and ?unlock (other ? commands need only a log-in);",
+            "#   MAILBOX: a handle such as ttyS0 or *;  COMMAND-PATTERN: the whole one-line command, * matching anything.",
             "# The first rule that matches decides; a command no rule allows is refused.",
+            "# quota WHO BYTES: how much a user may keep in the upload directory (first match; default 1G).",
             "",
+            "# Operators command vehicles, change the database, replace and delete stored files.",
             "allow @operators * * *",
             "",
             "# Observers may list and offload a glider's files, query and plot, but not upload to it or send GO.",
+            "# They upload to the server only under free names (no 'replace', no ?delete), and the DatabaseServer",
+            "# runs their SQL as its read-only user whatever their other roles (docs/database.md).",
             "allow @observers SerialPortServer * dir*",
             "allow @observers SerialPortServer * type *",
             "allow @observers SerialPortServer * ymodem:get *",
@@ -84,6 +89,7 @@ public final class PermitFile {
             "allow @observers DataVisServer * *",
             "allow @observers RIPVServer * ?upload*",
             "allow @observers RIPVServer * ?download *",
+            "quota @observers 100M",
             "");
 
     /** Reads a permit file; a missing file is created from {@link #TEMPLATE}. */
