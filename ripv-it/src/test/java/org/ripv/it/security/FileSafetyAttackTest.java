@@ -123,6 +123,20 @@ class FileSafetyAttackTest {
     }
 
     @Test
+    void ordinaryUsersSeeNoServerPaths() throws Exception {
+        ClientSocketHandler mallory = sys.login("mallory");
+        String root = sys.dataDir().toAbsolutePath().toString();
+        for (String command : List.of("?dldir", "?uldir", "?dlfiles", "?ulfiles")) {
+            OutgoingServerMessage r = mallory.call("", command, Priority.NORMAL, T, null);
+            assertThat(r.footer().replyText()).as(command).doesNotContain(root).doesNotContain(sys.downloadDir().toString());
+            assertThat(String.valueOf(r.footer().result())).as(command).doesNotContain(sys.downloadDir().toString())
+                    .doesNotContain(sys.uploadDir().toString());
+        }
+        assertThat(sys.login("otto").call("", "?dldir", Priority.NORMAL, T, null).footer().replyText())
+                .isEqualTo(sys.downloadDir().toString());
+    }
+
+    @Test
     void serverAndSerialFilesAreOwnerOnlyAndStalePartialFilesGo() throws Exception {
         YmodemConfig ymodem = YmodemConfig.lrzsz().withTimeouts(Duration.ofSeconds(10), Duration.ofSeconds(1),
                 Duration.ofSeconds(2), Duration.ofSeconds(1));
