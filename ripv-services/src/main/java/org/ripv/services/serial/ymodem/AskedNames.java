@@ -34,7 +34,7 @@ public final class AskedNames {
             if (stored == null) {
                 warnings.add("the vehicle sent '" + f.name() + "', which was not asked for; refused (not stored)");
             } else if (taken.contains(stored.toLowerCase(Locale.ROOT))) {
-                warnings.add("the vehicle sent '" + f.name() + "' twice; only the first is kept");
+                warnings.add("the vehicle sent '" + f.name() + "' more than once; one copy is kept");
             } else {
                 taken.add(stored.toLowerCase(Locale.ROOT));
                 accepted.add(new Accepted(f, stored));
