@@ -18,8 +18,6 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
-import javax.net.ServerSocketFactory;
-import javax.net.ssl.SSLContext;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.Footer;
 import org.ripv.messages.Header;
@@ -37,12 +35,9 @@ import org.ripv.server.handlers.SocketHandler;
 import org.ripv.server.http.LandingPage;
 import org.ripv.server.permit.PermitFile;
 import org.ripv.server.permit.PermitWatcher;
-import org.ripv.server.security.Audit;
-import org.ripv.server.security.LoginThrottle;
 import org.ripv.server.security.RegistryGuard;
-import org.ripv.server.security.SelfSignedTls;
 import org.ripv.server.security.ServerSecurity;
-import org.ripv.server.security.ServiceChallenges;
+import org.ripv.server.security.ServerTls;
 import org.ripv.wire.FrameCodec;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -94,7 +89,7 @@ public final class RIPVServer implements AutoCloseable {
     private LandingPage landingPage;
     private ServerSecurity security;
     private RegistryGuard registryGuard;
-    private SelfSignedTls.Identity tlsIdentity;
+    private ServerTls tls;
     private volatile boolean running;
 
     /** An operator's hold on a MailBox ({@code ?lock}). */
@@ -151,9 +146,8 @@ public final class RIPVServer implements AutoCloseable {
                     registryPort, null, rmiSockets, org.ripv.wire.WireFilter.forRmi(RmiSupport.MAX_RMI_BYTES));
             registryGuard = RegistryGuard.bind(registry, stub);
 
-            SSLContext tls = tls();
-            ServerSocketFactory factory = tls == null ? ServerSocketFactory.getDefault() : tls.getServerSocketFactory();
-            listener = factory.createServerSocket();
+            tls = ServerTls.resolve(config.tls(), config.security().plain(), config.dataDir().resolve("tls"));
+            listener = tls.serverSockets().createServerSocket();
             listener.setReuseAddress(true);
             try {
                 listener.bind(new InetSocketAddress(bind, config.port()), 128);
@@ -177,27 +171,12 @@ public final class RIPVServer implements AutoCloseable {
         long check = config.serviceCheck().toMillis();
         timers.scheduleWithFixedDelay(this::checkServices, check, check, TimeUnit.MILLISECONDS);
         log.info("RIPVServer listening for clients on port {}{}, RMI registry on port {}, data in {}", port(),
-                tls() == null ? " (plain TCP)" : " (TLS)", registryPort, config.dataDir().toAbsolutePath());
-    }
-
-    /** The TLS context to serve with: the operator's, the server's own (made on first start), or none with --plain. */
-    private SSLContext tls() throws IOException {
-        if (config.tls() != null) {
-            return config.tls();
-        }
-        if (config.security().plain()) {
-            return null;
-        }
-        if (tlsIdentity == null) {
-            tlsIdentity = SelfSignedTls.loadOrCreate(config.dataDir().resolve("tls"));
-            log.info("TLS certificate fingerprint {} (clients see it on first connecting)", tlsIdentity.fingerprint());
-        }
-        return tlsIdentity.context();
+                tls.label(), registryPort, config.dataDir().toAbsolutePath());
     }
 
     /** The fingerprint of the server's own certificate, or null (plain, or the operator's key store). */
     public String tlsFingerprint() {
-        return tlsIdentity == null ? null : tlsIdentity.fingerprint();
+        return tls == null ? null : tls.fingerprint();
     }
 
     /** Closes every port, thread and export the server may have opened; safe on a half-started server. */
@@ -249,7 +228,7 @@ public final class RIPVServer implements AutoCloseable {
         }
         LandingPage page = new LandingPage(new LandingPage.Options(new InetSocketAddress(bind, config.httpPort()),
                 files.uploadDir(), config.maxUpload(), config.clientJar(), this::describe, port(),
-                config.security().httpUpload() ? security.webAccess() : null, tls()));
+                config.security().httpUpload() ? security.webAccess() : null, tls.context()));
         try {
             page.start();
         } catch (IOException e) {
@@ -265,11 +244,8 @@ public final class RIPVServer implements AutoCloseable {
      */
     private String describe() {
         StringBuilder b = new StringBuilder("RIPVServer on " + org.ripv.naming.Handles.localHost() + "\n");
-        b.append("Clients connect to port ").append(port()).append(config.security().plain() && config.tls() == null ? " (plain TCP)" : " (TLS)");
-        if (tlsFingerprint() != null) {
-            b.append("; certificate ").append(tlsFingerprint());
-        }
-        b.append('\n');
+        b.append("Clients connect to port ").append(port()).append(tls.label())
+                .append(tls.fingerprint() == null ? "" : "; certificate " + tls.fingerprint()).append('\n');
         List<ServiceReference> list = services();
         b.append(list.size()).append(" service(s) registered");
         list.forEach(r -> b.append("\n  ").append(r.descriptor().name()));
@@ -301,13 +277,7 @@ public final class RIPVServer implements AutoCloseable {
             }
             String id = newClientId();
             SocketHandler h = new SocketHandler(s, id, codec, new Dispatch());
-            String from = s.getInetAddress().getHostAddress();
-            String refused = security.gate().admit(id, s.getInetAddress(), () -> {
-                Audit.log(true, "login-deadline", "from", from, "client", id);
-                h.close();
-            });
-            if (refused != null) {
-                Audit.log(true, "connection-refused", "from", from, "reason", refused);
+            if (!security.gate().admit(id, s.getInetAddress(), h::close)) {
                 closeQuietly(s);
                 continue;
             }
@@ -346,9 +316,7 @@ public final class RIPVServer implements AutoCloseable {
             Header h = request.header();
             String body = h.body().trim();
             if (body.equals("?login") || body.startsWith("?login ")) {
-                // On the client's own thread, which waits for the bounded log-in pool: a slow
-                // password hash holds up neither the Post Office nor anyone logged in.
-                security.logins().login(client, request);
+                security.logins().login(client, request); // on the client's thread, PBKDF2 on the log-in pool
                 return;
             }
             if (!client.isLoggedIn() && !body.equals("?help") && !body.equals("?ping")) {
@@ -413,13 +381,8 @@ public final class RIPVServer implements AutoCloseable {
         return secret;
     }
 
-    ServiceChallenges challenges() {
-        return security.challenges();
-    }
-
-    /** The brute-force limits ({@code ?logins}, {@code ?unlock-login}). */
-    LoginThrottle loginThrottle() {
-        return security.throttle();
+    ServerSecurity security() {
+        return security;
     }
 
     PendingRequests pending() {

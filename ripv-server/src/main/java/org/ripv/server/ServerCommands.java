@@ -254,7 +254,7 @@ final class ServerCommands {
             }
             case "?logins", "?unlock-login":
                 permit(request, c);
-                return SecurityCommands.run(request, c.fid(), w, server.loginThrottle());
+                return SecurityCommands.run(request, c.fid(), w, server.security().throttle());
             default:
                 throw new IllegalStateException("no handler for " + w[0]);
         }

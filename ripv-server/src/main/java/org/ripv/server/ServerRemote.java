@@ -29,12 +29,12 @@ final class ServerRemote implements GenericRMIInterface {
 
     @Override
     public String challenge(String serviceNonce) {
-        return server.challenges().challenge(serviceNonce);
+        return server.security().challenges().challenge(serviceNonce);
     }
 
     @Override
     public String register(ServiceDescriptor d, GenericRMIInterface service, String proof) {
-        ServiceChallenges.Accepted accepted = server.challenges().verify(proof, d == null ? null : d.name(), service);
+        ServiceChallenges.Accepted accepted = server.security().challenges().verify(proof, d == null ? null : d.name(), service);
         if (d == null || service == null) {
             throw new IllegalArgumentException("a registration needs a descriptor and the service's stub");
         }

@@ -53,21 +53,29 @@ class LoginFloodAttackTest {
             // The measurement is repeated (up to 3 times) only because colleagues' builds share this
             // machine's 2 cores; every attempt measures quiet and flood back to back.
             String last = "";
+            int tooMany = 0;
             for (int attempt = 1; attempt <= 3; attempt++) {
                 double quiet = p99(bob, 300);
                 Flood flood = new Flood(sys, attempt);
                 flood.start();
-                Thread.sleep(1_500);
+                long until = System.nanoTime() + Duration.ofSeconds(60).toNanos();
+                while (flood.answers.get() < 20) {
+                    assertThat(System.nanoTime()).as("the flood gets going").isLessThan(until);
+                    Thread.sleep(50);
+                }
+                int before = flood.answers.get();
                 double loaded = p99(bob, 300);
+                int during = flood.answers.get() - before;
                 flood.stop();
+                tooMany += flood.tooMany.get();
                 last = String.format("attempt %d: ?status p99 quiet %.2f ms, under a 50-connection log-in flood %.2f ms"
-                        + " (%d guesses answered, %d 'too many' replies)", attempt, quiet, loaded, flood.answers.get(),
+                        + " (%d guesses answered meanwhile, %d 'too many' replies)", attempt, quiet, loaded, during,
                         flood.tooMany.get());
                 System.out.println(last);
-                assertThat(flood.answers.get()).as("the flood really ran").isGreaterThan(50);
-                assertThat(flood.tooMany.get()).as("attackers are told they are blocked before the close").isPositive();
+                assertThat(during).as("the flood ran while ?status was measured").isPositive();
                 assertThat(flood.errors).as("no attacker saw anything but refusals").isEmpty();
                 if (loaded < 3 * quiet) {
+                    assertThat(tooMany).as("attackers are told they are blocked before the close").isPositive();
                     return;
                 }
             }

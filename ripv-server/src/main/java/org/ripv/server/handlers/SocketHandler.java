@@ -1,7 +1,6 @@
 package org.ripv.server.handlers;
 
 import java.io.BufferedInputStream;
-import java.io.BufferedOutputStream;
 import java.io.DataInputStream;
 import java.io.DataOutputStream;
 import java.io.EOFException;
@@ -9,9 +8,6 @@ import java.io.IOException;
 import java.net.Socket;
 import java.net.SocketException;
 import java.util.List;
-import java.util.concurrent.LinkedBlockingQueue;
-import java.util.concurrent.TimeUnit;
-import java.util.concurrent.BlockingQueue;
 import org.ripv.messages.IdBadge;
 import org.ripv.messages.IncomingServerMessage;
 import org.ripv.messages.Message;
@@ -23,9 +19,9 @@ import org.slf4j.LoggerFactory;
 
 /**
  * One connected client (thesis: SocketHandler). A reader thread reads frames and hands each
- * request to the server; a writer thread drains this client's own reply queue — started when
- * there is something to send and gone after {@link #WRITER_IDLE_MILLIS} of nothing, so an idle
- * client costs one thread (docs/performance.md) — so a client that
+ * request to the server; a {@link ReplyWriter} drains this client's own reply queue on a thread
+ * that exists only while replies wait (an idle client costs one thread, docs/performance.md), so
+ * a client that
  * stops reading fills only its own queue — and is then disconnected — while everyone else is
  * served. Anything that breaks the protocol closes this connection and nothing else.
  */
@@ -35,8 +31,6 @@ public final class SocketHandler {
     static final int MAX_QUEUED_REPLIES = 20_000;
     /** How long a peer may take to send its greeting, or the rest of a frame it began. */
     static final int READ_TIMEOUT_MILLIS = 30_000;
-    /** How long a writer thread waits for more replies before it ends (the next reply starts one). */
-    static final long WRITER_IDLE_MILLIS = 5_000;
     /** Stream buffers: small, since every idle client keeps two; large frames bypass them anyway. */
     static final int BUFFER = 8 * 1024;
 
@@ -47,20 +41,12 @@ public final class SocketHandler {
         void closed(SocketHandler client);
     }
 
-    private static final OutgoingServerMessage POISON = new OutgoingServerMessage(
-            org.ripv.messages.Header.request(0, "", "", null), org.ripv.messages.Footer.unanswered());
-
     private final Socket socket;
     private final String clientId;
     private final FrameCodec codec;
     private final Dispatcher dispatcher;
-    /** Linked, not an array: an idle client must not hold 20,000 empty slots (docs/performance.md). */
-    private final BlockingQueue<OutgoingServerMessage> replies = new LinkedBlockingQueue<>(MAX_QUEUED_REPLIES);
+    private final ReplyWriter writer;
     private final Thread reader;
-    /** Guards starting and ending the writer thread, so that at most one runs and none is missed. */
-    private final Object writerLock = new Object();
-    private boolean writerRunning;
-    private volatile DataOutputStream out;
     private volatile IdBadge badge;
     private volatile List<String> roles = List.of();
     private volatile boolean closed;
@@ -71,6 +57,7 @@ public final class SocketHandler {
         this.codec = codec;
         this.dispatcher = dispatcher;
         this.badge = new IdBadge(clientId, "");
+        this.writer = new ReplyWriter(clientId, codec, MAX_QUEUED_REPLIES, this::close);
         this.reader = new Thread(this::readLoop, "ripv-socket-handler-" + clientId);
         reader.setDaemon(true);
     }
@@ -120,11 +107,9 @@ public final class SocketHandler {
 
     /** Sends this last reply, then closes: the client reads why it was cut off. */
     public void sendAndClose(OutgoingServerMessage last) {
-        if (closed || !replies.offer(last) || !replies.offer(POISON)) {
+        if (closed || !writer.offerLast(last)) {
             close();
-            return;
         }
-        startWriter();
     }
 
     /** Queues a reply for this client; a client too far behind is disconnected. */
@@ -132,25 +117,10 @@ public final class SocketHandler {
         if (closed) {
             return;
         }
-        if (!replies.offer(reply)) {
+        if (!writer.offer(reply)) {
             log.warn("client {} ({}) is not reading its replies; disconnecting it", clientId, remoteAddress());
             close();
-            return;
         }
-        startWriter();
-    }
-
-    /** Starts a writer unless one runs, the greeting is not done yet, or nothing waits. */
-    private void startWriter() {
-        synchronized (writerLock) {
-            if (writerRunning || out == null || closed || replies.isEmpty()) {
-                return;
-            }
-            writerRunning = true;
-        }
-        Thread t = new Thread(this::writeLoop, "ripv-socket-writer-" + clientId);
-        t.setDaemon(true);
-        t.start();
     }
 
     private void readLoop() {
@@ -162,8 +132,7 @@ public final class SocketHandler {
             DataOutputStream greet = new DataOutputStream(socket.getOutputStream());
             FrameCodec.readGreeting(in);
             FrameCodec.writeGreeting(greet);
-            out = new DataOutputStream(new BufferedOutputStream(socket.getOutputStream(), BUFFER));
-            startWriter();
+            writer.open(socket.getOutputStream(), BUFFER);
             while (!closed) {
                 socket.setSoTimeout(0);
                 int length = in.readInt();
@@ -192,55 +161,6 @@ public final class SocketHandler {
         }
     }
 
-    private void writeLoop() {
-        boolean end = true;
-        try {
-            while (!closed) {
-                OutgoingServerMessage m = replies.poll(WRITER_IDLE_MILLIS, TimeUnit.MILLISECONDS);
-                if (m == null) {
-                    synchronized (writerLock) {
-                        if (replies.isEmpty()) {
-                            // Idle: end this thread (all is flushed); the next send starts another.
-                            writerRunning = false;
-                            end = false;
-                            return;
-                        }
-                    }
-                    continue;
-                }
-                if (m == POISON) {
-                    out.flush();
-                    break;
-                }
-                try {
-                    codec.writeNoFlush(out, m);
-                } catch (ProtocolException tooLarge) {
-                    // Nothing was written yet: tell the client instead of cutting it off. A progress
-                    // report is only dropped, so the request still ends in its one real final reply.
-                    log.warn("client {}: reply to #{} not sent: {}", clientId, m.header().messageId(), tooLarge.getMessage());
-                    if (!m.status().isFinal()) {
-                        continue;
-                    }
-                    codec.writeNoFlush(out, new OutgoingServerMessage(m.header(), org.ripv.messages.Footer.error(
-                            m.footer().serviceId(), org.ripv.messages.ErrorCode.TOO_LARGE,
-                            "the reply was too large to send (" + tooLarge.getMessage() + "); ask for less, e.g. fewer rows")
-                            .via("RIPVServer")));
-                }
-                if (replies.isEmpty()) {
-                    out.flush();
-                }
-            }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        } catch (IOException e) {
-            log.debug("client {}: write failed: {}", clientId, e.toString());
-        } finally {
-            if (end) {
-                close();
-            }
-        }
-    }
-
     /** Closes the connection; the server forgets the client. Idempotent. */
     public void close() {
         synchronized (this) {
@@ -249,8 +169,7 @@ public final class SocketHandler {
             }
             closed = true;
         }
-        replies.clear();
-        replies.offer(POISON);
+        writer.stop();
         try {
             socket.close();
         } catch (IOException ignored) {

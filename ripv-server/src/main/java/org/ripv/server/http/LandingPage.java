@@ -14,7 +14,6 @@ import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Locale;
-import java.util.Map;
 import java.util.Objects;
 import java.util.Set;
 import java.util.concurrent.ExecutorService;
@@ -87,12 +86,13 @@ public final class LandingPage implements AutoCloseable {
     }
 
     private final Options options;
-    private final WebSessions sessions = new WebSessions();
+    private final WebLogin web;
     private HttpServer http;
     private ExecutorService pool;
 
     public LandingPage(Options options) {
         this.options = Objects.requireNonNull(options, "options");
+        this.web = new WebLogin(options.access(), options.tls() != null);
     }
 
     /** As {@link #LandingPage(Options)} without a client port in the JNLP. */
@@ -175,13 +175,13 @@ public final class LandingPage implements AutoCloseable {
                         ex.getResponseHeaders().set("Allow", "POST");
                         send(ex, 405, "text/plain; charset=utf-8", "use POST with multipart/form-data (the form on /)\n");
                     } else {
-                        WebSessions.Session session = uploader(ex);
+                        WebSessions.Session session = web.uploader(ex, this::drainAndFail);
                         if (session != null) {
                             upload(ex, session);
                         }
                     }
                 }
-                case "/login" -> login(ex, method);
+                case "/login" -> web.login(ex, method);
                 default -> send(ex, 404, "text/plain; charset=utf-8", "no page " + path + " here; see /\n");
             }
         } catch (IOException | RuntimeException e) {
@@ -202,98 +202,6 @@ public final class LandingPage implements AutoCloseable {
         return options.tls() == null ? "http" : "https";
     }
 
-    /** The logged-in visitor an upload comes from, or null after answering why not. */
-    private WebSessions.Session uploader(HttpExchange ex) throws IOException {
-        if (options.access() == null) {
-            drainAndFail(ex, 403, "Uploads are off", "This server takes no uploads through its web page (its operator"
-                    + " turns them on with --http-upload). Use the RIPV client's put instead. Nothing was saved.");
-            return null;
-        }
-        WebSessions.Session s = sessions.find(ex);
-        if (s == null) {
-            drainAndFail(ex, 403, "Log in first", "Uploads need a log-in: use the log-in form on /login. Nothing was saved.");
-            return null;
-        }
-        String query = ex.getRequestURI().getRawQuery();
-        if (query == null || !java.security.MessageDigest.isEqual(("csrf=" + s.csrf).getBytes(StandardCharsets.UTF_8),
-                query.getBytes(StandardCharsets.UTF_8))) {
-            drainAndFail(ex, 403, "Form expired", "The upload did not come from this server's own form (no or a wrong"
-                    + " CSRF token); reload / and try again. Nothing was saved.");
-            return null;
-        }
-        return s;
-    }
-
-    /** GET: the log-in form; POST: checks the password with the server's limits and starts a session. */
-    private void login(HttpExchange ex, String method) throws IOException {
-        if (options.access() == null) {
-            send(ex, 404, "text/plain; charset=utf-8", "this server takes no uploads through its web page, so there is no log-in\n");
-            return;
-        }
-        if ("GET".equals(method) || "HEAD".equals(method)) {
-            send(ex, 200, "text/html; charset=utf-8", page("Log in to upload",
-                    "<form id=\"login\" method=\"post\" action=\"/login\"><p>User <input name=\"user\" autocomplete=\"username\"></p>"
-                    + "<p>Password <input name=\"password\" type=\"password\" autocomplete=\"current-password\"></p>"
-                    + "<p><input type=\"submit\" value=\"Log in\"></p></form>"));
-            return;
-        }
-        if (!"POST".equals(method)) {
-            ex.getResponseHeaders().set("Allow", "GET, POST");
-            send(ex, 405, "text/plain; charset=utf-8", method + " is not allowed here\n");
-            return;
-        }
-        byte[] body = ex.getRequestBody().readNBytes(4096);
-        Map<String, String> f = formFields(new String(body, StandardCharsets.UTF_8));
-        String user = f.getOrDefault("user", "");
-        char[] password = f.getOrDefault("password", "").toCharArray();
-        WebAccess.Result r = options.access().login(user, password, ex.getRemoteAddress().getAddress().getHostAddress());
-        if (r.user() == null) {
-            fail(ex, 403, "Log-in refused", r.refusal());
-            return;
-        }
-        WebSessions.Session s = sessions.create(r.user());
-        ex.getResponseHeaders().add("Set-Cookie", WebSessions.cookie(s, options.tls() != null));
-        ex.getResponseHeaders().set("Location", "/");
-        send(ex, 303, "text/html; charset=utf-8", page("Logged in", "<p>Logged in as " + html(r.user())
-                + ". <a href=\"/\">Back</a></p>"));
-    }
-
-    private static Map<String, String> formFields(String body) {
-        Map<String, String> m = new java.util.HashMap<>();
-        for (String pair : body.split("&")) {
-            String[] kv = pair.split("=", 2);
-            if (kv.length == 2) {
-                try {
-                    m.put(java.net.URLDecoder.decode(kv[0], StandardCharsets.UTF_8), java.net.URLDecoder.decode(kv[1], StandardCharsets.UTF_8));
-                } catch (IllegalArgumentException ignored) {
-                    // a malformed field is no field
-                }
-            }
-        }
-        return m;
-    }
-
-    private String uploadSection(HttpExchange ex) {
-        if (options.access() == null) {
-            return "<h2>Upload files to the server</h2>\n<p id=\"upload-off\">This page takes no uploads (the operator turns"
-                    + " them on with <code>--http-upload</code>). Use the client's <code>put</code>.</p>\n";
-        }
-        WebSessions.Session s = sessions.find(ex);
-        if (s == null) {
-            return "<h2>Upload files to the server</h2>\n<p><a id=\"login\" href=\"/login\">Log in</a> to upload files"
-                    + " (the same users and rights as the client).</p>\n";
-        }
-        return "<h2>Upload files to the server</h2>\n"
-                + "<p>Logged in as " + html(s.user) + ". Files go to the server's upload directory, where services can use"
-                + " them (for example <code>vis:NAME</code> or <code>ymodem:put NAME</code>). Plain file names only: no slashes or "
-                + "backslashes, no leading dot; an existing file is never replaced. At most " + options.maxUploadBytes()
-                + " bytes per upload, all files together. If any file breaks a rule, none is saved.</p>\n"
-                + "<form id=\"upload\" method=\"post\" action=\"/upload?csrf=" + s.csrf + "\" enctype=\"multipart/form-data\">\n"
-                + "<p><input type=\"file\" name=\"file-to-upload-1\"><br><input type=\"file\" name=\"file-to-upload-2\"><br>"
-                + "<input type=\"file\" name=\"file-to-upload-3\"></p>\n"
-                + "<p><input type=\"submit\" value=\"Upload\"></p></form>\n";
-    }
-
     private String index(HttpExchange ex) {
         boolean jar = options.clientJar() != null && Files.isRegularFile(options.clientJar());
         String host = host(ex);
@@ -312,7 +220,7 @@ public final class LandingPage implements AutoCloseable {
                 + "<code>mvn -DskipTests package</code>; it is <code>ripv-client/target/ripv-client.jar</code>.</p>\n")
                 + "<p>Without a display, use the command-line client: <code>ripv cli --server " + html(connect)
                 + " --user USER --password-file FILE</code>.</p>\n"
-                + uploadSection(ex) + "</body></html>\n";
+                + web.uploadSection(ex, options.maxUploadBytes()) + "</body></html>\n";
     }
 
     private void jar(HttpExchange ex, String method) throws IOException {
@@ -416,7 +324,7 @@ public final class LandingPage implements AutoCloseable {
                             + ". Files may not have forward or backward slashes in their names, nor begin with a dot. "
                             + "Rename the file on your computer and upload it again.");
                 }
-                if (!options.access().mayUpload(session.user, name)) {
+                if (!web.mayUpload(session, name)) {
                     throw new Refused(403, "Not allowed", "User " + session.user + " may not upload " + name
                             + " (the permit file has no rule allowing ?upload for them).");
                 }
@@ -442,7 +350,7 @@ public final class LandingPage implements AutoCloseable {
             if (pending.isEmpty()) {
                 throw new Refused(400, "No files", "The form held no files to upload.");
             }
-            if (!sessions.charge(session, pending.size(), total, 4 * limit)) {
+            if (!web.charge(session, pending.size(), total, 4 * limit)) {
                 throw new Refused(429, "Too much", "This log-in has uploaded as much as one session may ("
                         + WebSessions.MAX_FILES + " files, " + 4 * limit + " bytes); log in again later.");
             }
@@ -512,18 +420,18 @@ public final class LandingPage implements AutoCloseable {
         fail(ex, status, title, text);
     }
 
-    private static void fail(HttpExchange ex, int status, String title, String text) throws IOException {
+    static void fail(HttpExchange ex, int status, String title, String text) throws IOException {
         send(ex, status, "text/html; charset=utf-8", page("Error: " + title, "<p id=\"error\">" + html(text)
                 + "</p><p><a href=\"/\">Back</a></p>"));
     }
 
-    private static String page(String title, String body) {
+    static String page(String title, String body) {
         return "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" + html(title)
                 + "</title></head><body style=\"font-family:sans-serif\"><h1>" + html(title) + "</h1>\n" + body
                 + "\n</body></html>\n";
     }
 
-    private static void send(HttpExchange ex, int status, String type, String body) throws IOException {
+    static void send(HttpExchange ex, int status, String type, String body) throws IOException {
         byte[] bytes = body.getBytes(StandardCharsets.UTF_8);
         ex.getResponseHeaders().set("Content-Type", type);
         ex.getResponseHeaders().set("X-Content-Type-Options", "nosniff");

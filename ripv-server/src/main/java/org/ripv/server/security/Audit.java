@@ -26,6 +26,34 @@ public final class Audit {
         }
     }
 
+    private static final java.util.Map<String, long[]> LIMITED = new java.util.concurrent.ConcurrentHashMap<>();
+
+    /**
+     * As {@link #log} at WARN, but at most one line per {@code key} every 10 s, with how many were
+     * left out ({@code repeated=N}): a flood must not become a flood of log lines.
+     */
+    public static void limited(String key, String event, Object... keyValues) {
+        long now = System.currentTimeMillis();
+        long[] state = LIMITED.computeIfAbsent(key, k -> new long[] {0, 0});
+        long skipped;
+        synchronized (state) {
+            if (now - state[0] < 10_000) {
+                state[1]++;
+                return;
+            }
+            skipped = state[1];
+            state[0] = now;
+            state[1] = 0;
+        }
+        if (LIMITED.size() > 10_000) {
+            LIMITED.clear();
+        }
+        Object[] kv = java.util.Arrays.copyOf(keyValues, keyValues.length + 2);
+        kv[keyValues.length] = "repeated";
+        kv[keyValues.length + 1] = skipped;
+        log(true, event, kv);
+    }
+
     static String clean(String s) {
         StringBuilder b = new StringBuilder();
         for (int i = 0; i < s.length() && b.length() < 64; i++) {

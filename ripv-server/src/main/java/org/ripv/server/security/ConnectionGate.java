@@ -49,10 +49,13 @@ public final class ConnectionGate {
     private final Map<String, Pending> pending = new HashMap<>();
     private final Map<InetAddress, Integer> pendingPerAddress = new HashMap<>();
     private final Set<String> loggedIn = new HashSet<>();
+    private final LoginThrottle throttle;
 
-    public ConnectionGate(Limits limits, ScheduledExecutorService timer) {
+    /** @param throttle an address it blocks is refused at accept, before any TLS handshake or hashing */
+    public ConnectionGate(Limits limits, ScheduledExecutorService timer, LoginThrottle throttle) {
         this.limits = limits;
         this.timer = timer;
+        this.throttle = throttle;
     }
 
     public Limits limits() {
@@ -60,12 +63,30 @@ public final class ConnectionGate {
     }
 
     /**
-     * A new connection: admitted (and {@code expire} runs at the deadline unless it logged in by
-     * then), or refused with the reason, which the caller logs before closing the socket.
+     * A new connection: admitted (and {@code expire} closes it at the deadline unless it logged in
+     * by then), or refused; both the refusal and the expiry are audit lines.
      *
-     * @return null when admitted, else why not
+     * @return false when refused: the caller closes the socket
      */
-    public synchronized String admit(String clientId, InetAddress address, Runnable expire) {
+    public boolean admit(String clientId, InetAddress address, Runnable expire) {
+        String from = address.getHostAddress();
+        LoginThrottle.Block blocked = throttle.addressBlocked(from);
+        if (blocked != null) {
+            Audit.limited("blocked " + from, "connection-refused", "from", from, "reason", "address-blocked",
+                    "seconds-left", Math.max(1, blocked.left().toSeconds()));
+            return false;
+        }
+        String refused = tryAdmit(clientId, address, () -> {
+            Audit.log(true, "login-deadline", "from", from, "client", clientId);
+            expire.run();
+        });
+        if (refused != null) {
+            Audit.limited("pending " + from, "connection-refused", "from", from, "reason", refused);
+        }
+        return refused == null;
+    }
+
+    private synchronized String tryAdmit(String clientId, InetAddress address, Runnable expire) {
         int fromHere = pendingPerAddress.getOrDefault(address, 0);
         if (fromHere >= limits.perAddress()) {
             return fromHere + " connections from " + address.getHostAddress() + " have not logged in yet";

@@ -14,7 +14,9 @@ import java.util.concurrent.atomic.AtomicInteger;
  * Where password hashes are checked: a few threads (half the cores, at least one) and a short
  * queue. However many connections try to log in at once, PBKDF2 never takes more than those
  * threads' share of the CPU, so commands of users already logged in keep their speed; when the
- * queue is full a log-in is refused as busy rather than waiting without bound.
+ * queue is full a log-in is refused as busy rather than waiting without bound. Under a flood
+ * (others waiting) each thread also rests as long as its last check took, so hashing takes at
+ * most half of those threads' cores and commands keep the rest.
  */
 public final class LoginPool implements AutoCloseable {
     /** Log-ins waiting for a thread before further ones are refused. */
@@ -28,12 +30,31 @@ public final class LoginPool implements AutoCloseable {
 
     public LoginPool(int threads) {
         AtomicInteger n = new AtomicInteger();
+        ThreadLocal<Long> started = new ThreadLocal<>();
         pool = new ThreadPoolExecutor(threads, threads, 0, TimeUnit.MILLISECONDS, new ArrayBlockingQueue<>(QUEUE), r -> {
             Thread t = new Thread(r, "ripv-login-" + n.incrementAndGet());
             t.setDaemon(true);
             t.setPriority(Thread.MIN_PRIORITY);
             return t;
-        }, new ThreadPoolExecutor.AbortPolicy());
+        }, new ThreadPoolExecutor.AbortPolicy()) {
+            @Override
+            protected void beforeExecute(Thread t, Runnable r) {
+                started.set(System.nanoTime());
+            }
+
+            @Override
+            protected void afterExecute(Runnable r, Throwable t) {
+                // The caller has its answer already; rest only while others wait (a flood).
+                long spent = System.nanoTime() - started.get();
+                if (!getQueue().isEmpty()) {
+                    try {
+                        TimeUnit.NANOSECONDS.sleep(spent);
+                    } catch (InterruptedException e) {
+                        Thread.currentThread().interrupt();
+                    }
+                }
+            }
+        };
     }
 
     /** Thrown when too many log-ins wait already. */

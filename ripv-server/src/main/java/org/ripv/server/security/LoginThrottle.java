@@ -64,6 +64,11 @@ public final class LoginThrottle {
         return u == null || a.left().compareTo(u.left()) >= 0 ? a : u;
     }
 
+    /** The block in force for this address alone, or null: checked at accept, before any TLS handshake. */
+    public synchronized Block addressBlocked(String address) {
+        return block("address " + address, states.get(addressKey(address)), clock.getAsLong());
+    }
+
     private Block block(String who, State s, long now) {
         if (s == null || s.blockedUntil <= now) {
             return null;

@@ -109,7 +109,7 @@ public final class Logins {
         try {
             LoginThrottle.Block block = throttle.blocked(user, address);
             if (block != null) {
-                Audit.log(true, "login-refused", "user", user, "from", address, "via", where,
+                Audit.limited("login-refused " + user + " " + address, "login-refused", "user", user, "from", address, "via", where,
                         "reason", block.locked() ? "locked" : "blocked", "blocked", block.who(), "seconds-left", seconds(block));
                 return new Check(null, false, block, null);
             }

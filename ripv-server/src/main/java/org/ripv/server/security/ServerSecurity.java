@@ -15,9 +15,9 @@ public final class ServerSecurity implements AutoCloseable {
 
     public ServerSecurity(SecuritySettings settings, int maxClients, ScheduledExecutorService timer,
                           Supplier<PermitFile> permits, Supplier<String> secret) {
-        this.gate = new ConnectionGate(ConnectionGate.Limits.defaults().withLoginDeadline(settings.loginDeadline())
-                .withPerAddress(settings.pendingPerAddress()).withMaxLoggedIn(maxClients), timer);
         this.throttle = new LoginThrottle(settings.throttle());
+        this.gate = new ConnectionGate(ConnectionGate.Limits.defaults().withLoginDeadline(settings.loginDeadline())
+                .withPerAddress(settings.pendingPerAddress()).withMaxLoggedIn(maxClients), timer, throttle);
         this.pool = new LoginPool();
         this.logins = new Logins(permits, throttle, pool, gate);
         this.challenges = new ServiceChallenges(secret);
