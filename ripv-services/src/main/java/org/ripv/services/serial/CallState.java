@@ -108,7 +108,8 @@ final class CallState {
 
     private void publish(VehicleEvent event, String detail) {
         GpsFix p = position;
-        String where = p == null ? "" : String.format(Locale.ROOT, "; last position %.5f, %.5f", p.lat(), p.lon());
+        String where = p == null ? "" : String.format(Locale.ROOT, "; %s %.5f, %.5f",
+                event == VehicleEvent.SURFACED ? "at" : "last position", p.lat(), p.lon());
         out.accept(ConsoleEntry.event(mailbox, event, detail + where, p == null ? null : p.lat(),
                 p == null ? null : p.lon()));
     }
