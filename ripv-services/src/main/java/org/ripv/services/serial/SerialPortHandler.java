@@ -331,6 +331,20 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
         }
     }
 
+    /** Ends a call from this side. */
+    private void hangUp(Connection l, String why) {
+        synchronized (this) {
+            if (link != l) {
+                return;
+            }
+            link = null;
+            downReason = why;
+        }
+        log.info("{}: call from {}: {}", handle, l.describe(), why);
+        l.close();
+        console.callEnded(VehicleEvent.DIVED, why);
+    }
+
     /** Reopens a down outbound link. */
     private void monitor() {
         if (!lock.tryLock()) {
@@ -364,6 +378,12 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
         @Override
         public void tick(Connection c) {
             console.tick();
+            if (c.isCall() && console.quietTooLong() && !lock.isLocked()) {
+                // a caller that says nothing (a stuck gateway, or someone holding the line) would
+                // keep the vehicle itself from calling in
+                hangUp(c, "quiet for " + console.quietSeconds() + " s: hung up");
+                return;
+            }
             if (console.calls() == VehicleConsole.Calls.CARRIER && c.hasCarrierLine()) {
                 boolean now = c.carrier();
                 if (now != carrier) {

@@ -174,6 +174,16 @@ final class VehicleConsole {
         call.ended(event, why);
     }
 
+    /** True when a call is on and the vehicle has said nothing for the link's quiet time. */
+    synchronized boolean quietTooLong() {
+        return call.onCall() && System.nanoTime() - lastInput > settings.quiet().toNanos();
+    }
+
+    /** The link's quiet time in seconds, for messages. */
+    long quietSeconds() {
+        return settings.quiet().toSeconds();
+    }
+
     synchronized boolean onCall() {
         return call.onCall();
     }

@@ -151,6 +151,21 @@ class VehicleCallTest {
     }
 
     @Test
+    void aCallerThatSaysNothingForTheQuietTimeIsHungUpSoTheVehicleCanCall() throws Exception {
+        start(CallSettings.defaults().withName("ru29").withQuiet(Duration.ofSeconds(1)));
+        try (Socket squatter = call()) {
+            say(squatter, "hello\r\n");
+            assertThat(squatter.getInputStream().readAllBytes()).isEmpty(); // returns when we are hung up on
+        }
+        awaitEvent(VehicleEvent.DIVED, 1);
+        assertThat(event(VehicleEvent.DIVED, 1).text()).isEqualTo("quiet for 1 s: hung up");
+        try (Socket vehicle = call()) {
+            say(vehicle, "GPS Location:  4137.994 N -7032.188 E measured 26.0 secs ago\r\n");
+            awaitEvent(VehicleEvent.SURFACED, 2);
+        }
+    }
+
+    @Test
     void binaryJunkAndAMegabyteWithoutALineEndAreCutPrintableAndBounded() throws Exception {
         start(CallSettings.defaults().withName("ru29").withLimits(100, 1000));
         try (Socket s = call()) {
