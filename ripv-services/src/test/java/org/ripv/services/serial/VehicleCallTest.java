@@ -280,6 +280,12 @@ class VehicleCallTest {
         for (String l : probe.lines("ru29")) {
             assertThat(l.indexOf(LineAssembler.REPLACEMENT)).as("no binary in the console: " + l).isNegative();
         }
+        ServiceProbe.Answer missing = probe.send("ru29", "ymodem:get NOSUCH.LOG", T);
+        assertThat(missing.ok()).isFalse();
+        Eventually.await("transfer failed", T, () -> probe.events("ru29").stream()
+                .anyMatch(e -> e.event() == VehicleEvent.TRANSFER_FAILED));
+        assertThat(probe.events("ru29").stream().filter(e -> e.event() == VehicleEvent.TRANSFER_FAILED).findFirst()
+                .orElseThrow().text()).contains("'ymodem:get NOSUCH.LOG' for alice").contains("File not found - NOSUCH.LOG");
 
         awaitEvent(VehicleEvent.DIVED, 1);
         awaitEvent(VehicleEvent.SURFACED, 2);
@@ -289,6 +295,22 @@ class VehicleCallTest {
         if (System.getenv("DUMP_CONSOLE") != null) {
             probe.console.forEach(e -> System.err.println("CONSOLE " + e.kind() + " " + e.user() + " " + e.event() + " | " + e.text()));
         }
+    }
+
+    @Test
+    void aServiceRestartedInTheMiddleOfACallTakesTheNextCall() throws Exception {
+        start(CallSettings.defaults().withName("ru29"));
+        int port = serial.listenPort("ru29");
+        glider = new GliderSimulator(tmp.resolve("glider"), Duration.ofSeconds(1), SimulatorOverTcpTest.YMODEM);
+        glider.call("127.0.0.1", port, "ru29", Duration.ofSeconds(1), Duration.ofSeconds(30));
+        awaitEvent(VehicleEvent.SURFACED, 1);
+        serial.stop(); // mid-call: the glider is hung up on
+        start(new VehicleLink(SimulatorOverTcpTest.settings("listen://127.0.0.1:" + port),
+                CallSettings.defaults().withName("ru29")));
+        assertThat(probe.status("ru29").detail()).contains("no call yet");
+        awaitEvent(VehicleEvent.SURFACED, 1); // the glider's next call, at the new service
+        assertThat(event(VehicleEvent.SURFACED, 1).text()).contains("call 1");
+        assertThat(probe.send("ru29", "dir", T).text()).contains("MISSION1.LOG");
     }
 
     @Test
