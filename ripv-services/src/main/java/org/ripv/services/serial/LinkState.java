@@ -76,7 +76,7 @@ final class LinkState {
         return downReason;
     }
 
-    /** {@code listen://0.0.0.0:2323} for a listen link. */
+    /** {@code listen://127.0.0.1:2323} for a listen link. */
     String listening() {
         return calls == null ? "" : calls.describe();
     }

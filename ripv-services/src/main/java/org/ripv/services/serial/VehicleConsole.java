@@ -102,7 +102,7 @@ final class VehicleConsole {
             out.accept(ConsoleEntry.line(mailbox, text));
         }
         if (calls == Calls.DIALOG && !call.onCall() && settings.surface().matcher(text).find()) {
-            call.started("surface dialog", now);
+            call.started("surface dialog: " + text, now);
         }
         GpsFix.parse(text).ifPresent(call::position);
         if (settings.alert().matcher(text).find()) {

@@ -43,10 +43,12 @@ public record VehicleLink(LinkSettings settings, CallSettings call) {
         return device.startsWith("listen://");
     }
 
-    /** {@code listen://PORT} or {@code listen://ADDR:PORT} as a URI with host (null: every address) and port. */
+    /** {@code listen://PORT} (loopback) or {@code listen://ADDR:PORT} as a URI with host and port. */
     static URI listenUri(String device) {
         String rest = device.substring("listen://".length());
-        URI u = URI.create("listen://" + (rest.matches("\\d+") ? "0.0.0.0:" + rest : rest));
+        // no address: this machine only, like the services' other ports; give 0.0.0.0 (or the
+        // gateway-facing address) for vehicles and gateways elsewhere
+        URI u = URI.create("listen://" + (rest.matches("\\d+") ? "127.0.0.1:" + rest : rest));
         if (u.getPort() < 0 || u.getPort() > 65535 || u.getHost() == null) {
             throw new IllegalArgumentException("'" + device + "' is not listen://[ADDR:]PORT");
         }

@@ -98,7 +98,8 @@ class SerialPortServerCommandTest {
         assertEquals(200, ru29.call().lineLength());
         assertEquals(50, ru29.call().linesPerSecond());
         assertTrue(ru29.call().alert().matcher("hull LEAK").find());
-        assertEquals("0.0.0.0", VehicleLink.listenUri("listen://2323").getHost());
+        assertEquals("127.0.0.1", VehicleLink.listenUri("listen://2323").getHost());
+        assertEquals("0.0.0.0", VehicleLink.listenUri("listen://0.0.0.0:2323").getHost());
         VehicleLink anonymous = c.link(c.links.get(1));
         assertEquals("listen-2324", anonymous.handle());
         assertEquals(300, anonymous.call().quiet().toSeconds());
