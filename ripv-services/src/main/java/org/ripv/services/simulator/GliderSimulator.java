@@ -41,7 +41,8 @@ import org.slf4j.LoggerFactory;
  * answering and, on TCP, drops the connection and refuses new ones until it surfaces.
  *
  * <p>It serves one connection at a time, on a TCP port ({@link #listen}) or on a serial device
- * or pseudo-terminal ({@link #attach}). Its files live in one directory.
+ * or pseudo-terminal ({@link #attach}), or calls a shore station again and again ({@link #call})
+ * with a {@link SurfaceDialog} on each call. Its files live in one directory.
  */
 public final class GliderSimulator implements AutoCloseable {
     private static final Logger log = LoggerFactory.getLogger(GliderSimulator.class);
