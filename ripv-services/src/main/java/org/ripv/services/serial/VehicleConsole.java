@@ -36,7 +36,8 @@ final class VehicleConsole {
     private final LineRate rate;
     private final CallState call;
     private long lastInput = System.nanoTime();
-    private long lastSkipReport;
+    private long lastSkipReport = System.nanoTime();
+    private long linesSinceReport;
     private String echo;
     private int echoLines;
     private long lastAlert = System.nanoTime() - 2 * SECOND;
@@ -97,8 +98,11 @@ final class VehicleConsole {
                 echo = null;
             }
         }
+        linesSinceReport++;
         if (rate.admit(now)) {
-            reportSkipped(now);
+            if (now - lastSkipReport > SECOND) {
+                reportSkipped(now);
+            }
             out.accept(ConsoleEntry.line(mailbox, text));
         }
         if (calls == Calls.DIALOG && !call.onCall() && settings.surface().matcher(text).find()) {
@@ -118,12 +122,18 @@ final class VehicleConsole {
         return before.isEmpty() || prompt.matcher(before).matches();
     }
 
+    /** The "N lines skipped" marker, with the rate the vehicle printed at since the last one. */
     private void reportSkipped(long now) {
         long skipped = rate.takeSkipped();
         if (skipped > 0) {
+            double seconds = Math.max(1e-3, (now - lastSkipReport) / 1e9);
+            long printed = Math.round(linesSinceReport / seconds);
+            out.accept(ConsoleEntry.line(mailbox, "[" + skipped + " lines skipped: the vehicle printed " + printed
+                    + " lines/s, more than the link's " + rate.perSecond() + "]"));
+        }
+        if (skipped > 0 || now - lastSkipReport > SECOND) {
             lastSkipReport = now;
-            out.accept(ConsoleEntry.line(mailbox, "[" + skipped + " lines skipped: the vehicle printed more than "
-                    + rate.perSecond() + " lines/s]"));
+            linesSinceReport = 0;
         }
     }
 
