@@ -2,7 +2,6 @@ package org.ripv.service;
 
 import java.rmi.NotBoundException;
 import java.rmi.RemoteException;
-import java.rmi.registry.LocateRegistry;
 import java.rmi.registry.Registry;
 import java.time.Duration;
 import java.util.List;
@@ -37,6 +36,9 @@ public final class ServiceConnector implements AutoCloseable {
     private volatile String token;
     private volatile CountDownLatch registered = new CountDownLatch(1);
     private volatile boolean warnedAway;
+    private static final java.util.concurrent.atomic.AtomicLong STAMPS = new java.util.concurrent.atomic.AtomicLong();
+    private volatile java.util.function.Consumer<String> printer = m -> { };
+    private volatile String lastNotice;
     /** Guards the window in which the server knows the new token and this side does not yet. */
     private final Object tokenLock = new Object();
     private boolean registering;
@@ -110,6 +112,9 @@ public final class ServiceConnector implements AutoCloseable {
                 log.warn("{}: no RIPVServer at {}:{} yet ({}); retrying every {} s", service.name(), options.serverHost(),
                         options.registryPort(), e.getMessage(), options.heartbeat().toSeconds());
             }
+        } catch (IllegalStateException e) {
+            // Refused but fixable (the server cannot call back, or a newer attempt won): say so, keep trying.
+            notice(e.getMessage());
         } catch (SecurityException e) {
             // Retrying cannot fix a wrong secret: stop and let the launcher say so.
             log.error("{}: the server refused registration: {}", service.name(), e.getMessage());
@@ -121,6 +126,28 @@ public final class ServiceConnector implements AutoCloseable {
         }
     }
 
+    /** Where refusals the service can fix are printed besides the log (a launcher's standard error). */
+    public void onNotice(java.util.function.Consumer<String> printer) {
+        this.printer = printer == null ? m -> { } : printer;
+        String last = lastNotice;
+        if (last != null) {
+            this.printer.accept("Error: registration refused: " + last);
+        }
+    }
+
+    private void notice(String message) {
+        if (!message.equals(lastNotice)) {
+            lastNotice = message;
+            log.error("{}: registration refused: {}; retrying every {} s", service.name(), message, options.heartbeat().toSeconds());
+            printer.accept("Error: registration refused: " + message + " (retrying every " + options.heartbeat().toSeconds() + " s)");
+        }
+    }
+
+    /** This process's registration attempts, strictly increasing (see ServiceDescriptor#registration). */
+    private static long nextStamp() {
+        return STAMPS.updateAndGet(last -> Math.max(last + 1, System.currentTimeMillis()));
+    }
+
     private void lost() {
         token = null;
         if (registered.getCount() == 0) {
@@ -129,9 +156,9 @@ public final class ServiceConnector implements AutoCloseable {
     }
 
     private void register() throws RemoteException, NotBoundException {
-        Registry registry = LocateRegistry.getRegistry(options.serverHost(), options.registryPort());
+        Registry registry = RmiSupport.registry(options.serverHost(), options.registryPort());
         GenericRMIInterface s = (GenericRMIInterface) registry.lookup(GenericRMIInterface.BINDING);
-        ServiceDescriptor d = service.descriptor();
+        ServiceDescriptor d = service.descriptor().withRegistration(nextStamp());
         String t;
         synchronized (tokenLock) {
             registering = true;
@@ -149,6 +176,7 @@ public final class ServiceConnector implements AutoCloseable {
             token = t;
         }
         warnedAway = false;
+        lastNotice = null;
         registered.countDown();
         log.info("{} registered with the RIPVServer at {}:{}", d.name(), options.serverHost(), options.registryPort());
     }
@@ -255,9 +283,10 @@ public final class ServiceConnector implements AutoCloseable {
             throw new UnsupportedOperationException("a service does not take replies");
         }
 
+        /** The server's call-back probe at registration: answering at all proves the server reaches us. */
         @Override
         public boolean heartbeat(String t) {
-            throw new UnsupportedOperationException("a service does not take heartbeats");
+            return true;
         }
 
         @Override

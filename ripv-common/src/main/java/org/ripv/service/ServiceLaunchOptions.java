@@ -72,6 +72,7 @@ public final class ServiceLaunchOptions {
     public int serve(RIPVService service) throws Exception {
         org.ripv.rmi.RmiSupport.filterProcess();
         ServiceConnector connector = ServiceConnector.connect(service, toOptions());
+        connector.onNotice(err::println);
         java.util.concurrent.atomic.AtomicBoolean stopping = new java.util.concurrent.atomic.AtomicBoolean();
         Thread hook = new Thread(() -> {
             stopping.set(true);

@@ -70,6 +70,7 @@ public final class RIPVServer implements AutoCloseable {
     private final PostOffice<IncomingServerMessage, OutgoingServerMessage> postOffice = new PostOffice<>(200_000);
     private final ScheduledExecutorService timers;
     private final ExecutorService checkers;
+    private final ExecutorService withdrawals;
     private final ExecutorService liveness;
     private final ServiceLiveness serviceLiveness;
     private final ExecutorService fileWork;
@@ -98,10 +99,14 @@ public final class RIPVServer implements AutoCloseable {
     public RIPVServer(ServerConfig config) {
         this.config = config;
         this.timers = Executors.newScheduledThreadPool(1, named("ripv-server-timer"));
-        this.checkers = Executors.newFixedThreadPool(4, named("ripv-service-query"));
+        // Calls to services: each is bounded by the RMI deadlines and at most one MailBox query
+        // runs per service, so a cached pool grows by one thread per hung service at worst.
+        this.checkers = Executors.newCachedThreadPool(named("ripv-service-query"));
+        this.withdrawals = new java.util.concurrent.ThreadPoolExecutor(0, 16, 30, TimeUnit.SECONDS,
+                new java.util.concurrent.SynchronousQueue<>(), named("ripv-withdraw"));
         this.liveness = Executors.newFixedThreadPool(2, named("ripv-service-check"));
         this.fileWork = Executors.newFixedThreadPool(2, named("ripv-file-work"));
-        this.serviceLiveness = new ServiceLiveness(services, liveness, timers, config.serviceCheck(), this::drop);
+        this.serviceLiveness = new ServiceLiveness(services, liveness, checkers, timers, config.serviceCheck(), this::drop);
     }
 
     private static java.util.concurrent.ThreadFactory named(String name) {
@@ -131,13 +136,15 @@ public final class RIPVServer implements AutoCloseable {
         try {
             registryPort = config.registryPort() == 0 ? freePort() : config.registryPort();
             BoundServerSocketFactory rmiSockets = new BoundServerSocketFactory(bind);
+            // Services call back with deadlines: the factory travels inside the stub they get.
+            org.ripv.rmi.DeadlineSocketFactory callSockets = org.ripv.rmi.DeadlineSocketFactory.fromSystem();
             try {
-                registry = LocateRegistry.createRegistry(registryPort, null, rmiSockets);
+                registry = LocateRegistry.createRegistry(registryPort, callSockets, rmiSockets);
             } catch (RemoteException e) {
                 throw new IOException("cannot open the RMI registry on port " + registryPort + " (in use?): " + e.getMessage(), e);
             }
             GenericRMIInterface stub = (GenericRMIInterface) java.rmi.server.UnicastRemoteObject.exportObject(remote,
-                    registryPort, null, rmiSockets, org.ripv.wire.WireFilter.forRmi(RmiSupport.MAX_RMI_BYTES));
+                    registryPort, callSockets, rmiSockets, org.ripv.wire.WireFilter.forRmi(RmiSupport.MAX_RMI_BYTES));
             registry.rebind(GenericRMIInterface.BINDING, stub);
 
             ServerSocketFactory factory = config.tls() == null ? ServerSocketFactory.getDefault()
@@ -203,6 +210,7 @@ public final class RIPVServer implements AutoCloseable {
         RmiSupport.unexport(remote);
         timers.shutdownNow();
         checkers.shutdownNow();
+        withdrawals.shutdownNow();
         liveness.shutdownNow();
         fileWork.shutdownNow();
         postOffice.stop();
@@ -360,6 +368,10 @@ public final class RIPVServer implements AutoCloseable {
         return Optional.ofNullable(clients.get(clientId));
     }
 
+    ServiceLiveness liveness() {
+        return serviceLiveness;
+    }
+
     Map<String, ServiceReference> serviceMap() {
         return services;
     }
@@ -397,37 +409,52 @@ public final class RIPVServer implements AutoCloseable {
 
     /** A request that could not be handed to its service: fail it, and check whether the service lives. */
     void undeliverable(ServiceReference ref, IncomingServiceMessage r, Exception e) {
-        log.warn("could not reach {}: {}", ref, e.toString());
+        String why = ServiceReference.why(e, ref.address());
+        log.warn("could not reach {} at {}: {}", ref, ref.address(), why);
         if (pending.complete(r.header(), ref.descriptor().name()) != null) {
             reply(new IncomingServerMessage(r.header()).reply(Footer.error(ref.descriptor().sid(), ErrorCode.SERVICE_GONE,
-                    ref.descriptor().name() + " could not be reached: " + e.getMessage()).via(SERVER_SERVICE)));
+                    "could not reach " + ref.descriptor().name() + " at " + ref.address() + ": " + why + "; '"
+                            + Header.abbreviate(r.header().body()) + "' was not delivered").via(SERVER_SERVICE)));
         }
         serviceLiveness.soon(ref);
     }
 
-    /** A request heard nothing for the timeout: withdraw it if it has not started, and say which happened. */
+    /**
+     * A request heard nothing for the timeout. Never delivered: say so (SERVICE_GONE), at once.
+     * Delivered: try to withdraw it, on a thread of its own with the RMI deadlines, so that no
+     * other request waits on this call; skip that when the service is known not to answer.
+     */
     private void timedOut(PendingRequests.Pending p) {
         ServiceReference ref = services.get(p.service());
+        String what = "'" + Header.abbreviate(p.header().body()) + "'";
+        if (ref != null && (ref.unqueue(p.header()) || ref.undelivered(p.header()))) {
+            reply(new IncomingServerMessage(p.header()).reply(Footer.error(ref.descriptor().sid(), ErrorCode.SERVICE_GONE,
+                    "could not reach " + p.service() + " at " + ref.address() + ": timed out; " + what
+                            + " was not delivered and will not run").via(SERVER_SERVICE)));
+            return;
+        }
+        String sid = ref == null ? Ids.FID_NONE : ref.descriptor().sid();
         Runnable answer = () -> {
-            String sid = ref == null ? Ids.FID_NONE : ref.descriptor().sid();
             boolean withdrawn = false;
             try {
-                withdrawn = ref != null && ref.withdraw(p.header());
+                withdrawn = ref != null && ref.problem().isEmpty() && ref.withdraw(p.header());
             } catch (RemoteException | RuntimeException e) {
                 log.debug("could not withdraw #{}: {}", p.header().messageId(), e.toString());
             }
-            String what = "'" + Header.abbreviate(p.header().body()) + "'";
             String text = withdrawn
                     ? p.service() + " did not start " + what + " within " + config.requestTimeout().toSeconds()
                             + " s (its MailBox was busy); it was withdrawn and will not run"
                     : p.service() + " did not answer " + what + " within " + config.requestTimeout().toSeconds()
-                            + " s; it may still complete on the device";
+                            + " s; it was delivered and may still complete on the device";
             reply(new IncomingServerMessage(p.header()).reply(Footer.error(sid, ErrorCode.TIMEOUT, text).via(SERVER_SERVICE)));
         };
-        if (checkers.isShutdown()) {
-            answer.run();
-        } else {
-            checkers.execute(answer);
+        try {
+            withdrawals.execute(answer);
+        } catch (java.util.concurrent.RejectedExecutionException e) {
+            // Many withdrawals under way already (or stopping): answer without one.
+            reply(new IncomingServerMessage(p.header()).reply(Footer.error(sid, ErrorCode.TIMEOUT, p.service()
+                    + " did not answer " + what + " within " + config.requestTimeout().toSeconds()
+                    + " s; it was delivered and may still complete on the device").via(SERVER_SERVICE)));
         }
     }
 

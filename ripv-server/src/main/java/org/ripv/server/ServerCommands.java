@@ -59,8 +59,11 @@ final class ServerCommands {
 
     private final RIPVServer server;
 
+    private final ServiceQueries queries;
+
     ServerCommands(RIPVServer server) {
         this.server = server;
+        this.queries = new ServiceQueries(server);
     }
 
     /** Commands that touch the disk: they run on the file workers, not on the Post Office's thread. */
@@ -133,21 +136,14 @@ final class ServerCommands {
                 return listing(request, c, files.listDownloads());
             case "?ulfiles":
                 return listing(request, c, files.listUploads());
-            case "?services": {
-                List<ServiceDescriptor> list = server.services().stream().map(ServiceReference::descriptor).toList();
-                StringBuilder b = new StringBuilder(list.size() + " service(s) registered");
-                list.forEach(d -> b.append('\n').append(d.name()).append("  SID ").append(d.sid())
-                        .append(d.description().isEmpty() ? "" : "  " + d.description()));
-                return ok(request, c, b.toString(), new ServiceList(list));
-            }
+            case "?services":
+                return queries.services(request);
             case "?mailboxes":
-                server.checkers().execute(() -> server.reply(mailboxes(request, c)));
+                queries.mailboxes(request);
                 return null;
-            case "?status": {
-                MailboxAddress address = MailboxAddress.parse(arg(w, 1, c));
-                server.checkers().execute(() -> server.reply(status(request, c, address)));
+            case "?status":
+                queries.status(request, MailboxAddress.parse(arg(w, 1, c)));
                 return null;
-            }
             case "?upload": {
                 permit(request, c);
                 if (w.length != 4 || request.header().attachment() == null) {
@@ -207,44 +203,6 @@ final class ServerCommands {
             }
             default:
                 throw new IllegalStateException("no handler for " + w[0]);
-        }
-    }
-
-    private OutgoingServerMessage mailboxes(IncomingServerMessage request, Command c) {
-        List<MailboxStatus> all = new ArrayList<>();
-        StringBuilder text = new StringBuilder();
-        for (ServiceReference ref : server.services()) {
-            try {
-                for (MailboxStatus s : ref.mailboxes()) {
-                    MailboxStatus withLock = server.withLock(s);
-                    all.add(withLock);
-                    text.append(describe(withLock)).append('\n');
-                }
-            } catch (RemoteException | RuntimeException e) {
-                text.append(ref.descriptor().name()).append(": not answering (").append(e.getClass().getSimpleName()).append(")\n");
-            }
-        }
-        return ok(request, c, all.size() + " mailbox(es)\n" + text.toString().stripTrailing(), new MailboxList(all));
-    }
-
-    private OutgoingServerMessage status(IncomingServerMessage request, Command c, MailboxAddress address) {
-        Optional<ServiceReference> ref = server.service(address.service().toString());
-        if (ref.isEmpty()) {
-            return ServerTaskManager.error(request, c.fid(), ErrorCode.UNKNOWN_SERVICE,
-                    "no service " + address.service() + " is registered");
-        }
-        try {
-            for (MailboxStatus s : ref.get().mailboxes()) {
-                if (s.address().equals(address.toString())) {
-                    MailboxStatus withLock = server.withLock(s);
-                    return ok(request, c, describe(withLock), withLock);
-                }
-            }
-            return ServerTaskManager.error(request, c.fid(), ErrorCode.UNKNOWN_MAILBOX,
-                    "no MailBox " + address + " at " + address.service() + "; ?mailboxes lists them");
-        } catch (RemoteException | RuntimeException e) {
-            return ServerTaskManager.error(request, c.fid(), ErrorCode.SERVICE_GONE,
-                    address.service() + " is not answering: " + e.getMessage());
         }
     }
 
