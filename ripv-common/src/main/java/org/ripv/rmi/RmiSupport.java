@@ -55,7 +55,13 @@ public final class RmiSupport {
      * with {@link DeadlineSocketFactory} so that every caller connects and reads with deadlines.
      */
     public static GenericRMIInterface export(GenericRMIInterface object, int port) throws RemoteException {
-        return (GenericRMIInterface) UnicastRemoteObject.exportObject(object, port, DeadlineSocketFactory.fromSystem(), null,
+        return export(object, port, null);
+    }
+
+    /** As {@link #export(GenericRMIInterface, int)}, listening through {@code sockets} (null: RMI's default). */
+    public static GenericRMIInterface export(GenericRMIInterface object, int port, java.rmi.server.RMIServerSocketFactory sockets)
+            throws RemoteException {
+        return (GenericRMIInterface) UnicastRemoteObject.exportObject(object, port, DeadlineSocketFactory.fromSystem(), sockets,
                 WireFilter.forRmi(MAX_RMI_BYTES));
     }
 

@@ -44,10 +44,11 @@ public final class ServiceConnector implements AutoCloseable {
     private boolean registering;
     private final java.util.concurrent.CompletableFuture<String> fatal = new java.util.concurrent.CompletableFuture<>();
 
-    private ServiceConnector(RIPVService service, ServiceOptions options) throws RemoteException {
+    private ServiceConnector(RIPVService service, ServiceOptions options, java.rmi.server.RMIServerSocketFactory sockets)
+            throws RemoteException {
         this.service = service;
         this.options = options;
-        this.stub = RmiSupport.export(remote, options.exportPort());
+        this.stub = RmiSupport.export(remote, options.exportPort(), sockets);
         this.timer = Executors.newSingleThreadScheduledExecutor(r -> {
             Thread t = new Thread(r, "ripv-connector-" + service.name());
             t.setDaemon(true);
@@ -60,9 +61,18 @@ public final class ServiceConnector implements AutoCloseable {
      * the server answers. Use {@link #awaitRegistered} to wait for the first registration.
      */
     public static ServiceConnector connect(RIPVService service, ServiceOptions options) throws Exception {
+        return connect(service, options, null);
+    }
+
+    /**
+     * As {@link #connect(RIPVService, ServiceOptions)}, with the service's RMI object listening
+     * through {@code sockets} (null: RMI's default, all addresses).
+     */
+    public static ServiceConnector connect(RIPVService service, ServiceOptions options,
+                                           java.rmi.server.RMIServerSocketFactory sockets) throws Exception {
         RmiSupport.configure(10_000, 30_000);
         service.start();
-        ServiceConnector c = new ServiceConnector(service, options);
+        ServiceConnector c = new ServiceConnector(service, options, sockets);
         service.replyTo(c.new Sink());
         c.timer.execute(c::tick);
         c.timer.scheduleWithFixedDelay(c::tick, options.heartbeat().toMillis(), options.heartbeat().toMillis(),
@@ -138,8 +148,8 @@ public final class ServiceConnector implements AutoCloseable {
     private void notice(String message) {
         if (!message.equals(lastNotice)) {
             lastNotice = message;
-            log.error("{}: registration refused: {}; retrying every {} s", service.name(), message, options.heartbeat().toSeconds());
-            printer.accept("Error: registration refused: " + message + " (retrying every " + options.heartbeat().toSeconds() + " s)");
+            log.error("{}: registration refused: {}; retrying every {} ms", service.name(), message, options.heartbeat().toMillis());
+            printer.accept("Error: registration refused: " + message + " (retrying every " + options.heartbeat().toMillis() + " ms)");
         }
     }
 

@@ -414,9 +414,23 @@ public final class RIPVServer implements AutoCloseable {
         if (pending.complete(r.header(), ref.descriptor().name()) != null) {
             reply(new IncomingServerMessage(r.header()).reply(Footer.error(ref.descriptor().sid(), ErrorCode.SERVICE_GONE,
                     "could not reach " + ref.descriptor().name() + " at " + ref.address() + ": " + why + "; '"
-                            + Header.abbreviate(r.header().body()) + "' was not delivered").via(SERVER_SERVICE)));
+                            + Header.abbreviate(r.header().body()) + (neverConnected(e) ? "' was not delivered and will not run"
+                            : "' was probably not delivered") + " (the server gives up on a call after its RMI deadlines)")
+                    .via(SERVER_SERVICE)));
         }
         serviceLiveness.soon(ref);
+    }
+
+    /** True when a call failed before any byte of it could leave (no connection): it surely did not arrive. */
+    private static boolean neverConnected(Throwable e) {
+        for (Throwable t = e; t != null; t = t.getCause() == t ? null : t.getCause()) {
+            if (t instanceof java.rmi.ConnectException || t instanceof java.net.ConnectException
+                    || t instanceof java.net.SocketTimeoutException && String.valueOf(t.getMessage()).startsWith("could not reach")
+                    || t instanceof java.rmi.NoSuchObjectException || t instanceof java.net.NoRouteToHostException) {
+                return true;
+            }
+        }
+        return e.getMessage() != null && e.getMessage().contains("no longer registered");
     }
 
     /**
@@ -464,11 +478,16 @@ public final class RIPVServer implements AutoCloseable {
     }
 
     void drop(ServiceReference ref, String why) {
+        List<PendingRequests.Pending> failed = pending.failService(ref.descriptor().name());
         ref.close();
-        for (PendingRequests.Pending p : pending.failService(ref.descriptor().name())) {
-            reply(new IncomingServerMessage(p.header()).reply(Footer.error(ref.descriptor().sid(), ErrorCode.SERVICE_GONE,
-                    ref.descriptor().name() + " " + why + " before answering '" + Header.abbreviate(p.header().body())
-                            + "'").via(SERVER_SERVICE)));
+        for (PendingRequests.Pending p : failed) {
+            String what = "'" + Header.abbreviate(p.header().body()) + "'";
+            String text = ref.undelivered(p.header()) && !ref.problem().isEmpty()
+                    ? "could not reach " + ref.descriptor().name() + " at " + ref.address() + ": " + ref.problem()
+                            .replace("could not reach " + ref.address() + ": ", "") + "; " + what + " was not delivered"
+                    : ref.descriptor().name() + " " + why + " before answering " + what;
+            reply(new IncomingServerMessage(p.header()).reply(Footer.error(ref.descriptor().sid(), ErrorCode.SERVICE_GONE, text)
+                    .via(SERVER_SERVICE)));
         }
     }
 

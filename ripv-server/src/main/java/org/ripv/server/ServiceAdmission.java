@@ -21,6 +21,9 @@ import org.slf4j.LoggerFactory;
 final class ServiceAdmission {
     private static final Logger log = LoggerFactory.getLogger(ServiceAdmission.class);
     private static final SecureRandom RANDOM = new SecureRandom();
+    /** How long the call-back at registration may take. */
+    static final java.time.Duration CALLBACK_DEADLINE =
+            java.time.Duration.ofMillis(Long.getLong("ripv.service.callbackMillis", 5_000));
 
     private ServiceAdmission() {}
 
@@ -35,7 +38,7 @@ final class ServiceAdmission {
             throw new IllegalArgumentException("a registration needs a descriptor and the service's stub");
         }
         ServiceName.parse(d.name());
-        callBack(d, service);
+        callBack(d, service, server.checkers());
         byte[] t = new byte[24];
         RANDOM.nextBytes(t);
         ServiceReference ref = new ServiceReference(d, service, HexFormat.of().formatHex(t), server::undeliverable,
@@ -64,19 +67,39 @@ final class ServiceAdmission {
 
     /**
      * Proves the server can call the service: its heartbeat answers (any answer from the service
-     * itself will do). Bounded by the connect deadline in the service's stub.
+     * itself will do), within {@link #CALLBACK_DEADLINE} — well inside the service's own wait for
+     * the registration to return.
      */
-    static void callBack(ServiceDescriptor d, GenericRMIInterface service) {
+    static void callBack(ServiceDescriptor d, GenericRMIInterface service, java.util.concurrent.Executor pool) {
         String address = ServiceReference.addressOf(service);
+        java.util.concurrent.CompletableFuture<Boolean> probe = java.util.concurrent.CompletableFuture.supplyAsync(() -> {
+            try {
+                return service.heartbeat("probe");
+            } catch (RemoteException e) {
+                throw new java.util.concurrent.CompletionException(e);
+            }
+        }, pool);
         try {
-            service.heartbeat("probe");
-        } catch (ServerException | ServerError | UnsupportedOperationException | SecurityException e) {
-            // The service answered, if only to refuse: it is reachable.
-        } catch (RemoteException | RuntimeException e) {
-            String why = ServiceReference.why(e, address);
-            log.warn("refused the registration of {}: cannot call it back at {}: {}", d.name(), address, why);
-            throw new IllegalStateException(refusal(d.name(), address, why));
+            probe.get(CALLBACK_DEADLINE.toMillis(), java.util.concurrent.TimeUnit.MILLISECONDS);
+        } catch (java.util.concurrent.TimeoutException e) {
+            probe.cancel(true);
+            throw refused(d, address, "timed out after " + CALLBACK_DEADLINE.toMillis() + " ms");
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw refused(d, address, "interrupted");
+        } catch (java.util.concurrent.ExecutionException e) {
+            Throwable t = e.getCause();
+            if (t instanceof ServerException || t instanceof ServerError || t instanceof UnsupportedOperationException
+                    || t instanceof SecurityException) {
+                return; // the service answered, if only to refuse: it is reachable
+            }
+            throw refused(d, address, ServiceReference.why(t, address));
         }
+    }
+
+    private static IllegalStateException refused(ServiceDescriptor d, String address, String why) {
+        log.warn("refused the registration of {}: cannot call it back at {}: {}", d.name(), address, why);
+        return new IllegalStateException(refusal(d.name(), address, why));
     }
 
     /** What the service prints: the address tried and what to set. */
