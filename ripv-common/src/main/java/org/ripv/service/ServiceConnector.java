@@ -39,6 +39,7 @@ public final class ServiceConnector implements AutoCloseable {
     private static final java.util.concurrent.atomic.AtomicLong STAMPS = new java.util.concurrent.atomic.AtomicLong();
     private volatile java.util.function.Consumer<String> printer = m -> { };
     private volatile String lastNotice;
+    private volatile org.ripv.outbound.CallChannel channel;
     /** Guards the window in which the server knows the new token and this side does not yet. */
     private final Object tokenLock = new Object();
     private boolean registering;
@@ -48,7 +49,8 @@ public final class ServiceConnector implements AutoCloseable {
             throws RemoteException {
         this.service = service;
         this.options = options;
-        this.stub = RmiSupport.export(remote, options.exportPort(), sockets);
+        // Outbound-only: nothing listens here; the server's calls come back over our own connection.
+        this.stub = options.outbound() ? null : RmiSupport.export(remote, options.exportPort(), sockets);
         this.timer = Executors.newSingleThreadScheduledExecutor(r -> {
             Thread t = new Thread(r, "ripv-connector-" + service.name());
             t.setDaemon(true);
@@ -166,15 +168,21 @@ public final class ServiceConnector implements AutoCloseable {
     }
 
     private void register() throws RemoteException, NotBoundException {
-        Registry registry = RmiSupport.registry(options.serverHost(), options.registryPort());
-        GenericRMIInterface s = (GenericRMIInterface) registry.lookup(GenericRMIInterface.BINDING);
+        GenericRMIInterface s;
+        if (options.outbound()) {
+            s = openChannel();
+        } else {
+            Registry registry = RmiSupport.registry(options.serverHost(), options.registryPort());
+            s = (GenericRMIInterface) registry.lookup(GenericRMIInterface.BINDING);
+        }
         ServiceDescriptor d = service.descriptor().withRegistration(nextStamp());
         String t;
         synchronized (tokenLock) {
             registering = true;
         }
         try {
-            t = s.register(d, stub, options.secret());
+            // Over an outbound connection the handshake has proven the secret: it is never sent.
+            t = s.register(d, stub, options.outbound() ? "" : options.secret());
         } finally {
             synchronized (tokenLock) {
                 registering = false;
@@ -188,7 +196,57 @@ public final class ServiceConnector implements AutoCloseable {
         warnedAway = false;
         lastNotice = null;
         registered.countDown();
-        log.info("{} registered with the RIPVServer at {}:{}", d.name(), options.serverHost(), options.registryPort());
+        log.info("{} registered with the RIPVServer at {}:{}{}", d.name(), options.serverHost(),
+                options.outbound() ? options.outboundPort() : options.registryPort(), options.outbound() ? " (outbound only)" : "");
+    }
+
+    /**
+     * Opens the outbound connection: TCP to the server's outbound port within the connect
+     * deadline, the HMAC handshake, then calls both ways over it. Losing it means losing the
+     * server: the next heartbeat connects and registers again.
+     */
+    private GenericRMIInterface openChannel() throws RemoteException {
+        org.ripv.outbound.CallChannel old = channel;
+        if (old != null) {
+            old.close();
+        }
+        java.net.Socket socket = new java.net.Socket();
+        String where = options.serverHost() + ":" + options.outboundPort();
+        try {
+            org.ripv.rmi.DeadlineSocketFactory f = org.ripv.rmi.DeadlineSocketFactory.fromSystem();
+            socket.connect(new java.net.InetSocketAddress(options.serverHost(), options.outboundPort()), f.connectMillis());
+            socket.setSoTimeout(Math.max(f.readMillis(), 5_000));
+            java.io.DataInputStream in = new java.io.DataInputStream(new java.io.BufferedInputStream(socket.getInputStream()));
+            java.io.DataOutputStream out = new java.io.DataOutputStream(new java.io.BufferedOutputStream(socket.getOutputStream()));
+            org.ripv.outbound.OutboundHandshake.service(in, out, options.secret(), service.descriptor().name());
+            org.ripv.outbound.CallChannel c = new org.ripv.outbound.CallChannel(socket, where, remote,
+                    org.ripv.outbound.OutboundLimits.MAX_FRAME, java.time.Duration.ofMillis(Math.max(f.readMillis(), 5_000)));
+            c.closed().thenAccept(why -> {
+                if (token != null && server == c.remote() && !fatal.isDone()) {
+                    log.warn("{}: the outbound connection to {} closed ({}); connecting again", service.name(), where, why);
+                    lost();
+                }
+            });
+            channel = c;
+            return c.remote();
+        } catch (java.net.SocketTimeoutException e) {
+            close(socket);
+            throw new RemoteException("could not reach the server's outbound port " + where + ": timed out", e);
+        } catch (java.io.IOException e) {
+            close(socket);
+            throw new RemoteException("could not connect to the server's outbound port " + where + ": " + e.getMessage(), e);
+        } catch (RuntimeException e) {
+            close(socket);
+            throw e;
+        }
+    }
+
+    private static void close(java.net.Socket s) {
+        try {
+            s.close();
+        } catch (java.io.IOException ignored) {
+            // closing anyway
+        }
     }
 
     /** Sends replies to the server over RMI. */
@@ -230,7 +288,13 @@ public final class ServiceConnector implements AutoCloseable {
     public void close() {
         fatal.complete("closed");
         timer.shutdownNow();
-        RmiSupport.unexport(remote);
+        org.ripv.outbound.CallChannel c = channel;
+        if (c != null) {
+            c.close();
+        }
+        if (stub != null) {
+            RmiSupport.unexport(remote);
+        }
         token = null;
     }
 

@@ -87,6 +87,7 @@ public final class RIPVServer implements AutoCloseable {
     private Registry registry;
     private int registryPort;
     private LandingPage landingPage;
+    private OutboundListener outbound;
     private volatile boolean running;
 
     /** An operator's hold on a MailBox ({@code ?lock}). */
@@ -176,8 +177,30 @@ public final class RIPVServer implements AutoCloseable {
                 config.tls() == null ? "" : " (TLS)", registryPort, config.dataDir().toAbsolutePath());
     }
 
+    /**
+     * Opens the port for services in outbound-only mode (NAT, firewalls) on the bind address;
+     * 0 picks a free port. Call after {@link #start}; {@link #stop} closes it.
+     *
+     * @return the port
+     */
+    public synchronized int openOutbound(int port) throws IOException {
+        if (!running) {
+            throw new IllegalStateException("start the server first");
+        }
+        if (outbound == null) {
+            InetAddress bind = config.bindAddress() == null ? null : InetAddress.getByName(config.bindAddress());
+            outbound = new OutboundListener(this, remote, bind, port);
+            log.info("services behind NAT may connect out to port {} (--outbound-only)", outbound.port());
+        }
+        return outbound.port();
+    }
+
     /** Closes every port, thread and export the server may have opened; safe on a half-started server. */
     private void release() {
+        if (outbound != null) {
+            outbound.close();
+            outbound = null;
+        }
         if (landingPage != null) {
             try {
                 landingPage.close();
