@@ -129,11 +129,28 @@ class MultiHostTest {
                 assertThat(p.isAlive()).as("no service was restarted").isTrue();
             }
             report.append(String.format("whole multi-host test: %d s%n", seconds(began)));
+        } catch (Throwable t) {
+            keepLogs();
+            throw t;
         } finally {
             Path out = Path.of("target", "multihost-report.txt");
             Files.createDirectories(out.getParent());
             Files.writeString(out, report.toString(), StandardCharsets.UTF_8);
             System.err.print("multi-host report:\n" + report);
+        }
+    }
+
+    /** On failure, the programs' logs go to target/multihost-logs (the temporary directory is removed). */
+    private void keepLogs() {
+        try {
+            Path to = Files.createDirectories(Path.of("target", "multihost-logs"));
+            try (var logs = Files.list(dir.resolve("logs"))) {
+                for (Path l : logs.toList()) {
+                    Files.copy(l, to.resolve(l.getFileName()), java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+                }
+            }
+        } catch (IOException e) {
+            System.err.println("could not keep the logs: " + e);
         }
     }
 

@@ -65,9 +65,10 @@ public final class NetProbe {
             }
             System.out.println("SENT " + System.currentTimeMillis());
             System.out.flush();
+            List<CompletableFuture<Void>> printed = new ArrayList<>();
             for (int i = 0; i < fs.size(); i++) {
                 int k = i;
-                fs.get(i).whenComplete((m, e) -> {
+                printed.add(fs.get(i).handle((m, e) -> {
                     long ms = (System.nanoTime() - starts.get(k)) / 1_000_000;
                     synchronized (System.out) {
                         System.out.println(e != null ? "REPLY " + k + " " + ms + " FAILED - " + oneLine(e.toString())
@@ -75,9 +76,11 @@ public final class NetProbe {
                                         + oneLine(m.footer().replyText()));
                         System.out.flush();
                     }
-                });
+                    return null;
+                }));
             }
-            CompletableFuture.allOf(fs.toArray(CompletableFuture[]::new)).handle((v, e) -> null).get(300, TimeUnit.SECONDS);
+            // Wait for the printing, not only the replies: dependents of a future run in no fixed order.
+            CompletableFuture.allOf(printed.toArray(CompletableFuture[]::new)).get(300, TimeUnit.SECONDS);
         }
     }
 
