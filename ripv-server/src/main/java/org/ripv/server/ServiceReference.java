@@ -61,10 +61,6 @@ final class ServiceReference {
         void failed(ServiceReference ref, IncomingServiceMessage request, Exception cause);
     }
 
-    ServiceReference(ServiceDescriptor descriptor, GenericRMIInterface stub, String token, Failure onFailure) {
-        this(descriptor, stub, token, onFailure, 0);
-    }
-
     ServiceReference(ServiceDescriptor descriptor, GenericRMIInterface stub, String token, Failure onFailure, long order) {
         this.descriptor = descriptor;
         this.onFailure = onFailure;
