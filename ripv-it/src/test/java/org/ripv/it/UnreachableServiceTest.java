@@ -149,10 +149,16 @@ class UnreachableServiceTest {
                         .contains("could not call " + DARK + " back at 127.0.0.1:" + relay.port())
                         .contains("--host").contains("--export-port").contains("--outbound-only");
                 assertThat(sys.server().serviceCount()).as("never listed").isEqualTo(1);
+                ClientSocketHandler c = sys.login("alice");
+                assertThat(c.call("", "?services", Priority.NORMAL, Duration.ofSeconds(5), null).footer().replyText())
+                        .as("the operator sees why").contains(DARK + "  REFUSED at ")
+                        .contains("cannot call it back at 127.0.0.1:" + relay.port());
                 assertThat(dark.isRegistered()).isFalse();
                 relay.thaw();
                 assertThat(dark.awaitRegistered(Duration.ofSeconds(20))).as("keeps retrying").isTrue();
                 assertThat(sys.server().serviceCount()).isEqualTo(2);
+                assertThat(c.call("", "?services", Priority.NORMAL, Duration.ofSeconds(5), null).footer().replyText())
+                        .contains(DARK + "  SID").doesNotContain("REFUSED");
             } finally {
                 dark.close();
             }

@@ -38,7 +38,12 @@ final class ServiceAdmission {
             throw new IllegalArgumentException("a registration needs a descriptor and the service's stub");
         }
         ServiceName.parse(d.name());
-        callBack(d, service, server.checkers());
+        try {
+            callBack(d, service, server.checkers());
+        } catch (IllegalStateException e) {
+            server.liveness().refused(d.name(), "cannot call it back at " + ServiceReference.addressOf(service));
+            throw e;
+        }
         byte[] t = new byte[24];
         RANDOM.nextBytes(t);
         ServiceReference ref = new ServiceReference(d, service, HexFormat.of().formatHex(t), server::undeliverable,

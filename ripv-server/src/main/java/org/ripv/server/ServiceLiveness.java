@@ -27,8 +27,8 @@ final class ServiceLiveness {
     /** How long a check waits for a service; also the per-service deadline of {@code ?mailboxes}. */
     static final Duration QUERY_DEADLINE = Duration.ofMillis(Long.getLong("ripv.service.queryMillis", 2_000));
 
-    /** A service removed for failing its checks, and why. */
-    record Lost(String why, Instant when) {}
+    /** A service removed for failing its checks (or refused at registration: {@code refused}), and why. */
+    record Lost(String why, Instant when, boolean refused) {}
 
     private final Map<String, ServiceReference> services;
     private final ExecutorService checks;
@@ -75,6 +75,13 @@ final class ServiceLiveness {
         return lost;
     }
 
+    /** A registration refused because the server cannot call the service back: {@code ?services} says so. */
+    void refused(String name, String why) {
+        if (!services.containsKey(name)) {
+            lost.put(name, new Lost(why, Instant.now(), true));
+        }
+    }
+
     /** A service registered (again): forget that it was lost. */
     void registered(String name) {
         lost.remove(name);
@@ -110,7 +117,7 @@ final class ServiceLiveness {
         String why = ref.problem();
         if (failures >= FAILED_CHECKS_TO_REMOVE && services.remove(ref.descriptor().name(), ref)) {
             log.warn("{} is gone: {}; removed it from the service list", ref, why);
-            lost.put(ref.descriptor().name(), new Lost(why, Instant.now()));
+            lost.put(ref.descriptor().name(), new Lost(why, Instant.now(), false));
             drop.accept(ref, "went away (" + why + ")");
         } else if (failures < FAILED_CHECKS_TO_REMOVE && !timers.isShutdown()) {
             log.warn("{} is not answering: {}", ref, why);

@@ -110,8 +110,9 @@ final class ServiceQueries {
         }
         for (Map.Entry<String, ServiceLiveness.Lost> e : server.liveness().lost().entrySet()) {
             if (server.service(e.getKey()).isEmpty()) {
-                b.append('\n').append(e.getKey()).append("  LOST at ").append(e.getValue().when()).append(": ")
-                        .append(e.getValue().why()).append(" (removed until it registers again)");
+                ServiceLiveness.Lost l = e.getValue();
+                b.append('\n').append(e.getKey()).append(l.refused() ? "  REFUSED at " : "  LOST at ").append(l.when()).append(": ")
+                        .append(l.why()).append(l.refused() ? " (its registration; it keeps trying)" : " (removed until it registers again)");
             }
         }
         return request.reply(Footer.ok(Ids.FID_SERVICES, b.toString(), new ServiceList(list)).via(RIPVServer.SERVER_SERVICE));
