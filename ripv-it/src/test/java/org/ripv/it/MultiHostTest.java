@@ -354,7 +354,8 @@ class MultiHostTest {
         assertThat(text).contains("could not call " + NAT_CLOCK + " back at " + NAT + ":").contains("--host")
                 .contains("--export-port").contains("--outbound-only");
         Map<Integer, Reply> listed = requests(net, logs, "nat-services", "|?services");
-        assertThat(listed.get(0).text).doesNotContain(NAT_CLOCK);
+        assertThat(listed.get(0).text).doesNotContain(NAT_CLOCK + "  SID").contains(NAT_CLOCK + "  REFUSED at ")
+                .contains("cannot call it back at " + NAT + ":");
         p.destroy();
         p.waitFor(20, TimeUnit.SECONDS);
         report.append(String.format("service behind NAT: refused %.1f s after its start (JVM start included): %s%n", refusedAfter,
