@@ -53,6 +53,11 @@ final class ServiceReference {
     /** The MailBox query under way, which every asker shares (one call per service at a time). */
     private final AtomicReference<CompletableFuture<List<MailboxStatus>>> query = new AtomicReference<>();
     private volatile String problem = "";
+    /** When the sender's call under way began (0: none): a call stuck for long marks a path that is gone. */
+    private volatile long callingSince;
+    /** A call stuck this long (past any connect deadline) means the requests behind it should not wait. */
+    private static final long STUCK_NANOS = java.util.concurrent.TimeUnit.MILLISECONDS.toNanos(
+            Long.getLong("ripv.service.stuckMillis", 3_000));
     private volatile Instant problemSince;
     private volatile boolean closed;
 
@@ -105,10 +110,17 @@ final class ServiceReference {
         return stub;
     }
 
-    /** Queues a request for the sender thread. */
+    /**
+     * Queues a request for the sender thread — unless the service is known not to answer and the
+     * call under way to it is stuck: then it fails at once rather than wait behind that call.
+     */
     void forward(IncomingServiceMessage request) {
         if (closed) {
             onFailure.failed(this, request, new RemoteException(descriptor.name() + " is no longer registered"));
+            return;
+        }
+        if (stuck()) {
+            onFailure.failed(this, request, new java.rmi.ConnectException(problem));
             return;
         }
         undelivered.add(PendingRequests.key(request.header()));
@@ -129,15 +141,18 @@ final class ServiceReference {
                 break;
             }
             queue.drainTo(batch, MAX_BATCH - 1);
+            callingSince = System.nanoTime() | 1;
             try {
                 if (batch.size() == 1) {
                     stub.serviceRequest(token, batch.get(0));
                 } else {
                     stub.serviceRequests(token, List.copyOf(batch));
                 }
+                callingSince = 0;
                 batch.forEach(r -> undelivered.remove(PendingRequests.key(r.header())));
                 healthy();
             } catch (RemoteException | RuntimeException e) {
+                callingSince = 0;
                 batch.forEach(r -> undelivered.remove(PendingRequests.key(r.header())));
                 trouble(e);
                 batch.forEach(r -> onFailure.failed(this, r, e));
@@ -231,6 +246,22 @@ final class ServiceReference {
             problemSince = Instant.now();
         }
         problem = why;
+        if (stuck()) {
+            // The requests queued behind a call that hangs on a service that does not answer:
+            // tell their clients now, truthfully (they never left), instead of after that call.
+            List<IncomingServiceMessage> waiting = new ArrayList<>();
+            queue.drainTo(waiting);
+            for (IncomingServiceMessage r : waiting) {
+                undelivered.remove(PendingRequests.key(r.header()));
+                onFailure.failed(this, r, new java.rmi.ConnectException(why));
+            }
+        }
+    }
+
+    /** Known not to answer, with a call to it under way for longer than any connect may take. */
+    private boolean stuck() {
+        long since = callingSince;
+        return !problem.isEmpty() && since != 0 && System.nanoTime() - since > STUCK_NANOS;
     }
 
     /** Empty when the last call went through; else what went wrong. */
