@@ -51,11 +51,29 @@ public final class RmiSupport {
     }
 
     /**
-     * Exports an object on the given port (0: any) with the RIPV allowlist on its arguments, and
-     * with {@link DeadlineSocketFactory} so that every caller connects and reads with deadlines.
+     * The system property naming the address a service's RMI object listens on (the launchers'
+     * {@code --bind}, which defaults to the address that reaches the server: loopback for a local
+     * one). Unset, empty or {@code *}: every interface.
+     */
+    public static final String BIND_PROPERTY = "ripv.bind";
+
+    /**
+     * Exports an object on the given port (0: any) with the RIPV allowlist on its arguments,
+     * listening on the {@link #BIND_PROPERTY} address when one is set, and with
+     * {@link DeadlineSocketFactory} so that every caller connects and reads with deadlines.
      */
     public static GenericRMIInterface export(GenericRMIInterface object, int port) throws RemoteException {
-        return export(object, port, null);
+        String bind = System.getProperty(BIND_PROPERTY, "").trim();
+        if (bind.isEmpty() || bind.equals("*")) {
+            return export(object, port, null);
+        }
+        java.net.InetAddress address;
+        try {
+            address = java.net.InetAddress.getByName(bind);
+        } catch (java.net.UnknownHostException e) {
+            throw new java.rmi.server.ExportException("cannot listen on '" + bind + "' (" + BIND_PROPERTY + "): unknown address", e);
+        }
+        return export(object, port, new BoundSockets(address));
     }
 
     /** As {@link #export(GenericRMIInterface, int)}, listening through {@code sockets} (null: RMI's default). */
@@ -71,6 +89,17 @@ public final class RmiSupport {
      */
     public static java.rmi.registry.Registry registry(String host, int port) throws RemoteException {
         return java.rmi.registry.LocateRegistry.getRegistry(host, port, DeadlineSocketFactory.fromSystem());
+    }
+
+    /** Server sockets on one address; equal factories share a port. */
+    private record BoundSockets(java.net.InetAddress address) implements java.rmi.server.RMIServerSocketFactory {
+        @Override
+        public java.net.ServerSocket createServerSocket(int port) throws java.io.IOException {
+            java.net.ServerSocket s = new java.net.ServerSocket();
+            s.setReuseAddress(true);
+            s.bind(new java.net.InetSocketAddress(address, port), 128);
+            return s;
+        }
     }
 
     public static void unexport(GenericRMIInterface object) {
