@@ -68,7 +68,7 @@ class MultiHostTest {
             String registry = SRV + ":1099";
 
             Path glider = dir.resolve("glider");
-            net.java("veh", logs.resolve("simulator.log"), "org.ripv.services.ServicesMain", "simulator", "--listen", "2323",
+            net.java("veh", logs.resolve("simulator.log"), "org.ripv.services.ServicesMain", "simulator", "--listen", "2323", "--bind", VEH,
                     "--dir", glider.toString(), "--submerge-seconds", "2");
             List<Process> services = new ArrayList<>();
             services.add(net.java("svc", logs.resolve("serial.log"), "org.ripv.services.ServicesMain", "serial", "--server", registry,

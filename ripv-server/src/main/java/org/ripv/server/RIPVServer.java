@@ -82,6 +82,7 @@ public final class RIPVServer implements AutoCloseable {
     private FrameCodec codec;
     private MailBox<IncomingServerMessage, OutgoingServerMessage> box;
     private PendingRequests pending;
+    private volatile RequestEndings endings;
     private ServerSocket listener;
     private Thread acceptor;
     private Registry registry;
@@ -132,6 +133,7 @@ public final class RIPVServer implements AutoCloseable {
         secret = ServiceSecret.loadOrCreate(config.dataDir().resolve("service.secret"));
         codec = new FrameCodec(config.maxFrame());
         pending = new PendingRequests(timers, config.requestTimeout(), this::timedOut);
+        endings = new RequestEndings(this, pending, withdrawals, config.requestTimeout());
         box = postOffice.open(POST_OFFICE, new ServerTaskManager(this));
 
         InetAddress bind = config.bindAddress() == null ? null : InetAddress.getByName(config.bindAddress());
@@ -433,67 +435,12 @@ public final class RIPVServer implements AutoCloseable {
 
     /** A request that could not be handed to its service: fail it, and check whether the service lives. */
     void undeliverable(ServiceReference ref, IncomingServiceMessage r, Exception e) {
-        String why = ServiceReference.why(e, ref.address());
-        log.warn("could not reach {} at {}: {}", ref, ref.address(), why);
-        if (pending.complete(r.header(), ref.descriptor().name()) != null) {
-            reply(new IncomingServerMessage(r.header()).reply(Footer.error(ref.descriptor().sid(), ErrorCode.SERVICE_GONE,
-                    "could not reach " + ref.descriptor().name() + " at " + ref.address() + ": " + why + "; '"
-                            + Header.abbreviate(r.header().body()) + (neverConnected(e) ? "' was not delivered and will not run"
-                            : "' was probably not delivered") + " (the server gives up on a call after its RMI deadlines)")
-                    .via(SERVER_SERVICE)));
-        }
+        endings.undeliverable(ref, r, e);
         serviceLiveness.soon(ref);
     }
 
-    /** True when a call failed before any byte of it could leave (no connection): it surely did not arrive. */
-    private static boolean neverConnected(Throwable e) {
-        for (Throwable t = e; t != null; t = t.getCause() == t ? null : t.getCause()) {
-            if (t instanceof java.rmi.ConnectException || t instanceof java.net.ConnectException
-                    || t instanceof java.net.SocketTimeoutException && String.valueOf(t.getMessage()).startsWith("could not reach")
-                    || t instanceof java.rmi.NoSuchObjectException || t instanceof java.net.NoRouteToHostException) {
-                return true;
-            }
-        }
-        return e.getMessage() != null && e.getMessage().contains("no longer registered");
-    }
-
-    /**
-     * A request heard nothing for the timeout. Never delivered: say so (SERVICE_GONE), at once.
-     * Delivered: try to withdraw it, on a thread of its own with the RMI deadlines, so that no
-     * other request waits on this call; skip that when the service is known not to answer.
-     */
     private void timedOut(PendingRequests.Pending p) {
-        ServiceReference ref = services.get(p.service());
-        String what = "'" + Header.abbreviate(p.header().body()) + "'";
-        if (ref != null && (ref.unqueue(p.header()) || ref.undelivered(p.header()))) {
-            reply(new IncomingServerMessage(p.header()).reply(Footer.error(ref.descriptor().sid(), ErrorCode.SERVICE_GONE,
-                    "could not reach " + p.service() + " at " + ref.address() + ": timed out; " + what
-                            + " was not delivered and will not run").via(SERVER_SERVICE)));
-            return;
-        }
-        String sid = ref == null ? Ids.FID_NONE : ref.descriptor().sid();
-        Runnable answer = () -> {
-            boolean withdrawn = false;
-            try {
-                withdrawn = ref != null && ref.problem().isEmpty() && ref.withdraw(p.header());
-            } catch (RemoteException | RuntimeException e) {
-                log.debug("could not withdraw #{}: {}", p.header().messageId(), e.toString());
-            }
-            String text = withdrawn
-                    ? p.service() + " did not start " + what + " within " + config.requestTimeout().toSeconds()
-                            + " s (its MailBox was busy); it was withdrawn and will not run"
-                    : p.service() + " did not answer " + what + " within " + config.requestTimeout().toSeconds()
-                            + " s; it was delivered and may still complete on the device";
-            reply(new IncomingServerMessage(p.header()).reply(Footer.error(sid, ErrorCode.TIMEOUT, text).via(SERVER_SERVICE)));
-        };
-        try {
-            withdrawals.execute(answer);
-        } catch (java.util.concurrent.RejectedExecutionException e) {
-            // Many withdrawals under way already (or stopping): answer without one.
-            reply(new IncomingServerMessage(p.header()).reply(Footer.error(sid, ErrorCode.TIMEOUT, p.service()
-                    + " did not answer " + what + " within " + config.requestTimeout().toSeconds()
-                    + " s; it was delivered and may still complete on the device").via(SERVER_SERVICE)));
-        }
+        endings.timedOut(p, services.get(p.service()));
     }
 
     private void checkServices() {
@@ -502,17 +449,7 @@ public final class RIPVServer implements AutoCloseable {
     }
 
     void drop(ServiceReference ref, String why) {
-        List<PendingRequests.Pending> failed = pending.failService(ref.descriptor().name());
-        ref.close();
-        for (PendingRequests.Pending p : failed) {
-            String what = "'" + Header.abbreviate(p.header().body()) + "'";
-            String text = ref.undelivered(p.header()) && !ref.problem().isEmpty()
-                    ? "could not reach " + ref.descriptor().name() + " at " + ref.address() + ": " + ref.problem()
-                            .replace("could not reach " + ref.address() + ": ", "") + "; " + what + " was not delivered"
-                    : ref.descriptor().name() + " " + why + " before answering " + what;
-            reply(new IncomingServerMessage(p.header()).reply(Footer.error(ref.descriptor().sid(), ErrorCode.SERVICE_GONE, text)
-                    .via(SERVER_SERVICE)));
-        }
+        endings.drop(ref, why);
     }
 
     /**
