@@ -121,8 +121,9 @@ public final class ServiceConnector implements AutoCloseable {
                 lost();
             } else if (!warnedAway) {
                 warnedAway = true;
-                log.warn("{}: no RIPVServer at {}:{} yet ({}); retrying every {} s", service.name(), options.serverHost(),
-                        options.registryPort(), e.getMessage(), options.heartbeat().toSeconds());
+                log.warn("{}: no RIPVServer at {}:{} yet ({}); retrying every {} ms", service.name(), options.serverHost(),
+                        options.outbound() ? options.outboundPort() : options.registryPort(), e.getMessage(),
+                        options.heartbeat().toMillis());
             }
         } catch (IllegalStateException e) {
             // Refused but fixable (the server cannot call back, or a newer attempt won): say so, keep trying.
