@@ -6,7 +6,6 @@ import org.ripv.messages.IncomingServiceMessage;
 import org.ripv.messages.MailboxStatus;
 import org.ripv.messages.OutgoingServiceMessage;
 import org.ripv.messages.ServiceDescriptor;
-import org.ripv.naming.ServiceName;
 import org.ripv.rmi.GenericRMIInterface;
 import org.ripv.server.security.ServiceChallenges;
 import org.slf4j.Logger;
@@ -35,16 +34,7 @@ final class ServerRemote implements GenericRMIInterface {
     @Override
     public String register(ServiceDescriptor d, GenericRMIInterface service, String proof) {
         ServiceChallenges.Accepted accepted = server.security().challenges().verify(proof, d == null ? null : d.name(), service);
-        if (d == null || service == null) {
-            throw new IllegalArgumentException("a registration needs a descriptor and the service's stub");
-        }
-        ServiceName.parse(d.name());
-        ServiceReference ref = new ServiceReference(d, service, accepted.token(), server::undeliverable);
-        ServiceReference old = server.serviceMap().put(d.name(), ref);
-        if (old != null) {
-            server.drop(old, "registered again");
-        }
-        log.info("{} registered ({})", ref, d.description());
+        ServiceAdmission.admit(server, d, service, accepted.token());
         return accepted.confirmation();
     }
 

@@ -46,9 +46,10 @@ public final class RegistryGuard {
     }
 
     /** Creates the registry (remote binds refused). */
-    public static Registry create(int port, RMIServerSocketFactory sockets) throws RemoteException {
+    public static Registry create(int port, java.rmi.server.RMIClientSocketFactory callSockets, RMIServerSocketFactory sockets)
+            throws RemoteException {
         install();
-        return LocateRegistry.createRegistry(port, null, sockets);
+        return LocateRegistry.createRegistry(port, callSockets, sockets);
     }
 
     /** Binds the server's stub (in-process) and returns a guard that keeps it bound. */
