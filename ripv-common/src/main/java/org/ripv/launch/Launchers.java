@@ -1,8 +1,13 @@
 package org.ripv.launch;
 
 import picocli.CommandLine;
+import picocli.CommandLine.Model.CommandSpec;
 
-/** What every RIPV launcher shares: picocli set up to report a failure as one {@code Error:} line. */
+/**
+ * What every RIPV launcher shares: picocli set up to report a failure as one {@code Error:} line,
+ * to print the version and git commit for {@code --version}, and to name the program in usage
+ * lines as users type it ({@code ripv cli}, not {@code ripv-client cli}).
+ */
 public final class Launchers {
     private Launchers() {}
 
@@ -13,6 +18,23 @@ public final class Launchers {
             line.getErr().println("Error: " + (e.getMessage() == null ? e.toString() : e.getMessage()));
             return 1;
         });
+        versions(cl);
         return cl;
+    }
+
+    /**
+     * As {@link #commandLine(Object)}, the command named {@code name} in usage lines, e.g.
+     * {@code "ripv service serial"} (subcommands then read {@code ripv service serial SUB}).
+     */
+    public static CommandLine commandLine(Object command, String name) {
+        CommandLine cl = commandLine(command);
+        cl.setCommandName(name);
+        return cl;
+    }
+
+    private static void versions(CommandLine cl) {
+        CommandSpec spec = cl.getCommandSpec();
+        spec.versionProvider(new Version.Provider());
+        cl.getSubcommands().values().forEach(Launchers::versions);
     }
 }

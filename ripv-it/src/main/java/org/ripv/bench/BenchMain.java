@@ -14,7 +14,7 @@ public final class BenchMain {
     private BenchMain() {}
 
     static final String USAGE = String.join("\n",
-            "Usage: ./ripv bench NAME [OPTIONS]",
+            "Usage: ripv bench NAME [OPTIONS]   (NAME --help for its options)",
             "  broker     the client → server → service → client round trip against a bare socket and RMI call;",
             "             throughput with 1, 8 and 32 clients   [--seconds S] [--warmup S] [--clients 1,8,32]",
             "  database   a 100,000-row query end to end against direct JDBC   [--rows N] [--runs N] [--warmup N]",
@@ -28,9 +28,17 @@ public final class BenchMain {
             System.out.println(USAGE);
             System.exit(args.length == 0 ? 2 : 0);
         }
+        if (args[0].equals("--version") || args[0].equals("-V")) {
+            System.out.println(org.ripv.launch.Version.line());
+            System.exit(0);
+        }
         String[] rest = Arrays.copyOfRange(args, 1, args.length);
+        if (!args[0].equals("broker") && (Arrays.asList(rest).contains("--help") || Arrays.asList(rest).contains("-h"))) {
+            System.out.println(USAGE); // the benchmarks without a picocli command of their own
+            System.exit(0);
+        }
         switch (args[0]) {
-            case "broker" -> System.exit(Launchers.commandLine(new BrokerBench()).execute(rest));
+            case "broker" -> System.exit(Launchers.commandLine(new BrokerBench(), "ripv bench broker").execute(rest));
             case "database" -> DatabaseBench.main(rest);
             case "ymodem" -> YmodemBenchmark.main(rest);
             case "datavis" -> DataVisBenchmark.main(rest);
