@@ -222,6 +222,31 @@ public final class ClientSocketHandler implements AutoCloseable {
      */
     public OutgoingServerMessage upload(Path local, String remoteName, TransferListener listener)
             throws IOException, RipvErrorException {
+        return upload(local, remoteName, IfExists.ASK, listener);
+    }
+
+    /** What an upload does when the store has a file of that name ({@code ErrorCode.FILE_EXISTS} otherwise). */
+    public enum IfExists {
+        /** Send no choice: the server refuses with FILE_EXISTS, and the user is asked. */
+        ASK(""),
+        /** Replace the stored file (the server checks the right to). */
+        REPLACE(" replace"),
+        /** Keep both: the server stores this one under a new free name and says which. */
+        KEEP(" keep");
+
+        final String word;
+
+        IfExists(String word) {
+            this.word = word;
+        }
+    }
+
+    /**
+     * As {@link #upload(Path, String, TransferListener)}, saying what to do when the name is
+     * taken ({@code ?upload NAME OFFSET TOTAL [replace|keep]}).
+     */
+    public OutgoingServerMessage upload(Path local, String remoteName, IfExists ifExists, TransferListener listener)
+            throws IOException, RipvErrorException {
         long total = Files.size(local);
         listener = listener == null ? TransferListener.NONE : listener;
         try (InputStream file = Files.newInputStream(local)) {
@@ -230,7 +255,7 @@ public final class ClientSocketHandler implements AutoCloseable {
             do {
                 byte[] chunk = file.readNBytes((int) Math.min(CHUNK, total - offset));
                 Header h = new Header(nextId(), new org.ripv.messages.IdBadge("000000", ""), List.of(), "", "",
-                        "?upload " + remoteName + " " + offset + " " + total, Priority.NORMAL,
+                        "?upload " + remoteName + " " + offset + " " + total + ifExists.word, Priority.NORMAL,
                         new Attachment(remoteName, chunk));
                 last = await(send(h, null), Duration.ofMinutes(2));
                 if (last.status() == Status.ERROR) {
@@ -252,9 +277,10 @@ public final class ClientSocketHandler implements AutoCloseable {
      */
     public Path download(String name, Path localDir, TransferListener listener) throws IOException, RipvErrorException {
         listener = listener == null ? TransferListener.NONE : listener;
+        localDir = localDir.toAbsolutePath().normalize(); // a bare "." has no parent to compare with
         Files.createDirectories(localDir);
         Path target = localDir.resolve(name).normalize();
-        if (!target.getParent().equals(localDir.normalize())) {
+        if (!localDir.equals(target.getParent())) {
             throw new IOException("refusing to write '" + name + "' outside " + localDir);
         }
         Path tmp = Files.createTempFile(localDir, ".ripv-", ".part");
