@@ -29,6 +29,7 @@ for a in "$@"; do
     *) echo "ripv demo: unknown option '$a'" >&2; demo_usage >&2; exit 2 ;;
   esac
 done
+[ "${RIPV_PARSE_ONLY:-}" = 1 ] && exit 0   # a dry run: the command line is fine
 JAVA="${JAVA:-java}"
 DEMO="${RIPV_DEMO_DIR:-$ROOT/.ripv-demo}"
 PORT="${RIPV_PORT:-4444}"

@@ -9,6 +9,9 @@ import picocli.CommandLine.Model.CommandSpec;
  * lines as users type it ({@code ripv cli}, not {@code ripv-client cli}).
  */
 public final class Launchers {
+    /** With this environment variable set to 1, a command line is checked and nothing is run. */
+    public static final String PARSE_ONLY = "RIPV_PARSE_ONLY";
+
     private Launchers() {}
 
     /** A command line whose failures print {@code Error: MESSAGE} and exit 1, never a stack trace. */
@@ -19,6 +22,13 @@ public final class Launchers {
             return 1;
         });
         versions(cl);
+        if ("1".equals(System.getenv(PARSE_ONLY))) {
+            // A dry run: bad options still fail (exit 2), help and version still print, nothing starts.
+            cl.setExecutionStrategy(parsed -> {
+                Integer help = CommandLine.executeHelpRequest(parsed);
+                return help != null ? help : 0;
+            });
+        }
         return cl;
     }
 

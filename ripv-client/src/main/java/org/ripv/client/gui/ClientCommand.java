@@ -84,6 +84,7 @@ public final class ClientCommand implements Callable<Integer> {
                 return 1;
             }
         } else if (password != null) {
+            err.println("Warning: --password shows the password to every user of this machine (ps); use --password-file");
             pw = password.toCharArray();
         }
         if (GraphicsEnvironment.isHeadless()) {
