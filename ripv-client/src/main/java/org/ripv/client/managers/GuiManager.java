@@ -151,6 +151,11 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
      */
     void periodicRefresh() {
         refreshServices();
+        refreshFileLists();
+    }
+
+    /** {@code ?ulfiles ?dlfiles}: the FIM trees' files (the window asks when it gets the focus back). */
+    public void refreshFileLists() {
         requests.background("?ulfiles");
         requests.background("?dlfiles");
     }

@@ -169,8 +169,12 @@ public final class ComPanel extends JPanel {
             priorityLabel.setText(m.priority().name().toLowerCase(java.util.Locale.ROOT) + " (" + m.priority().level() + ")");
             priority.setSelectedItem(m.priority());
             serviceStatus.setText(m.serviceStatus().isEmpty() ? " " : m.serviceStatus());
-            serviceStatus.setForeground(m.serviceStatus().startsWith("not") ? new java.awt.Color(0xB00020)
+            serviceStatus.setForeground(m.serviceStatus().startsWith("not") ? Colors.error()
                     : javax.swing.UIManager.getColor("Label.foreground"));
+            // A value too long for the panel shows whole in its tooltip.
+            tip(talkingTo, "Talking To", m.target());
+            tip(lastAction, "Last Action", m.lastAction());
+            tip(serviceStatus, "Service Status", m.serviceStatus());
             if (m.transcriptRevision() != shownRevision) {
                 replies.setText(m.transcriptText());
                 replies.setCaretPosition(replies.getDocument().getLength());
@@ -194,6 +198,10 @@ public final class ComPanel extends JPanel {
         }
     }
 
+    private static void tip(JLabel label, String what, String value) {
+        label.setToolTipText(value.isBlank() ? what : what + ": " + value);
+    }
+
     /** "ymodem:get LOG  12 KB / 64 KB  1 KB/s  0:52 left": the COM progress bar's words. */
     static String progressText(Progress p) {
         StringBuilder b = new StringBuilder(p.what()).append("  ").append(org.ripv.client.managers.Transfer.size(p.done()));
@@ -213,6 +221,16 @@ public final class ComPanel extends JPanel {
     /** Puts the keyboard focus in the command line (when its tab is shown). */
     public void focusCommand() {
         javax.swing.SwingUtilities.invokeLater(command::requestFocusInWindow);
+    }
+
+    /** What the command line holds. */
+    public String commandText() {
+        return command.getText();
+    }
+
+    /** Empties the command line. */
+    public void clearCommand() {
+        command.setText("");
     }
 
     /** The reply area's text (for tests and copy). */

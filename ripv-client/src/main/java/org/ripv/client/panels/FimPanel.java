@@ -70,7 +70,8 @@ public final class FimPanel extends JPanel {
         clear.setMnemonic(java.awt.event.KeyEvent.VK_O);
         clear.setToolTipText("Remove finished transfers from the list");
         clear.addActionListener(e -> manager.clearFinishedTransfers());
-        JPanel buttons = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 0));
+        // Two rows of buttons: one row is clipped in a quadrant of a 1280-pixel window.
+        JPanel buttons = new JPanel(new java.awt.GridLayout(0, 3, 4, 2));
         buttons.add(ul);
         buttons.add(dl);
         buttons.add(delete);
