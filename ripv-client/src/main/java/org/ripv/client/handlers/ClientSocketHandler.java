@@ -247,6 +247,17 @@ public final class ClientSocketHandler implements AutoCloseable {
      */
     public OutgoingServerMessage upload(Path local, String remoteName, IfExists ifExists, TransferListener listener)
             throws IOException, RipvErrorException {
+        return upload(local, remoteName, ifExists.word.strip(), listener);
+    }
+
+    /**
+     * Uploads as {@link #upload(Path, String, TransferListener)} does, saying what to do when the
+     * name is taken: null or empty refuses (FILE_EXISTS), {@code replace} replaces (a permit right),
+     * {@code keep} stores under a new free name, which the last reply names.
+     */
+    public OutgoingServerMessage upload(Path local, String remoteName, String mode, TransferListener listener)
+            throws IOException, RipvErrorException {
+        String suffix = mode == null || mode.isBlank() ? "" : " " + mode;
         long total = Files.size(local);
         listener = listener == null ? TransferListener.NONE : listener;
         try (InputStream file = Files.newInputStream(local)) {
@@ -255,7 +266,7 @@ public final class ClientSocketHandler implements AutoCloseable {
             do {
                 byte[] chunk = file.readNBytes((int) Math.min(CHUNK, total - offset));
                 Header h = new Header(nextId(), new org.ripv.messages.IdBadge("000000", ""), List.of(), "", "",
-                        "?upload " + remoteName + " " + offset + " " + total + ifExists.word, Priority.NORMAL,
+                        "?upload " + remoteName + " " + offset + " " + total + suffix, Priority.NORMAL,
                         new Attachment(remoteName, chunk));
                 last = await(send(h, null), Duration.ofMinutes(2));
                 if (last.status() == Status.ERROR) {
@@ -279,7 +290,13 @@ public final class ClientSocketHandler implements AutoCloseable {
         listener = listener == null ? TransferListener.NONE : listener;
         localDir = localDir.toAbsolutePath().normalize(); // a bare "." has no parent to compare with
         Files.createDirectories(localDir);
-        Path target = localDir.resolve(name).normalize();
+        // a download is listed as FOLDER/NAME (the MailBox it came from): saved locally as NAME
+        int slash = name.lastIndexOf('/');
+        String folder = slash < 0 ? "x" : name.substring(0, slash);
+        if (folder.isEmpty() || folder.contains("/") || folder.equals("..") || folder.equals(".")) {
+            throw new IOException("refusing to write '" + name + "' outside " + localDir);
+        }
+        Path target = localDir.resolve(name.substring(slash + 1)).normalize();
         if (!localDir.equals(target.getParent())) {
             throw new IOException("refusing to write '" + name + "' outside " + localDir);
         }
