@@ -74,7 +74,8 @@ class InteractiveCliTmuxTest {
             t.keys("Tab");
             t.await("?mailboxes completed", Duration.ofSeconds(10), s -> Tmux.lastLine(s).contains("alice@localhost> ?mailboxes"));
             t.keys("Enter");
-            t.awaitText("TTY1");
+            t.await("the MailBoxes, then the prompt again", Duration.ofSeconds(20),
+                    s -> s.contains("TTY1: available") && Tmux.lastLine(s).equals("alice@localhost>"));
             // ... and a MailBox name after use.
             t.type("use <Cl");
             t.keys("Tab");
@@ -84,7 +85,8 @@ class InteractiveCliTmuxTest {
             t.await("the prompt with the MailBox", Duration.ofSeconds(10), s -> Tmux.lastLine(s).equals("alice@localhost TTY1>"));
             t.type("echo hello from tmux");
             t.keys("Enter");
-            t.awaitText("hello from tmux\n");
+            t.await("the reply, then the prompt again", Duration.ofSeconds(20),
+                    s -> s.contains("\nhello from tmux\n") && Tmux.lastLine(s).equals("alice@localhost TTY1>"));
             // Up recalls the last command.
             t.keys("Up");
             t.await("Up recalled the last command", Duration.ofSeconds(10),
@@ -100,11 +102,13 @@ class InteractiveCliTmuxTest {
             assertThat(Duration.ofNanos(System.nanoTime() - before)).isLessThan(Duration.ofSeconds(10));
             t.type("echo still here");
             t.keys("Enter");
-            t.awaitText("still here\n");
+            t.await("the reply, then the prompt again", Duration.ofSeconds(20),
+                    s -> s.contains("\nstill here\n") && Tmux.lastLine(s).equals("alice@localhost TTY1>"));
             // help shows the CLI's and the service's help, each labelled.
             t.type("help");
             t.keys("Enter");
-            t.awaitText("Service help (" + BOX + ")");
+            t.await("both helps, then the prompt again", Duration.ofSeconds(20),
+                    s -> s.contains("Service help (" + BOX + ")") && Tmux.lastLine(s).equals("alice@localhost TTY1>"));
             assertThat(t.screen()).contains("CLI help");
             // Ctrl-D ends with status 0.
             t.keys("C-d");
