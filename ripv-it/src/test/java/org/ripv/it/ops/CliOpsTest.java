@@ -132,6 +132,31 @@ class CliOpsTest {
     }
 
     @Test
+    void putNeverReplacesSilentlyAndTakesReplaceOrKeep() throws Exception {
+        Path local = Files.writeString(dir.resolve("mission.ma"), "behavior: dive\n");
+        assertThat(cli("--password", TestSystem.PASSWORD, "--exec", "put " + local)).as(err()).isZero();
+        Files.writeString(local, "behavior: surface\n");
+        streams();
+        assertThat(cli("--password", TestSystem.PASSWORD, "--exec", "put " + local)).isEqualTo(CliCommand.EXIT_ERROR_REPLY);
+        assertThat(err()).contains("FILE_EXISTS").contains("--replace to replace it, or --keep to keep both");
+        assertThat(Files.readString(sys.uploadDir().resolve("mission.ma"))).isEqualTo("behavior: dive\n");
+        streams();
+        assertThat(cli("--password", TestSystem.PASSWORD, "--exec", "put " + local + " --keep", "--exec", "?ulfiles"))
+                .as(err()).isZero();
+        assertThat(Files.readString(sys.uploadDir().resolve("mission.ma"))).as("the first one kept").isEqualTo("behavior: dive\n");
+        try (var files = Files.list(sys.uploadDir())) {
+            assertThat(files.map(f -> f.getFileName().toString()).filter(n -> n.startsWith("mission")).count()).isEqualTo(2);
+        }
+        streams();
+        int code = cli("--password", TestSystem.PASSWORD, "--exec", "put " + local + " --replace");
+        if (code == 0) {
+            assertThat(Files.readString(sys.uploadDir().resolve("mission.ma"))).isEqualTo("behavior: surface\n");
+        } else {
+            assertThat(err()).as("replacing is a right of its own").contains("may not replace");
+        }
+    }
+
+    @Test
     void putSaysHowToResolveANameClash() throws Exception {
         Path local = Files.writeString(dir.resolve("plan.ma"), "behavior: surface\n");
         int code = cli("--password", TestSystem.PASSWORD, "--exec", "put " + local + " --replace --keep");
