@@ -1,6 +1,7 @@
 package org.ripv.bench;
 
 import java.util.Arrays;
+import java.util.List;
 import org.ripv.services.bench.DataVisBenchmark;
 import org.ripv.services.bench.YmodemBenchmark;
 import org.ripv.launch.Launchers;
@@ -35,7 +36,7 @@ public final class BenchMain {
             System.exit(0);
         }
         String[] rest = Arrays.copyOfRange(args, 1, args.length);
-        if (!args[0].equals("broker") && (Arrays.asList(rest).contains("--help") || Arrays.asList(rest).contains("-h"))) {
+        if (!List.of("broker", "calls").contains(args[0]) && (Arrays.asList(rest).contains("--help") || Arrays.asList(rest).contains("-h"))) {
             System.out.println(USAGE); // the benchmarks without a picocli command of their own
             System.exit(0);
         }
@@ -44,7 +45,7 @@ public final class BenchMain {
             case "database" -> DatabaseBench.main(rest);
             case "ymodem" -> YmodemBenchmark.main(rest);
             case "datavis" -> DataVisBenchmark.main(rest);
-            case "calls" -> System.exit(Launchers.commandLine(new CallsBench()).execute(rest));
+            case "calls" -> System.exit(Launchers.commandLine(new CallsBench(), "ripv bench calls").execute(rest));
             default -> {
                 System.err.println("Error: unknown benchmark '" + args[0] + "'\n" + USAGE);
                 System.exit(2);
