@@ -179,7 +179,8 @@ class KeyboardScenarioGuiTest {
             type(robot, "dir");
             waitFor("the glider's dir", () -> serial.com().replyText().contains("MISSION1.LOG"));
             type(robot, "ymodem:get MISSION1.LOG");
-            waitFor("the offloaded log under DL", () -> serial.fim().tree().names(FileArea.DOWNLOAD).contains("MISSION1.LOG"));
+            waitFor("the offloaded log under DL", () -> serial.fim().tree().names(FileArea.DOWNLOAD).stream()
+                    .anyMatch(n -> n.endsWith("MISSION1.LOG"))); // HANDLE/NAME: each MailBox's folder
 
             tabTo(window, client, DATABASE);
             waitFor("the database as TT", () -> gm.model().service(DATABASE).target().startsWith(DATABASE));
@@ -191,7 +192,8 @@ class KeyboardScenarioGuiTest {
             waitFor("the plotter as TT", () -> gm.model().service(DATAVIS).target().startsWith(DATAVIS));
             type(robot, "vis:glider-temperature.dat");
             waitFor("the plot in DAV", () -> vis.dav().image() != null);
-            waitFor("the plot under DL", () -> vis.fim().tree().names(FileArea.DOWNLOAD).contains("glider-temperature.jpg"));
+            waitFor("the plot under DL", () -> vis.fim().tree().names(FileArea.DOWNLOAD).stream()
+                    .anyMatch(n -> n.endsWith("glider-temperature.jpg")));
             waitFor("the progress bar gone", () -> gm.model().service(DATAVIS).progress() == null);
 
             tabTo(window, client, SERIAL);
