@@ -31,6 +31,10 @@ public final class Ids {
     public static final String FID_DOWNLOAD = "444470";
     public static final String FID_LOCK = "555667";
     public static final String FID_UNLOCK = "555668";
+    // Workflows and cancel (docs/workflows.md): 555800-555899.
+    public static final String FID_QUEUE = "555800";
+    public static final String FID_RECEIPTS = "555801";
+    public static final String FID_CANCEL = "555802";
     /** Replies to a message the server could not attribute to any command or service. */
     public static final String FID_NONE = "000000";
 

@@ -1,0 +1,41 @@
+package org.ripv.server.workflow;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.stream.Stream;
+
+/** The receipts of every run, one owner-only text file each in {@code DATA/workflows/receipts/MAILBOX-KEY/}. */
+final class Receipts {
+    private final Path dir;
+
+    Receipts(Path dir) throws IOException {
+        this.dir = AtomicFiles.directory(dir);
+    }
+
+    void write(Receipt r) throws IOException {
+        Path d = AtomicFiles.directory(dir.resolve(AtomicFiles.key(r.mailbox)));
+        AtomicFiles.write(d.resolve(r.fileName()), r.render());
+    }
+
+    /** The last {@code n} receipts of a MailBox, oldest first. */
+    List<String> last(String mailbox, int n) throws IOException {
+        Path d = dir.resolve(AtomicFiles.key(mailbox));
+        if (!Files.isDirectory(d)) {
+            return List.of();
+        }
+        List<Path> files;
+        try (Stream<Path> s = Files.list(d)) {
+            files = s.filter(p -> p.getFileName().toString().endsWith(".txt") && !p.getFileName().toString().startsWith("."))
+                    .sorted().toList();
+        }
+        List<String> out = new ArrayList<>();
+        for (Path p : files.subList(Math.max(0, files.size() - n), files.size())) {
+            out.add(Files.readString(p, StandardCharsets.UTF_8));
+        }
+        return out;
+    }
+}
