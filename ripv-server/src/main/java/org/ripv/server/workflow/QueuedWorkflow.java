@@ -44,8 +44,9 @@ public record QueuedWorkflow(long id, String owner, String file, long added, Str
         return new QueuedWorkflow(id, owner, file, added, source, newState, newNext, runs, error, fetched, workflow);
     }
 
+    /** A run begins: counted; it shows as running once its first step is under way. */
     QueuedWorkflow started() {
-        return new QueuedWorkflow(id, owner, file, added, source, State.RUNNING, nextStep, runs + 1, lastError, fetched, workflow);
+        return new QueuedWorkflow(id, owner, file, added, source, state, nextStep, runs + 1, lastError, fetched, workflow);
     }
 
     QueuedWorkflow withFetched(List<String> files) {

@@ -17,7 +17,7 @@ final class Receipt {
     record FileRecord(String name, long size, String sha256) {}
 
     /** One step's record. */
-    record StepRecord(int index, int total, int line, String step, long started, long ended, boolean ok, String output,
+    record StepRecord(int index, int total, int line, String step, long started, long ended, String verdict, String output,
                       List<FileRecord> files, String error) {}
 
     final String mailbox;
@@ -60,7 +60,7 @@ final class Receipt {
                 .append(firstStep > 0 ? "  (resumed at step " + (firstStep + 1) + ")" : "").append('\n');
         for (StepRecord s : steps) {
             b.append(String.format("step %d/%d (line %d) %s: %s in %.1f s%n", s.index() + 1, s.total(), s.line(), s.step(),
-                    s.ok() ? "OK" : "FAILED", (s.ended() - s.started()) / 1000.0));
+                    s.verdict(), (s.ended() - s.started()) / 1000.0));
             for (FileRecord f : s.files()) {
                 b.append("  file ").append(f.name()).append(' ').append(f.size()).append(" bytes sha256 ").append(f.sha256())
                         .append('\n');

@@ -185,17 +185,28 @@ final class Runner implements Runnable {
                 if (boundary != null) {
                     return finish(receipt, e, i, boundary.equals("REMOVED") ? "REMOVED" : "CUT", boundary, fetchedNow);
                 }
-                workflows.queues.update(mailbox, e.id(), q -> q.with(QueuedWorkflow.State.RUNNING, q.nextStep(), ""));
-                int index = i;
-                workflows.queues.update(mailbox, e.id(), q -> q.with(q.state(), index, q.lastError()));
-                workflows.announce(mailbox, e.owner(), name + ": step " + (i + 1) + "/" + total + " " + step.describe());
-                long t0 = System.currentTimeMillis();
-                Outcome o = runStep(e, clientId, step, fetchedNow);
+                // A wait-for listens from before the step is shown as running, so no line slips past it.
+                Workflows.LineWaiter waiter = step.kind() == Step.Kind.WAIT_FOR
+                        ? workflows.waitFor(mailbox, Pattern.compile(step.text())) : null;
+                long t0;
+                Outcome o;
+                try {
+                    int index = i;
+                    workflows.queues.update(mailbox, e.id(), q -> q.with(QueuedWorkflow.State.RUNNING, index, ""));
+                    workflows.announce(mailbox, e.owner(), name + ": step " + (i + 1) + "/" + total + " " + step.describe());
+                    t0 = System.currentTimeMillis();
+                    o = runStep(e, clientId, step, fetchedNow, waiter);
+                } finally {
+                    if (waiter != null) {
+                        workflows.stopWaiting(waiter);
+                    }
+                }
                 if (o.preempted()) {
                     continue; // an operator took the lock just as the step went out: wait at this boundary again
                 }
                 receipt.steps.add(new Receipt.StepRecord(i, total, step.line(), step.describe(), t0, System.currentTimeMillis(),
-                        o.ok(), Receipt.cut(o.output()), o.files(), o.error()));
+                        o.ok() ? "OK" : o.cut() ? "CUT" : step.continueOnError() ? "FAILED (continue-on-error)" : "FAILED",
+                        Receipt.cut(o.output()), o.files(), o.error()));
                 List<String> keep = List.copyOf(fetchedNow);
                 workflows.queues.update(mailbox, e.id(), q -> q.withFetched(keep));
                 write(receipt);
@@ -295,7 +306,7 @@ final class Runner implements Runnable {
         }
     }
 
-    private Outcome runStep(QueuedWorkflow e, String clientId, Step step, List<String> fetchedNow) {
+    private Outcome runStep(QueuedWorkflow e, String clientId, Step step, List<String> fetchedNow, Workflows.LineWaiter waiter) {
         try {
             return switch (step.kind()) {
                 case SEND -> judged(step, request(e, clientId, mailbox, step.text(), step.timeout()), List.of());
@@ -306,7 +317,7 @@ final class Runner implements Runnable {
                     yield judged(step, request(e, clientId, mailbox, "ymodem:put " + step.names().get(0), step.timeout()), List.of());
                 }
                 case GET -> get(e, clientId, step, fetchedNow);
-                case WAIT_FOR -> waitFor(step);
+                case WAIT_FOR -> waitFor(step, waiter);
                 case INGEST -> {
                     if (fetchedNow.isEmpty()) {
                         yield Outcome.ok("nothing fetched in this run: nothing to ingest", List.of());
@@ -414,10 +425,12 @@ final class Runner implements Runnable {
         return Outcome.ok(text, files);
     }
 
-    private Outcome waitFor(Step step) throws Cut, StepFailed {
-        Workflows.LineWaiter w = workflows.waitFor(mailbox, Pattern.compile(step.text()));
+    private Outcome waitFor(Step step, Workflows.LineWaiter w) throws Cut, StepFailed {
         current = w.seen();
         try {
+            if (ended != null) {
+                throw new Cut("the call ended (" + ended + ")");
+            }
             return Outcome.ok(w.seen().get(step.timeout().toMillis(), TimeUnit.MILLISECONDS), List.of());
         } catch (TimeoutException t) {
             throw new StepFailed("the vehicle printed no line matching '" + step.text() + "' within "
@@ -431,7 +444,6 @@ final class Runner implements Runnable {
             Thread.currentThread().interrupt();
             throw new Cut("the server is stopping");
         } finally {
-            workflows.stopWaiting(w);
             current = null;
         }
     }

@@ -260,7 +260,6 @@ public final class Workflows implements AutoCloseable {
                     return error(request, ErrorCode.BAD_REQUEST, "no workflow " + id + " in the queue of " + mailbox
                             + "; ?queue " + mailbox + " lists them");
                 }
-                permitted(request);
                 mayChange(request, e.get());
                 queues.remove(mailbox, id);
                 return ok(request, Ids.FID_QUEUE, "removed workflow " + id + " '" + e.get().file() + "' from " + mailbox
@@ -270,7 +269,6 @@ public final class Workflows implements AutoCloseable {
             case "clear" -> {
                 usage(w.length == 3, "?queue clear MAILBOX");
                 String mailbox = address(w[2]);
-                permitted(request);
                 List<QueuedWorkflow> all = queues.list(mailbox);
                 for (QueuedWorkflow e : all) {
                     mayChange(request, e);
@@ -349,10 +347,14 @@ public final class Workflows implements AutoCloseable {
         return u;
     }
 
-    /** Only the owner changes their entry, unless the permit file allows {@code ?queue remove-any}. */
+    /**
+     * The owner removes their entry when the permit file allows them the command itself; anyone
+     * else's needs a rule allowing {@code ?queue remove-any}.
+     */
     private void mayChange(IncomingServerMessage request, QueuedWorkflow e) {
         String user = request.header().origin().user();
         if (e.owner().equals(user)) {
+            permitted(request);
             return;
         }
         PermitFile p = host.permits();

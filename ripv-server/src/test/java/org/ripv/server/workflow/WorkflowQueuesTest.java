@@ -52,7 +52,7 @@ class WorkflowQueuesTest {
     void aRunInterruptedByAStopResumesAsCut() throws Exception {
         WorkflowQueues q = new WorkflowQueues(dir);
         QueuedWorkflow a = q.add(MB, "alice", SOURCE, WorkflowParser.parse("f.wf", SOURCE, n -> true));
-        q.update(MB, a.id(), e -> e.started().with(QueuedWorkflow.State.RUNNING, 1, ""));
+        q.update(MB, a.id(), e -> e.started().with(QueuedWorkflow.State.PAUSED, 1, ""));
         QueuedWorkflow back = new WorkflowQueues(dir).list(MB).get(0);
         assertThat(back.state()).isEqualTo(QueuedWorkflow.State.CUT);
         assertThat(back.nextStep()).isEqualTo(1);
