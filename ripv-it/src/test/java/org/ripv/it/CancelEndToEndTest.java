@@ -42,8 +42,11 @@ class CancelEndToEndTest {
         sys.user("alice", "operators").user("bob", "operators").user("olga", "observers");
         DatabaseTarget db = EmbeddedDatabase.prepare(dir.resolve("database"), "TTY1");
         // a query timeout far beyond the test: only the cancel can end the cross-join in time
-        sys.register(new DatabaseServer("localhost", List.of(db), new QueryLimits(1000, 600, QueryLimits.DEFAULT_MAX_RESULT_CHARS)));
+        database = new DatabaseServer("localhost", List.of(db), new QueryLimits(1000, 600, QueryLimits.DEFAULT_MAX_RESULT_CHARS));
+        sys.register(database);
     }
+
+    static DatabaseServer database;
 
     @AfterAll
     static void stop() {
@@ -61,6 +64,31 @@ class CancelEndToEndTest {
             Thread.sleep(50);
         }
         throw new AssertionError(DB + " never became busy");
+    }
+
+    @Test
+    void aWorkflowStepThatRunsPastItsTimeoutFailsAndIsCancelled() throws Exception {
+        ClientSocketHandler alice = sys.login("alice");
+        Path wf = dir.resolve("slow.wf");
+        java.nio.file.Files.writeString(wf, "send \"" + SLOW + "\" timeout=2s\n");
+        alice.upload(wf, "slow.wf", null);
+        assertThat(alice.call("", "?queue add " + DB + " slow.wf", Priority.NORMAL, T, null).status()).isEqualTo(Status.OK);
+        long t0 = System.nanoTime();
+        org.ripv.service.ConsoleTap.publish(database, org.ripv.messages.ConsoleEntry.event(DB,
+                org.ripv.messages.VehicleEvent.SURFACED, "test", null, null));
+        String receipt = "";
+        long end = System.nanoTime() + T.toNanos();
+        while (System.nanoTime() < end && !receipt.contains("result: FAILED")) {
+            receipt = alice.call("", "?receipts " + DB, Priority.NORMAL, T, null).footer().replyText();
+            Thread.sleep(100);
+        }
+        assertThat(receipt).contains("result: FAILED").contains("within 2 s (timeout=); asked the service to cancel it");
+        // the cancel reached Derby: the MailBox is free again long before the 600 s query timeout
+        OutgoingServerMessage next = alice.call(DB, "SELECT COUNT(*) FROM mission", Priority.NORMAL, T, null);
+        assertThat(next.status()).as(next.footer().replyText()).isEqualTo(Status.OK);
+        assertThat(Duration.ofNanos(System.nanoTime() - t0)).isLessThan(Duration.ofSeconds(30));
+        assertThat(alice.call("", "?queue " + DB, Priority.NORMAL, T, null).footer().replyText()).contains("failed at step 1/1");
+        alice.call("", "?queue clear " + DB, Priority.NORMAL, T, null);
     }
 
     @Test
