@@ -327,4 +327,29 @@ class WorkflowEndToEndTest {
         String done = await(alice, "?receipts " + mb, WorkflowEndToEndTest::ended);
         assertThat(done).contains("result: DONE").contains("step 3/3");
     }
+
+    @Test
+    void cancelInTheMiddleOfAGetStopsItAndTheLineIsBackAtThePrompt() throws Exception {
+        start();
+        byte[] big = new byte[16 * 1024 * 1024];
+        new Random(4).nextBytes(big);
+        Files.write(glider.directory().resolve("HUGE.LOG"), big);
+        ClientSocketHandler alice = sys.login("alice");
+        long id = alice.nextId();
+        java.util.concurrent.CompletableFuture<OutgoingServerMessage> progressSeen = new java.util.concurrent.CompletableFuture<>();
+        java.util.concurrent.CompletableFuture<OutgoingServerMessage> get = alice.send(
+                org.ripv.messages.Header.request(id, mb, "ymodem:get HUGE.LOG", Priority.NORMAL), progressSeen::complete);
+        progressSeen.get(60, java.util.concurrent.TimeUnit.SECONDS);
+        OutgoingServerMessage c = cmd(alice, "?cancel " + id);
+        assertThat(c.status()).as(c.footer().replyText()).isEqualTo(Status.OK);
+        assertThat(c.footer().replyText()).contains("to stop #" + id);
+        OutgoingServerMessage r = get.get(60, java.util.concurrent.TimeUnit.SECONDS);
+        assertThat(r.footer().errorCode()).as(r.footer().replyText()).isEqualTo(ErrorCode.CANCELLED);
+        assertThat(r.footer().replyText()).contains("cancelled by alice").contains("HUGE.LOG");
+        assertThat(sys.downloadDir().resolve("HUGE.LOG")).doesNotExist();
+        // CAN CAN reached the vehicle: it is back at its prompt and answers the next command
+        OutgoingServerMessage dir = alice.call(mb, "dir", Priority.NORMAL, T, null);
+        assertThat(dir.status()).as(dir.footer().replyText()).isEqualTo(Status.OK);
+        assertThat(dir.footer().replyText()).contains("HUGE.LOG").contains("MISSION1.LOG");
+    }
 }

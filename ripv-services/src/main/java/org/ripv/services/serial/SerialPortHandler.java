@@ -68,6 +68,9 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
     private volatile Link link;
     private volatile String downReason = "not opened yet";
     private ScheduledFuture<?> monitor;
+    /** A YMODEM transfer is under way, and whether ?cancel asked it to stop (checked before every block). */
+    private volatile boolean transferring;
+    private volatile boolean cancelRequested;
 
     /**
      * @param handle   the MailBox handle, for messages
@@ -109,9 +112,24 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
         return Availability.available(l.describe());
     }
 
+    /**
+     * Cancels a running YMODEM transfer: it aborts with CAN CAN before its next block and the
+     * line is brought back to the prompt as after any failed transfer. A plain command is not
+     * cancelled yet (the link's interrupt belongs to the link's reader).
+     */
+    @Override
+    public boolean cancel(Request running) {
+        if (!transferring) {
+            return false;
+        }
+        cancelRequested = true;
+        return true;
+    }
+
     @Override
     public Reply execute(Request request) throws Exception {
         lock.lockInterruptibly();
+        cancelRequested = false;
         try {
             Link l = usableLink();
             String command = request.command().trim();
@@ -268,14 +286,17 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
             startVehicleCommand(l, vehicleCommand);
             ProgressReporter progress = new ProgressReporter(request, "receiving");
             List<FileHeader> files;
+            transferring = true;
             try {
-                files = new YmodemReceiver(l, settings.ymodem(), progress)
+                files = new YmodemReceiver(l, settings.ymodem(), progress).cancelWhen(() -> cancelRequested)
                         .stopWaitingWhen(text -> vehicleText.promptAfterEcho(text, vehicleCommand)).receiveBatch(sink);
             } catch (YmodemException e) {
                 // our 'C's may sit in the shell's line: end that line so the shell is clean again
                 l.write(settings.lineEnding().getBytes(StandardCharsets.ISO_8859_1));
                 l.flush();
                 throw e;
+            } finally {
+                transferring = false;
             }
             StringBuilder ignored = new StringBuilder();
             readReply(l, ignored, settings.idleTimeout().toMillis() * 2);
@@ -315,7 +336,12 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
         startVehicleCommand(l, settings.receiveCommand());
         awaitReceiver(l, settings.receiveCommand());
         ProgressReporter progress = new ProgressReporter(request, "sending");
-        new YmodemSender(l, settings.ymodem(), progress).sendBatch(List.of(file), true);
+        transferring = true;
+        try {
+            new YmodemSender(l, settings.ymodem(), progress).cancelWhen(() -> cancelRequested).sendBatch(List.of(file), true);
+        } finally {
+            transferring = false;
+        }
         StringBuilder after = new StringBuilder();
         readReply(l, after, settings.idleTimeout().toMillis() * 2);
         String text = "sent " + file.name() + " (" + file.length() + " bytes) in " + progress.summary(file.length());
