@@ -179,6 +179,7 @@ class WorkflowEndToEndTest {
         assertThat(await(alice, "?queue " + mb, q -> q.contains("empty"))).contains("empty");
         assertThat(ok(alice, "?status " + mb)).doesNotContain("locked");
 
+        event(VehicleEvent.DIVED);
         // an every-call workflow fetches only what is new: nothing on the second call, the new file on the third
         upload(alice, "every.wf", "workflow every-call\nymodem:get *.SBD\n");
         ok(alice, "?queue add " + mb + " every.wf");

@@ -63,6 +63,8 @@ final class Runner implements Runnable {
     private volatile VehicleEvent ended;
     private volatile boolean finished;
     private volatile CompletableFuture<?> current;
+    /** The step request under way: "MESSAGE-ID CLIENT-ID" as ?cancel takes them, or null. */
+    private volatile String currentRequest;
 
     /** Why a step stopped without a verdict. */
     private static final class Cut extends Exception {
@@ -113,6 +115,20 @@ final class Runner implements Runnable {
         CompletableFuture<?> c = current;
         if (c != null) {
             c.completeExceptionally(new Cut(why == null ? "the server is stopping" : "the call ended (" + why + ")"));
+        }
+    }
+
+    /** The step request under way, as {@code ?cancel} takes it ("MESSAGE-ID CLIENT-ID"), or null. */
+    String currentRequest() {
+        return currentRequest;
+    }
+
+    /** Cancels the step request under way (its workflow was removed). */
+    void cancelCurrent(String byUser) {
+        String r = currentRequest;
+        if (r != null) {
+            String[] w = r.split(" ");
+            workflows.host.cancel(w[1], Long.parseLong(w[0]), byUser);
         }
     }
 
@@ -344,6 +360,9 @@ final class Runner implements Runnable {
             return Outcome.preempted(p.getMessage());
         } catch (StepFailed f) {
             return Outcome.failed(f.output, f.getMessage());
+        } catch (RuntimeException x) {
+            // e.g. the owner was removed from the permit file, a MailBox address went bad
+            return Outcome.failed("", x.getMessage() == null ? x.toString() : x.getMessage());
         }
     }
 
@@ -380,9 +399,14 @@ final class Runner implements Runnable {
         CompletableFuture<OutgoingServerMessage> f = new CompletableFuture<>();
         replies.put(clientId + "#" + id, f);
         current = f;
+        currentRequest = id + " " + clientId;
         try {
             if (ended != null) {
                 throw new Cut("the call ended (" + ended + ")");
+            }
+            if (target.equals(mailbox) && !workflows.host.lockForWorkflow(mailbox, e.owner(), clientId,
+                    System.currentTimeMillis() + Math.max(LOCK_MILLIS, timeout.toMillis() + 60_000))) {
+                throw new Preempted("an operator took the lock"); // long steps keep the lock for their whole timeout
             }
             if (!workflows.host.submit(h)) {
                 throw new StepFailed("the server is overloaded and did not take '" + Header.abbreviate(body) + "'", "");
@@ -407,6 +431,7 @@ final class Runner implements Runnable {
         } finally {
             replies.remove(clientId + "#" + id);
             current = null;
+            currentRequest = null;
         }
     }
 

@@ -53,6 +53,8 @@ public final class Workflows implements AutoCloseable {
     private final ExecutorService threads;
     private final Map<String, Runner> runners = new ConcurrentHashMap<>();
     private final Map<String, Runner> byClient = new ConcurrentHashMap<>();
+    /** MailBoxes whose vehicle is on a call (SURFACED seen, no DIVED or LINK_LOST since). */
+    private final java.util.Set<String> onCall = ConcurrentHashMap.newKeySet();
     private final List<LineWaiter> waiters = new CopyOnWriteArrayList<>();
     private final AtomicInteger nextClient = new AtomicInteger();
     private volatile boolean closed;
@@ -114,8 +116,10 @@ public final class Workflows implements AutoCloseable {
             }
             if (e.kind() == ConsoleEntry.Kind.EVENT) {
                 if (e.event() == VehicleEvent.SURFACED) {
+                    onCall.add(e.mailbox());
                     surfaced(e.mailbox());
                 } else if (e.event() == VehicleEvent.DIVED || e.event() == VehicleEvent.LINK_LOST) {
+                    onCall.remove(e.mailbox());
                     callEnded(e.mailbox(), e.event());
                 }
             } else if (e.kind() == ConsoleEntry.Kind.LINE && !waiters.isEmpty()) {
@@ -240,11 +244,14 @@ public final class Workflows implements AutoCloseable {
                 Workflow wf = read(w[3]);
                 checkSteps(u, mailbox, wf);
                 QueuedWorkflow e = queues.add(mailbox, user, sourceOf(w[3]), wf);
+                if (onCall.contains(mailbox)) {
+                    surfaced(mailbox); // the vehicle is on a call now: run it in this call
+                }
                 log.info("{} queued workflow {} '{}' ({} steps, {}) for {}", user, e.id(), e.file(), wf.steps().size(),
                         wf.mode().word(), mailbox);
+                String when = onCall.contains(mailbox) ? "the vehicle is on a call: it runs now" : "it runs when the vehicle calls";
                 return ok(request, Ids.FID_QUEUE, "queued workflow " + e.id() + " '" + e.file() + "' (" + wf.steps().size()
-                        + " step(s), " + wf.mode().word() + ") for " + mailbox + "; it runs when the vehicle calls\n"
-                        + listing(mailbox));
+                        + " step(s), " + wf.mode().word() + ") for " + mailbox + "; " + when + "\n" + listing(mailbox));
             }
             case "remove" -> {
                 usage(w.length == 4, "?queue remove MAILBOX ID");
@@ -262,6 +269,10 @@ public final class Workflows implements AutoCloseable {
                 }
                 mayChange(request, e.get());
                 queues.remove(mailbox, id);
+                Runner running = runners.get(mailbox);
+                if (running != null && e.get().state() == QueuedWorkflow.State.RUNNING) {
+                    running.cancelCurrent(user);
+                }
                 return ok(request, Ids.FID_QUEUE, "removed workflow " + id + " '" + e.get().file() + "' from " + mailbox
                         + (e.get().state() == QueuedWorkflow.State.RUNNING ? " (its run stops at the next step boundary)" : "")
                         + "\n" + listing(mailbox));
@@ -315,8 +326,14 @@ public final class Workflows implements AutoCloseable {
         }
         StringBuilder b = new StringBuilder(list.size() + " workflow(s) queued for " + mailbox + ", in the order they run:\n");
         b.append(String.format("%4s  %-10s %-12s %s%n", "ID", "OWNER", "MODE", "FILE, STATE"));
+        Runner running = runners.get(mailbox);
+        String request = running == null ? null : running.currentRequest();
         for (QueuedWorkflow e : list) {
-            b.append(e.describe()).append(String.format("  (added %s)%n", Instant.ofEpochMilli(e.added())));
+            b.append(e.describe()).append(String.format("  (added %s)", Instant.ofEpochMilli(e.added())));
+            if (e.state() == QueuedWorkflow.State.RUNNING && request != null) {
+                b.append("  [step request: ?cancel ").append(request).append(']');
+            }
+            b.append('\n');
         }
         return b.toString().stripTrailing();
     }
@@ -450,7 +467,17 @@ public final class Workflows implements AutoCloseable {
     public void close() {
         closed = true;
         runners.values().forEach(r -> r.callEnded(null));
-        threads.shutdownNow();
+        // Let the runners write their state (they stop at once once the call is cut); an
+        // interrupt could cut a queue write short.
+        threads.shutdown();
+        try {
+            if (!threads.awaitTermination(2, java.util.concurrent.TimeUnit.SECONDS)) {
+                threads.shutdownNow();
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            threads.shutdownNow();
+        }
     }
 
     static boolean isFinal(Status s) {
