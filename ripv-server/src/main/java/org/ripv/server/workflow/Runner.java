@@ -104,6 +104,11 @@ final class Runner implements Runnable {
         return finished;
     }
 
+    /** The call this runner ran for has ended: it starts nothing more, though it may still be writing its state. */
+    boolean callHasEnded() {
+        return ended != null;
+    }
+
     void callEnded(VehicleEvent why) {
         lock.lock();
         try {

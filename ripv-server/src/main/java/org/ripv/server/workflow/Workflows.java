@@ -138,9 +138,11 @@ public final class Workflows implements AutoCloseable {
             return;
         }
         runners.compute(mailbox, (k, old) -> {
-            if (old != null && !old.finished()) {
+            if (old != null && !old.finished() && !old.callHasEnded()) {
                 return old;
             }
+            // A runner of the last call may still be winding up: the new one waits at its first
+            // step boundary for the old one's lock to go, and resumes where it left off.
             if (queues.list(mailbox).isEmpty()) {
                 return null;
             }
