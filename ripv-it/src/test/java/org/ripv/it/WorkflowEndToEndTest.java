@@ -353,4 +353,23 @@ class WorkflowEndToEndTest {
         assertThat(dir.status()).as(dir.footer().replyText()).isEqualTo(Status.OK);
         assertThat(dir.footer().replyText()).contains("HUGE.LOG").contains("MISSION1.LOG");
     }
+
+    @Test
+    void aWorkflowQueuedDuringACallRunsInItAndAQuickRecallResumesIt() throws Exception {
+        start();
+        ClientSocketHandler alice = sys.login("alice");
+        event(VehicleEvent.SURFACED); // nothing queued: nothing runs
+        upload(alice, "late.wf", "send dir\nwait-for PROCEED timeout=30s\nsend dir\n");
+        assertThat(ok(alice, "?queue add " + mb + " late.wf")).contains("the vehicle is on a call: it runs now");
+        await(alice, "?queue " + mb, q -> q.contains("running step 2/3"));
+        // the call drops and the vehicle calls again at once, while the last call's run winds up
+        event(VehicleEvent.DIVED);
+        event(VehicleEvent.SURFACED);
+        await(alice, "?receipts " + mb, r -> r.contains("result: CUT"));
+        await(alice, "?queue " + mb, q -> q.contains("running step 2/3"));
+        line("PROCEED");
+        String done = await(alice, "?receipts " + mb, r -> r.contains("result: DONE"));
+        assertThat(done).contains("(resumed at step 2)").contains("step 3/3");
+        assertThat(ok(alice, "?queue " + mb)).contains("empty");
+    }
 }
