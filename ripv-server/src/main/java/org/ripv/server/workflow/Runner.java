@@ -493,12 +493,7 @@ final class Runner implements Runnable {
                 return Outcome.failed(dir.footer().replyText(), "listing the vehicle's files failed: "
                         + dir.footer().errorCode() + ": " + dir.footer().replyText());
             }
-            for (String line : dir.footer().replyText().split("\r?\n")) {
-                Matcher m = DIR_LINE.matcher(line);
-                if (m.matches()) {
-                    listing.put(m.group(1), Long.parseLong(m.group(2)));
-                }
-            }
+            listing.putAll(listing(dir.footer().replyText()));
         }
         List<String> wanted = new ArrayList<>();
         for (String n : step.names()) {
@@ -580,6 +575,18 @@ final class Runner implements Runnable {
             }
         }
         return new Receipt.FileRecord(name, size, HexFormat.of().formatHex(md.digest()));
+    }
+
+    /** The files of a {@code dir} listing, name to size; lines that are not a file are skipped. */
+    static Map<String, Long> listing(String text) {
+        Map<String, Long> out = new LinkedHashMap<>();
+        for (String line : text.split("\r?\n")) {
+            Matcher m = DIR_LINE.matcher(line);
+            if (m.matches() && m.group(2).length() <= 18) {
+                out.put(m.group(1), Long.parseLong(m.group(2)));
+            }
+        }
+        return out;
     }
 
     /** {@code *} any run, {@code ?} one character, case-insensitive (PicoDOS names are). */

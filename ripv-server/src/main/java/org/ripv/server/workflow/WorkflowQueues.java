@@ -66,6 +66,11 @@ public final class WorkflowQueues {
             String k = "entry." + i + ".";
             String file = p.getProperty(k + "file");
             String source = p.getProperty(k + "source");
+            for (String need : new String[] {"id", "owner", "file", "added", "source", "state"}) {
+                if (p.getProperty(k + need) == null) {
+                    throw new IOException("entry " + i + " has no " + need + "=");
+                }
+            }
             Workflow w = WorkflowParser.parse(file, source, name -> true);
             QueuedWorkflow.State state = QueuedWorkflow.State.valueOf(p.getProperty(k + "state"));
             if (state == QueuedWorkflow.State.RUNNING || state == QueuedWorkflow.State.PAUSED) {
