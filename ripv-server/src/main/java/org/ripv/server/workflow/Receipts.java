@@ -16,9 +16,29 @@ final class Receipts {
         this.dir = AtomicFiles.directory(dir);
     }
 
+    /** The most receipts kept per MailBox; older ones are deleted as new runs start. */
+    static final int KEEP = 1000;
+
     void write(Receipt r) throws IOException {
         Path d = AtomicFiles.directory(dir.resolve(AtomicFiles.key(r.mailbox)));
-        AtomicFiles.write(d.resolve(r.fileName()), r.render());
+        Path f = d.resolve(r.fileName());
+        boolean first = !Files.exists(f);
+        AtomicFiles.write(f, r.render());
+        if (first) {
+            prune(d);
+        }
+    }
+
+    /** Keeps the newest {@link #KEEP} receipts (an every-call workflow leaves one per call). */
+    private static void prune(Path d) throws IOException {
+        List<Path> files;
+        try (Stream<Path> s = Files.list(d)) {
+            files = s.filter(p -> p.getFileName().toString().endsWith(".txt") && !p.getFileName().toString().startsWith("."))
+                    .sorted().toList();
+        }
+        for (Path old : files.subList(0, Math.max(0, files.size() - KEEP))) {
+            Files.deleteIfExists(old);
+        }
     }
 
     /** The last {@code n} receipts of a MailBox, oldest first. */
