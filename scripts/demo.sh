@@ -10,6 +10,21 @@ PORT="${RIPV_PORT:-4444}"
 REGISTRY="${RIPV_REGISTRY_PORT:-1099}"
 HTTP="${RIPV_HTTP_PORT:-8080}"
 GLIDER="${RIPV_GLIDER_PORT:-5555}"
+# Everything listens on this machine only unless told otherwise (--bind ADDRESS or RIPV_BIND;
+# 0.0.0.0 for every interface). The services listen on loopback anyway: only the server calls them.
+BIND="${RIPV_BIND:-127.0.0.1}"
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --bind) BIND="${2:?--bind needs an address}"; shift 2 ;;
+    --bind=*) BIND="${1#--bind=}"; shift ;;
+    *) echo "demo: unknown option '$1' (the demo takes --bind ADDRESS)" >&2; exit 2 ;;
+  esac
+done
+# where this script and the services reach what listens on $BIND
+case "$BIND" in
+  0.0.0.0|::|127.*|localhost) HERE=localhost ;;
+  *) HERE="$BIND" ;;
+esac
 USER_NAME=demo
 PASSWORD=ripv-demo-operator
 jar() { echo "$ROOT/$1/target/$1.jar"; }
@@ -27,11 +42,11 @@ stop_all() {
 trap stop_all EXIT
 trap 'exit 130' INT TERM
 
-port_free() { ! (exec 3<>"/dev/tcp/127.0.0.1/$1") 2>/dev/null; }
+port_free() { ! (exec 3<>"/dev/tcp/$HERE/$1") 2>/dev/null; }
 wait_port() {
   local i
   for i in $(seq 1 150); do
-    (exec 3<>"/dev/tcp/127.0.0.1/$1") 2>/dev/null && return 0
+    (exec 3<>"/dev/tcp/$HERE/$1") 2>/dev/null && return 0
     sleep 0.2
   done
   echo "demo: nothing answered on port $1; see $DEMO/logs/" >&2
@@ -54,7 +69,7 @@ chmod 600 "$DEMO/password"
 
 echo "demo: starting the RIPVServer (logs in $DEMO/logs)" >&2
 "$JAVA" -jar "$(jar ripv-server)" server --data "$DEMO/server" --port "$PORT" --registry-port "$REGISTRY" \
-  --http-port "$HTTP" >"$DEMO/logs/server.log" 2>&1 &
+  --http-port "$HTTP" --bind "$BIND" >"$DEMO/logs/server.log" 2>&1 &
 pids+=($!)
 wait_port "$PORT"
 secret="$DEMO/server/service.secret"
@@ -63,18 +78,18 @@ for s in "$ROOT"/docs/samples/*.dat; do
 done
 
 echo "demo: starting the glider simulator on port $GLIDER" >&2
-"$JAVA" -jar "$(jar ripv-services)" simulator --listen "$GLIDER" --dir "$DEMO/glider" >"$DEMO/logs/simulator.log" 2>&1 &
+"$JAVA" -jar "$(jar ripv-services)" simulator --listen "$GLIDER" --bind "$BIND" --dir "$DEMO/glider" >"$DEMO/logs/simulator.log" 2>&1 &
 pids+=($!)
 wait_port "$GLIDER"
 
 echo "demo: starting the SerialPortServer, DatabaseServer and DataVisServer" >&2
-"$JAVA" -Dripv.host=localhost -jar "$(jar ripv-services)" serial --server "localhost:$REGISTRY" --secret-file "$secret" \
-  --link "tcp://localhost:$GLIDER" --carrier ignore --no-enumerate >"$DEMO/logs/serial.log" 2>&1 &
+"$JAVA" -Dripv.host=localhost -jar "$(jar ripv-services)" serial --server "$HERE:$REGISTRY" --secret-file "$secret" \
+  --link "tcp://$HERE:$GLIDER" --carrier ignore --no-enumerate >"$DEMO/logs/serial.log" 2>&1 &
 pids+=($!)
-"$JAVA" -Dripv.host=localhost -jar "$(jar ripv-services)" database --server "localhost:$REGISTRY" --secret-file "$secret" \
+"$JAVA" -Dripv.host=localhost -jar "$(jar ripv-services)" database --server "$HERE:$REGISTRY" --secret-file "$secret" \
   --data "$DEMO/database" >"$DEMO/logs/database.log" 2>&1 &
 pids+=($!)
-"$JAVA" -Dripv.host=localhost -jar "$(jar ripv-services)" datavis --server "localhost:$REGISTRY" --secret-file "$secret" \
+"$JAVA" -Dripv.host=localhost -jar "$(jar ripv-services)" datavis --server "$HERE:$REGISTRY" --secret-file "$secret" \
   --workdir "$DEMO/datavis" >"$DEMO/logs/datavis.log" 2>&1 &
 pids+=($!)
 

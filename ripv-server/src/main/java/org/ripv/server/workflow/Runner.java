@@ -538,7 +538,9 @@ final class Runner implements Runnable {
                 try {
                     Receipt.FileRecord rec = digest(s);
                     files.add(rec);
-                    workflows.fetched.record(mailbox, s, size != null && s.equals(name) ? size : rec.size());
+                    // remembered by the vehicle's name (the store may file it as HANDLE/NAME)
+                    String plain = s.substring(s.lastIndexOf('/') + 1);
+                    workflows.fetched.record(mailbox, plain, size != null && plain.equals(name) ? size : rec.size());
                     if (!fetchedNow.contains(s)) {
                         fetchedNow.add(s);
                     }
@@ -557,10 +559,15 @@ final class Runner implements Runnable {
         return Outcome.ok(out.toString(), files);
     }
 
-    /** Size and SHA-256 of a file in the download store, read back from disk. */
+    /**
+     * Size and SHA-256 of a file in the download store, read back from disk. {@code name} is as
+     * the reply listed it: {@code NAME} or {@code HANDLE/NAME} (the MailBox's own folder).
+     */
     private Receipt.FileRecord digest(String name) throws IOException {
-        FileNames.check(name);
-        Path p = workflows.host.files().downloadDir().resolve(name);
+        Path p = workflows.host.files().downloadDir();
+        for (String part : name.split("/", -1)) {
+            p = p.resolve(FileNames.check(part));
+        }
         MessageDigest md;
         try {
             md = MessageDigest.getInstance("SHA-256");

@@ -14,7 +14,10 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.locks.ReentrantLock;
 import java.util.stream.Stream;
+import org.ripv.commands.SingleLineCommand;
 import org.ripv.exceptions.ServiceException;
+import org.ripv.files.PrivateFiles;
+import org.ripv.messages.Header;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.FileBundle;
 import org.ripv.messages.FileData;
@@ -22,6 +25,7 @@ import org.ripv.service.Availability;
 import org.ripv.service.CommandHandler;
 import org.ripv.service.Reply;
 import org.ripv.service.Request;
+import org.ripv.services.serial.ymodem.AskedNames;
 import org.ripv.services.serial.ymodem.DirectorySink;
 import org.ripv.services.serial.ymodem.FileHeader;
 import org.ripv.services.serial.ymodem.FileNames;
@@ -90,6 +94,7 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
         if (settings.carrier() == CarrierMode.REQUIRE && settings.isTcp()) {
             log.warn("{}: --carrier require has no effect on {}: TCP has no DCD line", handle, settings.device());
         }
+        DirectorySink.prepareWorkDir(workDir); // owner-only; partial files of an earlier run that was killed go
         scheduler.execute(this::monitor);
         long every = settings.reconnectEvery().toMillis();
         monitor = scheduler.scheduleWithFixedDelay(this::monitor, every, every, TimeUnit.MILLISECONDS);
@@ -128,6 +133,12 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
 
     @Override
     public Reply execute(Request request) throws Exception {
+        // Defence in depth: the server refuses these already, but nothing but one line ever reaches the link.
+        try {
+            SingleLineCommand.check(request.command(), settings.maxCommand());
+        } catch (IllegalArgumentException e) {
+            throw new ServiceException(ErrorCode.BAD_REQUEST, e.getMessage() + " (link " + handle + ")");
+        }
         lock.lockInterruptibly();
         cancelRequested = false;
         try {
@@ -187,7 +198,7 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
         StringBuilder text = new StringBuilder();
         boolean closed = readReply(l, text, settings.commandTimeout().toMillis(), command);
         if (text.isEmpty() && !closed) {
-            throw new ServiceException(ErrorCode.TIMEOUT, "no answer to '" + command + "' from " + l.describe()
+            throw new ServiceException(ErrorCode.TIMEOUT, "no answer to '" + Header.abbreviate(command) + "' from " + l.describe()
                     + " within " + settings.idleTimeout().toMillis() + " ms");
         }
         String reply = vehicleText.clean(text.toString(), command);
@@ -279,7 +290,7 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
                 throw new ServiceException(ErrorCode.BAD_FILE_NAME, e.getMessage());
             }
         }
-        Path dir = Files.createDirectories(workDir).resolve("get-" + TRANSFERS.incrementAndGet());
+        Path dir = PrivateFiles.createDirectories(workDir).resolve("get-" + TRANSFERS.incrementAndGet());
         try {
             DirectorySink sink = new DirectorySink(dir);
             String vehicleCommand = settings.sendCommand() + " " + String.join(" ", names);
@@ -304,14 +315,22 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
                 throw new ServiceException(ErrorCode.TRANSFER_FAILED, "the vehicle sent no files for '"
                         + String.join(" ", names) + "'");
             }
+            // The vehicle does not choose stored names: block 0 must name a file that was asked for.
+            AskedNames.Verdict verdict = new AskedNames(names).check(files);
+            verdict.warnings().forEach(w -> log.warn("{}: {}", handle, w));
+            String warnings = verdict.warnings().isEmpty() ? "" : "\nwarning: " + String.join("\nwarning: ", verdict.warnings());
+            if (verdict.accepted().isEmpty()) {
+                throw new ServiceException(ErrorCode.TRANSFER_FAILED, "the vehicle sent none of '"
+                        + String.join(" ", names) + "'" + warnings);
+            }
             List<FileData> data = new ArrayList<>();
             long bytes = 0;
-            for (FileHeader f : files) {
-                byte[] content = Files.readAllBytes(dir.resolve(f.name()));
+            for (AskedNames.Accepted a : verdict.accepted()) {
+                byte[] content = Files.readAllBytes(dir.resolve(a.file().name()));
                 bytes += content.length;
-                data.add(FileData.whole(f.name(), content));
+                data.add(FileData.whole(a.storedName(), content));
             }
-            String text = "received " + describe(data) + " in " + progress.summary(bytes);
+            String text = "received " + describe(data) + " in " + progress.summary(bytes) + warnings;
             log.info("{}: {}", handle, text);
             return Reply.ok(text, data.size() == 1 ? data.get(0) : new FileBundle(data));
         } finally {

@@ -40,7 +40,7 @@ public final class SerialPortServerCommand implements Callable<Integer> {
             description = "A link to open besides the enumerated ports: a device path (ptys and symlinks too) or tcp://host:port, "
                     + "optionally followed by its own settings, e.g. /dev/ttyUSB0,baud=9600,carrier=require "
                     + "(keys: baud, data-bits, parity, stop-bits, carrier, line-ending, prompt, prompt-regex, idle-timeout, "
-                    + "command-timeout, send-command, receive-command). Repeatable.")
+                    + "command-timeout, send-command, receive-command, maxcommand). Repeatable.")
     List<String> links = new ArrayList<>();
 
     @Option(names = "--no-enumerate", description = "Do not open MailBoxes for the serial ports jSerialComm finds; only the --link ones.")
@@ -90,12 +90,18 @@ public final class SerialPortServerCommand implements Callable<Integer> {
             description = "How often a link that is down is retried (default ${DEFAULT-VALUE} s).")
     long reconnectSeconds;
 
+    @Option(names = "--max-command", defaultValue = "1024", paramLabel = "CHARS",
+            description = "The longest command written to a link (per link: maxcommand=N); longer ones are refused"
+                    + " (default ${DEFAULT-VALUE}, at most 16384).")
+    int maxCommand;
+
     @Option(names = "--work", paramLabel = "DIR", description = "Where incoming files are assembled (default: a temporary directory).")
     Path workDir;
 
     /** The keys a {@code --link} may override for itself, after its device: {@code DEVICE,baud=9600,...}. */
     static final java.util.Set<String> LINK_KEYS = java.util.Set.of("baud", "data-bits", "parity", "stop-bits", "carrier",
-            "line-ending", "prompt", "prompt-regex", "idle-timeout", "command-timeout", "send-command", "receive-command");
+            "line-ending", "prompt", "prompt-regex", "idle-timeout", "command-timeout", "send-command", "receive-command",
+            "maxcommand");
 
     /**
      * Builds a link's settings: the command line's options, overridden by any {@code key=value}
@@ -134,7 +140,7 @@ public final class SerialPortServerCommand implements Callable<Integer> {
                 Duration.ofMillis(number(o, "idle-timeout", idleMillis)),
                 Duration.ofSeconds(number(o, "command-timeout", commandSeconds)), mode,
                 o.getOrDefault("send-command", sendCommand), o.getOrDefault("receive-command", receiveCommand),
-                Duration.ofSeconds(Math.max(1, reconnectSeconds)), YmodemConfig.lrzsz());
+                Duration.ofSeconds(Math.max(1, reconnectSeconds)), YmodemConfig.lrzsz(), number(o, "maxcommand", maxCommand));
     }
 
     private static int number(java.util.Map<String, String> o, String key, long fallback) {
@@ -167,7 +173,8 @@ public final class SerialPortServerCommand implements Callable<Integer> {
             System.err.println("Error: " + e.getMessage());
             return 2;
         }
-        Path work = workDir != null ? Files.createDirectories(workDir) : Files.createTempDirectory("ripv-serial");
+        Path work = workDir != null ? org.ripv.files.PrivateFiles.createDirectories(workDir)
+                : Files.createTempDirectory("ripv-serial"); // createTempDirectory makes it 0700
         SerialPortServer server = new SerialPortServer(launch.hostName(), linkSettings, settings("COM1"),
                 !noEnumerate, work);
         server.start();

@@ -58,6 +58,7 @@ public final class GliderSimulator implements AutoCloseable {
     private volatile boolean submerged;
     private int port;
     private Thread thread;
+    private java.net.InetAddress bindAddress = java.net.InetAddress.getLoopbackAddress();
 
     /**
      * @param dir      the vehicle's file system; seeded with mission logs and a config file if empty
@@ -119,11 +120,20 @@ public final class GliderSimulator implements AutoCloseable {
         log.info("glider simulator on {} with files in {}", path, dir);
     }
 
-    private static ServerSocket bind(int port) throws IOException {
+    private ServerSocket bind(int port) throws IOException {
         ServerSocket s = new ServerSocket();
         s.setReuseAddress(true);
-        s.bind(new InetSocketAddress(port));
+        s.bind(new InetSocketAddress(bindAddress, port));
         return s;
+    }
+
+    /**
+     * The address {@link #listen} binds to: loopback unless set (a simulated vehicle is for this
+     * machine; {@code --bind} widens it). Null means every interface. Call before {@code listen}.
+     */
+    public synchronized GliderSimulator bindTo(java.net.InetAddress address) {
+        this.bindAddress = address;
+        return this;
     }
 
     private void serveTcp() {

@@ -40,6 +40,10 @@ public final class SimulatorCommand implements Callable<Integer> {
     @Option(names = "--dir", paramLabel = "DIR", description = "The glider's files (default: a temporary directory with sample logs).")
     Path dir;
 
+    @Option(names = "--bind", paramLabel = "ADDRESS",
+            description = "Listen on this address only (default 127.0.0.1: this machine; 0.0.0.0 for every interface).")
+    String bind;
+
     @Option(names = "--submerge-seconds", defaultValue = "30", description = "How long GO keeps it under water (default ${DEFAULT-VALUE}).")
     long submergeSeconds;
 
@@ -51,6 +55,7 @@ public final class SimulatorCommand implements Callable<Integer> {
                 sim.attach(where.tty);
                 System.out.println("glider simulator on " + where.tty + ", files in " + files);
             } else {
+                sim.bindTo(bind == null ? java.net.InetAddress.getLoopbackAddress() : java.net.InetAddress.getByName(bind));
                 int port = sim.listen(where != null && where.port != null ? where.port : 2323);
                 System.out.println("glider simulator on tcp://localhost:" + port + ", files in " + files);
             }
