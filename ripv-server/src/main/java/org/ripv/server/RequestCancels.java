@@ -26,8 +26,12 @@ final class RequestCancels {
     private static final Logger log = LoggerFactory.getLogger(RequestCancels.class);
 
     private final RIPVServer server;
-    /** Requests someone asked to cancel while they ran, by pending key: who asked. */
-    private final Map<String, String> cancelledBy = new ConcurrentHashMap<>();
+    /** Requests someone asked to cancel while they ran, by pending key: who asked, and when. */
+    private final Map<String, Asked> cancelledBy = new ConcurrentHashMap<>();
+    /** A cancel whose request then ended another way (timeout, service gone) is forgotten after this. */
+    private static final long FORGET_MILLIS = 6 * 3600_000L;
+
+    private record Asked(String user, long at) {}
 
     RequestCancels(RIPVServer server) {
         this.server = server;
@@ -99,7 +103,9 @@ final class RequestCancels {
             return new Outcome(false, ErrorCode.SERVICE_GONE, p.service() + " is no longer registered");
         }
         String key = PendingRequests.key(h);
-        cancelledBy.put(key, byUser);
+        long now = System.currentTimeMillis();
+        cancelledBy.values().removeIf(a -> now - a.at() > FORGET_MILLIS);
+        cancelledBy.put(key, new Asked(byUser, now));
         try {
             if (ref.withdraw(h)) {
                 cancelledBy.remove(key);
@@ -131,18 +137,14 @@ final class RequestCancels {
         if (!f.status().isFinal()) {
             return f;
         }
-        String by = cancelledBy.remove(PendingRequests.key(p.header()));
-        if (by == null || f.status() != Status.ERROR) {
+        Asked asked = cancelledBy.remove(PendingRequests.key(p.header()));
+        if (asked == null || f.status() != Status.ERROR) {
             return f;
         }
+        String by = asked.user();
         String text = f.errorCode() == ErrorCode.CANCELLED ? f.replyText() : f.errorCode() + ": " + f.replyText();
         return new Footer(f.serviceId(), Status.ERROR, ErrorCode.CANCELLED, f.route(), "cancelled by " + by + ": " + text,
                 null);
-    }
-
-    /** Forgets cancels of requests that ended another way (timed out, service gone). */
-    void forget(Header h) {
-        cancelledBy.remove(PendingRequests.key(h));
     }
 
     private static OutgoingServerMessage error(IncomingServerMessage request, ErrorCode code, String text) {

@@ -312,7 +312,9 @@ final class Runner implements Runnable {
                     paused = true;
                     workflows.queues.update(mailbox, e.id(), q -> q.with(QueuedWorkflow.State.PAUSED, step, ""));
                     workflows.announce(mailbox, e.owner(), "workflow " + e.id() + " '" + e.file() + "': paused before step "
-                            + (step + 1) + ": " + (other == null ? "the lock is taken" : other.user() + " holds the lock"));
+                            + (step + 1) + ": " + (other == null ? "the lock is taken"
+                            : Workflows.isWorkflowClient(other.clientId()) ? "another workflow run holds the lock"
+                            : other.user() + " holds the lock"));
                 }
                 long until = other == null ? System.currentTimeMillis() + 1000 : other.untilMillis() + 1;
                 try {
