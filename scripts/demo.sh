@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # ./ripv demo — the whole system on this machine: RIPVServer, the three services on their
-# embedded defaults, a simulated glider on TCP, and the GUI logged in as the demo operator.
+# embedded defaults, a simulated glider that calls in (surfaces, talks, dives, calls again), and
+# the GUI logged in as the demo operator.
 # With no display it prints how to connect with the CLI instead. Ctrl-C stops everything.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -10,6 +11,9 @@ PORT="${RIPV_PORT:-4444}"
 REGISTRY="${RIPV_REGISTRY_PORT:-1099}"
 HTTP="${RIPV_HTTP_PORT:-8080}"
 GLIDER="${RIPV_GLIDER_PORT:-5555}"
+GLIDER_NAME="${RIPV_GLIDER_NAME:-sim01}"
+DIVE="${RIPV_DIVE_SECONDS:-30}"
+SURFACE="${RIPV_SURFACE_SECONDS:-60}"
 # Everything listens on this machine only unless told otherwise (--bind ADDRESS or RIPV_BIND;
 # 0.0.0.0 for every interface). The services listen on loopback anyway: only the server calls them.
 BIND="${RIPV_BIND:-127.0.0.1}"
@@ -77,14 +81,19 @@ for s in "$ROOT"/docs/samples/*.dat; do
   [ -f "$s" ] && [ ! -f "$DEMO/server/upload/$(basename "$s")" ] && cp "$s" "$DEMO/server/upload/"
 done
 
-echo "demo: starting the glider simulator on port $GLIDER" >&2
-"$JAVA" -jar "$(jar ripv-services)" simulator --listen "$GLIDER" --bind "$BIND" --dir "$DEMO/glider" >"$DEMO/logs/simulator.log" 2>&1 &
-pids+=($!)
-wait_port "$GLIDER"
-
-echo "demo: starting the SerialPortServer, DatabaseServer and DataVisServer" >&2
+echo "demo: starting the SerialPortServer (glider $GLIDER_NAME calls in on port $GLIDER), DatabaseServer and DataVisServer" >&2
 "$JAVA" -Dripv.host=localhost -jar "$(jar ripv-services)" serial --server "$HERE:$REGISTRY" --secret-file "$secret" \
-  --link "tcp://$HERE:$GLIDER" --carrier ignore --no-enumerate >"$DEMO/logs/serial.log" 2>&1 &
+  --link "listen://$BIND:$GLIDER,name=$GLIDER_NAME" --carrier ignore --no-enumerate >"$DEMO/logs/serial.log" 2>&1 &
+pids+=($!)
+# not wait_port: a connection to the glider's port would be taken for a call
+for i in $(seq 1 150); do
+  grep -q "MailBoxes:" "$DEMO/logs/serial.log" 2>/dev/null && break
+  sleep 0.2
+done
+
+echo "demo: the simulated glider $GLIDER_NAME calls in for $SURFACE s, dives for $DIVE s, and calls again" >&2
+"$JAVA" -jar "$(jar ripv-services)" simulator --call "$HERE:$GLIDER" --name "$GLIDER_NAME" \
+  --dive-seconds "$DIVE" --surface-seconds "$SURFACE" --dir "$DEMO/glider" >"$DEMO/logs/simulator.log" 2>&1 &
 pids+=($!)
 "$JAVA" -Dripv.host=localhost -jar "$(jar ripv-services)" database --server "$HERE:$REGISTRY" --secret-file "$secret" \
   --data "$DEMO/database" >"$DEMO/logs/database.log" 2>&1 &
@@ -100,7 +109,11 @@ RIPV demo is running. Connect with the CLI, e.g.:
 
   ./ripv cli --server localhost:$PORT --user $USER_NAME --password-file $DEMO/password \\
       --exec '?services' --exec '?mailboxes' \\
-      --exec 'use <SerialPortServer>::<localhost>tcp-localhost-$GLIDER' --exec 'dir'
+      --exec '?status <SerialPortServer>::<localhost>$GLIDER_NAME' \\
+      --exec 'use <SerialPortServer>::<localhost>$GLIDER_NAME' --exec 'dir'
+
+  The glider $GLIDER_NAME is on a call for $SURFACE s, then dives for $DIVE s: ?status shows
+  "on call since ..." or "dived at ...", and commands work while it is on a call.
 
   Database:  --exec 'use <DatabaseServer>::<localhost>TTY1' --exec 'SELECT * FROM mission'
   Plot:      --exec 'use <DataVisServer>::<localhost>TTY1' --exec 'vis:glider-temperature.dat'
