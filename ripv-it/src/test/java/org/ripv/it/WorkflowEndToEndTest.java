@@ -374,4 +374,34 @@ class WorkflowEndToEndTest {
         assertThat(done).contains("(resumed at step 2)").contains("step 3/3");
         assertThat(ok(alice, "?queue " + mb)).contains("empty");
     }
+
+    @Test
+    void aWorkflowQueuedWhileDivedRunsWhenTheSimulatorCallsIn() throws Exception {
+        // no test hook here: the SerialPortServer's listen:// link publishes SURFACED when the glider calls
+        sys = TestSystem.start(dir.resolve("sys"));
+        sys.user("alice", "operators");
+        LinkSettings link = LinkSettings.defaults("listen://127.0.0.1:0").withIdleTimeout(Duration.ofSeconds(1))
+                .withYmodem(SerialEndToEndTest.YMODEM);
+        serial = SerialPortServer.withCalls("localhost", List.of(new org.ripv.services.serial.VehicleLink(link,
+                org.ripv.services.serial.CallSettings.defaults().withName("ru29"))), null, false, dir.resolve("work"));
+        sys.register(serial);
+        mb = "<SerialPortServer>::<localhost>ru29";
+        ClientSocketHandler alice = sys.login("alice");
+        upload(alice, "call.wf", "send dir expect=MISSION1.LOG\nymodem:get *.LOG\n");
+        assertThat(ok(alice, "?queue add " + mb + " call.wf")).contains("it runs when the vehicle calls");
+
+        glider = new GliderSimulator(dir.resolve("glider"), Duration.ofSeconds(1), SerialEndToEndTest.YMODEM);
+        glider.call("127.0.0.1", serial.listenPort("ru29"), "ru29", Duration.ofSeconds(2), Duration.ofSeconds(20));
+        String receipt = await(alice, "?receipts " + mb, WorkflowEndToEndTest::ended);
+        assertThat(receipt).contains("result: DONE");
+        Matcher m = FILE.matcher(receipt);
+        int n = 0;
+        while (m.find()) {
+            String name = m.group(1).substring(m.group(1).indexOf('/') + 1);
+            assertThat(m.group(3)).isEqualTo(sha256(Files.readAllBytes(glider.directory().resolve(name))));
+            n++;
+        }
+        assertThat(n).isEqualTo(2); // MISSION1.LOG and MISSION2.LOG
+        assertThat(ok(alice, "?queue " + mb)).contains("empty");
+    }
 }
