@@ -68,6 +68,7 @@ public final class Workflows implements AutoCloseable {
      */
     public Workflows(Path dir, WorkflowHost host) throws IOException {
         this.host = host;
+        AtomicFiles.directory(dir);
         this.queues = new WorkflowQueues(dir.resolve("queues"));
         this.receipts = new Receipts(dir.resolve("receipts"));
         this.fetched = new FetchedFiles(dir.resolve("fetched"));
