@@ -51,7 +51,9 @@ public interface GenericRMIInterface extends Remote {
     void console(String token, List<ConsoleEntry> entries) throws RemoteException;
 
     /**
-     * A service's periodic sign of life.
+     * A service's periodic sign of life. Asked of a service, it is the server's call-back probe at
+     * registration (a service answers {@code true} whatever the token): proof that the server can
+     * reach the service before it lists it.
      *
      * @return false when the server no longer knows the token (it restarted, or dropped the
      *         service): the service then registers again
@@ -83,8 +85,11 @@ public interface GenericRMIInterface extends Remote {
      * @param messageId the request's message id
      * @return true when that request was running and its handler accepted the cancel; false when
      *         it is not running there or its handler cannot stop it
+     * @throws UnsupportedOperationException from a side that runs no service MailBoxes (the default)
      */
-    boolean cancel(String token, String mailbox, String clientId, long messageId) throws RemoteException;
+    default boolean cancel(String token, String mailbox, String clientId, long messageId) throws RemoteException {
+        throw new UnsupportedOperationException("this side runs no service MailBoxes; send ?cancel to the server");
+    }
 
     /** The service's MailBoxes and whether each can take commands now. */
     List<MailboxStatus> mailboxes(String token) throws RemoteException;

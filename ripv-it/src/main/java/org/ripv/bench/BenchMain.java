@@ -21,8 +21,12 @@ public final class BenchMain {
             "  ymodem     YMODEM over a baud-paced relay as a share of the line rate, and against lrzsz",
             "             [BAUD:BYTES ...], e.g. 9600:65536 115200:1048576",
             "  datavis    vis: to JPEG for 10,000 and 1,000,000 points, built-in worker and Octave   [--no-octave]",
+            "  firststart the DatabaseServer's first start (Derby created and seeded) in a fresh JVM, against",
+            "             loading the scripts statement by statement   [--runs N]",
             "  calls      100 vehicles calling 100 listen:// links within a minute: accepted, streamed, delay",
             "             [--vehicles N] [--spread S] [--surface S] [--lines-per-second N]",
+            "  (the multi-host speeds — round trips across network namespaces, time to notice a cut host —",
+            "   are measured by ripv-it's MultiHostTest, as root: docs/performance.md)",
             "See docs/performance.md for what each measures and the figures.");
 
     public static void main(String[] args) throws Exception {
@@ -36,6 +40,7 @@ public final class BenchMain {
             case "database" -> DatabaseBench.main(rest);
             case "ymodem" -> YmodemBenchmark.main(rest);
             case "datavis" -> DataVisBenchmark.main(rest);
+            case "firststart" -> FirstStartBench.main(rest);
             case "calls" -> System.exit(Launchers.commandLine(new CallsBench()).execute(rest));
             default -> {
                 System.err.println("Error: unknown benchmark '" + args[0] + "'\n" + USAGE);
