@@ -27,9 +27,10 @@ import org.ripv.naming.MailboxAddress;
  * {@code get NAME [LOCALDIR]}, and anything else as a command for the current MailBox.
  *
  * <p>{@link #cancel()} (Ctrl-C in the interactive CLI) stops waiting for the running request: a
- * transfer stops after its current chunk (an upload's part is dropped on the server), any other
- * request is abandoned by the client and its late reply ignored. The server has no cancel yet, so
- * a service goes on with an abandoned request until it finishes or the server's request timeout.
+ * transfer stops after its current chunk (an upload's part is dropped on the server); any other
+ * request is cancelled on the server with {@code ?cancel ID}, whose answer is printed (withdrawn
+ * before it ran, or the service asked to stop it; a service that cannot stop it says so), and
+ * its late reply is ignored.
  */
 public final class CliSession {
     private final ClientSocketHandler client;
@@ -42,6 +43,8 @@ public final class CliSession {
     private boolean anyError;
     /** The request being waited for, so that {@link #cancel()} can end the wait. */
     private volatile CompletableFuture<OutgoingServerMessage> waiting;
+    /** The message id of the request being waited for, 0 for none (what {@code ?cancel} names). */
+    private volatile long waitingId;
     private volatile boolean cancelled;
 
     public CliSession(ClientSocketHandler client, PrintStream out, PrintStream err, boolean json, Duration timeout) {
@@ -127,7 +130,7 @@ public final class CliSession {
             local("Service help: choose a MailBox with use MAILBOX first; ?help lists the server's commands");
             return;
         }
-        OutgoingServerMessage r = await(client.send(mailbox, "help", priority, null), "help");
+        OutgoingServerMessage r = await(mailbox, "help", null);
         if (r == null) {
             return;
         }
@@ -155,7 +158,7 @@ public final class CliSession {
 
     /** The full address of the one MailBox whose handle is {@code handle}, or null (said why). */
     private String resolveHandle(String handle) throws IOException {
-        OutgoingServerMessage r = await(client.send("", "?mailboxes", priority, null), "?mailboxes");
+        OutgoingServerMessage r = await("", "?mailboxes", null);
         if (r == null) {
             return null;
         }
@@ -181,22 +184,41 @@ public final class CliSession {
     }
 
     private void send(String box, String body) throws IOException {
-        OutgoingServerMessage reply = await(client.send(box, body, priority, printer::print), body);
+        OutgoingServerMessage reply = await(box, body, printer::print);
         if (reply != null) {
             print(reply);
+        }
+    }
+
+    /** Sends and waits for the final reply; null when {@link #cancel()} ended the wait (said so). */
+    private OutgoingServerMessage await(String box, String body, java.util.function.Consumer<OutgoingServerMessage> progress)
+            throws IOException {
+        org.ripv.messages.Header h = Header.request(client.nextId(), box, body, priority);
+        waitingId = h.messageId();
+        try {
+            return await(client.send(h, progress), body);
+        } catch (CancellationException e) {
+            return null;
+        } finally {
+            waitingId = 0;
         }
     }
 
     /** The final reply, or null when {@link #cancel()} ended the wait (said so). */
     private OutgoingServerMessage await(CompletableFuture<OutgoingServerMessage> f, String what) throws IOException {
         waiting = f;
+        long id = waitingId;
         try {
             if (cancelled) {
                 f.cancel(false);
             }
             return f.get(timeout.toMillis(), TimeUnit.MILLISECONDS);
         } catch (CancellationException e) {
-            cancelledNote(what);
+            if (id > 0) {
+                cancelOnServer(id, what);
+            } else {
+                cancelledNote(what);
+            }
             return null;
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
@@ -207,6 +229,18 @@ public final class CliSession {
             throw e.getCause() instanceof IOException io ? io : new IOException(e.getCause());
         } finally {
             waiting = null;
+        }
+    }
+
+    /** Asks the server to stop the request ({@code ?cancel ID}) and says what it answered. */
+    private void cancelOnServer(long id, String what) {
+        try {
+            OutgoingServerMessage r = client.call("", "?cancel " + id, Priority.URGENT, Duration.ofSeconds(10), null);
+            err.println("Cancelled: stopped waiting for '" + what + "'; the server: " + r.footer().replyText()
+                    + (r.status() == Status.ERROR ? " [" + r.footer().errorCode() + "]" : ""));
+        } catch (IOException e) {
+            err.println("Cancelled: stopped waiting for '" + what + "'; ?cancel got no answer (" + e.getMessage()
+                    + "): the server may still finish it");
         }
     }
 

@@ -98,7 +98,7 @@ class InteractiveCliTmuxTest {
             Thread.sleep(500);
             long before = System.nanoTime();
             t.keys("C-c");
-            t.awaitText("Cancelled: stopped waiting for 'sleep 20000'");
+            t.awaitText("Cancelled: stopped waiting for 'sleep 20000'; the server: ");
             assertThat(Duration.ofNanos(System.nanoTime() - before)).isLessThan(Duration.ofSeconds(10));
             t.type("echo still here");
             t.keys("Enter");
