@@ -40,6 +40,7 @@ final class ServiceReplies {
             f = new Footer(ref.descriptor().sid(), f.status(), f.errorCode(), f.route(), f.replyText(), f.result());
         }
         f = store(server, f, folderOf(p.header().mailboxAddress()));
+        f = server.cancels().judge(p, f);
         // Route by the header the server sent, never by what the service wrote back.
         server.reply(new IncomingServerMessage(p.header()).reply(f.via(RIPVServer.SERVER_SERVICE)));
     }
