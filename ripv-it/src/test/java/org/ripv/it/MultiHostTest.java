@@ -204,8 +204,9 @@ class MultiHostTest {
     private record Cli(int exit, String out) {}
 
     private Cli cli(Netns net, Path logs, String user, String... lines) throws Exception {
+        // Each run's server makes a new certificate: remember it in this run's file, not ~/.ripv/known_hosts.
         List<String> args = new ArrayList<>(List.of("cli", "--server", SRV + ":4444", "--user", user, "--password", PW,
-                "--timeout", "120"));
+                "--timeout", "120", "--known-hosts", logs.resolve("known_hosts").toString()));
         for (String l : lines) {
             args.add("--exec");
             args.add(l);

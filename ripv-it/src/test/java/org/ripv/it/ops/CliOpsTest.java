@@ -119,6 +119,7 @@ class CliOpsTest {
                 "cli", "--server", "localhost:" + sys.server().port(), "--user", "alice", "--exec", "get unit17.log")
                 .directory(cwd.toFile()).redirectErrorStream(true).redirectInput(ProcessBuilder.Redirect.from(new File("/dev/null")));
         pb.environment().put("RIPV_PASSWORD", TestSystem.PASSWORD);
+        pb.environment().put("RIPV_KNOWN_HOSTS", TestSystem.knownHosts().toString()); // test certificates stay out of ~/.ripv
         Process p = pb.start();
         String output = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
         assertThat(p.waitFor(60, TimeUnit.SECONDS)).isTrue();

@@ -42,6 +42,7 @@ class InteractiveCliTmuxTest {
         Files.writeString(launcher, String.join("\n",
                 "#!/bin/bash",
                 "unset RIPV_PASSWORD",
+                "export RIPV_KNOWN_HOSTS='" + TestSystem.knownHosts() + "'", // test servers' certificates stay out of ~/.ripv
                 "cd '" + dir + "'",
                 "'" + java + "' -cp '" + System.getProperty("java.class.path") + "' org.ripv.client.ClientMain cli"
                         + " --server localhost:" + sys.server().port() + " --user alice --history '" + history + "'",
