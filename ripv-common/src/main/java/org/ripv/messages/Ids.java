@@ -31,6 +31,13 @@ public final class Ids {
     public static final String FID_DOWNLOAD = "444470";
     public static final String FID_LOCK = "555667";
     public static final String FID_UNLOCK = "555668";
+    // The live console, vehicle state, transcript and notifications (docs/sessions.md).
+    public static final String FID_WATCH = "555700";
+    public static final String FID_UNWATCH = "555701";
+    public static final String FID_HISTORY = "555702";
+    public static final String FID_NOTIFY = "555703";
+    /** Console entries pushed to watchers (message id 0, status PROGRESS, a {@link ConsoleBatch}). */
+    public static final String FID_CONSOLE = "555790";
     /** Replies to a message the server could not attribute to any command or service. */
     public static final String FID_NONE = "000000";
 

@@ -37,6 +37,12 @@ import org.ripv.server.handlers.SocketHandler;
 import org.ripv.server.http.LandingPage;
 import org.ripv.server.permit.PermitFile;
 import org.ripv.server.permit.PermitWatcher;
+import org.ripv.server.notify.Notifier;
+import org.ripv.server.notify.NotifyCommands;
+import org.ripv.server.session.ConsoleCommands;
+import org.ripv.server.session.ConsoleHub;
+import org.ripv.server.session.Outlet;
+import org.ripv.messages.VehicleEvent;
 import org.ripv.wire.FrameCodec;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -63,6 +69,7 @@ public final class RIPVServer implements AutoCloseable {
     public static final String SERVER_SERVICE = "RIPVServer";
 
     private final ServerConfig config;
+    private final SessionOptions sessionOptions;
     private final Map<String, SocketHandler> clients = new ConcurrentHashMap<>();
     private final Map<String, ServiceReference> services = new ConcurrentHashMap<>();
     private final Map<String, OperatorLock> locks = new ConcurrentHashMap<>();
@@ -87,6 +94,10 @@ public final class RIPVServer implements AutoCloseable {
     private int registryPort;
     private LandingPage landingPage;
     private volatile boolean running;
+    private ConsoleHub console;
+    private Notifier notifier;
+    private ConsoleCommands consoleCommands;
+    private NotifyCommands notifyCommands;
 
     /** An operator's hold on a MailBox ({@code ?lock}). */
     record OperatorLock(String user, String clientId, long untilMillis) {
@@ -96,7 +107,13 @@ public final class RIPVServer implements AutoCloseable {
     }
 
     public RIPVServer(ServerConfig config) {
+        this(config, SessionOptions.defaults());
+    }
+
+    /** A server with vehicle-session options (transcripts, e-mail, notifications; docs/sessions.md). */
+    public RIPVServer(ServerConfig config, SessionOptions sessionOptions) {
         this.config = config;
+        this.sessionOptions = sessionOptions;
         this.timers = Executors.newScheduledThreadPool(1, named("ripv-server-timer"));
         this.checkers = Executors.newFixedThreadPool(4, named("ripv-service-query"));
         this.liveness = Executors.newFixedThreadPool(2, named("ripv-service-check"));
@@ -126,6 +143,7 @@ public final class RIPVServer implements AutoCloseable {
         codec = new FrameCodec(config.maxFrame());
         pending = new PendingRequests(timers, config.requestTimeout(), this::timedOut);
         box = postOffice.open(POST_OFFICE, new ServerTaskManager(this));
+        startSessions();
 
         InetAddress bind = config.bindAddress() == null ? null : InetAddress.getByName(config.bindAddress());
         try {
@@ -201,11 +219,42 @@ public final class RIPVServer implements AutoCloseable {
             }
         }
         RmiSupport.unexport(remote);
+        if (notifier != null) {
+            notifier.close();
+        }
+        if (console != null) {
+            console.close();
+        }
         timers.shutdownNow();
         checkers.shutdownNow();
         liveness.shutdownNow();
         fileWork.shutdownNow();
         postOffice.stop();
+    }
+
+    /** The live console, transcripts and notifications (org.ripv.server.session, .notify). */
+    private void startSessions() throws IOException {
+        console = new ConsoleHub(config.dataDir().resolve("transcripts"), sessionOptions.transcriptFileBytes(),
+                sessionOptions.keepDays());
+        notifier = new Notifier(config.dataDir().resolve("notify").resolve("subscriptions.jsonl"), this::permits,
+                sessionOptions.smtp(), sessionOptions.notifyBackoff(), sessionOptions.notifyTimeout());
+        console.onEvent(notifier::accept);
+        consoleCommands = new ConsoleCommands(console, this::permits, id -> client(id).map(RIPVServer::outlet), SERVER_SERVICE);
+        notifyCommands = new NotifyCommands(notifier, SERVER_SERVICE);
+    }
+
+    private static Outlet outlet(SocketHandler h) {
+        return new Outlet() {
+            @Override
+            public boolean push(OutgoingServerMessage message, Runnable written) {
+                return h.push(message, written);
+            }
+
+            @Override
+            public void send(OutgoingServerMessage reply) {
+                h.send(reply);
+            }
+        };
     }
 
     /** Starts the landing page on the configured HTTP port (-1: none). */
@@ -325,7 +374,14 @@ public final class RIPVServer implements AutoCloseable {
             clients.remove(client.clientId(), client);
             pending.forgetClient(client.clientId());
             files.abortAll(client.clientId());
-            locks.values().removeIf(l -> l.clientId().equals(client.clientId()));
+            console.clientClosed(client.clientId());
+            locks.entrySet().removeIf(e -> {
+                boolean mine = e.getValue().clientId().equals(client.clientId());
+                if (mine && !e.getValue().expired()) {
+                    console.serverEvent(e.getKey(), VehicleEvent.LOCK_RELEASED, e.getValue().user(), "its holder disconnected");
+                }
+                return mine;
+            });
         }
     }
 
@@ -354,6 +410,19 @@ public final class RIPVServer implements AutoCloseable {
 
     Map<String, OperatorLock> locks() {
         return locks;
+    }
+
+    ConsoleCommands consoleCommands() {
+        return consoleCommands;
+    }
+
+    NotifyCommands notifyCommands() {
+        return notifyCommands;
+    }
+
+    /** The live console: watchers, vehicle state, transcripts (tests and benchmarks look inside). */
+    public ConsoleHub console() {
+        return console;
     }
 
     Optional<SocketHandler> client(String clientId) {
@@ -438,6 +507,7 @@ public final class RIPVServer implements AutoCloseable {
 
     void drop(ServiceReference ref, String why) {
         ref.close();
+        console.serviceGone(ref.descriptor().name(), why);
         for (PendingRequests.Pending p : pending.failService(ref.descriptor().name())) {
             reply(new IncomingServerMessage(p.header()).reply(Footer.error(ref.descriptor().sid(), ErrorCode.SERVICE_GONE,
                     ref.descriptor().name() + " " + why + " before answering '" + Header.abbreviate(p.header().body())
@@ -450,18 +520,14 @@ public final class RIPVServer implements AutoCloseable {
      * the calling service's own MailBoxes are taken.
      */
     void console(ServiceReference ref, List<org.ripv.messages.ConsoleEntry> entries) {
-        String prefix = ref.descriptor().name();
-        for (org.ripv.messages.ConsoleEntry e : entries) {
-            if (e != null && e.mailbox().startsWith(prefix)) {
-                log.debug("console {}: {} {}", e.mailbox(), e.kind(), Header.abbreviate(e.text()));
-            }
-        }
+        console.publish(ref.descriptor().name(), entries);
     }
 
-    /** Current MailBox status with the operator lock added. */
+    /** Current MailBox status with the operator lock and the vehicle's call state added. */
     MailboxStatus withLock(MailboxStatus s) {
         OperatorLock l = locks.get(s.address());
-        return l == null || l.expired() ? s : s.withLock(l.user());
+        MailboxStatus withState = s.withSession(console.state(s.address()));
+        return l == null || l.expired() ? withState : withState.withLock(l.user());
     }
 
 

@@ -48,6 +48,8 @@ public final class SocketHandler {
     private final FrameCodec codec;
     private final Dispatcher dispatcher;
     private final BlockingQueue<OutgoingServerMessage> replies = new ArrayBlockingQueue<>(MAX_QUEUED_REPLIES);
+    /** Pushes whose sender wants to hear when they went out (console watchers pace themselves by it). */
+    private final java.util.Map<OutgoingServerMessage, Runnable> afterWrite = new java.util.concurrent.ConcurrentHashMap<>();
     private final Thread reader;
     private final Thread writer;
     private volatile IdBadge badge;
@@ -115,6 +117,23 @@ public final class SocketHandler {
         }
     }
 
+    /**
+     * Queues an unasked message (a console push); {@code written} runs on the writer thread once it
+     * has been written and flushed, so a sender can keep one push in flight and hold the rest
+     * itself. Never blocks; false when the connection is closed or too far behind.
+     */
+    public boolean push(OutgoingServerMessage message, Runnable written) {
+        if (closed || replies.remainingCapacity() < MAX_QUEUED_REPLIES / 2) {
+            return false;
+        }
+        afterWrite.put(message, written);
+        if (!replies.offer(message)) {
+            afterWrite.remove(message);
+            return false;
+        }
+        return true;
+    }
+
     private void readLoop() {
         String why = "closed the connection";
         try {
@@ -154,11 +173,16 @@ public final class SocketHandler {
     }
 
     private void writeLoop() {
+        List<Runnable> flushed = new java.util.ArrayList<>();
         try (DataOutputStream out = new DataOutputStream(new BufferedOutputStream(socket.getOutputStream(), 64 * 1024))) {
             while (!closed) {
                 OutgoingServerMessage m = replies.take();
                 if (m == POISON) {
                     break;
+                }
+                Runnable after = afterWrite.remove(m);
+                if (after != null) {
+                    flushed.add(after);
                 }
                 try {
                     codec.writeNoFlush(out, m);
@@ -166,16 +190,17 @@ public final class SocketHandler {
                     // Nothing was written yet: tell the client instead of cutting it off. A progress
                     // report is only dropped, so the request still ends in its one real final reply.
                     log.warn("client {}: reply to #{} not sent: {}", clientId, m.header().messageId(), tooLarge.getMessage());
-                    if (!m.status().isFinal()) {
-                        continue;
+                    if (m.status().isFinal()) {
+                        codec.writeNoFlush(out, new OutgoingServerMessage(m.header(), org.ripv.messages.Footer.error(
+                                m.footer().serviceId(), org.ripv.messages.ErrorCode.TOO_LARGE,
+                                "the reply was too large to send (" + tooLarge.getMessage() + "); ask for less, e.g. fewer rows")
+                                .via("RIPVServer")));
                     }
-                    codec.writeNoFlush(out, new OutgoingServerMessage(m.header(), org.ripv.messages.Footer.error(
-                            m.footer().serviceId(), org.ripv.messages.ErrorCode.TOO_LARGE,
-                            "the reply was too large to send (" + tooLarge.getMessage() + "); ask for less, e.g. fewer rows")
-                            .via("RIPVServer")));
                 }
                 if (replies.isEmpty()) {
                     out.flush();
+                    flushed.forEach(Runnable::run);
+                    flushed.clear();
                 }
             }
         } catch (InterruptedException e) {
@@ -196,6 +221,7 @@ public final class SocketHandler {
             closed = true;
         }
         replies.clear();
+        afterWrite.clear();
         replies.offer(POISON);
         try {
             socket.close();
