@@ -19,6 +19,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Properties;
+import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -74,6 +75,7 @@ public final class Notifier implements AutoCloseable {
     private final HttpClient client;
     private final AtomicInteger outstanding = new AtomicInteger();
     private final SecureRandom random = new SecureRandom();
+    private volatile boolean closed;
 
     /**
      * @param file    where subscriptions persist (DATA/notify/subscriptions.jsonl)
@@ -206,7 +208,7 @@ public final class Notifier implements AutoCloseable {
 
     private void result(Subscription s, String r) {
         s.lastResult(r);
-        if (!subscriptions.containsKey(s.id)) {
+        if (closed || !subscriptions.containsKey(s.id)) {
             return;
         }
         try {
@@ -236,27 +238,36 @@ public final class Notifier implements AutoCloseable {
                         + ": too many deliveries waiting");
                 continue;
             }
-            attempt(s, n, 1);
-        }
-    }
-
-    private void attempt(Subscription s, ConsoleHub.Notice n, int attempt) {
-        if (!subscriptions.containsKey(s.id)) {
-            outstanding.decrementAndGet();
-            return; // removed meanwhile
-        }
-        if (s.channel == Subscription.Channel.WEBHOOK) {
-            post(s, n, attempt);
-        } else {
-            try {
-                mail.execute(() -> mail(s, n, attempt));
-            } catch (RejectedExecutionException e) {
-                outstanding.decrementAndGet();
+            // One subscription's events go out in order: each waits for the one before (and its retries).
+            synchronized (s) {
+                s.tail = s.tail.thenCompose(v -> {
+                    CompletableFuture<Void> done = new CompletableFuture<>();
+                    attempt(s, n, 1, done);
+                    return done;
+                });
             }
         }
     }
 
-    private void post(Subscription s, ConsoleHub.Notice n, int attempt) {
+    private void attempt(Subscription s, ConsoleHub.Notice n, int attempt, CompletableFuture<Void> done) {
+        if (!subscriptions.containsKey(s.id) || closed) {
+            outstanding.decrementAndGet();
+            done.complete(null); // removed meanwhile
+            return;
+        }
+        if (s.channel == Subscription.Channel.WEBHOOK) {
+            post(s, n, attempt, done);
+        } else {
+            try {
+                mail.execute(() -> mail(s, n, attempt, done));
+            } catch (RejectedExecutionException e) {
+                outstanding.decrementAndGet();
+                done.complete(null);
+            }
+        }
+    }
+
+    private void post(Subscription s, ConsoleHub.Notice n, int attempt, CompletableFuture<Void> done) {
         HttpRequest req;
         try {
             req = HttpRequest.newBuilder(URI.create(s.target)).timeout(timeout)
@@ -264,22 +275,23 @@ public final class Notifier implements AutoCloseable {
                     .header("User-Agent", "RIPV-notify/1")
                     .POST(HttpRequest.BodyPublishers.ofString(webhookBody(s, n), StandardCharsets.UTF_8)).build();
         } catch (IllegalArgumentException e) {
-            failed(s, n, attempt, "bad URL: " + e.getMessage(), false);
+            failed(s, n, attempt, "bad URL: " + e.getMessage(), false, done);
             return;
         }
         client.sendAsync(req, HttpResponse.BodyHandlers.discarding()).whenComplete((resp, err) -> {
             if (err != null) {
                 Throwable c = err instanceof java.util.concurrent.CompletionException && err.getCause() != null ? err.getCause() : err;
-                failed(s, n, attempt, c.getClass().getSimpleName() + (c.getMessage() == null ? "" : ": " + c.getMessage()), true);
+                failed(s, n, attempt, c.getClass().getSimpleName() + (c.getMessage() == null ? "" : ": " + c.getMessage()), true,
+                        done);
             } else if (resp.statusCode() / 100 == 2) {
-                done(s, n, "ok " + resp.statusCode());
+                delivered(s, n, "ok " + resp.statusCode(), done);
             } else {
-                failed(s, n, attempt, "HTTP " + resp.statusCode(), resp.statusCode() >= 500 || resp.statusCode() == 429);
+                failed(s, n, attempt, "HTTP " + resp.statusCode(), resp.statusCode() >= 500 || resp.statusCode() == 429, done);
             }
         });
     }
 
-    private void mail(Subscription s, ConsoleHub.Notice n, int attempt) {
+    private void mail(Subscription s, ConsoleHub.Notice n, int attempt, CompletableFuture<Void> done) {
         try {
             Properties props = new Properties();
             props.put("mail.smtp.host", smtp.host());
@@ -302,24 +314,26 @@ public final class Notifier implements AutoCloseable {
             } else {
                 Transport.send(m);
             }
-            done(s, n, "ok (mail accepted by " + smtp.host() + ")");
+            delivered(s, n, "ok (mail accepted by " + smtp.host() + ")", done);
         } catch (MessagingException | RuntimeException e) {
-            failed(s, n, attempt, e.getClass().getSimpleName() + ": " + e.getMessage(), true);
+            failed(s, n, attempt, e.getClass().getSimpleName() + ": " + e.getMessage(), true, done);
         }
     }
 
-    private void done(Subscription s, ConsoleHub.Notice n, String how) {
+    private void delivered(Subscription s, ConsoleHub.Notice n, String how, CompletableFuture<Void> done) {
         outstanding.decrementAndGet();
         result(s, how + ": " + n.event().event() + " of " + n.event().mailbox() + " at " + Instant.now());
+        done.complete(null);
     }
 
-    private void failed(Subscription s, ConsoleHub.Notice n, int attempt, String why, boolean retry) {
+    private void failed(Subscription s, ConsoleHub.Notice n, int attempt, String why, boolean retry,
+                        CompletableFuture<Void> done) {
         if (retry && attempt < ATTEMPTS && !retries.isShutdown()) {
             long delay = backoff.toMillis() * (1L << (2 * (attempt - 1)));
             result(s, "failed (" + why + ") " + n.event().event() + " of " + n.event().mailbox() + " at " + Instant.now()
                     + "; try " + (attempt + 1) + " of " + ATTEMPTS + " in " + delay + " ms");
             try {
-                retries.schedule(() -> attempt(s, n, attempt + 1), delay, TimeUnit.MILLISECONDS);
+                retries.schedule(() -> attempt(s, n, attempt + 1, done), delay, TimeUnit.MILLISECONDS);
                 return;
             } catch (RejectedExecutionException e) {
                 // shutting down
@@ -329,6 +343,7 @@ public final class Notifier implements AutoCloseable {
         result(s, "failed (" + why + ") " + n.event().event() + " of " + n.event().mailbox() + " at " + Instant.now()
                 + (retry ? "; gave up after " + attempt + " tries" : ""));
         log.warn("notification {} to {} failed: {}", s.id, s.target, why);
+        done.complete(null);
     }
 
     static String vehicle(String mailbox) {
@@ -400,8 +415,14 @@ public final class Notifier implements AutoCloseable {
 
     @Override
     public void close() {
+        closed = true;
         retries.shutdownNow();
         mail.shutdownNow();
         http.shutdownNow();
+        try {
+            mail.awaitTermination(2, TimeUnit.SECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
     }
 }

@@ -23,6 +23,8 @@ final class Subscription {
     final String glob;
     private final Pattern pattern;
     private volatile String lastResult = "never used";
+    /** The end of this subscription's chain of deliveries (guarded by the subscription). */
+    java.util.concurrent.CompletableFuture<Void> tail = java.util.concurrent.CompletableFuture.completedFuture(null);
 
     Subscription(String id, String user, Channel channel, String target, Set<VehicleEvent> events, boolean allEvents,
                  String glob) {
