@@ -45,6 +45,8 @@ public final class CliCommand implements Callable<Integer> {
     Path truststore;
     @Option(names = "--truststore-password", defaultValue = "changeit", description = "The trust store's password (default ${DEFAULT-VALUE}).")
     String truststorePassword;
+    @Option(names = "--follow", paramLabel = "MAILBOX", description = "Print the MailBox's live console (lines, commands, events) until Ctrl-C; after any --exec lines.")
+    String follow;
     @Option(names = "--timeout", defaultValue = "3600", description = "Seconds to wait for one reply (default ${DEFAULT-VALUE}; the server fails silent requests sooner).")
     long timeout;
 
@@ -108,7 +110,7 @@ public final class CliCommand implements Callable<Integer> {
                             break;
                         }
                     }
-                } else {
+                } else if (follow == null) {
                     BufferedReader r = new BufferedReader(new InputStreamReader(in, StandardCharsets.UTF_8));
                     String line;
                     while ((line = r.readLine()) != null && session.run(line)) {
@@ -120,6 +122,14 @@ public final class CliCommand implements Callable<Integer> {
                 return EXIT_NO_SESSION;
             }
             out.flush();
+            if (follow != null) {
+                try {
+                    return new ConsoleFollower(client, out, err, json).follow(follow, Duration.ofSeconds(Math.min(timeout, 60)));
+                } catch (IOException e) {
+                    err.println("Error: " + e.getMessage());
+                    return EXIT_NO_SESSION;
+                }
+            }
             return session.anyError() ? EXIT_ERROR_REPLY : 0;
         }
     }
