@@ -235,7 +235,7 @@ public final class RIPVServer implements AutoCloseable {
     /** The live console, transcripts and notifications (org.ripv.server.session, .notify). */
     private void startSessions() throws IOException {
         console = new ConsoleHub(config.dataDir().resolve("transcripts"), sessionOptions.transcriptFileBytes(),
-                sessionOptions.keepDays());
+                sessionOptions.keepDays(), codec::encode);
         notifier = new Notifier(config.dataDir().resolve("notify").resolve("subscriptions.jsonl"), this::permits,
                 sessionOptions.smtp(), sessionOptions.notifyBackoff(), sessionOptions.notifyTimeout());
         console.onEvent(notifier::accept);
@@ -246,8 +246,8 @@ public final class RIPVServer implements AutoCloseable {
     private static Outlet outlet(SocketHandler h) {
         return new Outlet() {
             @Override
-            public boolean push(OutgoingServerMessage message, Runnable written) {
-                return h.push(message, written);
+            public boolean push(OutgoingServerMessage message, byte[] frame, Runnable written) {
+                return h.push(message, frame, written);
             }
 
             @Override

@@ -48,8 +48,11 @@ public final class SocketHandler {
     private final FrameCodec codec;
     private final Dispatcher dispatcher;
     private final BlockingQueue<OutgoingServerMessage> replies = new ArrayBlockingQueue<>(MAX_QUEUED_REPLIES);
+    /** A push: its frame if encoded once for many clients (else null), and what to run once it went out. */
+    private record Push(byte[] frame, Runnable written) {}
+
     /** Pushes whose sender wants to hear when they went out (console watchers pace themselves by it). */
-    private final java.util.Map<OutgoingServerMessage, Runnable> afterWrite = new java.util.concurrent.ConcurrentHashMap<>();
+    private final java.util.Map<OutgoingServerMessage, Push> afterWrite = new java.util.concurrent.ConcurrentHashMap<>();
     private final Thread reader;
     private final Thread writer;
     private volatile IdBadge badge;
@@ -120,13 +123,14 @@ public final class SocketHandler {
     /**
      * Queues an unasked message (a console push); {@code written} runs on the writer thread once it
      * has been written and flushed, so a sender can keep one push in flight and hold the rest
-     * itself. Never blocks; false when the connection is closed or too far behind.
+     * itself. {@code frame}, when not null, is the message already encoded (once for every
+     * client it goes to). Never blocks; false when the connection is closed or too far behind.
      */
-    public boolean push(OutgoingServerMessage message, Runnable written) {
+    public boolean push(OutgoingServerMessage message, byte[] frame, Runnable written) {
         if (closed || replies.remainingCapacity() < MAX_QUEUED_REPLIES / 2) {
             return false;
         }
-        afterWrite.put(message, written);
+        afterWrite.put(message, new Push(frame, written));
         if (!replies.offer(message)) {
             afterWrite.remove(message);
             return false;
@@ -180,12 +184,17 @@ public final class SocketHandler {
                 if (m == POISON) {
                     break;
                 }
-                Runnable after = afterWrite.remove(m);
-                if (after != null) {
-                    flushed.add(after);
+                Push push = afterWrite.remove(m);
+                if (push != null) {
+                    flushed.add(push.written());
                 }
                 try {
-                    codec.writeNoFlush(out, m);
+                    if (push != null && push.frame() != null) {
+                        out.writeInt(push.frame().length);
+                        out.write(push.frame());
+                    } else {
+                        codec.writeNoFlush(out, m);
+                    }
                 } catch (ProtocolException tooLarge) {
                     // Nothing was written yet: tell the client instead of cutting it off. A progress
                     // report is only dropped, so the request still ends in its one real final reply.

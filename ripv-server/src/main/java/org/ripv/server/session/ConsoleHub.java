@@ -34,6 +34,12 @@ public final class ConsoleHub implements AutoCloseable {
     /** An event with what a notification needs: the MailBox's state and its last lines. */
     public record Notice(ConsoleEntry event, SessionState state, List<ConsoleEntry> lastLines) {}
 
+    /** Turns a message into a frame's body (the server's codec). */
+    public interface Encoder {
+        byte[] encode(org.ripv.messages.Message m) throws IOException;
+    }
+
+    private final Encoder encoder;
     private final Transcript transcript;
     private final VehicleStates states;
     private final Map<String, CopyOnWriteArrayList<Watcher>> watchers = new ConcurrentHashMap<>();
@@ -45,8 +51,10 @@ public final class ConsoleHub implements AutoCloseable {
      * @param transcripts  the transcripts directory (DATA/transcripts)
      * @param maxFileBytes transcript files are cut at about this size
      * @param keepDays     transcript files older than this many days are deleted
+     * @param encoder      encodes a push once for all the watchers that are up to date
      */
-    public ConsoleHub(Path transcripts, long maxFileBytes, int keepDays) throws IOException {
+    public ConsoleHub(Path transcripts, long maxFileBytes, int keepDays, Encoder encoder) throws IOException {
+        this.encoder = encoder;
         this.transcript = new Transcript(transcripts, maxFileBytes, keepDays);
         this.states = new VehicleStates(transcript::dirOf);
     }
@@ -105,7 +113,14 @@ public final class ConsoleHub implements AutoCloseable {
             byMailbox.forEach((mailbox, list) -> {
                 List<Watcher> ws = watchers.get(mailbox);
                 if (ws != null && !ws.isEmpty()) {
-                    OutgoingServerMessage shared = Watcher.message(mailbox, list, 0);
+                    OutgoingServerMessage m = Watcher.message(mailbox, list, 0);
+                    byte[] frame;
+                    try {
+                        frame = encoder.encode(m);
+                    } catch (IOException x) {
+                        frame = null; // too large for one frame: each writer reports it
+                    }
+                    Watcher.Shared shared = new Watcher.Shared(m, frame);
                     for (Watcher w : ws) {
                         w.offer(list, shared);
                     }

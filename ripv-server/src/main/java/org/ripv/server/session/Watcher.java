@@ -44,9 +44,12 @@ final class Watcher {
         this.outlet = outlet;
     }
 
-    /** Takes new entries; pushes at once if nothing is in flight. The shared message is used when it can be. */
-    void offer(List<ConsoleEntry> entries, OutgoingServerMessage shared) {
-        OutgoingServerMessage now = null;
+    /** A push built and encoded once for every watcher that is up to date. */
+    record Shared(OutgoingServerMessage message, byte[] frame) {}
+
+    /** Takes new entries; pushes at once if nothing is in flight. The shared push is used when it can be. */
+    void offer(List<ConsoleEntry> entries, Shared shared) {
+        Shared now = null;
         synchronized (this) {
             if (stopped) {
                 return;
@@ -69,7 +72,7 @@ final class Watcher {
             }
         }
         if (now != null) {
-            send(now);
+            send(now.message(), now.frame());
         } else {
             pump();
         }
@@ -96,11 +99,11 @@ final class Watcher {
             next = message(mailbox, batch, lost);
             inFlight = true;
         }
-        send(next);
+        send(next, null);
     }
 
-    private void send(OutgoingServerMessage m) {
-        if (!outlet.push(m, this::written)) {
+    private void send(OutgoingServerMessage m, byte[] frame) {
+        if (!outlet.push(m, frame, this::written)) {
             synchronized (this) {
                 inFlight = false; // the connection is closing, or full of replies: the next entry tries again
             }
