@@ -149,7 +149,14 @@ public final class Json {
                 throw new IllegalArgumentException("bad value at " + start);
             }
             try {
-                return n.matches("-?\\d{1,18}") ? (Object) Long.parseLong(n) : (Object) Double.parseDouble(n);
+                if (n.matches("-?\\d{1,19}")) {
+                    try {
+                        return Long.parseLong(n);
+                    } catch (NumberFormatException tooBig) {
+                        return Double.parseDouble(n);
+                    }
+                }
+                return Double.parseDouble(n);
             } catch (NumberFormatException e) {
                 throw new IllegalArgumentException("bad number '" + n + "'");
             }

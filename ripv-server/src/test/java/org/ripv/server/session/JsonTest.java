@@ -38,7 +38,7 @@ class JsonTest {
         ConsoleEntry e = new ConsoleEntry(1_795_000_000_123L, "<S>::<h>ru29", ConsoleEntry.Kind.EVENT, "", "GPS", VehicleEvent.SURFACED,
                 41.63323, -70.53647);
         String json = Entries.toJson(e);
-        assertThat(json).isEqualTo("{\"time\":\"2026-11-18T08:26:40.123Z\",\"mailbox\":\"<S>::<h>ru29\",\"kind\":\"event\","
+        assertThat(json).isEqualTo("{\"time\":\"2026-11-18T11:06:40.123Z\",\"mailbox\":\"<S>::<h>ru29\",\"kind\":\"event\","
                 + "\"text\":\"GPS\",\"event\":\"SURFACED\",\"lat\":41.63323,\"lon\":-70.53647}");
         assertThat(Entries.fromJson(json)).isEqualTo(e);
         ConsoleEntry c = new ConsoleEntry(5, "<S>::<h>ru29", ConsoleEntry.Kind.COMMAND, "alice", "dir", null, null, null);
