@@ -46,7 +46,7 @@ public final class ConsoleBench implements Callable<Integer> {
     @Option(names = "--warmup", defaultValue = "3", description = "Warm-up seconds per phase (default ${DEFAULT-VALUE}).")
     int warmup;
     @Option(names = "--full-clients", defaultValue = "10", description = "How many of the watchers are full clients that"
-            + " deserialize every push (default ${DEFAULT-VALUE}); the others read raw frames (see RawWatcher).")
+            + " deserialize every push (default ${DEFAULT-VALUE}); the others read raw frames (see RawWatchers).")
     int fullClients;
 
     private final PrintStream out;
@@ -131,7 +131,7 @@ public final class ConsoleBench implements Callable<Integer> {
         String box = vehicle.mailbox();
         int capacity = rate * (seconds + 2);
         try {
-            out.printf("(%d of the watchers are full clients; the rest read raw frames: RawWatcher)%n",
+            out.printf("(%d of the watchers are full clients; the rest read raw frames on one selector thread: RawWatchers)%n",
                     Math.min(fullClients, watchers));
             List<Watch> one = connect(server, box, 1, capacity, null);
             Figures base = run(vehicle, one);
@@ -139,12 +139,11 @@ public final class ConsoleBench implements Callable<Integer> {
             close(one);
 
             List<Watch> crowd = connect(server, box, Math.min(fullClients, watchers), capacity, null);
+            RawWatchers raws = new RawWatchers();
             for (int i = crowd.size(); i < watchers; i++) {
-                Watch[] holder = new Watch[1];
-                RawWatcher raw = new RawWatcher("localhost", server.port(), "bench", "bench-password".toCharArray(), box,
-                        nanos -> holder[0].record(nanos));
-                holder[0] = new Watch(raw, capacity, null);
-                crowd.add(holder[0]);
+                Watch w = new Watch(() -> { }, capacity, null);
+                raws.add("localhost", server.port(), "bench", "bench-password".toCharArray(), box, w::record);
+                crowd.add(w);
             }
             Figures many = run(vehicle, crowd);
             report(watchers + " watchers", many, base);
@@ -162,6 +161,7 @@ public final class ConsoleBench implements Callable<Integer> {
                     backlog, 2_000, heapBefore >> 20, heapAfter >> 20, seconds + warmup);
             out.printf("  p99 with it / p99 without it: %.2f× (target: unchanged)%n", withStall.p99Ms() / many.p99Ms());
             close(crowd);
+            raws.close();
             // Then a flood the never-reading one cannot absorb in socket buffers: its backlog must stay bounded.
             String pad = "x".repeat(200);
             for (int i = 0; i < 50_000; i++) {
