@@ -71,6 +71,7 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
     private final Requests requests;
     private final ReplyDispatcher dispatcher;
     private final Transfers transfers;
+    private final DesktopNotice desktop;
 
     /** A manager for the Swing GUI: changes go to the event thread. */
     public GuiManager(ClientModel model) {
@@ -95,6 +96,7 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
         this.requests = new Requests(model, io, session::connection, this);
         this.dispatcher = new ReplyDispatcher(this, requests);
         this.transfers = new Transfers(model, ui, io, session::connection, this, requests);
+        this.desktop = new DesktopNotice(model::notice);
     }
 
     private static ThreadFactory named(String prefix) {
@@ -338,6 +340,22 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
             if (m != null) {
                 m.picture(new ServiceModel.Picture(image, decoded));
                 model.fire(ClientModel.Kind.IMAGE, service);
+            }
+        });
+    }
+
+    @Override
+    public void showConsole(org.ripv.messages.ConsoleBatch batch, boolean live) {
+        ui.execute(() -> {
+            model.console().add(batch);
+            if (live) {
+                for (org.ripv.messages.ConsoleEntry e : batch.entries()) {
+                    if (ConsoleModel.notifies(e)) {
+                        String vehicle = e.mailbox().substring(e.mailbox().lastIndexOf('>') + 1);
+                        desktop.show("RIPV: " + vehicle + " " + e.event(), e.text().isEmpty() ? e.mailbox() : e.text(),
+                                e.event() == org.ripv.messages.VehicleEvent.ALERT);
+                    }
+                }
             }
         });
     }
