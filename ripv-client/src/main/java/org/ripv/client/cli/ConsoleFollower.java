@@ -108,7 +108,7 @@ public final class ConsoleFollower implements ClientSocketHandler.Listener {
         if (e.event() != null) {
             m.put("event", e.event().name());
         }
-        if (e.lat() != null && e.lon() != null) {
+        if (e.lat() != null && e.lon() != null && Double.isFinite(e.lat()) && Double.isFinite(e.lon())) {
             m.put("lat", e.lat());
             m.put("lon", e.lon());
         }

@@ -191,6 +191,34 @@ class ConsoleSessionTest {
     }
 
     @Test
+    void hostileEntriesAreCutOrIgnored() throws Exception {
+        ClientSocketHandler olga = sys.login("olga");
+        Pushes o = Pushes.on(olga);
+        call(olga, "?watch " + box);
+        String other = "<SerialPortServer>::<localhost>ru29";
+        Pushes elsewhere = Pushes.on(olga);
+        call(olga, "?watch " + other);
+        vehicle.publishEntry(ConsoleEntry.line(other, "pretending to be another service's vehicle"));
+        vehicle.publishEntry(ConsoleEntry.line("<VehicleConsole>::<localhost>../../etc", "a malformed MailBox"));
+        vehicle.publishEntry(ConsoleEntry.line(box, "m".repeat(1_000_000)));
+        vehicle.publishEntry(new ConsoleEntry(Long.MAX_VALUE / 2, box, ConsoleEntry.Kind.LINE, "u".repeat(500),
+                "from the far future \u0000\u0007\u001b[31m", null, Double.NaN, 1e300));
+        vehicle.line("end");
+        assertThat(o.await(e -> e.text().equals("end"), T)).isTrue();
+        assertThat(o.entries).hasSize(3);
+        assertThat(o.entries.get(0).text()).hasSize(4096 + " [cut: 995904 more characters]".length())
+                .endsWith("[cut: 995904 more characters]");
+        ConsoleEntry future = o.entries.get(1);
+        assertThat(future.time()).isBetween(System.currentTimeMillis() - 60_000, System.currentTimeMillis());
+        assertThat(future.user()).hasSize(64);
+        assertThat(elsewhere.entries.stream().filter(e -> e.mailbox().equals(other))).isEmpty();
+        // The junk position is not taken as the vehicle's position; the transcript reads back.
+        assertThat(sys.server().console().state(box).hasPosition()).isFalse();
+        List<ConsoleEntry> h = ((ConsoleBatch) call(olga, "?history " + box).footer().result()).entries();
+        assertThat(h).extracting(ConsoleEntry::text).contains("from the far future \u0000\u0007\u001b[31m", "end");
+    }
+
+    @Test
     void aWatcherThatDisconnectsLeavesNothingBehind() throws Exception {
         List<ClientSocketHandler> clients = IntStream.range(0, 20).mapToObj(i -> {
             try {

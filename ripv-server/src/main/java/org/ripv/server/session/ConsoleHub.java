@@ -30,6 +30,10 @@ public final class ConsoleHub implements AutoCloseable {
     public static final int MAX_WATCHES_PER_CLIENT = 64;
     /** Recent entries a new watcher gets with its {@code ?watch} reply. */
     static final int REPLAY = 20;
+    /** Distinct MailBoxes one service may publish for (a hostile service cannot grow the state without end). */
+    public static final int MAX_MAILBOXES_PER_SERVICE = 1_000;
+    private static final long DAY_MILLIS = 24L * 3600 * 1000;
+    private final Map<String, Set<String>> mailboxesOf = new ConcurrentHashMap<>();
 
     /** An event with what a notification needs: the MailBox's state and its last lines. */
     public record Notice(ConsoleEntry event, SessionState state, List<ConsoleEntry> lastLines) {}
@@ -69,17 +73,49 @@ public final class ConsoleHub implements AutoCloseable {
     }
 
     /**
-     * Entries a service published. Only those for MailBoxes under {@code servicePrefix} (the
-     * service's full name) are taken; null entries are ignored.
+     * Entries a service published, treated as hostile: only those for well-formed MailBoxes under
+     * {@code servicePrefix} (the service's full name) are taken, at most
+     * {@link #MAX_MAILBOXES_PER_SERVICE} distinct MailBoxes per service; text is cut to
+     * {@link Entries#MAX_TEXT} characters; a time more than a day away from the server's clock is
+     * replaced by the server's. Null entries are ignored.
      */
     public void publish(String servicePrefix, List<ConsoleEntry> entries) {
         List<ConsoleEntry> mine = new ArrayList<>(entries.size());
+        long now = System.currentTimeMillis();
         for (ConsoleEntry e : entries) {
-            if (e != null && e.mailbox().startsWith(servicePrefix) && e.mailbox().length() > servicePrefix.length()) {
-                mine.add(e);
+            if (e == null || !e.mailbox().startsWith(servicePrefix) || e.mailbox().length() <= servicePrefix.length()
+                    || !known(servicePrefix, e.mailbox())) {
+                continue;
             }
+            String text = e.text().length() <= Entries.MAX_TEXT ? e.text()
+                    : e.text().substring(0, Entries.MAX_TEXT) + " [cut: " + (e.text().length() - Entries.MAX_TEXT) + " more characters]";
+            long time = Math.abs(e.time() - now) > DAY_MILLIS ? now : e.time();
+            String user = e.user().length() <= 64 ? e.user() : e.user().substring(0, 64);
+            if (text != e.text() || time != e.time() || user != e.user()) {
+                e = new ConsoleEntry(time, e.mailbox(), e.kind(), user, text, e.event(), e.lat(), e.lon());
+            }
+            mine.add(e);
         }
         take(mine);
+    }
+
+    /** True when the MailBox is well formed and one the service may still add (or has already). */
+    private boolean known(String servicePrefix, String mailbox) {
+        Set<String> seen = mailboxesOf.computeIfAbsent(servicePrefix, k -> ConcurrentHashMap.newKeySet());
+        if (seen.contains(mailbox)) {
+            return true;
+        }
+        try {
+            org.ripv.naming.MailboxAddress.parse(mailbox);
+        } catch (IllegalArgumentException e) {
+            return false;
+        }
+        if (seen.size() >= MAX_MAILBOXES_PER_SERVICE) {
+            log.warn("{} published for more than {} MailBoxes; ignoring {}", servicePrefix, MAX_MAILBOXES_PER_SERVICE, mailbox);
+            return false;
+        }
+        seen.add(mailbox);
+        return true;
     }
 
     /** An event the server itself observed (locks, a service lost mid-call). */

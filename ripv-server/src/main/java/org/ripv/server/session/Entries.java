@@ -33,7 +33,7 @@ public final class Entries {
         if (e.event() != null) {
             m.put("event", e.event().name());
         }
-        if (e.lat() != null && e.lon() != null) {
+        if (e.lat() != null && e.lon() != null && Double.isFinite(e.lat()) && Double.isFinite(e.lon())) {
             m.put("lat", e.lat());
             m.put("lon", e.lon());
         }

@@ -23,8 +23,8 @@ public final class Json {
             quote(b, e.getKey());
             b.append(':');
             Object v = e.getValue();
-            if (v == null) {
-                b.append("null");
+            if (v == null || v instanceof Double d && !Double.isFinite(d) || v instanceof Float f && !Float.isFinite(f)) {
+                b.append("null"); // JSON has no NaN or Infinity
             } else if (v instanceof Number || v instanceof Boolean) {
                 b.append(v);
             } else {
