@@ -37,12 +37,7 @@ import org.ripv.server.handlers.SocketHandler;
 import org.ripv.server.http.LandingPage;
 import org.ripv.server.permit.PermitFile;
 import org.ripv.server.permit.PermitWatcher;
-import org.ripv.server.notify.Notifier;
-import org.ripv.server.notify.NotifyCommands;
-import org.ripv.server.session.ConsoleCommands;
 import org.ripv.server.session.ConsoleHub;
-import org.ripv.server.session.Outlet;
-import org.ripv.messages.VehicleEvent;
 import org.ripv.wire.FrameCodec;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -94,10 +89,7 @@ public final class RIPVServer implements AutoCloseable {
     private int registryPort;
     private LandingPage landingPage;
     private volatile boolean running;
-    private ConsoleHub console;
-    private Notifier notifier;
-    private ConsoleCommands consoleCommands;
-    private NotifyCommands notifyCommands;
+    private ServerSessions sessions;
 
     /** An operator's hold on a MailBox ({@code ?lock}). */
     record OperatorLock(String user, String clientId, long untilMillis) {
@@ -143,7 +135,7 @@ public final class RIPVServer implements AutoCloseable {
         codec = new FrameCodec(config.maxFrame());
         pending = new PendingRequests(timers, config.requestTimeout(), this::timedOut);
         box = postOffice.open(POST_OFFICE, new ServerTaskManager(this));
-        startSessions();
+        sessions = new ServerSessions(config.dataDir(), sessionOptions, this::permits, this::client, codec);
 
         InetAddress bind = config.bindAddress() == null ? null : InetAddress.getByName(config.bindAddress());
         try {
@@ -219,42 +211,14 @@ public final class RIPVServer implements AutoCloseable {
             }
         }
         RmiSupport.unexport(remote);
-        if (notifier != null) {
-            notifier.close();
-        }
-        if (console != null) {
-            console.close();
+        if (sessions != null) {
+            sessions.close();
         }
         timers.shutdownNow();
         checkers.shutdownNow();
         liveness.shutdownNow();
         fileWork.shutdownNow();
         postOffice.stop();
-    }
-
-    /** The live console, transcripts and notifications (org.ripv.server.session, .notify). */
-    private void startSessions() throws IOException {
-        console = new ConsoleHub(config.dataDir().resolve("transcripts"), sessionOptions.transcriptFileBytes(),
-                sessionOptions.keepDays(), codec::encode);
-        notifier = new Notifier(config.dataDir().resolve("notify").resolve("subscriptions.jsonl"), this::permits,
-                sessionOptions.smtp(), sessionOptions.notifyBackoff(), sessionOptions.notifyTimeout());
-        console.onEvent(notifier::accept);
-        consoleCommands = new ConsoleCommands(console, this::permits, id -> client(id).map(RIPVServer::outlet), SERVER_SERVICE);
-        notifyCommands = new NotifyCommands(notifier, SERVER_SERVICE);
-    }
-
-    private static Outlet outlet(SocketHandler h) {
-        return new Outlet() {
-            @Override
-            public boolean push(OutgoingServerMessage message, byte[] frame, Runnable written) {
-                return h.push(message, frame, written);
-            }
-
-            @Override
-            public void send(OutgoingServerMessage reply) {
-                h.send(reply);
-            }
-        };
     }
 
     /** Starts the landing page on the configured HTTP port (-1: none). */
@@ -374,14 +338,7 @@ public final class RIPVServer implements AutoCloseable {
             clients.remove(client.clientId(), client);
             pending.forgetClient(client.clientId());
             files.abortAll(client.clientId());
-            console.clientClosed(client.clientId());
-            locks.entrySet().removeIf(e -> {
-                boolean mine = e.getValue().clientId().equals(client.clientId());
-                if (mine && !e.getValue().expired()) {
-                    console.serverEvent(e.getKey(), VehicleEvent.LOCK_RELEASED, e.getValue().user(), "its holder disconnected");
-                }
-                return mine;
-            });
+            sessions.clientClosed(client.clientId(), locks);
         }
     }
 
@@ -412,17 +369,13 @@ public final class RIPVServer implements AutoCloseable {
         return locks;
     }
 
-    ConsoleCommands consoleCommands() {
-        return consoleCommands;
-    }
-
-    NotifyCommands notifyCommands() {
-        return notifyCommands;
+    ServerSessions sessions() {
+        return sessions;
     }
 
     /** The live console: watchers, vehicle state, transcripts (tests and benchmarks look inside). */
     public ConsoleHub console() {
-        return console;
+        return sessions.console();
     }
 
     Optional<SocketHandler> client(String clientId) {
@@ -507,7 +460,7 @@ public final class RIPVServer implements AutoCloseable {
 
     void drop(ServiceReference ref, String why) {
         ref.close();
-        console.serviceGone(ref.descriptor().name(), why);
+        sessions.console().serviceGone(ref.descriptor().name(), why);
         for (PendingRequests.Pending p : pending.failService(ref.descriptor().name())) {
             reply(new IncomingServerMessage(p.header()).reply(Footer.error(ref.descriptor().sid(), ErrorCode.SERVICE_GONE,
                     ref.descriptor().name() + " " + why + " before answering '" + Header.abbreviate(p.header().body())
@@ -520,13 +473,13 @@ public final class RIPVServer implements AutoCloseable {
      * the calling service's own MailBoxes are taken.
      */
     void console(ServiceReference ref, List<org.ripv.messages.ConsoleEntry> entries) {
-        console.publish(ref.descriptor().name(), entries);
+        sessions.console().publish(ref.descriptor().name(), entries);
     }
 
     /** Current MailBox status with the operator lock and the vehicle's call state added. */
     MailboxStatus withLock(MailboxStatus s) {
         OperatorLock l = locks.get(s.address());
-        MailboxStatus withState = s.withSession(console.state(s.address()));
+        MailboxStatus withState = s.withSession(sessions.console().state(s.address()));
         return l == null || l.expired() ? withState : withState.withLock(l.user());
     }
 

@@ -214,9 +214,9 @@ final class ServerCommands {
                 return ok(request, c, address + " unlocked", null);
             }
             case "?watch", "?unwatch", "?history":
-                return server.consoleCommands().run(request, c.fid(), w);
+                return server.sessions().consoleCommands().run(request, c.fid(), w);
             case "?notify":
-                return server.notifyCommands().run(request, c.fid(), w);
+                return server.sessions().notifyCommands().run(request, c.fid(), w);
             default:
                 throw new IllegalStateException("no handler for " + w[0]);
         }
