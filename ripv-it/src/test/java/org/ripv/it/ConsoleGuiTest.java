@@ -105,6 +105,33 @@ class ConsoleGuiTest {
     }
 
     @Test
+    void theModelWatchesAgainAfterReconnecting() throws Exception {
+        ui = new ClientGuiTest.UiThread();
+        model = new ClientModel();
+        manager = new GuiManager(model, ui, ClientSocketHandler::connect,
+                new GuiManager.Timings(Duration.ofMillis(500), Duration.ofMillis(200), Duration.ofSeconds(1)));
+        manager.logIn("localhost", sys.server().port(), "alice", TestSystem.PASSWORD.toCharArray()).get(20, TimeUnit.SECONDS);
+        String box = vehicle.mailbox();
+        until("the vehicle's mailbox as the target", () -> model.service(SERVICE) == null ? "" : model.service(SERVICE).target(),
+                box::equals);
+        until("the watch", () -> sys.server().console().watcherCount(), n -> n == 1);
+        int port = sys.server().port();
+        int registry = sys.server().registryPort();
+        sys.server().stop();
+        try (org.ripv.server.RIPVServer again = new org.ripv.server.RIPVServer(
+                org.ripv.server.ServerConfig.forTests(sys.dataDir()).withPorts(port, registry, -1))) {
+            again.start();
+            until("watching again on the new server", () -> again.console().watcherCount(), n -> n == 1);
+            until("the vehicle registered again", () -> again.serviceCount(), n -> n == 1);
+            vehicle.line("after the restart");
+            until("the line after the restart", () -> model.console().entries(box).stream().map(ConsoleEntry::text).toList(),
+                    l -> l.contains("after the restart"));
+            manager.close();
+            manager = null;
+        }
+    }
+
+    @Test
     void windowShowsTheLiveConsoleAndTheStateBadge() throws Exception {
         ClientGuiTest.requireDisplay();
         vehicle.event(VehicleEvent.SURFACED, "Glider ru29 at surface", 41.63323, -70.53647);

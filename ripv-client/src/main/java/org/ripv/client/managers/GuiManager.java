@@ -288,7 +288,15 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
 
     @Override
     public void showSession(SessionInfo session) {
-        ui.execute(() -> model.session(session));
+        ui.execute(() -> {
+            model.session(session);
+            // A new connection (after a drop) watches nothing yet: watch the targets again.
+            for (ServiceModel m : model.services()) {
+                if (!m.target().isEmpty()) {
+                    requests.send("", "?watch " + m.target(), Priority.NORMAL, null);
+                }
+            }
+        });
     }
 
     @Override
