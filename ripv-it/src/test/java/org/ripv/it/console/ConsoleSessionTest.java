@@ -135,6 +135,27 @@ class ConsoleSessionTest {
     }
 
     @Test
+    void aServiceRestartedMidCallLeavesTheVehicleLostUntilItsNextCall() throws Exception {
+        ClientSocketHandler olga = sys.login("olga");
+        Pushes o = Pushes.on(olga);
+        call(olga, "?watch " + box);
+        vehicle.event(VehicleEvent.SURFACED, "", 41.5, -70.5);
+        assertThat(o.await(e -> e.event() == VehicleEvent.SURFACED, T)).isTrue();
+        // The same service registers again (a restart): the call in progress is lost.
+        VehicleConsoleService restarted = new VehicleConsoleService("localhost", "ru29");
+        sys.register(restarted);
+        assertThat(o.await(e -> e.event() == VehicleEvent.LINK_LOST, T)).isTrue();
+        assertThat(o.entries.stream().filter(e -> e.event() == VehicleEvent.LINK_LOST).findFirst().orElseThrow().text())
+                .contains("registered again");
+        assertThat(sys.server().console().state(box).state()).isEqualTo(SessionState.State.LOST);
+        restarted.event(VehicleEvent.SURFACED, "", 41.6, -70.6);
+        assertThat(o.await(e -> e.event() == VehicleEvent.SURFACED && e.lat() == 41.6, T)).isTrue();
+        SessionState s = sys.server().console().state(box);
+        assertThat(s.state()).isEqualTo(SessionState.State.ON_CALL);
+        assertThat(s.calls()).isEqualTo(2);
+    }
+
+    @Test
     void aSlowWatcherSkipsWithAMarkerWhileTheOthersGetEverything() throws Exception {
         ClientSocketHandler fast = sys.login("alice");
         ClientSocketHandler slow = sys.login("olga");
