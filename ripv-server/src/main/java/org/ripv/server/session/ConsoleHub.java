@@ -188,9 +188,11 @@ public final class ConsoleHub implements AutoCloseable {
                 return "a connection may watch at most " + MAX_WATCHES_PER_CLIENT + " MailBoxes";
             }
             Watcher w = new Watcher(clientId, user, mailbox, outlet);
-            outlet.send(reply.apply(states.state(mailbox), states.recent(mailbox, REPLAY)));
             mine.add(w);
             watchers.computeIfAbsent(mailbox, k -> new CopyOnWriteArrayList<>()).add(w);
+            // Still under the lock, so no push can come first; and if sending closes the
+            // connection (too far behind), clientClosed finds the watcher and removes it.
+            outlet.send(reply.apply(states.state(mailbox), states.recent(mailbox, REPLAY)));
             return null;
         }
     }
