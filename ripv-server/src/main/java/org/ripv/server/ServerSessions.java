@@ -49,6 +49,11 @@ final class ServerSessions implements AutoCloseable {
             public void send(OutgoingServerMessage reply) {
                 h.send(reply);
             }
+
+            @Override
+            public boolean isOpen() {
+                return !h.isClosed();
+            }
         };
     }
 

@@ -193,6 +193,9 @@ public final class ConsoleHub implements AutoCloseable {
             // Still under the lock, so no push can come first; and if sending closes the
             // connection (too far behind), clientClosed finds the watcher and removes it.
             outlet.send(reply.apply(states.state(mailbox), states.recent(mailbox, REPLAY)));
+            if (!outlet.isOpen()) {
+                clientClosed(clientId); // it closed while we registered: whether or not its close saw this watch
+            }
             return null;
         }
     }

@@ -12,4 +12,7 @@ public interface Outlet {
 
     /** Queues an ordinary reply. */
     void send(OutgoingServerMessage reply);
+
+    /** False once the connection has closed (its watches are then being removed, or must be). */
+    boolean isOpen();
 }
