@@ -77,6 +77,9 @@ class ConsoleGuiTest {
 
     @Test
     void theModelWatchesThePickedMailboxAndNotifiesOnSurfacing() throws Exception {
+        for (int i = 0; i < 30; i++) {
+            vehicle.line("old " + i);
+        }
         vehicle.line("printed before the client came");
         ui = new ClientGuiTest.UiThread();
         model = new ClientModel();
@@ -87,7 +90,14 @@ class ConsoleGuiTest {
         until("the vehicle's mailbox as the target", () -> model.service(SERVICE) == null ? "" : model.service(SERVICE).target(),
                 box::equals);
         until("the replay", () -> model.console().entries(box), l -> !l.isEmpty());
-        assertThat(ui.get(() -> model.console().entries(box).get(0).text())).isEqualTo("printed before the client came");
+        assertThat(ui.get(() -> model.console().entries(box))).hasSize(20).last()
+                .extracting(ConsoleEntry::text).isEqualTo("printed before the client came");
+        // Scrolling back: the transcript fills in what came before the replay, once and in order.
+        manager.loadHistory(box);
+        until("the older lines", () -> model.console().entries(box).size(), n -> n == 31);
+        manager.loadHistory(box);
+        assertThat(ui.get(() -> model.console().entries(box).stream().map(ConsoleEntry::text).toList()))
+                .startsWith("old 0", "old 1").hasSize(31).doesNotHaveDuplicates();
         vehicle.event(VehicleEvent.SURFACED, "Glider ru29 at surface", 41.63323, -70.53647);
         vehicle.line("unsolicited: battery 14.2 V");
         until("the live lines", () -> model.console().entries(box).stream().map(ConsoleEntry::text).toList(),
@@ -161,6 +171,10 @@ class ConsoleGuiTest {
             ClientGuiTest.waitFor("unsolicited lines in the console", () -> console.consoleText().contains("LEAK detected"));
             ClientGuiTest.waitFor("the state badge", () -> console.badgeText().contains("on call"));
             assertThat(console.consoleText()).contains("[bob] > report ++ m_battery", "* SURFACED Glider ru29 at surface (41.63323, -70.53647)");
+            window.textBox("consoleSearch").setText("battery");
+            ClientGuiTest.waitFor("only the lines with 'battery'", () -> !console.consoleText().contains("LEAK"));
+            assertThat(console.consoleText().lines()).hasSize(9).allMatch(l -> l.contains("battery"));
+            window.textBox("consoleSearch").setText("");
             ClientGuiTest.waitFor("the badge in the MAM tree", () -> {
                 javax.swing.tree.TreeModel tm = tab.mam().tree().getModel();
                 Object root = tm.getRoot();

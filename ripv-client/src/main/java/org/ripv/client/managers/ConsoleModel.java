@@ -55,6 +55,26 @@ public final class ConsoleModel {
         listeners.forEach(l -> l.changed(batch.mailbox()));
     }
 
+    /**
+     * Adds transcript entries ({@code ?history}) before what is shown: those older than the
+     * oldest entry kept, so scrolling back never repeats or reorders lines.
+     */
+    void addHistory(ConsoleBatch batch) {
+        ArrayDeque<ConsoleEntry> list = entries.computeIfAbsent(batch.mailbox(), k -> new ArrayDeque<>());
+        List<ConsoleEntry> history = batch.entries();
+        // Where the transcript meets what is shown: the first entry kept, found by value (times
+        // alone collide within a millisecond); failing that, whatever is strictly older.
+        int meet = list.isEmpty() ? history.size() : history.indexOf(list.peekFirst());
+        long oldest = list.isEmpty() ? Long.MAX_VALUE : list.peekFirst().time();
+        List<ConsoleEntry> older = meet >= 0 ? history.subList(0, meet)
+                : history.stream().filter(e -> e.time() < oldest).toList();
+        for (int i = older.size() - 1; i >= 0 && list.size() < MAX_ENTRIES; i--) {
+            list.addFirst(older.get(i));
+        }
+        revisions.merge(batch.mailbox(), 1L, Long::sum);
+        listeners.forEach(l -> l.changed(batch.mailbox()));
+    }
+
     public List<ConsoleEntry> entries(String mailbox) {
         ArrayDeque<ConsoleEntry> list = entries.get(mailbox);
         return list == null ? List.of() : List.copyOf(list);

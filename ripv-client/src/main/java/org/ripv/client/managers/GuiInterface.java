@@ -71,4 +71,8 @@ public interface GuiInterface {
      */
     default void showConsole(org.ripv.messages.ConsoleBatch batch, boolean live) {
     }
+
+    /** Transcript entries ({@code ?history}, 555702) to put before a console's lines. */
+    default void showHistory(org.ripv.messages.ConsoleBatch batch) {
+    }
 }

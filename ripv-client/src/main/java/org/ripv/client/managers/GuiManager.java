@@ -352,6 +352,19 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
         });
     }
 
+    /** Fetches older lines of a MailBox's console from the server's transcript. Any thread. */
+    public void loadHistory(String mailbox) {
+        if (mailbox != null && !mailbox.isEmpty()) {
+            requests.send("", "?history " + mailbox + " --last " + org.ripv.client.managers.ConsoleModel.MAX_ENTRIES / 5,
+                    Priority.NORMAL, null);
+        }
+    }
+
+    @Override
+    public void showHistory(org.ripv.messages.ConsoleBatch batch) {
+        ui.execute(() -> model.console().addHistory(batch));
+    }
+
     @Override
     public void showConsole(org.ripv.messages.ConsoleBatch batch, boolean live) {
         ui.execute(() -> {

@@ -102,6 +102,12 @@ final class ReplyDispatcher {
                     gui.showSession(s);
                 }
             }
+            case Ids.FID_HISTORY -> {
+                if (result instanceof org.ripv.messages.ConsoleBatch b && origin == null) {
+                    gui.showHistory(b); // the console panel's Older button (typed ?history stays in COM)
+                    return;
+                }
+            }
             case Ids.FID_CONSOLE, Ids.FID_WATCH -> {
                 if (result instanceof org.ripv.messages.ConsoleBatch b) {
                     gui.showConsole(b, f.serviceId().equals(Ids.FID_CONSOLE));

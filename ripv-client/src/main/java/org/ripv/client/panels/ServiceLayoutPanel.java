@@ -41,7 +41,7 @@ public final class ServiceLayoutPanel extends JPanel {
         fim = new FimPanel(manager);
         dab = "DAB".equals(kind) ? new DatabasePanel(service, manager) : null;
         dav = "DAV".equals(kind) ? new ImagePanel(manager) : null;
-        console = dab == null && dav == null && client != null ? new ConsolePanel(service, client) : null;
+        console = dab == null && dav == null && client != null ? new ConsolePanel(service, client, manager) : null;
         JComponent fourth = dab != null ? dab : dav != null ? dav : console;
 
         // Fixed base sizes: GridBag then shares the window by weight alone, so the quadrants do
