@@ -23,6 +23,8 @@ public final class BenchMain {
             "  console    the live console: 1,000 watchers of a vehicle printing 50 lines/s against one watcher,",
             "             and with one more that never reads   [--watchers N] [--rate N] [--seconds S] [--warmup S]",
             "  datavis    vis: to JPEG for 10,000 and 1,000,000 points, built-in worker and Octave   [--no-octave]",
+            "  calls      100 vehicles calling 100 listen:// links within a minute: accepted, streamed, delay",
+            "             [--vehicles N] [--spread S] [--surface S] [--lines-per-second N]",
             "See docs/performance.md for what each measures and the figures.");
 
     public static void main(String[] args) throws Exception {
@@ -37,6 +39,7 @@ public final class BenchMain {
             case "console" -> System.exit(Launchers.commandLine(new ConsoleBench()).execute(rest));
             case "ymodem" -> YmodemBenchmark.main(rest);
             case "datavis" -> DataVisBenchmark.main(rest);
+            case "calls" -> System.exit(Launchers.commandLine(new CallsBench()).execute(rest));
             default -> {
                 System.err.println("Error: unknown benchmark '" + args[0] + "'\n" + USAGE);
                 System.exit(2);

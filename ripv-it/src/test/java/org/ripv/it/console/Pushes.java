@@ -11,11 +11,11 @@ import org.ripv.messages.Ids;
 import org.ripv.messages.OutgoingServerMessage;
 
 /** Collects the console entries pushed to one client. */
-class Pushes implements ClientSocketHandler.Listener {
-    final List<ConsoleEntry> entries = new CopyOnWriteArrayList<>();
+public class Pushes implements ClientSocketHandler.Listener {
+    public final List<ConsoleEntry> entries = new CopyOnWriteArrayList<>();
     final List<ConsoleBatch> batches = new CopyOnWriteArrayList<>();
 
-    static Pushes on(ClientSocketHandler c) {
+    public static Pushes on(ClientSocketHandler c) {
         Pushes p = new Pushes();
         c.addListener(p);
         return p;
@@ -33,7 +33,7 @@ class Pushes implements ClientSocketHandler.Listener {
     }
 
     /** Waits until an entry matches; false at the deadline. */
-    synchronized boolean await(Predicate<ConsoleEntry> p, Duration d) throws InterruptedException {
+    public synchronized boolean await(Predicate<ConsoleEntry> p, Duration d) throws InterruptedException {
         long end = System.nanoTime() + d.toNanos();
         while (entries.stream().noneMatch(p)) {
             long left = end - System.nanoTime();
@@ -45,7 +45,7 @@ class Pushes implements ClientSocketHandler.Listener {
         return true;
     }
 
-    List<String> texts() {
+    public List<String> texts() {
         return entries.stream().map(ConsoleEntry::text).toList();
     }
 }
