@@ -69,7 +69,7 @@ class FollowCliTest {
         waitFor(out, "said before anyone watched");
         vehicle.event(VehicleEvent.SURFACED, "Glider ru29 at surface", 41.63323, -70.53647);
         sys.login("alice").call(vehicle.mailbox(), "say hi \"there\"", Priority.NORMAL, Duration.ofSeconds(20), null);
-        waitFor(out, "hi \\\"there\\\"\"}");
+        waitFor(out, "\"kind\":\"line\",\"text\":\"hi \\\"there\\\"\"}"); // the reply line, not the command
         sys.server().stop(); // the connection ends: the CLI says so and exits 3
         assertThat(exit.get(20, TimeUnit.SECONDS)).isEqualTo(CliCommand.EXIT_NO_SESSION);
         List<String> lines = out.toString(StandardCharsets.UTF_8).lines().toList();
