@@ -13,9 +13,21 @@ import java.util.Objects;
  *                       {@code "DAB"}, {@code "DAV"}, or {@code ""} for none (COM spans both rows)
  * @param attachPrefixes command prefixes whose first argument names a file in the server's
  *                       upload directory, which the server then attaches (e.g. {@code "vis:"})
+ * @param registration   when the service began this registration attempt (epoch milliseconds,
+ *                       strictly increasing per service; 0: not given). A registration that
+ *                       arrives after a newer one of the same service is refused, never replaces it.
  */
 public record ServiceDescriptor(String name, String sid, String description, String panel,
-                                List<String> attachPrefixes) implements java.io.Serializable {
+                                List<String> attachPrefixes, long registration) implements java.io.Serializable {
+    public ServiceDescriptor(String name, String sid, String description, String panel, List<String> attachPrefixes) {
+        this(name, sid, description, panel, attachPrefixes, 0);
+    }
+
+    /** The same service, stamped for one registration attempt. */
+    public ServiceDescriptor withRegistration(long stamp) {
+        return new ServiceDescriptor(name, sid, description, panel, attachPrefixes, stamp);
+    }
+
     public ServiceDescriptor {
         Objects.requireNonNull(name, "name");
         Ids.require(sid);
