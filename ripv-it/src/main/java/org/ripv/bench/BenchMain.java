@@ -21,6 +21,8 @@ public final class BenchMain {
             "  database   a 100,000-row query end to end against direct JDBC   [--rows N] [--runs N] [--warmup N]",
             "  ymodem     YMODEM over a baud-paced relay as a share of the line rate, and against lrzsz",
             "             [BAUD:BYTES ...], e.g. 9600:65536 115200:1048576",
+            "  console    the live console: 1,000 watchers of a vehicle printing 50 lines/s against one watcher,",
+            "             and with one more that never reads   [--watchers N] [--rate N] [--seconds S] [--warmup S]",
             "  datavis    vis: to JPEG for 10,000 and 1,000,000 points, built-in worker and Octave   [--no-octave]",
             "  firststart the DatabaseServer's first start (Derby created and seeded) in a fresh JVM, against",
             "             loading the scripts statement by statement   [--runs N]",
@@ -47,6 +49,7 @@ public final class BenchMain {
         switch (args[0]) {
             case "broker" -> System.exit(Launchers.commandLine(new BrokerBench(), "ripv bench broker").execute(rest));
             case "database" -> DatabaseBench.main(rest);
+            case "console" -> System.exit(Launchers.commandLine(new ConsoleBench()).execute(rest));
             case "ymodem" -> YmodemBenchmark.main(rest);
             case "datavis" -> DataVisBenchmark.main(rest);
             case "firststart" -> FirstStartBench.main(rest);

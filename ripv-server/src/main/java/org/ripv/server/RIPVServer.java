@@ -37,6 +37,7 @@ import org.ripv.server.handlers.SocketHandler;
 import org.ripv.server.http.LandingPage;
 import org.ripv.server.permit.PermitFile;
 import org.ripv.server.permit.PermitWatcher;
+import org.ripv.server.session.ConsoleHub;
 import org.ripv.wire.FrameCodec;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -63,6 +64,7 @@ public final class RIPVServer implements AutoCloseable {
     public static final String SERVER_SERVICE = "RIPVServer";
 
     private final ServerConfig config;
+    private final SessionOptions sessionOptions;
     private final Map<String, SocketHandler> clients = new ConcurrentHashMap<>();
     private final Map<String, ServiceReference> services = new ConcurrentHashMap<>();
     private final Map<String, OperatorLock> locks = new ConcurrentHashMap<>();
@@ -92,6 +94,7 @@ public final class RIPVServer implements AutoCloseable {
     private final RequestCancels cancels = new RequestCancels(this);
     private OutboundListener outbound;
     private volatile boolean running;
+    private ServerSessions sessions;
 
     /** An operator's hold on a MailBox ({@code ?lock}). */
     record OperatorLock(String user, String clientId, long untilMillis) {
@@ -101,7 +104,13 @@ public final class RIPVServer implements AutoCloseable {
     }
 
     public RIPVServer(ServerConfig config) {
+        this(config, SessionOptions.defaults());
+    }
+
+    /** A server with vehicle-session options (transcripts, e-mail, notifications; docs/sessions.md). */
+    public RIPVServer(ServerConfig config, SessionOptions sessionOptions) {
         this.config = config;
+        this.sessionOptions = sessionOptions;
         this.timers = Executors.newScheduledThreadPool(1, named("ripv-server-timer"));
         // Calls to services: each is bounded by the RMI deadlines and at most one MailBox query
         // runs per service, so a cached pool grows by one thread per hung service at worst.
@@ -138,6 +147,7 @@ public final class RIPVServer implements AutoCloseable {
         workflows = new org.ripv.server.workflow.Workflows(config.dataDir().resolve("workflows"), new WorkflowBridge(this));
         endings = new RequestEndings(this, pending, withdrawals, config.requestTimeout());
         box = postOffice.open(POST_OFFICE, new ServerTaskManager(this));
+        sessions = new ServerSessions(config.dataDir(), sessionOptions, this::permits, this::client, codec);
 
         InetAddress bind = config.bindAddress() == null ? null : InetAddress.getByName(config.bindAddress());
         try {
@@ -239,6 +249,9 @@ public final class RIPVServer implements AutoCloseable {
         RmiSupport.unexport(remote);
         if (workflows != null) {
             workflows.close();
+        }
+        if (sessions != null) {
+            sessions.close();
         }
         timers.shutdownNow();
         checkers.shutdownNow();
@@ -365,7 +378,7 @@ public final class RIPVServer implements AutoCloseable {
             clients.remove(client.clientId(), client);
             pending.forgetClient(client.clientId());
             files.abortAll(client.clientId());
-            if (locks.values().removeIf(l -> l.clientId().equals(client.clientId()))) {
+            if (sessions.clientClosed(client.clientId(), locks)) {
                 workflows.lockReleased(null);
             }
         }
@@ -396,6 +409,15 @@ public final class RIPVServer implements AutoCloseable {
 
     Map<String, OperatorLock> locks() {
         return locks;
+    }
+
+    ServerSessions sessions() {
+        return sessions;
+    }
+
+    /** The live console: watchers, vehicle state, transcripts (tests and benchmarks look inside). */
+    public ConsoleHub console() {
+        return sessions.console();
     }
 
     Optional<SocketHandler> client(String clientId) {
@@ -429,7 +451,7 @@ public final class RIPVServer implements AutoCloseable {
      * notifications. Until the fan-out is merged it is only logged.
      */
     void publishServerEntry(org.ripv.messages.ConsoleEntry entry) {
-        log.debug("console {} (server): {} {}", entry.mailbox(), entry.kind(), Header.abbreviate(entry.text()));
+        sessions.console().serverEntry(entry);
     }
 
     String secret() {
@@ -480,6 +502,7 @@ public final class RIPVServer implements AutoCloseable {
 
     void drop(ServiceReference ref, String why) {
         endings.drop(ref, why);
+        sessions.console().serviceGone(ref.descriptor().name(), why);
     }
 
     /**
@@ -487,19 +510,15 @@ public final class RIPVServer implements AutoCloseable {
      * the calling service's own MailBoxes are taken.
      */
     void console(ServiceReference ref, List<org.ripv.messages.ConsoleEntry> entries) {
-        String prefix = ref.descriptor().name();
-        workflows.onConsole(prefix, entries);
-        for (org.ripv.messages.ConsoleEntry e : entries) {
-            if (e != null && e.mailbox().startsWith(prefix)) {
-                log.debug("console {}: {} {}", e.mailbox(), e.kind(), Header.abbreviate(e.text()));
-            }
-        }
+        sessions.console().publish(ref.descriptor().name(), entries);
+        workflows.onConsole(ref.descriptor().name(), entries);
     }
 
-    /** Current MailBox status with the operator lock added. */
+    /** Current MailBox status with the operator lock and the vehicle's call state added. */
     MailboxStatus withLock(MailboxStatus s) {
         OperatorLock l = locks.get(s.address());
-        return l == null || l.expired() ? s : s.withLock(l.user());
+        MailboxStatus withState = s.withSession(sessions.console().state(s.address()));
+        return l == null || l.expired() ? withState : withState.withLock(l.user());
     }
 
 

@@ -87,4 +87,9 @@ public record ServerConfig(String bindAddress, int port, int registryPort, int h
         return new ServerConfig(address, port, registryPort, httpPort, dataDir, permitFile, requestTimeout,
                 serviceCheck, maxUpload, maxFrame, maxClients, tls, clientJar);
     }
+
+    public ServerConfig withMaxClients(int n) {
+        return new ServerConfig(bindAddress, port, registryPort, httpPort, dataDir, permitFile, requestTimeout,
+                serviceCheck, maxUpload, maxFrame, n, tls, clientJar);
+    }
 }

@@ -48,6 +48,11 @@ public final class SocketHandler {
     private final FrameCodec codec;
     private final Dispatcher dispatcher;
     private final BlockingQueue<OutgoingServerMessage> replies = new ArrayBlockingQueue<>(MAX_QUEUED_REPLIES);
+    /** A push: its frame if encoded once for many clients (else null), and what to run once it went out. */
+    private record Push(byte[] frame, Runnable written) {}
+
+    /** Pushes whose sender wants to hear when they went out (console watchers pace themselves by it). */
+    private final java.util.Map<OutgoingServerMessage, Push> afterWrite = new java.util.concurrent.ConcurrentHashMap<>();
     private final Thread reader;
     private final Thread writer;
     private volatile IdBadge badge;
@@ -115,6 +120,24 @@ public final class SocketHandler {
         }
     }
 
+    /**
+     * Queues an unasked message (a console push); {@code written} runs on the writer thread once it
+     * has been written and flushed, so a sender can keep one push in flight and hold the rest
+     * itself. {@code frame}, when not null, is the message already encoded (once for every
+     * client it goes to). Never blocks; false when the connection is closed or too far behind.
+     */
+    public boolean push(OutgoingServerMessage message, byte[] frame, Runnable written) {
+        if (closed || replies.remainingCapacity() < MAX_QUEUED_REPLIES / 2) {
+            return false;
+        }
+        afterWrite.put(message, new Push(frame, written));
+        if (!replies.offer(message)) {
+            afterWrite.remove(message);
+            return false;
+        }
+        return true;
+    }
+
     private void readLoop() {
         String why = "closed the connection";
         try {
@@ -154,28 +177,39 @@ public final class SocketHandler {
     }
 
     private void writeLoop() {
+        List<Runnable> flushed = new java.util.ArrayList<>();
         try (DataOutputStream out = new DataOutputStream(new BufferedOutputStream(socket.getOutputStream(), 64 * 1024))) {
             while (!closed) {
                 OutgoingServerMessage m = replies.take();
                 if (m == POISON) {
                     break;
                 }
+                Push push = afterWrite.remove(m);
+                if (push != null) {
+                    flushed.add(push.written());
+                }
                 try {
-                    codec.writeNoFlush(out, m);
+                    if (push != null && push.frame() != null) {
+                        out.writeInt(push.frame().length);
+                        out.write(push.frame());
+                    } else {
+                        codec.writeNoFlush(out, m);
+                    }
                 } catch (ProtocolException tooLarge) {
                     // Nothing was written yet: tell the client instead of cutting it off. A progress
                     // report is only dropped, so the request still ends in its one real final reply.
                     log.warn("client {}: reply to #{} not sent: {}", clientId, m.header().messageId(), tooLarge.getMessage());
-                    if (!m.status().isFinal()) {
-                        continue;
+                    if (m.status().isFinal()) {
+                        codec.writeNoFlush(out, new OutgoingServerMessage(m.header(), org.ripv.messages.Footer.error(
+                                m.footer().serviceId(), org.ripv.messages.ErrorCode.TOO_LARGE,
+                                "the reply was too large to send (" + tooLarge.getMessage() + "); ask for less, e.g. fewer rows")
+                                .via("RIPVServer")));
                     }
-                    codec.writeNoFlush(out, new OutgoingServerMessage(m.header(), org.ripv.messages.Footer.error(
-                            m.footer().serviceId(), org.ripv.messages.ErrorCode.TOO_LARGE,
-                            "the reply was too large to send (" + tooLarge.getMessage() + "); ask for less, e.g. fewer rows")
-                            .via("RIPVServer")));
                 }
                 if (replies.isEmpty()) {
                     out.flush();
+                    flushed.forEach(Runnable::run);
+                    flushed.clear();
                 }
             }
         } catch (InterruptedException e) {
@@ -196,6 +230,7 @@ public final class SocketHandler {
             closed = true;
         }
         replies.clear();
+        afterWrite.clear();
         replies.offer(POISON);
         try {
             socket.close();
