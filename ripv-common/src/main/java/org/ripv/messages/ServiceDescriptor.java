@@ -6,21 +6,31 @@ import java.util.Objects;
 /**
  * What a service tells the server about itself when it registers (thesis: ServiceDescriptor).
  *
- * @param name           the full service name, {@code <ServiceName>::<host>}
- * @param sid            its six-digit service id
- * @param description    one line for the operator
- * @param panel          which fourth panel the client shows beside COM, MAM and FIM:
- *                       {@code "DAB"}, {@code "DAV"}, or {@code ""} for none (COM spans both rows)
- * @param attachPrefixes command prefixes whose first argument names a file in the server's
- *                       upload directory, which the server then attaches (e.g. {@code "vis:"})
+ * @param name             the full service name, {@code <ServiceName>::<host>}
+ * @param sid              its six-digit service id
+ * @param description      one line for the operator
+ * @param panel            which fourth panel the client shows beside COM, MAM and FIM:
+ *                         {@code "DAB"}, {@code "DAV"}, or {@code ""} for none (COM spans both rows)
+ * @param attachPrefixes   command prefixes whose first argument names a file in the server's
+ *                         upload directory, which the server then attaches (e.g. {@code "vis:"})
+ * @param downloadPrefixes command words whose arguments all name files in the server's download
+ *                         directory, which the server attaches as one {@linkplain Attachment#bundle
+ *                         bundle} (e.g. {@code "ingest"}: {@code ingest NAME...})
  */
 public record ServiceDescriptor(String name, String sid, String description, String panel,
-                                List<String> attachPrefixes) implements java.io.Serializable {
+                                List<String> attachPrefixes, List<String> downloadPrefixes)
+        implements java.io.Serializable {
     public ServiceDescriptor {
         Objects.requireNonNull(name, "name");
         Ids.require(sid);
         description = description == null ? "" : description;
         panel = panel == null ? "" : panel;
         attachPrefixes = attachPrefixes == null ? List.of() : List.copyOf(attachPrefixes);
+        downloadPrefixes = downloadPrefixes == null ? List.of() : List.copyOf(downloadPrefixes);
+    }
+
+    /** A service that takes no files from the download directory. */
+    public ServiceDescriptor(String name, String sid, String description, String panel, List<String> attachPrefixes) {
+        this(name, sid, description, panel, attachPrefixes, List.of());
     }
 }

@@ -48,6 +48,7 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
 
     private final DatabaseTarget target;
     private final QueryLimits limits;
+    private final IngestCommand ingest;
     private Connection owner;
     private Connection reader;
     private volatile Availability availability;
@@ -55,6 +56,7 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
     public DatabaseHandler(DatabaseTarget target, QueryLimits limits) {
         this.target = target;
         this.limits = limits;
+        this.ingest = new IngestCommand(target);
         this.availability = Availability.available(describe());
     }
 
@@ -65,7 +67,22 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
 
     @Override
     public Reply execute(Request request) {
+        if (IngestCommand.matches(request.command())) {
+            return ingest(request);
+        }
         return run(request.command(), request.roles().contains(READER_ROLE));
+    }
+
+    /** {@code ingest NAME...} on the owner connection ({@link IngestCommand}). */
+    private Reply ingest(Request request) {
+        if (request.roles().contains(READER_ROLE)) {
+            return Reply.error(ErrorCode.FORBIDDEN, "you may only read this database; ingest writes to it");
+        }
+        try {
+            return ingest.run(request, connection(false));
+        } catch (SQLException e) {
+            return Reply.error(ErrorCode.NOT_AVAILABLE, "cannot connect to " + target.safeUrl() + ": " + describe(e));
+        }
     }
 
     /** Runs one SQL command as the owner, or as the reader. */
