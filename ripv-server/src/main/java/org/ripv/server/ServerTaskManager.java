@@ -106,6 +106,10 @@ final class ServerTaskManager extends TaskManager<IncomingServerMessage, Outgoin
 
     /** The upload-directory file a command names after one of the service's attach prefixes. */
     private Attachment attachmentFor(ServiceReference ref, String body) throws IOException {
+        Attachment downloads = DownloadAttachments.forCommand(server.files(), ref.descriptor(), body);
+        if (downloads != null) {
+            return downloads;
+        }
         String trimmed = body.trim();
         for (String prefix : ref.descriptor().attachPrefixes()) {
             if (trimmed.regionMatches(true, 0, prefix, 0, prefix.length())) {

@@ -10,6 +10,7 @@ import org.ripv.messages.FileListing;
 import org.ripv.messages.Footer;
 import org.ripv.messages.ImageResult;
 import org.ripv.messages.IncomingServerMessage;
+import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.OutgoingServiceMessage;
 import org.ripv.messages.Result;
 import org.slf4j.Logger;
@@ -38,9 +39,13 @@ final class ServiceReplies {
         if (!f.serviceId().equals(ref.descriptor().sid())) {
             f = new Footer(ref.descriptor().sid(), f.status(), f.errorCode(), f.route(), f.replyText(), f.result());
         }
+        Result sent = f.result();
         f = store(server, f);
         // Route by the header the server sent, never by what the service wrote back.
-        server.reply(new IncomingServerMessage(p.header()).reply(f.via(RIPVServer.SERVER_SERVICE)));
+        OutgoingServerMessage out = new IncomingServerMessage(p.header()).reply(f.via(RIPVServer.SERVER_SERVICE));
+        if (!server.dataLoop().downloaded(out, sent, server::reply)) { // DBA files go to the database first
+            server.reply(out);
+        }
     }
 
     /** Writes files from a reply into the download directory and replaces their bytes with a listing. */

@@ -40,6 +40,9 @@ public final class SimulatorCommand implements Callable<Integer> {
     @Option(names = "--dir", paramLabel = "DIR", description = "The glider's files (default: a temporary directory with sample logs).")
     Path dir;
 
+    @Option(names = "--files", paramLabel = "DIR", description = "Copy DIR's files (e.g. Slocum .mrg/DBA files) onto the glider at start.")
+    Path seedFiles;
+
     @Option(names = "--submerge-seconds", defaultValue = "30", description = "How long GO keeps it under water (default ${DEFAULT-VALUE}).")
     long submergeSeconds;
 
@@ -47,6 +50,13 @@ public final class SimulatorCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         Path files = dir != null ? dir : Files.createTempDirectory("ripv-glider");
         try (GliderSimulator sim = new GliderSimulator(files, Duration.ofSeconds(submergeSeconds), YmodemConfig.lrzsz())) {
+            if (seedFiles != null) {
+                try (var list = Files.list(seedFiles)) {
+                    for (Path f : list.filter(Files::isRegularFile).toList()) {
+                        Files.copy(f, files.resolve(f.getFileName().toString()), java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+                    }
+                }
+            }
             if (where != null && where.tty != null) {
                 sim.attach(where.tty);
                 System.out.println("glider simulator on " + where.tty + ", files in " + files);
