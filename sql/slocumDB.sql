@@ -72,15 +72,22 @@ SELECT r.vehicle, s.name, s.unit, r.t, MAX(r.value)
   JOIN sensor_def s ON s.sensor_id = r.sensor_id
  GROUP BY r.vehicle, s.name, s.unit, r.t;
 
--- Depth (m_depth, metres) in time order: the raw material of dives and profiles.
-CREATE VIEW depths (vehicle, time_utc, depth, file_id) AS
-SELECT r.vehicle, r.t, r.value, r.file_id
+-- Depth in metres: the flight computer's m_depth, and the science CTD's sci_water_pressure
+-- (bar; 1 bar is about 10 m of sea water) for science rows, which have no m_depth. The raw
+-- material of dives and profiles; (file_id, row_no) joins it to any sensor of the same row.
+CREATE VIEW depths (vehicle, time_utc, depth, source, file_id, row_no) AS
+SELECT r.vehicle, r.t, r.value, CAST('m_depth' AS VARCHAR(24)), r.file_id, r.row_no
   FROM sensor_def s JOIN reading r ON r.sensor_id = s.sensor_id
- WHERE s.name = 'm_depth';
+ WHERE s.name = 'm_depth'
+UNION ALL
+SELECT r.vehicle, r.t, r.value * 10, CAST('sci_water_pressure' AS VARCHAR(24)), r.file_id, r.row_no
+  FROM sensor_def s JOIN reading r ON r.sensor_id = s.sensor_id
+ WHERE s.name = 'sci_water_pressure';
 
 -- One row per ingested file (a Slocum segment: a dive, a climb, a surfacing): its time span
 -- and depth range from m_depth.
 CREATE VIEW dives (vehicle, file_id, name, start_utc, end_utc, max_depth, min_depth, depth_values) AS
 SELECT f.vehicle, f.file_id, f.dba_filename, MIN(d.time_utc), MAX(d.time_utc), MAX(d.depth), MIN(d.depth), COUNT(*)
   FROM data_file f JOIN depths d ON d.file_id = f.file_id
+ WHERE d.source = 'm_depth'
  GROUP BY f.vehicle, f.file_id, f.dba_filename;

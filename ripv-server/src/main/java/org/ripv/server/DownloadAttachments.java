@@ -11,8 +11,9 @@ import org.ripv.server.files.FileTooLargeException;
 
 /**
  * Attaches download-directory files to a command whose first word is one of the service's
- * {@link ServiceDescriptor#downloadPrefixes()} ({@code ingest NAME...}): every argument names a
- * file, and all of them travel as one {@link Attachment#bundle}.
+ * {@link ServiceDescriptor#downloadPrefixes()} ({@code ingest NAME...}, {@code vis:file NAME x=...}):
+ * every argument up to the first {@code option=value} names a file, and all of them travel as one
+ * {@link Attachment#bundle}.
  */
 final class DownloadAttachments {
     /** The most one command may attach, all files together. */
@@ -37,6 +38,9 @@ final class DownloadAttachments {
         List<Attachment> out = new ArrayList<>();
         long total = 0;
         for (int i = 1; i < words.length; i++) {
+            if (words[i].indexOf('=') > 0) {
+                break; // options follow the names
+            }
             long size = (Long) files.readDownload(words[i], 0, 0)[0];
             total += size;
             if (total > MAX_TOTAL) {
