@@ -23,6 +23,7 @@ import org.ripv.client.cli.CliCommand;
 import org.ripv.services.database.DatabaseServer;
 import org.ripv.services.database.EmbeddedDatabase;
 import org.ripv.services.database.QueryLimits;
+import org.ripv.services.datavis.DataVisServer;
 import org.ripv.services.serial.LinkSettings;
 import org.ripv.services.serial.SerialPortServer;
 import org.ripv.services.simulator.GliderSimulator;
@@ -66,6 +67,16 @@ class DataLoopEndToEndTest {
         serial = "<SerialPortServer>::<localhost>" + s.handles().get(0);
         sys.register(new DatabaseServer("localhost", List.of(EmbeddedDatabase.prepare(dir.resolve("database"), "TTY1")),
                 QueryLimits.defaults()));
+        sys.register(new DataVisServer("localhost", DataVisServer.Config.of(dir.resolve("vis"))));
+    }
+
+    static java.awt.image.BufferedImage jpeg(Path file) throws Exception {
+        byte[] b = Files.readAllBytes(file);
+        assertThat(b[0] & 0xff).isEqualTo(0xFF);
+        assertThat(b[1] & 0xff).isEqualTo(0xD8);
+        java.awt.image.BufferedImage img = javax.imageio.ImageIO.read(file.toFile());
+        assertThat(img).as("a decodable JPEG").isNotNull();
+        return img;
     }
 
     @AfterAll
@@ -149,5 +160,33 @@ class DataLoopEndToEndTest {
         assertThat(cli("use " + DB, "ingest unit_363_2013_245_6_6.mrg")).as(out()).isZero();
         assertThat(out()).contains("unit_363-2013-245-6-6: 657 rows, 29 sensors");
         Files.delete(sys.dataDir().resolve("ingest.properties"));
+    }
+
+    static final String VIS = "<DataVisServer>::<localhost>TTY1";
+
+    @Test
+    @Order(6)
+    void plotsFromTheDatabase() throws Exception {
+        assertThat(cli("use " + VIS, "vis:track cp_388", "?dlfiles")).as(out()).isZero();
+        assertThat(out()).contains("plotted 2 rows").contains("track-cp_388.jpg");
+        assertThat(jpeg(sys.downloadDir().resolve("track-cp_388.jpg")).getWidth()).isEqualTo(800);
+
+        assertThat(cli("use " + VIS, "vis:track unit_363 since=2013-09-05T03:00:00Z")).as(out()).isZero();
+        assertThat(out()).contains("track-unit_363.jpg");
+        assertThat(cli("use " + VIS, "vis:depth unit_363", "vis:profile unit_363 sci_water_temp",
+                "vis:sql SELECT time_utc, depth FROM depths WHERE vehicle = 'unit_363' ORDER BY time_utc")).as(out()).isZero();
+        assertThat(out()).contains("depth-unit_363.jpg").contains("profile-unit_363-sci_water_temp.jpg")
+                .contains("sql-plot.jpg");
+        jpeg(sys.downloadDir().resolve("depth-unit_363.jpg"));
+
+        // bad requests get clear errors, and nothing else breaks
+        assertThat(cli("use " + VIS, "vis:track nobody")).isNotZero();
+        assertThat(out()).contains("no positions of vehicle 'nobody'");
+        assertThat(cli("use " + VIS, "vis:track x';DROP")).isNotZero();
+        assertThat(out()).contains("is not a vehicle name");
+        assertThat(cli("use " + VIS, "vis:sql SELECT vehicle, lat FROM positions")).isNotZero();
+        assertThat(out()).contains("not a number");
+        assertThat(cli("use " + DB, "SELECT COUNT(*) FROM positions WHERE vehicle = 'cp_388'")).as(out()).isZero();
+        assertThat(out()).containsPattern("(?m)^\\s*2\\s*$");
     }
 }

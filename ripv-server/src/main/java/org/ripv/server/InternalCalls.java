@@ -42,6 +42,17 @@ final class InternalCalls implements ServiceCalls {
     }
 
     @Override
+    public boolean permitted(String user, String mailbox, String body) {
+        try {
+            MailboxAddress a = MailboxAddress.parse(mailbox);
+            return server.permits().user(user).map(u -> server.permits().decide(u, a.service().service(), a.handle(), body)
+                    .allowed()).orElse(false);
+        } catch (MalformedNameException e) {
+            return false;
+        }
+    }
+
+    @Override
     public CompletableFuture<Footer> call(String mailbox, String body, String user, List<String> roles, Attachment attachment,
                                           Consumer<Footer> progress) {
         CompletableFuture<Footer> done = new CompletableFuture<>();

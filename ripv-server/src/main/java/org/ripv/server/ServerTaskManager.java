@@ -87,6 +87,9 @@ final class ServerTaskManager extends TaskManager<IncomingServerMessage, Outgoin
             return error(request, sid, ErrorCode.MAILBOX_LOCKED, address + " is locked by " + lock.user() + " until "
                     + java.time.Instant.ofEpochMilli(lock.untilMillis()) + "; try later");
         }
+        if (server.dataLoop().plot(request, sid, address.toString(), server::reply)) {
+            return null; // vis:sql, vis:track, ...: the server queries the database first (org.ripv.server.dataloop)
+        }
         Attachment attachment;
         try {
             attachment = attachmentFor(ref, h.body());

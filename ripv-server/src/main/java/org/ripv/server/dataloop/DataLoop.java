@@ -9,6 +9,7 @@ import org.ripv.messages.FileBundle;
 import org.ripv.messages.FileData;
 import org.ripv.messages.Footer;
 import org.ripv.messages.Ids;
+import org.ripv.messages.IncomingServerMessage;
 import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.Result;
 import org.ripv.messages.Status;
@@ -29,10 +30,25 @@ public final class DataLoop {
 
     private final ServiceCalls calls;
     private final IngestSettings settings;
+    private final PlotRequests plots;
 
     public DataLoop(ServiceCalls calls, Path settingsFile) {
         this.calls = calls;
         this.settings = new IngestSettings(settingsFile);
+        this.plots = new PlotRequests(calls, this::database);
+    }
+
+    /**
+     * Takes over a plot from data ({@code vis:sql}, {@code vis:track}, {@code vis:depth},
+     * {@code vis:profile}) sent to a DataVisServer MailBox; false for anything else.
+     *
+     * @param sid the addressed service's SID
+     */
+    public boolean plot(IncomingServerMessage request, String sid, String mailbox, Consumer<OutgoingServerMessage> send) {
+        if (!sid.equals(Ids.SID_DATAVIS) || !PlotRequests.isPlot(request.header().body())) {
+            return false;
+        }
+        return plots.handle(request, mailbox, send);
     }
 
     /**

@@ -15,6 +15,9 @@ public interface ServiceCalls {
     /** The full names ({@code <DatabaseServer>::<host>}) of the registered services with this SID, sorted. */
     List<String> services(String sid);
 
+    /** Whether the permit file lets {@code user} send {@code body} to {@code mailbox}. */
+    boolean permitted(String user, String mailbox, String body);
+
     /**
      * Sends {@code body} to {@code mailbox} as {@code user} (with {@code roles}). Download-directory
      * files are attached as for a client's command; {@code attachment}, when not null, instead.
