@@ -179,6 +179,13 @@ class DataLoopEndToEndTest {
                 .contains("sql-plot.jpg");
         jpeg(sys.downloadDir().resolve("depth-unit_363.jpg"));
 
+        // a downloaded DBA file plotted directly
+        assertThat(cli("use " + VIS, "vis:file unit_363_2013_245_6_6.mrg x=m_present_time y=m_depth")).as(out()).isZero();
+        assertThat(out()).contains("unit_363_2013_245_6_6-m_depth.jpg");
+        jpeg(sys.downloadDir().resolve("unit_363_2013_245_6_6-m_depth.jpg"));
+        assertThat(cli("use " + VIS, "vis:file short_header.mrg x=m_present_time y=m_depth")).isNotZero();
+        assertThat(out()).contains("not a usable DBA file: line 11");
+
         // bad requests get clear errors, and nothing else breaks
         assertThat(cli("use " + VIS, "vis:track nobody")).isNotZero();
         assertThat(out()).contains("no positions of vehicle 'nobody'");
