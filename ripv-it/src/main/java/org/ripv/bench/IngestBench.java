@@ -104,6 +104,8 @@ public final class IngestBench {
 
     private static void measure(Connection c, DatabaseServer local, BlockingQueue<OutgoingServiceMessage> replies,
                                 String what, byte[] file, int runs) throws Exception {
+        ingest(local, replies, "warm-up-" + what.length() + ".mrg", file); // its sensors are known, the JIT is warm
+        clear(c);
         Parsed p = parse(c, file);
         double[] viaService = new double[runs];
         double[] direct = new double[runs];
