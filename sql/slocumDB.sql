@@ -34,10 +34,13 @@ CREATE TABLE sensor_def (
     CONSTRAINT sensor_def_uk UNIQUE (name, unit)
 );
 
+-- No FOREIGN KEY constraints here on purpose: Derby backs each with an index of its own, two
+-- more indexes to update for every value stored. The ingest writes file_id and sensor_id from
+-- rows it has just read or inserted, in the same transaction.
 CREATE TABLE reading (
-    file_id           INTEGER          NOT NULL CONSTRAINT reading_file_fk REFERENCES data_file (file_id),
+    file_id           INTEGER          NOT NULL,
     row_no            INTEGER          NOT NULL,
-    sensor_id         INTEGER          NOT NULL CONSTRAINT reading_sensor_fk REFERENCES sensor_def (sensor_id),
+    sensor_id         INTEGER          NOT NULL,
     vehicle           VARCHAR(64)      NOT NULL,
     t                 TIMESTAMP        NOT NULL,
     value             DOUBLE PRECISION NOT NULL,
@@ -49,6 +52,8 @@ CREATE INDEX reading_sensor_vehicle_t ON reading (sensor_id, vehicle, t);
 
 -- Positions in decimal degrees: a latitude and a longitude from the same row of the same file.
 -- No-fix values (69696969) are never stored; impossible ones are left out here as well.
+-- (Derby does not push a WHERE on the view into the UNION's branches: for one vehicle's track
+-- over years of a fleet, put the vehicle into each branch as vis:track does; docs/database.md.)
 CREATE VIEW positions (vehicle, time_utc, lat, lon, source, file_id) AS
 SELECT la.vehicle, la.t, la.value, lo.value, CAST('gps' AS VARCHAR(16)), la.file_id
   FROM sensor_def sa
@@ -76,13 +81,10 @@ SELECT r.vehicle, s.name, s.unit, r.t, MAX(r.value)
 -- (bar; 1 bar is about 10 m of sea water) for science rows, which have no m_depth. The raw
 -- material of dives and profiles; (file_id, row_no) joins it to any sensor of the same row.
 CREATE VIEW depths (vehicle, time_utc, depth, source, file_id, row_no) AS
-SELECT r.vehicle, r.t, r.value, CAST('m_depth' AS VARCHAR(24)), r.file_id, r.row_no
+SELECT r.vehicle, r.t, CASE WHEN s.name = 'm_depth' THEN r.value ELSE r.value * 10 END,
+       CAST(s.name AS VARCHAR(24)), r.file_id, r.row_no
   FROM sensor_def s JOIN reading r ON r.sensor_id = s.sensor_id
- WHERE s.name = 'm_depth'
-UNION ALL
-SELECT r.vehicle, r.t, r.value * 10, CAST('sci_water_pressure' AS VARCHAR(24)), r.file_id, r.row_no
-  FROM sensor_def s JOIN reading r ON r.sensor_id = s.sensor_id
- WHERE s.name = 'sci_water_pressure';
+ WHERE s.name IN ('m_depth', 'sci_water_pressure');
 
 -- One row per ingested file (a Slocum segment: a dive, a climb, a surfacing): its time span
 -- and depth range from m_depth.

@@ -35,7 +35,19 @@ class QueryPlansTest {
                 st.execute("CALL SYSCS_UTIL.SYSCS_UPDATE_STATISTICS('APP', 'READING', null)");
             }
             Map<String, String> queries = new LinkedHashMap<>();
-            queries.put("track", "SELECT time_utc, lat, lon, source FROM positions WHERE vehicle = 'unit_363' ORDER BY time_utc DESC");
+            queries.put("positions", "SELECT time_utc, lat, lon, source FROM positions WHERE vehicle = 'unit_363' ORDER BY time_utc DESC");
+            // what vis:track sends (org.ripv.server.dataloop.PlotRequests.trackSql): the vehicle inside each branch
+            queries.put("track", "SELECT time_utc, lat, lon, source FROM (SELECT la.t AS time_utc, la.value AS lat, lo.value AS lon,"
+                    + " CAST('gps' AS VARCHAR(16)) AS source FROM sensor_def sa JOIN reading la ON la.sensor_id = sa.sensor_id"
+                    + " AND la.vehicle = 'unit_363' JOIN sensor_def so ON so.name = 'm_gps_lon' JOIN reading lo ON"
+                    + " lo.file_id = la.file_id AND lo.row_no = la.row_no AND lo.sensor_id = so.sensor_id"
+                    + " WHERE sa.name = 'm_gps_lat' AND la.value BETWEEN -90 AND 90 AND lo.value BETWEEN -180 AND 180"
+                    + " UNION ALL SELECT la.t AS time_utc, la.value AS lat, lo.value AS lon,"
+                    + " CAST('dead-reckoned' AS VARCHAR(16)) AS source FROM sensor_def sa JOIN reading la ON la.sensor_id = sa.sensor_id"
+                    + " AND la.vehicle = 'unit_363' JOIN sensor_def so ON so.name = 'm_lon' JOIN reading lo ON"
+                    + " lo.file_id = la.file_id AND lo.row_no = la.row_no AND lo.sensor_id = so.sensor_id"
+                    + " WHERE sa.name = 'm_lat' AND la.value BETWEEN -90 AND 90 AND lo.value BETWEEN -180 AND 180"
+                    + ") p ORDER BY time_utc DESC");
             queries.put("latest", "SELECT * FROM latest WHERE vehicle = 'unit_363'");
             queries.put("depth", "SELECT time_utc, depth FROM depths WHERE vehicle = 'unit_363' AND source = 'm_depth'");
             queries.put("dives", "SELECT * FROM dives WHERE vehicle = 'unit_363'");
@@ -52,6 +64,7 @@ class QueryPlansTest {
             }
             assertThat(plans.get("track")).contains("READING_SENSOR_VEHICLE_T").contains("READING_PK")
                     .doesNotContain("Table Scan ResultSet for READING");
+            assertThat(plans.get("positions")).contains("READING_SENSOR_VEHICLE_T").doesNotContain("Table Scan ResultSet for READING");
             assertThat(plans.get("depth")).contains("READING_SENSOR_VEHICLE_T").doesNotContain("Table Scan ResultSet for READING");
         }
     }
