@@ -116,6 +116,19 @@ class DataLoopEndToEndTest {
         assertThat(cli("use " + DB, "SELECT vehicle, lat, lon, source FROM positions ORDER BY time_utc")).as(out()).isZero();
         assertThat(out()).contains("cp_388").contains("39.8477").contains("-70.7722").contains("dead-reckoned")
                 .contains("2 rows");
+
+        // the result exports with numbers as numbers
+        Path json = dir.resolve("positions.json");
+        Path csv = dir.resolve("positions.csv");
+        assertThat(cli("use " + DB, "SELECT vehicle, lat, lon, source FROM positions ORDER BY time_utc",
+                "export json " + json, "export csv " + csv)).as(out()).isZero();
+        assertThat(out()).contains("exported 2 rows as json").contains("exported 2 rows as csv");
+        try {
+            assertThat(Files.readString(json)).containsPattern("\\{\"VEHICLE\":\"cp_388\",\"LAT\":39\\.8477\\d*,\"LON\":-70\\.7722");
+            assertThat(Files.readString(csv)).startsWith("VEHICLE,LAT,LON,SOURCE\r\ncp_388,39.8477");
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
     }
 
     @Test

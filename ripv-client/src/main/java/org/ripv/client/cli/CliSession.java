@@ -30,6 +30,7 @@ public final class CliSession {
     private String mailbox = "";
     private Priority priority = Priority.NORMAL;
     private boolean anyError;
+    private org.ripv.messages.TableResult lastTable;
 
     public CliSession(ClientSocketHandler client, PrintStream out, PrintStream err, boolean json, Duration timeout) {
         this.client = client;
@@ -61,7 +62,7 @@ public final class CliSession {
                 return false;
             }
             case "help" -> local("Lines: ?COMMAND (server; ?help lists them) | use MAILBOX | priority normal|priority|urgent"
-                    + " | put LOCALFILE [NAME] | get NAME [LOCALDIR] | quit | anything else goes to the current MailBox");
+                    + " | put LOCALFILE [NAME] | get NAME [LOCALDIR] | export csv|json LOCALFILE | quit | anything else goes to the current MailBox");
             case "use" -> use(rest);
             case "priority" -> {
                 try {
@@ -73,6 +74,7 @@ public final class CliSession {
             }
             case "put" -> put(rest);
             case "get" -> get(rest);
+            case "export" -> export(rest);
             default -> {
                 if (!line.startsWith("?") && mailbox.isEmpty()) {
                     localError(ErrorCode.BAD_REQUEST, "no MailBox chosen for '" + line + "': use MAILBOX first (?mailboxes lists them)");
@@ -95,7 +97,27 @@ public final class CliSession {
 
     private void send(String box, String body) throws IOException {
         OutgoingServerMessage reply = client.call(box, body, priority, timeout, printer::print);
+        if (reply.footer().result() instanceof org.ripv.messages.TableResult t) {
+            lastTable = t;
+        }
         print(reply);
+    }
+
+    /** {@code export csv|json FILE}: the last table received, to a local file ({@link TableExport}). */
+    private void export(String args) throws IOException {
+        String[] a = args.isEmpty() ? new String[0] : args.split("\\s+", 2);
+        if (a.length != 2 || !(a[0].equalsIgnoreCase("csv") || a[0].equalsIgnoreCase("json"))) {
+            localError(ErrorCode.BAD_REQUEST, "usage: export csv|json LOCALFILE (writes the last query result)");
+            return;
+        }
+        if (lastTable == null) {
+            localError(ErrorCode.BAD_REQUEST, "no query result to export yet: run a SELECT first");
+            return;
+        }
+        String text = a[0].equalsIgnoreCase("csv") ? TableExport.csv(lastTable) : TableExport.json(lastTable);
+        Path file = Path.of(a[1]);
+        Files.writeString(file, text, java.nio.charset.StandardCharsets.UTF_8);
+        local("exported " + lastTable.rows().size() + " rows as " + a[0].toLowerCase(java.util.Locale.ROOT) + " to " + file);
     }
 
     private void put(String args) throws IOException {
