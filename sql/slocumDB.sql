@@ -22,6 +22,9 @@ CREATE TABLE data_file (
     position_count    INTEGER      NOT NULL,
     first_time        TIMESTAMP,
     last_time         TIMESTAMP,
+    min_depth         DOUBLE PRECISION,
+    max_depth         DOUBLE PRECISION,
+    depth_count       INTEGER,
     sha256            CHAR(64)     NOT NULL CONSTRAINT data_file_sha256_uk UNIQUE,
     ingested          TIMESTAMP    NOT NULL,
     ingested_by       VARCHAR(64)
@@ -45,6 +48,17 @@ CREATE TABLE reading (
     t                 TIMESTAMP        NOT NULL,
     value             DOUBLE PRECISION NOT NULL,
     CONSTRAINT reading_pk PRIMARY KEY (file_id, row_no, sensor_id)
+);
+
+-- Each vehicle's last value of each sensor, kept by the ingest in the same transaction as the
+-- readings: "what did every sensor say last" must not scan years of READING.
+CREATE TABLE sensor_latest (
+    vehicle           VARCHAR(64)      NOT NULL,
+    sensor_id         INTEGER          NOT NULL,
+    t                 TIMESTAMP        NOT NULL,
+    value             DOUBLE PRECISION NOT NULL,
+    file_id           INTEGER          NOT NULL,
+    CONSTRAINT sensor_latest_pk PRIMARY KEY (vehicle, sensor_id)
 );
 
 -- A sensor's values of one vehicle in time order: positions, latest, tracks, depth plots.
@@ -71,11 +85,8 @@ SELECT la.vehicle, la.t, la.value, lo.value, CAST('dead-reckoned' AS VARCHAR(16)
 
 -- Each sensor's last value per vehicle, with its time.
 CREATE VIEW latest (vehicle, sensor, unit, time_utc, value) AS
-SELECT r.vehicle, s.name, s.unit, r.t, MAX(r.value)
-  FROM (SELECT sensor_id, vehicle, MAX(t) AS t FROM reading GROUP BY sensor_id, vehicle) m
-  JOIN reading r ON r.sensor_id = m.sensor_id AND r.vehicle = m.vehicle AND r.t = m.t
-  JOIN sensor_def s ON s.sensor_id = r.sensor_id
- GROUP BY r.vehicle, s.name, s.unit, r.t;
+SELECT l.vehicle, s.name, s.unit, l.t, l.value
+  FROM sensor_latest l JOIN sensor_def s ON s.sensor_id = l.sensor_id;
 
 -- Depth in metres: the flight computer's m_depth, and the science CTD's sci_water_pressure
 -- (bar; 1 bar is about 10 m of sea water) for science rows, which have no m_depth. The raw
@@ -86,10 +97,9 @@ SELECT r.vehicle, r.t, CASE WHEN s.name = 'm_depth' THEN r.value ELSE r.value * 
   FROM sensor_def s JOIN reading r ON r.sensor_id = s.sensor_id
  WHERE s.name IN ('m_depth', 'sci_water_pressure');
 
--- One row per ingested file (a Slocum segment: a dive, a climb, a surfacing): its time span
--- and depth range from m_depth.
+-- One row per ingested file (a Slocum segment: a dive, a climb, a surfacing) with its time span
+-- and m_depth range, which the ingest keeps in DATA_FILE: no scan of READING.
 CREATE VIEW dives (vehicle, file_id, name, start_utc, end_utc, max_depth, min_depth, depth_values) AS
-SELECT f.vehicle, f.file_id, f.dba_filename, MIN(d.time_utc), MAX(d.time_utc), MAX(d.depth), MIN(d.depth), COUNT(*)
-  FROM data_file f JOIN depths d ON d.file_id = f.file_id
- WHERE d.source = 'm_depth'
- GROUP BY f.vehicle, f.file_id, f.dba_filename;
+SELECT vehicle, file_id, dba_filename, first_time, last_time, max_depth, min_depth, depth_count
+  FROM data_file
+ WHERE depth_count > 0;

@@ -33,7 +33,7 @@ final class IngestCommand {
     static final String WORD = "ingest";
     static final String SCRIPT = "slocumDB.sql";
     /** Tables and views of the script, for the reader's GRANT. */
-    static final List<String> OBJECTS = List.of("DATA_FILE", "SENSOR_DEF", "READING", "POSITIONS", "LATEST", "DEPTHS", "DIVES");
+    static final List<String> OBJECTS = List.of("DATA_FILE", "SENSOR_DEF", "READING", "SENSOR_LATEST", "POSITIONS", "LATEST", "DEPTHS", "DIVES");
     static final int MAX_FILES = 1000;
 
     private final DatabaseTarget target;

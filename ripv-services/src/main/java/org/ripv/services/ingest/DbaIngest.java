@@ -158,7 +158,14 @@ public final class DbaIngest {
             int lonGps = h.column("m_gps_lon");
             int latDr = h.column("m_lat");
             int lonDr = h.column("m_lon");
+            int depth = h.column("m_depth");
+            double minDepth = Double.NaN;
+            double maxDepth = Double.NaN;
+            long depths = 0;
             double[] row = new double[h.sensors().size()];
+            double[] lastT = new double[row.length];
+            double[] lastV = new double[row.length];
+            java.util.Arrays.fill(lastT, Double.NaN);
             long values = 0;
             long positions = 0;
             long untimed = 0;
@@ -177,6 +184,11 @@ public final class DbaIngest {
                     }
                     first = Double.isNaN(first) ? t : Math.min(first, t);
                     last = Double.isNaN(last) ? t : Math.max(last, t);
+                    if (depth >= 0 && !Double.isNaN(row[depth])) {
+                        minDepth = depths == 0 ? row[depth] : Math.min(minDepth, row[depth]);
+                        maxDepth = depths == 0 ? row[depth] : Math.max(maxDepth, row[depth]);
+                        depths++;
+                    }
                     if (pair(row, latGps, lonGps)) {
                         positions++;
                     }
@@ -189,6 +201,10 @@ public final class DbaIngest {
                         double v = row[i];
                         if (Double.isNaN(v)) {
                             continue;
+                        }
+                        if (!(lastT[i] > t)) {
+                            lastT[i] = t;
+                            lastV[i] = v;
                         }
                         ins.setInt(3, sensorIds[i]);
                         ins.setDouble(6, v);
@@ -204,18 +220,70 @@ public final class DbaIngest {
                     ins.executeBatch();
                 }
             }
+            latest(vehicle, fileId, sensorIds, lastT, lastV);
             try (PreparedStatement up = c.prepareStatement("UPDATE data_file SET row_count = ?, value_count = ?,"
-                    + " position_count = ?, first_time = ?, last_time = ? WHERE file_id = ?")) {
+                    + " position_count = ?, first_time = ?, last_time = ?, min_depth = ?, max_depth = ?, depth_count = ?"
+                    + " WHERE file_id = ?")) {
                 up.setLong(1, r.rows() - untimed);
                 up.setLong(2, values);
                 up.setLong(3, positions);
                 up.setTimestamp(4, Double.isNaN(first) ? null : timestamp(first), UTC);
                 up.setTimestamp(5, Double.isNaN(last) ? null : timestamp(last), UTC);
-                up.setLong(6, fileId);
+                if (depths == 0) {
+                    up.setNull(6, java.sql.Types.DOUBLE);
+                    up.setNull(7, java.sql.Types.DOUBLE);
+                } else {
+                    up.setDouble(6, minDepth);
+                    up.setDouble(7, maxDepth);
+                }
+                up.setLong(8, depths);
+                up.setLong(9, fileId);
                 up.executeUpdate();
             }
             return new Outcome(name, dbaName, vehicle, fileId, false, r.rows() - untimed, h.sensors().size(), values,
                     positions, r.noFix(), r.impossible(), untimed);
+        }
+    }
+
+    /** Moves SENSOR_LATEST on for the sensors whose last value in this file is newer than the one kept. */
+    private void latest(String vehicle, long fileId, int[] sensorIds, double[] lastT, double[] lastV) throws SQLException {
+        Map<Integer, Timestamp> kept = new HashMap<>();
+        try (PreparedStatement q = c.prepareStatement("SELECT sensor_id, t FROM sensor_latest WHERE vehicle = ?")) {
+            q.setString(1, vehicle);
+            try (ResultSet rs = q.executeQuery()) {
+                while (rs.next()) {
+                    kept.put(rs.getInt(1), rs.getTimestamp(2, UTC));
+                }
+            }
+        }
+        try (PreparedStatement ins = c.prepareStatement(
+                "INSERT INTO sensor_latest (vehicle, sensor_id, t, value, file_id) VALUES (?, ?, ?, ?, ?)");
+             PreparedStatement up = c.prepareStatement(
+                     "UPDATE sensor_latest SET t = ?, value = ?, file_id = ? WHERE vehicle = ? AND sensor_id = ?")) {
+            for (int i = 0; i < sensorIds.length; i++) {
+                if (Double.isNaN(lastT[i])) {
+                    continue;
+                }
+                Timestamp t = timestamp(lastT[i]);
+                Timestamp old = kept.get(sensorIds[i]);
+                if (old == null) {
+                    ins.setString(1, vehicle);
+                    ins.setInt(2, sensorIds[i]);
+                    ins.setTimestamp(3, t, UTC);
+                    ins.setDouble(4, lastV[i]);
+                    ins.setLong(5, fileId);
+                    ins.addBatch();
+                } else if (!t.before(old)) {
+                    up.setTimestamp(1, t, UTC);
+                    up.setDouble(2, lastV[i]);
+                    up.setLong(3, fileId);
+                    up.setString(4, vehicle);
+                    up.setInt(5, sensorIds[i]);
+                    up.addBatch();
+                }
+            }
+            ins.executeBatch();
+            up.executeBatch();
         }
     }
 

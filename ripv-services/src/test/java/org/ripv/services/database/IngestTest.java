@@ -127,6 +127,16 @@ class IngestTest {
                 + " AND vehicle = 'unit_363'")).isZero();
         // latest: one row per sensor with a value; m_depth's last value is the file's last m_depth
         assertThat(count("SELECT COUNT(*) FROM latest WHERE vehicle = 'unit_363'")).isEqualTo(29);
+        String[] lines = new String(DbaFiles.read(DbaFiles.shared("unit_363_2013_245_6_6.mrg")), StandardCharsets.US_ASCII)
+                .split("\n");
+        int depthCol = List.of(lines[14].trim().split(" ")).indexOf("m_depth");
+        String lastDepth = null;
+        for (int i = 17; i < lines.length; i++) {
+            String cell = lines[i].trim().split(" ")[depthCol];
+            lastDepth = cell.equals("NaN") ? lastDepth : cell;
+        }
+        TableResult latestDepth = table("SELECT value FROM latest WHERE vehicle = 'unit_363' AND sensor = 'm_depth'");
+        assertThat(Double.parseDouble(latestDepth.rows().get(0)[0])).isEqualTo(Double.parseDouble(lastDepth));
         assertThat(count("SELECT COUNT(*) FROM dives WHERE vehicle = 'unit_363' AND max_depth > 900")).isEqualTo(1);
         // the read-only user sees the new views too
         OutgoingServiceMessage asReader = sql.send("TTY1", "SELECT COUNT(*) FROM positions", "bob",

@@ -65,6 +65,8 @@ class QueryPlansTest {
             assertThat(plans.get("track")).contains("READING_SENSOR_VEHICLE_T").contains("READING_PK")
                     .doesNotContain("Table Scan ResultSet for READING");
             assertThat(plans.get("positions")).contains("READING_SENSOR_VEHICLE_T").doesNotContain("Table Scan ResultSet for READING");
+            assertThat(plans.get("latest")).doesNotContain("ResultSet for READING");
+            assertThat(plans.get("dives")).doesNotContain("ResultSet for READING");
             assertThat(plans.get("depth")).contains("READING_SENSOR_VEHICLE_T").doesNotContain("Table Scan ResultSet for READING");
         }
     }
