@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # ./ripv demo — the whole system on this machine: RIPVServer, the three services on their
-# embedded defaults, a simulated glider on TCP, and the GUI logged in as the demo operator.
+# embedded defaults, a simulated glider that calls in (surfaces, talks, dives, calls again), and
+# the GUI logged in as the demo operator.
 # With no display it prints how to connect with the CLI instead. Ctrl-C stops everything.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -10,6 +11,24 @@ PORT="${RIPV_PORT:-4444}"
 REGISTRY="${RIPV_REGISTRY_PORT:-1099}"
 HTTP="${RIPV_HTTP_PORT:-8080}"
 GLIDER="${RIPV_GLIDER_PORT:-5555}"
+GLIDER_NAME="${RIPV_GLIDER_NAME:-sim01}"
+DIVE="${RIPV_DIVE_SECONDS:-30}"
+SURFACE="${RIPV_SURFACE_SECONDS:-60}"
+# Everything listens on this machine only unless told otherwise (--bind ADDRESS or RIPV_BIND;
+# 0.0.0.0 for every interface). The services listen on loopback anyway: only the server calls them.
+BIND="${RIPV_BIND:-127.0.0.1}"
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --bind) BIND="${2:?--bind needs an address}"; shift 2 ;;
+    --bind=*) BIND="${1#--bind=}"; shift ;;
+    *) echo "demo: unknown option '$1' (the demo takes --bind ADDRESS)" >&2; exit 2 ;;
+  esac
+done
+# where this script and the services reach what listens on $BIND
+case "$BIND" in
+  0.0.0.0|::|127.*|localhost) HERE=localhost ;;
+  *) HERE="$BIND" ;;
+esac
 USER_NAME=demo
 PASSWORD=ripv-demo-operator
 jar() { echo "$ROOT/$1/target/$1.jar"; }
@@ -27,11 +46,11 @@ stop_all() {
 trap stop_all EXIT
 trap 'exit 130' INT TERM
 
-port_free() { ! (exec 3<>"/dev/tcp/127.0.0.1/$1") 2>/dev/null; }
+port_free() { ! (exec 3<>"/dev/tcp/$HERE/$1") 2>/dev/null; }
 wait_port() {
   local i
   for i in $(seq 1 150); do
-    (exec 3<>"/dev/tcp/127.0.0.1/$1") 2>/dev/null && return 0
+    (exec 3<>"/dev/tcp/$HERE/$1") 2>/dev/null && return 0
     sleep 0.2
   done
   echo "demo: nothing answered on port $1; see $DEMO/logs/" >&2
@@ -54,7 +73,7 @@ chmod 600 "$DEMO/password"
 
 echo "demo: starting the RIPVServer (logs in $DEMO/logs)" >&2
 "$JAVA" -jar "$(jar ripv-server)" server --data "$DEMO/server" --port "$PORT" --registry-port "$REGISTRY" \
-  --http-port "$HTTP" >"$DEMO/logs/server.log" 2>&1 &
+  --http-port "$HTTP" --bind "$BIND" >"$DEMO/logs/server.log" 2>&1 &
 pids+=($!)
 wait_port "$PORT"
 secret="$DEMO/server/service.secret"
@@ -62,19 +81,24 @@ for s in "$ROOT"/docs/samples/*.dat; do
   [ -f "$s" ] && [ ! -f "$DEMO/server/upload/$(basename "$s")" ] && cp "$s" "$DEMO/server/upload/"
 done
 
-echo "demo: starting the glider simulator on port $GLIDER" >&2
-"$JAVA" -jar "$(jar ripv-services)" simulator --listen "$GLIDER" --dir "$DEMO/glider" >"$DEMO/logs/simulator.log" 2>&1 &
+echo "demo: starting the SerialPortServer (glider $GLIDER_NAME calls in on port $GLIDER), DatabaseServer and DataVisServer" >&2
+"$JAVA" -Dripv.host=localhost -jar "$(jar ripv-services)" serial --server "$HERE:$REGISTRY" --secret-file "$secret" \
+  --link "listen://$BIND:$GLIDER,name=$GLIDER_NAME" --carrier ignore --no-enumerate >"$DEMO/logs/serial.log" 2>&1 &
 pids+=($!)
-wait_port "$GLIDER"
+# not wait_port: a connection to the glider's port would be taken for a call
+for i in $(seq 1 150); do
+  grep -q "MailBoxes:" "$DEMO/logs/serial.log" 2>/dev/null && break
+  sleep 0.2
+done
 
-echo "demo: starting the SerialPortServer, DatabaseServer and DataVisServer" >&2
-"$JAVA" -Dripv.host=localhost -jar "$(jar ripv-services)" serial --server "localhost:$REGISTRY" --secret-file "$secret" \
-  --link "tcp://localhost:$GLIDER" --carrier ignore --no-enumerate >"$DEMO/logs/serial.log" 2>&1 &
+echo "demo: the simulated glider $GLIDER_NAME calls in for $SURFACE s, dives for $DIVE s, and calls again" >&2
+"$JAVA" -jar "$(jar ripv-services)" simulator --call "$HERE:$GLIDER" --name "$GLIDER_NAME" \
+  --dive-seconds "$DIVE" --surface-seconds "$SURFACE" --dir "$DEMO/glider" >"$DEMO/logs/simulator.log" 2>&1 &
 pids+=($!)
-"$JAVA" -Dripv.host=localhost -jar "$(jar ripv-services)" database --server "localhost:$REGISTRY" --secret-file "$secret" \
+"$JAVA" -Dripv.host=localhost -jar "$(jar ripv-services)" database --server "$HERE:$REGISTRY" --secret-file "$secret" \
   --data "$DEMO/database" >"$DEMO/logs/database.log" 2>&1 &
 pids+=($!)
-"$JAVA" -Dripv.host=localhost -jar "$(jar ripv-services)" datavis --server "localhost:$REGISTRY" --secret-file "$secret" \
+"$JAVA" -Dripv.host=localhost -jar "$(jar ripv-services)" datavis --server "$HERE:$REGISTRY" --secret-file "$secret" \
   --workdir "$DEMO/datavis" >"$DEMO/logs/datavis.log" 2>&1 &
 pids+=($!)
 
@@ -85,7 +109,11 @@ RIPV demo is running. Connect with the CLI, e.g.:
 
   ./ripv cli --server localhost:$PORT --user $USER_NAME --password-file $DEMO/password \\
       --exec '?services' --exec '?mailboxes' \\
-      --exec 'use <SerialPortServer>::<localhost>tcp-localhost-$GLIDER' --exec 'dir'
+      --exec '?status <SerialPortServer>::<localhost>$GLIDER_NAME' \\
+      --exec 'use <SerialPortServer>::<localhost>$GLIDER_NAME' --exec 'dir'
+
+  The glider $GLIDER_NAME is on a call for $SURFACE s, then dives for $DIVE s: ?status shows
+  "on call since ..." or "dived at ...", and commands work while it is on a call.
 
   Database:  --exec 'use <DatabaseServer>::<localhost>TTY1' --exec 'SELECT * FROM mission'
   Plot:      --exec 'use <DataVisServer>::<localhost>TTY1' --exec 'vis:glider-temperature.dat'

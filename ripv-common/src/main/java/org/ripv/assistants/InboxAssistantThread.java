@@ -41,7 +41,7 @@ public final class InboxAssistantThread<I extends Message, O extends Message> ex
                     manager.failed(box, request, t);
                     break;
                 }
-                log.warn("{}: command '{}' failed", box.address(), request.header().body(), t);
+                log.warn("{}: command '{}' failed", box.address(), org.ripv.messages.Header.abbreviate(request.header().body()), t);
                 manager.failed(box, request, t);
             } finally {
                 MailBoxes.giveBackKey(box);

@@ -62,8 +62,11 @@ public record Header(long messageId, IdBadge origin, List<String> roles, String 
                 + (attachment == null ? "" : " +" + attachment) + "]";
     }
 
-    /** The first 80 characters of a text, for logs and error messages. */
+    /**
+     * The first 80 characters of a text, for logs and error messages, with control characters
+     * made visible ({@code \r}, {@code ^C}) so that no value can forge a log line.
+     */
     public static String abbreviate(String s) {
-        return s.length() <= 80 ? s : s.substring(0, 77) + "...";
+        return org.ripv.commands.SingleLineCommand.shown(s);
     }
 }

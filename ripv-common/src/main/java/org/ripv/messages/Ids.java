@@ -31,6 +31,9 @@ public final class Ids {
     public static final String FID_DOWNLOAD = "444470";
     public static final String FID_LOCK = "555667";
     public static final String FID_UNLOCK = "555668";
+    // Store files (issue 10 part B), range 444480-444499.
+    /** {@code ?delete NAME}: removes a file from the upload or download store. */
+    public static final String FID_DELETE = "444480";
     /** Replies to a message the server could not attribute to any command or service. */
     public static final String FID_NONE = "000000";
 

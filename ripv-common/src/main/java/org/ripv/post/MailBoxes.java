@@ -8,7 +8,7 @@ public final class MailBoxes {
 
     public static void takeKey(MailBox<?, ?> box, Message request) {
         box.key().take(request.header().origin().user() + "@" + request.header().origin().clientId(),
-                request.header().body());
+                org.ripv.messages.Header.abbreviate(request.header().body()));
     }
 
     public static void giveBackKey(MailBox<?, ?> box) {

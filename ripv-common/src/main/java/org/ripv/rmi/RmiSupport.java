@@ -49,9 +49,41 @@ public final class RmiSupport {
         }
     }
 
-    /** Exports an object on the given port (0: any) with the RIPV allowlist on its arguments. */
+    /**
+     * The system property naming the address a service's RMI object listens on (the launchers'
+     * {@code --bind}, which defaults to the address that reaches the server: loopback for a local
+     * one). Unset, empty or {@code *}: every interface.
+     */
+    public static final String BIND_PROPERTY = "ripv.bind";
+
+    /**
+     * Exports an object on the given port (0: any) with the RIPV allowlist on its arguments,
+     * listening on the {@link #BIND_PROPERTY} address when one is set.
+     */
     public static GenericRMIInterface export(GenericRMIInterface object, int port) throws RemoteException {
-        return (GenericRMIInterface) UnicastRemoteObject.exportObject(object, port, WireFilter.forRmi(MAX_RMI_BYTES));
+        String bind = System.getProperty(BIND_PROPERTY, "").trim();
+        if (bind.isEmpty() || bind.equals("*")) {
+            return (GenericRMIInterface) UnicastRemoteObject.exportObject(object, port, WireFilter.forRmi(MAX_RMI_BYTES));
+        }
+        java.net.InetAddress address;
+        try {
+            address = java.net.InetAddress.getByName(bind);
+        } catch (java.net.UnknownHostException e) {
+            throw new java.rmi.server.ExportException("cannot listen on '" + bind + "' (" + BIND_PROPERTY + "): unknown address", e);
+        }
+        return (GenericRMIInterface) UnicastRemoteObject.exportObject(object, port, null, new BoundSockets(address),
+                WireFilter.forRmi(MAX_RMI_BYTES));
+    }
+
+    /** Server sockets on one address; equal factories share a port. */
+    private record BoundSockets(java.net.InetAddress address) implements java.rmi.server.RMIServerSocketFactory {
+        @Override
+        public java.net.ServerSocket createServerSocket(int port) throws java.io.IOException {
+            java.net.ServerSocket s = new java.net.ServerSocket();
+            s.setReuseAddress(true);
+            s.bind(new java.net.InetSocketAddress(address, port), 128);
+            return s;
+        }
     }
 
     public static void unexport(GenericRMIInterface object) {

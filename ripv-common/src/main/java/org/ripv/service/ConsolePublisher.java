@@ -14,7 +14,8 @@ import org.slf4j.LoggerFactory;
 /**
  * Carries a service's console entries to the server on a thread of its own, batched, so that a
  * vehicle printing fast never waits on RMI. The queue is bounded: when the server cannot keep up,
- * entries are skipped and one "N lines skipped" line says so, in place, once it can.
+ * entries are skipped and one "N lines skipped" line per MailBox says so, in place (after the
+ * entries queued before the skip), once there is room.
  */
 final class ConsolePublisher {
     private static final Logger log = LoggerFactory.getLogger(ConsolePublisher.class);
@@ -22,8 +23,9 @@ final class ConsolePublisher {
 
     private final BlockingQueue<ConsoleEntry> queue;
     private final Supplier<ReplySink> sink;
-    private final AtomicLong skipped = new AtomicLong();
-    private volatile String skippedMailbox;
+    private final java.util.concurrent.ConcurrentHashMap<String, AtomicLong> skipped =
+            new java.util.concurrent.ConcurrentHashMap<>();
+    private volatile boolean anySkipped;
     private final Thread thread;
 
     ConsolePublisher(String name, int capacity, Supplier<ReplySink> sink) {
@@ -35,9 +37,28 @@ final class ConsolePublisher {
     }
 
     void publish(ConsoleEntry entry) {
+        if (anySkipped) {
+            queueSkipMarkers();
+        }
         if (!queue.offer(entry)) {
-            skippedMailbox = entry.mailbox();
-            skipped.incrementAndGet();
+            skipped.computeIfAbsent(entry.mailbox(), m -> new AtomicLong()).incrementAndGet();
+            anySkipped = true;
+        }
+    }
+
+    /** Queues one marker per MailBox with skipped entries, while there is room for them and more. */
+    private void queueSkipMarkers() {
+        anySkipped = false;
+        for (var e : skipped.entrySet()) {
+            if (queue.remainingCapacity() < 2) {
+                anySkipped = true;
+                return;
+            }
+            long n = e.getValue().getAndSet(0);
+            if (n > 0 && !queue.offer(ConsoleEntry.line(e.getKey(), "[" + n + " lines skipped: the server could not keep up]"))) {
+                e.getValue().addAndGet(n);
+                anySkipped = true;
+            }
         }
     }
 
@@ -50,15 +71,19 @@ final class ConsolePublisher {
         try {
             while (!Thread.currentThread().isInterrupted()) {
                 ConsoleEntry first = queue.poll(1, TimeUnit.SECONDS);
-                long lost = skipped.getAndSet(0);
-                if (lost > 0) {
-                    batch.add(ConsoleEntry.line(skippedMailbox, "[" + lost + " lines skipped: the server could not keep up]"));
+                if (first == null) {
+                    if (anySkipped) {
+                        queueSkipMarkers();
+                    }
+                    first = queue.poll();
+                    if (first == null) {
+                        continue;
+                    }
                 }
-                if (first == null && batch.isEmpty()) {
-                    continue;
-                }
-                if (first != null) {
-                    batch.add(first);
+                batch.add(first);
+                queue.drainTo(batch, BATCH - batch.size());
+                if (anySkipped && queue.isEmpty()) {
+                    queueSkipMarkers(); // everything queued before the skip is in this batch
                     queue.drainTo(batch, BATCH - batch.size());
                 }
                 try {

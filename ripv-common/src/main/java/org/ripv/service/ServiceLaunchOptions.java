@@ -22,6 +22,11 @@ public final class ServiceLaunchOptions {
             description = "The host name to register under and that the server calls back (sets java.rmi.server.hostname). Default: this machine's name.")
     String host;
 
+    @Option(names = "--bind", paramLabel = "ADDRESS",
+            description = "The address this service's RMI object listens on. Default: the address this host uses to reach"
+                    + " the server (127.0.0.1 for a server on this machine); with --host, every interface. * for every interface.")
+    String bind;
+
     /** Where launch messages go (standard error; injectable for tests). */
     java.io.PrintStream err = System.err;
 
@@ -71,6 +76,7 @@ public final class ServiceLaunchOptions {
      */
     public int serve(RIPVService service) throws Exception {
         org.ripv.rmi.RmiSupport.filterProcess();
+        applyBind();
         ServiceConnector connector = ServiceConnector.connect(service, toOptions());
         java.util.concurrent.atomic.AtomicBoolean stopping = new java.util.concurrent.atomic.AtomicBoolean();
         Thread hook = new Thread(() -> {
@@ -89,6 +95,39 @@ public final class ServiceLaunchOptions {
         connector.close();
         err.println("Error: " + why);
         return 1;
+    }
+
+    /**
+     * Chooses where this service listens ({@link org.ripv.rmi.RmiSupport#BIND_PROPERTY}): {@code --bind},
+     * else the local address that reaches the server, so that a service for a server on this
+     * machine is not reachable from any other. The server calls back to that address unless
+     * {@code --host} names another.
+     */
+    void applyBind() throws java.io.IOException {
+        String address = bind;
+        if (address == null && (host == null || host.isBlank())) {
+            address = routeTo((String) ServiceOptions.parseServer(server)[0]).getHostAddress();
+        }
+        if (address == null || address.isBlank() || address.equals("*")) {
+            return;
+        }
+        System.setProperty(org.ripv.rmi.RmiSupport.BIND_PROPERTY, address);
+        if (host == null || host.isBlank()) {
+            System.setProperty("java.rmi.server.hostname", address);
+        }
+    }
+
+    /** The local address packets to {@code serverHost} leave from: loopback for this machine. */
+    static java.net.InetAddress routeTo(String serverHost) throws java.io.IOException {
+        java.net.InetAddress server = java.net.InetAddress.getByName(serverHost);
+        if (server.isLoopbackAddress() || java.net.NetworkInterface.getByInetAddress(server) != null) {
+            return java.net.InetAddress.getLoopbackAddress();
+        }
+        try (java.net.DatagramSocket probe = new java.net.DatagramSocket()) {
+            probe.connect(server, 9); // no packet is sent: this only asks the routing table
+            java.net.InetAddress local = probe.getLocalAddress();
+            return local == null || local.isAnyLocalAddress() ? java.net.InetAddress.getLoopbackAddress() : local;
+        }
     }
 
     public ServiceOptions toOptions() throws java.io.IOException {

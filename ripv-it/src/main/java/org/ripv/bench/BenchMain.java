@@ -23,6 +23,8 @@ public final class BenchMain {
             "  ingest     Slocum DBA ingest (2,136 sensors; 100,000 rows) against a direct JDBC batch insert, and",
             "             vis:track of 100,000 positions end to end   [--runs N] [--track-runs N]",
             "  datavis    vis: to JPEG for 10,000 and 1,000,000 points, built-in worker and Octave   [--no-octave]",
+            "  calls      100 vehicles calling 100 listen:// links within a minute: accepted, streamed, delay",
+            "             [--vehicles N] [--spread S] [--surface S] [--lines-per-second N]",
             "See docs/performance.md for what each measures and the figures.");
 
     public static void main(String[] args) throws Exception {
@@ -36,6 +38,7 @@ public final class BenchMain {
             case "database" -> DatabaseBench.main(rest);
             case "ymodem" -> YmodemBenchmark.main(rest);
             case "datavis" -> DataVisBenchmark.main(rest);
+            case "calls" -> System.exit(Launchers.commandLine(new CallsBench()).execute(rest));
             case "ingest" -> IngestBench.main(rest);
             default -> {
                 System.err.println("Error: unknown benchmark '" + args[0] + "'\n" + USAGE);

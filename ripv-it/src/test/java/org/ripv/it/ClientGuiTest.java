@@ -359,7 +359,7 @@ class ClientGuiTest {
         await("the glider's listing", () -> model.service(SERIAL).transcriptText(), t -> t.contains("MISSION1.LOG"));
         ui.run(() -> manager.sendCommand(SERIAL, "ymodem:get MISSION1.LOG"));
         await("the offloaded log under DL", () -> model.directory(FileArea.DOWNLOAD).files().stream()
-                .map(FileListing.Entry::name).toList(), n -> n.contains("MISSION1.LOG"));
+                .map(FileListing.Entry::name).toList(), n -> n.stream().anyMatch(x -> x.endsWith("/MISSION1.LOG")));
         assertThat(ui.get(() -> model.service(SERIAL).progress())).as("progress cleared at the end").isNull();
 
         // The database: a query opens a table in DAB.
@@ -555,7 +555,8 @@ class ClientGuiTest {
             command(window, "dir");
             waitFor("the glider's dir", () -> serial.com().replyText().contains("MISSION1.LOG"));
             command(window, "ymodem:get MISSION1.LOG");
-            waitFor("the offloaded log under DL", () -> serial.fim().tree().names(FileArea.DOWNLOAD).contains("MISSION1.LOG"));
+            waitFor("the offloaded log under DL", () -> serial.fim().tree().names(FileArea.DOWNLOAD).stream()
+                    .anyMatch(n -> n.endsWith("/MISSION1.LOG"))); // HANDLE/NAME: each MailBox's folder
 
             showTab(client, DATABASE);
             waitFor("the database as TT", () -> gm.model().service(DATABASE).target().startsWith(DATABASE));
@@ -567,7 +568,8 @@ class ClientGuiTest {
             waitFor("the plotter as TT", () -> gm.model().service(DATAVIS).target().startsWith(DATAVIS));
             command(window, "vis:glider-temperature.dat");
             waitFor("the plot in DAV", () -> vis.dav().image() != null);
-            waitFor("the plot under DL", () -> vis.fim().tree().names(FileArea.DOWNLOAD).contains("glider-temperature.jpg"));
+            waitFor("the plot under DL", () -> vis.fim().tree().names(FileArea.DOWNLOAD).stream()
+                    .anyMatch(n -> n.endsWith("/glider-temperature.jpg")));
             waitFor("the progress bar gone", () -> gm.model().service(DATAVIS).progress() == null);
             screenshotOf(client, "client.png");
 

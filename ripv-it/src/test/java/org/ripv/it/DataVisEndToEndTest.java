@@ -86,7 +86,7 @@ class DataVisEndToEndTest {
                     "?dlfiles", "get glider-temperature.jpg " + local);
             assertThat(run.exit()).as(run.out() + run.err()).isZero();
             assertThat(run.out()).contains("plotted").contains("glider-temperature.jpg");
-            BufferedImage img = jpeg(sys.downloadDir().resolve("glider-temperature.jpg"));
+            BufferedImage img = jpeg(sys.downloaded("glider-temperature.jpg"));
             assertThat(img.getWidth()).isEqualTo(800);
             jpeg(local.resolve("glider-temperature.jpg"));
             try (var files = Files.list(vis.workDir())) {
@@ -101,7 +101,9 @@ class DataVisEndToEndTest {
             assertThat(r.footer().serviceId()).isEqualTo(Ids.SID_DATAVIS);
             assertThat(r.footer().result()).isInstanceOf(ImageResult.class);
             FileListing dl = (FileListing) c.call("", "?dlfiles", Priority.NORMAL, T, null).footer().result();
-            assertThat(dl.files()).extracting(FileListing.Entry::name).contains("glider-temperature.jpg", "dive.jpg");
+            // each MailBox's files live in a folder of their own: FOLDER/NAME
+            assertThat(dl.files()).extracting(e -> e.name().substring(e.name().indexOf('/') + 1))
+                    .contains("glider-temperature.jpg", "dive.jpg");
 
             // Bad input: an error naming the line, and the next request still works.
             Files.writeString(dir.resolve("bad.dat"), "1 2\n3 oops\n");
@@ -111,7 +113,7 @@ class DataVisEndToEndTest {
             Cli missing = cli(sys, "use " + MAILBOX, "vis:never-uploaded.dat");
             assertThat(missing.exit()).isEqualTo(CliCommand.EXIT_ERROR_REPLY);
             assertThat(cli(sys, "use " + MAILBOX, "vis:glider-temperature.dat out=again").exit()).isZero();
-            jpeg(sys.downloadDir().resolve("again.jpg"));
+            jpeg(sys.downloaded("again.jpg"));
         }
     }
 
@@ -127,7 +129,7 @@ class DataVisEndToEndTest {
             Cli run = cli(sys, "put " + sample().toAbsolutePath(), "use " + MAILBOX, "vis:glider-temperature.dat", "?dlfiles");
             assertThat(run.exit()).as(run.out() + run.err()).isZero();
             assertThat(run.out()).contains("octave worker");
-            jpeg(sys.downloadDir().resolve("glider-temperature.jpg"));
+            jpeg(sys.downloaded("glider-temperature.jpg"));
         }
     }
 

@@ -100,7 +100,7 @@ class ReferenceScenarioTest {
         // dir on the glider, then offload the mission logs with YMODEM.
         assertThat(cli("otto", "use " + glider, "dir", "ymodem:get MISSION1.LOG MISSION2.LOG", "?dlfiles")).as(err()).isZero();
         assertThat(out()).contains("MISSION1.LOG").contains("MISSION2.LOG");
-        assertThat(Files.readAllBytes(sys.downloadDir().resolve("MISSION1.LOG")))
+        assertThat(Files.readAllBytes(sys.downloaded("MISSION1.LOG")))
                 .isEqualTo(Files.readAllBytes(this.glider.directory().resolve("MISSION1.LOG")));
 
         // Query the database for recent activity.
@@ -112,7 +112,7 @@ class ReferenceScenarioTest {
         // A data file to the DataVisServer, and the JPEG is back in the download directory.
         Path data = Path.of("..", "docs", "samples", "glider-temperature.dat");
         assertThat(cli("otto", "put " + data, "use <DataVisServer>::<localhost>TTY1", "vis:glider-temperature.dat")).as(err()).isZero();
-        byte[] jpeg = Files.readAllBytes(sys.downloadDir().resolve("glider-temperature.jpg"));
+        byte[] jpeg = Files.readAllBytes(sys.downloaded("glider-temperature.jpg"));
         assertThat(jpeg[0] & 0xff).isEqualTo(0xff);
         assertThat(jpeg[1] & 0xff).isEqualTo(0xd8);
 

@@ -101,7 +101,7 @@ class SerialEndToEndTest {
         Files.write(glider.directory().resolve("BIG.LOG"), log);
         assertThat(cli("use " + mailbox, "ymodem:get BIG.LOG", "?dlfiles")).as(err.toString()).isZero();
         assertThat(out()).contains("received BIG.LOG (1048576 bytes)").contains("BIG.LOG");
-        assertThat(Files.readAllBytes(sys.downloadDir().resolve("BIG.LOG"))).isEqualTo(log);
+        assertThat(Files.readAllBytes(sys.downloaded("BIG.LOG"))).isEqualTo(log);
         Path back = dir.resolve("back");
         assertThat(cli("get BIG.LOG " + back)).as(err.toString()).isZero();
         assertThat(Files.readAllBytes(back.resolve("BIG.LOG"))).isEqualTo(log);

@@ -66,6 +66,20 @@ public final class TestSystem implements AutoCloseable {
         return server.fileStore().downloadDir();
     }
 
+    /**
+     * A file the server stored from a service: each MailBox's files live in a folder of their
+     * own ({@code download/HANDLE/NAME}); this finds NAME in whichever folder holds it.
+     */
+    public Path downloaded(String name) throws IOException {
+        Path top = downloadDir().resolve(name);
+        if (Files.exists(top)) {
+            return top;
+        }
+        try (var folders = Files.list(downloadDir())) {
+            return folders.map(f -> f.resolve(name)).filter(Files::isRegularFile).findFirst().orElse(top);
+        }
+    }
+
     /** Adds a user with {@link #PASSWORD} (a cheap hash, for speed) and reloads the permit file. */
     public TestSystem user(String name, String... roles) throws IOException {
         PermitFile.setUser(dataDir.resolve("permit.txt"), name, PASSWORD.toCharArray(), List.of(roles), 1000);

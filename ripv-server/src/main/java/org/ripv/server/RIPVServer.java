@@ -121,7 +121,8 @@ public final class RIPVServer implements AutoCloseable {
             return;
         }
         RmiSupport.configure(5_000, 15_000);
-        Files.createDirectories(config.dataDir());
+        org.ripv.files.PrivateFiles.createDirectories(config.dataDir());
+        org.ripv.files.PrivateFiles.restrict(config.dataDir()); // the data directory is RIPV's alone (0700)
         permits = new PermitWatcher(config.permitFile());
         files = new FileStore(config.dataDir().resolve("upload"), config.dataDir().resolve("download"), config.maxUpload());
         secret = ServiceSecret.loadOrCreate(config.dataDir().resolve("service.secret"));

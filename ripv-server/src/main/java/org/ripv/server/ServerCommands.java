@@ -8,6 +8,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import org.ripv.commands.SingleLineCommand;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.FileData;
 import org.ripv.messages.FileListing;
@@ -21,7 +22,9 @@ import org.ripv.messages.ServiceDescriptor;
 import org.ripv.messages.ServiceList;
 import org.ripv.messages.SessionInfo;
 import org.ripv.naming.MailboxAddress;
+import org.ripv.server.files.FileExistsException;
 import org.ripv.server.files.FileStore;
+import org.ripv.server.files.UploadMode;
 import org.ripv.server.files.FileTooLargeException;
 import org.ripv.server.permit.PermitFile;
 
@@ -49,9 +52,11 @@ final class ServerCommands {
         COMMANDS.put("?mailboxes", new Command(Ids.FID_MAILBOXES, "?mailboxes", "the MailBoxes of every service"));
         COMMANDS.put("?status", new Command(Ids.FID_STATUS, "?status MAILBOX", "available or not, busy, who holds its lock"));
         COMMANDS.put("?services", new Command(Ids.FID_SERVICES, "?services", "the registered services"));
-        COMMANDS.put("?upload", new Command(Ids.FID_UPLOAD, "?upload NAME OFFSET TOTAL", "one chunk of an upload (the clients' put)"));
+        COMMANDS.put("?upload", new Command(Ids.FID_UPLOAD, "?upload NAME OFFSET TOTAL [replace|keep]",
+                "one chunk of an upload (the clients' put); a taken NAME is refused unless replace or keep"));
         COMMANDS.put("?upload-cancel", new Command(Ids.FID_UPLOAD, "?upload-cancel NAME", "drop an unfinished upload"));
         COMMANDS.put("?download", new Command(Ids.FID_DOWNLOAD, "?download NAME OFFSET LENGTH", "one chunk of a download (the clients' get)"));
+        COMMANDS.put("?delete", new Command(Ids.FID_DELETE, "?delete NAME", "delete NAME from the upload directory, or FOLDER/NAME from the download directory"));
         COMMANDS.put("?lock", new Command(Ids.FID_LOCK, "?lock MAILBOX [SECONDS]", "keep others from commanding a MailBox (default 300 s)"));
         COMMANDS.put("?unlock", new Command(Ids.FID_UNLOCK, "?unlock MAILBOX", "release your lock"));
         COMMANDS.put("?logout", new Command(Ids.FID_LOGOUT, "?logout", "end the session and close the connection"));
@@ -65,10 +70,16 @@ final class ServerCommands {
 
     /** Commands that touch the disk: they run on the file workers, not on the Post Office's thread. */
     private static final java.util.Set<String> FILE_WORK = java.util.Set.of("?upload", "?upload-cancel", "?download",
-            "?dlfiles", "?ulfiles");
+            "?dlfiles", "?ulfiles", "?delete");
 
     /** Runs one {@code ?} command; its reply (or replies) go to the Post Office's outbox. */
     void run(IncomingServerMessage request) {
+        try {
+            SingleLineCommand.check(request.header().body(), SingleLineCommand.SERVER_MAX);
+        } catch (IllegalArgumentException e) {
+            server.reply(ServerTaskManager.error(request, Ids.FID_NONE, ErrorCode.BAD_REQUEST, e.getMessage()));
+            return;
+        }
         String body = request.header().body().trim();
         String[] w = body.split("\\s+");
         String word = w[0].toLowerCase(java.util.Locale.ROOT);
@@ -95,6 +106,8 @@ final class ServerCommands {
             server.reply(ServerTaskManager.error(request, c.fid(), ErrorCode.TOO_LARGE, e.getMessage()));
         } catch (NoSuchFileException e) {
             server.reply(ServerTaskManager.error(request, c.fid(), ErrorCode.BAD_FILE_NAME, e.getMessage()));
+        } catch (FileExistsException e) {
+            server.reply(ServerTaskManager.error(request, c.fid(), ErrorCode.FILE_EXISTS, e.getMessage()));
         } catch (SecurityRefusal e) {
             server.reply(ServerTaskManager.error(request, c.fid(), ErrorCode.FORBIDDEN, e.getMessage()));
         } catch (IllegalArgumentException e) {
@@ -125,14 +138,26 @@ final class ServerCommands {
                     h.close();
                 });
                 return null;
-            case "?dldir":
-                return ok(request, c, files.downloadDir().toString(), new FileListing(files.downloadDir().toString(), List.of()));
-            case "?uldir":
-                return ok(request, c, files.uploadDir().toString(), new FileListing(files.uploadDir().toString(), List.of()));
+            case "?dldir": {
+                String shown = shownPath(request, files.downloadDir(), "download");
+                return ok(request, c, shown, new FileListing(shown, List.of()));
+            }
+            case "?uldir": {
+                String shown = shownPath(request, files.uploadDir(), "upload");
+                return ok(request, c, shown, new FileListing(shown, List.of()));
+            }
             case "?dlfiles":
-                return listing(request, c, files.listDownloads());
+                return listing(request, c, files.listDownloads(), shownPath(request, files.downloadDir(), "download"));
             case "?ulfiles":
-                return listing(request, c, files.listUploads());
+                return listing(request, c, files.listUploads(), shownPath(request, files.uploadDir(), "upload"));
+            case "?delete": {
+                permit(request, c);
+                if (w.length != 2) {
+                    throw new IllegalArgumentException("usage: " + c.usage());
+                }
+                String where = files.delete(w[1]);
+                return ok(request, c, "deleted " + w[1] + " from the " + where, null);
+            }
             case "?services": {
                 List<ServiceDescriptor> list = server.services().stream().map(ServiceReference::descriptor).toList();
                 StringBuilder b = new StringBuilder(list.size() + " service(s) registered");
@@ -149,16 +174,35 @@ final class ServerCommands {
                 return null;
             }
             case "?upload": {
-                permit(request, c);
-                if (w.length != 4 || request.header().attachment() == null) {
+                PermitFile.User u = permit(request, c);
+                if (w.length < 4 || w.length > 5 || request.header().attachment() == null) {
                     throw new IllegalArgumentException("usage: " + c.usage() + " with the chunk attached");
                 }
                 long offset = number(w[2], "OFFSET");
                 long total = number(w[3], "TOTAL");
-                FileStore.ChunkResult r = files.uploadChunk(request.header().origin().clientId(), w[1], offset, total,
-                        request.header().attachment().data());
-                return ok(request, c, r.complete() ? "stored " + w[1] + " (" + r.total() + " bytes) in the upload directory"
-                        : "received " + r.received() + " of " + r.total() + " bytes of " + w[1], null);
+                UploadMode mode = UploadMode.parse(w.length == 5 ? w[4] : null);
+                if (mode == UploadMode.REPLACE) {
+                    // replacing is a right of its own (docs/permit.md): '?replace NAME' for RIPVServer
+                    PermitFile.Decision d = server.permits().decide(u, RIPVServer.SERVER_SERVICE, "", "?replace " + w[1]);
+                    if (!d.allowed()) {
+                        throw new SecurityRefusal("user '" + user + "' may not replace files in the upload directory ("
+                                + d.because() + "); upload with 'keep' to store it under a new name");
+                    }
+                }
+                FileStore.ChunkResult r = files.uploadChunk(request.header().origin().clientId(), user, w[1], offset, total,
+                        request.header().attachment().data(), mode, server.permits().quota(u));
+                String text;
+                if (!r.complete()) {
+                    text = "received " + r.received() + " of " + r.total() + " bytes of " + w[1];
+                } else if (!r.storedAs().equals(w[1])) {
+                    text = "stored as " + r.storedAs() + " (" + r.total() + " bytes) in the upload directory: " + w[1]
+                            + " was taken and is kept as it was";
+                } else {
+                    text = "stored " + w[1] + " (" + r.total() + " bytes) in the upload directory"
+                            + (mode == UploadMode.REPLACE ? " (replace)" : "");
+                }
+                return ok(request, c, text, r.complete() ? new FileListing("upload",
+                        List.of(new FileListing.Entry(r.storedAs(), r.total(), System.currentTimeMillis()))) : null);
             }
             case "?upload-cancel":
                 permit(request, c);
@@ -254,7 +298,16 @@ final class ServerCommands {
                 + (s.detail().isEmpty() ? "" : " (" + s.detail() + ")");
     }
 
-    private void permit(IncomingServerMessage request, Command c) {
+    /**
+     * The server's own directories: an absolute path only for operators and admins, who run the
+     * host; everybody else sees the area's name (no server paths to ordinary users).
+     */
+    private static String shownPath(IncomingServerMessage request, java.nio.file.Path dir, String area) {
+        List<String> roles = request.header().roles();
+        return roles.contains("operators") || roles.contains("admin") ? dir.toString() : area;
+    }
+
+    private PermitFile.User permit(IncomingServerMessage request, Command c) {
         String user = request.header().origin().user();
         PermitFile.User u = server.permits().user(user).orElseThrow(
                 () -> new SecurityRefusal("user '" + user + "' is no longer in the permit file"));
@@ -262,6 +315,7 @@ final class ServerCommands {
         if (!d.allowed()) {
             throw new SecurityRefusal("user '" + user + "' may not use " + c.usage().split(" ")[0] + " (" + d.because() + ")");
         }
+        return u;
     }
 
     /** A refused server command: answered FORBIDDEN. */
@@ -278,7 +332,8 @@ final class ServerCommands {
         return request.reply(Footer.ok(c.fid(), text, result).via(RIPVServer.SERVER_SERVICE));
     }
 
-    private static OutgoingServerMessage listing(IncomingServerMessage request, Command c, FileListing l) {
+    private static OutgoingServerMessage listing(IncomingServerMessage request, Command c, FileListing all, String shown) {
+        FileListing l = new FileListing(shown, all.files());
         StringBuilder b = new StringBuilder(l.directory() + ": " + l.files().size() + " file(s)");
         for (FileListing.Entry e : l.files()) {
             b.append(String.format("%n%12d  %s  %s", e.size(), Instant.ofEpochMilli(e.modified()), e.name()));

@@ -3,6 +3,7 @@ package org.ripv.server;
 import java.io.IOException;
 import java.nio.file.NoSuchFileException;
 import java.util.Optional;
+import org.ripv.commands.SingleLineCommand;
 import org.ripv.managers.TaskManager;
 import org.ripv.messages.Attachment;
 import org.ripv.messages.ErrorCode;
@@ -72,6 +73,13 @@ final class ServerTaskManager extends TaskManager<IncomingServerMessage, Outgoin
         String sid = ref.descriptor().sid();
         if (h.body().isBlank()) {
             return error(request, sid, ErrorCode.BAD_REQUEST, "an empty command");
+        }
+        try {
+            // Before any permit rule: a second line or a ^C inside a command is never the user's to send.
+            SingleLineCommand.check(h.body(), SingleLineCommand.SERVER_MAX);
+        } catch (IllegalArgumentException e) {
+            log.info("refused a command from {} to {}: {}", h.origin().user(), address, e.getMessage());
+            return error(request, sid, ErrorCode.BAD_REQUEST, e.getMessage());
         }
         Optional<PermitFile.User> user = server.permits().user(h.origin().user());
         if (user.isEmpty()) {

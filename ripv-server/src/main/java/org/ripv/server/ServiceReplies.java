@@ -13,6 +13,7 @@ import org.ripv.messages.IncomingServerMessage;
 import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.OutgoingServiceMessage;
 import org.ripv.messages.Result;
+import org.ripv.naming.MailboxAddress;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -40,7 +41,7 @@ final class ServiceReplies {
             f = new Footer(ref.descriptor().sid(), f.status(), f.errorCode(), f.route(), f.replyText(), f.result());
         }
         Result sent = f.result();
-        f = store(server, f);
+        f = store(server, f, folderOf(p.header().mailboxAddress()));
         // Route by the header the server sent, never by what the service wrote back.
         OutgoingServerMessage out = new IncomingServerMessage(p.header()).reply(f.via(RIPVServer.SERVER_SERVICE));
         if (!server.dataLoop().downloaded(out, sent, server::reply)) { // DBA files go to the database first
@@ -48,32 +49,50 @@ final class ServiceReplies {
         }
     }
 
-    /** Writes files from a reply into the download directory and replaces their bytes with a listing. */
-    private static Footer store(RIPVServer server, Footer f) {
+    /** The MailBox's handle: each MailBox's files live in a folder of their own. */
+    private static String folderOf(String mailboxAddress) {
+        try {
+            return MailboxAddress.parse(mailboxAddress).handle();
+        } catch (RuntimeException e) {
+            return "service";
+        }
+    }
+
+    /**
+     * Writes files from a reply into the MailBox's folder of the download directory and replaces
+     * their bytes with a listing of the names they are fetched by ({@code FOLDER/NAME}).
+     */
+    private static Footer store(RIPVServer server, Footer f, String folder) {
         Result r = f.result();
         List<FileData> files = r instanceof FileData d ? List.of(d) : r instanceof FileBundle b ? b.files() : List.of();
         try {
             if (r instanceof ImageResult img) {
-                server.files().storeDownload(img.name(), img.jpeg());
-                return f;
+                String as = server.files().storeDownload(folder, img.name(), img.jpeg());
+                return f.withText(storedAs(f.replyText(), List.of(as)));
             }
             if (files.isEmpty()) {
                 return f;
             }
             List<FileListing.Entry> stored = new ArrayList<>();
+            List<String> names = new ArrayList<>();
             for (FileData d : files) {
                 if (d.offset() != 0 || !d.isLast()) {
                     throw new IOException("a service sent part of '" + d.name() + "' where a whole file belongs");
                 }
-                server.files().storeDownload(d.name(), d.data());
-                stored.add(new FileListing.Entry(d.name(), d.data().length, System.currentTimeMillis()));
+                String as = server.files().storeDownload(folder, d.name(), d.data());
+                names.add(as);
+                stored.add(new FileListing.Entry(as, d.data().length, System.currentTimeMillis()));
             }
-            return f.withResult(new FileListing(server.files().downloadDir().toString(), stored));
+            return f.withText(storedAs(f.replyText(), names)).withResult(new FileListing("download", stored));
         } catch (IOException | IllegalArgumentException e) {
             log.warn("could not store a file from a reply: {}", e.getMessage());
             return new Footer(f.serviceId(), org.ripv.messages.Status.ERROR, ErrorCode.TRANSFER_FAILED, f.route(),
                     (f.replyText().isEmpty() ? "" : f.replyText() + "\n") + "the server could not store the file: " + e.getMessage(),
                     null);
         }
+    }
+
+    private static String storedAs(String text, List<String> names) {
+        return (text.isEmpty() ? "" : text + "\n") + "stored in the download directory as " + String.join(", ", names);
     }
 }

@@ -222,6 +222,17 @@ public final class ClientSocketHandler implements AutoCloseable {
      */
     public OutgoingServerMessage upload(Path local, String remoteName, TransferListener listener)
             throws IOException, RipvErrorException {
+        return upload(local, remoteName, null, listener);
+    }
+
+    /**
+     * Uploads as {@link #upload(Path, String, TransferListener)} does, saying what to do when the
+     * name is taken: null refuses (FILE_EXISTS), {@code replace} replaces (a permit right),
+     * {@code keep} stores under a new free name, which the last reply names.
+     */
+    public OutgoingServerMessage upload(Path local, String remoteName, String mode, TransferListener listener)
+            throws IOException, RipvErrorException {
+        String suffix = mode == null || mode.isBlank() ? "" : " " + mode;
         long total = Files.size(local);
         listener = listener == null ? TransferListener.NONE : listener;
         try (InputStream file = Files.newInputStream(local)) {
@@ -230,7 +241,7 @@ public final class ClientSocketHandler implements AutoCloseable {
             do {
                 byte[] chunk = file.readNBytes((int) Math.min(CHUNK, total - offset));
                 Header h = new Header(nextId(), new org.ripv.messages.IdBadge("000000", ""), List.of(), "", "",
-                        "?upload " + remoteName + " " + offset + " " + total, Priority.NORMAL,
+                        "?upload " + remoteName + " " + offset + " " + total + suffix, Priority.NORMAL,
                         new Attachment(remoteName, chunk));
                 last = await(send(h, null), Duration.ofMinutes(2));
                 if (last.status() == Status.ERROR) {
@@ -253,7 +264,13 @@ public final class ClientSocketHandler implements AutoCloseable {
     public Path download(String name, Path localDir, TransferListener listener) throws IOException, RipvErrorException {
         listener = listener == null ? TransferListener.NONE : listener;
         Files.createDirectories(localDir);
-        Path target = localDir.resolve(name).normalize();
+        // a download is listed as FOLDER/NAME (the MailBox it came from): saved locally as NAME
+        int slash = name.lastIndexOf('/');
+        String folder = slash < 0 ? "x" : name.substring(0, slash);
+        if (folder.isEmpty() || folder.contains("/") || folder.equals("..") || folder.equals(".")) {
+            throw new IOException("refusing to write '" + name + "' outside " + localDir);
+        }
+        Path target = localDir.resolve(name.substring(slash + 1)).normalize();
         if (!target.getParent().equals(localDir.normalize())) {
             throw new IOException("refusing to write '" + name + "' outside " + localDir);
         }

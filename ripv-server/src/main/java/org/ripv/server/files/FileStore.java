@@ -2,7 +2,11 @@ package org.ripv.server.files;
 
 import java.io.IOException;
 import java.io.InputStream;
+import java.io.Reader;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.DirectoryStream;
+import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
@@ -13,31 +17,57 @@ import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
 import java.util.Map;
+import java.util.Properties;
 import java.util.concurrent.ConcurrentHashMap;
+import org.ripv.files.PrivateFiles;
 import org.ripv.messages.FileListing;
 
 /**
  * The server's upload directory (files from clients) and download directory (files from
  * services). Every write goes to a temporary file first and is moved into place whole, so a
  * failed or partial transfer never looks complete; names follow {@link FileNames}.
+ *
+ * <ul>
+ *   <li>An upload never replaces a file silently ({@link UploadMode}): without a mode an existing
+ *       name is refused ({@link FileExistsException}), {@code keep} picks a free name.</li>
+ *   <li>Each MailBox's downloads live in a folder of their own, {@code download/HANDLE/NAME}, so one
+ *       vehicle cannot replace another's files; their names are listed as {@code HANDLE/NAME}.</li>
+ *   <li>Who uploaded each file is remembered ({@code upload/.owners}) for the per-user quota.</li>
+ *   <li>Directories and files are owner-only (0700/0600).</li>
+ * </ul>
  */
 public final class FileStore {
     private static final String PARTIAL = ".partial";
+    private static final String OWNERS = ".owners";
+    /** How many {@code NAME(n).ext} a keep tries before giving up. */
+    private static final int MAX_KEEP = 1000;
 
     private final Path uploadDir;
     private final Path downloadDir;
     private final long maxUpload;
-    /** Chunked uploads in progress, by client id and name: the bytes received so far. */
-    private final Map<String, Long> uploads = new ConcurrentHashMap<>();
+    /** Chunked uploads in progress, by client id and name. */
+    private final Map<String, Upload> uploads = new ConcurrentHashMap<>();
+    /** Upload name to the user who stored it. */
+    private final Properties owners = new Properties();
+
+    private record Upload(String user, long total, long received, UploadMode mode) {}
 
     public FileStore(Path uploadDir, Path downloadDir, long maxUpload) throws IOException {
-        this.uploadDir = Files.createDirectories(uploadDir).toRealPath();
-        this.downloadDir = Files.createDirectories(downloadDir).toRealPath();
+        this.uploadDir = PrivateFiles.createDirectories(uploadDir).toRealPath();
+        this.downloadDir = PrivateFiles.createDirectories(downloadDir).toRealPath();
         this.maxUpload = maxUpload;
-        Files.createDirectories(this.uploadDir.resolve(PARTIAL));
-        Files.createDirectories(this.downloadDir.resolve(PARTIAL));
+        PrivateFiles.restrict(this.uploadDir);
+        PrivateFiles.restrict(this.downloadDir);
+        PrivateFiles.createDirectories(this.uploadDir.resolve(PARTIAL));
+        PrivateFiles.createDirectories(this.downloadDir.resolve(PARTIAL));
         clean(this.uploadDir.resolve(PARTIAL));
         clean(this.downloadDir.resolve(PARTIAL));
+        Path o = this.uploadDir.resolve(OWNERS);
+        if (Files.exists(o)) {
+            try (Reader r = Files.newBufferedReader(o, StandardCharsets.UTF_8)) {
+                owners.load(r);
+            }
+        }
     }
 
     public Path uploadDir() {
@@ -52,14 +82,28 @@ public final class FileStore {
         return maxUpload;
     }
 
-    /** The result of one chunk: how much has arrived, and whether the file is now complete. */
-    public record ChunkResult(long received, long total, boolean complete) {}
+    /**
+     * The result of one chunk: how much has arrived, whether the file is now complete, and the
+     * name it was stored under (differs from the asked name after a {@code keep}).
+     */
+    public record ChunkResult(long received, long total, boolean complete, String storedAs) {}
+
+    /** {@link #uploadChunk(String, String, String, long, long, byte[], UploadMode, long)} refusing a taken name, no quota. */
+    public ChunkResult uploadChunk(String clientId, String name, long offset, long total, byte[] data) throws IOException {
+        return uploadChunk(clientId, "", name, offset, total, data, UploadMode.REFUSE, Long.MAX_VALUE);
+    }
 
     /**
      * Appends one chunk of a client's upload. Offset 0 starts (or restarts) the file; each later
-     * chunk must continue exactly where the last ended; the last chunk moves the file into place.
+     * chunk must continue exactly where the last ended; the last chunk moves the file into place
+     * as {@code mode} says.
+     *
+     * @param quota the most bytes {@code user} may hold in the upload directory, this file included
+     * @throws FileExistsException   the name is taken and {@code mode} is REFUSE
+     * @throws FileTooLargeException over the size limit or the user's quota
      */
-    public ChunkResult uploadChunk(String clientId, String name, long offset, long total, byte[] data) throws IOException {
+    public ChunkResult uploadChunk(String clientId, String user, String name, long offset, long total, byte[] data,
+                                   UploadMode mode, long quota) throws IOException {
         FileNames.check(name);
         if (total < 0 || offset < 0 || offset + data.length > total) {
             throw new IllegalArgumentException("chunk at " + offset + " of " + data.length + " bytes does not fit a file of " + total);
@@ -71,11 +115,23 @@ public final class FileStore {
         String key = clientId + "/" + name;
         Path part = uploadDir.resolve(PARTIAL).resolve(clientId + "-" + name);
         if (offset == 0) {
-            Files.write(part, data, StandardOpenOption.CREATE, StandardOpenOption.TRUNCATE_EXISTING, StandardOpenOption.WRITE);
+            if (mode == UploadMode.REFUSE && Files.exists(uploadDir.resolve(name))) {
+                abort(clientId, name);
+                throw exists(name);
+            }
+            long used = usedBy(user, key) + (mode == UploadMode.REPLACE && user.equals(owners.getProperty(name))
+                    ? -sizeOrZero(uploadDir.resolve(name)) : 0);
+            if (used + total > quota) {
+                abort(clientId, name);
+                throw new FileTooLargeException("'" + name + "' (" + total + " bytes) would take " + user + " to "
+                        + (used + total) + " bytes in the upload directory; the quota is " + quota
+                        + " bytes (?delete old files first)");
+            }
+            PrivateFiles.write(part, data, StandardOpenOption.CREATE, StandardOpenOption.TRUNCATE_EXISTING, StandardOpenOption.WRITE);
         } else {
-            Long have = uploads.get(key);
-            if (have == null || have != offset) {
-                throw new IllegalArgumentException("upload of '" + name + "' expected offset " + (have == null ? 0 : have)
+            Upload have = uploads.get(key);
+            if (have == null || have.received() != offset || have.total() != total) {
+                throw new IllegalArgumentException("upload of '" + name + "' expected offset " + (have == null ? 0 : have.received())
                         + " but got " + offset + "; start again from 0");
             }
             Files.write(part, data, StandardOpenOption.APPEND, StandardOpenOption.WRITE);
@@ -83,11 +139,116 @@ public final class FileStore {
         long received = offset + data.length;
         if (received == total) {
             uploads.remove(key);
-            Files.move(part, uploadDir.resolve(name), StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-            return new ChunkResult(received, total, true);
+            try {
+                String stored = place(part, name, mode, user);
+                return new ChunkResult(received, total, true, stored);
+            } finally {
+                Files.deleteIfExists(part);
+            }
         }
-        uploads.put(key, received);
-        return new ChunkResult(received, total, false);
+        uploads.put(key, new Upload(user, total, received, mode));
+        return new ChunkResult(received, total, false, name);
+    }
+
+    private static FileExistsException exists(String name) {
+        return new FileExistsException("'" + name + "' is in the upload directory already; nothing was replaced."
+                + " Upload again with 'replace' (needs the right) or 'keep' (stores it under a new name)");
+    }
+
+    /** Moves a finished upload into place: never over an existing file unless {@code mode} is REPLACE. */
+    private synchronized String place(Path part, String name, UploadMode mode, String user) throws IOException {
+        String stored = name;
+        switch (mode) {
+            case REPLACE -> Files.move(part, uploadDir.resolve(name), StandardCopyOption.REPLACE_EXISTING,
+                    StandardCopyOption.ATOMIC_MOVE);
+            case REFUSE -> {
+                if (!linkInto(part, name)) {
+                    throw exists(name);
+                }
+            }
+            case KEEP -> {
+                int n = 0;
+                while (!linkInto(part, stored)) {
+                    if (++n > MAX_KEEP) {
+                        throw new FileExistsException("no free name like '" + name + "' after " + MAX_KEEP + " tries");
+                    }
+                    stored = numbered(name, n);
+                }
+            }
+            default -> throw new IllegalStateException(mode.toString());
+        }
+        if (user != null && !user.isEmpty()) {
+            owners.setProperty(stored, user);
+        } else {
+            owners.remove(stored);
+        }
+        saveOwners();
+        return stored;
+    }
+
+    /** Puts {@code part} in the upload directory as {@code name} unless that exists; false if it does. */
+    private boolean linkInto(Path part, String name) throws IOException {
+        Path target = uploadDir.resolve(FileNames.check(name));
+        try {
+            Files.createLink(target, part); // atomic: fails if the name is taken, never replaces
+            return true;
+        } catch (FileAlreadyExistsException e) {
+            return false;
+        } catch (UnsupportedOperationException e) {
+            if (Files.exists(target)) {
+                return false;
+            }
+            Files.move(part, target); // no hard links here: place() is synchronized against ourselves
+            return true;
+        }
+    }
+
+    /** {@code log.txt} → {@code log(1).txt}; {@code README} → {@code README(1)}. */
+    static String numbered(String name, int n) {
+        int dot = name.lastIndexOf('.');
+        return dot > 0 ? name.substring(0, dot) + "(" + n + ")" + name.substring(dot) : name + "(" + n + ")";
+    }
+
+    /** Bytes {@code user} holds in the upload directory plus what their other unfinished uploads will add. */
+    private long usedBy(String user, String exceptKey) {
+        long used = 0;
+        for (String name : owners.stringPropertyNames()) {
+            if (user.equals(owners.getProperty(name))) {
+                used += sizeOrZero(uploadDir.resolve(name));
+            }
+        }
+        for (Map.Entry<String, Upload> e : uploads.entrySet()) {
+            if (!e.getKey().equals(exceptKey) && e.getValue().user().equals(user)) {
+                used += e.getValue().total();
+            }
+        }
+        return used;
+    }
+
+    /** Bytes {@code user} holds in the upload directory. */
+    public long usage(String user) {
+        return usedBy(user, "");
+    }
+
+    /** Who stored an upload, or empty when unknown (put there by hand). */
+    public String owner(String name) {
+        return owners.getProperty(name, "");
+    }
+
+    private static long sizeOrZero(Path p) {
+        try {
+            return Files.size(p);
+        } catch (IOException e) {
+            return 0;
+        }
+    }
+
+    private void saveOwners() throws IOException {
+        Path tmp = PrivateFiles.createTempFile(uploadDir.resolve(PARTIAL), "owners-", ".tmp");
+        try (Writer w = Files.newBufferedWriter(tmp, StandardCharsets.UTF_8)) {
+            owners.store(w, "who uploaded each file (for the upload quota)");
+        }
+        Files.move(tmp, uploadDir.resolve(OWNERS), StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
     }
 
     /** Drops an unfinished upload. */
@@ -110,6 +271,29 @@ public final class FileStore {
         }
     }
 
+    /**
+     * Deletes a stored file: a plain NAME from the upload directory, a {@code FOLDER/NAME} (as
+     * {@code ?dlfiles} lists it) from the download directory. Returns where it was.
+     */
+    public synchronized String delete(String name) throws IOException {
+        if (name.indexOf('/') >= 0) {
+            Path p = downloadPath(name);
+            if (!Files.deleteIfExists(p)) {
+                throw new NoSuchFileException("no file '" + name + "' in the download directory (?dlfiles lists them)");
+            }
+            return "download directory";
+        }
+        Path p = uploadDir.resolve(FileNames.check(name));
+        if (!Files.deleteIfExists(p)) {
+            throw new NoSuchFileException("no file '" + name + "' in the upload directory (?ulfiles lists them);"
+                    + " a download is named FOLDER/NAME as ?dlfiles lists it");
+        }
+        if (owners.remove(name) != null) {
+            saveOwners();
+        }
+        return "upload directory";
+    }
+
     /** Reads a whole uploaded file, for attaching to a command. */
     public byte[] readUpload(String name) throws IOException {
         Path p = uploadDir.resolve(FileNames.check(name));
@@ -124,21 +308,43 @@ public final class FileStore {
         }
     }
 
-    /** Stores a file that came from a service in the download directory. */
-    public Path storeDownload(String name, byte[] data) throws IOException {
+    /**
+     * Stores a file that came from a service's MailBox in that MailBox's own folder of the
+     * download directory, replacing an earlier file of the same name from the same MailBox only.
+     *
+     * @param folder the MailBox's handle ({@code ttyV0}); unusable characters become '_'
+     * @return the name the file is listed and fetched by: {@code FOLDER/NAME}
+     */
+    public String storeDownload(String folder, String name, byte[] data) throws IOException {
         FileNames.check(name);
-        Path tmp = Files.createTempFile(downloadDir.resolve(PARTIAL), "dl-", ".part");
+        String f = folderName(folder);
+        Path dir = PrivateFiles.createDirectories(downloadDir.resolve(f));
+        Path tmp = PrivateFiles.createTempFile(downloadDir.resolve(PARTIAL), "dl-", ".part");
         try {
             Files.write(tmp, data);
-            return Files.move(tmp, downloadDir.resolve(name), StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+            Files.move(tmp, dir.resolve(name), StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+            return f + "/" + name;
         } finally {
             Files.deleteIfExists(tmp);
         }
     }
 
-    /** Reads up to {@code length} bytes of a downloaded file from {@code offset}; returns {total, bytes}. */
+    /** A MailBox handle as a folder name: {@link FileNames} rules, anything else replaced by '_'. */
+    static String folderName(String handle) {
+        String s = handle == null || handle.isBlank() ? "service" : handle.replaceAll("[^A-Za-z0-9._@+-]", "_");
+        if (s.startsWith(".")) {
+            s = "_" + s.substring(1);
+        }
+        return FileNames.check(s.length() > 64 ? s.substring(0, 64) : s);
+    }
+
+    /**
+     * Reads up to {@code length} bytes of a downloaded file from {@code offset}; returns {total, bytes}.
+     * The name is {@code FOLDER/NAME} as {@code ?dlfiles} lists it, or a plain NAME when only one
+     * folder holds it.
+     */
     public Object[] readDownload(String name, long offset, int length) throws IOException {
-        Path p = downloadDir.resolve(FileNames.check(name));
+        Path p = downloadPath(name);
         try (InputStream in = Files.newInputStream(p)) {
             long total = Files.size(p);
             if (offset < 0 || offset > total) {
@@ -152,15 +358,60 @@ public final class FileStore {
         }
     }
 
+    /** Where a download name points: one folder level at most, each part a plain name. */
+    private Path downloadPath(String name) throws IOException {
+        if (name == null || name.isEmpty()) {
+            throw new IllegalArgumentException("a file name is required");
+        }
+        int slash = name.indexOf('/');
+        if (slash >= 0) {
+            String folder = name.substring(0, slash);
+            String file = name.substring(slash + 1);
+            try {
+                if (folder.equals(PARTIAL)) {
+                    throw new IllegalArgumentException("'" + name + "' is not a download");
+                }
+                return downloadDir.resolve(FileNames.check(folder)).resolve(FileNames.check(file));
+            } catch (IllegalArgumentException e) {
+                throw new IllegalArgumentException("a download name holds at most one slash, between a MailBox's folder and"
+                        + " a plain file name (FOLDER/NAME as ?dlfiles lists it): " + e.getMessage());
+            }
+        }
+        FileNames.check(name);
+        Path top = downloadDir.resolve(name);
+        if (Files.isRegularFile(top)) {
+            return top;
+        }
+        List<String> found = new ArrayList<>();
+        try (DirectoryStream<Path> ds = Files.newDirectoryStream(downloadDir, Files::isDirectory)) {
+            for (Path d : ds) {
+                String folder = d.getFileName().toString();
+                if (!folder.startsWith(".") && Files.isRegularFile(d.resolve(name))) {
+                    found.add(folder + "/" + name);
+                }
+            }
+        }
+        if (found.size() > 1) {
+            found.sort(null);
+            throw new IllegalArgumentException("'" + name + "' came from several MailBoxes: " + String.join(", ", found)
+                    + "; name one of them");
+        }
+        if (found.isEmpty()) {
+            throw new NoSuchFileException("no file '" + name + "' in the download directory (?dlfiles lists them)");
+        }
+        return downloadDir.resolve(found.get(0));
+    }
+
     public FileListing listUploads() throws IOException {
-        return list(uploadDir);
+        return list(uploadDir, false);
     }
 
+    /** The download directory: files of each MailBox's folder as {@code FOLDER/NAME}, and any loose files. */
     public FileListing listDownloads() throws IOException {
-        return list(downloadDir);
+        return list(downloadDir, true);
     }
 
-    private static FileListing list(Path dir) throws IOException {
+    private static FileListing list(Path dir, boolean folders) throws IOException {
         List<FileListing.Entry> entries = new ArrayList<>();
         try (DirectoryStream<Path> ds = Files.newDirectoryStream(dir)) {
             for (Path p : ds) {
@@ -171,6 +422,16 @@ public final class FileStore {
                 BasicFileAttributes a = Files.readAttributes(p, BasicFileAttributes.class);
                 if (a.isRegularFile()) {
                     entries.add(new FileListing.Entry(n, a.size(), a.lastModifiedTime().toMillis()));
+                } else if (folders && a.isDirectory()) {
+                    try (DirectoryStream<Path> inner = Files.newDirectoryStream(p)) {
+                        for (Path q : inner) {
+                            String m = q.getFileName().toString();
+                            BasicFileAttributes b = Files.readAttributes(q, BasicFileAttributes.class);
+                            if (!m.startsWith(".") && b.isRegularFile()) {
+                                entries.add(new FileListing.Entry(n + "/" + m, b.size(), b.lastModifiedTime().toMillis()));
+                            }
+                        }
+                    }
                 }
             }
         }

@@ -22,6 +22,7 @@ import java.util.Optional;
  * allow @observers  SerialPortServer *   dir
  * allow @observers  SerialPortServer *   ymodem:get *
  * deny  @observers  SerialPortServer *   *
+ * quota @observers  100M
  * </pre>
  * Rules are read top to bottom and the first that applies to the user and matches the command
  * decides; when none does, the command is refused.
@@ -40,15 +41,23 @@ public final class PermitFile {
     /** The most roles one user may have (they travel with every request). */
     public static final int MAX_ROLES = 64;
 
+    /** A user's upload quota when no {@code quota} line applies: 1 GiB. */
+    public static final long DEFAULT_QUOTA = 1L << 30;
+
+    /** {@code quota WHO BYTES}: how much a user may keep in the upload directory. */
+    private record Quota(String who, long bytes) {}
+
     private final Path file;
     private final Map<String, User> users;
     private final List<Rule> rules;
+    private final List<Quota> quotas;
     private final List<String> lines;
 
-    private PermitFile(Path file, Map<String, User> users, List<Rule> rules, List<String> lines) {
+    private PermitFile(Path file, Map<String, User> users, List<Rule> rules, List<Quota> quotas, List<String> lines) {
         this.file = file;
         this.users = users;
         this.rules = rules;
+        this.quotas = quotas;
         this.lines = lines;
     }
 
@@ -60,13 +69,18 @@ public final class PermitFile {
             "# user NAME HASH ROLE[,ROLE...]",
             "# allow|deny WHO SERVICE MAILBOX COMMAND-PATTERN",
             "#   WHO: a user, @role or *;  SERVICE: e.g. SerialPortServer, or RIPVServer for the server's",
-            "#   ?upload, ?upload-cancel, ?download, ?lock and ?unlock (other ? commands need only a log-in);",
-            "#   MAILBOX: a handle such as ttyS0 or *;  COMMAND-PATTERN: the whole command, * matching anything.",
+            "#   ?upload, ?upload-cancel, ?download, ?delete, ?replace NAME (the right to upload with 'replace'),",
+            "#   ?lock and ?unlock (other ? commands need only a log-in);",
+            "#   MAILBOX: a handle such as ttyS0 or *;  COMMAND-PATTERN: the whole one-line command, * matching anything.",
             "# The first rule that matches decides; a command no rule allows is refused.",
+            "# quota WHO BYTES: how much a user may keep in the upload directory (first match; default 1G).",
             "",
+            "# Operators command vehicles, change the database, replace and delete stored files.",
             "allow @operators * * *",
             "",
             "# Observers may list and offload a glider's files, query and plot, but not upload to it or send GO.",
+            "# They upload to the server only under free names (no 'replace', no ?delete), and the DatabaseServer",
+            "# runs their SQL as its read-only user whatever their other roles (docs/database.md).",
             "allow @observers SerialPortServer * dir*",
             "allow @observers SerialPortServer * type *",
             "allow @observers SerialPortServer * ymodem:get *",
@@ -75,6 +89,7 @@ public final class PermitFile {
             "allow @observers DataVisServer * *",
             "allow @observers RIPVServer * ?upload*",
             "allow @observers RIPVServer * ?download *",
+            "quota @observers 100M",
             "");
 
     /** Reads a permit file; a missing file is created from {@link #TEMPLATE}. */
@@ -91,6 +106,7 @@ public final class PermitFile {
     static PermitFile parse(Path file, List<String> lines) {
         Map<String, User> users = new LinkedHashMap<>();
         List<Rule> rules = new ArrayList<>();
+        List<Quota> quotas = new ArrayList<>();
         int n = 0;
         for (String raw : lines) {
             n++;
@@ -118,11 +134,43 @@ public final class PermitFile {
                     }
                     rules.add(Rule.parse(w[0].equals("allow"), w[1], w[2], w[3], w[4], line));
                 }
+                case "quota" -> {
+                    if (w.length != 3) {
+                        throw new IllegalArgumentException(where + "a quota is 'quota WHO BYTES', e.g. quota @observers 100M");
+                    }
+                    quotas.add(new Quota(w[1], bytes(w[2], where)));
+                }
                 default -> throw new IllegalArgumentException(where + "unknown line '" + w[0]
-                        + "': lines start with user, allow or deny");
+                        + "': lines start with user, allow, deny or quota");
             }
         }
-        return new PermitFile(file, users, rules, List.copyOf(lines));
+        return new PermitFile(file, users, rules, List.copyOf(quotas), List.copyOf(lines));
+    }
+
+    /** {@code 500}, {@code 64K}, {@code 100M}, {@code 2G} (powers of 1024). */
+    private static long bytes(String s, String where) {
+        String t = s.toUpperCase(java.util.Locale.ROOT);
+        long unit = t.endsWith("K") ? 1L << 10 : t.endsWith("M") ? 1L << 20 : t.endsWith("G") ? 1L << 30 : 1;
+        try {
+            long v = Long.parseLong(unit == 1 ? t : t.substring(0, t.length() - 1));
+            if (v < 0 || v > Long.MAX_VALUE / unit) {
+                throw new NumberFormatException();
+            }
+            return v * unit;
+        } catch (NumberFormatException e) {
+            throw new IllegalArgumentException(where + "quota '" + s + "' is not a size like 500, 64K, 100M or 2G");
+        }
+    }
+
+    /** The most bytes a user may keep in the upload directory: the first {@code quota} line for them, else {@link #DEFAULT_QUOTA}. */
+    public long quota(User user) {
+        for (Quota q : quotas) {
+            if (q.who().equals("*") || q.who().equals(user.name())
+                    || q.who().startsWith("@") && user.roles().contains(q.who().substring(1))) {
+                return q.bytes();
+            }
+        }
+        return DEFAULT_QUOTA;
     }
 
     public Optional<User> user(String name) {

@@ -3,6 +3,7 @@ package org.ripv.server.permit;
 import java.util.List;
 import java.util.Locale;
 import java.util.regex.Pattern;
+import org.ripv.commands.SingleLineCommand;
 
 /**
  * One {@code allow} or {@code deny} line of the permit file:
@@ -22,20 +23,26 @@ record Rule(boolean allow, String who, Pattern service, Pattern mailbox, Pattern
     }
 
     boolean matches(String serviceName, String handle, String commandText) {
+        // A rule speaks about one line: text holding a line break or other control character
+        // matches no rule, so it can only ever be refused (the server refuses it earlier anyway).
+        if (SingleLineCommand.firstControl(commandText) >= 0) {
+            return false;
+        }
         return service.matcher(serviceName).matches() && mailbox.matcher(handle).matches()
-                && command.matcher(commandText.trim()).matches();
+                && command.matcher(commandText.strip()).matches();
     }
 
     /**
      * A glob: {@code *} matches any run; everything else is literal, case-insensitive. ({@code ?}
-     * is literal so that rules can name the server's {@code ?} commands.)
+     * is literal so that rules can name the server's {@code ?} commands.) No DOTALL: {@code *}
+     * never runs across a line break, so {@code dir*} cannot match {@code dir\rGO}.
      */
     static Pattern glob(String g) {
         StringBuilder re = new StringBuilder();
         for (char c : g.toCharArray()) {
             re.append(c == '*' ? ".*" : Pattern.quote(String.valueOf(c)));
         }
-        return Pattern.compile(re.toString(), Pattern.CASE_INSENSITIVE | Pattern.UNICODE_CASE | Pattern.DOTALL);
+        return Pattern.compile(re.toString(), Pattern.CASE_INSENSITIVE | Pattern.UNICODE_CASE);
     }
 
     @Override

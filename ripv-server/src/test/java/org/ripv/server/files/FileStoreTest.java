@@ -46,11 +46,88 @@ class FileStoreTest {
     @Test
     void downloadsAreReadInBoundedChunks() throws Exception {
         FileStore s = new FileStore(dir.resolve("up"), dir.resolve("down"), 100);
-        s.storeDownload("log.txt", "0123456789".getBytes());
-        Object[] chunk = s.readDownload("log.txt", 4, 3);
+        assertThat(s.storeDownload("ttyV0", "log.txt", "0123456789".getBytes())).isEqualTo("ttyV0/log.txt");
+        Object[] chunk = s.readDownload("ttyV0/log.txt", 4, 3);
         assertThat((Long) chunk[0]).isEqualTo(10);
         assertThat(new String((byte[]) chunk[1])).isEqualTo("456");
         assertThatThrownBy(() -> s.readDownload("log.txt", 11, 3)).hasMessageContaining("outside");
         assertThatThrownBy(() -> s.readDownload("missing", 0, 3)).hasMessageContaining("no file 'missing'");
+    }
+
+    @Test
+    void eachMailBoxsDownloadsLiveApartAndPlainNamesFindTheOnlyOne() throws Exception {
+        FileStore s = new FileStore(dir.resolve("up"), dir.resolve("down"), 100);
+        s.storeDownload("ttyV0", "MISSION1.LOG", "zero".getBytes());
+        s.storeDownload("ttyV1", "MISSION1.LOG", "one".getBytes());
+        s.storeDownload("ttyV1", "ONLY.LOG", "only".getBytes());
+        assertThat(new String((byte[]) s.readDownload("ttyV0/MISSION1.LOG", 0, 100)[1])).isEqualTo("zero");
+        assertThat(new String((byte[]) s.readDownload("ttyV1/MISSION1.LOG", 0, 100)[1])).isEqualTo("one");
+        assertThat(new String((byte[]) s.readDownload("ONLY.LOG", 0, 100)[1])).isEqualTo("only");
+        assertThatThrownBy(() -> s.readDownload("MISSION1.LOG", 0, 100)).hasMessageContaining("ttyV0/MISSION1.LOG, ttyV1/MISSION1.LOG");
+        assertThat(s.listDownloads().files()).extracting(e -> e.name())
+                .containsExactly("ttyV0/MISSION1.LOG", "ttyV1/MISSION1.LOG", "ttyV1/ONLY.LOG");
+        for (String bad : new String[] {"../up/x", "ttyV0/../../x", "ttyV0/a/b", ".partial/x", "/etc/passwd", "ttyV0/.x"}) {
+            assertThatThrownBy(() -> s.readDownload(bad, 0, 1)).as(bad).isInstanceOf(IllegalArgumentException.class);
+        }
+        assertThat(FileStore.folderName("../x y")).isEqualTo("_._x_y");
+        assertThatThrownBy(() -> s.storeDownload("ttyV0", "../x", new byte[1])).isInstanceOf(IllegalArgumentException.class);
+    }
+
+    @Test
+    void anUploadNeverReplacesSilently() throws Exception {
+        FileStore s = new FileStore(dir.resolve("up"), dir.resolve("down"), 100);
+        s.uploadChunk("1", "alice", "m.bin", 0, 3, "one".getBytes(), UploadMode.REFUSE, 1000);
+        assertThatThrownBy(() -> s.uploadChunk("2", "bob", "m.bin", 0, 3, "two".getBytes(), UploadMode.REFUSE, 1000))
+                .isInstanceOf(FileExistsException.class);
+        // taken while the upload was under way: still refused at the end
+        s.uploadChunk("2", "bob", "late.bin", 0, 4, "tw".getBytes(), UploadMode.REFUSE, 1000);
+        s.uploadChunk("3", "carol", "late.bin", 0, 1, "x".getBytes(), UploadMode.REFUSE, 1000);
+        assertThatThrownBy(() -> s.uploadChunk("2", "bob", "late.bin", 2, 4, "wo".getBytes(), UploadMode.REFUSE, 1000))
+                .isInstanceOf(FileExistsException.class);
+        assertThat(Files.readString(s.uploadDir().resolve("late.bin"))).isEqualTo("x");
+        FileStore.ChunkResult kept = s.uploadChunk("2", "bob", "m.bin", 0, 3, "two".getBytes(), UploadMode.KEEP, 1000);
+        assertThat(kept.storedAs()).isEqualTo("m(1).bin");
+        assertThat(s.uploadChunk("2", "bob", "m.bin", 0, 5, "three".getBytes(), UploadMode.KEEP, 1000).storedAs()).isEqualTo("m(2).bin");
+        assertThat(Files.readString(s.uploadDir().resolve("m.bin"))).isEqualTo("one");
+        s.uploadChunk("2", "bob", "m.bin", 0, 4, "four".getBytes(), UploadMode.REPLACE, 1000);
+        assertThat(Files.readString(s.uploadDir().resolve("m.bin"))).isEqualTo("four");
+        assertThat(s.owner("m.bin")).isEqualTo("bob");
+        assertThat(FileStore.numbered("README", 3)).isEqualTo("README(3)");
+    }
+
+    @Test
+    void quotaCountsWhatAUserHoldsAndDeleteFreesIt() throws Exception {
+        FileStore s = new FileStore(dir.resolve("up"), dir.resolve("down"), 100);
+        s.uploadChunk("1", "alice", "a.bin", 0, 60, new byte[60], UploadMode.REFUSE, 100);
+        assertThatThrownBy(() -> s.uploadChunk("1", "alice", "b.bin", 0, 50, new byte[50], UploadMode.REFUSE, 100))
+                .isInstanceOf(FileTooLargeException.class).hasMessageContaining("quota");
+        s.uploadChunk("2", "bob", "b.bin", 0, 50, new byte[50], UploadMode.REFUSE, 100); // bob has his own
+        assertThat(s.usage("alice")).isEqualTo(60);
+        assertThat(s.delete("a.bin")).isEqualTo("upload directory");
+        assertThat(s.usage("alice")).isZero();
+        s.uploadChunk("1", "alice", "b2.bin", 0, 90, new byte[90], UploadMode.REFUSE, 100);
+        // the owners survive a restart
+        FileStore again = new FileStore(dir.resolve("up"), dir.resolve("down"), 100);
+        assertThat(again.usage("alice")).isEqualTo(90);
+        s.storeDownload("ttyV0", "x.log", new byte[1]);
+        assertThat(s.delete("ttyV0/x.log")).isEqualTo("download directory");
+        assertThatThrownBy(() -> s.delete("ttyV0/x.log")).isInstanceOf(java.nio.file.NoSuchFileException.class);
+        assertThatThrownBy(() -> s.delete("../permit.txt")).isInstanceOf(IllegalArgumentException.class);
+    }
+
+    @Test
+    void directoriesAndFilesAreOwnerOnly() throws Exception {
+        FileStore s = new FileStore(dir.resolve("up"), dir.resolve("down"), 100);
+        s.uploadChunk("1", "alice", "a.bin", 0, 3, new byte[3], UploadMode.REFUSE, 100);
+        s.storeDownload("ttyV0", "x.log", new byte[1]);
+        for (java.nio.file.Path p : java.util.List.of(s.uploadDir(), s.downloadDir(), s.downloadDir().resolve("ttyV0"))) {
+            assertThat(java.nio.file.attribute.PosixFilePermissions.toString(Files.getPosixFilePermissions(p))).as(p.toString())
+                    .isEqualTo("rwx------");
+        }
+        for (java.nio.file.Path p : java.util.List.of(s.uploadDir().resolve("a.bin"), s.downloadDir().resolve("ttyV0/x.log"),
+                s.uploadDir().resolve(".owners"))) {
+            assertThat(java.nio.file.attribute.PosixFilePermissions.toString(Files.getPosixFilePermissions(p))).as(p.toString())
+                    .isEqualTo("rw-------");
+        }
     }
 }

@@ -32,8 +32,11 @@ import org.slf4j.LoggerFactory;
  * {@link ErrorCode#TIMEOUT} when the query timeout cancelled it. The handler keeps serving after
  * all of them.
  *
- * <p>Users whose permit-file roles include {@value #READER_ROLE} run their commands on the
- * reader connection (a database user that can only read); everyone else on the owner connection.
+ * <p>Only users whose permit-file roles include {@value #WRITER_ROLE} or {@value #OPERATORS_ROLE}
+ * (and not {@value #READER_ROLE}) run their commands on the owner connection; everyone else,
+ * observers included, on the reader connection (a database user that can only read). Session
+ * state a statement changes ({@code SET SCHEMA}, isolation, an open transaction) is reset before
+ * the next command, so it never carries over to another user of the shared connection.
  *
  * <p>Threading: {@link #execute} runs on the MailBox's one worker thread, so the connections
  * need no locking; {@link #availability} reads a volatile snapshot from any thread.
@@ -43,6 +46,10 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
 
     /** The permit-file role that sends a user's SQL to the read-only database user. */
     public static final String READER_ROLE = "db-reader";
+    /** A permit-file role that may change the database (besides {@value #OPERATORS_ROLE}). */
+    public static final String WRITER_ROLE = "db-writer";
+    /** The operators' role: they command vehicles and may change the database. */
+    public static final String OPERATORS_ROLE = "operators";
     /** Longest text kept of one cell; the rest is cut with a note. */
     static final int MAX_CELL_CHARS = 10_000;
 
@@ -51,6 +58,11 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
     private final IngestCommand ingest;
     private Connection owner;
     private Connection reader;
+    private Defaults ownerDefaults;
+    private Defaults readerDefaults;
+
+    /** A connection's session state as opened, to which it is reset before each command. */
+    private record Defaults(String schema, int isolation) {}
     private volatile Availability availability;
 
     public DatabaseHandler(DatabaseTarget target, QueryLimits limits) {
@@ -70,12 +82,17 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
         if (IngestCommand.matches(request.command())) {
             return ingest(request);
         }
-        return run(request.command(), request.roles().contains(READER_ROLE));
+        return run(request.command(), readsOnly(request.roles()));
+    }
+
+    /** True unless the roles let the user change the database: observers and unknown roles only read. */
+    public static boolean readsOnly(List<String> roles) {
+        return roles.contains(READER_ROLE) || !(roles.contains(WRITER_ROLE) || roles.contains(OPERATORS_ROLE));
     }
 
     /** {@code ingest NAME...} on the owner connection ({@link IngestCommand}). */
     private Reply ingest(Request request) {
-        if (request.roles().contains(READER_ROLE)) {
+        if (readsOnly(request.roles())) {
             return Reply.error(ErrorCode.FORBIDDEN, "you may only read this database; ingest writes to it");
         }
         try {
@@ -246,6 +263,7 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
     private Connection connection(boolean asReader) throws SQLException {
         Connection c = asReader ? reader : owner;
         if (c != null && !c.isClosed()) {
+            reset(c, asReader ? readerDefaults : ownerDefaults);
             return c;
         }
         try {
@@ -256,8 +274,10 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
         }
         if (asReader) {
             reader = c;
+            readerDefaults = defaults(c);
         } else {
             owner = c;
+            ownerDefaults = defaults(c);
         }
         availability = Availability.available(describe());
         return c;
@@ -296,6 +316,28 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
         }
         log.info("{}: connected to {} as {}", target.handle(), target.safeUrl(), user == null ? "(no user)" : user);
         return c;
+    }
+
+    private static Defaults defaults(Connection c) throws SQLException {
+        return new Defaults(c.getSchema(), c.getTransactionIsolation());
+    }
+
+    /**
+     * Puts a shared connection back as it was opened: the default schema, autocommit, the
+     * default isolation. One user's {@code SET SCHEMA SYS} must not decide where the next one's
+     * query runs.
+     */
+    private static void reset(Connection c, Defaults d) throws SQLException {
+        if (!c.getAutoCommit()) {
+            c.rollback();
+            c.setAutoCommit(true);
+        }
+        if (c.getTransactionIsolation() != d.isolation()) {
+            c.setTransactionIsolation(d.isolation());
+        }
+        if (d.schema() != null && !d.schema().equals(c.getSchema())) {
+            c.setSchema(d.schema());
+        }
     }
 
     private String describe() {

@@ -1,8 +1,6 @@
 package org.ripv.services.database;
 
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -70,7 +68,7 @@ public final class DatabaseServerCommand implements Callable<Integer> {
         @Option(names = "--db-user", paramLabel = "U", description = "Database user for full access.")
         String user;
 
-        @Option(names = "--db-password", paramLabel = "P", description = "Its password (visible in ps; prefer --db-password-file).")
+        @Option(names = "--db-password", paramLabel = "P", description = "Its password (visible in ps, so it warns; prefer --db-password-file, $RIPV_DB_PASSWORD or the prompt).")
         String password;
 
         @Option(names = "--db-password-file", paramLabel = "FILE", description = "File holding the password.")
@@ -80,7 +78,7 @@ public final class DatabaseServerCommand implements Callable<Integer> {
                 description = "Read-only database user for RIPV users with the 'db-reader' role (none: such users are refused).")
         String readerUser;
 
-        @Option(names = "--reader-password", paramLabel = "P", description = "The reader's password.")
+        @Option(names = "--reader-password", paramLabel = "P", description = "The reader's password (visible in ps, so it warns; prefer --reader-password-file, $RIPV_READER_PASSWORD or the prompt).")
         String readerPassword;
 
         @Option(names = "--reader-password-file", paramLabel = "FILE", description = "File holding the reader's password.")
@@ -111,21 +109,20 @@ public final class DatabaseServerCommand implements Callable<Integer> {
             for (int i = 0; i < databases.size(); i++) {
                 Database d = databases.get(i);
                 targets.add(new DatabaseTarget(handles.get(i), d.driver, d.url, d.user,
-                        secret(d.password, d.passwordFile, "--db-password"), d.readerUser,
-                        secret(d.readerPassword, d.readerPasswordFile, "--reader-password"), d.schema));
+                        secret(d.password, d.passwordFile, d.user, "--db-password", "RIPV_DB_PASSWORD"), d.readerUser,
+                        secret(d.readerPassword, d.readerPasswordFile, d.readerUser, "--reader-password", "RIPV_READER_PASSWORD"),
+                        d.schema));
             }
         }
         return new DatabaseServer(host, targets, limits);
     }
 
-    private static String secret(String value, Path file, String option) throws IOException {
-        if (value != null && file != null) {
-            throw new IllegalArgumentException("give " + option + " or " + option + "-file, not both");
-        }
-        if (file != null) {
-            return Files.readString(file, StandardCharsets.UTF_8).strip();
-        }
-        return value;
+    /** Where launch warnings go (standard error; injectable for tests). */
+    java.io.PrintStream err = System.err;
+
+    /** A password from the option (with a warning), its file, the environment, or the terminal when a user is named. */
+    private String secret(String value, Path file, String user, String option, String env) throws IOException {
+        return org.ripv.launch.Secrets.resolve(value, file, env, option, user != null, err);
     }
 
     @Override

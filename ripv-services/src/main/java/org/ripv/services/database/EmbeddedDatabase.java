@@ -19,6 +19,7 @@ import java.util.Comparator;
 import java.util.List;
 import java.util.Properties;
 import java.util.stream.Stream;
+import org.ripv.files.PrivateFiles;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -62,7 +63,12 @@ public final class EmbeddedDatabase {
      * @return how to connect to it as owner and as reader
      */
     public static DatabaseTarget prepare(Path dataDir, String handle) throws IOException, SQLException {
-        Files.createDirectories(dataDir);
+        PrivateFiles.createDirectories(dataDir);
+        PrivateFiles.restrict(dataDir);
+        if (System.getProperty("derby.storage.useDefaultFilePermissions") == null) {
+            // Derby's files readable by their owner only (Derby's default outside its network server is the umask's)
+            System.setProperty("derby.storage.useDefaultFilePermissions", "false");
+        }
         if (System.getProperty("derby.stream.error.file") == null) {
             // Derby writes derby.log into the working directory unless told otherwise.
             System.setProperty("derby.stream.error.file", dataDir.resolve("derby.log").toString());
@@ -77,6 +83,7 @@ public final class EmbeddedDatabase {
             }
             String ownerPassword = require(p, "owner.password", credentials);
             checkOpens(url, ownerPassword, db);
+            restrictTree(dataDir);
             log.info("reusing the vehicle database in {}", db);
             return target(handle, url, ownerPassword, require(p, "reader.password", credentials));
         }
@@ -95,6 +102,7 @@ public final class EmbeddedDatabase {
             throw e;
         }
         writeCredentials(credentials, ownerPassword, readerPassword);
+        restrictTree(dataDir);
         log.info("created and seeded the vehicle database in {} in {} ms", db, (System.nanoTime() - started) / 1_000_000);
         return target(handle, url, ownerPassword, readerPassword);
     }
@@ -222,6 +230,17 @@ public final class EmbeddedDatabase {
         byte[] b = new byte[18];
         new SecureRandom().nextBytes(b);
         return Base64.getUrlEncoder().withoutPadding().encodeToString(b);
+    }
+
+    /** Makes every file and directory under {@code dir} owner-only (a database made by an older version, derby.log). */
+    static void restrictTree(Path dir) throws IOException {
+        try (Stream<Path> s = Files.walk(dir)) {
+            for (Path p : (Iterable<Path>) s::iterator) {
+                if (!Files.isSymbolicLink(p)) {
+                    PrivateFiles.restrict(p);
+                }
+            }
+        }
     }
 
     private static void deleteTree(Path dir) throws IOException {

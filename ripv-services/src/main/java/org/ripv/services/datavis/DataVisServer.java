@@ -129,7 +129,8 @@ public final class DataVisServer extends RIPVService {
 
     @Override
     protected void open() throws Exception {
-        Files.createDirectories(dir);
+        org.ripv.files.PrivateFiles.createDirectories(dir);
+        org.ripv.files.PrivateFiles.restrict(dir); // 0700: operators' data and plots are not for every local user
         int stale = Exchange.clean(dir);
         if (stale > 0) {
             log.info("removed {} exchange file(s) left in {} by an earlier run", stale, dir);

@@ -78,7 +78,8 @@ public final class OctaveWorker implements AutoCloseable {
             dir.resolve("ripvOut.m").toFile().deleteOnExit();
             dir.toFile().deleteOnExit();
         }
-        Files.createDirectories(workDir);
+        org.ripv.files.PrivateFiles.createDirectories(workDir);
+        org.ripv.files.PrivateFiles.restrict(workDir); // Octave writes with its own umask; the directory keeps it private
         OctaveWorker w = new OctaveWorker(workDir, octave, dir);
         w.launch(); // the first start fails loudly; later ones retry
         return w;

@@ -34,7 +34,8 @@ public final class PlotWorker implements AutoCloseable {
 
     private PlotWorker(Path dir) throws IOException {
         this.dir = dir.toAbsolutePath();
-        Files.createDirectories(this.dir);
+        org.ripv.files.PrivateFiles.createDirectories(this.dir);
+        org.ripv.files.PrivateFiles.restrict(this.dir);
         this.watch = FileSystems.getDefault().newWatchService();
         this.dir.register(watch, StandardWatchEventKinds.ENTRY_CREATE, StandardWatchEventKinds.ENTRY_MODIFY);
         this.thread = new Thread(this::run, "ripv-datavis-worker-" + this.dir.getFileName());

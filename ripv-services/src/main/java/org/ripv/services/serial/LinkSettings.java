@@ -4,6 +4,7 @@ import java.time.Duration;
 import java.util.Locale;
 import java.util.Objects;
 import java.util.regex.Pattern;
+import org.ripv.commands.SingleLineCommand;
 import org.ripv.services.serial.ymodem.YmodemConfig;
 
 /**
@@ -24,11 +25,13 @@ import org.ripv.services.serial.ymodem.YmodemConfig;
  * @param receiveCommand  the vehicle's command that receives files by YMODEM ({@code yr})
  * @param reconnectEvery  how often a down link is retried and an idle one checked
  * @param ymodem          YMODEM timeouts and retries
+ * @param maxCommand      the longest command written to this link ({@code maxcommand=}, default
+ *                        {@link SingleLineCommand#DEFAULT_MAX}); longer ones are refused
  */
 public record LinkSettings(String device, int baud, int dataBits, Parity parity, StopBits stopBits,
                            String lineEnding, Pattern prompt, Duration idleTimeout, Duration commandTimeout,
                            CarrierMode carrier, String sendCommand, String receiveCommand,
-                           Duration reconnectEvery, YmodemConfig ymodem) {
+                           Duration reconnectEvery, YmodemConfig ymodem, int maxCommand) {
 
     /** PicoDOS's prompt. */
     public static final String DEFAULT_PROMPT = "C:\\>";
@@ -89,6 +92,19 @@ public record LinkSettings(String device, int baud, int dataBits, Parity parity,
         Objects.requireNonNull(sendCommand, "sendCommand");
         Objects.requireNonNull(receiveCommand, "receiveCommand");
         Objects.requireNonNull(ymodem, "ymodem");
+        if (maxCommand < 1 || maxCommand > SingleLineCommand.SERVER_MAX) {
+            throw new IllegalArgumentException("maxcommand " + maxCommand + " is outside 1–" + SingleLineCommand.SERVER_MAX
+                    + " (the server's cap)");
+        }
+    }
+
+    /** Settings with the default command length limit. */
+    public LinkSettings(String device, int baud, int dataBits, Parity parity, StopBits stopBits,
+                        String lineEnding, Pattern prompt, Duration idleTimeout, Duration commandTimeout,
+                        CarrierMode carrier, String sendCommand, String receiveCommand,
+                        Duration reconnectEvery, YmodemConfig ymodem) {
+        this(device, baud, dataBits, parity, stopBits, lineEnding, prompt, idleTimeout, commandTimeout, carrier,
+                sendCommand, receiveCommand, reconnectEvery, ymodem, SingleLineCommand.DEFAULT_MAX);
     }
 
     private static void requirePositive(Duration d, String what) {
@@ -110,32 +126,37 @@ public record LinkSettings(String device, int baud, int dataBits, Parity parity,
 
     public LinkSettings withDevice(String newDevice) {
         return new LinkSettings(newDevice, baud, dataBits, parity, stopBits, lineEnding, prompt, idleTimeout,
-                commandTimeout, carrier, sendCommand, receiveCommand, reconnectEvery, ymodem);
+                commandTimeout, carrier, sendCommand, receiveCommand, reconnectEvery, ymodem, maxCommand);
     }
 
     public LinkSettings withIdleTimeout(Duration idle) {
         return new LinkSettings(device, baud, dataBits, parity, stopBits, lineEnding, prompt, idle,
-                commandTimeout, carrier, sendCommand, receiveCommand, reconnectEvery, ymodem);
+                commandTimeout, carrier, sendCommand, receiveCommand, reconnectEvery, ymodem, maxCommand);
     }
 
     public LinkSettings withReconnectEvery(Duration every) {
         return new LinkSettings(device, baud, dataBits, parity, stopBits, lineEnding, prompt, idleTimeout,
-                commandTimeout, carrier, sendCommand, receiveCommand, every, ymodem);
+                commandTimeout, carrier, sendCommand, receiveCommand, every, ymodem, maxCommand);
     }
 
     public LinkSettings withYmodem(YmodemConfig config) {
         return new LinkSettings(device, baud, dataBits, parity, stopBits, lineEnding, prompt, idleTimeout,
-                commandTimeout, carrier, sendCommand, receiveCommand, reconnectEvery, config);
+                commandTimeout, carrier, sendCommand, receiveCommand, reconnectEvery, config, maxCommand);
     }
 
     public LinkSettings withVehicleCommands(String send, String receive) {
         return new LinkSettings(device, baud, dataBits, parity, stopBits, lineEnding, prompt, idleTimeout,
-                commandTimeout, carrier, send, receive, reconnectEvery, ymodem);
+                commandTimeout, carrier, send, receive, reconnectEvery, ymodem, maxCommand);
     }
 
     public LinkSettings withCarrier(CarrierMode mode) {
         return new LinkSettings(device, baud, dataBits, parity, stopBits, lineEnding, prompt, idleTimeout,
-                commandTimeout, mode, sendCommand, receiveCommand, reconnectEvery, ymodem);
+                commandTimeout, mode, sendCommand, receiveCommand, reconnectEvery, ymodem, maxCommand);
+    }
+
+    public LinkSettings withMaxCommand(int max) {
+        return new LinkSettings(device, baud, dataBits, parity, stopBits, lineEnding, prompt, idleTimeout,
+                commandTimeout, carrier, sendCommand, receiveCommand, reconnectEvery, ymodem, max);
     }
 
     /** {@code 115200 8N1} */

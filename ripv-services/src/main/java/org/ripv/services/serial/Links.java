@@ -9,6 +9,9 @@ public final class Links {
 
     /** A {@link TcpLink} for {@code tcp://host:port}, else a {@link SerialLink}. */
     public static Link open(LinkSettings settings) throws IOException {
+        if (VehicleLink.isListen(settings.device())) {
+            throw new IOException(settings.device() + " is not opened: the vehicle calls in");
+        }
         if (settings.isTcp()) {
             return TcpLink.connect(settings.device(), 5_000);
         }

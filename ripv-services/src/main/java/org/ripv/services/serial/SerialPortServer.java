@@ -1,6 +1,7 @@
 package org.ripv.services.serial;
 
 import com.fazecast.jSerialComm.SerialPort;
+import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -22,8 +23,10 @@ import org.slf4j.LoggerFactory;
  * <p>One {@link SerialPortHandler} and one MailBox per serial port jSerialComm enumerates
  * (handle = the port's own name, {@code ttyS0}, {@code COM1}) and per configured link (handle
  * per {@link Handles#forLink}: {@code ttyV0} for {@code /tmp/ttyV0}, {@code tcp-host-port}
- * for {@code tcp://host:port}). A link named explicitly wins over an enumerated port of the
- * same handle.
+ * for {@code tcp://host:port}, {@code listen-PORT} for {@code listen://[ADDR:]PORT}, or the
+ * link's {@code name=}). A link named explicitly wins over an enumerated port of the same handle.
+ * A {@code listen://} link waits for the vehicle to call in; every link's output is published as
+ * its MailBox's live console, with the call's events (see {@link VehicleConsole}).
  *
  * <pre>{@code
  * SerialPortServer serial = new SerialPortServer("shore.example.org",
@@ -34,7 +37,7 @@ import org.slf4j.LoggerFactory;
 public final class SerialPortServer extends RIPVService {
     private static final Logger log = LoggerFactory.getLogger(SerialPortServer.class);
 
-    private final List<LinkSettings> links;
+    private final List<VehicleLink> links;
     private final LinkSettings portDefaults;
     private final boolean enumerate;
     private final Path workDir;
@@ -52,10 +55,16 @@ public final class SerialPortServer extends RIPVService {
      */
     public SerialPortServer(String host, List<LinkSettings> links, LinkSettings portDefaults, boolean enumerate,
                             Path workDir) {
-        this(host, links, portDefaults, enumerate, workDir, Links::open);
+        this(host, links.stream().map(VehicleLink::of).toList(), portDefaults, enumerate, workDir, Links::open);
     }
 
-    SerialPortServer(String host, List<LinkSettings> links, LinkSettings portDefaults, boolean enumerate,
+    /** As above, with each link's call settings ({@code name=}, {@code surface=}, ...). */
+    public static SerialPortServer withCalls(String host, List<VehicleLink> links, LinkSettings portDefaults,
+                                             boolean enumerate, Path workDir) {
+        return new SerialPortServer(host, links, portDefaults, enumerate, workDir, Links::open);
+    }
+
+    SerialPortServer(String host, List<VehicleLink> links, LinkSettings portDefaults, boolean enumerate,
                      Path workDir, SerialPortHandler.LinkOpener opener) {
         super("SerialPortServer", Ids.SID_SERIAL, host);
         this.links = List.copyOf(links);
@@ -69,17 +78,22 @@ public final class SerialPortServer extends RIPVService {
     }
 
     @Override
-    protected void open() {
-        Map<String, LinkSettings> byHandle = new LinkedHashMap<>();
+    protected void open() throws IOException {
+        Map<String, VehicleLink> byHandle = new LinkedHashMap<>();
         if (enumerate) {
             for (SerialPort port : SerialPort.getCommPorts()) {
-                byHandle.put(port.getSystemPortName(), portDefaults.withDevice(port.getSystemPortPath()));
+                byHandle.put(port.getSystemPortName(),
+                        VehicleLink.of(portDefaults.withDevice(port.getSystemPortPath())));
             }
         }
-        for (LinkSettings link : links) {
-            String handle = Handles.forLink(link.device());
+        java.util.Set<String> named = new java.util.HashSet<>();
+        for (VehicleLink link : links) {
+            String handle = link.handle();
+            if (!named.add(handle)) {
+                throw new IllegalArgumentException("two links are both named '" + handle + "'; give each its own name=");
+            }
             if (byHandle.put(handle, link) != null) {
-                log.info("link {} replaces the enumerated port of the same name", link.device());
+                log.info("link {} replaces the enumerated port of the same name", link.settings().device());
             }
         }
         AtomicInteger n = new AtomicInteger();
@@ -89,13 +103,19 @@ public final class SerialPortServer extends RIPVService {
             return t;
         });
         List<String> opened = new ArrayList<>();
-        for (Map.Entry<String, LinkSettings> e : byHandle.entrySet()) {
-            SerialPortHandler handler = new SerialPortHandler(e.getKey(), e.getValue(),
-                    workDir.resolve(e.getKey()), opener);
+        for (Map.Entry<String, VehicleLink> e : byHandle.entrySet()) {
+            SerialPortHandler handler = new SerialPortHandler(e.getValue(), name().mailbox(e.getKey()).toString(),
+                    workDir.resolve(e.getKey()), opener, this::publish);
             handlers.put(e.getKey(), handler);
             openMailBox(e.getKey(), handler);
-            handler.start(scheduler);
-            opened.add(e.getKey() + "=" + e.getValue().device());
+            try {
+                handler.start(scheduler);
+            } catch (IOException ex) {
+                close();
+                throw ex;
+            }
+            opened.add(e.getKey() + "=" + e.getValue().settings().device()
+                    + (handler.listenPort() >= 0 ? " (port " + handler.listenPort() + ")" : ""));
         }
         if (opened.isEmpty()) {
             log.warn("no serial ports found and no --link given: the SerialPortServer has no MailBoxes");
@@ -125,6 +145,12 @@ public final class SerialPortServer extends RIPVService {
     @Override
     protected List<String> attachPrefixes() {
         return List.of("ymodem:put ");
+    }
+
+    /** The port a listen link's MailBox waits for calls on, or -1 for other links. */
+    public int listenPort(String handle) {
+        SerialPortHandler h = handlers.get(handle);
+        return h == null ? -1 : h.listenPort();
     }
 
     /** The handles of the open MailBoxes, in order. */

@@ -36,11 +36,13 @@ public final class SerialPortServerCommand implements Callable<Integer> {
     @Parameters(arity = "0..1", paramLabel = "//HOST", description = "The server, thesis style (same as --server HOST).")
     String thesisServer;
 
-    @Option(names = "--link", paramLabel = "DEVICE|tcp://HOST:PORT",
-            description = "A link to open besides the enumerated ports: a device path (ptys and symlinks too) or tcp://host:port, "
-                    + "optionally followed by its own settings, e.g. /dev/ttyUSB0,baud=9600,carrier=require "
+    @Option(names = "--link", paramLabel = "DEVICE|tcp://HOST:PORT|listen://[ADDR:]PORT",
+            description = "A link to open besides the enumerated ports: a device path (ptys and symlinks too), tcp://host:port, "
+                    + "or listen://[ADDR:]PORT where the vehicle (or its modem or RUDICS gateway) calls in; "
+                    + "optionally followed by its own settings, e.g. /dev/ttyUSB0,baud=9600,carrier=require,name=ru29 "
                     + "(keys: baud, data-bits, parity, stop-bits, carrier, line-ending, prompt, prompt-regex, idle-timeout, "
-                    + "command-timeout, send-command, receive-command). Repeatable.")
+                    + "command-timeout, send-command, receive-command, maxcommand; name, surface, quiet, alert, line-length, "
+                    + "rate). Repeatable.")
     List<String> links = new ArrayList<>();
 
     @Option(names = "--no-enumerate", description = "Do not open MailBoxes for the serial ports jSerialComm finds; only the --link ones.")
@@ -90,12 +92,38 @@ public final class SerialPortServerCommand implements Callable<Integer> {
             description = "How often a link that is down is retried (default ${DEFAULT-VALUE} s).")
     long reconnectSeconds;
 
+    @Option(names = "--max-command", defaultValue = "1024", paramLabel = "CHARS",
+            description = "The longest command written to a link (per link: maxcommand=N); longer ones are refused"
+                    + " (default ${DEFAULT-VALUE}, at most 16384).")
+    int maxCommand;
+
+    @Option(names = "--surface", defaultValue = CallSettings.DEFAULT_SURFACE, paramLabel = "REGEX",
+            description = "On links with neither carrier nor caller: output that marks a call's start (default ${DEFAULT-VALUE}).")
+    String surface;
+
+    @Option(names = "--quiet", defaultValue = "600", paramLabel = "SECONDS",
+            description = "On those links: silence this long ends the call, DIVED (default ${DEFAULT-VALUE} s).")
+    long quietSeconds;
+
+    @Option(names = "--alert", defaultValue = CallSettings.DEFAULT_ALERT, paramLabel = "REGEX",
+            description = "Output lines that raise an ALERT event (default ${DEFAULT-VALUE}).")
+    String alert;
+
+    @Option(names = "--line-length", defaultValue = "1024", paramLabel = "CHARS",
+            description = "Console lines are cut at this length (default ${DEFAULT-VALUE}).")
+    int lineLength;
+
+    @Option(names = "--rate", defaultValue = "200", paramLabel = "LINES",
+            description = "Console lines per second per link; the excess is marked 'N lines skipped' (default ${DEFAULT-VALUE}).")
+    int rate;
+
     @Option(names = "--work", paramLabel = "DIR", description = "Where incoming files are assembled (default: a temporary directory).")
     Path workDir;
 
     /** The keys a {@code --link} may override for itself, after its device: {@code DEVICE,baud=9600,...}. */
     static final java.util.Set<String> LINK_KEYS = java.util.Set.of("baud", "data-bits", "parity", "stop-bits", "carrier",
-            "line-ending", "prompt", "prompt-regex", "idle-timeout", "command-timeout", "send-command", "receive-command");
+            "line-ending", "prompt", "prompt-regex", "idle-timeout", "command-timeout", "send-command", "receive-command",
+            "maxcommand");
 
     /**
      * Builds a link's settings: the command line's options, overridden by any {@code key=value}
@@ -107,9 +135,11 @@ public final class SerialPortServerCommand implements Callable<Integer> {
         java.util.Map<String, String> o = new java.util.HashMap<>();
         for (int i = 1; i < parts.length; i++) {
             String key = parts[i].substring(0, parts[i].indexOf('='));
-            if (!LINK_KEYS.contains(key)) {
+            if (!LINK_KEYS.contains(key) && !CALL_KEYS.contains(key)) {
+                java.util.Set<String> all = new java.util.TreeSet<>(LINK_KEYS);
+                all.addAll(CALL_KEYS);
                 throw new IllegalArgumentException("--link '" + spec + "': unknown setting '" + key + "'; a link may set "
-                        + new java.util.TreeSet<>(LINK_KEYS));
+                        + all);
             }
             o.put(key, parts[i].substring(key.length() + 1));
         }
@@ -134,7 +164,37 @@ public final class SerialPortServerCommand implements Callable<Integer> {
                 Duration.ofMillis(number(o, "idle-timeout", idleMillis)),
                 Duration.ofSeconds(number(o, "command-timeout", commandSeconds)), mode,
                 o.getOrDefault("send-command", sendCommand), o.getOrDefault("receive-command", receiveCommand),
-                Duration.ofSeconds(Math.max(1, reconnectSeconds)), YmodemConfig.lrzsz());
+                Duration.ofSeconds(Math.max(1, reconnectSeconds)), YmodemConfig.lrzsz(), number(o, "maxcommand", maxCommand));
+    }
+
+    /** The keys of a link's call and console settings ({@link CallSettings}). */
+    static final java.util.Set<String> CALL_KEYS = java.util.Set.of("name", "surface", "quiet", "alert", "line-length",
+            "rate");
+
+    /** A link's settings and its call settings ({@code name=ru29,surface=...,quiet=600,alert=...}). */
+    VehicleLink link(String spec) {
+        LinkSettings link = settings(spec);
+        String[] parts = spec.split(",(?=[a-z-]+=)");
+        java.util.Map<String, String> o = new java.util.HashMap<>();
+        for (int i = 1; i < parts.length; i++) {
+            String key = parts[i].substring(0, parts[i].indexOf('='));
+            o.put(key, parts[i].substring(key.length() + 1));
+        }
+        try {
+            return new VehicleLink(link, new CallSettings(o.get("name"), regex(o.getOrDefault("surface", surface), "surface"),
+                    Duration.ofSeconds(number(o, "quiet", quietSeconds)), regex(o.getOrDefault("alert", alert), "alert"),
+                    number(o, "line-length", lineLength), number(o, "rate", rate)));
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException("--link '" + spec + "': " + e.getMessage(), e);
+        }
+    }
+
+    private static Pattern regex(String re, String what) {
+        try {
+            return Pattern.compile(re);
+        } catch (java.util.regex.PatternSyntaxException e) {
+            throw new IllegalArgumentException(what + " '" + re + "' is not a regular expression: " + e.getDescription());
+        }
     }
 
     private static int number(java.util.Map<String, String> o, String key, long fallback) {
@@ -155,10 +215,10 @@ public final class SerialPortServerCommand implements Callable<Integer> {
             System.err.println("Error: the server is given twice ('--server' and '" + thesisServer + "'); give it once");
             return 2;
         }
-        List<LinkSettings> linkSettings = new ArrayList<>();
+        List<VehicleLink> linkSettings = new ArrayList<>();
         try {
             for (String link : links) {
-                linkSettings.add(settings(link));
+                linkSettings.add(link(link));
             }
             if (links.isEmpty()) {
                 settings("COM1"); // validates the options even when only enumerated ports are used
@@ -167,11 +227,24 @@ public final class SerialPortServerCommand implements Callable<Integer> {
             System.err.println("Error: " + e.getMessage());
             return 2;
         }
-        Path work = workDir != null ? Files.createDirectories(workDir) : Files.createTempDirectory("ripv-serial");
-        SerialPortServer server = new SerialPortServer(launch.hostName(), linkSettings, settings("COM1"),
+        Path work = workDir != null ? org.ripv.files.PrivateFiles.createDirectories(workDir)
+                : Files.createTempDirectory("ripv-serial"); // createTempDirectory makes it 0700
+        SerialPortServer server = SerialPortServer.withCalls(launch.hostName(), linkSettings, settings("COM1"),
                 !noEnumerate, work);
-        server.start();
-        System.out.println("SerialPortServer " + server.name() + " MailBoxes: " + server.handles());
+        try {
+            server.start();
+        } catch (java.io.IOException | IllegalArgumentException e) {
+            System.err.println("Error: " + e.getMessage());
+            return 1;
+        }
+        StringBuilder listening = new StringBuilder();
+        for (String h : server.handles()) {
+            if (server.listenPort(h) >= 0) {
+                listening.append(listening.isEmpty() ? "; waiting for calls: " : ", ").append(h).append(" on port ")
+                        .append(server.listenPort(h));
+            }
+        }
+        System.out.println("SerialPortServer " + server.name() + " MailBoxes: " + server.handles() + listening);
         return launch.serve(server);
     }
 

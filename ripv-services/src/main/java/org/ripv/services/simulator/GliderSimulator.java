@@ -41,7 +41,8 @@ import org.slf4j.LoggerFactory;
  * answering and, on TCP, drops the connection and refuses new ones until it surfaces.
  *
  * <p>It serves one connection at a time, on a TCP port ({@link #listen}) or on a serial device
- * or pseudo-terminal ({@link #attach}). Its files live in one directory.
+ * or pseudo-terminal ({@link #attach}), or calls a shore station again and again ({@link #call})
+ * with a {@link SurfaceDialog} on each call. Its files live in one directory.
  */
 public final class GliderSimulator implements AutoCloseable {
     private static final Logger log = LoggerFactory.getLogger(GliderSimulator.class);
@@ -57,7 +58,9 @@ public final class GliderSimulator implements AutoCloseable {
     private volatile Link current;
     private volatile boolean submerged;
     private int port;
+    private volatile int calls;
     private Thread thread;
+    private java.net.InetAddress bindAddress = java.net.InetAddress.getLoopbackAddress();
 
     /**
      * @param dir      the vehicle's file system; seeded with mission logs and a config file if empty
@@ -119,11 +122,20 @@ public final class GliderSimulator implements AutoCloseable {
         log.info("glider simulator on {} with files in {}", path, dir);
     }
 
-    private static ServerSocket bind(int port) throws IOException {
+    private ServerSocket bind(int port) throws IOException {
         ServerSocket s = new ServerSocket();
         s.setReuseAddress(true);
-        s.bind(new InetSocketAddress(port));
+        s.bind(new InetSocketAddress(bindAddress, port));
         return s;
+    }
+
+    /**
+     * The address {@link #listen} binds to: loopback unless set (a simulated vehicle is for this
+     * machine; {@code --bind} widens it). Null means every interface. Call before {@code listen}.
+     */
+    public synchronized GliderSimulator bindTo(java.net.InetAddress address) {
+        this.bindAddress = address;
+        return this;
     }
 
     private void serveTcp() {
@@ -194,13 +206,67 @@ public final class GliderSimulator implements AutoCloseable {
     }
 
     private void dive() throws InterruptedException {
-        log.info("submerged for {} s", submerge.toSeconds());
+        dive(submerge);
+    }
+
+    private void dive(Duration time) throws InterruptedException {
+        log.info("submerged for {} s", time.toSeconds());
         try {
             // the glider is away for this long; stop() wakes it early
-            stopped.await(submerge.toMillis(), TimeUnit.MILLISECONDS);
+            stopped.await(time.toMillis(), TimeUnit.MILLISECONDS);
         } finally {
             submerged = false;
         }
+    }
+
+    /**
+     * Calls a shore station ({@code listen://} link) like a glider: connects, prints the surface
+     * dialog, answers commands for {@code surfaceTime} (or until GO), hangs up, dives for
+     * {@code diveTime}, and calls again. A refused or failed call is tried again after the dive.
+     */
+    public synchronized void call(String host, int callPort, String vehicleName, Duration diveTime,
+                                  Duration surfaceTime) {
+        SurfaceDialog dialog = new SurfaceDialog(vehicleName);
+        thread = new Thread(() -> callLoop(host, callPort, dialog, diveTime, surfaceTime), "glider-simulator-call");
+        thread.setDaemon(true);
+        thread.start();
+        log.info("glider simulator {} calls {}:{} every {} s for {} s, files in {}", vehicleName, host, callPort,
+                diveTime.toSeconds(), surfaceTime.toSeconds(), dir);
+    }
+
+    private void callLoop(String host, int callPort, SurfaceDialog dialog, Duration diveTime, Duration surfaceTime) {
+        try {
+            while (running) {
+                try (Socket socket = new Socket()) {
+                    socket.connect(new InetSocketAddress(host, callPort), 10_000);
+                    Link link = new TcpLink(socket);
+                    current = link;
+                    calls++;
+                    ShellLink shell = new ShellLink(link);
+                    say(shell, dialog.text(calls, java.time.Instant.now()) + PROMPT);
+                    converse(shell, System.nanoTime() + surfaceTime.toNanos(), dialog::chatter);
+                    submerged = true;
+                    say(shell, "\r\nHanging up: diving for " + diveTime.toSeconds()
+                            + " s\r\n");
+                    link.close();
+                } catch (IOException e) {
+                    log.info("call {} to {}:{} ended: {}", calls, host, callPort, e.getMessage());
+                } finally {
+                    current = null;
+                }
+                submerged = true;
+                dive(diveTime);
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        } finally {
+            stopped.countDown();
+        }
+    }
+
+    /** How many calls it has made ({@link #call}). */
+    public int calls() {
+        return calls;
     }
 
     public boolean submerged() {
@@ -211,11 +277,29 @@ public final class GliderSimulator implements AutoCloseable {
     private boolean session(Link link) throws IOException {
         ShellLink shell = new ShellLink(link);
         say(shell, "\r\nPicoDOS (RIPV glider simulator)\r\n" + PROMPT);
+        return converse(shell, 0, null);
+    }
+
+    /**
+     * Answers commands until GO (true), or, when {@code until} is not 0, until that time has come
+     * between two commands (true: the surface time is over). {@code chatter} is printed when the
+     * line has been idle a while, as a vehicle's own output.
+     */
+    private boolean converse(ShellLink shell, long until, java.util.function.LongFunction<String> chatter)
+            throws IOException {
         StringBuilder line = new StringBuilder();
         byte[] buf = new byte[1024];
         boolean lastWasCr = false;
+        long lastChatter = System.nanoTime();
         while (running) {
+            if (until != 0 && line.isEmpty() && System.nanoTime() - until > 0) {
+                return true;
+            }
             int n = shell.read(buf, 0, buf.length, 1000);
+            if (n == 0 && chatter != null && line.isEmpty() && System.nanoTime() - lastChatter > 10_000_000_000L) {
+                lastChatter = System.nanoTime();
+                say(shell, chatter.apply(until == 0 ? 0 : (until - lastChatter) / 1_000_000_000L) + "\r\n" + PROMPT);
+            }
             for (int i = 0; i < n; i++) {
                 int c = buf[i] & 0xFF;
                 if (c == '\n' && lastWasCr) {

@@ -18,12 +18,14 @@ import picocli.CommandLine.Option;
  * ripv simulator --listen 2323
  * socat pty,raw,echo=0,link=/tmp/ttyV0 pty,raw,echo=0,link=/tmp/ttyV1 &amp;
  * ripv simulator --tty /tmp/ttyV1        # and the SerialPortServer opens --link /tmp/ttyV0
+ * ripv simulator --call localhost:2323 --dive-seconds 30 --surface-seconds 45 --name ru29
+ *                                        # calls --link listen://2323,name=ru29
  * </pre>
  *
  * Exit codes: 0 stopped, 1 could not start, 2 bad options.
  */
 @Command(name = "simulator", mixinStandardHelpOptions = true,
-        description = "A PicoDOS-like glider: dir, type, del, ys, yr, GO (submerge).")
+        description = "A PicoDOS-like glider: dir, type, del, ys, yr, GO (submerge); on a port, a tty, or calling in.")
 public final class SimulatorCommand implements Callable<Integer> {
 
     static final class Where {
@@ -32,6 +34,10 @@ public final class SimulatorCommand implements Callable<Integer> {
 
         @Option(names = "--tty", paramLabel = "PATH", description = "Serve a serial device or pseudo-terminal.")
         String tty;
+
+        @Option(names = "--call", paramLabel = "HOST:PORT",
+                description = "Call a SerialPortServer's listen:// link like a glider: surface dialog, commands, hang up, dive, call again.")
+        String call;
     }
 
     @ArgGroup(exclusive = true, multiplicity = "0..1")
@@ -43,11 +49,45 @@ public final class SimulatorCommand implements Callable<Integer> {
     @Option(names = "--files", paramLabel = "DIR", description = "Copy DIR's files (e.g. Slocum .mrg/DBA files) onto the glider at start.")
     Path seedFiles;
 
+    @Option(names = "--bind", paramLabel = "ADDRESS",
+            description = "Listen on this address only (default 127.0.0.1: this machine; 0.0.0.0 for every interface).")
+    String bind;
+
     @Option(names = "--submerge-seconds", defaultValue = "30", description = "How long GO keeps it under water (default ${DEFAULT-VALUE}).")
     long submergeSeconds;
 
+    @Option(names = "--dive-seconds", defaultValue = "60", paramLabel = "N",
+            description = "With --call: how long each dive lasts, between calls (default ${DEFAULT-VALUE}).")
+    long diveSeconds;
+
+    @Option(names = "--surface-seconds", defaultValue = "60", paramLabel = "M",
+            description = "With --call: how long each call lasts (default ${DEFAULT-VALUE}); a command under way finishes first.")
+    long surfaceSeconds;
+
+    @Option(names = "--name", defaultValue = "sim01", paramLabel = "NAME",
+            description = "The vehicle's name in its surface dialog (default ${DEFAULT-VALUE}).")
+    String name;
+
     @Override
     public Integer call() throws Exception {
+        if (diveSeconds < 1 || surfaceSeconds < 1) {
+            System.err.println("Error: --dive-seconds and --surface-seconds must be at least 1");
+            return 2;
+        }
+        if (!name.matches("[A-Za-z0-9._-]{1,64}")) {
+            System.err.println("Error: --name '" + name + "' must be 1-64 letters, digits, '.', '_' or '-'");
+            return 2;
+        }
+        String[] target = null;
+        if (where != null && where.call != null) {
+            int colon = where.call.lastIndexOf(':');
+            if (colon <= 0 || !where.call.substring(colon + 1).matches("\\d{1,5}")
+                    || Integer.parseInt(where.call.substring(colon + 1)) > 65535) {
+                System.err.println("Error: --call '" + where.call + "' is not HOST:PORT");
+                return 2;
+            }
+            target = new String[] {where.call.substring(0, colon), where.call.substring(colon + 1)};
+        }
         Path files = dir != null ? dir : Files.createTempDirectory("ripv-glider");
         try (GliderSimulator sim = new GliderSimulator(files, Duration.ofSeconds(submergeSeconds), YmodemConfig.lrzsz())) {
             if (seedFiles != null) {
@@ -57,10 +97,16 @@ public final class SimulatorCommand implements Callable<Integer> {
                     }
                 }
             }
-            if (where != null && where.tty != null) {
+            if (target != null) {
+                sim.call(target[0], Integer.parseInt(target[1]), name, Duration.ofSeconds(diveSeconds),
+                        Duration.ofSeconds(surfaceSeconds));
+                System.out.println("glider simulator " + name + " calls " + where.call + " for " + surfaceSeconds
+                        + " s every " + (diveSeconds + surfaceSeconds) + " s, files in " + files);
+            } else if (where != null && where.tty != null) {
                 sim.attach(where.tty);
                 System.out.println("glider simulator on " + where.tty + ", files in " + files);
             } else {
+                sim.bindTo(bind == null ? java.net.InetAddress.getLoopbackAddress() : java.net.InetAddress.getByName(bind));
                 int port = sim.listen(where != null && where.port != null ? where.port : 2323);
                 System.out.println("glider simulator on tcp://localhost:" + port + ", files in " + files);
             }

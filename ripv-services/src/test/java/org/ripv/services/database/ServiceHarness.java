@@ -41,6 +41,6 @@ final class ServiceHarness {
     }
 
     OutgoingServiceMessage send(String handle, String command) throws InterruptedException {
-        return send(handle, command, "alice", List.of());
+        return send(handle, command, "alice", List.of("operators"));
     }
 }

@@ -84,4 +84,69 @@ class SerialPortServerCommandTest {
         e = assertThrows(IllegalArgumentException.class, () -> parse("--server", "h", "--baud", "7").settings("x"));
         assertTrue(e.getMessage().contains("7"), e.getMessage());
     }
+
+    @Test
+    void linksTakeANameAndCallSettingsAndListenLinksAreNamedAfterTheirPort() {
+        SerialPortServerCommand c = parse("--server", "h", "--quiet", "300", "--rate", "50",
+                "--link", "listen://2323,name=ru29,quiet=60,alert=leak|LEAK,line-length=200",
+                "--link", "listen://127.0.0.1:2324", "--link", "tcp://gw:4001,surface=AT SURFACE");
+        VehicleLink ru29 = c.link(c.links.get(0));
+        assertEquals("ru29", ru29.handle());
+        assertTrue(ru29.isListen());
+        assertEquals("listen://2323", ru29.settings().device());
+        assertEquals(60, ru29.call().quiet().toSeconds());
+        assertEquals(200, ru29.call().lineLength());
+        assertEquals(50, ru29.call().linesPerSecond());
+        assertTrue(ru29.call().alert().matcher("hull LEAK").find());
+        assertEquals("127.0.0.1", VehicleLink.listenUri("listen://2323").getHost());
+        assertEquals("0.0.0.0", VehicleLink.listenUri("listen://0.0.0.0:2323").getHost());
+        VehicleLink anonymous = c.link(c.links.get(1));
+        assertEquals("listen-2324", anonymous.handle());
+        assertEquals(300, anonymous.call().quiet().toSeconds());
+        assertEquals("127.0.0.1", VehicleLink.listenUri(anonymous.settings().device()).getHost());
+        VehicleLink tcp = c.link(c.links.get(2));
+        assertEquals("tcp-gw-4001", tcp.handle());
+        assertTrue(tcp.call().surface().matcher("GLIDER AT SURFACE").find());
+        assertTrue(CallSettings.defaults().surface().matcher("Glider ru29 at surface.").find());
+        assertTrue(CallSettings.defaults().alert().matcher("MS_ABORT_OVERDUE").find());
+    }
+
+    @Test
+    void badCallSettingsAreQuoted() {
+        SerialPortServerCommand c = parse("--server", "h");
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> c.link("listen://2323,name=ru 29"));
+        assertTrue(e.getMessage().contains("'ru 29'"), e.getMessage());
+        e = assertThrows(IllegalArgumentException.class, () -> c.link("listen://2323,name=../x"));
+        assertTrue(e.getMessage().contains("'../x'"), e.getMessage());
+        e = assertThrows(IllegalArgumentException.class, () -> c.link("listen://2323,alert=(unclosed"));
+        assertTrue(e.getMessage().contains("'(unclosed'"), e.getMessage());
+        e = assertThrows(IllegalArgumentException.class, () -> c.link("listen://2323,quiet=0"));
+        assertTrue(e.getMessage().contains("quiet"), e.getMessage());
+        e = assertThrows(IllegalArgumentException.class, () -> c.link("listen://2323,line-length=5"));
+        assertTrue(e.getMessage().contains("line length 5"), e.getMessage());
+        e = assertThrows(IllegalArgumentException.class, () -> c.link("listen://host:"));
+        assertTrue(e.getMessage().contains("listen://[ADDR:]PORT"), e.getMessage());
+        e = assertThrows(IllegalArgumentException.class, () -> c.link("listen://2323,volume=11"));
+        assertTrue(e.getMessage().contains("unknown setting 'volume'") && e.getMessage().contains("name"), e.getMessage());
+    }
+
+    @Test
+    void aListenPortInUseStopsTheLauncherWithTheAddress() throws Exception {
+        try (java.net.ServerSocket taken = new java.net.ServerSocket(0, 1, java.net.InetAddress.getLoopbackAddress())) {
+            java.io.ByteArrayOutputStream err = new java.io.ByteArrayOutputStream();
+            java.io.PrintStream old = System.err;
+            System.setErr(new java.io.PrintStream(err, true, java.nio.charset.StandardCharsets.UTF_8));
+            int code;
+            try {
+                code = new CommandLine(new SerialPortServerCommand()).execute("--server", "127.0.0.1:1", "--no-enumerate",
+                        "--work", System.getProperty("java.io.tmpdir") + "/ripv-serial-cmd-test",
+                        "--link", "listen://127.0.0.1:" + taken.getLocalPort() + ",name=ru29");
+            } finally {
+                System.setErr(old);
+            }
+            assertEquals(1, code, err.toString());
+            assertTrue(err.toString().contains("cannot listen on 127.0.0.1:" + taken.getLocalPort() + " for ru29"),
+                    err.toString());
+        }
+    }
 }

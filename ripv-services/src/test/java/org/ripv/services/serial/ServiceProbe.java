@@ -29,9 +29,40 @@ public final class ServiceProbe {
     /** Called with each PROGRESS reply as it is collected (a test can inject a fault mid-transfer). */
     public volatile java.util.function.Consumer<OutgoingServiceMessage> onProgress = m -> { };
 
+    /** Every console entry the service published, in order. */
+    public final java.util.concurrent.CopyOnWriteArrayList<org.ripv.messages.ConsoleEntry> console =
+            new java.util.concurrent.CopyOnWriteArrayList<>();
+
     public ServiceProbe(RIPVService service) {
         this.service = service;
-        service.replyTo(replies::add);
+        service.replyTo(new org.ripv.service.ReplySink() {
+            @Override
+            public void reply(OutgoingServiceMessage reply) {
+                replies.add(reply);
+            }
+
+            @Override
+            public void console(List<org.ripv.messages.ConsoleEntry> entries) {
+                console.addAll(entries);
+            }
+        });
+    }
+
+    /** The console entries of one kind, for one handle. */
+    public List<org.ripv.messages.ConsoleEntry> console(String handle, org.ripv.messages.ConsoleEntry.Kind kind) {
+        String address = service.name().mailbox(handle).toString();
+        return console.stream().filter(e -> e.mailbox().equals(address) && e.kind() == kind).toList();
+    }
+
+    /** The texts of the LINE entries of one handle. */
+    public List<String> lines(String handle) {
+        return console(handle, org.ripv.messages.ConsoleEntry.Kind.LINE).stream()
+                .map(org.ripv.messages.ConsoleEntry::text).toList();
+    }
+
+    /** The events of one handle, in order. */
+    public List<org.ripv.messages.ConsoleEntry> events(String handle) {
+        return console(handle, org.ripv.messages.ConsoleEntry.Kind.EVENT);
     }
 
     /** What one request produced. */

@@ -114,4 +114,27 @@ class GliderSimulatorTest {
                 .execute("--listen", "1", "--tty", "/dev/null");
         assertEquals(2, code);
     }
+
+    @Test
+    void launcherRejectsABadCallTargetAndTimes() {
+        for (String[] args : new String[][] {{"--call", "nohost"}, {"--call", "h:99999"}, {"--call", ":2323"},
+                {"--call", "h:1", "--surface-seconds", "0"}, {"--call", "h:1", "--dive-seconds", "-1"},
+                {"--call", "h:1", "--name", "ru 29"}, {"--call", "h:1", "--listen", "2"}}) {
+            int code = new CommandLine(new SimulatorCommand()).setErr(new java.io.PrintWriter(java.io.Writer.nullWriter()))
+                    .execute(args);
+            assertEquals(2, code, String.join(" ", args));
+        }
+    }
+
+    @Test
+    void theSurfaceDialogCarriesTheNameAndTheFixAsGlidersPrintIt() {
+        String dialog = new SurfaceDialog("ru29").text(1, java.time.Instant.parse("2026-11-23T14:55:02Z"));
+        assertTrue(dialog.contains("\r\nGlider ru29 at surface.\r\n"), dialog);
+        assertTrue(dialog.contains("Vehicle Name: ru29\r\n"), dialog);
+        assertTrue(dialog.contains("Curr Time: Mon Nov 23 14:55:02 2026"), dialog);
+        assertTrue(dialog.contains("GPS Location:  4137.994 N -7032.188 E measured     26.0 secs ago\r\n"), dialog);
+        assertTrue(dialog.contains("sensor:m_battery(volts)=15.15"), dialog);
+        assertTrue(dialog.contains("MissionName:SIM.MI"), dialog);
+        assertFalse(dialog.matches("(?s).*(abort|ABORT|leak|LEAK|Error|ERROR).*"), "no alert in a normal call");
+    }
 }

@@ -9,6 +9,7 @@ import java.nio.file.StandardCopyOption;
 import java.nio.file.attribute.FileTime;
 import java.util.HashMap;
 import java.util.Map;
+import org.ripv.files.PrivateFiles;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -22,7 +23,37 @@ public final class DirectorySink implements FileSink {
     private final Map<String, Path> parts = new HashMap<>();
 
     public DirectorySink(Path dir) throws IOException {
-        this.dir = Files.createDirectories(dir);
+        this.dir = PrivateFiles.createDirectories(dir);
+    }
+
+    /**
+     * Readies a work directory at start: creates it owner-only (0700, also when it existed) and
+     * deletes what an earlier run left there: {@code .NAME.part} files and {@code get-N}
+     * transfer directories (a crash or kill mid-transfer).
+     */
+    public static void prepareWorkDir(Path workDir) {
+        try {
+            PrivateFiles.createDirectories(workDir);
+            PrivateFiles.restrict(workDir);
+        } catch (IOException e) {
+            log.warn("cannot prepare the work directory {}: {}", workDir, e.toString());
+            return;
+        }
+        try (var walk = Files.walk(workDir)) {
+            walk.sorted(java.util.Comparator.reverseOrder()).filter(p -> !p.equals(workDir)).forEach(p -> {
+                String n = p.getFileName().toString();
+                boolean inTransfer = workDir.relativize(p).getName(0).toString().startsWith("get-");
+                if (inTransfer || n.startsWith(".") && n.endsWith(".part")) {
+                    try {
+                        Files.deleteIfExists(p);
+                    } catch (IOException e) {
+                        log.warn("could not delete stale {}: {}", p, e.toString());
+                    }
+                }
+            });
+        } catch (IOException e) {
+            log.warn("could not clean {}: {}", workDir, e.toString());
+        }
     }
 
     @Override
@@ -30,7 +61,8 @@ public final class DirectorySink implements FileSink {
         String name = FileNames.requirePlain(file.name());
         Path part = dir.resolve("." + name + ".part");
         parts.put(name, part);
-        return Files.newOutputStream(part);
+        return PrivateFiles.newOutputStream(part, java.nio.file.StandardOpenOption.WRITE,
+                java.nio.file.StandardOpenOption.TRUNCATE_EXISTING); // owner-only: a vehicle's files are not for every local user
     }
 
     @Override

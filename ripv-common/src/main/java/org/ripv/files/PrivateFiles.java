@@ -1,0 +1,106 @@
+package org.ripv.files;
+
+import java.io.IOException;
+import java.io.OutputStream;
+import java.nio.file.FileAlreadyExistsException;
+import java.nio.file.Files;
+import java.nio.file.OpenOption;
+import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
+import java.nio.file.attribute.FileAttribute;
+import java.nio.file.attribute.PosixFilePermission;
+import java.nio.file.attribute.PosixFilePermissions;
+import java.util.Set;
+
+/**
+ * Creates directories and files that only the account running RIPV can read ({@code 0700} and
+ * {@code 0600}), whatever the umask. On a file system without POSIX permissions (Windows) the
+ * calls fall back to the defaults, which there are per-user already.
+ */
+public final class PrivateFiles {
+    private static final Set<PosixFilePermission> DIR = PosixFilePermissions.fromString("rwx------");
+    private static final Set<PosixFilePermission> FILE = PosixFilePermissions.fromString("rw-------");
+
+    private PrivateFiles() {}
+
+    /** Like {@link Files#createDirectories}, each directory it creates being owner-only; returns {@code dir}. */
+    public static Path createDirectories(Path dir) throws IOException {
+        Path abs = dir.toAbsolutePath();
+        if (Files.isDirectory(abs)) {
+            return dir;
+        }
+        if (!posix(abs)) {
+            return Files.createDirectories(dir);
+        }
+        Path parent = abs.getParent();
+        if (parent != null && !Files.exists(parent)) {
+            createDirectories(parent);
+        }
+        try {
+            Files.createDirectory(abs, attribute(DIR));
+        } catch (FileAlreadyExistsException e) {
+            if (!Files.isDirectory(abs)) {
+                throw e;
+            }
+            return dir;
+        }
+        restrict(abs);
+        return dir;
+    }
+
+    /** Makes an existing directory or file owner-only (directories 0700, files 0600). */
+    public static void restrict(Path p) throws IOException {
+        if (!posix(p)) {
+            return;
+        }
+        Files.setPosixFilePermissions(p, Files.isDirectory(p) ? DIR : FILE);
+    }
+
+    /** Creates a new empty owner-only file; fails if it exists. */
+    public static Path createFile(Path file) throws IOException {
+        if (!posix(file)) {
+            return Files.createFile(file);
+        }
+        Files.createFile(file, attribute(FILE));
+        restrict(file);
+        return file;
+    }
+
+    /** Creates an owner-only temporary file in {@code dir}. */
+    public static Path createTempFile(Path dir, String prefix, String suffix) throws IOException {
+        return posix(dir) ? Files.createTempFile(dir, prefix, suffix, attribute(FILE)) : Files.createTempFile(dir, prefix, suffix);
+    }
+
+    /** Opens a file for writing, creating it owner-only if it does not exist. */
+    public static OutputStream newOutputStream(Path file, OpenOption... options) throws IOException {
+        if (!Files.exists(file)) {
+            try {
+                createFile(file);
+            } catch (FileAlreadyExistsException raced) {
+                // someone made it meanwhile; its mode is set below
+            }
+        }
+        restrict(file);
+        return Files.newOutputStream(file, options.length == 0
+                ? new OpenOption[] {StandardOpenOption.WRITE, StandardOpenOption.TRUNCATE_EXISTING} : options);
+    }
+
+    /** Writes bytes to a file that is owner-only. */
+    public static void write(Path file, byte[] data, OpenOption... options) throws IOException {
+        try (OutputStream out = newOutputStream(file, options)) {
+            out.write(data);
+        }
+    }
+
+    private static FileAttribute<?>[] attribute(Set<PosixFilePermission> perms) {
+        return new FileAttribute<?>[] {PosixFilePermissions.asFileAttribute(perms)};
+    }
+
+    private static boolean posix(Path p) {
+        Path probe = p.toAbsolutePath();
+        while (probe != null && !Files.exists(probe)) {
+            probe = probe.getParent();
+        }
+        return probe != null && probe.getFileSystem().supportedFileAttributeViews().contains("posix");
+    }
+}

@@ -1,0 +1,127 @@
+package org.ripv.services.serial;
+
+import java.time.Instant;
+import java.time.ZoneOffset;
+import java.time.format.DateTimeFormatter;
+import java.util.Locale;
+import java.util.function.Consumer;
+import org.ripv.messages.ConsoleEntry;
+import org.ripv.messages.VehicleEvent;
+
+/**
+ * A vehicle link's call: whether the vehicle is on a call, dived (the call ended normally) or
+ * lost (the link failed), since when, how many calls, and the last position; and the events that
+ * say so. SURFACED waits a moment for the surface dialog's GPS line so that it carries the
+ * position (at most {@link #SURFACE_WAIT_NANOS}, or until the call ends or someone sends a command).
+ *
+ * <p>Not thread-safe: {@link VehicleConsole} calls it under its lock.
+ */
+final class CallState {
+    static final long SURFACE_WAIT_NANOS = 5_000_000_000L;
+    private static final DateTimeFormatter TIME = DateTimeFormatter.ofPattern("HH:mm:ss 'UTC'", Locale.ROOT)
+            .withZone(ZoneOffset.UTC);
+
+    enum State { NEVER, ON_CALL, DIVED, LOST }
+
+    private final String mailbox;
+    private final Consumer<ConsoleEntry> out;
+    private State state = State.NEVER;
+    private long since = System.currentTimeMillis();
+    private int calls;
+    private GpsFix position;
+    private String why = "";
+    private String how = "";
+    private boolean pending;
+    private long pendingSince;
+
+    CallState(String mailbox, Consumer<ConsoleEntry> out) {
+        this.mailbox = mailbox;
+        this.out = out;
+    }
+
+    boolean onCall() {
+        return state == State.ON_CALL;
+    }
+
+    State state() {
+        return state;
+    }
+
+    GpsFix position() {
+        return position;
+    }
+
+    /** A call began ({@code how}: "caller 10.0.0.7:40112", "carrier rose", "surface dialog"). */
+    void started(String how, long nowNanos) {
+        if (state == State.ON_CALL) {
+            return;
+        }
+        state = State.ON_CALL;
+        since = System.currentTimeMillis();
+        calls++;
+        this.how = how;
+        this.why = "";
+        pending = true;
+        pendingSince = nowNanos;
+    }
+
+    /** A GPS line was seen; during the surface dialog it completes SURFACED. */
+    void position(GpsFix fix) {
+        position = fix;
+        if (pending) {
+            surfaced();
+        }
+    }
+
+    /** SURFACED goes out without a position when no GPS line came in time. */
+    void tick(long nowNanos) {
+        if (pending && nowNanos - pendingSince > SURFACE_WAIT_NANOS) {
+            surfaced();
+        }
+    }
+
+    /** Someone talks to the vehicle: the surface dialog is over. */
+    void settle() {
+        if (pending) {
+            surfaced();
+        }
+    }
+
+    private void surfaced() {
+        pending = false;
+        publish(VehicleEvent.SURFACED, "call " + calls + " (" + how + ")");
+    }
+
+    /** The call ended: DIVED (normal) or LINK_LOST. A DIVED with no call on says nothing. */
+    void ended(VehicleEvent event, String reason) {
+        if (event == VehicleEvent.DIVED && state != State.ON_CALL) {
+            return;
+        }
+        if (pending) {
+            surfaced();
+        }
+        state = event == VehicleEvent.DIVED ? State.DIVED : State.LOST;
+        since = System.currentTimeMillis();
+        why = reason;
+        publish(event, reason);
+    }
+
+    private void publish(VehicleEvent event, String detail) {
+        GpsFix p = position;
+        String where = p == null ? "" : String.format(Locale.ROOT, "; %s %.5f, %.5f",
+                event == VehicleEvent.SURFACED ? "at" : "last position", p.lat(), p.lon());
+        out.accept(ConsoleEntry.event(mailbox, event, detail + where, p == null ? null : p.lat(),
+                p == null ? null : p.lon()));
+    }
+
+    /** For ?status: "on call since 14:02:11 UTC (call 3, caller 10.0.0.7:40112)". */
+    String describe() {
+        String at = TIME.format(Instant.ofEpochMilli(since));
+        return switch (state) {
+            case NEVER -> "no call yet";
+            case ON_CALL -> "on call since " + at + " (call " + calls + ", " + how + ")";
+            case DIVED -> "dived at " + at + " (" + why + "; " + calls + " call" + (calls == 1 ? "" : "s") + ")";
+            case LOST -> "lost at " + at + " (" + why + ")";
+        };
+    }
+}

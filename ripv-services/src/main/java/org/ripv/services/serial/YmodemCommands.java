@@ -1,0 +1,249 @@
+package org.ripv.services.serial;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.stream.Stream;
+import org.ripv.exceptions.ServiceException;
+import org.ripv.files.PrivateFiles;
+import org.ripv.messages.ErrorCode;
+import org.ripv.messages.FileBundle;
+import org.ripv.messages.FileData;
+import org.ripv.messages.VehicleEvent;
+import org.ripv.service.Reply;
+import org.ripv.service.Request;
+import org.ripv.services.serial.ymodem.AskedNames;
+import org.ripv.services.serial.ymodem.DirectorySink;
+import org.ripv.services.serial.ymodem.FileHeader;
+import org.ripv.services.serial.ymodem.FileNames;
+import org.ripv.services.serial.ymodem.SendFile;
+import org.ripv.services.serial.ymodem.YmodemException;
+import org.ripv.services.serial.ymodem.YmodemReceiver;
+import org.ripv.services.serial.ymodem.YmodemSender;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * {@code ymodem:get NAME…} and {@code ymodem:put NAME} on one link. The connection is in binary
+ * mode for the whole exchange, so the console shows TRANSFER lines and a TRANSFER_DONE or
+ * TRANSFER_FAILED event, never the blocks.
+ */
+final class YmodemCommands {
+    private static final Logger log = LoggerFactory.getLogger(YmodemCommands.class);
+    private static final AtomicLong TRANSFERS = new AtomicLong();
+
+    private final String handle;
+    private final LinkSettings settings;
+    private final VehicleText vehicleText;
+    private final ReplyReader replies;
+    private final VehicleConsole console;
+    private final Path workDir;
+
+    YmodemCommands(String handle, LinkSettings settings, VehicleText vehicleText, VehicleConsole console, Path workDir) {
+        this.handle = handle;
+        this.settings = settings;
+        this.vehicleText = vehicleText;
+        this.replies = new ReplyReader(settings, vehicleText);
+        this.console = console;
+        this.workDir = workDir;
+    }
+
+    /** Runs a transfer in binary mode and reports its end on the console. */
+    private Reply transfer(Connection c, Request request, Exchange exchange) throws IOException, ServiceException {
+        c.listen();
+        c.binary(true);
+        try {
+            Reply r = exchange.run();
+            console.event(VehicleEvent.TRANSFER_DONE, r.text() + " for " + request.user());
+            return r;
+        } catch (ServiceException | IOException e) {
+            if (e instanceof YmodemException) {
+                resync(c);
+            }
+            String why = e.getMessage();
+            console.transfer(request.user(), "transfer failed: " + why);
+            console.event(VehicleEvent.TRANSFER_FAILED, "'" + request.command() + "' for " + request.user() + ": " + why);
+            throw e;
+        } finally {
+            c.binary(false);
+            c.stopListening();
+        }
+    }
+
+    /** After a failed transfer, lets the vehicle finish and return to its prompt. */
+    private void resync(Connection c) {
+        try {
+            replies.drain(c);
+        } catch (IOException e) {
+            log.debug("{}: link failed after a failed transfer: {}", handle, e.toString()); // the reader reports it
+        }
+    }
+
+    @FunctionalInterface
+    private interface Exchange {
+        Reply run() throws IOException, ServiceException;
+    }
+
+    Reply get(Connection c, Request request) throws IOException, ServiceException {
+        List<String> names = request.arguments();
+        if (names.isEmpty()) {
+            throw new ServiceException(ErrorCode.BAD_REQUEST, "ymodem:get needs file names, e.g. ymodem:get MISSION1.LOG");
+        }
+        for (String name : names) {
+            try {
+                FileNames.requirePlain(name);
+            } catch (IllegalArgumentException e) {
+                throw new ServiceException(ErrorCode.BAD_FILE_NAME, e.getMessage());
+            }
+        }
+        return transfer(c, request, () -> receive(c, request, names));
+    }
+
+    /** Makes the work directory owner-only and removes partial files an earlier, killed run left. */
+    void prepareWorkDir() {
+        DirectorySink.prepareWorkDir(workDir);
+    }
+
+    private Reply receive(Connection c, Request request, List<String> names) throws IOException, ServiceException {
+        Path dir = PrivateFiles.createDirectories(workDir).resolve("get-" + TRANSFERS.incrementAndGet());
+        try {
+            DirectorySink sink = new DirectorySink(dir);
+            String vehicleCommand = settings.sendCommand() + " " + String.join(" ", names);
+            write(c, vehicleCommand);
+            ProgressReporter progress = new ProgressReporter(request, "receiving");
+            List<FileHeader> files;
+            try {
+                files = new YmodemReceiver(c, settings.ymodem(),
+                        TransferConsole.both(progress, new TransferConsole(console, request.user(), "receiving")))
+                        .stopWaitingWhen(text -> vehicleText.promptAfterEcho(text, vehicleCommand)).receiveBatch(sink);
+            } catch (YmodemException e) {
+                // our 'C's may sit in the shell's line: end that line so the shell is clean again
+                c.write(settings.lineEnding().getBytes(StandardCharsets.ISO_8859_1));
+                c.flush();
+                throw e;
+            }
+            replies.drain(c);
+            if (files.isEmpty()) {
+                throw new ServiceException(ErrorCode.TRANSFER_FAILED, "the vehicle sent no files for '"
+                        + String.join(" ", names) + "'");
+            }
+            // The vehicle does not choose stored names: block 0 must name a file that was asked for.
+            AskedNames.Verdict verdict = new AskedNames(names).check(files);
+            verdict.warnings().forEach(w -> log.warn("{}: {}", handle, w));
+            String warnings = verdict.warnings().isEmpty() ? "" : "\nwarning: " + String.join("\nwarning: ", verdict.warnings());
+            if (verdict.accepted().isEmpty()) {
+                throw new ServiceException(ErrorCode.TRANSFER_FAILED, "the vehicle sent none of '"
+                        + String.join(" ", names) + "'" + warnings);
+            }
+            List<FileData> data = new ArrayList<>();
+            long bytes = 0;
+            for (AskedNames.Accepted a : verdict.accepted()) {
+                byte[] content = Files.readAllBytes(dir.resolve(a.file().name()));
+                bytes += content.length;
+                data.add(FileData.whole(a.storedName(), content));
+            }
+            String text = "received " + describe(data) + " in " + progress.summary(bytes) + warnings;
+            log.info("{}: {}", handle, text);
+            return Reply.ok(text, data.size() == 1 ? data.get(0) : new FileBundle(data));
+        } finally {
+            deleteTree(dir);
+        }
+    }
+
+    Reply put(Connection c, Request request) throws IOException, ServiceException {
+        List<String> args = request.arguments();
+        if (args.size() != 1) {
+            throw new ServiceException(ErrorCode.BAD_REQUEST, "ymodem:put takes one file name from the server's upload"
+                    + " directory, e.g. ymodem:put glider.bin; got " + args.size());
+        }
+        var attachment = request.attachment().orElseThrow(() -> new ServiceException(ErrorCode.BAD_REQUEST,
+                "no file '" + args.get(0) + "' came with ymodem:put; upload it to the server first (put FILE)"));
+        SendFile file;
+        try {
+            file = SendFile.of(FileNames.requirePlain(args.get(0)), attachment.data());
+        } catch (IllegalArgumentException e) {
+            throw new ServiceException(ErrorCode.BAD_FILE_NAME, e.getMessage());
+        }
+        return transfer(c, request, () -> {
+            write(c, settings.receiveCommand());
+            awaitReceiver(c, settings.receiveCommand());
+            ProgressReporter progress = new ProgressReporter(request, "sending");
+            new YmodemSender(c, settings.ymodem(),
+                    TransferConsole.both(progress, new TransferConsole(console, request.user(), "sending")))
+                    .sendBatch(List.of(file), true);
+            replies.drain(c);
+            String text = "sent " + file.name() + " (" + file.length() + " bytes) in " + progress.summary(file.length());
+            log.info("{}: {}", handle, text);
+            return Reply.ok(text);
+        });
+    }
+
+    private void write(Connection c, String vehicleCommand) throws IOException {
+        c.write((vehicleCommand + settings.lineEnding()).getBytes(StandardCharsets.ISO_8859_1));
+        c.flush();
+    }
+
+    /**
+     * Reads past the echo of the vehicle's receive command until its YMODEM receiver asks with a
+     * lone 'C'. A shell that answers with text instead ("Bad command", then its prompt, which
+     * holds a 'C' too) fails the command with that text rather than getting block 0 typed at it.
+     */
+    private void awaitReceiver(Link l, String vehicleCommand) throws IOException, ServiceException {
+        StringBuilder said = new StringBuilder();
+        byte[] buf = new byte[512];
+        long deadline = System.nanoTime() + settings.ymodem().startTimeout().toNanos();
+        while (System.nanoTime() - deadline < 0) {
+            int n = l.read(buf, 0, buf.length, settings.idleTimeout().toMillis());
+            if (n > 0 && said.length() < 64 * 1024) {
+                said.append(new String(buf, 0, n, StandardCharsets.ISO_8859_1));
+            }
+            int echo = VehicleText.echoEnd(said, vehicleCommand);
+            String rest = echo >= 0 ? said.substring(echo) : said.toString();
+            if (rest.strip().equals("C")) {
+                // a receiver sends 'C' and waits; a shell's text goes on at once
+                int more = l.read(buf, 0, buf.length, 200);
+                if (more == 0) {
+                    return;
+                }
+                said.append(new String(buf, 0, more, StandardCharsets.ISO_8859_1));
+                continue;
+            }
+            if (echo >= 0 && vehicleText.endsWithPrompt(rest) || n == 0 && !rest.isBlank()) {
+                throw new ServiceException(ErrorCode.TRANSFER_FAILED, "the vehicle did not start receiving after '"
+                        + vehicleCommand + "'; it said: " + vehicleText.clean(rest, vehicleCommand));
+            }
+        }
+        throw new ServiceException(ErrorCode.TRANSFER_FAILED, "the vehicle did not start receiving within "
+                + settings.ymodem().startTimeout().toSeconds() + " s after '" + vehicleCommand + "'");
+    }
+
+    private static String describe(List<FileData> files) {
+        StringBuilder b = new StringBuilder();
+        for (FileData f : files) {
+            b.append(b.isEmpty() ? "" : ", ").append(f.name()).append(" (").append(f.total()).append(" bytes)");
+        }
+        return b.toString();
+    }
+
+    private static void deleteTree(Path dir) {
+        if (!Files.exists(dir)) {
+            return;
+        }
+        try (Stream<Path> walk = Files.walk(dir)) {
+            walk.sorted(Comparator.reverseOrder()).forEach(p -> {
+                try {
+                    Files.deleteIfExists(p);
+                } catch (IOException e) {
+                    log.warn("could not delete {}: {}", p, e.toString());
+                }
+            });
+        } catch (IOException e) {
+            log.warn("could not clean {}: {}", dir, e.toString());
+        }
+    }
+}

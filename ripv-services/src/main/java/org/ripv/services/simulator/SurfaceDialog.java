@@ -1,0 +1,70 @@
+package org.ripv.services.simulator;
+
+import java.time.Instant;
+import java.time.ZoneOffset;
+import java.time.format.DateTimeFormatter;
+import java.util.Locale;
+
+/**
+ * What a Slocum glider prints when it surfaces and calls in: its name, the time, dead-reckoned
+ * and GPS positions in degrees and minutes run together (DDMM.MMM, the sign and the hemisphere
+ * letter both as the glider prints them), battery, and mission. The simulated glider drifts a
+ * little north-east on every call and its battery runs down.
+ */
+final class SurfaceDialog {
+    /** Where the first call is: 41° 37.994' N, 70° 32.188' W (off Woods Hole). */
+    static final double START_LAT = 41 + 37.994 / 60;
+    static final double START_LON = -(70 + 32.188 / 60);
+    private static final DateTimeFormatter CTIME = DateTimeFormatter.ofPattern("EEE MMM dd HH:mm:ss yyyy", Locale.ROOT)
+            .withZone(ZoneOffset.UTC);
+
+    private final String name;
+    private final long start = System.nanoTime();
+
+    SurfaceDialog(String name) {
+        this.name = name;
+    }
+
+    /** The position on call {@code n} (1 for the first). */
+    static double[] position(int n) {
+        return new double[] {START_LAT + (n - 1) * 0.01, START_LON + (n - 1) * 0.01};
+    }
+
+    /** DDMM.MMM as a glider prints it: {@code 4137.994}, {@code -7032.188}. */
+    static String degreesMinutes(double decimal) {
+        double v = Math.abs(decimal);
+        int deg = (int) Math.floor(v);
+        double min = (v - deg) * 60;
+        if (min >= 59.9995) { // would print as 60.000
+            deg++;
+            min = 0;
+        }
+        return String.format(Locale.ROOT, "%s%d%06.3f", decimal < 0 ? "-" : "", deg, min);
+    }
+
+    String text(int call, Instant now) {
+        double[] p = position(call);
+        long missionTime = (System.nanoTime() - start) / 1_000_000_000L;
+        String gps = degreesMinutes(p[0]) + " N " + degreesMinutes(p[1]) + " E";
+        String dr = degreesMinutes(p[0] - 0.0001) + " N " + degreesMinutes(p[1] + 0.0001) + " E";
+        return String.join("\r\n",
+                "",
+                "Glider " + name + " at surface.",
+                "Because:Surface interval [1]",
+                String.format(Locale.ROOT, "MissionName:SIM.MI MissionNum:%s-%d (%04d.0000)", name, call, call),
+                "Vehicle Name: " + name,
+                "Curr Time: " + CTIME.format(now) + " MT: " + missionTime,
+                "DR  Location:  " + dr + " measured     30.0 secs ago",
+                "GPS Location:  " + gps + " measured     26.0 secs ago",
+                String.format(Locale.ROOT, "   sensor:m_battery(volts)=%.2f", Math.max(10.0, 15.2 - 0.05 * call)),
+                "   sensor:m_vacuum(inHg)=7.21",
+                "   sensor:m_depth(m)=0.32",
+                "",
+                "");
+    }
+
+    /** A line the glider prints on its own now and then while it waits at the surface. */
+    String chatter(long secondsLeft) {
+        return "Glider " + name + " at surface: waiting for commands; diving in " + Math.max(0, secondsLeft) + " s";
+    }
+}
