@@ -111,7 +111,7 @@ class DataLoopEndToEndTest {
     @Order(1)
     void aFetchedDbaFileIsIngestedAndItsPositionsAreQueryable() {
         assertThat(cli("use " + serial, "ymodem:get cp_388_2016_012_0_0.mrg")).as(out()).isZero();
-        assertThat(out()).contains("received cp_388_2016_012_0_0.mrg").contains("ingesting cp_388_2016_012_0_0.mrg into " + DB)
+        assertThat(out()).contains("received cp_388_2016_012_0_0.mrg").contains("cp_388_2016_012_0_0.mrg into " + DB)
                 .contains("cp_388-2016-012-0-0: 23 rows, 52 sensors, 292 values, 2 positions (4 no-fix values left out)");
         assertThat(cli("use " + DB, "SELECT vehicle, lat, lon, source FROM positions ORDER BY time_utc")).as(out()).isZero();
         assertThat(out()).contains("cp_388").contains("39.8477").contains("-70.7722").contains("dead-reckoned")
@@ -182,7 +182,7 @@ class DataLoopEndToEndTest {
     void plotsFromTheDatabase() throws Exception {
         assertThat(cli("use " + VIS, "vis:track cp_388", "?dlfiles")).as(out()).isZero();
         assertThat(out()).contains("plotted 2 rows").contains("track-cp_388.jpg");
-        assertThat(jpeg(sys.downloadDir().resolve("track-cp_388.jpg")).getWidth()).isEqualTo(800);
+        assertThat(jpeg(sys.downloadDir().resolve("TTY1/track-cp_388.jpg")).getWidth()).isEqualTo(800);
 
         assertThat(cli("use " + VIS, "vis:track unit_363 since=2013-09-05T03:00:00Z")).as(out()).isZero();
         assertThat(out()).contains("track-unit_363.jpg");
@@ -190,12 +190,12 @@ class DataLoopEndToEndTest {
                 "vis:sql SELECT time_utc, depth FROM depths WHERE vehicle = 'unit_363' ORDER BY time_utc")).as(out()).isZero();
         assertThat(out()).contains("depth-unit_363.jpg").contains("profile-unit_363-sci_water_temp.jpg")
                 .contains("sql-plot.jpg");
-        jpeg(sys.downloadDir().resolve("depth-unit_363.jpg"));
+        jpeg(sys.downloadDir().resolve("TTY1/depth-unit_363.jpg"));
 
         // a downloaded DBA file plotted directly
         assertThat(cli("use " + VIS, "vis:file unit_363_2013_245_6_6.mrg x=m_present_time y=m_depth")).as(out()).isZero();
         assertThat(out()).contains("unit_363_2013_245_6_6-m_depth.jpg");
-        jpeg(sys.downloadDir().resolve("unit_363_2013_245_6_6-m_depth.jpg"));
+        jpeg(sys.downloadDir().resolve("TTY1/unit_363_2013_245_6_6-m_depth.jpg"));
         assertThat(cli("use " + VIS, "vis:file short_header.mrg x=m_present_time y=m_depth")).isNotZero();
         assertThat(out()).contains("not a usable DBA file: line 11");
 

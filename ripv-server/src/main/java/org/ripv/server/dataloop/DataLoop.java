@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.function.Consumer;
 import org.ripv.messages.FileBundle;
 import org.ripv.messages.FileData;
+import org.ripv.messages.FileListing;
 import org.ripv.messages.Footer;
 import org.ripv.messages.Ids;
 import org.ripv.messages.IncomingServerMessage;
@@ -27,6 +28,12 @@ import org.slf4j.LoggerFactory;
 public final class DataLoop {
     private static final Logger log = LoggerFactory.getLogger(DataLoop.class);
     static final byte[] DBA_LABEL = "dbd_label: DBD_ASC(dinkum_binary_data_ascii)file".getBytes(StandardCharsets.US_ASCII);
+
+    /**
+     * The role the server's own ingest runs with: the DatabaseServer lets {@code db-writer} write
+     * (the fetching user may be an observer; the ingest is the server's act, not the user's SQL).
+     */
+    static final String INGEST_ROLE = "db-writer";
 
     private final ServiceCalls calls;
     private final IngestSettings settings;
@@ -64,11 +71,17 @@ public final class DataLoop {
             return false;
         }
         List<FileData> files = sent instanceof FileData d ? List.of(d) : sent instanceof FileBundle b ? b.files() : List.of();
+        // the names the files were stored under (FOLDER/NAME), in the same order
+        List<FileListing.Entry> stored = reply.footer().result() instanceof FileListing l ? l.files() : List.of();
+        if (stored.size() != files.size()) {
+            return false;
+        }
         String handle = handle(reply.header().mailboxAddress());
         List<String> names = new ArrayList<>();
-        for (FileData f : files) {
+        for (int i = 0; i < files.size(); i++) {
+            FileData f = files.get(i);
             if (isDba(f.data()) && settings.enabled(vehicle(f.data()), handle)) {
-                names.add(f.name());
+                names.add(stored.get(i).name());
             }
         }
         if (names.isEmpty()) {
@@ -83,7 +96,7 @@ public final class DataLoop {
         }
         String what = names.size() == 1 ? names.get(0) : names.size() + " DBA files";
         send.accept(progress(reply, "ingesting " + what + " into " + database));
-        calls.call(database, "ingest " + String.join(" ", names), user, List.of(), null, f -> { })
+        calls.call(database, "ingest " + String.join(" ", names), user, List.of(INGEST_ROLE), null, f -> { })
                 .whenComplete((f, e) -> {
                     String text;
                     if (e != null) {

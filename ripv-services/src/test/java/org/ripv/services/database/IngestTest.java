@@ -78,7 +78,7 @@ class IngestTest {
     }
 
     static OutgoingServiceMessage ingest(Attachment... files) throws InterruptedException {
-        return ingest(List.of(), files);
+        return ingest(List.of(DatabaseHandler.OPERATORS_ROLE), files);
     }
 
     static Attachment shared(String storeName, String file) {
