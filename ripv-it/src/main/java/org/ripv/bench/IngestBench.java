@@ -218,7 +218,7 @@ public final class IngestBench {
 
     private static String ingest(DatabaseServer service, BlockingQueue<OutgoingServiceMessage> replies, String name,
                                  byte[] file) throws Exception {
-        service.accept(new IncomingServiceMessage(new Header(1, new IdBadge("123456", "bench"), List.of(),
+        service.accept(new IncomingServiceMessage(new Header(1, new IdBadge("123456", "bench"), List.of("operators"),
                 service.name().toString(), service.name().mailbox("TTY1").toString(), "ingest " + name, Priority.NORMAL,
                 Attachment.bundle(List.of(new Attachment(name, file))))));
         while (true) {
