@@ -160,6 +160,19 @@ class IngestTest {
     }
 
     @Test
+    void aFiveThousandSensorFileIsStoredWhole() throws Exception {
+        byte[] file = DbaFiles.generate("wide", 5000, 20, 21);
+        DbaFiles.Count c = DbaFiles.count(file);
+        OutgoingServiceMessage r = ingest(new Attachment("wide.mrg", file));
+        assertThat(r.status()).as(r.footer().replyText()).isEqualTo(Status.OK);
+        assertThat(r.footer().replyText()).isEqualTo("wide-2024-100-1-0: 20 rows, 5000 sensors, " + c.values() + " values, "
+                + c.positionRows() + " positions");
+        assertThat(count("SELECT COUNT(*) FROM reading r JOIN data_file f ON f.file_id = r.file_id WHERE f.vehicle = 'wide'"))
+                .isEqualTo(c.values());
+        assertThat(count("SELECT COUNT(*) FROM latest WHERE vehicle = 'wide'")).isEqualTo(5000);
+    }
+
+    @Test
     void refusedFilesStoreNothing() throws Exception {
         long files = count("SELECT COUNT(*) FROM data_file");
         long readings = count("SELECT COUNT(*) FROM reading");
