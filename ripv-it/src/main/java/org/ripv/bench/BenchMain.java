@@ -21,7 +21,7 @@ public final class BenchMain {
             "  ymodem     YMODEM over a baud-paced relay as a share of the line rate, and against lrzsz",
             "             [BAUD:BYTES ...], e.g. 9600:65536 115200:1048576",
             "  ingest     Slocum DBA ingest (2,136 sensors; 100,000 rows) against a direct JDBC batch insert, and",
-            "             vis:track of 100,000 positions end to end   [--runs N] [--track-runs N]",
+            "             vis:track of 100,000 positions end to end   [--runs N] [--track-runs N] [--track-only]",
             "  datavis    vis: to JPEG for 10,000 and 1,000,000 points, built-in worker and Octave   [--no-octave]",
             "  calls      100 vehicles calling 100 listen:// links within a minute: accepted, streamed, delay",
             "             [--vehicles N] [--spread S] [--surface S] [--lines-per-second N]",

@@ -59,7 +59,7 @@ import org.ripv.services.ingest.DbaReader;
  *   <li>{@code vis:track} of 100,000 positions end to end: client socket → RIPVServer → RMI →
  *       DatabaseServer query → server → RMI → DataVisServer built-in worker → JPEG back at the client.</li>
  * </ol>
- * Options: {@code --runs N} (default 2), {@code --track-runs N} (default 3).
+ * Options: {@code --runs N} (default 2), {@code --track-runs N} (default 3), {@code --track-only}.
  */
 public final class IngestBench {
     private static final Calendar UTC = Calendar.getInstance(TimeZone.getTimeZone("UTC"));
@@ -69,9 +69,15 @@ public final class IngestBench {
     public static void main(String[] args) throws Exception {
         int runs = intOption(args, "--runs", 2);
         int trackRuns = intOption(args, "--track-runs", 3);
+        boolean trackOnly = java.util.Arrays.asList(args).contains("--track-only");
         Path dir = Files.createTempDirectory("ripv-ingestbench");
         try {
-            run(dir, runs, trackRuns);
+            if (trackOnly) {
+                DatabaseTarget db = EmbeddedDatabase.prepare(dir.resolve("database"), "TTY1");
+                track(dir, db, new QueryLimits(200_000, 600, 64L * 1024 * 1024), trackRuns);
+            } else {
+                run(dir, runs, trackRuns);
+            }
         } finally {
             deleteTree(dir);
         }
