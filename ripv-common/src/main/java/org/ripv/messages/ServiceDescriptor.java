@@ -16,9 +16,12 @@ import java.util.Objects;
  * @param downloadPrefixes command words whose arguments all name files in the server's download
  *                         directory, which the server attaches as one {@linkplain Attachment#bundle
  *                         bundle} (e.g. {@code "ingest"}: {@code ingest NAME...})
+ * @param registration     when the service began this registration attempt (epoch milliseconds,
+ *                         strictly increasing per service; 0: not given). A registration that
+ *                         arrives after a newer one of the same service is refused, never replaces it.
  */
 public record ServiceDescriptor(String name, String sid, String description, String panel,
-                                List<String> attachPrefixes, List<String> downloadPrefixes)
+                                List<String> attachPrefixes, List<String> downloadPrefixes, long registration)
         implements java.io.Serializable {
     public ServiceDescriptor {
         Objects.requireNonNull(name, "name");
@@ -29,8 +32,25 @@ public record ServiceDescriptor(String name, String sid, String description, Str
         downloadPrefixes = downloadPrefixes == null ? List.of() : List.copyOf(downloadPrefixes);
     }
 
-    /** A service that takes no files from the download directory. */
+    /** A service that takes no files from the download directory, registration not stamped. */
     public ServiceDescriptor(String name, String sid, String description, String panel, List<String> attachPrefixes) {
-        this(name, sid, description, panel, attachPrefixes, List.of());
+        this(name, sid, description, panel, attachPrefixes, List.of(), 0);
+    }
+
+    /** A service that takes no files from the download directory. */
+    public ServiceDescriptor(String name, String sid, String description, String panel, List<String> attachPrefixes,
+                             long registration) {
+        this(name, sid, description, panel, attachPrefixes, List.of(), registration);
+    }
+
+    /** Registration not stamped. */
+    public ServiceDescriptor(String name, String sid, String description, String panel, List<String> attachPrefixes,
+                             List<String> downloadPrefixes) {
+        this(name, sid, description, panel, attachPrefixes, downloadPrefixes, 0);
+    }
+
+    /** The same service, stamped for one registration attempt. */
+    public ServiceDescriptor withRegistration(long stamp) {
+        return new ServiceDescriptor(name, sid, description, panel, attachPrefixes, downloadPrefixes, stamp);
     }
 }

@@ -51,7 +51,9 @@ public interface GenericRMIInterface extends Remote {
     void console(String token, List<ConsoleEntry> entries) throws RemoteException;
 
     /**
-     * A service's periodic sign of life.
+     * A service's periodic sign of life. Asked of a service, it is the server's call-back probe at
+     * registration (a service answers {@code true} whatever the token): proof that the server can
+     * reach the service before it lists it.
      *
      * @return false when the server no longer knows the token (it restarted, or dropped the
      *         service): the service then registers again

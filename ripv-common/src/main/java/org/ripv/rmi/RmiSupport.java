@@ -13,8 +13,9 @@ public final class RmiSupport {
     private RmiSupport() {}
 
     /**
-     * Sets RMI's timeouts before any RMI use. RMI waits for a reply forever by default; RIPV
-     * never waits longer than {@code responseMillis} for one call.
+     * Sets RMI's own timeouts before any RMI use (they bound RMI's handshake and a reply on a
+     * pooled connection; the connect itself is bounded by {@link DeadlineSocketFactory}, with
+     * which every RIPV object is exported).
      */
     public static void configure(long connectMillis, long responseMillis) {
         setIfAbsent("sun.rmi.transport.tcp.responseTimeout", Long.toString(responseMillis));
@@ -58,12 +59,13 @@ public final class RmiSupport {
 
     /**
      * Exports an object on the given port (0: any) with the RIPV allowlist on its arguments,
-     * listening on the {@link #BIND_PROPERTY} address when one is set.
+     * listening on the {@link #BIND_PROPERTY} address when one is set, and with
+     * {@link DeadlineSocketFactory} so that every caller connects and reads with deadlines.
      */
     public static GenericRMIInterface export(GenericRMIInterface object, int port) throws RemoteException {
         String bind = System.getProperty(BIND_PROPERTY, "").trim();
         if (bind.isEmpty() || bind.equals("*")) {
-            return (GenericRMIInterface) UnicastRemoteObject.exportObject(object, port, WireFilter.forRmi(MAX_RMI_BYTES));
+            return export(object, port, null);
         }
         java.net.InetAddress address;
         try {
@@ -71,8 +73,22 @@ public final class RmiSupport {
         } catch (java.net.UnknownHostException e) {
             throw new java.rmi.server.ExportException("cannot listen on '" + bind + "' (" + BIND_PROPERTY + "): unknown address", e);
         }
-        return (GenericRMIInterface) UnicastRemoteObject.exportObject(object, port, null, new BoundSockets(address),
+        return export(object, port, new BoundSockets(address));
+    }
+
+    /** As {@link #export(GenericRMIInterface, int)}, listening through {@code sockets} (null: RMI's default). */
+    public static GenericRMIInterface export(GenericRMIInterface object, int port, java.rmi.server.RMIServerSocketFactory sockets)
+            throws RemoteException {
+        return (GenericRMIInterface) UnicastRemoteObject.exportObject(object, port, DeadlineSocketFactory.fromSystem(), sockets,
                 WireFilter.forRmi(MAX_RMI_BYTES));
+    }
+
+    /**
+     * The RMI registry at host:port, reached through a {@link DeadlineSocketFactory}: a lookup
+     * on an unreachable host fails within the connect deadline instead of minutes.
+     */
+    public static java.rmi.registry.Registry registry(String host, int port) throws RemoteException {
+        return java.rmi.registry.LocateRegistry.getRegistry(host, port, DeadlineSocketFactory.fromSystem());
     }
 
     /** Server sockets on one address; equal factories share a port. */

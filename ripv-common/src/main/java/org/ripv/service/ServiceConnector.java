@@ -2,7 +2,6 @@ package org.ripv.service;
 
 import java.rmi.NotBoundException;
 import java.rmi.RemoteException;
-import java.rmi.registry.LocateRegistry;
 import java.rmi.registry.Registry;
 import java.time.Duration;
 import java.util.List;
@@ -37,15 +36,21 @@ public final class ServiceConnector implements AutoCloseable {
     private volatile String token;
     private volatile CountDownLatch registered = new CountDownLatch(1);
     private volatile boolean warnedAway;
+    private static final java.util.concurrent.atomic.AtomicLong STAMPS = new java.util.concurrent.atomic.AtomicLong();
+    private volatile java.util.function.Consumer<String> printer = m -> { };
+    private volatile String lastNotice;
+    private volatile org.ripv.outbound.CallChannel channel;
     /** Guards the window in which the server knows the new token and this side does not yet. */
     private final Object tokenLock = new Object();
     private boolean registering;
     private final java.util.concurrent.CompletableFuture<String> fatal = new java.util.concurrent.CompletableFuture<>();
 
-    private ServiceConnector(RIPVService service, ServiceOptions options) throws RemoteException {
+    private ServiceConnector(RIPVService service, ServiceOptions options, java.rmi.server.RMIServerSocketFactory sockets)
+            throws RemoteException {
         this.service = service;
         this.options = options;
-        this.stub = RmiSupport.export(remote, options.exportPort());
+        // Outbound-only: nothing listens here; the server's calls come back over our own connection.
+        this.stub = options.outbound() ? null : RmiSupport.export(remote, options.exportPort(), sockets);
         this.timer = Executors.newSingleThreadScheduledExecutor(r -> {
             Thread t = new Thread(r, "ripv-connector-" + service.name());
             t.setDaemon(true);
@@ -58,9 +63,18 @@ public final class ServiceConnector implements AutoCloseable {
      * the server answers. Use {@link #awaitRegistered} to wait for the first registration.
      */
     public static ServiceConnector connect(RIPVService service, ServiceOptions options) throws Exception {
+        return connect(service, options, null);
+    }
+
+    /**
+     * As {@link #connect(RIPVService, ServiceOptions)}, with the service's RMI object listening
+     * through {@code sockets} (null: RMI's default, all addresses).
+     */
+    public static ServiceConnector connect(RIPVService service, ServiceOptions options,
+                                           java.rmi.server.RMIServerSocketFactory sockets) throws Exception {
         RmiSupport.configure(10_000, 30_000);
         service.start();
-        ServiceConnector c = new ServiceConnector(service, options);
+        ServiceConnector c = new ServiceConnector(service, options, sockets);
         service.replyTo(c.new Sink());
         c.timer.execute(c::tick);
         c.timer.scheduleWithFixedDelay(c::tick, options.heartbeat().toMillis(), options.heartbeat().toMillis(),
@@ -107,9 +121,13 @@ public final class ServiceConnector implements AutoCloseable {
                 lost();
             } else if (!warnedAway) {
                 warnedAway = true;
-                log.warn("{}: no RIPVServer at {}:{} yet ({}); retrying every {} s", service.name(), options.serverHost(),
-                        options.registryPort(), e.getMessage(), options.heartbeat().toSeconds());
+                log.warn("{}: no RIPVServer at {}:{} yet ({}); retrying every {} ms", service.name(), options.serverHost(),
+                        options.outbound() ? options.outboundPort() : options.registryPort(), e.getMessage(),
+                        options.heartbeat().toMillis());
             }
+        } catch (IllegalStateException e) {
+            // Refused but fixable (the server cannot call back, or a newer attempt won): say so, keep trying.
+            notice(e.getMessage());
         } catch (SecurityException e) {
             // Retrying cannot fix a wrong secret: stop and let the launcher say so.
             log.error("{}: the server refused registration: {}", service.name(), e.getMessage());
@@ -121,6 +139,28 @@ public final class ServiceConnector implements AutoCloseable {
         }
     }
 
+    /** Where refusals the service can fix are printed besides the log (a launcher's standard error). */
+    public void onNotice(java.util.function.Consumer<String> printer) {
+        this.printer = printer == null ? m -> { } : printer;
+        String last = lastNotice;
+        if (last != null) {
+            this.printer.accept("Error: registration refused: " + last);
+        }
+    }
+
+    private void notice(String message) {
+        if (!message.equals(lastNotice)) {
+            lastNotice = message;
+            log.error("{}: registration refused: {}; retrying every {} ms", service.name(), message, options.heartbeat().toMillis());
+            printer.accept("Error: registration refused: " + message + " (retrying every " + options.heartbeat().toMillis() + " ms)");
+        }
+    }
+
+    /** This process's registration attempts, strictly increasing (see ServiceDescriptor#registration). */
+    private static long nextStamp() {
+        return STAMPS.updateAndGet(last -> Math.max(last + 1, System.currentTimeMillis()));
+    }
+
     private void lost() {
         token = null;
         if (registered.getCount() == 0) {
@@ -129,15 +169,21 @@ public final class ServiceConnector implements AutoCloseable {
     }
 
     private void register() throws RemoteException, NotBoundException {
-        Registry registry = LocateRegistry.getRegistry(options.serverHost(), options.registryPort());
-        GenericRMIInterface s = (GenericRMIInterface) registry.lookup(GenericRMIInterface.BINDING);
-        ServiceDescriptor d = service.descriptor();
+        GenericRMIInterface s;
+        if (options.outbound()) {
+            s = openChannel();
+        } else {
+            Registry registry = RmiSupport.registry(options.serverHost(), options.registryPort());
+            s = (GenericRMIInterface) registry.lookup(GenericRMIInterface.BINDING);
+        }
+        ServiceDescriptor d = service.descriptor().withRegistration(nextStamp());
         String t;
         synchronized (tokenLock) {
             registering = true;
         }
         try {
-            t = s.register(d, stub, options.secret());
+            // Over an outbound connection the handshake has proven the secret: it is never sent.
+            t = s.register(d, stub, options.outbound() ? "" : options.secret());
         } finally {
             synchronized (tokenLock) {
                 registering = false;
@@ -149,8 +195,59 @@ public final class ServiceConnector implements AutoCloseable {
             token = t;
         }
         warnedAway = false;
+        lastNotice = null;
         registered.countDown();
-        log.info("{} registered with the RIPVServer at {}:{}", d.name(), options.serverHost(), options.registryPort());
+        log.info("{} registered with the RIPVServer at {}:{}{}", d.name(), options.serverHost(),
+                options.outbound() ? options.outboundPort() : options.registryPort(), options.outbound() ? " (outbound only)" : "");
+    }
+
+    /**
+     * Opens the outbound connection: TCP to the server's outbound port within the connect
+     * deadline, the HMAC handshake, then calls both ways over it. Losing it means losing the
+     * server: the next heartbeat connects and registers again.
+     */
+    private GenericRMIInterface openChannel() throws RemoteException {
+        org.ripv.outbound.CallChannel old = channel;
+        if (old != null) {
+            old.close();
+        }
+        java.net.Socket socket = new java.net.Socket();
+        String where = options.serverHost() + ":" + options.outboundPort();
+        try {
+            org.ripv.rmi.DeadlineSocketFactory f = org.ripv.rmi.DeadlineSocketFactory.fromSystem();
+            socket.connect(new java.net.InetSocketAddress(options.serverHost(), options.outboundPort()), f.connectMillis());
+            socket.setSoTimeout(Math.max(f.readMillis(), 5_000));
+            java.io.DataInputStream in = new java.io.DataInputStream(new java.io.BufferedInputStream(socket.getInputStream()));
+            java.io.DataOutputStream out = new java.io.DataOutputStream(new java.io.BufferedOutputStream(socket.getOutputStream()));
+            org.ripv.outbound.OutboundHandshake.service(in, out, options.secret(), service.descriptor().name());
+            org.ripv.outbound.CallChannel c = new org.ripv.outbound.CallChannel(socket, where, remote,
+                    org.ripv.outbound.OutboundLimits.MAX_FRAME, java.time.Duration.ofMillis(Math.max(f.readMillis(), 5_000)));
+            c.closed().thenAccept(why -> {
+                if (token != null && server == c.remote() && !fatal.isDone()) {
+                    log.warn("{}: the outbound connection to {} closed ({}); connecting again", service.name(), where, why);
+                    lost();
+                }
+            });
+            channel = c;
+            return c.remote();
+        } catch (java.net.SocketTimeoutException e) {
+            close(socket);
+            throw new RemoteException("could not reach the server's outbound port " + where + ": timed out", e);
+        } catch (java.io.IOException e) {
+            close(socket);
+            throw new RemoteException("could not connect to the server's outbound port " + where + ": " + e.getMessage(), e);
+        } catch (RuntimeException e) {
+            close(socket);
+            throw e;
+        }
+    }
+
+    private static void close(java.net.Socket s) {
+        try {
+            s.close();
+        } catch (java.io.IOException ignored) {
+            // closing anyway
+        }
     }
 
     /** Sends replies to the server over RMI. */
@@ -192,7 +289,13 @@ public final class ServiceConnector implements AutoCloseable {
     public void close() {
         fatal.complete("closed");
         timer.shutdownNow();
-        RmiSupport.unexport(remote);
+        org.ripv.outbound.CallChannel c = channel;
+        if (c != null) {
+            c.close();
+        }
+        if (stub != null) {
+            RmiSupport.unexport(remote);
+        }
         token = null;
     }
 
@@ -255,9 +358,10 @@ public final class ServiceConnector implements AutoCloseable {
             throw new UnsupportedOperationException("a service does not take replies");
         }
 
+        /** The server's call-back probe at registration: answering at all proves the server reaches us. */
         @Override
         public boolean heartbeat(String t) {
-            throw new UnsupportedOperationException("a service does not take heartbeats");
+            return true;
         }
 
         @Override

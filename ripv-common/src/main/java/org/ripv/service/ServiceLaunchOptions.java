@@ -34,6 +34,20 @@ public final class ServiceLaunchOptions {
             description = "The port this service's RMI object listens on (default: any free port; fix it for firewalls).")
     int exportPort;
 
+    @Option(names = "--outbound-only", arity = "0..1", fallbackValue = "" + ServiceOptions.DEFAULT_OUTBOUND_PORT,
+            defaultValue = "-1", paramLabel = "PORT",
+            description = "Behind NAT or a firewall: only connect out, to the server's outbound port (default "
+                    + ServiceOptions.DEFAULT_OUTBOUND_PORT + "); the server's calls come back over that connection. Nothing listens here.")
+    int outboundPort;
+
+    @Option(names = "--rmi-connect-timeout", defaultValue = "3000", paramLabel = "MS",
+            description = "How long a call to the server may take to connect (default ${DEFAULT-VALUE} ms).")
+    int rmiConnectTimeout;
+
+    @Option(names = "--rmi-read-timeout", defaultValue = "15000", paramLabel = "MS",
+            description = "How long a call to the server may wait for its answer (default ${DEFAULT-VALUE} ms).")
+    int rmiReadTimeout;
+
     /** Applies {@code --host} to RMI and naming; call before creating the service. */
     public String hostName() {
         if (host != null && !host.isBlank()) {
@@ -78,6 +92,7 @@ public final class ServiceLaunchOptions {
         org.ripv.rmi.RmiSupport.filterProcess();
         applyBind();
         ServiceConnector connector = ServiceConnector.connect(service, toOptions());
+        connector.onNotice(err::println);
         java.util.concurrent.atomic.AtomicBoolean stopping = new java.util.concurrent.atomic.AtomicBoolean();
         Thread hook = new Thread(() -> {
             stopping.set(true);
@@ -85,7 +100,8 @@ public final class ServiceLaunchOptions {
             connector.close(); // then withdraw from RMI
         }, "ripv-service-shutdown");
         Runtime.getRuntime().addShutdownHook(hook);
-        err.println(service.name() + " (SID " + service.sid() + ") serving; registering with " + server);
+        err.println(service.name() + " (SID " + service.sid() + ") serving; registering with " + server
+                + (outboundPort > 0 ? " (outbound only, port " + outboundPort + ")" : ""));
         String why = connector.awaitFailure();
         if (stopping.get()) {
             return 0; // Ctrl-C or SIGTERM: the hook is stopping everything
@@ -132,7 +148,15 @@ public final class ServiceLaunchOptions {
 
     public ServiceOptions toOptions() throws java.io.IOException {
         Object[] hp = ServiceOptions.parseServer(server);
+        if (outboundPort == 0 || outboundPort > 65535 || outboundPort < -1) {
+            throw new IllegalArgumentException("--outbound-only takes the server's outbound port, 1 to 65535, not " + outboundPort);
+        }
+        if (rmiConnectTimeout < 1 || rmiReadTimeout < 1) {
+            throw new IllegalArgumentException("RMI timeouts must be at least 1 ms");
+        }
+        System.setProperty(org.ripv.rmi.DeadlineSocketFactory.CONNECT_PROPERTY, Integer.toString(rmiConnectTimeout));
+        System.setProperty(org.ripv.rmi.DeadlineSocketFactory.READ_PROPERTY, Integer.toString(rmiReadTimeout));
         return new ServiceOptions((String) hp[0], (Integer) hp[1], ServiceOptions.resolveSecret(secretFile), exportPort,
-                Duration.ofSeconds(3));
+                Duration.ofSeconds(3), outboundPort);
     }
 }

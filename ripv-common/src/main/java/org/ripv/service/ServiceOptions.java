@@ -15,9 +15,29 @@ import java.util.Objects;
  * @param secret       the server's service secret
  * @param exportPort   the port this service's RMI object listens on (0: any free port)
  * @param heartbeat    how often the service checks in, and retries when the server is away
+ * @param outboundPort the server's outbound-service port when the service only connects out
+ *                     (NAT, firewalls: {@code --outbound-only}), or -1 for plain RMI both ways
  */
-public record ServiceOptions(String serverHost, int registryPort, String secret, int exportPort, Duration heartbeat) {
+public record ServiceOptions(String serverHost, int registryPort, String secret, int exportPort, Duration heartbeat,
+                             int outboundPort) {
     public static final int DEFAULT_REGISTRY_PORT = 1099;
+    /** The server's port for services in outbound-only mode. */
+    public static final int DEFAULT_OUTBOUND_PORT = 4446;
+
+    /** Plain RMI both ways. */
+    public ServiceOptions(String serverHost, int registryPort, String secret, int exportPort, Duration heartbeat) {
+        this(serverHost, registryPort, secret, exportPort, heartbeat, -1);
+    }
+
+    /** The same, connecting out only, to the server's outbound port. */
+    public ServiceOptions outboundOnly(int port) {
+        return new ServiceOptions(serverHost, registryPort, secret, exportPort, heartbeat, port);
+    }
+
+    /** True in outbound-only mode. */
+    public boolean outbound() {
+        return outboundPort > 0;
+    }
     /** The environment variable a service may read its secret from. */
     public static final String SECRET_ENV = "RIPV_SERVICE_SECRET";
 

@@ -24,6 +24,8 @@ public final class WireFilter implements ObjectInputFilter {
             "java.lang.reflect.Proxy", "java.rmi.server.RemoteObjectInvocationHandler",
             "java.rmi.server.RemoteObject", "java.rmi.server.RemoteStub", "java.rmi.Remote");
     private static final String REMOTE_INTERFACE = "org.ripv.rmi.GenericRMIInterface";
+    /** Travels inside every RIPV stub: the deadlines its caller connects and reads with. */
+    private static final String SOCKET_FACTORY = "org.ripv.rmi.DeadlineSocketFactory";
 
     /** What RMI itself reads back in a process that calls other RIPV processes: DGC leases and exceptions. */
     private static final Set<String> RMI_RUNTIME = Set.of(
@@ -95,7 +97,7 @@ public final class WireFilter implements ObjectInputFilter {
         if (!allowRemoteStubs) {
             return false;
         }
-        if (RMI.contains(name) || name.equals(REMOTE_INTERFACE)) {
+        if (RMI.contains(name) || name.equals(REMOTE_INTERFACE) || name.equals(SOCKET_FACTORY)) {
             return true;
         }
         if (allowRmiRuntime && (RMI_RUNTIME.contains(name)

@@ -23,8 +23,12 @@ public final class BenchMain {
             "  ingest     Slocum DBA ingest (2,136 sensors; 100,000 rows) against a direct JDBC batch insert, and",
             "             vis:track of 100,000 positions end to end   [--runs N] [--track-runs N] [--track-only]",
             "  datavis    vis: to JPEG for 10,000 and 1,000,000 points, built-in worker and Octave   [--no-octave]",
+            "  firststart the DatabaseServer's first start (Derby created and seeded) in a fresh JVM, against",
+            "             loading the scripts statement by statement   [--runs N]",
             "  calls      100 vehicles calling 100 listen:// links within a minute: accepted, streamed, delay",
             "             [--vehicles N] [--spread S] [--surface S] [--lines-per-second N]",
+            "  (the multi-host speeds — round trips across network namespaces, time to notice a cut host —",
+            "   are measured by ripv-it's MultiHostTest, as root: docs/performance.md)",
             "See docs/performance.md for what each measures and the figures.");
 
     public static void main(String[] args) throws Exception {
@@ -38,6 +42,7 @@ public final class BenchMain {
             case "database" -> DatabaseBench.main(rest);
             case "ymodem" -> YmodemBenchmark.main(rest);
             case "datavis" -> DataVisBenchmark.main(rest);
+            case "firststart" -> FirstStartBench.main(rest);
             case "calls" -> System.exit(Launchers.commandLine(new CallsBench()).execute(rest));
             case "ingest" -> IngestBench.main(rest);
             default -> {

@@ -70,6 +70,7 @@ public final class RIPVServer implements AutoCloseable {
     private final PostOffice<IncomingServerMessage, OutgoingServerMessage> postOffice = new PostOffice<>(200_000);
     private final ScheduledExecutorService timers;
     private final ExecutorService checkers;
+    private final ExecutorService withdrawals;
     private final ExecutorService liveness;
     private final ServiceLiveness serviceLiveness;
     private final ExecutorService fileWork;
@@ -83,11 +84,13 @@ public final class RIPVServer implements AutoCloseable {
     private FrameCodec codec;
     private MailBox<IncomingServerMessage, OutgoingServerMessage> box;
     private PendingRequests pending;
+    private volatile RequestEndings endings;
     private ServerSocket listener;
     private Thread acceptor;
     private Registry registry;
     private int registryPort;
     private LandingPage landingPage;
+    private OutboundListener outbound;
     private volatile boolean running;
 
     /** An operator's hold on a MailBox ({@code ?lock}). */
@@ -100,10 +103,14 @@ public final class RIPVServer implements AutoCloseable {
     public RIPVServer(ServerConfig config) {
         this.config = config;
         this.timers = Executors.newScheduledThreadPool(1, named("ripv-server-timer"));
-        this.checkers = Executors.newFixedThreadPool(4, named("ripv-service-query"));
+        // Calls to services: each is bounded by the RMI deadlines and at most one MailBox query
+        // runs per service, so a cached pool grows by one thread per hung service at worst.
+        this.checkers = Executors.newCachedThreadPool(named("ripv-service-query"));
+        this.withdrawals = new java.util.concurrent.ThreadPoolExecutor(0, 16, 30, TimeUnit.SECONDS,
+                new java.util.concurrent.SynchronousQueue<>(), named("ripv-withdraw"));
         this.liveness = Executors.newFixedThreadPool(2, named("ripv-service-check"));
         this.fileWork = Executors.newFixedThreadPool(2, named("ripv-file-work"));
-        this.serviceLiveness = new ServiceLiveness(services, liveness, timers, config.serviceCheck(), this::drop);
+        this.serviceLiveness = new ServiceLiveness(services, liveness, checkers, timers, config.serviceCheck(), this::drop);
     }
 
     private static java.util.concurrent.ThreadFactory named(String name) {
@@ -128,6 +135,7 @@ public final class RIPVServer implements AutoCloseable {
         secret = ServiceSecret.loadOrCreate(config.dataDir().resolve("service.secret"));
         codec = new FrameCodec(config.maxFrame());
         pending = new PendingRequests(timers, config.requestTimeout(), this::timedOut);
+        endings = new RequestEndings(this, pending, withdrawals, config.requestTimeout());
         box = postOffice.open(POST_OFFICE, new ServerTaskManager(this));
         dataLoop = new org.ripv.server.dataloop.DataLoop(internalCalls, config.dataDir().resolve("ingest.properties"));
 
@@ -135,13 +143,15 @@ public final class RIPVServer implements AutoCloseable {
         try {
             registryPort = config.registryPort() == 0 ? freePort() : config.registryPort();
             BoundServerSocketFactory rmiSockets = new BoundServerSocketFactory(bind);
+            // Services call back with deadlines: the factory travels inside the stub they get.
+            org.ripv.rmi.DeadlineSocketFactory callSockets = org.ripv.rmi.DeadlineSocketFactory.fromSystem();
             try {
-                registry = LocateRegistry.createRegistry(registryPort, null, rmiSockets);
+                registry = LocateRegistry.createRegistry(registryPort, callSockets, rmiSockets);
             } catch (RemoteException e) {
                 throw new IOException("cannot open the RMI registry on port " + registryPort + " (in use?): " + e.getMessage(), e);
             }
             GenericRMIInterface stub = (GenericRMIInterface) java.rmi.server.UnicastRemoteObject.exportObject(remote,
-                    registryPort, null, rmiSockets, org.ripv.wire.WireFilter.forRmi(RmiSupport.MAX_RMI_BYTES));
+                    registryPort, callSockets, rmiSockets, org.ripv.wire.WireFilter.forRmi(RmiSupport.MAX_RMI_BYTES));
             registry.rebind(GenericRMIInterface.BINDING, stub);
 
             ServerSocketFactory factory = config.tls() == null ? ServerSocketFactory.getDefault()
@@ -173,8 +183,30 @@ public final class RIPVServer implements AutoCloseable {
                 config.tls() == null ? "" : " (TLS)", registryPort, config.dataDir().toAbsolutePath());
     }
 
+    /**
+     * Opens the port for services in outbound-only mode (NAT, firewalls) on the bind address;
+     * 0 picks a free port. Call after {@link #start}; {@link #stop} closes it.
+     *
+     * @return the port
+     */
+    public synchronized int openOutbound(int port) throws IOException {
+        if (!running) {
+            throw new IllegalStateException("start the server first");
+        }
+        if (outbound == null) {
+            InetAddress bind = config.bindAddress() == null ? null : InetAddress.getByName(config.bindAddress());
+            outbound = new OutboundListener(this, remote, bind, port);
+            log.info("services behind NAT may connect out to port {} (--outbound-only)", outbound.port());
+        }
+        return outbound.port();
+    }
+
     /** Closes every port, thread and export the server may have opened; safe on a half-started server. */
     private void release() {
+        if (outbound != null) {
+            outbound.close();
+            outbound = null;
+        }
         if (landingPage != null) {
             try {
                 landingPage.close();
@@ -207,6 +239,7 @@ public final class RIPVServer implements AutoCloseable {
         RmiSupport.unexport(remote);
         timers.shutdownNow();
         checkers.shutdownNow();
+        withdrawals.shutdownNow();
         liveness.shutdownNow();
         fileWork.shutdownNow();
         postOffice.stop();
@@ -364,6 +397,10 @@ public final class RIPVServer implements AutoCloseable {
         return Optional.ofNullable(clients.get(clientId));
     }
 
+    ServiceLiveness liveness() {
+        return serviceLiveness;
+    }
+
     Map<String, ServiceReference> serviceMap() {
         return services;
     }
@@ -409,38 +446,12 @@ public final class RIPVServer implements AutoCloseable {
 
     /** A request that could not be handed to its service: fail it, and check whether the service lives. */
     void undeliverable(ServiceReference ref, IncomingServiceMessage r, Exception e) {
-        log.warn("could not reach {}: {}", ref, e.toString());
-        if (pending.complete(r.header(), ref.descriptor().name()) != null) {
-            reply(new IncomingServerMessage(r.header()).reply(Footer.error(ref.descriptor().sid(), ErrorCode.SERVICE_GONE,
-                    ref.descriptor().name() + " could not be reached: " + e.getMessage()).via(SERVER_SERVICE)));
-        }
+        endings.undeliverable(ref, r, e);
         serviceLiveness.soon(ref);
     }
 
-    /** A request heard nothing for the timeout: withdraw it if it has not started, and say which happened. */
     private void timedOut(PendingRequests.Pending p) {
-        ServiceReference ref = services.get(p.service());
-        Runnable answer = () -> {
-            String sid = ref == null ? Ids.FID_NONE : ref.descriptor().sid();
-            boolean withdrawn = false;
-            try {
-                withdrawn = ref != null && ref.withdraw(p.header());
-            } catch (RemoteException | RuntimeException e) {
-                log.debug("could not withdraw #{}: {}", p.header().messageId(), e.toString());
-            }
-            String what = "'" + Header.abbreviate(p.header().body()) + "'";
-            String text = withdrawn
-                    ? p.service() + " did not start " + what + " within " + config.requestTimeout().toSeconds()
-                            + " s (its MailBox was busy); it was withdrawn and will not run"
-                    : p.service() + " did not answer " + what + " within " + config.requestTimeout().toSeconds()
-                            + " s; it may still complete on the device";
-            reply(new IncomingServerMessage(p.header()).reply(Footer.error(sid, ErrorCode.TIMEOUT, text).via(SERVER_SERVICE)));
-        };
-        if (checkers.isShutdown()) {
-            answer.run();
-        } else {
-            checkers.execute(answer);
-        }
+        endings.timedOut(p, services.get(p.service()));
     }
 
     private void checkServices() {
@@ -449,12 +460,7 @@ public final class RIPVServer implements AutoCloseable {
     }
 
     void drop(ServiceReference ref, String why) {
-        ref.close();
-        for (PendingRequests.Pending p : pending.failService(ref.descriptor().name())) {
-            reply(new IncomingServerMessage(p.header()).reply(Footer.error(ref.descriptor().sid(), ErrorCode.SERVICE_GONE,
-                    ref.descriptor().name() + " " + why + " before answering '" + Header.abbreviate(p.header().body())
-                            + "'").via(SERVER_SERVICE)));
-        }
+        endings.drop(ref, why);
     }
 
     /**

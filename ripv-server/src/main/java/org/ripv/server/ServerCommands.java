@@ -2,9 +2,7 @@ package org.ripv.server;
 
 import java.io.IOException;
 import java.nio.file.NoSuchFileException;
-import java.rmi.RemoteException;
 import java.time.Instant;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
@@ -15,11 +13,8 @@ import org.ripv.messages.FileListing;
 import org.ripv.messages.Footer;
 import org.ripv.messages.Ids;
 import org.ripv.messages.IncomingServerMessage;
-import org.ripv.messages.MailboxList;
 import org.ripv.messages.MailboxStatus;
 import org.ripv.messages.OutgoingServerMessage;
-import org.ripv.messages.ServiceDescriptor;
-import org.ripv.messages.ServiceList;
 import org.ripv.messages.SessionInfo;
 import org.ripv.naming.MailboxAddress;
 import org.ripv.server.files.FileExistsException;
@@ -64,8 +59,11 @@ final class ServerCommands {
 
     private final RIPVServer server;
 
+    private final ServiceQueries queries;
+
     ServerCommands(RIPVServer server) {
         this.server = server;
+        this.queries = new ServiceQueries(server);
     }
 
     /** Commands that touch the disk: they run on the file workers, not on the Post Office's thread. */
@@ -158,21 +156,14 @@ final class ServerCommands {
                 String where = files.delete(w[1]);
                 return ok(request, c, "deleted " + w[1] + " from the " + where, null);
             }
-            case "?services": {
-                List<ServiceDescriptor> list = server.services().stream().map(ServiceReference::descriptor).toList();
-                StringBuilder b = new StringBuilder(list.size() + " service(s) registered");
-                list.forEach(d -> b.append('\n').append(d.name()).append("  SID ").append(d.sid())
-                        .append(d.description().isEmpty() ? "" : "  " + d.description()));
-                return ok(request, c, b.toString(), new ServiceList(list));
-            }
+            case "?services":
+                return queries.services(request);
             case "?mailboxes":
-                server.checkers().execute(() -> server.reply(mailboxes(request, c)));
+                queries.mailboxes(request);
                 return null;
-            case "?status": {
-                MailboxAddress address = MailboxAddress.parse(arg(w, 1, c));
-                server.checkers().execute(() -> server.reply(status(request, c, address)));
+            case "?status":
+                queries.status(request, MailboxAddress.parse(arg(w, 1, c)));
                 return null;
-            }
             case "?upload": {
                 PermitFile.User u = permit(request, c);
                 if (w.length < 4 || w.length > 5 || request.header().attachment() == null) {
@@ -251,44 +242,6 @@ final class ServerCommands {
             }
             default:
                 throw new IllegalStateException("no handler for " + w[0]);
-        }
-    }
-
-    private OutgoingServerMessage mailboxes(IncomingServerMessage request, Command c) {
-        List<MailboxStatus> all = new ArrayList<>();
-        StringBuilder text = new StringBuilder();
-        for (ServiceReference ref : server.services()) {
-            try {
-                for (MailboxStatus s : ref.mailboxes()) {
-                    MailboxStatus withLock = server.withLock(s);
-                    all.add(withLock);
-                    text.append(describe(withLock)).append('\n');
-                }
-            } catch (RemoteException | RuntimeException e) {
-                text.append(ref.descriptor().name()).append(": not answering (").append(e.getClass().getSimpleName()).append(")\n");
-            }
-        }
-        return ok(request, c, all.size() + " mailbox(es)\n" + text.toString().stripTrailing(), new MailboxList(all));
-    }
-
-    private OutgoingServerMessage status(IncomingServerMessage request, Command c, MailboxAddress address) {
-        Optional<ServiceReference> ref = server.service(address.service().toString());
-        if (ref.isEmpty()) {
-            return ServerTaskManager.error(request, c.fid(), ErrorCode.UNKNOWN_SERVICE,
-                    "no service " + address.service() + " is registered");
-        }
-        try {
-            for (MailboxStatus s : ref.get().mailboxes()) {
-                if (s.address().equals(address.toString())) {
-                    MailboxStatus withLock = server.withLock(s);
-                    return ok(request, c, describe(withLock), withLock);
-                }
-            }
-            return ServerTaskManager.error(request, c.fid(), ErrorCode.UNKNOWN_MAILBOX,
-                    "no MailBox " + address + " at " + address.service() + "; ?mailboxes lists them");
-        } catch (RemoteException | RuntimeException e) {
-            return ServerTaskManager.error(request, c.fid(), ErrorCode.SERVICE_GONE,
-                    address.service() + " is not answering: " + e.getMessage());
         }
     }
 

@@ -66,6 +66,16 @@ public final class ServerMain implements Callable<Integer> {
         Path tlsKeystore;
         @Option(names = "--tls-password-file", description = "File holding the key store's password.")
         Path tlsPasswordFile;
+        @Option(names = "--outbound-port", defaultValue = "4446", paramLabel = "PORT",
+                description = "Port for services in outbound-only mode (behind NAT: they connect out and the server's calls come back"
+                        + " over that connection); 0: any free port, -1: none (default ${DEFAULT-VALUE}). A busy port only warns.")
+        int outboundPort;
+        @Option(names = "--rmi-connect-timeout", defaultValue = "3000", paramLabel = "MS",
+                description = "How long a call to a service may take to connect (default ${DEFAULT-VALUE} ms).")
+        int rmiConnectTimeout;
+        @Option(names = "--rmi-read-timeout", defaultValue = "15000", paramLabel = "MS",
+                description = "How long a call to a service may wait for its answer (default ${DEFAULT-VALUE} ms).")
+        int rmiReadTimeout;
         @Option(names = "--client-jar", description = "The client jar the landing page offers (default: ripv-client.jar beside this jar).")
         Path clientJar;
 
@@ -77,6 +87,11 @@ public final class ServerMain implements Callable<Integer> {
                 // Stubs must name an address the server actually listens on.
                 System.setProperty("java.rmi.server.hostname", bind);
             }
+            if (rmiConnectTimeout < 1 || rmiReadTimeout < 1) {
+                throw new CommandLine.ParameterException(new CommandLine(this), "RMI timeouts must be at least 1 ms");
+            }
+            System.setProperty(org.ripv.rmi.DeadlineSocketFactory.CONNECT_PROPERTY, Integer.toString(rmiConnectTimeout));
+            System.setProperty(org.ripv.rmi.DeadlineSocketFactory.READ_PROPERTY, Integer.toString(rmiReadTimeout));
             Path dataDir = data != null ? data : ServiceOptions.defaultDataDir();
             ServerConfig config = ServerConfig.defaults(dataDir)
                     .withPorts(port, registryPort, httpPort == 0 ? -1 : httpPort)
@@ -91,6 +106,14 @@ public final class ServerMain implements Callable<Integer> {
             org.ripv.rmi.RmiSupport.filterProcess();
             RIPVServer server = new RIPVServer(config);
             server.start();
+            String outbound = "";
+            if (outboundPort >= 0) {
+                try {
+                    outbound = ", services behind NAT connect out to port " + server.openOutbound(outboundPort);
+                } catch (java.io.IOException e) {
+                    System.err.println("Warning: " + e.getMessage() + "; services in --outbound-only mode cannot connect");
+                }
+            }
             CountDownLatch stopped = new CountDownLatch(1);
             Runtime.getRuntime().addShutdownHook(new Thread(() -> {
                 server.stop();
@@ -102,7 +125,7 @@ public final class ServerMain implements Callable<Integer> {
             }
             System.err.println("RIPVServer ready: clients on port " + server.port() + ", services register at "
                     + (bind != null ? bind : "this host") + ":" + server.registryPort() + " with --secret-file " + server.secretFile()
-                    + (server.httpPort() > 0 ? ", landing page on http://localhost:" + server.httpPort() + "/" : ""));
+                    + (server.httpPort() > 0 ? ", landing page on http://localhost:" + server.httpPort() + "/" : "") + outbound);
             stopped.await();
             return 0;
         }

@@ -2,15 +2,12 @@ package org.ripv.server;
 
 import java.nio.charset.StandardCharsets;
 import java.security.MessageDigest;
-import java.security.SecureRandom;
-import java.util.HexFormat;
 import java.util.List;
 import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.IncomingServiceMessage;
 import org.ripv.messages.MailboxStatus;
 import org.ripv.messages.OutgoingServiceMessage;
 import org.ripv.messages.ServiceDescriptor;
-import org.ripv.naming.ServiceName;
 import org.ripv.rmi.GenericRMIInterface;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -36,19 +33,7 @@ final class ServerRemote implements GenericRMIInterface {
             log.warn("refused a registration of {}: wrong service secret", d == null ? "?" : d.name());
             throw new SecurityException("wrong service secret: give the server's DATA/service.secret with --secret-file");
         }
-        if (d == null || service == null) {
-            throw new IllegalArgumentException("a registration needs a descriptor and the service's stub");
-        }
-        ServiceName.parse(d.name());
-        byte[] t = new byte[24];
-        new SecureRandom().nextBytes(t);
-        ServiceReference ref = new ServiceReference(d, service, HexFormat.of().formatHex(t), server::undeliverable);
-        ServiceReference old = server.serviceMap().put(d.name(), ref);
-        if (old != null) {
-            server.drop(old, "registered again");
-        }
-        log.info("{} registered ({})", ref, d.description());
-        return ref.token();
+        return ServiceAdmission.admit(server, d, service);
     }
 
     @Override

@@ -149,7 +149,7 @@ public final class EmbeddedDatabase {
             c.setAutoCommit(false);
             SqlScript.run(c, SqlScript.resource("vehicleDB.sql"), "vehicleDB.sql");
             if (sampleData) {
-                SqlScript.run(c, SqlScript.resource("sample-data.sql"), "sample-data.sql");
+                SeedLoader.run(c, SqlScript.resource("sample-data.sql"), "sample-data.sql");
             }
             c.commit();
         }

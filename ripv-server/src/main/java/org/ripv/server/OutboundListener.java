@@ -1,0 +1,211 @@
+package org.ripv.server;
+
+import java.io.BufferedInputStream;
+import java.io.BufferedOutputStream;
+import java.io.DataInputStream;
+import java.io.DataOutputStream;
+import java.io.IOException;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.time.Duration;
+import java.util.List;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.Semaphore;
+import org.ripv.messages.ConsoleEntry;
+import org.ripv.messages.IncomingServiceMessage;
+import org.ripv.messages.MailboxStatus;
+import org.ripv.messages.OutgoingServiceMessage;
+import org.ripv.messages.ServiceDescriptor;
+import org.ripv.naming.ServiceName;
+import org.ripv.outbound.CallChannel;
+import org.ripv.outbound.OutboundHandshake;
+import org.ripv.outbound.OutboundLimits;
+import org.ripv.rmi.DeadlineSocketFactory;
+import org.ripv.rmi.GenericRMIInterface;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * The server's port for services in outbound-only mode ({@code --outbound-only}): a service
+ * behind NAT or a firewall connects here, both prove the service secret by HMAC, and the
+ * server's calls to it travel back over that connection through a {@link CallChannel} proxy —
+ * the rest of the server sees an ordinary {@link GenericRMIInterface} stub. Registration over it
+ * goes through the same {@link ServiceAdmission} as over RMI. When the connection ends, the
+ * service is dropped at once (its pending requests fail) and may connect again.
+ */
+final class OutboundListener implements AutoCloseable {
+    private static final Logger log = LoggerFactory.getLogger(OutboundListener.class);
+    /** Handshakes under way at once: a flood of idle connections cannot tie up more. */
+    private static final int MAX_HANDSHAKES = 32;
+
+    private final RIPVServer server;
+    private final GenericRMIInterface remote;
+    private final ServerSocket listener;
+    private final Semaphore handshakes = new Semaphore(MAX_HANDSHAKES);
+    private final Set<CallChannel> channels = ConcurrentHashMap.newKeySet();
+    private volatile boolean open = true;
+
+    OutboundListener(RIPVServer server, GenericRMIInterface remote, InetAddress bind, int port) throws IOException {
+        this.server = server;
+        this.remote = remote;
+        ServerSocket s = new ServerSocket();
+        s.setReuseAddress(true);
+        try {
+            s.bind(new InetSocketAddress(bind, port), 50);
+        } catch (IOException e) {
+            s.close();
+            throw new IOException("cannot listen for outbound-only services on port " + port + " (in use?): " + e.getMessage(), e);
+        }
+        this.listener = s;
+        Thread t = new Thread(this::acceptLoop, "ripv-outbound-acceptor");
+        t.setDaemon(true);
+        t.start();
+    }
+
+    int port() {
+        return listener.getLocalPort();
+    }
+
+    private void acceptLoop() {
+        while (open) {
+            Socket s;
+            try {
+                s = listener.accept();
+            } catch (IOException e) {
+                if (open) {
+                    log.warn("outbound accept failed: {}", e.toString());
+                }
+                continue;
+            }
+            if (!handshakes.tryAcquire()) {
+                log.warn("refusing outbound connection from {}: {} handshakes under way", s.getRemoteSocketAddress(), MAX_HANDSHAKES);
+                closeQuietly(s);
+                continue;
+            }
+            Thread t = new Thread(() -> {
+                try {
+                    handshake(s);
+                } finally {
+                    handshakes.release();
+                }
+            }, "ripv-outbound-handshake");
+            t.setDaemon(true);
+            t.start();
+        }
+    }
+
+    private void handshake(Socket s) {
+        String peer = s.getInetAddress().getHostAddress() + ":" + s.getPort();
+        try {
+            s.setSoTimeout(OutboundLimits.HANDSHAKE_MILLIS);
+            DataInputStream in = new DataInputStream(new BufferedInputStream(s.getInputStream()));
+            DataOutputStream out = new DataOutputStream(new BufferedOutputStream(s.getOutputStream()));
+            String name = OutboundHandshake.server(in, out, server.secret());
+            ServiceName.parse(name);
+            int deadline = DeadlineSocketFactory.fromSystem().readMillis();
+            Side side = new Side(name);
+            CallChannel c = new CallChannel(s, peer, side, OutboundLimits.MAX_FRAME, Duration.ofMillis(Math.max(deadline, 5_000)));
+            side.channel = c;
+            channels.add(c);
+            c.closed().thenAccept(why -> {
+                channels.remove(c);
+                ServiceReference ref = server.serviceMap().get(name);
+                if (ref != null && ref.stub() == c.remote() && server.serviceMap().remove(name, ref)) {
+                    log.warn("{}: its outbound connection from {} closed ({})", ref, peer, why);
+                    server.drop(ref, "closed its outbound connection (" + why + ")");
+                }
+            });
+            log.info("outbound connection from {} for {}", peer, name);
+        } catch (SecurityException e) {
+            log.warn("refused an outbound connection from {}: {}", peer, e.getMessage());
+            closeQuietly(s);
+        } catch (IOException | RuntimeException e) {
+            log.info("dropped an outbound connection from {}: {}", peer, e.toString());
+            closeQuietly(s);
+        }
+    }
+
+    private static void closeQuietly(Socket s) {
+        try {
+            s.close();
+        } catch (IOException ignored) {
+            // closing anyway
+        }
+    }
+
+    @Override
+    public void close() {
+        open = false;
+        try {
+            listener.close();
+        } catch (IOException ignored) {
+            // closing anyway
+        }
+        channels.forEach(CallChannel::close);
+    }
+
+    /**
+     * What an outbound service may call: the server's side of the interface, with registration
+     * proven by the handshake (the secret is not sent again) and bound to the proven name.
+     */
+    private final class Side implements GenericRMIInterface {
+        private final String name;
+        private volatile CallChannel channel;
+
+        Side(String name) {
+            this.name = name;
+        }
+
+        @Override
+        public String register(ServiceDescriptor d, GenericRMIInterface ignored, String notSent) {
+            if (d == null || !d.name().equals(name)) {
+                throw new SecurityException("this connection proved the secret for " + name + ", not for "
+                        + (d == null ? "nothing" : d.name()));
+            }
+            return ServiceAdmission.admit(server, d, channel.remote());
+        }
+
+        @Override
+        public void serviceReply(String token, OutgoingServiceMessage reply) throws java.rmi.RemoteException {
+            remote.serviceReply(token, reply);
+        }
+
+        @Override
+        public void serviceReplies(String token, List<OutgoingServiceMessage> replies) throws java.rmi.RemoteException {
+            remote.serviceReplies(token, replies);
+        }
+
+        @Override
+        public void console(String token, List<ConsoleEntry> entries) throws java.rmi.RemoteException {
+            remote.console(token, entries);
+        }
+
+        @Override
+        public boolean heartbeat(String token) throws java.rmi.RemoteException {
+            return remote.heartbeat(token);
+        }
+
+        @Override
+        public void serviceRequest(String token, IncomingServiceMessage request) {
+            throw new UnsupportedOperationException("the RIPVServer takes no service requests");
+        }
+
+        @Override
+        public void serviceRequests(String token, List<IncomingServiceMessage> requests) {
+            throw new UnsupportedOperationException("the RIPVServer takes no service requests");
+        }
+
+        @Override
+        public boolean withdraw(String token, String mailbox, String clientId, long messageId) {
+            throw new UnsupportedOperationException("the RIPVServer runs no service MailBoxes");
+        }
+
+        @Override
+        public List<MailboxStatus> mailboxes(String token) {
+            throw new UnsupportedOperationException("ask ?mailboxes over the client socket");
+        }
+    }
+}

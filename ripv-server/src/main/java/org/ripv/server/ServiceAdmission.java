@@ -1,0 +1,118 @@
+package org.ripv.server;
+
+import java.rmi.RemoteException;
+import java.rmi.ServerError;
+import java.rmi.ServerException;
+import java.security.SecureRandom;
+import java.util.HexFormat;
+import org.ripv.messages.ServiceDescriptor;
+import org.ripv.naming.ServiceName;
+import org.ripv.rmi.GenericRMIInterface;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * Admits a service whose secret has been checked: calls it back first (a service the server
+ * cannot reach is refused at once, with the address tried and what to set, instead of being
+ * listed and stalling every request), then lists it — unless a newer registration of the same
+ * service got there first, which a late one (from an attempt the service gave up on) must never
+ * replace.
+ */
+final class ServiceAdmission {
+    private static final Logger log = LoggerFactory.getLogger(ServiceAdmission.class);
+    private static final SecureRandom RANDOM = new SecureRandom();
+    /** How long the call-back at registration may take. */
+    static final java.time.Duration CALLBACK_DEADLINE =
+            java.time.Duration.ofMillis(Long.getLong("ripv.service.callbackMillis", 5_000));
+
+    private ServiceAdmission() {}
+
+    /**
+     * Calls the service back, then registers it.
+     *
+     * @return the session token
+     * @throws IllegalStateException when the service cannot be reached or a newer registration won
+     */
+    static String admit(RIPVServer server, ServiceDescriptor d, GenericRMIInterface service) {
+        if (d == null || service == null) {
+            throw new IllegalArgumentException("a registration needs a descriptor and the service's stub");
+        }
+        ServiceName.parse(d.name());
+        try {
+            callBack(d, service, server.checkers());
+        } catch (IllegalStateException e) {
+            server.liveness().refused(d.name(), "cannot call it back at " + ServiceReference.addressOf(service));
+            throw e;
+        }
+        byte[] t = new byte[24];
+        RANDOM.nextBytes(t);
+        ServiceReference ref = new ServiceReference(d, service, HexFormat.of().formatHex(t), server::undeliverable,
+                d.registration());
+        ServiceReference[] replaced = new ServiceReference[1];
+        ServiceReference now = server.serviceMap().compute(d.name(), (name, old) -> {
+            if (old != null && d.registration() != 0 && old.order() > d.registration()) {
+                return old; // a newer registration of this service is in force
+            }
+            replaced[0] = old;
+            return ref;
+        });
+        if (now != ref) {
+            ref.close();
+            log.warn("refused a late registration of {} (attempt of {}; the one in force began at {})", d.name(),
+                    d.registration(), now.order());
+            throw new IllegalStateException("superseded: a newer registration of " + d.name() + " is in force");
+        }
+        if (replaced[0] != null) {
+            server.drop(replaced[0], "registered again");
+        }
+        server.liveness().registered(d.name());
+        log.info("{} registered from {} ({})", ref, ref.address(), d.description());
+        return ref.token();
+    }
+
+    /**
+     * Proves the server can call the service: its heartbeat answers (any answer from the service
+     * itself will do), within {@link #CALLBACK_DEADLINE} — well inside the service's own wait for
+     * the registration to return.
+     */
+    static void callBack(ServiceDescriptor d, GenericRMIInterface service, java.util.concurrent.Executor pool) {
+        String address = ServiceReference.addressOf(service);
+        java.util.concurrent.CompletableFuture<Boolean> probe = java.util.concurrent.CompletableFuture.supplyAsync(() -> {
+            try {
+                return service.heartbeat("probe");
+            } catch (RemoteException e) {
+                throw new java.util.concurrent.CompletionException(e);
+            }
+        }, pool);
+        try {
+            probe.get(CALLBACK_DEADLINE.toMillis(), java.util.concurrent.TimeUnit.MILLISECONDS);
+        } catch (java.util.concurrent.TimeoutException e) {
+            probe.cancel(true);
+            throw refused(d, address, "timed out after " + CALLBACK_DEADLINE.toMillis() + " ms");
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw refused(d, address, "interrupted");
+        } catch (java.util.concurrent.ExecutionException e) {
+            Throwable t = e.getCause();
+            if (t instanceof ServerException || t instanceof ServerError || t instanceof UnsupportedOperationException
+                    || t instanceof SecurityException) {
+                return; // the service answered, if only to refuse: it is reachable
+            }
+            throw refused(d, address, ServiceReference.why(t, address));
+        }
+    }
+
+    private static IllegalStateException refused(ServiceDescriptor d, String address, String why) {
+        log.warn("refused the registration of {}: cannot call it back at {}: {}", d.name(), address, why);
+        return new IllegalStateException(refusal(d.name(), address, why));
+    }
+
+    /** What the service prints: the address tried and what to set. */
+    static String refusal(String name, String address, String why) {
+        String port = address.contains(":") ? address.substring(address.lastIndexOf(':') + 1) : "its export port";
+        return "the server could not call " + name + " back at " + address + " (" + why + "). The server must reach the"
+                + " service there: set --host to a name or address of this host that the server can reach, fix the port"
+                + " with --export-port and open or forward that TCP port (now " + port + ") to this host; or use"
+                + " --outbound-only so that the service only connects out to the server (NAT, firewalls)";
+    }
+}
