@@ -5,6 +5,32 @@
 # With no display it prints how to connect with the CLI instead. Ctrl-C stops everything.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+
+demo_usage() {
+  cat <<'USAGE'
+Usage: ripv demo
+
+Starts the whole system on this machine: a RIPVServer, the SerialPortServer, DatabaseServer and
+DataVisServer on their embedded defaults, a simulated glider on TCP, and the GUI logged in as the
+demo operator 'demo' (with no display: how to connect with the CLI). Ctrl-C stops everything.
+
+Environment:
+  RIPV_DEMO_DIR        where data, logs and the demo password go (default: .ripv-demo in the source tree)
+  RIPV_PORT            client port (default 4444)
+  RIPV_REGISTRY_PORT   RMI registry port (default 1099)
+  RIPV_HTTP_PORT       landing page port (default 8080)
+  RIPV_GLIDER_PORT     the simulated glider's TCP port (default 5555)
+  RIPV_DEMO_HEADLESS=1 no GUI even with a display
+USAGE
+}
+for a in "$@"; do
+  case "$a" in
+    -h|--help) demo_usage; exit 0 ;;
+    -V|--version) exec "$ROOT/ripv" --version ;;
+    *) echo "ripv demo: unknown option '$a'" >&2; demo_usage >&2; exit 2 ;;
+  esac
+done
+[ "${RIPV_PARSE_ONLY:-}" = 1 ] && exit 0   # a dry run: the command line is fine
 JAVA="${JAVA:-java}"
 DEMO="${RIPV_DEMO_DIR:-$ROOT/.ripv-demo}"
 PORT="${RIPV_PORT:-4444}"

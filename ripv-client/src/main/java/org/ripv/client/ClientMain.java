@@ -7,20 +7,20 @@ import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
 /** {@code java -jar ripv-client.jar [client|cli] ...}: the GUI by default, or the command-line client. */
-@Command(name = "ripv-client", mixinStandardHelpOptions = true, version = "RIPV 1.0",
+@Command(name = "ripv", mixinStandardHelpOptions = true,
         description = "The RIPV operator clients.",
         subcommands = {ClientCommand.class, CliCommand.class})
 public final class ClientMain implements Runnable {
     @Override
     public void run() {
-        new CommandLine(this).usage(System.out);
+        Launchers.commandLine(this, "ripv").usage(System.out);
     }
 
     public static int run(String... args) {
         if (args.length == 0) {
             args = new String[] {"client"}; // double-clicking the jar opens the GUI
         }
-        CommandLine cl = Launchers.commandLine(new ClientMain());
+        CommandLine cl = Launchers.commandLine(new ClientMain(), "ripv");
         return cl.execute(args);
     }
 

@@ -72,7 +72,7 @@ public final class ClockService extends RIPVService {
     }
 
     public static void main(String[] args) {
-        CommandLine cl = Launchers.commandLine(new Launch());
+        CommandLine cl = Launchers.commandLine(new Launch(), "ripv service clock");
         System.exit(cl.execute(ServiceLaunchOptions.thesisForm(args)));
     }
 }

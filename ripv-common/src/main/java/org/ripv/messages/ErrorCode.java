@@ -17,6 +17,8 @@ public enum ErrorCode {
     BAD_FILE_NAME(422),
     /** A file of that name is in the store already: nothing is replaced unless asked, with rights. */
     FILE_EXISTS(423),
+    /** The request was cancelled ({@code ?cancel}) before or while it ran; the text says by whom. */
+    CANCELLED(499),
     NOT_AVAILABLE(503),
     TIMEOUT(504),
     SERVICE_GONE(502),

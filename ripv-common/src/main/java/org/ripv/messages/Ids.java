@@ -34,6 +34,10 @@ public final class Ids {
     // Store files (issue 10 part B), range 444480-444499.
     /** {@code ?delete NAME}: removes a file from the upload or download store. */
     public static final String FID_DELETE = "444480";
+    // Workflows and cancel (docs/workflows.md): 555800-555899.
+    public static final String FID_QUEUE = "555800";
+    public static final String FID_RECEIPTS = "555801";
+    public static final String FID_CANCEL = "555802";
     /** Replies to a message the server could not attribute to any command or service. */
     public static final String FID_NONE = "000000";
 

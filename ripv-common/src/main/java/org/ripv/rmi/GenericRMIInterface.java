@@ -74,6 +74,23 @@ public interface GenericRMIInterface extends Remote {
      */
     boolean withdraw(String token, String mailbox, String clientId, long messageId) throws RemoteException;
 
+    /**
+     * Asks a service to stop a request that is running now ({@code ?cancel}). The MailBox's
+     * handler decides how (a query's {@code Statement.cancel}, a transfer's abort); the request
+     * still ends with exactly one final reply, an ERROR {@code CANCELLED} when the cancel took
+     * effect. Withdraw a request that has not started with {@link #withdraw} instead.
+     *
+     * @param mailbox   the MailBox running it
+     * @param clientId  the client id of the request's origin
+     * @param messageId the request's message id
+     * @return true when that request was running and its handler accepted the cancel; false when
+     *         it is not running there or its handler cannot stop it
+     * @throws UnsupportedOperationException from a side that runs no service MailBoxes (the default)
+     */
+    default boolean cancel(String token, String mailbox, String clientId, long messageId) throws RemoteException {
+        throw new UnsupportedOperationException("this side runs no service MailBoxes; send ?cancel to the server");
+    }
+
     /** The service's MailBoxes and whether each can take commands now. */
     List<MailboxStatus> mailboxes(String token) throws RemoteException;
 }

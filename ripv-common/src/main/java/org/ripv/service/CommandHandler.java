@@ -13,6 +13,19 @@ public interface CommandHandler {
      */
     Reply execute(Request request) throws Exception;
 
+    /**
+     * Stops the command {@link #execute} is running now, from another thread ({@code ?cancel}):
+     * e.g. {@code Statement.cancel} for a query, an abort for a transfer. {@code execute} should
+     * then return soon, with an error; the reply goes out as ERROR CANCELLED. The default cannot
+     * stop anything.
+     *
+     * @param running the request being cancelled
+     * @return true when the handler will stop it
+     */
+    default boolean cancel(Request running) {
+        return false;
+    }
+
     /** Whether the resource can take commands now ({@code ?status}). Called from other threads. */
     default Availability availability() {
         return Availability.available("");

@@ -56,6 +56,7 @@ public abstract class RIPVService {
     private final String sid;
     private final PostOffice<IncomingServiceMessage, OutgoingServiceMessage> postOffice = new PostOffice<>(100_000);
     private final Map<String, CommandHandler> handlers = new ConcurrentHashMap<>();
+    private final Map<String, ServiceTaskManager> managers = new ConcurrentHashMap<>();
     private volatile ReplySink sink = reply -> log.warn("not connected to a server: dropped {}", reply);
     private volatile boolean started;
     private volatile ConsolePublisher console;
@@ -122,12 +123,14 @@ public abstract class RIPVService {
         MailboxAddress address = name.mailbox(handle);
         Objects.requireNonNull(handler, "handler");
         handlers.put(address.toString(), handler);
+        ServiceTaskManager manager = new ServiceTaskManager(this, handler);
         try {
-            postOffice.open(address.toString(), new ServiceTaskManager(this, handler));
+            postOffice.open(address.toString(), manager);
         } catch (RuntimeException e) {
             handlers.remove(address.toString());
             throw e;
         }
+        managers.put(address.toString(), manager);
         log.info("opened MailBox {}", address);
         return address;
     }
@@ -139,6 +142,7 @@ public abstract class RIPVService {
             replyNow(left, ErrorCode.NOT_AVAILABLE, "MailBox " + address + " was closed before the command ran");
         }
         handlers.remove(address);
+        managers.remove(address);
     }
 
     /** Opens the service. Idempotent. */
@@ -221,6 +225,17 @@ public abstract class RIPVService {
     public final boolean withdraw(String mailbox, String clientId, long messageId) {
         return postOffice.mailbox(mailbox).map(box -> box.remove(m -> m.header().messageId() == messageId
                 && m.header().origin().clientId().equals(clientId))).orElse(false);
+    }
+
+    /**
+     * Asks the handler of a MailBox to stop the request it is running ({@code ?cancel}).
+     *
+     * @return true when that request is running there and the handler accepted the cancel
+     *         ({@link CommandHandler#cancel}); its final reply then says CANCELLED
+     */
+    public final boolean cancel(String mailbox, String clientId, long messageId) {
+        ServiceTaskManager m = managers.get(mailbox);
+        return m != null && m.cancel(clientId, messageId);
     }
 
     /** The MailBoxes and their availability. */

@@ -338,6 +338,12 @@ public final class ServiceConnector implements AutoCloseable {
         }
 
         @Override
+        public boolean cancel(String t, String mailbox, String clientId, long messageId) throws RemoteException {
+            check(t);
+            return service.cancel(mailbox, clientId, messageId);
+        }
+
+        @Override
         public List<MailboxStatus> mailboxes(String t) throws RemoteException {
             check(t);
             return service.mailboxes();

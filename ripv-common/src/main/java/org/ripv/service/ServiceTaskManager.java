@@ -16,6 +16,9 @@ final class ServiceTaskManager extends TaskManager<IncomingServiceMessage, Outgo
 
     private final RIPVService service;
     private final CommandHandler handler;
+    /** The request running now (one at a time per MailBox), for cancel; null between requests. */
+    private volatile Request running;
+    private volatile boolean cancelled;
 
     ServiceTaskManager(RIPVService service, CommandHandler handler) {
         this.service = service;
@@ -25,12 +28,42 @@ final class ServiceTaskManager extends TaskManager<IncomingServiceMessage, Outgo
     @Override
     public void parseHeader(MailBox<IncomingServiceMessage, OutgoingServiceMessage> box, IncomingServiceMessage request)
             throws Exception {
-        Reply r = handler.execute(new Request(request, box, service.sid(), service.name().toString()));
+        Request now = new Request(request, box, service.sid(), service.name().toString());
+        synchronized (this) {
+            cancelled = false;
+            running = now;
+        }
+        Reply r;
+        boolean wasCancelled;
+        try {
+            r = handler.execute(now);
+        } finally {
+            synchronized (this) {
+                running = null;
+                wasCancelled = cancelled;
+            }
+        }
         if (r == null) {
             throw new IllegalStateException("the handler of " + box.address() + " returned no reply");
         }
-        box.post(request.reply(new Footer(service.sid(), r.status(), r.code(), null, r.text(), r.result())
+        ErrorCode code = wasCancelled && r.status() == org.ripv.messages.Status.ERROR ? ErrorCode.CANCELLED : r.code();
+        box.post(request.reply(new Footer(service.sid(), r.status(), code, null, r.text(), r.result())
                 .via(service.name().toString())));
+    }
+
+    /**
+     * Cancels the running request if it is the one named; true when the handler accepted. Under
+     * the manager's lock, so that a cancel never lands on the request that starts next.
+     */
+    synchronized boolean cancel(String clientId, long messageId) {
+        Request r = running;
+        if (r == null || r.message().header().messageId() != messageId
+                || !r.message().header().origin().clientId().equals(clientId)) {
+            return false;
+        }
+        boolean taken = handler.cancel(r);
+        cancelled = taken;
+        return taken;
     }
 
     @Override
@@ -51,7 +84,7 @@ final class ServiceTaskManager extends TaskManager<IncomingServiceMessage, Outgo
     @Override
     public void failed(MailBox<IncomingServiceMessage, OutgoingServiceMessage> box, IncomingServiceMessage request,
                        Throwable cause) {
-        ErrorCode code = cause instanceof ServiceException se ? se.code() : ErrorCode.INTERNAL;
+        ErrorCode code = cancelled ? ErrorCode.CANCELLED : cause instanceof ServiceException se ? se.code() : ErrorCode.INTERNAL;
         String text = cause.getMessage() == null ? cause.toString() : cause.getMessage();
         box.post(request.reply(Footer.error(service.sid(), code, text).via(service.name().toString())));
     }

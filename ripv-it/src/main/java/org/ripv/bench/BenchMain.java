@@ -1,6 +1,7 @@
 package org.ripv.bench;
 
 import java.util.Arrays;
+import java.util.List;
 import org.ripv.services.bench.DataVisBenchmark;
 import org.ripv.services.bench.YmodemBenchmark;
 import org.ripv.launch.Launchers;
@@ -14,7 +15,7 @@ public final class BenchMain {
     private BenchMain() {}
 
     static final String USAGE = String.join("\n",
-            "Usage: ./ripv bench NAME [OPTIONS]",
+            "Usage: ripv bench NAME [OPTIONS]   (NAME --help for its options)",
             "  broker     the client → server → service → client round trip against a bare socket and RMI call;",
             "             throughput with 1, 8 and 32 clients   [--seconds S] [--warmup S] [--clients 1,8,32]",
             "  database   a 100,000-row query end to end against direct JDBC   [--rows N] [--runs N] [--warmup N]",
@@ -36,14 +37,22 @@ public final class BenchMain {
             System.out.println(USAGE);
             System.exit(args.length == 0 ? 2 : 0);
         }
+        if (args[0].equals("--version") || args[0].equals("-V")) {
+            System.out.println(org.ripv.launch.Version.line());
+            System.exit(0);
+        }
         String[] rest = Arrays.copyOfRange(args, 1, args.length);
+        if (!List.of("broker", "calls").contains(args[0]) && (Arrays.asList(rest).contains("--help") || Arrays.asList(rest).contains("-h"))) {
+            System.out.println(USAGE); // the benchmarks without a picocli command of their own
+            System.exit(0);
+        }
         switch (args[0]) {
-            case "broker" -> System.exit(Launchers.commandLine(new BrokerBench()).execute(rest));
+            case "broker" -> System.exit(Launchers.commandLine(new BrokerBench(), "ripv bench broker").execute(rest));
             case "database" -> DatabaseBench.main(rest);
             case "ymodem" -> YmodemBenchmark.main(rest);
             case "datavis" -> DataVisBenchmark.main(rest);
             case "firststart" -> FirstStartBench.main(rest);
-            case "calls" -> System.exit(Launchers.commandLine(new CallsBench()).execute(rest));
+            case "calls" -> System.exit(Launchers.commandLine(new CallsBench(), "ripv bench calls").execute(rest));
             case "ingest" -> IngestBench.main(rest);
             default -> {
                 System.err.println("Error: unknown benchmark '" + args[0] + "'\n" + USAGE);

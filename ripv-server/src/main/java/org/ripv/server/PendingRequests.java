@@ -82,6 +82,16 @@ final class PendingRequests {
         return p;
     }
 
+    /** The pending request a client sent with this message id, or null. */
+    Pending get(String clientId, long messageId) {
+        return pending.get(clientId + "#" + messageId);
+    }
+
+    /** Every pending request with this message id, whoever sent it. */
+    List<Pending> withMessageId(long messageId) {
+        return pending.values().stream().filter(p -> p.header().messageId() == messageId).toList();
+    }
+
     /** Fails every request whose deadline has passed. */
     private void sweep() {
         long now = System.nanoTime();

@@ -90,6 +90,8 @@ public final class RIPVServer implements AutoCloseable {
     private Registry registry;
     private int registryPort;
     private LandingPage landingPage;
+    private org.ripv.server.workflow.Workflows workflows;
+    private final RequestCancels cancels = new RequestCancels(this);
     private OutboundListener outbound;
     private volatile boolean running;
 
@@ -135,6 +137,7 @@ public final class RIPVServer implements AutoCloseable {
         secret = ServiceSecret.loadOrCreate(config.dataDir().resolve("service.secret"));
         codec = new FrameCodec(config.maxFrame());
         pending = new PendingRequests(timers, config.requestTimeout(), this::timedOut);
+        workflows = new org.ripv.server.workflow.Workflows(config.dataDir().resolve("workflows"), new WorkflowBridge(this));
         endings = new RequestEndings(this, pending, withdrawals, config.requestTimeout());
         box = postOffice.open(POST_OFFICE, new ServerTaskManager(this));
         dataLoop = new org.ripv.server.dataloop.DataLoop(internalCalls, config.dataDir().resolve("ingest.properties"));
@@ -237,6 +240,9 @@ public final class RIPVServer implements AutoCloseable {
             }
         }
         RmiSupport.unexport(remote);
+        if (workflows != null) {
+            workflows.close();
+        }
         timers.shutdownNow();
         checkers.shutdownNow();
         withdrawals.shutdownNow();
@@ -362,7 +368,9 @@ public final class RIPVServer implements AutoCloseable {
             clients.remove(client.clientId(), client);
             pending.forgetClient(client.clientId());
             files.abortAll(client.clientId());
-            locks.values().removeIf(l -> l.clientId().equals(client.clientId()));
+            if (locks.values().removeIf(l -> l.clientId().equals(client.clientId()))) {
+                workflows.lockReleased(null);
+            }
         }
     }
 
@@ -403,6 +411,28 @@ public final class RIPVServer implements AutoCloseable {
 
     Map<String, ServiceReference> serviceMap() {
         return services;
+    }
+
+    org.ripv.server.workflow.Workflows workflows() {
+        return workflows;
+    }
+
+    RequestCancels cancels() {
+        return cancels;
+    }
+
+    /** Puts a server-made request (a workflow step) into the Post Office like a client's; false when it is full. */
+    boolean deliver(IncomingServerMessage request) {
+        return box.deliver(request);
+    }
+
+    /**
+     * SEAM for the live console (issue 11): a console entry the server itself originates — a
+     * workflow's progress line, WORKFLOW_DONE / WORKFLOW_FAILED — for watchers, the transcript and
+     * notifications. Until the fan-out is merged it is only logged.
+     */
+    void publishServerEntry(org.ripv.messages.ConsoleEntry entry) {
+        log.debug("console {} (server): {} {}", entry.mailbox(), entry.kind(), Header.abbreviate(entry.text()));
     }
 
     String secret() {
@@ -469,6 +499,7 @@ public final class RIPVServer implements AutoCloseable {
      */
     void console(ServiceReference ref, List<org.ripv.messages.ConsoleEntry> entries) {
         String prefix = ref.descriptor().name();
+        workflows.onConsole(prefix, entries);
         for (org.ripv.messages.ConsoleEntry e : entries) {
             if (e != null && e.mailbox().startsWith(prefix)) {
                 log.debug("console {}: {} {}", e.mailbox(), e.kind(), Header.abbreviate(e.text()));

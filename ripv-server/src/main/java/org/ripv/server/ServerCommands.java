@@ -54,6 +54,10 @@ final class ServerCommands {
         COMMANDS.put("?delete", new Command(Ids.FID_DELETE, "?delete NAME", "delete NAME from the upload directory, or FOLDER/NAME from the download directory"));
         COMMANDS.put("?lock", new Command(Ids.FID_LOCK, "?lock MAILBOX [SECONDS]", "keep others from commanding a MailBox (default 300 s)"));
         COMMANDS.put("?unlock", new Command(Ids.FID_UNLOCK, "?unlock MAILBOX", "release your lock"));
+        COMMANDS.put("?queue", new Command(Ids.FID_QUEUE, "?queue MAILBOX | add MAILBOX NAME | remove MAILBOX ID | clear MAILBOX",
+                "the workflows queued for a vehicle's next call (docs/workflows.md)"));
+        COMMANDS.put("?receipts", new Command(Ids.FID_RECEIPTS, "?receipts MAILBOX [--last N]", "what the last workflow runs did"));
+        COMMANDS.put("?cancel", new Command(Ids.FID_CANCEL, "?cancel MESSAGE-ID [CLIENT-ID]", "stop a request that is queued or running"));
         COMMANDS.put("?logout", new Command(Ids.FID_LOGOUT, "?logout", "end the session and close the connection"));
     }
 
@@ -68,7 +72,7 @@ final class ServerCommands {
 
     /** Commands that touch the disk: they run on the file workers, not on the Post Office's thread. */
     private static final java.util.Set<String> FILE_WORK = java.util.Set.of("?upload", "?upload-cancel", "?download",
-            "?dlfiles", "?ulfiles", "?delete");
+            "?dlfiles", "?ulfiles", "?delete", "?queue", "?receipts");
 
     /** Runs one {@code ?} command; its reply (or replies) go to the Post Office's outbox. */
     void run(IncomingServerMessage request) {
@@ -212,6 +216,13 @@ final class ServerCommands {
                 return ok(request, c, "bytes " + offset + ".." + (offset + data.length) + " of " + total + " of " + w[1],
                         new FileData(w[1], offset, total, data));
             }
+            case "?queue":
+                return server.workflows().queueCommand(request);
+            case "?receipts":
+                return server.workflows().receiptsCommand(request);
+            case "?cancel":
+                server.checkers().execute(() -> server.reply(server.cancels().command(request)));
+                return null;
             case "?lock": {
                 permit(request, c);
                 MailboxAddress address = MailboxAddress.parse(arg(w, 1, c));
@@ -222,7 +233,8 @@ final class ServerCommands {
                 RIPVServer.OperatorLock mine = new RIPVServer.OperatorLock(user, request.header().origin().clientId(),
                         System.currentTimeMillis() + seconds * 1000);
                 RIPVServer.OperatorLock now = server.locks().compute(address.toString(),
-                        (k, old) -> old == null || old.expired() || old.user().equals(user) ? mine : old);
+                        (k, old) -> old == null || old.expired() || old.user().equals(user)
+                                || org.ripv.server.workflow.Workflows.isWorkflowClient(old.clientId()) ? mine : old);
                 if (now != mine) {
                     return ServerTaskManager.error(request, c.fid(), ErrorCode.MAILBOX_LOCKED,
                             address + " is locked by " + now.user() + " until " + Instant.ofEpochMilli(now.untilMillis()));
@@ -238,6 +250,7 @@ final class ServerCommands {
                             address + " is locked by " + l.user() + ", not by you");
                 }
                 server.locks().remove(address.toString());
+                server.workflows().lockReleased(address.toString());
                 return ok(request, c, address + " unlocked", null);
             }
             default:

@@ -31,7 +31,7 @@ import picocli.CommandLine.Parameters;
  * 2 bad command line; a server stopped by Ctrl-C or SIGTERM ends as the JVM does (130, 143)
  * after stopping cleanly.
  */
-@Command(name = "ripv-server", mixinStandardHelpOptions = true, version = "RIPV 1.0",
+@Command(name = "ripv", mixinStandardHelpOptions = true,
         description = "The RIPV broker, and its user administration.",
         subcommands = {ServerMain.Serve.class, ServerMain.Passwd.class})
 public final class ServerMain implements Callable<Integer> {
@@ -227,7 +227,7 @@ public final class ServerMain implements Callable<Integer> {
         if (args.length == 1 && args[0].matches("\\d{1,5}")) {
             args = new String[] {"server", "--port", args[0]};
         }
-        CommandLine cl = Launchers.commandLine(new ServerMain());
+        CommandLine cl = Launchers.commandLine(new ServerMain(), "ripv");
         return cl.execute(args);
     }
 

@@ -78,6 +78,11 @@ final class ServerRemote implements GenericRMIInterface {
     }
 
     @Override
+    public boolean cancel(String token, String mailbox, String clientId, long messageId) {
+        throw new UnsupportedOperationException("the RIPVServer runs no service MailBoxes; send ?cancel over the client socket");
+    }
+
+    @Override
     public List<MailboxStatus> mailboxes(String token) {
         throw new UnsupportedOperationException("ask ?mailboxes over the client socket");
     }

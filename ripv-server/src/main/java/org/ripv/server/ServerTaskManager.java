@@ -141,6 +141,9 @@ final class ServerTaskManager extends TaskManager<IncomingServerMessage, Outgoin
 
     @Override
     public void parseFooter(MailBox<IncomingServerMessage, OutgoingServerMessage> box, OutgoingServerMessage reply) {
+        if (server.workflows().reply(reply)) {
+            return; // a workflow step's reply: the runner judges it
+        }
         Optional<SocketHandler> client = server.client(reply.header().origin().clientId());
         if (client.isEmpty()) {
             log.info("dropped reply to #{}: client {} has disconnected", reply.header().messageId(),

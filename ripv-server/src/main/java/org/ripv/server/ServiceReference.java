@@ -183,6 +183,11 @@ final class ServiceReference {
         return stub.withdraw(token, h.mailboxAddress(), h.origin().clientId(), h.messageId());
     }
 
+    /** Asks the service to stop a request that is running; true when its handler took the cancel. */
+    boolean cancel(org.ripv.messages.Header h) throws RemoteException {
+        return stub.cancel(token, h.mailboxAddress(), h.origin().clientId(), h.messageId());
+    }
+
     /** Asks for the MailBoxes now, on the caller's thread. */
     List<MailboxStatus> mailboxes() throws RemoteException {
         return stub.mailboxes(token);

@@ -42,6 +42,7 @@ final class ServiceReplies {
         }
         Result sent = f.result();
         f = store(server, f, folderOf(p.header().mailboxAddress()));
+        f = server.cancels().judge(p, f);
         // Route by the header the server sent, never by what the service wrote back.
         OutgoingServerMessage out = new IncomingServerMessage(p.header()).reply(f.via(RIPVServer.SERVER_SERVICE));
         if (!server.dataLoop().downloaded(out, sent, server::reply)) { // DBA files go to the database first

@@ -30,16 +30,20 @@ public final class ServicesMain {
             err.println(USAGE);
             return args.length == 0 ? 2 : 0;
         }
+        if (args[0].equals("--version") || args[0].equals("-V")) {
+            System.out.println(org.ripv.launch.Version.line());
+            return 0;
+        }
         String[] rest = Arrays.copyOfRange(args, 1, args.length);
         switch (args[0]) {
             case "serial", "SerialPortServer":
-                return execute(new SerialPortServerCommand(), ServiceLaunchOptions.thesisForm(rest));
+                return execute(new SerialPortServerCommand(), "ripv service serial", ServiceLaunchOptions.thesisForm(rest));
             case "database", "DatabaseServer":
-                return execute(new DatabaseServerCommand(), DatabaseServerCommand.thesisArgs(rest));
+                return execute(new DatabaseServerCommand(), "ripv service database", DatabaseServerCommand.thesisArgs(rest));
             case "datavis", "DataVisServer":
-                return execute(new DataVisServerCommand(), ServiceLaunchOptions.thesisForm(rest));
+                return execute(new DataVisServerCommand(), "ripv service datavis", ServiceLaunchOptions.thesisForm(rest));
             case "simulator":
-                return execute(new SimulatorCommand(), rest);
+                return execute(new SimulatorCommand(), "ripv simulator", rest);
             default:
                 err.println("Error: unknown service '" + args[0] + "'");
                 err.println(USAGE);
@@ -47,8 +51,8 @@ public final class ServicesMain {
         }
     }
 
-    private static int execute(Object command, String[] args) {
-        CommandLine cl = Launchers.commandLine(command);
+    private static int execute(Object command, String name, String[] args) {
+        CommandLine cl = Launchers.commandLine(command, name);
         return cl.execute(args);
     }
 

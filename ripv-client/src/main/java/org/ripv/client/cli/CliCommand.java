@@ -14,15 +14,20 @@ import java.util.concurrent.Callable;
 import org.ripv.client.handlers.ClientSocketHandler;
 import org.ripv.client.handlers.RipvErrorException;
 import org.ripv.client.handlers.Tls;
+import org.ripv.client.cli.shell.Shell;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
 /**
- * {@code ripv cli}: the headless client, for people at a terminal and for scripts. Exit codes:
- * 0 every reply OK, 1 some reply was an ERROR, 3 could not connect or log in.
+ * {@code ripv cli}: the headless client, for people at a terminal and for scripts. On a terminal
+ * without {@code --exec} it is interactive ({@link Shell}); otherwise it runs the {@code --exec}
+ * lines or standard input's. Exit codes: 0 every reply OK (interactive: the user ended it),
+ * 1 some reply was an ERROR, 2 bad command line, 3 could not connect or log in, or lost the connection.
  */
 @Command(name = "cli", mixinStandardHelpOptions = true,
-        description = "Talks to a RIPVServer in the COM panel's command language, from --exec lines or standard input.")
+        description = {"Talks to a RIPVServer in the COM panel's command language: interactively on a terminal "
+                + "(prompt, history, Tab completion; help lists the commands), or from --exec lines or standard input.",
+                "The password comes from --password-file, else $RIPV_PASSWORD, else the terminal (not echoed)."})
 public final class CliCommand implements Callable<Integer> {
     public static final int EXIT_ERROR_REPLY = 1;
     public static final int EXIT_NO_SESSION = 3;
@@ -31,7 +36,7 @@ public final class CliCommand implements Callable<Integer> {
     String server;
     @Option(names = "--user", required = true, description = "User name.")
     String user;
-    @Option(names = "--password", description = "Password (else --password-file, else $RIPV_PASSWORD).")
+    @Option(names = "--password", description = "Password (other users see it in ps: prefer --password-file, $RIPV_PASSWORD or the prompt).")
     String password;
     @Option(names = "--password-file", description = "File whose first line is the password.")
     Path passwordFile;
@@ -45,6 +50,8 @@ public final class CliCommand implements Callable<Integer> {
     Path truststore;
     @Option(names = "--truststore-password", defaultValue = "changeit", description = "The trust store's password (default ${DEFAULT-VALUE}).")
     String truststorePassword;
+    @Option(names = "--history", paramLabel = "FILE", description = "The interactive CLI's history (default ~/.ripv/history).")
+    Path history;
     @Option(names = "--timeout", defaultValue = "3600", description = "Seconds to wait for one reply (default ${DEFAULT-VALUE}; the server fails silent requests sooner).")
     long timeout;
 
@@ -76,9 +83,9 @@ public final class CliCommand implements Callable<Integer> {
                 return 2;
             }
         }
-        char[] pw = password();
+        char[] pw = password(host);
         if (pw == null) {
-            err.println("Error: no password: give --password, --password-file or set RIPV_PASSWORD");
+            err.println("Error: no password: give --password-file, set RIPV_PASSWORD, or run on a terminal to be asked");
             return 2;
         }
         ClientSocketHandler client;
@@ -102,6 +109,9 @@ public final class CliCommand implements Callable<Integer> {
             }
             CliSession session = new CliSession(client, out, err, json, Duration.ofSeconds(timeout));
             try {
+                if (interactive()) {
+                    return new Shell(session, client, history != null ? history : Shell.defaultHistory(), err).run();
+                }
                 if (exec != null && !exec.isEmpty()) {
                     for (String line : exec) {
                         if (!session.run(line)) {
@@ -124,8 +134,15 @@ public final class CliCommand implements Callable<Integer> {
         }
     }
 
-    private char[] password() throws IOException {
+    /** A person at a terminal, with no --exec lines: the interactive CLI. */
+    private boolean interactive() {
+        return in == System.in && System.console() != null && (exec == null || exec.isEmpty());
+    }
+
+    private char[] password(String host) throws IOException {
         if (password != null) {
+            err.println("Warning: --password shows the password to every user of this machine (ps);"
+                    + " use --password-file, $RIPV_PASSWORD or let the CLI ask");
             return password.toCharArray();
         }
         if (passwordFile != null) {
@@ -133,6 +150,10 @@ public final class CliCommand implements Callable<Integer> {
             return lines.isEmpty() ? null : lines.get(0).toCharArray();
         }
         String env = System.getenv("RIPV_PASSWORD");
-        return env == null ? null : env.toCharArray();
+        if (env != null) {
+            return env.toCharArray();
+        }
+        java.io.Console console = in == System.in ? System.console() : null;
+        return console == null ? null : console.readPassword("Password for %s@%s: ", user, host);
     }
 }

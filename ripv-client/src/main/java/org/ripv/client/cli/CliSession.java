@@ -5,6 +5,11 @@ import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
+import java.util.concurrent.CancellationException;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
 import org.ripv.client.handlers.ClientSocketHandler;
 import org.ripv.client.handlers.RipvErrorException;
 import org.ripv.messages.ErrorCode;
@@ -20,6 +25,12 @@ import org.ripv.naming.MailboxAddress;
  * Runs lines of the COM panel's command language against a connected server: {@code ?...}
  * server commands, {@code use MAILBOX}, {@code priority LEVEL}, {@code put LOCALFILE},
  * {@code get NAME [LOCALDIR]}, and anything else as a command for the current MailBox.
+ *
+ * <p>{@link #cancel()} (Ctrl-C in the interactive CLI) stops waiting for the running request: a
+ * transfer stops after its current chunk (an upload's part is dropped on the server); any other
+ * request is cancelled on the server with {@code ?cancel ID}, whose answer is printed (withdrawn
+ * before it ran, or the service asked to stop it; a service that cannot stop it says so), and
+ * its late reply is ignored.
  */
 public final class CliSession {
     private final ClientSocketHandler client;
@@ -31,6 +42,11 @@ public final class CliSession {
     private Priority priority = Priority.NORMAL;
     private boolean anyError;
     private org.ripv.messages.TableResult lastTable;
+    /** The request being waited for, so that {@link #cancel()} can end the wait. */
+    private volatile CompletableFuture<OutgoingServerMessage> waiting;
+    /** The message id of the request being waited for, 0 for none (what {@code ?cancel} names). */
+    private volatile long waitingId;
+    private volatile boolean cancelled;
 
     public CliSession(ClientSocketHandler client, PrintStream out, PrintStream err, boolean json, Duration timeout) {
         this.client = client;
@@ -49,8 +65,34 @@ public final class CliSession {
         return mailbox;
     }
 
+    /** The help of the CLI's own lines. */
+    public static final String HELP = String.join("\n",
+            "  ?COMMAND                         a server command (?help lists them)",
+            "  use MAILBOX                      send further lines to MAILBOX (a full address or its handle; ?mailboxes lists them)",
+            "  priority normal|priority|urgent  the inbox further requests go to",
+            "  put LOCALFILE [NAME] [--replace|--keep]",
+            "                                   upload to the server's upload directory; when NAME is taken: replace it, or keep both",
+            "  get NAME [LOCALDIR]              download from the server's download directory (default: the current directory)",
+            "  export csv|json LOCALFILE        write the last query result to a local file (numbers as numbers, NULL as null)",
+            "  help                             this, and the current service's help",
+            "  quit                             end the session (Ctrl-D too)",
+            "  anything else                    a command for the current MailBox");
+
+    /**
+     * Stops waiting for the running request (from another thread, e.g. a Ctrl-C handler). The
+     * line that was running then reports that it was cancelled; the session stays usable.
+     */
+    public void cancel() {
+        cancelled = true;
+        CompletableFuture<OutgoingServerMessage> w = waiting;
+        if (w != null) {
+            w.cancel(false);
+        }
+    }
+
     /** Runs one line. Returns false for {@code quit}. */
     public boolean run(String rawLine) throws IOException {
+        cancelled = false;
         String line = rawLine.strip();
         if (line.isEmpty() || line.startsWith("#")) {
             return true;
@@ -61,8 +103,7 @@ public final class CliSession {
             case "quit", "exit" -> {
                 return false;
             }
-            case "help" -> local("Lines: ?COMMAND (server; ?help lists them) | use MAILBOX | priority normal|priority|urgent"
-                    + " | put LOCALFILE [NAME] | get NAME [LOCALDIR] | export csv|json LOCALFILE | quit | anything else goes to the current MailBox");
+            case "help" -> help();
             case "use" -> use(rest);
             case "priority" -> {
                 try {
@@ -86,7 +127,30 @@ public final class CliSession {
         return true;
     }
 
-    private void use(String address) {
+    private void help() throws IOException {
+        local("CLI help (lines this client understands):\n" + HELP);
+        if (mailbox.isEmpty()) {
+            local("Service help: choose a MailBox with use MAILBOX first; ?help lists the server's commands");
+            return;
+        }
+        OutgoingServerMessage r = await(mailbox, "help", null);
+        if (r == null) {
+            return;
+        }
+        if (r.status() == Status.ERROR) {
+            local("Service help (" + mailbox + "): none (" + r.footer().replyText() + ")");
+        } else {
+            local("Service help (" + mailbox + "):\n" + r.footer().replyText());
+        }
+    }
+
+    private void use(String address) throws IOException {
+        if (!address.isEmpty() && !address.contains("::")) {
+            address = resolveHandle(address);
+            if (address == null) {
+                return;
+            }
+        }
         try {
             mailbox = MailboxAddress.parse(address).toString();
             local("using " + mailbox);
@@ -95,12 +159,99 @@ public final class CliSession {
         }
     }
 
-    private void send(String box, String body) throws IOException {
-        OutgoingServerMessage reply = client.call(box, body, priority, timeout, printer::print);
-        if (reply.footer().result() instanceof org.ripv.messages.TableResult t) {
-            lastTable = t;
+    /** The full address of the one MailBox whose handle is {@code handle}, or null (said why). */
+    private String resolveHandle(String handle) throws IOException {
+        OutgoingServerMessage r = await("", "?mailboxes", null);
+        if (r == null) {
+            return null;
         }
-        print(reply);
+        java.util.List<String> matches = new java.util.ArrayList<>();
+        if (r.footer().result() instanceof org.ripv.messages.MailboxList list) {
+            for (var s : list.mailboxes()) {
+                try {
+                    if (MailboxAddress.parse(s.address()).handle().equals(handle)) {
+                        matches.add(s.address());
+                    }
+                } catch (IllegalArgumentException ignored) {
+                    // not an address we can use
+                }
+            }
+        }
+        if (matches.size() == 1) {
+            return matches.get(0);
+        }
+        localError(ErrorCode.UNKNOWN_MAILBOX, matches.isEmpty()
+                ? "no MailBox has the handle '" + handle + "' (?mailboxes lists them)"
+                : "the handle '" + handle + "' names " + matches.size() + " MailBoxes: " + String.join(", ", matches));
+        return null;
+    }
+
+    private void send(String box, String body) throws IOException {
+        OutgoingServerMessage reply = await(box, body, printer::print);
+        if (reply != null) {
+            if (reply.footer().result() instanceof org.ripv.messages.TableResult t) {
+                lastTable = t;
+            }
+            print(reply);
+        }
+    }
+
+    /** Sends and waits for the final reply; null when {@link #cancel()} ended the wait (said so). */
+    private OutgoingServerMessage await(String box, String body, java.util.function.Consumer<OutgoingServerMessage> progress)
+            throws IOException {
+        org.ripv.messages.Header h = Header.request(client.nextId(), box, body, priority);
+        waitingId = h.messageId();
+        try {
+            return await(client.send(h, progress), body);
+        } catch (CancellationException e) {
+            return null;
+        } finally {
+            waitingId = 0;
+        }
+    }
+
+    /** The final reply, or null when {@link #cancel()} ended the wait (said so). */
+    private OutgoingServerMessage await(CompletableFuture<OutgoingServerMessage> f, String what) throws IOException {
+        waiting = f;
+        long id = waitingId;
+        try {
+            if (cancelled) {
+                f.cancel(false);
+            }
+            return f.get(timeout.toMillis(), TimeUnit.MILLISECONDS);
+        } catch (CancellationException e) {
+            if (id > 0) {
+                cancelOnServer(id, what);
+            } else {
+                cancelledNote(what);
+            }
+            return null;
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IOException("interrupted while waiting for the server");
+        } catch (TimeoutException e) {
+            throw new IOException("no reply from " + client.server() + " within " + timeout.toSeconds() + " s");
+        } catch (ExecutionException e) {
+            throw e.getCause() instanceof IOException io ? io : new IOException(e.getCause());
+        } finally {
+            waiting = null;
+        }
+    }
+
+    /** Asks the server to stop the request ({@code ?cancel ID}) and says what it answered. */
+    private void cancelOnServer(long id, String what) {
+        try {
+            OutgoingServerMessage r = client.call("", "?cancel " + id, Priority.URGENT, Duration.ofSeconds(10), null);
+            err.println("Cancelled: stopped waiting for '" + what + "'; the server: " + r.footer().replyText()
+                    + (r.status() == Status.ERROR ? " [" + r.footer().errorCode() + "]" : ""));
+        } catch (IOException e) {
+            err.println("Cancelled: stopped waiting for '" + what + "'; ?cancel got no answer (" + e.getMessage()
+                    + "): the server may still finish it");
+        }
+    }
+
+    private void cancelledNote(String what) {
+        err.println("Cancelled: stopped waiting for '" + what + "'; the server may still finish it (its reply will be ignored)");
     }
 
     /** {@code export csv|json FILE}: the last table received, to a local file ({@link TableExport}). */
@@ -121,9 +272,21 @@ public final class CliSession {
     }
 
     private void put(String args) throws IOException {
-        String[] a = args.isEmpty() ? new String[0] : args.split("\\s+");
+        java.util.List<String> words = new java.util.ArrayList<>(java.util.List.of(args.isEmpty() ? new String[0] : args.split("\\s+")));
+        ClientSocketHandler.IfExists ifExists = ClientSocketHandler.IfExists.ASK;
+        if (words.remove("--replace")) {
+            ifExists = ClientSocketHandler.IfExists.REPLACE;
+        }
+        if (words.remove("--keep")) {
+            if (ifExists == ClientSocketHandler.IfExists.REPLACE) {
+                localError(ErrorCode.BAD_REQUEST, "put: --replace or --keep, not both");
+                return;
+            }
+            ifExists = ClientSocketHandler.IfExists.KEEP;
+        }
+        String[] a = words.toArray(new String[0]);
         if (a.length < 1 || a.length > 2) {
-            localError(ErrorCode.BAD_REQUEST, "usage: put LOCALFILE [NAME]");
+            localError(ErrorCode.BAD_REQUEST, "usage: put LOCALFILE [NAME] [--replace|--keep]");
             return;
         }
         Path local = Path.of(a[0]);
@@ -134,15 +297,24 @@ public final class CliSession {
         String name = a.length == 2 ? a[1] : local.getFileName().toString();
         long size = Files.size(local);
         try {
-            OutgoingServerMessage r = client.upload(local, name, (done, total) -> {
+            OutgoingServerMessage r = client.upload(local, name, ifExists, (done, total) -> {
                 if (!json && total > ClientSocketHandler.CHUNK) {
                     err.printf("  ... put %s %d/%d (%d%%)%n", name, done, total, total == 0 ? 100 : done * 100 / total);
                 }
-                return true;
+                return !cancelled;
             });
             print(r);
         } catch (RipvErrorException e) {
             print(e.reply());
+            if (e.reply().footer().errorCode() == ErrorCode.FILE_EXISTS && !json) {
+                err.println("  (put " + args + " --replace to replace it, or --keep to keep both)");
+            }
+        } catch (IOException e) {
+            if (!cancelled) {
+                throw e;
+            }
+            cancelledNote("put " + name);
+            return;
         }
         if (size == 0 && !json) {
             err.println("  (an empty file)");
@@ -161,11 +333,16 @@ public final class CliSession {
                 if (!json && total > ClientSocketHandler.CHUNK) {
                     err.printf("  ... get %s %d/%d (%d%%)%n", a[0], done, total, done * 100 / total);
                 }
-                return true;
+                return !cancelled;
             });
             local("saved " + a[0] + " (" + Files.size(saved) + " bytes) to " + saved);
         } catch (RipvErrorException e) {
             print(e.reply());
+        } catch (IOException e) {
+            if (!cancelled) {
+                throw e;
+            }
+            cancelledNote("get " + a[0]);
         }
     }
 

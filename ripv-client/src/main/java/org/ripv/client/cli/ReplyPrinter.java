@@ -138,7 +138,7 @@ final class ReplyPrinter {
             m.put("columns", t.columns());
             m.put("types", t.types());
             List<Object> rows = new ArrayList<>();
-            t.rows().forEach(row -> rows.add(java.util.Arrays.asList(row)));
+            t.rows().forEach(row -> rows.add(Cells.row(t.types(), row))); // numbers as numbers, NULL as null
             m.put("rows", rows);
             m.put("truncated", t.truncated());
         } else if (r instanceof FileListing l) {

@@ -10,7 +10,6 @@ import java.util.concurrent.Callable;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.prefs.Preferences;
 import javax.swing.SwingUtilities;
-import com.formdev.flatlaf.FlatLightLaf;
 import org.ripv.client.managers.ClientModel;
 import org.ripv.client.managers.GuiManager;
 import org.ripv.client.panels.HostPort;
@@ -84,6 +83,7 @@ public final class ClientCommand implements Callable<Integer> {
                 return 1;
             }
         } else if (password != null) {
+            err.println("Warning: --password shows the password to every user of this machine (ps); use --password-file");
             pw = password.toCharArray();
         }
         if (GraphicsEnvironment.isHeadless()) {
@@ -123,9 +123,10 @@ public final class ClientCommand implements Callable<Integer> {
     public static RIPVClient open(String server, String user, char[] password) throws Exception {
         AtomicReference<RIPVClient> ref = new AtomicReference<>();
         SwingUtilities.invokeAndWait(() -> {
-            FlatLightLaf.setup();
+            Preferences prefs = Preferences.userNodeForPackage(RIPVClient.class);
+            Theme.saved(prefs).install(); // the theme chosen last time (View menu)
             GuiManager manager = new GuiManager(new ClientModel());
-            RIPVClient client = new RIPVClient(manager, Preferences.userNodeForPackage(RIPVClient.class));
+            RIPVClient client = new RIPVClient(manager, prefs);
             client.show();
             client.showLogin(server, user, password, password != null);
             ref.set(client);

@@ -62,7 +62,10 @@ public final class RIPVClient {
     private final JLabel status = new JLabel(" ");
     private final JLabel connection = new JLabel(" ");
     private final CountDownLatch closed = new CountDownLatch(1);
+    private final JSplitPane split;
+    private final WindowLayout saved;
     private boolean syncing;
+    private long lastFocusRefresh;
 
     public RIPVClient(GuiManager manager, Preferences prefs) {
         this.manager = manager;
@@ -82,17 +85,19 @@ public final class RIPVClient {
 
         JButton refresh = new JButton("Refresh");
         refresh.setName("selRefresh");
+        refresh.setMnemonic(KeyEvent.VK_R);
         refresh.setToolTipText("Ask the server for its services again (?services); also every 15 s");
         refresh.addActionListener(e -> manager.refresh());
         JPanel sel = new JPanel(new BorderLayout(2, 2));
         sel.setBorder(BorderFactory.createTitledBorder("SEL — services"));
         sel.add(new JScrollPane(serviceTree), BorderLayout.CENTER);
         sel.add(refresh, BorderLayout.SOUTH);
-        sel.setPreferredSize(new Dimension(250, 400));
+        sel.setPreferredSize(new Dimension(290, 400)); // "<SerialPortServer>::<localhost>" whole
 
         JPanel center = new JPanel(new BorderLayout());
         center.add(tabs, BorderLayout.CENTER);
-        JSplitPane split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, sel, center);
+        split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, sel, center);
+        split.setName("selSplit");
         split.setResizeWeight(0.0);
         split.setContinuousLayout(true);
         // A sensible first size that pack() keeps, shrunk to fit small screens.
@@ -115,15 +120,31 @@ public final class RIPVClient {
         frame.getContentPane().add(split, BorderLayout.CENTER);
         frame.getContentPane().add(bottom, BorderLayout.SOUTH);
         frame.setDefaultCloseOperation(JFrame.DISPOSE_ON_CLOSE);
+        frame.addWindowFocusListener(new WindowAdapter() {
+            @Override
+            public void windowGainedFocus(WindowEvent e) {
+                // Back from elsewhere: others may have added files meanwhile.
+                long now = System.nanoTime();
+                if (now - lastFocusRefresh > 5_000_000_000L && model.connection() == Connection.CONNECTED) {
+                    lastFocusRefresh = now;
+                    manager.refreshFileLists();
+                }
+            }
+        });
         frame.addWindowListener(new WindowAdapter() {
+            @Override
+            public void windowClosing(WindowEvent e) {
+                saveLayout();
+            }
+
             @Override
             public void windowClosed(WindowEvent e) {
                 manager.close();
                 closed.countDown();
             }
         });
-        frame.pack();
-        frame.setLocationByPlatform(true);
+        saved = WindowLayout.load(prefs);
+        restoreLayout();
         model.addListener(this::changed);
         syncServices();
         showConnection();
@@ -133,14 +154,14 @@ public final class RIPVClient {
         JMenuBar bar = new JMenuBar();
         JMenu server = new JMenu("Server");
         server.setMnemonic(KeyEvent.VK_S);
-        JMenuItem login = new JMenuItem("Log in...");
+        JMenuItem login = new JMenuItem("Log in...", KeyEvent.VK_L);
         login.addActionListener(e -> showLogin(null, null, null, false));
-        JMenuItem logout = new JMenuItem("Log out");
+        JMenuItem logout = new JMenuItem("Log out", KeyEvent.VK_O);
         logout.addActionListener(e -> manager.logOut());
-        JMenuItem refresh = new JMenuItem("Refresh");
+        JMenuItem refresh = new JMenuItem("Refresh", KeyEvent.VK_R);
         refresh.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_F5, 0));
         refresh.addActionListener(e -> manager.refresh());
-        JMenuItem quit = new JMenuItem("Quit");
+        JMenuItem quit = new JMenuItem("Quit", KeyEvent.VK_Q);
         quit.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_Q, java.awt.event.InputEvent.CTRL_DOWN_MASK));
         quit.addActionListener(e -> frame.dispose());
         server.add(login);
@@ -149,7 +170,60 @@ public final class RIPVClient {
         server.addSeparator();
         server.add(quit);
         bar.add(server);
+        bar.add(viewMenu());
         return bar;
+    }
+
+    /** View: themes, and keyboard ways to the parts of the window. */
+    private JMenu viewMenu() {
+        JMenu view = new JMenu("View");
+        view.setMnemonic(KeyEvent.VK_V);
+        javax.swing.ButtonGroup themes = new javax.swing.ButtonGroup();
+        for (Theme t : Theme.values()) {
+            javax.swing.JRadioButtonMenuItem item = new javax.swing.JRadioButtonMenuItem(
+                    t == Theme.LIGHT ? "Light theme" : "Dark theme", Theme.saved(prefs) == t);
+            item.setName("theme-" + t.name().toLowerCase(java.util.Locale.ROOT));
+            item.setMnemonic(t == Theme.LIGHT ? KeyEvent.VK_L : KeyEvent.VK_D);
+            item.addActionListener(e -> t.choose(prefs));
+            themes.add(item);
+            view.add(item);
+        }
+        view.addSeparator();
+        JMenuItem services = new JMenuItem("Services (SEL)", KeyEvent.VK_S);
+        services.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_1, java.awt.event.InputEvent.ALT_DOWN_MASK));
+        services.addActionListener(e -> serviceTree.requestFocusInWindow());
+        JMenuItem commandLine = new JMenuItem("Command line (COM)", KeyEvent.VK_C);
+        commandLine.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_2, java.awt.event.InputEvent.ALT_DOWN_MASK));
+        commandLine.addActionListener(e -> {
+            if (tabs.getSelectedComponent() instanceof ServiceLayoutPanel p) {
+                p.com().focusCommand();
+            }
+        });
+        JMenuItem mailboxes = new JMenuItem("MailBoxes (MAM)", KeyEvent.VK_M);
+        mailboxes.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_3, java.awt.event.InputEvent.ALT_DOWN_MASK));
+        mailboxes.addActionListener(e -> {
+            if (tabs.getSelectedComponent() instanceof ServiceLayoutPanel p) {
+                p.mam().tree().requestFocusInWindow();
+            }
+        });
+        JMenuItem files = new JMenuItem("Files (FIM)", KeyEvent.VK_F);
+        files.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_4, java.awt.event.InputEvent.ALT_DOWN_MASK));
+        files.addActionListener(e -> {
+            if (tabs.getSelectedComponent() instanceof ServiceLayoutPanel p) {
+                p.fim().tree().requestFocusInWindow();
+            }
+        });
+        JMenuItem next = new JMenuItem("Next service tab", KeyEvent.VK_N);
+        next.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_PAGE_DOWN, java.awt.event.InputEvent.CTRL_DOWN_MASK));
+        next.addActionListener(e -> {
+            if (tabs.getTabCount() > 0) {
+                tabs.setSelectedIndex((tabs.getSelectedIndex() + 1) % tabs.getTabCount());
+            }
+        });
+        for (JMenuItem i : java.util.List.of(services, commandLine, mailboxes, files, next)) {
+            view.add(i);
+        }
+        return view;
     }
 
     /** Shows the window. */
@@ -196,9 +270,10 @@ public final class RIPVClient {
             case SERVICES -> syncServices();
             case CONNECTION -> showConnection();
             case NOTICE -> {
+                // The latest message only, on one line; the whole of it in the tooltip.
                 status.setText(model.notice().isEmpty() ? " " : model.notice());
-                status.setForeground(model.noticeIsError() ? new Color(0xB00020) : UIManager.getColor("Label.foreground"));
-                status.setToolTipText(model.notice());
+                status.setForeground(model.noticeIsError() ? org.ripv.client.panels.Colors.error() : UIManager.getColor("Label.foreground"));
+                status.setToolTipText(model.noticeDetail().isEmpty() ? null : model.noticeDetail());
             }
             default -> {
                 if (c.service() == null) {
@@ -227,6 +302,7 @@ public final class RIPVClient {
             for (ServiceModel s : model.services()) {
                 if (!panels.containsKey(s.name())) {
                     ServiceLayoutPanel p = new ServiceLayoutPanel(s, manager);
+                    p.dividers(quadrants());
                     panels.put(s.name(), p);
                     tabs.addTab(tabTitle(s.name()), null, p, s.name() + " — " + s.descriptor().description());
                     p.updateAll(model);
@@ -268,6 +344,40 @@ public final class RIPVClient {
             banner.setBackground(c == Connection.LOST ? new Color(0xFFE08A) : new Color(0xF4C7C3));
             banner.setForeground(Color.BLACK);
         }
+    }
+
+    private void restoreLayout() {
+        java.awt.Rectangle screen = frame.getGraphicsConfiguration().getBounds();
+        java.awt.Rectangle b = saved.fitted(screen);
+        if (b != null) {
+            // Before the window has a peer, so the platform takes these bounds as they are.
+            frame.setBounds(b);
+            frame.validate();
+        } else {
+            frame.pack(); // a first run: the preferred size, where the platform puts new windows
+            frame.setLocationByPlatform(true);
+        }
+        if (saved.maximized()) {
+            frame.setExtendedState(frame.getExtendedState() | JFrame.MAXIMIZED_BOTH);
+        }
+        if (saved.selDivider() > 0) {
+            split.setDividerLocation(saved.selDivider());
+        }
+    }
+
+    /** The dividers new tabs get: the showing tab's, else the saved ones. */
+    private int[] quadrants() {
+        if (tabs.getSelectedComponent() instanceof ServiceLayoutPanel p && p.isShowing()) {
+            return p.dividers();
+        }
+        return saved.quadrants();
+    }
+
+    /** Remembers the window's bounds and dividers (on closing; tests call it too). */
+    public void saveLayout() {
+        boolean max = (frame.getExtendedState() & JFrame.MAXIMIZED_BOTH) == JFrame.MAXIMIZED_BOTH;
+        int[] q = tabs.getSelectedComponent() instanceof ServiceLayoutPanel p ? p.dividers() : saved.quadrants();
+        new WindowLayout(max ? saved.bounds() : frame.getBounds(), max, split.getDividerLocation(), q).save(prefs);
     }
 
     /** The tab of a service, or null. */

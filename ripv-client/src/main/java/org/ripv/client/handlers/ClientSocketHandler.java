@@ -222,12 +222,37 @@ public final class ClientSocketHandler implements AutoCloseable {
      */
     public OutgoingServerMessage upload(Path local, String remoteName, TransferListener listener)
             throws IOException, RipvErrorException {
-        return upload(local, remoteName, null, listener);
+        return upload(local, remoteName, IfExists.ASK, listener);
+    }
+
+    /** What an upload does when the store has a file of that name ({@code ErrorCode.FILE_EXISTS} otherwise). */
+    public enum IfExists {
+        /** Send no choice: the server refuses with FILE_EXISTS, and the user is asked. */
+        ASK(""),
+        /** Replace the stored file (the server checks the right to). */
+        REPLACE(" replace"),
+        /** Keep both: the server stores this one under a new free name and says which. */
+        KEEP(" keep");
+
+        final String word;
+
+        IfExists(String word) {
+            this.word = word;
+        }
+    }
+
+    /**
+     * As {@link #upload(Path, String, TransferListener)}, saying what to do when the name is
+     * taken ({@code ?upload NAME OFFSET TOTAL [replace|keep]}).
+     */
+    public OutgoingServerMessage upload(Path local, String remoteName, IfExists ifExists, TransferListener listener)
+            throws IOException, RipvErrorException {
+        return upload(local, remoteName, ifExists.word.strip(), listener);
     }
 
     /**
      * Uploads as {@link #upload(Path, String, TransferListener)} does, saying what to do when the
-     * name is taken: null refuses (FILE_EXISTS), {@code replace} replaces (a permit right),
+     * name is taken: null or empty refuses (FILE_EXISTS), {@code replace} replaces (a permit right),
      * {@code keep} stores under a new free name, which the last reply names.
      */
     public OutgoingServerMessage upload(Path local, String remoteName, String mode, TransferListener listener)
@@ -263,6 +288,7 @@ public final class ClientSocketHandler implements AutoCloseable {
      */
     public Path download(String name, Path localDir, TransferListener listener) throws IOException, RipvErrorException {
         listener = listener == null ? TransferListener.NONE : listener;
+        localDir = localDir.toAbsolutePath().normalize(); // a bare "." has no parent to compare with
         Files.createDirectories(localDir);
         // a download is listed as FOLDER/NAME (the MailBox it came from): saved locally as NAME
         int slash = name.lastIndexOf('/');
@@ -271,7 +297,7 @@ public final class ClientSocketHandler implements AutoCloseable {
             throw new IOException("refusing to write '" + name + "' outside " + localDir);
         }
         Path target = localDir.resolve(name.substring(slash + 1)).normalize();
-        if (!target.getParent().equals(localDir.normalize())) {
+        if (!localDir.equals(target.getParent())) {
             throw new IOException("refusing to write '" + name + "' outside " + localDir);
         }
         Path tmp = Files.createTempFile(localDir, ".ripv-", ".part");

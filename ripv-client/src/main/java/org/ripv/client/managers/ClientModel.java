@@ -126,8 +126,17 @@ public final class ClientModel {
         return Collections.unmodifiableList(transfers);
     }
 
-    /** The latest global message for the status bar. */
+    /**
+     * The latest message for the status bar, one line: a message of several lines shows its first
+     * with " …" ({@link #noticeDetail()} has it all).
+     */
     public String notice() {
+        int nl = notice.indexOf('\n');
+        return nl < 0 ? notice : notice.substring(0, nl).stripTrailing() + " …";
+    }
+
+    /** The latest message in full (the status bar's tooltip). */
+    public String noticeDetail() {
         return notice;
     }
 
@@ -210,7 +219,7 @@ public final class ClientModel {
     }
 
     void notice(String text, boolean error) {
-        notice = text == null ? "" : text;
+        notice = text == null ? "" : text.strip();
         noticeIsError = error;
         fire(Kind.NOTICE, null);
     }

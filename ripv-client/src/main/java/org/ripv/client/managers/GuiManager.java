@@ -91,7 +91,7 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
         this.io = Executors.newCachedThreadPool(named("ripv-gui-io-"));
         this.timer = Executors.newSingleThreadScheduledExecutor(named("ripv-gui-timer"));
         this.session = new Session(model, ui, connector, timings, io, timer, this, this::dispatch, this::refresh,
-                this::refreshServices);
+                this::periodicRefresh);
         this.requests = new Requests(model, io, session::connection, this);
         this.dispatcher = new ReplyDispatcher(this, requests);
         this.transfers = new Transfers(model, ui, io, session::connection, this, requests);
@@ -143,6 +143,21 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
     /** {@code ?services} and {@code ?mailboxes}: the SEL tree, the tabs and the MAM trees. */
     public void refreshServices() {
         requests.refreshServices();
+    }
+
+    /**
+     * Every refresh period: services, MailBoxes and the two file lists, so that the FIM tree shows
+     * files other operators and services added.
+     */
+    void periodicRefresh() {
+        refreshServices();
+        refreshFileLists();
+    }
+
+    /** {@code ?ulfiles ?dlfiles}: the FIM trees' files (the window asks when it gets the focus back). */
+    public void refreshFileLists() {
+        requests.background("?ulfiles");
+        requests.background("?dlfiles");
     }
 
     /** {@code ?uldir ?dldir ?ulfiles ?dlfiles}: the FIM FileTree. */
@@ -200,7 +215,23 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
      * with progress in the model; cancel with {@link Transfer#cancel()}. Call on the UI thread.
      */
     public Transfer upload(Path local) {
-        return transfers.upload(local);
+        return transfers.upload(local, ClientSocketHandler.IfExists.ASK);
+    }
+
+    /**
+     * Uploads again after the server said the name is taken ({@link Transfer#nameTaken()}):
+     * {@code REPLACE} the stored file (with the right to) or {@code KEEP} both. Call on the UI thread.
+     */
+    public Transfer upload(Path local, ClientSocketHandler.IfExists ifExists) {
+        return transfers.upload(local, ifExists);
+    }
+
+    /**
+     * Deletes a file of the server's stores ({@code ?delete NAME}, with rights); the server's answer
+     * shows in the status bar and the file lists are asked again. Call on the UI thread.
+     */
+    public void deleteFile(String name) {
+        requests.serverAction("?delete " + name, this::refreshFiles);
     }
 
     /**
@@ -300,8 +331,9 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
             }
             m.append(kind, text);
             model.fire(ClientModel.Kind.COM, service);
-            if (kind == LineKind.ERROR) {
-                model.notice(service + ": " + text, true);
+            if (kind == LineKind.ERROR || kind == LineKind.REPLY) {
+                // The status bar shows the latest outcome: a later success replaces an error.
+                model.notice(service + ": " + text, kind == LineKind.ERROR);
             }
         });
     }

@@ -51,6 +51,32 @@ final class Requests {
         send("", command, Priority.NORMAL, null);
     }
 
+    /**
+     * Sends a server command the operator chose from a button (e.g. {@code ?delete NAME}): an OK
+     * answer shows in the status bar and runs {@code after}; an ERROR shows there through dispatch.
+     */
+    void serverAction(String command, Runnable after) {
+        io.execute(() -> {
+            ClientSocketHandler h = conn.get();
+            if (h == null) {
+                gui.showNotice("'" + command + "': not connected to a server", true);
+                return;
+            }
+            try {
+                h.send("", command, Priority.NORMAL, null).whenComplete((reply, e) -> {
+                    if (e != null) {
+                        gui.showNotice("'" + command + "' got no reply: " + Failures.describe(e), true);
+                    } else if (reply.status() != org.ripv.messages.Status.ERROR) {
+                        gui.showNotice(reply.footer().replyText().isBlank() ? command + ": done" : reply.footer().replyText(), false);
+                        after.run();
+                    }
+                });
+            } catch (IOException | RuntimeException e) {
+                gui.showNotice("'" + command + "' failed: " + Failures.describe(e), true);
+            }
+        });
+    }
+
     /** See {@link GuiManager#sendCommand}; on the UI thread. */
     void sendCommand(String service, String line) {
         ServiceModel m = model.service(service);

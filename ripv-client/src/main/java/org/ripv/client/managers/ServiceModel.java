@@ -40,7 +40,8 @@ public final class ServiceModel {
     private String lastAction = "";
     private Priority priority = Priority.NORMAL;
     private String serviceStatus = "";
-    private final List<String> history = new ArrayList<>();
+    /** Command-line history per MailBox (the key "" for lines typed with no MailBox picked). */
+    private final java.util.Map<String, List<String>> histories = new java.util.HashMap<>();
     private final List<Line> transcript = new ArrayList<>();
     private Progress progress;
     private final List<TableResult> tables = new ArrayList<>();
@@ -83,13 +84,20 @@ public final class ServiceModel {
         return priority;
     }
 
-    /** The target's status (SS): "available", "not available: ...", "locked by ...". */
+    /**
+     * The target's status (SS): "available", "not available: ...", "locked by ...", and while a
+     * long command runs (a transfer), "busy: WHAT (N%)" whatever the last {@code ?status} said.
+     */
     public String serviceStatus() {
+        if (progress != null) {
+            return "busy: " + progress.what() + (progress.percent() >= 0 ? " (" + progress.percent() + "%)" : "");
+        }
         return serviceStatus;
     }
 
+    /** The commands sent to the current target, oldest first (each MailBox keeps its own). */
     public List<String> history() {
-        return Collections.unmodifiableList(history);
+        return Collections.unmodifiableList(histories.getOrDefault(target, List.of()));
     }
 
     public List<Line> transcript() {
@@ -177,6 +185,7 @@ public final class ServiceModel {
 
     void sent(String command) {
         lastAction = command;
+        List<String> history = histories.computeIfAbsent(target, k -> new ArrayList<>());
         if (history.isEmpty() || !history.get(history.size() - 1).equals(command)) {
             history.add(command);
             if (history.size() > MAX_HISTORY) {

@@ -24,13 +24,88 @@ public final class Transfer {
     private long total;
     private State state = State.RUNNING;
     private String detail = "";
+    private final java.util.function.LongSupplier clock;
+    private long startNanos = -1;
+    private long lastNanos;
+    private boolean nameTaken;
+    private boolean asked;
 
     Transfer(long id, Direction direction, String name, Path local, long total) {
+        this(id, direction, name, local, total, System::nanoTime);
+    }
+
+    /** With the clock rate and ETA are measured by (tests give their own). */
+    Transfer(long id, Direction direction, String name, Path local, long total, java.util.function.LongSupplier nanoClock) {
         this.id = id;
         this.direction = direction;
         this.name = name;
         this.local = local;
         this.total = total;
+        this.clock = nanoClock;
+    }
+
+    /** Bytes per second since the first byte, or 0 before there is a measure. */
+    public double rate() {
+        if (startNanos < 0 || lastNanos <= startNanos || done <= 0) {
+            return 0;
+        }
+        return done * 1e9 / (lastNanos - startNanos);
+    }
+
+    /** Seconds until done at the rate so far, or -1 when unknown (no rate, no total, finished). */
+    public long etaSeconds() {
+        double r = rate();
+        if (finished() || r <= 0 || total <= 0) {
+            return -1;
+        }
+        return (long) Math.ceil((total - done) / r);
+    }
+
+    /** "45%  1.2 MB / 2.6 MB  310 KB/s  0:05 left": what the FIM progress bar says. */
+    public String progressText() {
+        if (finished()) {
+            return state.name().toLowerCase(java.util.Locale.ROOT);
+        }
+        if (percent() < 0) {
+            return "starting";
+        }
+        StringBuilder b = new StringBuilder().append(percent()).append("%  ").append(size(done)).append(" / ").append(size(total));
+        if (rate() > 0) {
+            b.append("  ").append(size((long) rate())).append("/s");
+        }
+        long eta = etaSeconds();
+        if (eta >= 0) {
+            b.append("  ").append(eta / 60).append(':').append(String.format(java.util.Locale.ROOT, "%02d", eta % 60)).append(" left");
+        }
+        return b.toString();
+    }
+
+    /** "1.2 MB", "310 KB", "12 B". */
+    public static String size(long bytes) {
+        if (bytes < 1024) {
+            return bytes + " B";
+        }
+        if (bytes < 1024 * 1024) {
+            return String.format(java.util.Locale.ROOT, "%.0f KB", bytes / 1024.0);
+        }
+        return String.format(java.util.Locale.ROOT, "%.1f MB", bytes / (1024.0 * 1024));
+    }
+
+    /** An upload the server refused because the store has a file of that name (FILE_EXISTS). */
+    public boolean nameTaken() {
+        return nameTaken;
+    }
+
+    /**
+     * True the first time it is called for a refused upload: so that of all the windows' FIM panels
+     * only one asks the operator what to do. On the model's thread.
+     */
+    public boolean claimQuestion() {
+        if (!nameTaken || asked) {
+            return false;
+        }
+        asked = true;
+        return true;
     }
 
     public long id() {
@@ -87,8 +162,17 @@ public final class Transfer {
     }
 
     void progress(long doneBytes, long totalBytes) {
+        long now = clock.getAsLong();
+        if (startNanos < 0) {
+            startNanos = now; // the clock starts with the first report (0 of N)
+        }
+        lastNanos = now;
         this.done = doneBytes;
         this.total = totalBytes;
+    }
+
+    void nameTaken(boolean taken) {
+        this.nameTaken = taken;
     }
 
     void finish(State s, String why) {

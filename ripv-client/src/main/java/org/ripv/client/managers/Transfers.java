@@ -36,7 +36,7 @@ final class Transfers {
     }
 
     /** See {@link GuiManager#upload}; on the UI thread. */
-    Transfer upload(Path local) {
+    Transfer upload(Path local, ClientSocketHandler.IfExists ifExists) {
         String name = local.getFileName() == null ? local.toString() : local.getFileName().toString();
         Transfer t = new Transfer(transferIds.incrementAndGet(), Transfer.Direction.UPLOAD, name, local, -1);
         model.addTransfer(t);
@@ -51,7 +51,7 @@ final class Transfers {
                     t.progress(0, total);
                     model.transferChanged(t);
                 });
-                h.upload(local, name, (done, all) -> {
+                h.upload(local, name, ifExists, (done, all) -> {
                     ui.execute(() -> {
                         t.progress(done, all);
                         model.transferChanged(t);
@@ -61,6 +61,9 @@ final class Transfers {
                 finish(t, Transfer.State.DONE, "uploaded " + name + " to the server's upload directory");
                 requests.background("?ulfiles");
             } catch (RipvErrorException e) {
+                if (e.reply().footer().errorCode() == org.ripv.messages.ErrorCode.FILE_EXISTS) {
+                    ui.execute(() -> t.nameTaken(true)); // the FIM panel asks: keep both, replace or cancel
+                }
                 finish(t, Transfer.State.FAILED, "upload of " + name + " refused: " + Failures.describe(e));
             } catch (IOException | RuntimeException e) {
                 finish(t, t.cancelRequested() ? Transfer.State.CANCELLED : Transfer.State.FAILED,

@@ -40,6 +40,7 @@ public final class ComPanel extends JPanel {
     private final JProgressBar progress = new JProgressBar();
     private final CommandHistory history = new CommandHistory();
     private long shownRevision = -1;
+    private String shownTarget;
     private boolean updating;
 
     public ComPanel(String service, GuiManager manager) {
@@ -57,7 +58,8 @@ public final class ComPanel extends JPanel {
 
         replies.setName("replyArea");
         replies.setEditable(false);
-        replies.setLineWrap(false);
+        replies.setLineWrap(true); // long replies wrap instead of hiding past the right edge
+        replies.setWrapStyleWord(true);
         replies.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
         replies.setToolTipText("RA: the Reply Area — replies, errors and progress");
         JScrollPane scroll = new JScrollPane(replies);
@@ -81,6 +83,9 @@ public final class ComPanel extends JPanel {
             }
         });
         priority.setName("priorityBox");
+        JLabel priorityKey = new JLabel("Priority:");
+        priorityKey.setDisplayedMnemonic(KeyEvent.VK_P);
+        priorityKey.setLabelFor(priority);
         priority.setToolTipText("PR: priority of the next command");
         priority.addActionListener(e -> {
             if (!updating) {
@@ -88,16 +93,23 @@ public final class ComPanel extends JPanel {
             }
         });
         JButton send = new JButton("Send");
+        send.setMnemonic(KeyEvent.VK_N);
         send.setName("sendButton");
         send.addActionListener(e -> send());
         JButton clear = new JButton("Clear");
-        clear.setToolTipText("Empty the reply area");
+        clear.setMnemonic(KeyEvent.VK_E);
+        clear.setName("clearButton");
+        clear.setToolTipText("Empty the reply area (Alt+E)");
         clear.addActionListener(e -> manager.clearTranscript(service));
 
         JPanel line = new JPanel(new BorderLayout(4, 0));
-        line.add(new JLabel("Command:"), BorderLayout.WEST);
+        JLabel commandLabel = new JLabel("Command:");
+        commandLabel.setDisplayedMnemonic(KeyEvent.VK_C); // Alt+C: back to the command line
+        commandLabel.setLabelFor(command);
+        line.add(commandLabel, BorderLayout.WEST);
         line.add(command, BorderLayout.CENTER);
         JPanel buttons = new JPanel(new java.awt.FlowLayout(java.awt.FlowLayout.RIGHT, 4, 0));
+        buttons.add(priorityKey);
         buttons.add(priority);
         buttons.add(send);
         buttons.add(clear);
@@ -157,8 +169,12 @@ public final class ComPanel extends JPanel {
             priorityLabel.setText(m.priority().name().toLowerCase(java.util.Locale.ROOT) + " (" + m.priority().level() + ")");
             priority.setSelectedItem(m.priority());
             serviceStatus.setText(m.serviceStatus().isEmpty() ? " " : m.serviceStatus());
-            serviceStatus.setForeground(m.serviceStatus().startsWith("not") ? new java.awt.Color(0xB00020)
+            serviceStatus.setForeground(m.serviceStatus().startsWith("not") ? Colors.error()
                     : javax.swing.UIManager.getColor("Label.foreground"));
+            // A value too long for the panel shows whole in its tooltip.
+            tip(talkingTo, "Talking To", m.target());
+            tip(lastAction, "Last Action", m.lastAction());
+            tip(serviceStatus, "Service Status", m.serviceStatus());
             if (m.transcriptRevision() != shownRevision) {
                 replies.setText(m.transcriptText());
                 replies.setCaretPosition(replies.getDocument().getLength());
@@ -166,25 +182,58 @@ public final class ComPanel extends JPanel {
                 // Something was sent or answered: recall starts again from the newest command.
                 history.reset(m.history());
             }
+            if (!m.target().equals(shownTarget)) {
+                shownTarget = m.target(); // each MailBox has its own history
+                history.reset(m.history());
+            }
             Progress p = m.progress();
             progress.setVisible(p != null);
             if (p != null) {
                 progress.setIndeterminate(p.percent() < 0);
                 progress.setValue(Math.max(0, p.percent()));
-                progress.setString(p.what() + "  " + p.done() + (p.total() > 0 ? " / " + p.total() : "") + " bytes"
-                        + (p.ratePerSecond() > 0 ? String.format(java.util.Locale.ROOT, "  %.0f B/s", p.ratePerSecond()) : ""));
+                progress.setString(progressText(p));
             }
         } finally {
             updating = false;
         }
     }
 
-    /** The reply area's text (for tests and copy). */
+    private static void tip(JLabel label, String what, String value) {
+        label.setToolTipText(value.isBlank() ? what : what + ": " + value);
+    }
+
+    /** "ymodem:get LOG  12 KB / 64 KB  1 KB/s  0:52 left": the COM progress bar's words. */
+    static String progressText(Progress p) {
+        StringBuilder b = new StringBuilder(p.what()).append("  ").append(org.ripv.client.managers.Transfer.size(p.done()));
+        if (p.total() > 0) {
+            b.append(" / ").append(org.ripv.client.managers.Transfer.size(p.total()));
+        }
+        if (p.ratePerSecond() > 0) {
+            b.append("  ").append(org.ripv.client.managers.Transfer.size((long) p.ratePerSecond())).append("/s");
+            if (p.total() > p.done()) {
+                long eta = (long) Math.ceil((p.total() - p.done()) / p.ratePerSecond());
+                b.append("  ").append(eta / 60).append(':').append(String.format(java.util.Locale.ROOT, "%02d", eta % 60)).append(" left");
+            }
+        }
+        return b.toString();
+    }
+
     /** Puts the keyboard focus in the command line (when its tab is shown). */
     public void focusCommand() {
         javax.swing.SwingUtilities.invokeLater(command::requestFocusInWindow);
     }
 
+    /** What the command line holds. */
+    public String commandText() {
+        return command.getText();
+    }
+
+    /** Empties the command line. */
+    public void clearCommand() {
+        command.setText("");
+    }
+
+    /** The reply area's text (for tests and copy). */
     public String replyText() {
         return replies.getText();
     }

@@ -47,14 +47,17 @@ public final class DatabasePanel extends JPanel {
         tabs.setName("queryTabs");
 
         JButton copy = new JButton("Copy");
+        copy.setMnemonic(java.awt.event.KeyEvent.VK_Y);
         copy.setName("copyButton");
         copy.setToolTipText("Copy the selected rows (all rows when none is selected) as tab-separated text");
         copy.addActionListener(e -> copy());
         JButton export = new JButton("Export CSV");
+        export.setMnemonic(java.awt.event.KeyEvent.VK_X);
         export.setName("exportButton");
         export.setToolTipText("Save this tab's table as a CSV file");
         export.addActionListener(e -> export());
         JButton close = new JButton("Close");
+        close.setMnemonic(java.awt.event.KeyEvent.VK_W);
         close.setToolTipText("Close this tab");
         close.addActionListener(e -> {
             int i = tabs.getSelectedIndex();

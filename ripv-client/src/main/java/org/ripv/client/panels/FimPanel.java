@@ -47,25 +47,42 @@ public final class FimPanel extends JPanel {
 
         JButton ul = new JButton("UL");
         ul.setName("ulButton");
+        ul.setMnemonic(java.awt.event.KeyEvent.VK_U);
         ul.setToolTipText("UL: upload a file from this computer to the server's upload directory");
         ul.addActionListener(e -> chooseUpload());
         JButton dl = new JButton("DL");
         dl.setName("dlButton");
+        dl.setMnemonic(java.awt.event.KeyEvent.VK_D);
         dl.setToolTipText("DL: download the selected file from the server to this computer");
         dl.addActionListener(e -> chooseDownload());
         JButton refresh = new JButton("Refresh");
         refresh.setName("fimRefresh");
+        refresh.setMnemonic(java.awt.event.KeyEvent.VK_I);
         refresh.setToolTipText("List the server's upload and download directories again (?ulfiles, ?dlfiles)");
         refresh.addActionListener(e -> manager.refreshFiles());
+        JButton delete = new JButton("Delete");
+        delete.setName("deleteButton");
+        delete.setMnemonic(java.awt.event.KeyEvent.VK_T);
+        delete.setToolTipText("Delete the selected file from the server's store (?delete NAME; needs the right)");
+        delete.addActionListener(e -> confirmDelete());
         JButton clear = new JButton("Clear done");
+        clear.setName("clearDoneButton");
+        clear.setMnemonic(java.awt.event.KeyEvent.VK_O);
         clear.setToolTipText("Remove finished transfers from the list");
         clear.addActionListener(e -> manager.clearFinishedTransfers());
-        JPanel buttons = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 0));
+        // Two rows of buttons: one row is clipped in a quadrant of a 1280-pixel window.
+        JPanel buttons = new JPanel(new java.awt.GridLayout(0, 3, 4, 2));
         buttons.add(ul);
         buttons.add(dl);
+        buttons.add(delete);
         buttons.add(refresh);
         buttons.add(clear);
 
+        // Enter on a downloaded file downloads it, Delete deletes: the tree works without a mouse.
+        tree.getInputMap().put(javax.swing.KeyStroke.getKeyStroke(java.awt.event.KeyEvent.VK_ENTER, 0), "ripv-download");
+        tree.getActionMap().put("ripv-download", action(this::chooseDownload));
+        tree.getInputMap().put(javax.swing.KeyStroke.getKeyStroke(java.awt.event.KeyEvent.VK_DELETE, 0), "ripv-delete");
+        tree.getActionMap().put("ripv-delete", action(this::confirmDelete));
         tree.addMouseListener(new MouseAdapter() {
             @Override
             public void mouseClicked(MouseEvent e) {
@@ -81,6 +98,45 @@ public final class FimPanel extends JPanel {
         south.add(transfers, BorderLayout.CENTER);
         south.add(buttons, BorderLayout.SOUTH);
         add(south, BorderLayout.SOUTH);
+    }
+
+    private static javax.swing.Action action(Runnable r) {
+        return new javax.swing.AbstractAction() {
+            @Override
+            public void actionPerformed(java.awt.event.ActionEvent e) {
+                r.run();
+            }
+        };
+    }
+
+    private void confirmDelete() {
+        FileTree.File f = tree.selectedFile();
+        if (f == null) {
+            manager.showNotice("pick a file in the FIM tree first, then Delete", true);
+            return;
+        }
+        int answer = javax.swing.JOptionPane.showConfirmDialog(this,
+                "Delete " + f.entry().name() + " from the server's " + (f.area() == FileArea.UPLOAD ? "upload" : "download")
+                        + " directory, for every user?", "Delete a file on the server", javax.swing.JOptionPane.OK_CANCEL_OPTION,
+                javax.swing.JOptionPane.WARNING_MESSAGE);
+        if (answer == javax.swing.JOptionPane.OK_OPTION) {
+            manager.deleteFile(f.entry().name());
+        }
+    }
+
+    /** The store has a file of that name: keep both, replace it, or leave it. */
+    private void askAboutTakenName(Transfer t) {
+        Object[] options = {"Keep both", "Replace", "Cancel"};
+        int answer = javax.swing.JOptionPane.showOptionDialog(this,
+                "The server's upload directory already has a file named " + t.name() + ".\n"
+                        + "Keep both (yours is stored under a new name), replace it (needs the right), or cancel?",
+                "File exists", javax.swing.JOptionPane.DEFAULT_OPTION, javax.swing.JOptionPane.QUESTION_MESSAGE, null,
+                options, options[0]);
+        if (answer == 0) {
+            manager.upload(t.local(), org.ripv.client.handlers.ClientSocketHandler.IfExists.KEEP);
+        } else if (answer == 1) {
+            manager.upload(t.local(), org.ripv.client.handlers.ClientSocketHandler.IfExists.REPLACE);
+        }
     }
 
     private void chooseUpload() {
@@ -126,9 +182,10 @@ public final class FimPanel extends JPanel {
             Row r = rows.computeIfAbsent(t.id(), id -> newRow(t));
             r.bar().setIndeterminate(t.percent() < 0 && !t.finished());
             r.bar().setValue(Math.max(0, t.percent()));
-            r.bar().setString(t.finished() ? t.state().name().toLowerCase(java.util.Locale.ROOT)
-                    : (t.percent() < 0 ? "starting" : t.percent() + "%  " + FileTree.size(t.done())
-                    + " / " + FileTree.size(t.total())));
+            r.bar().setString(t.progressText());
+            if (t.nameTaken() && isShowing() && t.claimQuestion()) {
+                javax.swing.SwingUtilities.invokeLater(() -> askAboutTakenName(t));
+            }
             r.label().setToolTipText(t.detail().isEmpty() ? null : t.detail());
             r.bar().setToolTipText(t.detail().isEmpty() ? null : t.detail());
             r.cancel().setEnabled(!t.finished() && !t.cancelRequested());

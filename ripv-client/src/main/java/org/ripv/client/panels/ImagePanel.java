@@ -38,13 +38,16 @@ public final class ImagePanel extends JPanel {
         setBorder(BorderFactory.createTitledBorder("DAV — plots"));
         canvas.setName("imageCanvas");
         fit.setName("fitButton");
+        fit.setMnemonic(java.awt.event.KeyEvent.VK_F);
         fit.setToolTipText("Scale the plot to fit the panel");
         fit.addActionListener(e -> relayout());
         JButton in = new JButton("+");
-        in.setToolTipText("Zoom in");
+        in.setToolTipText("Zoom in (Alt+=)");
+        in.setMnemonic(java.awt.event.KeyEvent.VK_EQUALS);
         in.addActionListener(e -> zoomBy(1.25));
         JButton out = new JButton("−");
-        out.setToolTipText("Zoom out");
+        out.setToolTipText("Zoom out (Alt+-)");
+        out.setMnemonic(java.awt.event.KeyEvent.VK_MINUS);
         out.addActionListener(e -> zoomBy(0.8));
         JButton one = new JButton("1:1");
         one.setToolTipText("Actual size");
@@ -55,6 +58,7 @@ public final class ImagePanel extends JPanel {
         });
         JButton save = new JButton("Save");
         save.setName("saveImageButton");
+        save.setMnemonic(java.awt.event.KeyEvent.VK_A);
         save.setToolTipText("Save the JPEG on this computer");
         save.addActionListener(e -> save());
         JPanel buttons = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 0));

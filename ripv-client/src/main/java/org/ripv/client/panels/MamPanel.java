@@ -32,12 +32,15 @@ public final class MamPanel extends JPanel {
 
         JButton refresh = new JButton("Refresh");
         refresh.setName("mamRefresh");
+        refresh.setMnemonic(java.awt.event.KeyEvent.VK_H);
         refresh.setToolTipText("Ask the server again for the services and their MailBoxes (?services, ?mailboxes)");
         refresh.addActionListener(e -> manager.refreshServices());
         lock.setName("lockButton");
+        lock.setMnemonic(java.awt.event.KeyEvent.VK_L);
         lock.setToolTipText("Hold the target MailBox for yourself so others cannot command it meanwhile (?lock)");
         lock.addActionListener(e -> manager.sendCommand(service, "?lock " + target));
         unlock.setName("unlockButton");
+        unlock.setMnemonic(java.awt.event.KeyEvent.VK_K);
         unlock.setToolTipText("Release your lock on the target MailBox (?unlock)");
         unlock.addActionListener(e -> manager.sendCommand(service, "?unlock " + target));
         JPanel buttons = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 0));

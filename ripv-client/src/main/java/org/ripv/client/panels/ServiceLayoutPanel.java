@@ -1,8 +1,5 @@
 package org.ripv.client.panels;
 
-import java.awt.GridBagConstraints;
-import java.awt.GridBagLayout;
-import java.awt.Insets;
 import javax.swing.JComponent;
 import javax.swing.JPanel;
 import org.ripv.client.managers.ClientModel;
@@ -10,13 +7,17 @@ import org.ripv.client.managers.GuiManager;
 import org.ripv.client.managers.ServiceModel;
 
 /**
- * One service's tab (thesis 4.1.3, figure 4.5): a four-quadrant {@link GridBagLayout} with the
- * COM panel top left, the MAM panel top right, the FIM panel bottom right, and the service's
- * fourth panel bottom left — DAB ({@link DatabasePanel}) or DAV ({@link ImagePanel}) as its
- * descriptor says. A service without a fourth panel (the SerialPortServer) gets a COM panel
- * spanning both rows, for more reply area.
+ * One service's tab (thesis 4.1.3, figure 4.5): four quadrants with the COM panel top left, the
+ * MAM panel top right, the FIM panel bottom right, and the service's fourth panel bottom left —
+ * DAB ({@link DatabasePanel}) or DAV ({@link ImagePanel}) as its descriptor says. A service
+ * without a fourth panel (the SerialPortServer) gets a COM panel spanning both rows, for more
+ * reply area. The quadrants are split panes the operator can resize (and the window remembers);
+ * Tab goes through them in the same order in every tab: COM, the fourth panel, MAM, FIM.
  */
 public final class ServiceLayoutPanel extends JPanel {
+    private final javax.swing.JSplitPane columns;
+    private final javax.swing.JSplitPane left;
+    private final javax.swing.JSplitPane right;
     private final String service;
     private final String kind;
     private final ComPanel com;
@@ -26,7 +27,7 @@ public final class ServiceLayoutPanel extends JPanel {
     private final ImagePanel dav;
 
     public ServiceLayoutPanel(ServiceModel model, GuiManager manager) {
-        super(new GridBagLayout());
+        super(new java.awt.BorderLayout());
         this.service = model.name();
         this.kind = model.panel();
         setName("service:" + service);
@@ -46,11 +47,39 @@ public final class ServiceLayoutPanel extends JPanel {
             fix(fourth, 560, 260);
         }
         // Left column wider than the right; rows share the height.
-        add(com, constraints(0, 0, fourth == null ? 2 : 1, 0.65, 0.5));
-        add(mam, constraints(1, 0, 1, 0.35, 0.5));
-        add(fim, constraints(1, 1, 1, 0.35, 0.5));
-        if (fourth != null) {
-            add(fourth, constraints(0, 1, 1, 0.65, 0.5));
+        left = fourth == null ? null : split(javax.swing.JSplitPane.VERTICAL_SPLIT, com, fourth, 0.5, "leftSplit");
+        right = split(javax.swing.JSplitPane.VERTICAL_SPLIT, mam, fim, 0.45, "rightSplit");
+        columns = split(javax.swing.JSplitPane.HORIZONTAL_SPLIT, left != null ? left : com, right, 0.65, "columnSplit");
+        add(columns, java.awt.BorderLayout.CENTER);
+    }
+
+    private static javax.swing.JSplitPane split(int orientation, JComponent a, JComponent b, double weight, String name) {
+        javax.swing.JSplitPane s = new javax.swing.JSplitPane(orientation, true, a, b);
+        s.setName(name);
+        s.setResizeWeight(weight);
+        s.setOneTouchExpandable(true);
+        s.setBorder(null);
+        return s;
+    }
+
+    /** Where the operator put the dividers: columns, left column (or -1), right column, in pixels. */
+    public int[] dividers() {
+        return new int[] {columns.getDividerLocation(), left == null ? -1 : left.getDividerLocation(), right.getDividerLocation()};
+    }
+
+    /** Puts the dividers where {@link #dividers()} said (values below 0 are left alone). */
+    public void dividers(int[] at) {
+        if (at == null || at.length != 3) {
+            return;
+        }
+        if (at[0] > 0) {
+            columns.setDividerLocation(at[0]);
+        }
+        if (left != null && at[1] > 0) {
+            left.setDividerLocation(at[1]);
+        }
+        if (at[2] > 0) {
+            right.setDividerLocation(at[2]);
         }
     }
 
@@ -59,17 +88,6 @@ public final class ServiceLayoutPanel extends JPanel {
         c.setMinimumSize(new java.awt.Dimension(w / 2, h / 2));
     }
 
-    private static GridBagConstraints constraints(int x, int y, int height, double wx, double wy) {
-        GridBagConstraints c = new GridBagConstraints();
-        c.gridx = x;
-        c.gridy = y;
-        c.gridheight = height;
-        c.weightx = wx;
-        c.weighty = wy;
-        c.fill = GridBagConstraints.BOTH;
-        c.insets = new Insets(3, 3, 3, 3);
-        return c;
-    }
 
     public String service() {
         return service;

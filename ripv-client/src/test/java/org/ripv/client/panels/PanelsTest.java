@@ -5,8 +5,6 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.awt.Component;
 import java.awt.Container;
-import java.awt.GridBagConstraints;
-import java.awt.GridBagLayout;
 import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
@@ -79,37 +77,48 @@ class PanelsTest {
         drain();
     }
 
-    static GridBagConstraints at(ServiceLayoutPanel p, Component c) {
-        return ((GridBagLayout) p.getLayout()).getConstraints(c);
+    static javax.swing.JSplitPane split(java.awt.Container c, String name) {
+        for (Component k : c.getComponents()) {
+            if (k instanceof javax.swing.JSplitPane s && name.equals(s.getName())) {
+                return s;
+            }
+            if (k instanceof java.awt.Container inner) {
+                javax.swing.JSplitPane s = split(inner, name);
+                if (s != null) {
+                    return s;
+                }
+            }
+        }
+        return null;
     }
 
     @Test
     void theSerialPortServersComPanelSpansBothRows() {
         ServiceLayoutPanel p = new ServiceLayoutPanel(model.service(SERIAL), manager);
-        assertThat(p.getComponentCount()).isEqualTo(3);
         assertThat(p.dab()).isNull();
         assertThat(p.dav()).isNull();
-        GridBagConstraints com = at(p, p.com());
-        assertThat(com.gridx).isZero();
-        assertThat(com.gridy).isZero();
-        assertThat(com.gridheight).isEqualTo(2);
-        assertThat(at(p, p.mam()).gridx).isEqualTo(1);
-        assertThat(at(p, p.fim()).gridy).isEqualTo(1);
+        javax.swing.JSplitPane columns = split(p, "columnSplit");
+        assertThat(columns.getLeftComponent()).as("COM alone on the left, both rows").isSameAs(p.com());
+        javax.swing.JSplitPane right = split(p, "rightSplit");
+        assertThat(columns.getRightComponent()).isSameAs(right);
+        assertThat(right.getTopComponent()).isSameAs(p.mam());
+        assertThat(right.getBottomComponent()).isSameAs(p.fim());
+        assertThat(split(p, "leftSplit")).isNull();
     }
 
     @Test
-    void theDatabaseServerGetsFourQuadrantsWithDabBottomLeft() {
+    void theDatabaseServerGetsFourResizableQuadrantsWithDabBottomLeft() {
         ServiceLayoutPanel p = new ServiceLayoutPanel(model.service(DB), manager);
-        assertThat(p.getComponentCount()).isEqualTo(4);
         assertThat(p.dav()).isNull();
-        assertThat(at(p, p.com()).gridheight).isEqualTo(1);
-        GridBagConstraints dab = at(p, p.dab());
-        assertThat(dab.gridx).isZero();
-        assertThat(dab.gridy).isEqualTo(1);
-        assertThat(at(p, p.mam()).gridx).isEqualTo(1);
-        assertThat(at(p, p.mam()).gridy).isZero();
-        assertThat(at(p, p.fim()).gridx).isEqualTo(1);
-        assertThat(at(p, p.fim()).gridy).isEqualTo(1);
+        javax.swing.JSplitPane left = split(p, "leftSplit");
+        assertThat(left.getTopComponent()).isSameAs(p.com());
+        assertThat(left.getBottomComponent()).isSameAs(p.dab());
+        javax.swing.JSplitPane right = split(p, "rightSplit");
+        assertThat(right.getTopComponent()).isSameAs(p.mam());
+        assertThat(right.getBottomComponent()).isSameAs(p.fim());
+        assertThat(split(p, "columnSplit").getLeftComponent()).isSameAs(left);
+        p.dividers(new int[] {700, 300, 250});
+        assertThat(p.dividers()).containsExactly(700, 300, 250);
     }
 
     @Test
@@ -117,7 +126,7 @@ class PanelsTest {
         ServiceLayoutPanel p = new ServiceLayoutPanel(model.service(VIS), manager);
         assertThat(p.dav()).isNotNull();
         assertThat(p.dab()).isNull();
-        assertThat(at(p, p.dav()).gridy).isEqualTo(1);
+        assertThat(split(p, "leftSplit").getBottomComponent()).isSameAs(p.dav());
     }
 
     @Test

@@ -64,6 +64,10 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
     /** A connection's session state as opened, to which it is reset before each command. */
     private record Defaults(String schema, int isolation) {}
     private volatile Availability availability;
+    /** The statement running now and its thread, for {@link #cancel}; guarded by {@code this}. */
+    private Statement runningStatement;
+    private Thread runningThread;
+    private volatile boolean cancelRequested;
 
     public DatabaseHandler(DatabaseTarget target, QueryLimits limits) {
         this.target = target;
@@ -129,7 +133,12 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
         } catch (SQLException e) {
             return Reply.error(ErrorCode.NOT_AVAILABLE, "cannot connect to " + target.safeUrl() + ": " + describe(e));
         }
+        cancelRequested = false;
         try (Statement st = c.createStatement(ResultSet.TYPE_FORWARD_ONLY, ResultSet.CONCUR_READ_ONLY)) {
+            synchronized (this) {
+                runningStatement = st;
+                runningThread = Thread.currentThread();
+            }
             // One row more than we keep tells us the result was cut.
             st.setMaxRows(limits.maxRows() + 1);
             st.setFetchSize(Math.min(limits.maxRows() + 1, 1000));
@@ -148,8 +157,43 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
             return Reply.ok((count == 1 ? "1 row" : Math.max(count, 0) + " rows") + " changed in " + ms + " ms",
                     new UpdateCount(Math.max(count, 0)));
         } catch (SQLException e) {
+            if (cancelRequested) {
+                log.info("{}: '{}' cancelled: {}", target.handle(), SqlScript.abbreviate(sql), describe(e));
+                if (e.getSQLState() != null && e.getSQLState().startsWith("08")) {
+                    closeConnections(); // an interrupt may have cost the connection: the next command reconnects
+                }
+                return Reply.error(ErrorCode.CANCELLED, "the statement was cancelled: " + describe(e));
+            }
             return failure(sql, e);
+        } finally {
+            synchronized (this) {
+                runningStatement = null;
+                runningThread = null;
+                Thread.interrupted(); // a cancel's interrupt must not reach the MailBox's worker loop
+            }
         }
+    }
+
+    /**
+     * Cancels the running statement: {@code Statement.cancel}, or, where the driver does not
+     * implement it (embedded Derby), an interrupt of the thread running it, which Derby answers by
+     * stopping the statement. The interrupt is only ever sent while the statement runs.
+     */
+    @Override
+    public synchronized boolean cancel(Request running) {
+        Statement st = runningStatement;
+        if (st == null) {
+            return false;
+        }
+        cancelRequested = true;
+        try {
+            st.cancel();
+        } catch (SQLException e) {
+            log.debug("{}: Statement.cancel is not supported ({}); interrupting the query's thread", target.handle(),
+                    e.getMessage());
+            runningThread.interrupt();
+        }
+        return true;
     }
 
     private TableResult table(String sql, ResultSet rs) throws SQLException {

@@ -119,6 +119,15 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
         return Availability.available(l.describe() + call);
     }
 
+    /**
+     * Cancels a running YMODEM transfer ({@link YmodemCommands#cancel}). A plain command is not
+     * cancelled yet (the link's interrupt, then waiting for the prompt).
+     */
+    @Override
+    public boolean cancel(Request running) {
+        return ymodem.cancel();
+    }
+
     @Override
     public Reply execute(Request request) throws Exception {
         // Defence in depth: the server refuses these already, but nothing but one line ever reaches the link.

@@ -43,6 +43,9 @@ final class YmodemCommands {
     private final ReplyReader replies;
     private final VehicleConsole console;
     private final Path workDir;
+    /** A transfer is under way, and whether ?cancel asked it to stop (checked where it answers or sends a block). */
+    private volatile boolean transferring;
+    private volatile boolean cancelRequested;
 
     YmodemCommands(String handle, LinkSettings settings, VehicleText vehicleText, VehicleConsole console, Path workDir) {
         this.handle = handle;
@@ -51,6 +54,20 @@ final class YmodemCommands {
         this.replies = new ReplyReader(settings, vehicleText);
         this.console = console;
         this.workDir = workDir;
+    }
+
+    /**
+     * Cancels the running transfer (?cancel, from another thread): it aborts with CAN CAN before
+     * its next block, and the line is brought back to the prompt as after any failed transfer.
+     *
+     * @return false when no transfer is running
+     */
+    boolean cancel() {
+        if (!transferring) {
+            return false;
+        }
+        cancelRequested = true;
+        return true;
     }
 
     /** Runs a transfer in binary mode and reports its end on the console. */
@@ -117,15 +134,20 @@ final class YmodemCommands {
             write(c, vehicleCommand);
             ProgressReporter progress = new ProgressReporter(request, "receiving");
             List<FileHeader> files;
+            cancelRequested = false;
+            transferring = true;
             try {
                 files = new YmodemReceiver(c, settings.ymodem(),
                         TransferConsole.both(progress, new TransferConsole(console, request.user(), "receiving")))
+                        .cancelWhen(() -> cancelRequested)
                         .stopWaitingWhen(text -> vehicleText.promptAfterEcho(text, vehicleCommand)).receiveBatch(sink);
             } catch (YmodemException e) {
                 // our 'C's may sit in the shell's line: end that line so the shell is clean again
                 c.write(settings.lineEnding().getBytes(StandardCharsets.ISO_8859_1));
                 c.flush();
                 throw e;
+            } finally {
+                transferring = false;
             }
             replies.drain(c);
             if (files.isEmpty()) {
@@ -173,9 +195,15 @@ final class YmodemCommands {
             write(c, settings.receiveCommand());
             awaitReceiver(c, settings.receiveCommand());
             ProgressReporter progress = new ProgressReporter(request, "sending");
-            new YmodemSender(c, settings.ymodem(),
-                    TransferConsole.both(progress, new TransferConsole(console, request.user(), "sending")))
-                    .sendBatch(List.of(file), true);
+            cancelRequested = false;
+            transferring = true;
+            try {
+                new YmodemSender(c, settings.ymodem(),
+                        TransferConsole.both(progress, new TransferConsole(console, request.user(), "sending")))
+                        .cancelWhen(() -> cancelRequested).sendBatch(List.of(file), true);
+            } finally {
+                transferring = false;
+            }
             replies.drain(c);
             String text = "sent " + file.name() + " (" + file.length() + " bytes) in " + progress.summary(file.length());
             log.info("{}: {}", handle, text);

@@ -53,6 +53,17 @@ public final class YmodemReceiver {
         return this;
     }
 
+    private java.util.function.BooleanSupplier cancelled = () -> false;
+
+    /**
+     * Lets the transfer be cancelled from another thread: checked where a block would be
+     * answered, it aborts with CAN CAN as any other abort does.
+     */
+    public YmodemReceiver cancelWhen(java.util.function.BooleanSupplier cancel) {
+        this.cancelled = cancel;
+        return this;
+    }
+
     /** What a packet read produced. */
     private enum Kind { DATA, TIMEOUT, BAD, EOT, CANCEL }
 
@@ -213,6 +224,9 @@ public final class YmodemReceiver {
                 case CANCEL -> throw new YmodemException("sender cancelled '" + header.name() + "' at byte "
                         + received + " (CAN CAN)", true);
                 case TIMEOUT, BAD -> {
+                    if (cancelled.getAsBoolean()) {
+                        throw abort("cancelled receiving '" + header.name() + "' at byte " + received);
+                    }
                     if (++errors > config.maxRetries()) {
                         throw abort((kind == Kind.TIMEOUT ? "timed out" : "too many damaged blocks")
                                 + " receiving '" + header.name() + "' at byte " + received);
@@ -263,6 +277,12 @@ public final class YmodemReceiver {
                                 received += held.length;
                             }
                             held = java.util.Arrays.copyOfRange(packet, 2, 2 + packetSize);
+                        }
+                        if (cancelled.getAsBoolean()) {
+                            // CAN CAN in place of the ACK: the sender is waiting for an answer, so it hears
+                            // it (a CAN sent after an ACK may be discarded with the stale input before
+                            // the next block)
+                            throw abort("cancelled receiving '" + header.name() + "' at byte " + received);
                         }
                         io.write(ACK);
                         listener.progress(header, received);

@@ -41,6 +41,17 @@ public final class YmodemSender {
         this.listener = listener == null ? TransferListener.NONE : listener;
     }
 
+    private java.util.function.BooleanSupplier cancelled = () -> false;
+
+    /**
+     * Lets the transfer be cancelled from another thread: checked before every block, it aborts
+     * with CAN CAN as any other abort does.
+     */
+    public YmodemSender cancelWhen(java.util.function.BooleanSupplier cancel) {
+        this.cancelled = cancel;
+        return this;
+    }
+
     /** Sends the files as one batch. */
     public void sendBatch(List<SendFile> files) throws IOException {
         sendBatch(files, false);
@@ -83,6 +94,9 @@ public final class YmodemSender {
         int seq = 1;
         try (InputStream in = file.source().open()) {
             while (sent < file.length()) {
+                if (cancelled.getAsBoolean()) {
+                    throw abort("cancelled sending '" + file.name() + "' at byte " + sent);
+                }
                 long remaining = file.length() - sent;
                 // 1024-byte blocks unless 128-byte ones carry the tail in fewer bytes on the line
                 int size = remaining > 7 * 128 ? 1024 : 128;

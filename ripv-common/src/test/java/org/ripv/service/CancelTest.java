@@ -1,0 +1,101 @@
+package org.ripv.service;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import org.ripv.messages.ErrorCode;
+import org.ripv.messages.Header;
+import org.ripv.messages.IdBadge;
+import org.ripv.messages.IncomingServiceMessage;
+import org.ripv.messages.OutgoingServiceMessage;
+import org.ripv.messages.Priority;
+import org.ripv.messages.Status;
+
+/** The service side of ?cancel: RIPVService.cancel reaches the running CommandHandler, never another request. */
+class CancelTest {
+    final LinkedBlockingQueue<OutgoingServiceMessage> replies = new LinkedBlockingQueue<>();
+    final CountDownLatch started = new CountDownLatch(1);
+    final CountDownLatch stop = new CountDownLatch(1);
+    String mailbox;
+
+    final class Slow extends RIPVService {
+        Slow() {
+            super("SlowService", "100200", "localhost");
+        }
+
+        @Override
+        protected void open() {
+            mailbox = openMailBox("ONE", new CommandHandler() {
+                @Override
+                public Reply execute(Request r) throws Exception {
+                    if (r.command().equals("quick")) {
+                        return Reply.ok("quick done");
+                    }
+                    started.countDown();
+                    if (!stop.await(30, TimeUnit.SECONDS)) {
+                        return Reply.ok("finished on its own");
+                    }
+                    return Reply.error(ErrorCode.DEVICE_ERROR, "stopped half way");
+                }
+
+                @Override
+                public boolean cancel(Request running) {
+                    if (running.command().equals("uncancellable")) {
+                        return false;
+                    }
+                    stop.countDown();
+                    return true;
+                }
+            }).toString();
+        }
+    }
+
+    final Slow service = new Slow();
+
+    @AfterEach
+    void close() {
+        stop.countDown();
+        service.stop();
+    }
+
+    private IncomingServiceMessage request(long id, String body) {
+        return new IncomingServiceMessage(new Header(id, new IdBadge("100001", "alice"), java.util.List.of(), "", mailbox, body,
+                Priority.NORMAL, null));
+    }
+
+    @Test
+    void aRunningRequestIsCancelledAndItsErrorSaysCancelled() throws Exception {
+        service.replyTo(replies::add);
+        service.start();
+        service.accept(request(1, "slow"));
+        assertThat(started.await(10, TimeUnit.SECONDS)).isTrue();
+        service.accept(request(2, "quick"));
+        assertThat(service.cancel(mailbox, "100001", 2)).as("not running: it waits").isFalse();
+        assertThat(service.cancel(mailbox, "100002", 1)).as("another client's id").isFalse();
+        assertThat(service.cancel("<SlowService>::<localhost>TWO", "100001", 1)).isFalse();
+        assertThat(service.cancel(mailbox, "100001", 1)).isTrue();
+        OutgoingServiceMessage first = replies.poll(10, TimeUnit.SECONDS);
+        assertThat(first.header().messageId()).isEqualTo(1);
+        assertThat(first.footer().errorCode()).isEqualTo(ErrorCode.CANCELLED);
+        assertThat(first.footer().replyText()).isEqualTo("stopped half way");
+        OutgoingServiceMessage second = replies.poll(10, TimeUnit.SECONDS);
+        assertThat(second.header().messageId()).isEqualTo(2);
+        assertThat(second.status()).as("the next request is not touched by the cancel").isEqualTo(Status.OK);
+    }
+
+    @Test
+    void aHandlerThatCannotStopSaysSoAndTheRequestEndsNormally() throws Exception {
+        service.replyTo(replies::add);
+        service.start();
+        service.accept(request(1, "uncancellable"));
+        assertThat(started.await(10, TimeUnit.SECONDS)).isTrue();
+        assertThat(service.cancel(mailbox, "100001", 1)).isFalse();
+        stop.countDown();
+        OutgoingServiceMessage r = replies.poll(10, TimeUnit.SECONDS);
+        assertThat(r.footer().errorCode()).isEqualTo(ErrorCode.DEVICE_ERROR);
+    }
+}

@@ -1,0 +1,60 @@
+package org.ripv.server;
+
+import org.ripv.messages.ConsoleEntry;
+import org.ripv.messages.Header;
+import org.ripv.messages.IncomingServerMessage;
+import org.ripv.server.files.FileStore;
+import org.ripv.server.permit.PermitFile;
+import org.ripv.server.workflow.WorkflowHost;
+
+/** The server as the workflow runner sees it (org.ripv.server.workflow.WorkflowHost). */
+final class WorkflowBridge implements WorkflowHost {
+    private final RIPVServer server;
+
+    WorkflowBridge(RIPVServer server) {
+        this.server = server;
+    }
+
+    @Override
+    public boolean submit(Header request) {
+        return server.deliver(new IncomingServerMessage(request));
+    }
+
+    @Override
+    public PermitFile permits() {
+        return server.permits();
+    }
+
+    @Override
+    public FileStore files() {
+        return server.files();
+    }
+
+    @Override
+    public Lock lock(String mailbox) {
+        RIPVServer.OperatorLock l = server.locks().get(mailbox);
+        return l == null ? null : new Lock(l.user(), l.clientId(), l.untilMillis());
+    }
+
+    @Override
+    public boolean lockForWorkflow(String mailbox, String user, String clientId, long untilMillis) {
+        RIPVServer.OperatorLock mine = new RIPVServer.OperatorLock(user, clientId, untilMillis);
+        return server.locks().compute(mailbox, (k, old) -> old == null || old.expired() || old.clientId().equals(clientId)
+                ? mine : old) == mine;
+    }
+
+    @Override
+    public void unlockWorkflow(String mailbox, String clientId) {
+        server.locks().computeIfPresent(mailbox, (k, l) -> l.clientId().equals(clientId) ? null : l);
+    }
+
+    @Override
+    public void cancel(String clientId, long messageId, String byUser) {
+        server.checkers().execute(() -> server.cancels().cancel(clientId, messageId, byUser));
+    }
+
+    @Override
+    public void publish(ConsoleEntry entry) {
+        server.publishServerEntry(entry);
+    }
+}

@@ -1,0 +1,72 @@
+package org.ripv.server.workflow;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.AtomicMoveNotSupportedException;
+import java.nio.file.FileAlreadyExistsException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.nio.file.attribute.PosixFilePermissions;
+import java.security.MessageDigest;
+import java.security.NoSuchAlgorithmException;
+import java.util.HexFormat;
+import java.util.Locale;
+
+/** Owner-only directories and files written whole: a temporary file, then an atomic move. */
+final class AtomicFiles {
+    private AtomicFiles() {}
+
+    static Path directory(Path dir) throws IOException {
+        Files.createDirectories(dir);
+        ownerOnly(dir, "rwx------");
+        return dir;
+    }
+
+    static void write(Path file, String text) throws IOException {
+        Path tmp = file.resolveSibling("." + file.getFileName() + ".tmp");
+        Files.writeString(tmp, text, StandardCharsets.UTF_8);
+        ownerOnly(tmp, "rw-------");
+        try {
+            Files.move(tmp, file, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
+        } catch (AtomicMoveNotSupportedException e) {
+            Files.move(tmp, file, StandardCopyOption.REPLACE_EXISTING);
+        }
+    }
+
+    /** Writes a new file; never replaces one. */
+    static void create(Path file, String text) throws IOException {
+        if (Files.exists(file)) {
+            throw new FileAlreadyExistsException(file.toString());
+        }
+        write(file, text);
+    }
+
+    private static void ownerOnly(Path p, String mode) {
+        try {
+            Files.setPosixFilePermissions(p, PosixFilePermissions.fromString(mode));
+        } catch (UnsupportedOperationException | IOException e) {
+            // not a POSIX file system (Windows): the data directory's own ACL applies
+        }
+    }
+
+    /** A file-name-safe key for a MailBox address: readable letters plus a hash, so that none collide. */
+    static String key(String mailbox) {
+        StringBuilder b = new StringBuilder();
+        for (char c : mailbox.toCharArray()) {
+            b.append(Character.isLetterOrDigit(c) || c == '-' || c == '.' ? c : '_');
+            if (b.length() >= 60) {
+                break;
+            }
+        }
+        return b.toString().toLowerCase(Locale.ROOT) + "-" + sha256(mailbox.getBytes(StandardCharsets.UTF_8)).substring(0, 12);
+    }
+
+    static String sha256(byte[] data) {
+        try {
+            return HexFormat.of().formatHex(MessageDigest.getInstance("SHA-256").digest(data));
+        } catch (NoSuchAlgorithmException e) {
+            throw new IllegalStateException("the JDK has no SHA-256", e);
+        }
+    }
+}
