@@ -77,6 +77,8 @@ public final class RIPVServer implements AutoCloseable {
     private final ServiceLiveness serviceLiveness;
     private final ExecutorService fileWork;
     private final ServerRemote remote = new ServerRemote(this);
+    private final InternalCalls internalCalls = new InternalCalls(this);
+    private volatile org.ripv.server.dataloop.DataLoop dataLoop;
 
     private PermitWatcher permits;
     private FileStore files;
@@ -148,6 +150,7 @@ public final class RIPVServer implements AutoCloseable {
         endings = new RequestEndings(this, pending, withdrawals, config.requestTimeout());
         box = postOffice.open(POST_OFFICE, new ServerTaskManager(this));
         sessions = new ServerSessions(config.dataDir(), sessionOptions, this::permits, this::client, codec);
+        dataLoop = new org.ripv.server.dataloop.DataLoop(internalCalls, config.dataDir().resolve("ingest.properties"));
 
         InetAddress bind = config.bindAddress() == null ? null : InetAddress.getByName(config.bindAddress());
         try {
@@ -458,6 +461,11 @@ public final class RIPVServer implements AutoCloseable {
         return secret;
     }
 
+    /** Automatic ingest and plots from data (org.ripv.server.dataloop). */
+    org.ripv.server.dataloop.DataLoop dataLoop() {
+        return dataLoop;
+    }
+
     PendingRequests pending() {
         return pending;
     }
@@ -472,6 +480,9 @@ public final class RIPVServer implements AutoCloseable {
 
     /** Posts a reply for the outbox assistant to deliver. */
     void reply(OutgoingServerMessage reply) {
+        if (internalCalls.accept(reply)) {
+            return; // the server's own request (org.ripv.server.dataloop)
+        }
         box.post(reply);
     }
 
