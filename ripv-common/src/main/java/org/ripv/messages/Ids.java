@@ -39,6 +39,13 @@ public final class Ids {
     // Store files (issue 10 part B), range 444480-444499.
     /** {@code ?delete NAME}: removes a file from the upload or download store. */
     public static final String FID_DELETE = "444480";
+    // The live console, vehicle state, transcript and notifications (docs/sessions.md).
+    public static final String FID_WATCH = "555700";
+    public static final String FID_UNWATCH = "555701";
+    public static final String FID_HISTORY = "555702";
+    public static final String FID_NOTIFY = "555703";
+    /** Console entries pushed to watchers (message id 0, status PROGRESS, a {@link ConsoleBatch}). */
+    public static final String FID_CONSOLE = "555790";
     // Workflows and cancel (docs/workflows.md): 555800-555899.
     public static final String FID_QUEUE = "555800";
     public static final String FID_RECEIPTS = "555801";

@@ -8,15 +8,28 @@ package org.ripv.messages;
  * @param detail    the service's word on why, or what the resource is
  * @param busy      whether a command is running in it right now
  * @param lockedBy  the user holding the operator lock, or empty
+ * @param session   the vehicle's call state as the server derived it from console events, or null
+ *                  when the MailBox has published none (added with the live console; older peers
+ *                  read it as null)
  */
-public record MailboxStatus(String address, boolean available, String detail, boolean busy, String lockedBy)
+public record MailboxStatus(String address, boolean available, String detail, boolean busy, String lockedBy,
+                            SessionState session)
         implements Result {
     public MailboxStatus {
         detail = detail == null ? "" : detail;
         lockedBy = lockedBy == null ? "" : lockedBy;
     }
 
+    /** A status without session state (what services report). */
+    public MailboxStatus(String address, boolean available, String detail, boolean busy, String lockedBy) {
+        this(address, available, detail, busy, lockedBy, null);
+    }
+
     public MailboxStatus withLock(String holder) {
-        return new MailboxStatus(address, available, detail, busy, holder);
+        return new MailboxStatus(address, available, detail, busy, holder, session);
+    }
+
+    public MailboxStatus withSession(SessionState state) {
+        return new MailboxStatus(address, available, detail, busy, lockedBy, state);
     }
 }

@@ -8,5 +8,5 @@ import java.io.Serializable;
  */
 public sealed interface Result extends Serializable
         permits FileListing, FileData, FileBundle, ImageResult, TableResult, ServiceList, MailboxList,
-        MailboxStatus, Progress, SessionInfo, UpdateCount {
+        MailboxStatus, Progress, SessionInfo, UpdateCount, ConsoleBatch, NotifyList {
 }

@@ -6,33 +6,51 @@ import java.util.Objects;
 /**
  * What a service tells the server about itself when it registers (thesis: ServiceDescriptor).
  *
- * @param name           the full service name, {@code <ServiceName>::<host>}
- * @param sid            its six-digit service id
- * @param description    one line for the operator
- * @param panel          which fourth panel the client shows beside COM, MAM and FIM:
- *                       {@code "DAB"}, {@code "DAV"}, or {@code ""} for none (COM spans both rows)
- * @param attachPrefixes command prefixes whose first argument names a file in the server's
- *                       upload directory, which the server then attaches (e.g. {@code "vis:"})
- * @param registration   when the service began this registration attempt (epoch milliseconds,
- *                       strictly increasing per service; 0: not given). A registration that
- *                       arrives after a newer one of the same service is refused, never replaces it.
+ * @param name             the full service name, {@code <ServiceName>::<host>}
+ * @param sid              its six-digit service id
+ * @param description      one line for the operator
+ * @param panel            which fourth panel the client shows beside COM, MAM and FIM:
+ *                         {@code "DAB"}, {@code "DAV"}, or {@code ""} for none (COM spans both rows)
+ * @param attachPrefixes   command prefixes whose first argument names a file in the server's
+ *                         upload directory, which the server then attaches (e.g. {@code "vis:"})
+ * @param downloadPrefixes command words whose arguments all name files in the server's download
+ *                         directory, which the server attaches as one {@linkplain Attachment#bundle
+ *                         bundle} (e.g. {@code "ingest"}: {@code ingest NAME...})
+ * @param registration     when the service began this registration attempt (epoch milliseconds,
+ *                         strictly increasing per service; 0: not given). A registration that
+ *                         arrives after a newer one of the same service is refused, never replaces it.
  */
 public record ServiceDescriptor(String name, String sid, String description, String panel,
-                                List<String> attachPrefixes, long registration) implements java.io.Serializable {
-    public ServiceDescriptor(String name, String sid, String description, String panel, List<String> attachPrefixes) {
-        this(name, sid, description, panel, attachPrefixes, 0);
-    }
-
-    /** The same service, stamped for one registration attempt. */
-    public ServiceDescriptor withRegistration(long stamp) {
-        return new ServiceDescriptor(name, sid, description, panel, attachPrefixes, stamp);
-    }
-
+                                List<String> attachPrefixes, List<String> downloadPrefixes, long registration)
+        implements java.io.Serializable {
     public ServiceDescriptor {
         Objects.requireNonNull(name, "name");
         Ids.require(sid);
         description = description == null ? "" : description;
         panel = panel == null ? "" : panel;
         attachPrefixes = attachPrefixes == null ? List.of() : List.copyOf(attachPrefixes);
+        downloadPrefixes = downloadPrefixes == null ? List.of() : List.copyOf(downloadPrefixes);
+    }
+
+    /** A service that takes no files from the download directory, registration not stamped. */
+    public ServiceDescriptor(String name, String sid, String description, String panel, List<String> attachPrefixes) {
+        this(name, sid, description, panel, attachPrefixes, List.of(), 0);
+    }
+
+    /** A service that takes no files from the download directory. */
+    public ServiceDescriptor(String name, String sid, String description, String panel, List<String> attachPrefixes,
+                             long registration) {
+        this(name, sid, description, panel, attachPrefixes, List.of(), registration);
+    }
+
+    /** Registration not stamped. */
+    public ServiceDescriptor(String name, String sid, String description, String panel, List<String> attachPrefixes,
+                             List<String> downloadPrefixes) {
+        this(name, sid, description, panel, attachPrefixes, downloadPrefixes, 0);
+    }
+
+    /** The same service, stamped for one registration attempt. */
+    public ServiceDescriptor withRegistration(long stamp) {
+        return new ServiceDescriptor(name, sid, description, panel, attachPrefixes, downloadPrefixes, stamp);
     }
 }

@@ -101,12 +101,21 @@ public abstract class RIPVService {
         return name;
     }
 
+    /**
+     * Command words whose arguments all name files in the server's download directory, which
+     * the server attaches as one {@link org.ripv.messages.Attachment#bundle bundle}
+     * ({@code ingest NAME...} of the DatabaseServer).
+     */
+    protected List<String> downloadPrefixes() {
+        return List.of();
+    }
+
     public final String sid() {
         return sid;
     }
 
     public final ServiceDescriptor descriptor() {
-        return new ServiceDescriptor(name.toString(), sid, description(), panel(), attachPrefixes());
+        return new ServiceDescriptor(name.toString(), sid, description(), panel(), attachPrefixes(), downloadPrefixes());
     }
 
     /** Opens a MailBox for a resource; its commands go to {@code handler}, one at a time. */

@@ -22,6 +22,10 @@ public final class BenchMain {
             "  database   a 100,000-row query end to end against direct JDBC   [--rows N] [--runs N] [--warmup N]",
             "  ymodem     YMODEM over a baud-paced relay as a share of the line rate, and against lrzsz",
             "             [BAUD:BYTES ...], e.g. 9600:65536 115200:1048576",
+            "  console    the live console: 1,000 watchers of a vehicle printing 50 lines/s against one watcher,",
+            "             and with one more that never reads   [--watchers N] [--rate N] [--seconds S] [--warmup S]",
+            "  ingest     Slocum DBA ingest (2,136 sensors; 100,000 rows) against a direct JDBC batch insert, and",
+            "             vis:track of 100,000 positions end to end   [--runs N] [--track-runs N] [--track-only]",
             "  datavis    vis: to JPEG for 10,000 and 1,000,000 points, built-in worker and Octave   [--no-octave]",
             "  firststart the DatabaseServer's first start (Derby created and seeded) in a fresh JVM, against",
             "             loading the scripts statement by statement   [--runs N]",
@@ -53,10 +57,12 @@ public final class BenchMain {
             case "broker" -> System.exit(Launchers.commandLine(new BrokerBench(), "ripv bench broker").execute(rest));
             case "database" -> DatabaseBench.main(rest);
             case "connections" -> System.exit(Launchers.commandLine(new ConnectionCostBench()).execute(rest));
+            case "console" -> System.exit(Launchers.commandLine(new ConsoleBench()).execute(rest));
             case "ymodem" -> YmodemBenchmark.main(rest);
             case "datavis" -> DataVisBenchmark.main(rest);
             case "firststart" -> FirstStartBench.main(rest);
             case "calls" -> System.exit(Launchers.commandLine(new CallsBench(), "ripv bench calls").execute(rest));
+            case "ingest" -> IngestBench.main(rest);
             default -> {
                 System.err.println("Error: unknown benchmark '" + args[0] + "'\n" + USAGE);
                 System.exit(2);

@@ -442,7 +442,8 @@ class ClientGuiTest {
                 }
             }, Timeout.timeout(T.toMillis()));
             ServiceLayoutPanel tab = GuiActionRunner.execute(() -> client.panel(CLOCK));
-            assertThat(tab.dab()).as("the clock has no fourth panel: COM spans both rows").isNull();
+            assertThat(tab.dab()).as("the clock has no DAB panel: its fourth quadrant is the live console").isNull();
+            assertThat(tab.console()).isNotNull();
             Pause.pause(new Condition("TT to name the clock's mailbox") {
                 @Override
                 public boolean test() {

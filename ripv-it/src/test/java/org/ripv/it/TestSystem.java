@@ -83,8 +83,13 @@ public final class TestSystem implements AutoCloseable {
     }
 
     public static TestSystem start(ServerConfig config) throws IOException {
+        return start(config, org.ripv.server.SessionOptions.defaults());
+    }
+
+    /** A system whose server keeps vehicle sessions with these options (transcripts, SMTP, retries). */
+    public static TestSystem start(ServerConfig config, org.ripv.server.SessionOptions sessions) throws IOException {
         seedTls(config);
-        RIPVServer server = new RIPVServer(config);
+        RIPVServer server = new RIPVServer(config, sessions);
         server.start();
         return new TestSystem(config.dataDir(), server);
     }

@@ -2,10 +2,6 @@ package org.ripv.it;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import ch.qos.logback.classic.Level;
-import ch.qos.logback.classic.Logger;
-import ch.qos.logback.classic.spi.ILoggingEvent;
-import ch.qos.logback.core.read.ListAppender;
 import java.io.ByteArrayInputStream;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
@@ -16,27 +12,23 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.LockSupport;
-import java.util.function.Predicate;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.ripv.client.cli.CliCommand;
-import org.ripv.server.RIPVServer;
 import org.ripv.services.serial.CallSettings;
 import org.ripv.services.serial.LinkSettings;
 import org.ripv.services.serial.SerialPortServer;
 import org.ripv.services.serial.VehicleLink;
 import org.ripv.services.serial.ymodem.YmodemConfig;
 import org.ripv.services.simulator.GliderSimulator;
-import org.slf4j.LoggerFactory;
 import picocli.CommandLine;
 
 /**
  * A vehicle calling in, through the real server: the SerialPortServer registered over RMI with a
  * {@code listen://} link named ru29, the glider simulator calling it over TCP, an operator at
- * the CLI. The call's life shows in {@code ?status}; what the service publishes reaches
- * {@code RIPVServer.console} over RMI (read here from the server's log of it, until the fan-out
- * to watchers gives a client-side view).
+ * the CLI. The call's life shows in {@code ?status}; what the service publishes reaches two
+ * watchers over their sockets ({@code ?watch}, one of them an observer), identically.
  */
 class VehicleCallEndToEndTest {
     static final YmodemConfig YMODEM = YmodemConfig.lrzsz().withTimeouts(Duration.ofSeconds(10),
@@ -46,9 +38,6 @@ class VehicleCallEndToEndTest {
     Path dir;
     TestSystem sys;
     GliderSimulator glider;
-    ListAppender<ILoggingEvent> serverLog = new ListAppender<>();
-    Logger serverLogger = (Logger) LoggerFactory.getLogger(RIPVServer.class);
-    Level oldLevel;
     ByteArrayOutputStream out = new ByteArrayOutputStream();
     ByteArrayOutputStream err = new ByteArrayOutputStream();
 
@@ -60,8 +49,6 @@ class VehicleCallEndToEndTest {
         if (sys != null) {
             sys.close();
         }
-        serverLogger.detachAppender(serverLog);
-        serverLogger.setLevel(oldLevel);
     }
 
     private int cli(String... lines) {
@@ -94,33 +81,10 @@ class VehicleCallEndToEndTest {
         }
     }
 
-    private List<String> consoleAtServer() {
-        List<String> got = new ArrayList<>();
-        for (ILoggingEvent e : serverLog.list) {
-            if (e.getMessage().startsWith("console ")) {
-                got.add(e.getFormattedMessage());
-            }
-        }
-        return got;
-    }
-
-    private void awaitConsole(String what, Predicate<List<String>> done) {
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
-        while (!done.test(consoleAtServer())) {
-            assertThat(System.nanoTime() - deadline).as(what + " in " + consoleAtServer()).isNegative();
-            LockSupport.parkNanos(TimeUnit.MILLISECONDS.toNanos(50));
-        }
-    }
-
     @Test
     void theSimulatorCallsInThroughTheServerAndTheCallShowsInStatusAndTheConsole() throws Exception {
-        oldLevel = serverLogger.getLevel();
-        serverLogger.setLevel(Level.DEBUG);
-        serverLog.start();
-        serverLogger.addAppender(serverLog);
-
         sys = TestSystem.start(dir.resolve("sys"));
-        sys.user("alice", "operators");
+        sys.user("alice", "operators").user("olga", "observers");
         LinkSettings link = LinkSettings.defaults("listen://127.0.0.1:0").withIdleTimeout(Duration.ofSeconds(1))
                 .withYmodem(YMODEM);
         SerialPortServer serial = SerialPortServer.withCalls("localhost",
@@ -130,6 +94,14 @@ class VehicleCallEndToEndTest {
 
         assertThat(cli("?status " + mailbox)).isZero();
         assertThat(out()).contains("not available").contains("no call yet");
+        var alice = sys.login("alice");
+        var olga = sys.login("olga");
+        org.ripv.it.console.Pushes a = org.ripv.it.console.Pushes.on(alice);
+        org.ripv.it.console.Pushes o = org.ripv.it.console.Pushes.on(olga);
+        for (var c : List.of(alice, olga)) {
+            assertThat(c.call("", "?watch " + mailbox, org.ripv.messages.Priority.NORMAL, Duration.ofSeconds(20), null)
+                    .status()).isEqualTo(org.ripv.messages.Status.OK);
+        }
 
         glider = new GliderSimulator(dir.resolve("glider"), Duration.ofSeconds(1), YMODEM);
         glider.call("127.0.0.1", serial.listenPort("ru29"), "ru29", Duration.ofSeconds(2), Duration.ofSeconds(8));
@@ -137,15 +109,26 @@ class VehicleCallEndToEndTest {
         assertThat(cli("use " + mailbox, "dir")).as(err.toString()).isZero();
         assertThat(out()).contains("MISSION1.LOG");
 
-        awaitConsole("the call's console", c -> c.stream().anyMatch(l -> l.contains("COMMAND dir")));
-        List<String> c = consoleAtServer();
-        assertThat(c).allSatisfy(l -> assertThat(l).startsWith("console " + mailbox + ": "));
-        assertThat(c).anySatisfy(l -> assertThat(l).contains("LINE Glider ru29 at surface."));
-        assertThat(c).anySatisfy(l -> assertThat(l).contains("EVENT call 1 (caller 127.0.0.1:").contains("at 41.63323, -70.53647"));
-        assertThat(c).anySatisfy(l -> assertThat(l).contains("LINE MISSION1.LOG"));
+        Duration t = Duration.ofSeconds(30);
+        assertThat(a.await(e -> e.kind() == org.ripv.messages.ConsoleEntry.Kind.COMMAND && e.text().equals("dir"), t)).isTrue();
+        var command = a.entries.stream().filter(e -> e.kind() == org.ripv.messages.ConsoleEntry.Kind.COMMAND).findFirst().orElseThrow();
+        assertThat(command.user()).isEqualTo("alice");
+        assertThat(a.entries).allSatisfy(e -> assertThat(e.mailbox()).isEqualTo(mailbox));
+        assertThat(a.texts()).contains("Glider ru29 at surface.");
+        var surfaced = a.entries.stream().filter(e -> e.event() == org.ripv.messages.VehicleEvent.SURFACED).findFirst().orElseThrow();
+        assertThat(surfaced.text()).contains("call 1 (caller 127.0.0.1:");
+        assertThat(surfaced.lat()).isCloseTo(41.63323, org.assertj.core.data.Offset.offset(1e-5)); // 4137.994 N
+        assertThat(surfaced.lon()).isCloseTo(-70.53647, org.assertj.core.data.Offset.offset(1e-5)); // -7032.188 E
+        assertThat(a.texts()).anySatisfy(l -> assertThat(l).contains("MISSION1.LOG"));
 
         awaitStatus(mailbox, "dived at");
-        awaitConsole("DIVED", l -> l.stream().anyMatch(s -> s.contains("EVENT the caller hung up")));
+        assertThat(a.await(e -> e.event() == org.ripv.messages.VehicleEvent.DIVED, t)).isTrue();
+        assertThat(o.await(e -> e.event() == org.ripv.messages.VehicleEvent.DIVED, t)).isTrue();
+        assertThat(o.entries).isEqualTo(a.entries);
+        assertThat(out()).contains("vehicle (dived").contains("at 41.63323, -70.53647").contains("1 call");
+        var h = (org.ripv.messages.ConsoleBatch) olga.call("", "?history " + mailbox, org.ripv.messages.Priority.NORMAL,
+                Duration.ofSeconds(20), null).footer().result();
+        assertThat(h.entries()).extracting(org.ripv.messages.ConsoleEntry::text).contains("Glider ru29 at surface.", "dir");
         assertThat(cli("use " + mailbox, "dir")).isNotZero();
         assertThat(out() + err).contains("not on a call");
         awaitStatus(mailbox, "call 2");

@@ -38,6 +38,7 @@ import org.ripv.server.permit.PermitWatcher;
 import org.ripv.server.security.RegistryGuard;
 import org.ripv.server.security.ServerSecurity;
 import org.ripv.server.security.ServerTls;
+import org.ripv.server.session.ConsoleHub;
 import org.ripv.wire.FrameCodec;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -64,6 +65,7 @@ public final class RIPVServer implements AutoCloseable {
     public static final String SERVER_SERVICE = "RIPVServer";
 
     private final ServerConfig config;
+    private final SessionOptions sessionOptions;
     private final Map<String, SocketHandler> clients = new ConcurrentHashMap<>();
     private final Map<String, ServiceReference> services = new ConcurrentHashMap<>();
     private final Map<String, OperatorLock> locks = new ConcurrentHashMap<>();
@@ -76,6 +78,8 @@ public final class RIPVServer implements AutoCloseable {
     private final ServiceLiveness serviceLiveness;
     private final ExecutorService fileWork;
     private final ServerRemote remote = new ServerRemote(this);
+    private final InternalCalls internalCalls = new InternalCalls(this);
+    private volatile org.ripv.server.dataloop.DataLoop dataLoop;
 
     private PermitWatcher permits;
     private FileStore files;
@@ -96,6 +100,7 @@ public final class RIPVServer implements AutoCloseable {
     private final RequestCancels cancels = new RequestCancels(this);
     private OutboundListener outbound;
     private volatile boolean running;
+    private ServerSessions sessions;
 
     /** An operator's hold on a MailBox ({@code ?lock}). */
     record OperatorLock(String user, String clientId, long untilMillis) {
@@ -105,7 +110,13 @@ public final class RIPVServer implements AutoCloseable {
     }
 
     public RIPVServer(ServerConfig config) {
+        this(config, SessionOptions.defaults());
+    }
+
+    /** A server with vehicle-session options (transcripts, e-mail, notifications; docs/sessions.md). */
+    public RIPVServer(ServerConfig config, SessionOptions sessionOptions) {
         this.config = config;
+        this.sessionOptions = sessionOptions;
         this.timers = Executors.newScheduledThreadPool(1, named("ripv-server-timer"));
         // Calls to services: each is bounded by the RMI deadlines and at most one MailBox query
         // runs per service, so a cached pool grows by one thread per hung service at worst.
@@ -143,6 +154,8 @@ public final class RIPVServer implements AutoCloseable {
         endings = new RequestEndings(this, pending, withdrawals, config.requestTimeout());
         box = postOffice.open(POST_OFFICE, new ServerTaskManager(this));
         security = new ServerSecurity(config.security(), config.maxClients(), timers, permits::current, () -> secret);
+        sessions = new ServerSessions(config.dataDir(), sessionOptions, this::permits, this::client, codec);
+        dataLoop = new org.ripv.server.dataloop.DataLoop(internalCalls, config.dataDir().resolve("ingest.properties"));
 
         InetAddress bind = config.bindAddress() == null ? null : InetAddress.getByName(config.bindAddress());
         try {
@@ -248,6 +261,9 @@ public final class RIPVServer implements AutoCloseable {
         RmiSupport.unexport(remote);
         if (workflows != null) {
             workflows.close();
+        }
+        if (sessions != null) {
+            sessions.close();
         }
         timers.shutdownNow();
         checkers.shutdownNow();
@@ -377,7 +393,7 @@ public final class RIPVServer implements AutoCloseable {
             security.gate().closed(client.clientId());
             pending.forgetClient(client.clientId());
             files.abortAll(client.clientId());
-            if (locks.values().removeIf(l -> l.clientId().equals(client.clientId()))) {
+            if (sessions.clientClosed(client.clientId(), locks)) {
                 workflows.lockReleased(null);
             }
         }
@@ -408,6 +424,15 @@ public final class RIPVServer implements AutoCloseable {
 
     Map<String, OperatorLock> locks() {
         return locks;
+    }
+
+    ServerSessions sessions() {
+        return sessions;
+    }
+
+    /** The live console: watchers, vehicle state, transcripts (tests and benchmarks look inside). */
+    public ConsoleHub console() {
+        return sessions.console();
     }
 
     Optional<SocketHandler> client(String clientId) {
@@ -441,7 +466,7 @@ public final class RIPVServer implements AutoCloseable {
      * notifications. Until the fan-out is merged it is only logged.
      */
     void publishServerEntry(org.ripv.messages.ConsoleEntry entry) {
-        log.debug("console {} (server): {} {}", entry.mailbox(), entry.kind(), Header.abbreviate(entry.text()));
+        sessions.console().serverEntry(entry);
     }
 
     String secret() {
@@ -450,6 +475,11 @@ public final class RIPVServer implements AutoCloseable {
 
     ServerSecurity security() {
         return security;
+    }
+
+    /** Automatic ingest and plots from data (org.ripv.server.dataloop). */
+    org.ripv.server.dataloop.DataLoop dataLoop() {
+        return dataLoop;
     }
 
     PendingRequests pending() {
@@ -466,6 +496,9 @@ public final class RIPVServer implements AutoCloseable {
 
     /** Posts a reply for the outbox assistant to deliver. */
     void reply(OutgoingServerMessage reply) {
+        if (internalCalls.accept(reply)) {
+            return; // the server's own request (org.ripv.server.dataloop)
+        }
         box.post(reply);
     }
 
@@ -497,6 +530,7 @@ public final class RIPVServer implements AutoCloseable {
 
     void drop(ServiceReference ref, String why) {
         endings.drop(ref, why);
+        sessions.console().serviceGone(ref.descriptor().name(), why);
     }
 
     /**
@@ -504,19 +538,15 @@ public final class RIPVServer implements AutoCloseable {
      * the calling service's own MailBoxes are taken.
      */
     void console(ServiceReference ref, List<org.ripv.messages.ConsoleEntry> entries) {
-        String prefix = ref.descriptor().name();
-        workflows.onConsole(prefix, entries);
-        for (org.ripv.messages.ConsoleEntry e : entries) {
-            if (e != null && e.mailbox().startsWith(prefix)) {
-                log.debug("console {}: {} {}", e.mailbox(), e.kind(), Header.abbreviate(e.text()));
-            }
-        }
+        sessions.console().publish(ref.descriptor().name(), entries);
+        workflows.onConsole(ref.descriptor().name(), entries);
     }
 
-    /** Current MailBox status with the operator lock added. */
+    /** Current MailBox status with the operator lock and the vehicle's call state added. */
     MailboxStatus withLock(MailboxStatus s) {
         OperatorLock l = locks.get(s.address());
-        return l == null || l.expired() ? s : s.withLock(l.user());
+        MailboxStatus withState = s.withSession(sessions.console().state(s.address()));
+        return l == null || l.expired() ? withState : withState.withLock(l.user());
     }
 
 

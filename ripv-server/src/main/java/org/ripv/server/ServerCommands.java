@@ -61,6 +61,10 @@ final class ServerCommands {
                 "the workflows queued for a vehicle's next call (docs/workflows.md)"));
         COMMANDS.put("?receipts", new Command(Ids.FID_RECEIPTS, "?receipts MAILBOX [--last N]", "what the last workflow runs did"));
         COMMANDS.put("?cancel", new Command(Ids.FID_CANCEL, "?cancel MESSAGE-ID [CLIENT-ID]", "stop a request that is queued or running"));
+        COMMANDS.put("?watch", new Command(Ids.FID_WATCH, "?watch MAILBOX", "follow a MailBox's console: lines, commands, events"));
+        COMMANDS.put("?unwatch", new Command(Ids.FID_UNWATCH, "?unwatch MAILBOX", "stop following it"));
+        COMMANDS.put("?history", new Command(Ids.FID_HISTORY, "?history MAILBOX [--last N] [--since ISO-TIME]", "its transcript"));
+        COMMANDS.put("?notify", new Command(Ids.FID_NOTIFY, "?notify add|list|remove ...", "e-mail or webhook on vehicle events"));
         COMMANDS.put("?logout", new Command(Ids.FID_LOGOUT, "?logout", "end the session and close the connection"));
     }
 
@@ -75,7 +79,7 @@ final class ServerCommands {
 
     /** Commands that touch the disk: they run on the file workers, not on the Post Office's thread. */
     private static final java.util.Set<String> FILE_WORK = java.util.Set.of("?upload", "?upload-cancel", "?download",
-            "?dlfiles", "?ulfiles", "?delete", "?queue", "?receipts");
+            "?dlfiles", "?ulfiles", "?delete", "?queue", "?receipts", "?history", "?notify");
 
     /** Runs one {@code ?} command; its reply (or replies) go to the Post Office's outbox. */
     void run(IncomingServerMessage request) {
@@ -242,6 +246,8 @@ final class ServerCommands {
                     return ServerTaskManager.error(request, c.fid(), ErrorCode.MAILBOX_LOCKED,
                             address + " is locked by " + now.user() + " until " + Instant.ofEpochMilli(now.untilMillis()));
                 }
+                server.console().serverEvent(address.toString(), org.ripv.messages.VehicleEvent.LOCK_TAKEN, user,
+                        "until " + Instant.ofEpochMilli(mine.untilMillis()));
                 return ok(request, c, address + " locked by " + user + " until " + Instant.ofEpochMilli(mine.untilMillis()), null);
             }
             case "?unlock": {
@@ -252,13 +258,19 @@ final class ServerCommands {
                     return ServerTaskManager.error(request, c.fid(), ErrorCode.MAILBOX_LOCKED,
                             address + " is locked by " + l.user() + ", not by you");
                 }
-                server.locks().remove(address.toString());
+                if (server.locks().remove(address.toString()) != null && l != null && !l.expired()) {
+                    server.console().serverEvent(address.toString(), org.ripv.messages.VehicleEvent.LOCK_RELEASED, user, "");
+                }
                 server.workflows().lockReleased(address.toString());
                 return ok(request, c, address + " unlocked", null);
             }
             case "?logins", "?unlock-login":
                 permit(request, c);
                 return SecurityCommands.run(request, c.fid(), w, server.security().throttle());
+            case "?watch", "?unwatch", "?history":
+                return server.sessions().consoleCommands().run(request, c.fid(), w);
+            case "?notify":
+                return server.sessions().notifyCommands().run(request, c.fid(), w);
             default:
                 throw new IllegalStateException("no handler for " + w[0]);
         }
@@ -267,7 +279,8 @@ final class ServerCommands {
     static String describe(MailboxStatus s) {
         return s.address() + ": " + (s.available() ? "available" : "not available") + (s.busy() ? ", busy" : "")
                 + (s.lockedBy().isEmpty() ? "" : ", locked by " + s.lockedBy())
-                + (s.detail().isEmpty() ? "" : " (" + s.detail() + ")");
+                + (s.detail().isEmpty() ? "" : " (" + s.detail() + ")")
+                + (s.session() == null ? "" : "; vehicle " + org.ripv.server.session.ConsoleCommands.describeState(s.session()));
     }
 
     /**

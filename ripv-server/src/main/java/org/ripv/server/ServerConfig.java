@@ -107,4 +107,5 @@ public record ServerConfig(String bindAddress, int port, int registryPort, int h
     public ServerConfig plain() {
         return withSecurity(security.withPlain(true));
     }
+
 }

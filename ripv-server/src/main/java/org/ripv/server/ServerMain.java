@@ -83,6 +83,14 @@ public final class ServerMain implements Callable<Integer> {
         int rmiReadTimeout;
         @Option(names = "--client-jar", description = "The client jar the landing page offers (default: ripv-client.jar beside this jar).")
         Path clientJar;
+        @Option(names = "--smtp", paramLabel = "HOST:PORT", description = "The SMTP server for e-mail notifications (?notify add email ...).")
+        String smtp;
+        @Option(names = "--smtp-credentials", paramLabel = "FILE", description = "Properties file with user=, password= (and from=, starttls=true) for --smtp.")
+        Path smtpCredentials;
+        @Option(names = "--transcript-days", defaultValue = "90", description = "Days of vehicle transcripts to keep (default ${DEFAULT-VALUE}).")
+        int transcriptDays;
+        @Option(names = "--transcript-file-mb", defaultValue = "64", description = "A transcript file is continued in a new one past this size (default ${DEFAULT-VALUE} MB).")
+        long transcriptFileMb;
 
         @Override
         public Integer call() throws Exception {
@@ -116,8 +124,20 @@ public final class ServerMain implements Callable<Integer> {
                 config = config.withTls(id.context());
                 fingerprint = id.fingerprint();
             }
+            SessionOptions sessions;
+            try {
+                sessions = SessionOptions.defaults().withTranscripts(transcriptFileMb * 1024 * 1024, transcriptDays);
+                if (smtp != null) {
+                    sessions = sessions.withSmtp(org.ripv.server.notify.Smtp.parse(smtp, smtpCredentials));
+                } else if (smtpCredentials != null) {
+                    throw new IllegalArgumentException("--smtp-credentials needs --smtp HOST:PORT");
+                }
+            } catch (IllegalArgumentException e) {
+                System.err.println("Error: " + e.getMessage());
+                return 2;
+            }
             org.ripv.rmi.RmiSupport.filterProcess();
-            RIPVServer server = new RIPVServer(config);
+            RIPVServer server = new RIPVServer(config, sessions);
             server.start();
             String outbound = "";
             if (outboundPort >= 0) {

@@ -95,6 +95,9 @@ final class ServerTaskManager extends TaskManager<IncomingServerMessage, Outgoin
             return error(request, sid, ErrorCode.MAILBOX_LOCKED, address + " is locked by " + lock.user() + " until "
                     + java.time.Instant.ofEpochMilli(lock.untilMillis()) + "; try later");
         }
+        if (server.dataLoop().plot(request, sid, address.toString(), server::reply)) {
+            return null; // vis:sql, vis:track, ...: the server queries the database first (org.ripv.server.dataloop)
+        }
         Attachment attachment;
         try {
             attachment = attachmentFor(ref, h.body());
@@ -114,6 +117,10 @@ final class ServerTaskManager extends TaskManager<IncomingServerMessage, Outgoin
 
     /** The upload-directory file a command names after one of the service's attach prefixes. */
     private Attachment attachmentFor(ServiceReference ref, String body) throws IOException {
+        Attachment downloads = DownloadAttachments.forCommand(server.files(), ref.descriptor(), body);
+        if (downloads != null) {
+            return downloads;
+        }
         String trimmed = body.trim();
         for (String prefix : ref.descriptor().attachPrefixes()) {
             if (trimmed.regionMatches(true, 0, prefix, 0, prefix.length())) {

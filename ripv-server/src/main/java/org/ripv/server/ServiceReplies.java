@@ -10,6 +10,7 @@ import org.ripv.messages.FileListing;
 import org.ripv.messages.Footer;
 import org.ripv.messages.ImageResult;
 import org.ripv.messages.IncomingServerMessage;
+import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.OutgoingServiceMessage;
 import org.ripv.messages.Result;
 import org.ripv.naming.MailboxAddress;
@@ -39,10 +40,14 @@ final class ServiceReplies {
         if (!f.serviceId().equals(ref.descriptor().sid())) {
             f = new Footer(ref.descriptor().sid(), f.status(), f.errorCode(), f.route(), f.replyText(), f.result());
         }
+        Result sent = f.result();
         f = store(server, f, folderOf(p.header().mailboxAddress()));
         f = server.cancels().judge(p, f);
         // Route by the header the server sent, never by what the service wrote back.
-        server.reply(new IncomingServerMessage(p.header()).reply(f.via(RIPVServer.SERVER_SERVICE)));
+        OutgoingServerMessage out = new IncomingServerMessage(p.header()).reply(f.via(RIPVServer.SERVER_SERVICE));
+        if (!server.dataLoop().downloaded(out, sent, server::reply)) { // DBA files go to the database first
+            server.reply(out);
+        }
     }
 
     /** The MailBox's handle: each MailBox's files live in a folder of their own. */

@@ -58,6 +58,9 @@ public final class CliCommand implements Callable<Integer> {
     String truststorePassword;
     @Option(names = "--history", paramLabel = "FILE", description = "The interactive CLI's history (default ~/.ripv/history).")
     Path history;
+
+    @Option(names = "--follow", paramLabel = "MAILBOX", description = "Print the MailBox's live console (lines, commands, events) until Ctrl-C; after any --exec lines.")
+    String follow;
     @Option(names = "--timeout", defaultValue = "3600", description = "Seconds to wait for one reply (default ${DEFAULT-VALUE}; the server fails silent requests sooner).")
     long timeout;
 
@@ -128,7 +131,7 @@ public final class CliCommand implements Callable<Integer> {
                             break;
                         }
                     }
-                } else {
+                } else if (follow == null) {
                     BufferedReader r = new BufferedReader(new InputStreamReader(in, StandardCharsets.UTF_8));
                     String line;
                     while ((line = r.readLine()) != null && session.run(line)) {
@@ -140,6 +143,14 @@ public final class CliCommand implements Callable<Integer> {
                 return EXIT_NO_SESSION;
             }
             out.flush();
+            if (follow != null) {
+                try {
+                    return new ConsoleFollower(client, out, err, json).follow(follow, Duration.ofSeconds(Math.min(timeout, 60)));
+                } catch (IOException e) {
+                    err.println("Error: " + e.getMessage());
+                    return EXIT_NO_SESSION;
+                }
+            }
             return session.anyError() ? EXIT_ERROR_REPLY : 0;
         }
     }

@@ -41,6 +41,7 @@ public final class CliSession {
     private String mailbox = "";
     private Priority priority = Priority.NORMAL;
     private boolean anyError;
+    private org.ripv.messages.TableResult lastTable;
     /** The request being waited for, so that {@link #cancel()} can end the wait. */
     private volatile CompletableFuture<OutgoingServerMessage> waiting;
     /** The message id of the request being waited for, 0 for none (what {@code ?cancel} names). */
@@ -72,6 +73,7 @@ public final class CliSession {
             "  put LOCALFILE [NAME] [--replace|--keep]",
             "                                   upload to the server's upload directory; when NAME is taken: replace it, or keep both",
             "  get NAME [LOCALDIR]              download from the server's download directory (default: the current directory)",
+            "  export csv|json LOCALFILE        write the last query result to a local file (numbers as numbers, NULL as null)",
             "  help                             this, and the current service's help",
             "  quit                             end the session (Ctrl-D too)",
             "  anything else                    a command for the current MailBox");
@@ -113,6 +115,7 @@ public final class CliSession {
             }
             case "put" -> put(rest);
             case "get" -> get(rest);
+            case "export" -> export(rest);
             default -> {
                 if (!line.startsWith("?") && mailbox.isEmpty()) {
                     localError(ErrorCode.BAD_REQUEST, "no MailBox chosen for '" + line + "': use MAILBOX first (?mailboxes lists them)");
@@ -186,6 +189,9 @@ public final class CliSession {
     private void send(String box, String body) throws IOException {
         OutgoingServerMessage reply = await(box, body, printer::print);
         if (reply != null) {
+            if (reply.footer().result() instanceof org.ripv.messages.TableResult t) {
+                lastTable = t;
+            }
             print(reply);
         }
     }
@@ -246,6 +252,23 @@ public final class CliSession {
 
     private void cancelledNote(String what) {
         err.println("Cancelled: stopped waiting for '" + what + "'; the server may still finish it (its reply will be ignored)");
+    }
+
+    /** {@code export csv|json FILE}: the last table received, to a local file ({@link TableExport}). */
+    private void export(String args) throws IOException {
+        String[] a = args.isEmpty() ? new String[0] : args.split("\\s+", 2);
+        if (a.length != 2 || !(a[0].equalsIgnoreCase("csv") || a[0].equalsIgnoreCase("json"))) {
+            localError(ErrorCode.BAD_REQUEST, "usage: export csv|json LOCALFILE (writes the last query result)");
+            return;
+        }
+        if (lastTable == null) {
+            localError(ErrorCode.BAD_REQUEST, "no query result to export yet: run a SELECT first");
+            return;
+        }
+        String text = a[0].equalsIgnoreCase("csv") ? TableExport.csv(lastTable) : TableExport.json(lastTable);
+        Path file = Path.of(a[1]);
+        Files.writeString(file, text, java.nio.charset.StandardCharsets.UTF_8);
+        local("exported " + lastTable.rows().size() + " rows as " + a[0].toLowerCase(java.util.Locale.ROOT) + " to " + file);
     }
 
     private void put(String args) throws IOException {

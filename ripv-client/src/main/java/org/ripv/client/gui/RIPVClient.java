@@ -301,7 +301,7 @@ public final class RIPVClient {
             });
             for (ServiceModel s : model.services()) {
                 if (!panels.containsKey(s.name())) {
-                    ServiceLayoutPanel p = new ServiceLayoutPanel(s, manager);
+                    ServiceLayoutPanel p = new ServiceLayoutPanel(s, manager, manager.model());
                     p.dividers(quadrants());
                     panels.put(s.name(), p);
                     tabs.addTab(tabTitle(s.name()), null, p, s.name() + " — " + s.descriptor().description());

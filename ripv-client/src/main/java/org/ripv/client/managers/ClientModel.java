@@ -71,6 +71,12 @@ public final class ClientModel {
     private String notice = "";
     private boolean noticeIsError;
     private final List<Listener> listeners = new CopyOnWriteArrayList<>();
+    private final ConsoleModel console = new ConsoleModel();
+
+    /** The live consoles of watched MailBoxes. */
+    public ConsoleModel console() {
+        return console;
+    }
 
     public ClientModel() {
         directories.put(FileArea.UPLOAD, new Directory("", List.of()));

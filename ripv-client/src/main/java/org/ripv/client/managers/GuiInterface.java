@@ -64,4 +64,15 @@ public interface GuiInterface {
 
     /** The connection's state and why. */
     void showConnection(Connection state, String detail);
+
+    /**
+     * Console entries of a watched MailBox ({@code ?watch} 555700 replay, pushes 555790);
+     * {@code live} is false for the replay, so old events raise no desktop notification.
+     */
+    default void showConsole(org.ripv.messages.ConsoleBatch batch, boolean live) {
+    }
+
+    /** Transcript entries ({@code ?history}, 555702) to put before a console's lines. */
+    default void showHistory(org.ripv.messages.ConsoleBatch batch) {
+    }
 }

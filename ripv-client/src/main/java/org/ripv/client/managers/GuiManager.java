@@ -71,6 +71,7 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
     private final Requests requests;
     private final ReplyDispatcher dispatcher;
     private final Transfers transfers;
+    private final DesktopNotice desktop;
 
     /** A manager for the Swing GUI: changes go to the event thread. */
     public GuiManager(ClientModel model) {
@@ -95,6 +96,7 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
         this.requests = new Requests(model, io, session::connection, this);
         this.dispatcher = new ReplyDispatcher(this, requests);
         this.transfers = new Transfers(model, ui, io, session::connection, this, requests);
+        this.desktop = new DesktopNotice(model::notice);
     }
 
     private static ThreadFactory named(String prefix) {
@@ -317,7 +319,15 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
 
     @Override
     public void showSession(SessionInfo session) {
-        ui.execute(() -> model.session(session));
+        ui.execute(() -> {
+            model.session(session);
+            // A new connection (after a drop) watches nothing yet: watch the targets again.
+            for (ServiceModel m : model.services()) {
+                if (!m.target().isEmpty()) {
+                    requests.send("", "?watch " + m.target(), Priority.NORMAL, null);
+                }
+            }
+        });
     }
 
     @Override
@@ -370,6 +380,35 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
             if (m != null) {
                 m.picture(new ServiceModel.Picture(image, decoded));
                 model.fire(ClientModel.Kind.IMAGE, service);
+            }
+        });
+    }
+
+    /** Fetches older lines of a MailBox's console from the server's transcript. Any thread. */
+    public void loadHistory(String mailbox) {
+        if (mailbox != null && !mailbox.isEmpty()) {
+            requests.send("", "?history " + mailbox + " --last " + org.ripv.client.managers.ConsoleModel.MAX_ENTRIES / 5,
+                    Priority.NORMAL, null);
+        }
+    }
+
+    @Override
+    public void showHistory(org.ripv.messages.ConsoleBatch batch) {
+        ui.execute(() -> model.console().addHistory(batch));
+    }
+
+    @Override
+    public void showConsole(org.ripv.messages.ConsoleBatch batch, boolean live) {
+        ui.execute(() -> {
+            model.console().add(batch);
+            if (live) {
+                for (org.ripv.messages.ConsoleEntry e : batch.entries()) {
+                    if (ConsoleModel.notifies(e)) {
+                        String vehicle = e.mailbox().substring(e.mailbox().lastIndexOf('>') + 1);
+                        desktop.show("RIPV: " + vehicle + " " + e.event(), e.text().isEmpty() ? e.mailbox() : e.text(),
+                                e.event() == org.ripv.messages.VehicleEvent.ALERT);
+                    }
+                }
             }
         });
     }

@@ -102,6 +102,20 @@ final class ReplyDispatcher {
                     gui.showSession(s);
                 }
             }
+            case Ids.FID_HISTORY -> {
+                if (result instanceof org.ripv.messages.ConsoleBatch b && origin == null) {
+                    gui.showHistory(b); // the console panel's Older button (typed ?history stays in COM)
+                    return;
+                }
+            }
+            case Ids.FID_CONSOLE, Ids.FID_WATCH -> {
+                if (result instanceof org.ripv.messages.ConsoleBatch b) {
+                    gui.showConsole(b, f.serviceId().equals(Ids.FID_CONSOLE));
+                }
+                if (!echo) {
+                    return;
+                }
+            }
             case Ids.FID_UPLOAD, Ids.FID_DOWNLOAD -> {
                 // Chunks of the client's own transfers: their progress goes through the Transfer.
                 return;

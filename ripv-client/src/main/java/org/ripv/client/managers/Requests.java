@@ -106,9 +106,15 @@ final class Requests {
         if (m == null || mailbox == null || mailbox.equals(m.target())) {
             return;
         }
+        String previous = m.target();
         m.target(mailbox);
         model.fire(ClientModel.Kind.COM, service);
         send("", "?status " + mailbox, Priority.NORMAL, new Origin(service, false));
+        // The console panel follows the target (docs/sessions.md); a MailBox without a console stays quiet.
+        if (!previous.isEmpty()) {
+            send("", "?unwatch " + previous, Priority.NORMAL, null);
+        }
+        send("", "?watch " + mailbox, Priority.NORMAL, null);
     }
 
     /** Where the request a reply answers came from, or null; forgotten once the reply is final. */

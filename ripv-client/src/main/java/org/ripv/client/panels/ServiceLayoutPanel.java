@@ -25,8 +25,14 @@ public final class ServiceLayoutPanel extends JPanel {
     private final FimPanel fim;
     private final DatabasePanel dab;
     private final ImagePanel dav;
+    private final ConsolePanel console;
 
     public ServiceLayoutPanel(ServiceModel model, GuiManager manager) {
+        this(model, manager, null);
+    }
+
+    /** With {@code client} given, a service without a fourth panel gets the live console there. */
+    public ServiceLayoutPanel(ServiceModel model, GuiManager manager, ClientModel client) {
         super(new java.awt.BorderLayout());
         this.service = model.name();
         this.kind = model.panel();
@@ -36,7 +42,8 @@ public final class ServiceLayoutPanel extends JPanel {
         fim = new FimPanel(manager);
         dab = "DAB".equals(kind) ? new DatabasePanel(service, manager) : null;
         dav = "DAV".equals(kind) ? new ImagePanel(manager) : null;
-        JComponent fourth = dab != null ? dab : dav;
+        console = dab == null && dav == null && client != null ? new ConsolePanel(service, client, manager) : null;
+        JComponent fourth = dab != null ? dab : dav != null ? dav : console;
 
         // Fixed base sizes: GridBag then shares the window by weight alone, so the quadrants do
         // not jump about when a long mailbox name or path arrives.
@@ -100,8 +107,18 @@ public final class ServiceLayoutPanel extends JPanel {
             return;
         }
         switch (what) {
-            case COM -> com.update(m);
-            case MAILBOXES -> mam.update(m);
+            case COM -> {
+                com.update(m);
+                if (console != null) {
+                    console.update(m);
+                }
+            }
+            case MAILBOXES -> {
+                mam.update(m);
+                if (console != null) {
+                    console.update(m);
+                }
+            }
             case TABLES -> {
                 if (dab != null) {
                     dab.update(m);
@@ -126,6 +143,9 @@ public final class ServiceLayoutPanel extends JPanel {
         }
         com.update(m);
         mam.update(m);
+        if (console != null) {
+            console.update(m);
+        }
         fim.updateFiles(model);
         fim.updateTransfers(model);
         if (dab != null) {
@@ -134,6 +154,11 @@ public final class ServiceLayoutPanel extends JPanel {
         if (dav != null) {
             dav.update(m);
         }
+    }
+
+    /** The live console, or null for a service with a DAB or DAV panel. */
+    public ConsolePanel console() {
+        return console;
     }
 
     public ComPanel com() {

@@ -36,6 +36,9 @@ public final class MailboxTree extends JTree {
             if (!status.lockedBy().isBlank()) {
                 s += "  [locked by " + status.lockedBy() + "]";
             }
+            if (status.session() != null) {
+                s += "  " + org.ripv.client.managers.ConsoleModel.badge(status.session(), java.time.Instant.now());
+            }
             return s;
         }
     }

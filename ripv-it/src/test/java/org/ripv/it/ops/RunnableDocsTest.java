@@ -43,7 +43,7 @@ import org.ripv.services.datavis.DataVisServer;
 class RunnableDocsTest {
     static final Path ROOT = RipvScriptHelpTest.ROOT;
     static final Pattern RIPV = Pattern.compile("(^|[|;&]\\s*)(\\./)?ripv(?=\\s|$)");
-    static final Pattern LONG_RUNNING = Pattern.compile("(\\./)?ripv\\s+(server|service|simulator|client|demo)\\b");
+    static final Pattern LONG_RUNNING = Pattern.compile("(\\./)?ripv\\s+(server|service|simulator|client|demo)\\b|--follow\\b");
 
     @TempDir
     static Path tmp;

@@ -35,6 +35,12 @@ final class ReplyWriter {
     private final Runnable closer;
     /** Linked, not an array: an idle client must not hold thousands of empty slots. */
     private final BlockingQueue<OutgoingServerMessage> replies;
+    private final int capacity;
+    /** A push: its frame if encoded once for many clients (else null), and what to run once it went out. */
+    private record Push(byte[] frame, Runnable written) {}
+
+    /** Pushes whose sender wants to hear when they went out (console watchers pace themselves by it). */
+    private final java.util.Map<OutgoingServerMessage, Push> afterWrite = new java.util.concurrent.ConcurrentHashMap<>();
     private final Object lock = new Object();
     private boolean running;
     private boolean stopped;
@@ -46,6 +52,7 @@ final class ReplyWriter {
         this.codec = codec;
         this.closer = closer;
         this.replies = new LinkedBlockingQueue<>(capacity);
+        this.capacity = capacity;
     }
 
     /** The socket may be written now (the greeting is done): replies queued so far go out. */
@@ -59,6 +66,24 @@ final class ReplyWriter {
     /** Queues a reply; false when the queue is full (the client is not reading). */
     boolean offer(OutgoingServerMessage reply) {
         if (!replies.offer(reply)) {
+            return false;
+        }
+        startIfNeeded();
+        return true;
+    }
+
+    /**
+     * Queues an unasked message (a console push); {@code written} runs on the writer thread once
+     * it has been written and flushed. {@code frame}, when not null, is the message already
+     * encoded. False when the queue is more than half full (pushes never crowd out replies).
+     */
+    boolean push(OutgoingServerMessage message, byte[] frame, Runnable written) {
+        if (replies.remainingCapacity() < capacity / 2) {
+            return false;
+        }
+        afterWrite.put(message, new Push(frame, written));
+        if (!replies.offer(message)) {
+            afterWrite.remove(message);
             return false;
         }
         startIfNeeded();
@@ -80,6 +105,7 @@ final class ReplyWriter {
             stopped = true;
         }
         replies.clear();
+        afterWrite.clear();
         replies.offer(POISON);
     }
 
@@ -97,6 +123,7 @@ final class ReplyWriter {
 
     private void run() {
         boolean close = true;
+        java.util.List<Runnable> flushed = new java.util.ArrayList<>();
         try {
             while (true) {
                 OutgoingServerMessage m = replies.poll(IDLE_MILLIS, TimeUnit.MILLISECONDS);
@@ -114,9 +141,20 @@ final class ReplyWriter {
                     out.flush();
                     return;
                 }
-                write(m);
+                Push push = afterWrite.remove(m);
+                if (push != null) {
+                    flushed.add(push.written());
+                }
+                if (push != null && push.frame() != null) {
+                    out.writeInt(push.frame().length);
+                    out.write(push.frame());
+                } else {
+                    write(m);
+                }
                 if (replies.isEmpty()) {
                     out.flush();
+                    flushed.forEach(Runnable::run);
+                    flushed.clear();
                 }
             }
         } catch (InterruptedException e) {

@@ -123,6 +123,16 @@ public final class SocketHandler {
         }
     }
 
+    /**
+     * Queues an unasked message (a console push); {@code written} runs on the writer thread once it
+     * has been written and flushed, so a sender can keep one push in flight and hold the rest
+     * itself. {@code frame}, when not null, is the message already encoded (once for every
+     * client it goes to). Never blocks; false when the connection is closed or too far behind.
+     */
+    public boolean push(OutgoingServerMessage message, byte[] frame, Runnable written) {
+        return !closed && writer.push(message, frame, written);
+    }
+
     private void readLoop() {
         String why = "closed the connection";
         try {

@@ -55,6 +55,7 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
 
     private final DatabaseTarget target;
     private final QueryLimits limits;
+    private final IngestCommand ingest;
     private Connection owner;
     private Connection reader;
     private Defaults ownerDefaults;
@@ -71,6 +72,7 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
     public DatabaseHandler(DatabaseTarget target, QueryLimits limits) {
         this.target = target;
         this.limits = limits;
+        this.ingest = new IngestCommand(target);
         this.availability = Availability.available(describe());
     }
 
@@ -81,12 +83,27 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
 
     @Override
     public Reply execute(Request request) {
+        if (IngestCommand.matches(request.command())) {
+            return ingest(request);
+        }
         return run(request.command(), readsOnly(request.roles()));
     }
 
     /** True unless the roles let the user change the database: observers and unknown roles only read. */
     public static boolean readsOnly(List<String> roles) {
         return roles.contains(READER_ROLE) || !(roles.contains(WRITER_ROLE) || roles.contains(OPERATORS_ROLE));
+    }
+
+    /** {@code ingest NAME...} on the owner connection ({@link IngestCommand}). */
+    private Reply ingest(Request request) {
+        if (readsOnly(request.roles())) {
+            return Reply.error(ErrorCode.FORBIDDEN, "you may only read this database; ingest writes to it");
+        }
+        try {
+            return ingest.run(request, connection(false));
+        } catch (SQLException e) {
+            return Reply.error(ErrorCode.NOT_AVAILABLE, "cannot connect to " + target.safeUrl() + ": " + describe(e));
+        }
     }
 
     /** Runs one SQL command as the owner, or as the reader. */

@@ -97,6 +97,12 @@ public final class DatabaseServer extends RIPVService {
         return b.toString();
     }
 
+    /** {@code ingest NAME...}: the server attaches the named download-directory files. */
+    @Override
+    protected List<String> downloadPrefixes() {
+        return List.of(IngestCommand.WORD);
+    }
+
     @Override
     protected String panel() {
         return "DAB";

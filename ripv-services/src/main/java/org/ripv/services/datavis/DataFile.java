@@ -63,6 +63,8 @@ public final class DataFile {
         List<String> legend = null;
         int width = 0;
         int height = 0;
+        String style = null;
+        String mark = null;
         int columns = -1;
         boolean comma = false;
         boolean pendingGap = false;
@@ -90,6 +92,14 @@ public final class DataFile {
                         case "xlabel" -> xLabel = value;
                         case "ylabel" -> yLabel = value;
                         case "legend" -> legend = PlotLabels.splitLegend(value);
+                        case "mark" -> mark = value;
+                        case "plot" -> {
+                            style = value.toLowerCase(Locale.ROOT);
+                            if (!PlotLabels.STYLES.contains(style)) {
+                                throw new DataFormatException(lineNo, "'% plot: " + value + "' is not one of "
+                                        + String.join(", ", PlotLabels.STYLES));
+                            }
+                        }
                         case "size" -> {
                             Matcher s = SIZE.matcher(value);
                             int w = s.matches() ? Integer.parseInt(s.group(1)) : -1;
@@ -156,7 +166,7 @@ public final class DataFile {
                     : "the data file has no data rows (only comments or blank lines in " + lineNo + " line"
                             + (lineNo == 1 ? "" : "s") + ")");
         }
-        return new Summary(new PlotLabels(title, xLabel, yLabel, legend, width, height), columns, rows);
+        return new Summary(new PlotLabels(title, xLabel, yLabel, legend, width, height, style, mark), columns, rows);
     }
 
     /**
@@ -204,6 +214,12 @@ public final class DataFile {
         }
         if (labels.width() != 0) {
             out.write("% size: " + labels.width() + "x" + labels.height() + "\n");
+        }
+        if (labels.style() != null) {
+            out.write("% plot: " + labels.style() + "\n");
+        }
+        if (labels.mark() != null) {
+            out.write("% mark: " + labels.mark() + "\n");
         }
     }
 

@@ -191,6 +191,9 @@ public final class DataVisServer extends RIPVService {
                 return Reply.error(ErrorCode.UNKNOWN_COMMAND, "the DataVisServer knows vis:NAME [options] and help, not '"
                         + word + "'");
             }
+            if (DbaPlot.matches(line)) {
+                return plotDba(request, line);
+            }
             VisCommand vis;
             try {
                 vis = VisCommand.parse(line);
@@ -204,6 +207,35 @@ public final class DataVisServer extends RIPVService {
             }
             return plot(request, vis, file.get());
         }
+    }
+
+    /** {@code vis:file NAME x=... y=...}: a downloaded DBA file's columns, drawn like any data file. */
+    private Reply plotDba(Request request, String line) throws Exception {
+        DbaPlot p;
+        try {
+            p = DbaPlot.parse(line);
+        } catch (IllegalArgumentException e) {
+            return Reply.error(ErrorCode.BAD_REQUEST, e.getMessage());
+        }
+        Optional<Attachment> attached = request.attachment();
+        if (attached.isEmpty() || attached.get().files(1).isEmpty()) {
+            return Reply.error(ErrorCode.BAD_REQUEST, "vis:file found no file '" + p.file() + "' attached: it must be in the"
+                    + " server's download directory (?dlfiles)");
+        }
+        byte[] data;
+        try {
+            data = p.data(attached.get().files(1).get(0));
+        } catch (DataFormatException e) {
+            return Reply.error(ErrorCode.BAD_REQUEST, p.file() + ": " + e.getMessage());
+        }
+        return plot(request, VisCommand.parse("vis:" + p.output() + ".dat out=" + p.output()),
+                new Attachment(p.output() + ".dat", data));
+    }
+
+    /** {@code vis:file NAME ...}: the server attaches NAME from its download directory. */
+    @Override
+    protected List<String> downloadPrefixes() {
+        return List.of(DbaPlot.PREFIX);
     }
 
     private Reply plot(Request request, VisCommand vis, Attachment file) throws Exception {

@@ -13,8 +13,13 @@ import java.util.List;
  * @param legend {@code % legend: a | b | c}, one name per series
  * @param width  {@code % size: WIDTHxHEIGHT}, pixels; 0 when not given
  * @param height as {@code width}
+ * @param style  {@code % plot: xy|time|depth|track|profile}: how to draw (docs/datavis.md); null for xy
+ * @param mark   {@code % mark: text}: a label for the last point (a track's newest fix), or null
  */
-public record PlotLabels(String title, String xLabel, String yLabel, List<String> legend, int width, int height) {
+public record PlotLabels(String title, String xLabel, String yLabel, List<String> legend, int width, int height,
+                         String style, String mark) {
+    /** The drawing styles of {@code % plot:}. */
+    public static final List<String> STYLES = List.of("xy", "time", "depth", "track", "profile");
     /** Default picture size, as MATLAB's default figure prints at 100 dpi. */
     public static final int DEFAULT_WIDTH = 800;
     public static final int DEFAULT_HEIGHT = 600;
@@ -26,10 +31,20 @@ public record PlotLabels(String title, String xLabel, String yLabel, List<String
     /** Nothing given. */
     public static final PlotLabels NONE = new PlotLabels(null, null, null, null, 0, 0);
 
+    /** Labels of the default (xy) style without a mark. */
+    public PlotLabels(String title, String xLabel, String yLabel, List<String> legend, int width, int height) {
+        this(title, xLabel, yLabel, legend, width, height, null, null);
+    }
+
     public PlotLabels {
         title = clean(title);
         xLabel = clean(xLabel);
         yLabel = clean(yLabel);
+        style = clean(style);
+        mark = clean(mark);
+        if (style != null && !STYLES.contains(style)) {
+            throw new IllegalArgumentException("'% plot: " + style + "' is not one of " + String.join(", ", STYLES));
+        }
         if (legend != null) {
             List<String> names = new ArrayList<>();
             for (String n : legend) {
@@ -47,7 +62,8 @@ public record PlotLabels(String title, String xLabel, String yLabel, List<String
     public PlotLabels or(PlotLabels other) {
         return new PlotLabels(title != null ? title : other.title, xLabel != null ? xLabel : other.xLabel,
                 yLabel != null ? yLabel : other.yLabel, legend != null ? legend : other.legend,
-                width != 0 ? width : other.width, width != 0 ? height : other.height);
+                width != 0 ? width : other.width, width != 0 ? height : other.height,
+                style != null ? style : other.style, mark != null ? mark : other.mark);
     }
 
     public int widthOrDefault() {

@@ -70,13 +70,20 @@ public final class PlotRenderer {
                 ? new Exact(series, (int) summary.rows())
                 : new M4(series, 2 * width, summary.rows());
         long[] index = {0};
+        double[] last = {Double.NaN, Double.NaN};
+        double xScale = PlotStyles.xScale(labels); // seconds to the milliseconds of a date axis
         try (BufferedReader in = Files.newBufferedReader(dataFile, StandardCharsets.UTF_8)) {
             DataFile.parse(in, (v, t) -> {
                 long i = index[0]++;
-                double x = columns == 1 ? i + 1 : v[0];
+                double x = (columns == 1 ? i + 1 : v[0]) * xScale;
                 for (int s = 0; s < series; s++) {
                     double y = columns == 1 ? v[0] : v[s + 1];
-                    collector.add(s, i, finite(x) && finite(y) ? x : Double.NaN, finite(x) && finite(y) ? y : Double.NaN);
+                    boolean ok = finite(x) && finite(y);
+                    collector.add(s, i, ok ? x : Double.NaN, ok ? y : Double.NaN);
+                    if (ok) {
+                        last[0] = x;
+                        last[1] = y;
+                    }
                 }
             });
         }
@@ -98,6 +105,7 @@ public final class PlotRenderer {
         JFreeChart chart = ChartFactory.createXYLineChart(nz(labels.title()), nz(labels.xLabel()), nz(labels.yLabel()),
                 dataset, PlotOrientation.VERTICAL, legend, false, false);
         style(chart, series);
+        PlotStyles.apply(chart, labels, dataset, last[0], last[1], width, height);
         return new Rendered(jpeg(chart, width, height), summary.rows(), series, points);
     }
 

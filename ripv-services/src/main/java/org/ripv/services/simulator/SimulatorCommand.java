@@ -46,6 +46,9 @@ public final class SimulatorCommand implements Callable<Integer> {
     @Option(names = "--dir", paramLabel = "DIR", description = "The glider's files (default: a temporary directory with sample logs).")
     Path dir;
 
+    @Option(names = "--files", paramLabel = "DIR", description = "Copy DIR's files (e.g. Slocum .mrg/DBA files) onto the glider at start.")
+    Path seedFiles;
+
     @Option(names = "--bind", paramLabel = "ADDRESS",
             description = "Listen on this address only (default 127.0.0.1: this machine; 0.0.0.0 for every interface).")
     String bind;
@@ -87,6 +90,13 @@ public final class SimulatorCommand implements Callable<Integer> {
         }
         Path files = dir != null ? dir : Files.createTempDirectory("ripv-glider");
         try (GliderSimulator sim = new GliderSimulator(files, Duration.ofSeconds(submergeSeconds), YmodemConfig.lrzsz())) {
+            if (seedFiles != null) {
+                try (var list = Files.list(seedFiles)) {
+                    for (Path f : list.filter(Files::isRegularFile).toList()) {
+                        Files.copy(f, files.resolve(f.getFileName().toString()), java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+                    }
+                }
+            }
             if (target != null) {
                 sim.call(target[0], Integer.parseInt(target[1]), name, Duration.ofSeconds(diveSeconds),
                         Duration.ofSeconds(surfaceSeconds));

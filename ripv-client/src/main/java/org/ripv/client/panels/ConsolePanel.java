@@ -1,0 +1,190 @@
+package org.ripv.client.panels;
+
+import java.awt.BorderLayout;
+import java.awt.Font;
+import java.time.Instant;
+import java.util.List;
+import javax.swing.BorderFactory;
+import javax.swing.JButton;
+import javax.swing.JLabel;
+import javax.swing.JTextField;
+import javax.swing.event.DocumentEvent;
+import javax.swing.event.DocumentListener;
+import javax.swing.JPanel;
+import javax.swing.JScrollPane;
+import javax.swing.JTextArea;
+import javax.swing.Timer;
+import org.ripv.client.managers.ClientModel;
+import org.ripv.client.managers.ConsoleModel;
+import org.ripv.client.managers.GuiManager;
+import org.ripv.client.managers.ServiceModel;
+import org.ripv.messages.ConsoleEntry;
+import org.ripv.messages.MailboxStatus;
+import org.ripv.messages.SessionState;
+
+/**
+ * The live console of the service's target MailBox (docs/sessions.md): everything the vehicle
+ * says, asked or not, commands with their users, transfers and events, as the server pushes
+ * them to every watcher; above it a badge with the call state and the time since last contact.
+ * The client watches the target from the moment it is picked; the command line stays in COM.
+ * "Older" fetches earlier lines from the server's transcript ({@code ?history}); the search
+ * field shows only the lines that contain its text.
+ */
+public final class ConsolePanel extends JPanel {
+    private final ClientModel model;
+    private final String service;
+    private final JLabel badge = new JLabel(" ");
+    private final JTextArea text = new JTextArea();
+    private final JTextField search = new JTextField(14);
+    private final JLabel matches = new JLabel();
+    private final Timer clock;
+    private String mailbox = "";
+    private long shownRevision = -1;
+    private SessionState serverState;
+
+    public ConsolePanel(String service, ClientModel model, GuiManager manager) {
+        super(new BorderLayout(4, 4));
+        this.service = service;
+        this.model = model;
+        setName("console");
+        setBorder(BorderFactory.createTitledBorder("Console — live"));
+        badge.setName("consoleBadge");
+        text.setName("consoleArea");
+        text.setEditable(false);
+        text.setFont(new Font(Font.MONOSPACED, Font.PLAIN, text.getFont().getSize()));
+        search.setName("consoleSearch");
+        search.setToolTipText("Show only the lines that contain this text");
+        search.getDocument().addDocumentListener(new DocumentListener() {
+            @Override
+            public void insertUpdate(DocumentEvent e) {
+                searchChanged();
+            }
+
+            @Override
+            public void removeUpdate(DocumentEvent e) {
+                searchChanged();
+            }
+
+            @Override
+            public void changedUpdate(DocumentEvent e) {
+                searchChanged();
+            }
+        });
+        JButton older = new JButton("Older");
+        older.setName("consoleOlder");
+        older.setToolTipText("Fetch earlier lines from the server's transcript (?history)");
+        older.addActionListener(e -> manager.loadHistory(mailbox));
+        JPanel top = new JPanel(new BorderLayout(4, 0));
+        JPanel tools = new JPanel(new java.awt.FlowLayout(java.awt.FlowLayout.RIGHT, 4, 0));
+        tools.add(matches);
+        tools.add(new JLabel("Find:"));
+        tools.add(search);
+        tools.add(older);
+        top.add(badge, BorderLayout.CENTER);
+        top.add(tools, BorderLayout.EAST);
+        add(top, BorderLayout.NORTH);
+        add(new JScrollPane(text), BorderLayout.CENTER);
+        model.console().addListener(changed -> {
+            if (changed.equals(mailbox)) {
+                repaintConsole();
+            }
+        });
+        // "last contact N min ago" moves on by itself.
+        clock = new Timer(30_000, e -> showBadge());
+        clock.start();
+    }
+
+    /** Follows the service's target and its status; on the event thread. */
+    public void update(ServiceModel m) {
+        String target = m.target();
+        serverState = m.mailboxes().stream().filter(s -> s.address().equals(target)).map(MailboxStatus::session)
+                .filter(java.util.Objects::nonNull).findFirst().orElse(null);
+        if (!target.equals(mailbox)) {
+            mailbox = target;
+            shownRevision = -1;
+            setBorder(BorderFactory.createTitledBorder("Console — live" + (target.isEmpty() ? "" : ": " + handle(target))));
+        }
+        repaintConsole();
+    }
+
+    private String handle(String address) {
+        return address.startsWith(service) ? address.substring(service.length()) : address;
+    }
+
+    private void repaintConsole() {
+        long rev = model.console().revision(mailbox);
+        if (rev != shownRevision) {
+            shownRevision = rev;
+            StringBuilder b = new StringBuilder();
+            String find = search.getText().strip().toLowerCase(java.util.Locale.ROOT);
+            List<ConsoleEntry> all = model.console().entries(mailbox);
+            int shown = 0;
+            for (ConsoleEntry e : all) {
+                String line = ConsoleModel.text(e);
+                if (find.isEmpty() || line.toLowerCase(java.util.Locale.ROOT).contains(find)) {
+                    b.append(line).append('\n');
+                    shown++;
+                }
+            }
+            matches.setText(find.isEmpty() ? "" : shown + " of " + all.size());
+            text.setText(b.toString());
+            text.setCaretPosition(text.getDocument().getLength());
+        }
+        showBadge();
+    }
+
+    /** The server's state for the MailBox, brought up to date by the console's own entries since. */
+    SessionState state() {
+        SessionState s = serverState;
+        List<ConsoleEntry> entries = model.console().entries(mailbox);
+        for (ConsoleEntry e : entries) {
+            if (s != null && e.time() <= s.lastContact()) {
+                continue;
+            }
+            SessionState.State st = s == null ? SessionState.State.UNKNOWN : s.state();
+            long contact = s == null ? 0 : s.lastContact();
+            int calls = s == null ? 0 : s.calls();
+            if (e.kind() == ConsoleEntry.Kind.EVENT) {
+                switch (e.event()) {
+                    case SURFACED -> {
+                        st = SessionState.State.ON_CALL;
+                        calls++;
+                    }
+                    case DIVED -> st = SessionState.State.DIVED;
+                    case LINK_LOST -> st = SessionState.State.LOST;
+                    default -> { }
+                }
+            }
+            if (e.kind() != ConsoleEntry.Kind.COMMAND) {
+                contact = Math.max(contact, e.time());
+            }
+            s = new SessionState(st, contact, e.lat() != null ? e.lat() : s == null ? null : s.lat(),
+                    e.lon() != null ? e.lon() : s == null ? null : s.lon(), calls, e.event() != null ? e.event() : s == null ? null : s.lastEvent());
+        }
+        return s;
+    }
+
+    private void showBadge() {
+        String b = ConsoleModel.badge(state(), Instant.now());
+        badge.setText(b.isEmpty() ? (mailbox.isEmpty() ? "no MailBox picked" : "nothing heard from it yet") : b);
+    }
+
+    private void searchChanged() {
+        shownRevision = -1;
+        repaintConsole();
+    }
+
+    public String consoleText() {
+        return text.getText();
+    }
+
+    public String badgeText() {
+        return badge.getText();
+    }
+
+    @Override
+    public void removeNotify() {
+        clock.stop();
+        super.removeNotify();
+    }
+}

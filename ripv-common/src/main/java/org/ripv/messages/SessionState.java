@@ -1,0 +1,37 @@
+package org.ripv.messages;
+
+import java.io.Serializable;
+
+/**
+ * What the server knows of a vehicle MailBox's calls, derived from the events its service
+ * publishes (docs/sessions.md). Carried in {@link MailboxStatus#session()}.
+ *
+ * @param state       on call, dived, lost, or unknown (no event seen yet)
+ * @param lastContact epoch milliseconds of the last console entry from the vehicle, or 0
+ * @param lat         the last position's latitude (decimal degrees), or null
+ * @param lon         the last position's longitude, or null
+ * @param calls       how many calls (SURFACED events) the server has seen
+ * @param lastEvent   the last event, or null
+ */
+public record SessionState(State state, long lastContact, Double lat, Double lon, int calls, VehicleEvent lastEvent)
+        implements Serializable {
+
+    /** A vehicle MailBox's call state. */
+    public enum State {
+        UNKNOWN, ON_CALL, DIVED, LOST;
+
+        /** Lower case with a space, for people: {@code on call}. */
+        public String words() {
+            return name().toLowerCase(java.util.Locale.ROOT).replace('_', ' ');
+        }
+    }
+
+    public SessionState {
+        state = state == null ? State.UNKNOWN : state;
+    }
+
+    /** True when a position is known. */
+    public boolean hasPosition() {
+        return lat != null && lon != null;
+    }
+}

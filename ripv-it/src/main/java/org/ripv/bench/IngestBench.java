@@ -1,0 +1,363 @@
+package org.ripv.bench;
+
+import java.io.ByteArrayInputStream;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.sql.Connection;
+import java.sql.DriverManager;
+import java.sql.PreparedStatement;
+import java.sql.ResultSet;
+import java.sql.Statement;
+import java.sql.Timestamp;
+import java.time.Duration;
+import java.time.Instant;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Calendar;
+import java.util.Comparator;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Random;
+import java.util.TimeZone;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
+import java.util.stream.Stream;
+import org.ripv.client.handlers.ClientSocketHandler;
+import org.ripv.messages.Attachment;
+import org.ripv.messages.Header;
+import org.ripv.messages.IdBadge;
+import org.ripv.messages.IncomingServiceMessage;
+import org.ripv.messages.OutgoingServerMessage;
+import org.ripv.messages.OutgoingServiceMessage;
+import org.ripv.messages.Priority;
+import org.ripv.messages.Status;
+import org.ripv.server.RIPVServer;
+import org.ripv.server.ServerConfig;
+import org.ripv.server.permit.PermitFile;
+import org.ripv.service.ServiceConnector;
+import org.ripv.service.ServiceOptions;
+import org.ripv.services.database.DatabaseServer;
+import org.ripv.services.database.DatabaseTarget;
+import org.ripv.services.database.EmbeddedDatabase;
+import org.ripv.services.database.QueryLimits;
+import org.ripv.services.datavis.DataVisServer;
+import org.ripv.services.ingest.DbaIngest;
+import org.ripv.services.ingest.DbaReader;
+
+/**
+ * {@code ./ripv bench ingest} (issue 13; a measurement, not a timed test), on embedded Derby:
+ * <ol>
+ *   <li>{@code ingest} of a 1.2 MB, 2,136-sensor DBA file and of a 100,000-row, 30-sensor one
+ *       through the DatabaseServer in-process (attachment, strict parse, SHA-256, sensors, batch
+ *       inserts, commit), in values stored per second, against <b>direct JDBC</b>: the same
+ *       values, parsed beforehand, batch-inserted into the same schema in one transaction;</li>
+ *   <li>{@code vis:track} of 100,000 positions end to end: client socket → RIPVServer → RMI →
+ *       DatabaseServer query → server → RMI → DataVisServer built-in worker → JPEG back at the client.</li>
+ * </ol>
+ * Options: {@code --runs N} (default 2), {@code --track-runs N} (default 3), {@code --track-only}.
+ */
+public final class IngestBench {
+    private static final Calendar UTC = Calendar.getInstance(TimeZone.getTimeZone("UTC"));
+
+    private IngestBench() {}
+
+    public static void main(String[] args) throws Exception {
+        int runs = intOption(args, "--runs", 2);
+        int trackRuns = intOption(args, "--track-runs", 3);
+        boolean trackOnly = java.util.Arrays.asList(args).contains("--track-only");
+        Path dir = Files.createTempDirectory("ripv-ingestbench");
+        try {
+            if (trackOnly) {
+                DatabaseTarget db = EmbeddedDatabase.prepare(dir.resolve("database"), "TTY1");
+                track(dir, db, new QueryLimits(200_000, 600, 64L * 1024 * 1024), trackRuns);
+            } else {
+                run(dir, runs, trackRuns);
+            }
+        } finally {
+            deleteTree(dir);
+        }
+        System.exit(0);
+    }
+
+    private static void run(Path dir, int runs, int trackRuns) throws Exception {
+        DatabaseTarget db = EmbeddedDatabase.prepare(dir.resolve("database"), "TTY1");
+        QueryLimits limits = new QueryLimits(200_000, 600, 64L * 1024 * 1024);
+        DatabaseServer local = new DatabaseServer("localhost", List.of(db), limits);
+        local.start();
+        BlockingQueue<OutgoingServiceMessage> replies = new LinkedBlockingQueue<>();
+        local.replyTo(replies::add);
+        System.out.printf(Locale.ROOT, "IngestBench: embedded Derby, %d run(s) per file, %s%n", runs,
+                System.getProperty("java.vm.name") + " " + System.getProperty("java.version"));
+        byte[] wide = generate("wide", 2136, 140, 0.03, false, 1);
+        byte[] long30 = generate("long", 30, 100_000, 0.5, false, 2);
+        System.out.printf(Locale.ROOT, "%-34s %9s %10s %10s %12s %7s%n", "file", "values", "ingest ms", "direct ms",
+                "ingest v/s", "ratio");
+        try (Connection c = DriverManager.getConnection(db.url(), db.user(), db.password())) {
+            ingest(local, replies, "warm-up.mrg", generate("warmup", 40, 2000, 0.5, false, 3)); // creates the schema too
+            clear(c);
+            measure(c, local, replies, "2,136 sensors, 1.2 MB", wide, runs);
+            measure(c, local, replies, "30 sensors, 100,000 rows", long30, runs);
+        } finally {
+            local.stop();
+        }
+        track(dir, db, limits, trackRuns);
+    }
+
+    private static void measure(Connection c, DatabaseServer local, BlockingQueue<OutgoingServiceMessage> replies,
+                                String what, byte[] file, int runs) throws Exception {
+        ingest(local, replies, "warm-up-" + what.length() + ".mrg", file); // its sensors are known, the JIT is warm
+        clear(c);
+        Parsed p = parse(c, file);
+        double[] viaService = new double[runs];
+        double[] direct = new double[runs];
+        for (int i = 0; i < runs; i++) {
+            long t0 = System.nanoTime();
+            String text = ingest(local, replies, "bench-" + i + ".mrg", file);
+            viaService[i] = (System.nanoTime() - t0) / 1e6;
+            if (!text.contains(p.values.length + " values")) {
+                throw new IllegalStateException("the ingest stored something else than the " + p.values.length
+                        + " values parsed: " + text);
+            }
+            clear(c);
+            long t1 = System.nanoTime();
+            directInsert(c, p);
+            direct[i] = (System.nanoTime() - t1) / 1e6;
+            clear(c);
+        }
+        double s = median(viaService);
+        double d = median(direct);
+        System.out.printf(Locale.ROOT, "%-34s %,9d %10.0f %10.0f %,12.0f %6.2fx  (%.2f MB; raw ingest %s, direct %s)%n",
+                what, p.values.length, s, d, p.values.length / (s / 1000), s / d, file.length / 1e6,
+                Arrays.toString(viaService), Arrays.toString(direct));
+    }
+
+    /** The file's values with their row, sensor id and time, read before the clock starts. */
+    private record Parsed(int[] rowNo, int[] sensor, double[] time, double[] values, String vehicle) {}
+
+    private static Parsed parse(Connection c, byte[] file) throws Exception {
+        Map<String, Integer> ids = new HashMap<>();
+        try (Statement st = c.createStatement(); ResultSet rs = st.executeQuery("SELECT sensor_id, name, unit FROM sensor_def")) {
+            while (rs.next()) {
+                ids.put(rs.getString(2) + "/" + rs.getString(3), rs.getInt(1));
+            }
+        }
+        List<int[]> meta = new ArrayList<>();
+        List<double[]> vals = new ArrayList<>();
+        String vehicle;
+        try (DbaReader r = new DbaReader(new ByteArrayInputStream(file))) {
+            vehicle = r.header().vehicle();
+            int[] sensorIds = r.header().sensors().stream().mapToInt(s -> ids.get(s.name() + "/" + s.unit())).toArray();
+            double[] row = new double[sensorIds.length];
+            while (r.next(row)) {
+                double t = r.time(row);
+                for (int i = 0; i < row.length; i++) {
+                    if (!Double.isNaN(row[i])) {
+                        meta.add(new int[] {(int) r.rows(), sensorIds[i]});
+                        vals.add(new double[] {t, row[i]});
+                    }
+                }
+            }
+        }
+        int n = meta.size();
+        int[] rowNo = new int[n];
+        int[] sensor = new int[n];
+        double[] time = new double[n];
+        double[] values = new double[n];
+        for (int i = 0; i < n; i++) {
+            rowNo[i] = meta.get(i)[0];
+            sensor[i] = meta.get(i)[1];
+            time[i] = vals.get(i)[0];
+            values[i] = vals.get(i)[1];
+        }
+        return new Parsed(rowNo, sensor, time, values, vehicle);
+    }
+
+    /** The baseline: one DATA_FILE row and every value batch-inserted, one transaction. */
+    private static void directInsert(Connection c, Parsed p) throws Exception {
+        c.setAutoCommit(false);
+        long fileId;
+        try (PreparedStatement st = c.prepareStatement("INSERT INTO data_file (vehicle, name, sensor_count, row_count,"
+                + " value_count, position_count, sha256, ingested) VALUES (?, 'direct', 0, 0, 0, 0, ?, ?)",
+                Statement.RETURN_GENERATED_KEYS)) {
+            st.setString(1, p.vehicle);
+            st.setString(2, DbaIngest.sha256(Long.toString(System.nanoTime()).getBytes(StandardCharsets.US_ASCII)));
+            st.setTimestamp(3, Timestamp.from(Instant.now()), UTC);
+            st.executeUpdate();
+            try (ResultSet k = st.getGeneratedKeys()) {
+                k.next();
+                fileId = k.getLong(1);
+            }
+        }
+        try (PreparedStatement ins = c.prepareStatement(
+                "INSERT INTO reading (file_id, row_no, sensor_id, vehicle, t, value) VALUES (?, ?, ?, ?, ?, ?)")) {
+            ins.setLong(1, fileId);
+            ins.setString(4, p.vehicle);
+            for (int i = 0; i < p.values.length; i++) {
+                ins.setInt(2, p.rowNo[i]);
+                ins.setInt(3, p.sensor[i]);
+                long micros = Math.round(p.time[i] * 1e6);
+                ins.setTimestamp(5, Timestamp.from(Instant.ofEpochSecond(Math.floorDiv(micros, 1_000_000L),
+                        Math.floorMod(micros, 1_000_000L) * 1000)), UTC);
+                ins.setDouble(6, p.values[i]);
+                ins.addBatch();
+                if (i % 5000 == 4999) {
+                    ins.executeBatch();
+                }
+            }
+            ins.executeBatch();
+        }
+        c.commit();
+        c.setAutoCommit(true);
+    }
+
+    private static void clear(Connection c) throws Exception {
+        try (Statement st = c.createStatement()) {
+            st.execute("TRUNCATE TABLE reading");
+            st.execute("DELETE FROM data_file");
+        }
+    }
+
+    private static String ingest(DatabaseServer service, BlockingQueue<OutgoingServiceMessage> replies, String name,
+                                 byte[] file) throws Exception {
+        service.accept(new IncomingServiceMessage(new Header(1, new IdBadge("123456", "bench"), List.of("operators"),
+                service.name().toString(), service.name().mailbox("TTY1").toString(), "ingest " + name, Priority.NORMAL,
+                Attachment.bundle(List.of(new Attachment(name, file))))));
+        while (true) {
+            OutgoingServiceMessage r = replies.poll(10, TimeUnit.MINUTES);
+            if (r == null) {
+                throw new IllegalStateException("no reply to ingest " + name);
+            }
+            if (r.status().isFinal()) {
+                if (r.status() != Status.OK) {
+                    throw new IllegalStateException("ingest failed: " + r.footer().replyText());
+                }
+                return r.footer().replyText();
+            }
+        }
+    }
+
+    /** vis:track of 100,000 positions through the whole system. */
+    private static void track(Path dir, DatabaseTarget db, QueryLimits limits, int runs) throws Exception {
+        ServerConfig config = ServerConfig.forTests(dir.resolve("server"));
+        RIPVServer server = new RIPVServer(config);
+        server.start();
+        PermitFile.setUser(config.dataDir().resolve("permit.txt"), "bench", "bench-password".toCharArray(),
+                List.of("operators"), 1000);
+        server.reloadPermits();
+        ServiceOptions options = new ServiceOptions("localhost", server.registryPort(),
+                Files.readString(server.secretFile()).trim(), 0, Duration.ofSeconds(1));
+        DatabaseServer dbService = new DatabaseServer("localhost", List.of(db), limits);
+        DataVisServer vis = new DataVisServer("localhost", DataVisServer.Config.of(dir.resolve("vis")));
+        ServiceConnector c1 = ServiceConnector.connect(dbService, options);
+        ServiceConnector c2 = ServiceConnector.connect(vis, options);
+        try (ClientSocketHandler client = ClientSocketHandler.connect("localhost", server.port())) {
+            if (!c1.awaitRegistered(Duration.ofSeconds(30)) || !c2.awaitRegistered(Duration.ofSeconds(30))) {
+                throw new IllegalStateException("the services did not register");
+            }
+            client.login("bench", "bench-password".toCharArray());
+            String dbBox = dbService.name().mailbox("TTY1").toString();
+            String visBox = vis.name().mailbox("TTY1").toString();
+            byte[] file = generate("track", 4, 100_000, 1.0, true, 4);
+            Path dl = config.dataDir().resolve("download");
+            Files.createDirectories(dl);
+            Files.write(dl.resolve("track.mrg"), file);
+            OutgoingServerMessage in = client.call(dbBox, "ingest track.mrg", Priority.NORMAL, Duration.ofMinutes(10), null);
+            if (in.status() != Status.OK) {
+                throw new IllegalStateException("ingest of the track failed: " + in.footer().replyText());
+            }
+            double[] ms = new double[runs];
+            String text = "";
+            for (int i = -1; i < runs; i++) {
+                long t0 = System.nanoTime();
+                OutgoingServerMessage r = client.call(visBox, "vis:track track", Priority.NORMAL, Duration.ofMinutes(5), null);
+                long t1 = System.nanoTime();
+                if (r.status() != Status.OK) {
+                    throw new IllegalStateException("vis:track failed: " + r.footer().replyText());
+                }
+                text = r.footer().replyText();
+                if (i >= 0) {
+                    ms[i] = (t1 - t0) / 1e6;
+                }
+            }
+            System.out.printf(Locale.ROOT, "vis:track of 100,000 positions end to end: median %.0f ms (target < 1000 ms; raw %s)%n",
+                    median(ms), Arrays.toString(ms));
+            System.out.println("  last reply: " + text);
+        } finally {
+            c1.close();
+            c2.close();
+            dbService.stop();
+            vis.stop();
+            server.stop();
+        }
+    }
+
+    /**
+     * A DBA file: m_present_time, m_gps_lat, m_gps_lon, m_depth, then s_4...; each other cell
+     * present with probability {@code fill}; a GPS fix on every row when {@code fixes}, else every 50th.
+     */
+    static byte[] generate(String glider, int sensors, int rows, double fill, boolean fixes, long seed) {
+        StringBuilder b = new StringBuilder(rows * sensors * 6 + 4096);
+        b.append("dbd_label: DBD_ASC(dinkum_binary_data_ascii)file\nencoding_ver: 2\nnum_ascii_tags: 14\nall_sensors: 0\n");
+        b.append("filename: ").append(glider).append("-2024-100-1-0\nthe8x3_filename: 00010000\nfilename_extension: sbd\n");
+        b.append("filename_label: ").append(glider).append("-2024-100-1-0-sbd(00010000)\nmission_name: BENCH.MI\n");
+        b.append("fileopen_time: Mon_Apr__8_12:00:00_2024\nsensors_per_cycle: ").append(sensors).append('\n');
+        b.append("num_label_lines: 3\nnum_segments: 1\nsegment_filename_0: ").append(glider).append("-2024-100-1-0\n");
+        StringBuilder names = new StringBuilder("m_present_time m_gps_lat m_gps_lon m_depth");
+        StringBuilder units = new StringBuilder("timestamp lat lon m");
+        StringBuilder bytes = new StringBuilder("8 8 8 4");
+        for (int i = 4; i < sensors; i++) {
+            names.append(" s_").append(i);
+            units.append(" nodim");
+            bytes.append(" 4");
+        }
+        b.append(names).append(" \n").append(units).append(" \n").append(bytes).append(" \n");
+        Random rnd = new Random(seed);
+        double t = 1_712_577_600;
+        for (int r = 0; r < rows; r++) {
+            t += 2.5;
+            b.append(String.format(Locale.ROOT, "%.5f", t));
+            boolean fix = fixes || r % 50 == 0;
+            b.append(' ').append(fix ? String.format(Locale.ROOT, "%.4f", 4130 + r * 0.0001 % 20) : "NaN");
+            b.append(' ').append(fix ? String.format(Locale.ROOT, "%.4f", -7040 - r * 0.00013 % 15) : "NaN");
+            b.append(' ').append(String.format(Locale.ROOT, "%.2f", Math.abs(Math.sin(r / 200.0)) * 900));
+            for (int i = 4; i < sensors; i++) {
+                b.append(' ');
+                if (rnd.nextDouble() < fill) {
+                    b.append(rnd.nextInt(1_000_000) / 1000.0);
+                } else {
+                    b.append("NaN");
+                }
+            }
+            b.append(" \n");
+        }
+        return b.toString().getBytes(StandardCharsets.US_ASCII);
+    }
+
+    private static double median(double[] v) {
+        double[] s = v.clone();
+        Arrays.sort(s);
+        return s.length == 0 ? Double.NaN : s.length % 2 == 1 ? s[s.length / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
+    }
+
+    private static int intOption(String[] args, String name, int dflt) {
+        for (int i = 0; i + 1 < args.length; i++) {
+            if (args[i].equals(name)) {
+                return Integer.parseInt(args[i + 1]);
+            }
+        }
+        return dflt;
+    }
+
+    private static void deleteTree(Path dir) throws IOException {
+        try (Stream<Path> s = Files.walk(dir)) {
+            for (Path p : s.sorted(Comparator.reverseOrder()).toList()) {
+                Files.deleteIfExists(p);
+            }
+        }
+    }
+}

@@ -1,0 +1,53 @@
+package org.ripv.server;
+
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import org.ripv.messages.Attachment;
+import org.ripv.messages.ServiceDescriptor;
+import org.ripv.server.files.FileStore;
+import org.ripv.server.files.FileTooLargeException;
+
+/**
+ * Attaches download-directory files to a command whose first word is one of the service's
+ * {@link ServiceDescriptor#downloadPrefixes()} ({@code ingest NAME...}, {@code vis:file NAME x=...}):
+ * every argument up to the first {@code option=value} names a file, and all of them travel as one
+ * {@link Attachment#bundle}.
+ */
+final class DownloadAttachments {
+    /** The most one command may attach, all files together. */
+    static final long MAX_TOTAL = 256L * 1024 * 1024;
+    static final int MAX_FILES = 1000;
+
+    private DownloadAttachments() {}
+
+    /** The bundle for {@code body}, or null when its first word is no download prefix of the service. */
+    static Attachment forCommand(FileStore files, ServiceDescriptor d, String body) throws IOException {
+        String[] words = body.trim().split("\\s+");
+        String first = words[0].toLowerCase(Locale.ROOT);
+        if (d.downloadPrefixes().stream().noneMatch(p -> p.toLowerCase(Locale.ROOT).equals(first))) {
+            return null;
+        }
+        if (words.length < 2) {
+            throw new IllegalArgumentException("'" + words[0] + "' needs the names of files in the download directory (?dlfiles)");
+        }
+        if (words.length - 1 > MAX_FILES) {
+            throw new IllegalArgumentException("at most " + MAX_FILES + " files in one '" + words[0] + "'");
+        }
+        List<Attachment> out = new ArrayList<>();
+        long total = 0;
+        for (int i = 1; i < words.length; i++) {
+            if (words[i].indexOf('=') > 0) {
+                break; // options follow the names
+            }
+            long size = (Long) files.readDownload(words[i], 0, 0)[0];
+            total += size;
+            if (total > MAX_TOTAL) {
+                throw new FileTooLargeException("the files named come to more than " + MAX_TOTAL + " bytes; name fewer at a time");
+            }
+            out.add(new Attachment(words[i], (byte[]) files.readDownload(words[i], 0, (int) size)[1]));
+        }
+        return Attachment.bundle(out);
+    }
+}

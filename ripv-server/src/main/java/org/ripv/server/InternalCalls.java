@@ -1,0 +1,108 @@
+package org.ripv.server;
+
+import java.io.IOException;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Consumer;
+import org.ripv.messages.Attachment;
+import org.ripv.messages.ErrorCode;
+import org.ripv.messages.Footer;
+import org.ripv.messages.Header;
+import org.ripv.messages.IdBadge;
+import org.ripv.messages.Ids;
+import org.ripv.messages.IncomingServiceMessage;
+import org.ripv.messages.OutgoingServerMessage;
+import org.ripv.messages.Priority;
+import org.ripv.naming.MailboxAddress;
+import org.ripv.naming.MalformedNameException;
+import org.ripv.server.dataloop.ServiceCalls;
+
+/**
+ * The server's own requests to services ({@link ServiceCalls}): forwarded like a client's, with
+ * client id {@code 000000}; {@link RIPVServer#reply} hands their replies here instead of to a socket.
+ */
+final class InternalCalls implements ServiceCalls {
+    private record Waiter(CompletableFuture<Footer> done, Consumer<Footer> progress) {}
+
+    private final RIPVServer server;
+    private final AtomicLong ids = new AtomicLong();
+    private final Map<Long, Waiter> waiting = new ConcurrentHashMap<>();
+
+    InternalCalls(RIPVServer server) {
+        this.server = server;
+    }
+
+    @Override
+    public List<String> services(String sid) {
+        return server.services().stream().filter(r -> r.descriptor().sid().equals(sid)).map(r -> r.descriptor().name()).toList();
+    }
+
+    @Override
+    public boolean permitted(String user, String mailbox, String body) {
+        try {
+            MailboxAddress a = MailboxAddress.parse(mailbox);
+            return server.permits().user(user).map(u -> server.permits().decide(u, a.service().service(), a.handle(), body)
+                    .allowed()).orElse(false);
+        } catch (MalformedNameException e) {
+            return false;
+        }
+    }
+
+    @Override
+    public CompletableFuture<Footer> call(String mailbox, String body, String user, List<String> roles, Attachment attachment,
+                                          Consumer<Footer> progress) {
+        CompletableFuture<Footer> done = new CompletableFuture<>();
+        MailboxAddress address;
+        try {
+            address = MailboxAddress.parse(mailbox);
+        } catch (MalformedNameException e) {
+            done.complete(Footer.error(Ids.FID_NONE, ErrorCode.UNKNOWN_MAILBOX, e.getMessage()));
+            return done;
+        }
+        Optional<ServiceReference> ref = server.service(address.service().toString());
+        if (ref.isEmpty()) {
+            done.complete(Footer.error(Ids.FID_NONE, ErrorCode.UNKNOWN_SERVICE, "no service " + address.service()
+                    + " is registered"));
+            return done;
+        }
+        Attachment a = attachment;
+        if (a == null) {
+            try {
+                a = DownloadAttachments.forCommand(server.files(), ref.get().descriptor(), body);
+            } catch (IOException | IllegalArgumentException e) {
+                done.complete(Footer.error(ref.get().descriptor().sid(), ErrorCode.BAD_FILE_NAME, e.getMessage()));
+                return done;
+            }
+        }
+        long id = ids.incrementAndGet();
+        waiting.put(id, new Waiter(done, progress == null ? f -> { } : progress));
+        Header h = new Header(id, new IdBadge(IdBadge.SERVER.clientId(), user), roles, ref.get().descriptor().name(), mailbox,
+                body, Priority.NORMAL, a);
+        server.forward(ref.get(), new IncomingServiceMessage(h));
+        return done;
+    }
+
+    /** Takes a reply meant for one of our requests; false when it is a client's. */
+    boolean accept(OutgoingServerMessage reply) {
+        if (!reply.header().origin().clientId().equals(IdBadge.SERVER.clientId())) {
+            return false;
+        }
+        long id = reply.header().messageId();
+        if (!reply.status().isFinal()) {
+            Waiter w = waiting.get(id);
+            if (w != null) {
+                w.progress().accept(reply.footer());
+            }
+            return true;
+        }
+        Waiter w = waiting.remove(id);
+        if (w != null) {
+            w.done().complete(reply.footer());
+        }
+        return true;
+    }
+}

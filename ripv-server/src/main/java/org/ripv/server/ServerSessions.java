@@ -1,0 +1,90 @@
+package org.ripv.server;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.Map;
+import java.util.Optional;
+import java.util.function.Function;
+import java.util.function.Supplier;
+import org.ripv.messages.OutgoingServerMessage;
+import org.ripv.messages.VehicleEvent;
+import org.ripv.server.handlers.SocketHandler;
+import org.ripv.server.notify.Notifier;
+import org.ripv.server.notify.NotifyCommands;
+import org.ripv.server.permit.PermitFile;
+import org.ripv.server.session.ConsoleCommands;
+import org.ripv.server.session.ConsoleHub;
+import org.ripv.server.session.Outlet;
+import org.ripv.wire.FrameCodec;
+
+/**
+ * The server's vehicle sessions wired together (docs/sessions.md): the console hub with its
+ * transcripts, the notifier, and the commands that reach them; RIPVServer only calls in here.
+ */
+final class ServerSessions implements AutoCloseable {
+    private final ConsoleHub console;
+    private final Notifier notifier;
+    private final ConsoleCommands consoleCommands;
+    private final NotifyCommands notifyCommands;
+
+    ServerSessions(Path dataDir, SessionOptions options, Supplier<PermitFile> permits,
+                   Function<String, Optional<SocketHandler>> clients, FrameCodec codec) throws IOException {
+        console = new ConsoleHub(dataDir.resolve("transcripts"), options.transcriptFileBytes(), options.keepDays(), codec::encode);
+        notifier = new Notifier(dataDir.resolve("notify").resolve("subscriptions.jsonl"), permits, options.smtp(),
+                options.notifyBackoff(), options.notifyTimeout());
+        console.onEvent(notifier::accept);
+        consoleCommands = new ConsoleCommands(console, permits, id -> clients.apply(id).map(ServerSessions::outlet),
+                RIPVServer.SERVER_SERVICE);
+        notifyCommands = new NotifyCommands(notifier, RIPVServer.SERVER_SERVICE);
+    }
+
+    private static Outlet outlet(SocketHandler h) {
+        return new Outlet() {
+            @Override
+            public boolean push(OutgoingServerMessage message, byte[] frame, Runnable written) {
+                return h.push(message, frame, written);
+            }
+
+            @Override
+            public void send(OutgoingServerMessage reply) {
+                h.send(reply);
+            }
+
+            @Override
+            public boolean isOpen() {
+                return !h.isClosed();
+            }
+        };
+    }
+
+    ConsoleHub console() {
+        return console;
+    }
+
+    ConsoleCommands consoleCommands() {
+        return consoleCommands;
+    }
+
+    NotifyCommands notifyCommands() {
+        return notifyCommands;
+    }
+
+    /** A client left: its watches go, and its locks are released (an event each). */
+    /** @return true when the client held operator locks (now released) */
+    boolean clientClosed(String clientId, Map<String, RIPVServer.OperatorLock> locks) {
+        console.clientClosed(clientId);
+        return locks.entrySet().removeIf(e -> {
+            boolean mine = e.getValue().clientId().equals(clientId);
+            if (mine && !e.getValue().expired()) {
+                console.serverEvent(e.getKey(), VehicleEvent.LOCK_RELEASED, e.getValue().user(), "its holder disconnected");
+            }
+            return mine;
+        });
+    }
+
+    @Override
+    public void close() {
+        notifier.close();
+        console.close();
+    }
+}

@@ -1,0 +1,168 @@
+package org.ripv.server.dataloop;
+
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.Consumer;
+import org.ripv.messages.FileBundle;
+import org.ripv.messages.FileData;
+import org.ripv.messages.FileListing;
+import org.ripv.messages.Footer;
+import org.ripv.messages.Ids;
+import org.ripv.messages.IncomingServerMessage;
+import org.ripv.messages.OutgoingServerMessage;
+import org.ripv.messages.Result;
+import org.ripv.messages.Status;
+import org.ripv.naming.MailboxAddress;
+import org.ripv.naming.Handles;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * Automatic ingest: when a SerialPortServer reply puts Slocum DBA files (recognised by their first
+ * line, not their names) in the download directory, the server sends {@code ingest NAME...} to a
+ * DatabaseServer MailBox on the fetching user's behalf, tells that user (PROGRESS), and adds the
+ * result to the download's own OK reply. On by default, per vehicle ({@link IngestSettings}).
+ */
+public final class DataLoop {
+    private static final Logger log = LoggerFactory.getLogger(DataLoop.class);
+    static final byte[] DBA_LABEL = "dbd_label: DBD_ASC(dinkum_binary_data_ascii)file".getBytes(StandardCharsets.US_ASCII);
+
+    /**
+     * The role the server's own ingest runs with: the DatabaseServer lets {@code db-writer} write
+     * (the fetching user may be an observer; the ingest is the server's act, not the user's SQL).
+     */
+    static final String INGEST_ROLE = "db-writer";
+
+    private final ServiceCalls calls;
+    private final IngestSettings settings;
+    private final PlotRequests plots;
+
+    public DataLoop(ServiceCalls calls, Path settingsFile) {
+        this.calls = calls;
+        this.settings = new IngestSettings(settingsFile);
+        this.plots = new PlotRequests(calls, this::database);
+    }
+
+    /**
+     * Takes over a plot from data ({@code vis:sql}, {@code vis:track}, {@code vis:depth},
+     * {@code vis:profile}) sent to a DataVisServer MailBox; false for anything else.
+     *
+     * @param sid the addressed service's SID
+     */
+    public boolean plot(IncomingServerMessage request, String sid, String mailbox, Consumer<OutgoingServerMessage> send) {
+        if (!sid.equals(Ids.SID_DATAVIS) || !PlotRequests.isPlot(request.header().body())) {
+            return false;
+        }
+        return plots.handle(request, mailbox, send);
+    }
+
+    /**
+     * Looks at a reply whose files the server has just stored.
+     *
+     * @param reply the reply as it would go to the client
+     * @param sent  the result the service sent (with the files' bytes)
+     * @param send  how to send replies to the client
+     * @return true when this took the reply over (it will send it, after the ingest)
+     */
+    public boolean downloaded(OutgoingServerMessage reply, Result sent, Consumer<OutgoingServerMessage> send) {
+        if (reply.status() != Status.OK || !reply.footer().serviceId().equals(Ids.SID_SERIAL)) {
+            return false;
+        }
+        List<FileData> files = sent instanceof FileData d ? List.of(d) : sent instanceof FileBundle b ? b.files() : List.of();
+        // the names the files were stored under (FOLDER/NAME), in the same order
+        List<FileListing.Entry> stored = reply.footer().result() instanceof FileListing l ? l.files() : List.of();
+        if (stored.size() != files.size()) {
+            return false;
+        }
+        String handle = handle(reply.header().mailboxAddress());
+        List<String> names = new ArrayList<>();
+        for (int i = 0; i < files.size(); i++) {
+            FileData f = files.get(i);
+            if (isDba(f.data()) && settings.enabled(vehicle(f.data()), handle)) {
+                names.add(stored.get(i).name());
+            }
+        }
+        if (names.isEmpty()) {
+            return false;
+        }
+        String database = database();
+        String user = reply.header().origin().user();
+        if (database == null) {
+            log.warn("not ingesting {} for {}: no DatabaseServer is registered", names, user);
+            send.accept(append(reply, "not ingested: no DatabaseServer is registered"));
+            return true;
+        }
+        String what = names.size() == 1 ? names.get(0) : names.size() + " DBA files";
+        send.accept(progress(reply, "ingesting " + what + " into " + database));
+        calls.call(database, "ingest " + String.join(" ", names), user, List.of(INGEST_ROLE), null, f -> { })
+                .whenComplete((f, e) -> {
+                    String text;
+                    if (e != null) {
+                        text = "not ingested: " + e;
+                    } else if (f.status() == Status.OK) {
+                        text = "ingested into " + database + ":\n" + f.replyText();
+                    } else {
+                        text = "not ingested (" + f.errorCode() + "): " + f.replyText();
+                    }
+                    log.info("automatic ingest of {} for {}: {}", names, user, text.replace('\n', ' '));
+                    send.accept(append(reply, text));
+                });
+        return true;
+    }
+
+    private String database() {
+        String configured = settings.database();
+        if (configured != null) {
+            return configured;
+        }
+        List<String> dbs = calls.services(Ids.SID_DATABASE);
+        return dbs.isEmpty() ? null : dbs.get(0) + Handles.platformDefault();
+    }
+
+    private static String handle(String mailbox) {
+        try {
+            return MailboxAddress.parse(mailbox).handle();
+        } catch (RuntimeException e) {
+            return null;
+        }
+    }
+
+    private static OutgoingServerMessage progress(OutgoingServerMessage reply, String text) {
+        Footer f = reply.footer();
+        return new OutgoingServerMessage(reply.header(), new Footer(f.serviceId(), Status.PROGRESS, null, f.route(), text, null));
+    }
+
+    private static OutgoingServerMessage append(OutgoingServerMessage reply, String text) {
+        Footer f = reply.footer();
+        return new OutgoingServerMessage(reply.header(), f.withText(f.replyText().isEmpty() ? text : f.replyText() + "\n" + text));
+    }
+
+    /** True when a file starts with the DBA label line. */
+    static boolean isDba(byte[] data) {
+        if (data.length <= DBA_LABEL.length) {
+            return false;
+        }
+        for (int i = 0; i < DBA_LABEL.length; i++) {
+            if (data[i] != DBA_LABEL[i]) {
+                return false;
+            }
+        }
+        byte next = data[DBA_LABEL.length];
+        return next == '\n' || next == '\r' || next == ' ';
+    }
+
+    /** The glider's name from the header's {@code filename:} tag (before the first '-'), or null. */
+    static String vehicle(byte[] data) {
+        String head = new String(data, 0, Math.min(data.length, 4096), StandardCharsets.ISO_8859_1);
+        for (String line : head.split("\r?\n")) {
+            if (line.startsWith("filename:")) {
+                String f = line.substring(9).strip();
+                int dash = f.indexOf('-');
+                return dash > 0 ? f.substring(0, dash) : f;
+            }
+        }
+        return null;
+    }
+}

@@ -1,0 +1,275 @@
+package org.ripv.server.dataloop;
+
+import java.time.Instant;
+import java.time.LocalDate;
+import java.time.LocalDateTime;
+import java.time.ZoneOffset;
+import java.time.format.DateTimeFormatter;
+import java.time.format.DateTimeParseException;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import java.util.Locale;
+import java.util.function.Consumer;
+import java.util.regex.Pattern;
+import org.ripv.messages.Attachment;
+import org.ripv.messages.ErrorCode;
+import org.ripv.messages.Footer;
+import org.ripv.messages.Ids;
+import org.ripv.messages.IncomingServerMessage;
+import org.ripv.messages.OutgoingServerMessage;
+import org.ripv.messages.Status;
+import org.ripv.messages.TableResult;
+
+/**
+ * Plots from data, orchestrated by the server: {@code vis:sql SELECT ...}, {@code vis:track
+ * VEHICLE [since=ISO-TIME]}, {@code vis:depth VEHICLE [since=]} and {@code vis:profile VEHICLE SENSOR
+ * [since=]} addressed to a DataVisServer MailBox. The server runs the query on a DatabaseServer
+ * MailBox as the user (with the user's roles, and only if the permit file lets the user send it
+ * there), turns the table into the data file of docs/datavis.md, and sends that to the DataVisServer
+ * as an ordinary {@code vis:NAME} with the file attached: the thesis's data.dat/info.dat exchange is
+ * unchanged for the workers. The JPEG comes back to the user and lands in the download directory.
+ */
+final class PlotRequests {
+    private static final Pattern VEHICLE = Pattern.compile("[A-Za-z0-9_.\\-]{1,64}");
+    private static final Pattern SENSOR = Pattern.compile("[A-Za-z0-9_]{1,64}");
+    private static final Pattern OUT = Pattern.compile("[A-Za-z0-9_\\-]{1,100}");
+    private static final DateTimeFormatter SQL_TIME = DateTimeFormatter.ofPattern("yyyy-MM-dd HH:mm:ss");
+
+    private final ServiceCalls calls;
+    private final java.util.function.Supplier<String> defaultDatabase;
+
+    PlotRequests(ServiceCalls calls, java.util.function.Supplier<String> defaultDatabase) {
+        this.calls = calls;
+        this.defaultDatabase = defaultDatabase;
+    }
+
+    /** A parsed plot request. */
+    record Plan(String kind, String sql, String output, List<String> labels, String vehicle, String database) {}
+
+    /** True when the body is one of the server-orchestrated plots. */
+    static boolean isPlot(String body) {
+        String b = body.strip().toLowerCase(Locale.ROOT);
+        return b.startsWith("vis:sql ") || b.startsWith("vis:track ") || b.startsWith("vis:depth ")
+                || b.startsWith("vis:profile ") || b.equals("vis:sql") || b.equals("vis:track") || b.equals("vis:depth")
+                || b.equals("vis:profile");
+    }
+
+    boolean handle(IncomingServerMessage request, String visMailbox, Consumer<OutgoingServerMessage> send) {
+        Plan plan;
+        try {
+            plan = parse(request.header().body().strip());
+        } catch (IllegalArgumentException e) {
+            send.accept(error(request, ErrorCode.BAD_REQUEST, e.getMessage()));
+            return true;
+        }
+        String user = request.header().origin().user();
+        if (plan.database() == null) {
+            send.accept(error(request, ErrorCode.UNKNOWN_SERVICE, "no DatabaseServer is registered to query for "
+                    + plan.kind()));
+            return true;
+        }
+        if (!calls.permitted(user, plan.database(), plan.sql())) {
+            send.accept(error(request, ErrorCode.FORBIDDEN, "user '" + user + "' may not query " + plan.database()
+                    + " for " + plan.kind()));
+            return true;
+        }
+        List<String> roles = request.header().roles();
+        send.accept(progress(request, "querying " + plan.database() + " for " + plan.kind()));
+        calls.call(plan.database(), plan.sql(), user, roles, null, f -> { }).whenComplete((f, e) -> {
+            try {
+                if (e != null) {
+                    send.accept(error(request, ErrorCode.INTERNAL, "the query failed: " + e));
+                } else if (f.status() != Status.OK || !(f.result() instanceof TableResult t)) {
+                    send.accept(error(request, f.status() == Status.ERROR ? f.errorCode() : ErrorCode.BAD_REQUEST,
+                            "the query for " + plan.kind() + " failed: " + (f.status() == Status.OK
+                                    ? "it is not a SELECT (no table came back)" : f.replyText())));
+                } else {
+                    plot(request, visMailbox, plan, t, send);
+                }
+            } catch (RuntimeException x) {
+                send.accept(error(request, ErrorCode.BAD_REQUEST, x.getMessage()));
+            }
+        });
+        return true;
+    }
+
+    private void plot(IncomingServerMessage request, String visMailbox, Plan plan, TableResult t,
+                      Consumer<OutgoingServerMessage> send) {
+        if (t.rows().isEmpty()) {
+            send.accept(error(request, ErrorCode.BAD_REQUEST, switch (plan.kind()) {
+                case "sql" -> "the query returned no rows: nothing to plot";
+                default -> "no " + (plan.kind().equals("track") ? "positions" : "depths") + " of vehicle '" + plan.vehicle()
+                        + "' in " + plan.database() + " (ingest its DBA files first; SELECT DISTINCT vehicle FROM data_file)";
+            }));
+            return;
+        }
+        if (t.columns().size() < 2) {
+            send.accept(error(request, ErrorCode.BAD_REQUEST, "vis:sql plots the first column against the others: select"
+                    + " at least two columns"));
+            return;
+        }
+        List<String> labels = new ArrayList<>(plan.labels());
+        List<String[]> cells = new ArrayList<>(t.rows());
+        List<String> types = t.types();
+        String note = t.truncated() ? " (the query was cut at the DatabaseServer's row limit: "
+                + (plan.kind().equals("sql") ? "the first " : "the newest ") + cells.size() + " rows are plotted)" : "";
+        List<double[]> rows;
+        if (plan.kind().equals("sql")) {
+            rows = TableData.numbers(t);
+            labels.add("xlabel: " + t.columns().get(0));
+            labels.add("legend: " + String.join(" | ", t.columns().subList(1, t.columns().size())));
+            if (TableData.isTime(types.get(0))) {
+                labels.add("plot: time");
+            }
+        } else {
+            // newest first from the query (so a cut keeps the newest); drawn oldest to newest
+            Collections.reverse(cells);
+            rows = new ArrayList<>(cells.size());
+            for (String[] c : cells) {
+                rows.add(switch (plan.kind()) {
+                    case "track" -> new double[] {TableData.number(c[2], types.get(2), "lon"),
+                            TableData.number(c[1], types.get(1), "lat")};
+                    default -> new double[] {TableData.number(c[0], types.get(0), t.columns().get(0)),
+                            TableData.number(c[1], types.get(1), t.columns().get(1))};
+                });
+            }
+            if (plan.kind().equals("track")) {
+                String[] newest = cells.get(cells.size() - 1);
+                labels.add("mark: newest fix " + newest[0] + " UTC (" + newest[3] + ")");
+            }
+        }
+        byte[] data = TableData.write(labels, rows);
+        String file = plan.output() + ".dat";
+        send.accept(progress(request, "plotting " + rows.size() + " rows from " + plan.database()));
+        calls.call(visMailbox, "vis:" + file + " out=" + plan.output(), request.header().origin().user(),
+                request.header().roles(), new Attachment(file, data), p -> { }).whenComplete((f, e) -> {
+                    if (e != null) {
+                        send.accept(error(request, ErrorCode.INTERNAL, "the plot failed: " + e));
+                    } else {
+                        send.accept(request.reply(f.withText(f.replyText() + note)));
+                    }
+                });
+    }
+
+    Plan parse(String body) {
+        int colon = body.indexOf(':');
+        String rest = body.substring(colon + 1);
+        String kind = rest.split("\\s+", 2)[0].toLowerCase(Locale.ROOT);
+        String args = rest.substring(kind.length()).strip();
+        if (kind.equals("sql")) {
+            if (args.isEmpty()) {
+                throw new IllegalArgumentException("usage: vis:sql SELECT x, y1 [, y2 ...] FROM ... (the first column"
+                        + " against the others)");
+            }
+            String title = args.length() <= 80 ? args : args.substring(0, 77) + "...";
+            return new Plan("sql", args, "sql-plot", List.of("title: " + title), null, defaultDatabase.get());
+        }
+        List<String> words = new ArrayList<>();
+        String since = null;
+        String db = null;
+        String out = null;
+        for (String w : args.isEmpty() ? new String[0] : args.split("\\s+")) {
+            int eq = w.indexOf('=');
+            if (eq > 0) {
+                String key = w.substring(0, eq).toLowerCase(Locale.ROOT);
+                String value = w.substring(eq + 1);
+                switch (key) {
+                    case "since" -> since = sqlTime(value);
+                    case "db" -> db = value;
+                    case "out" -> {
+                        if (!OUT.matcher(value).matches()) {
+                            throw new IllegalArgumentException("out='" + value + "': use letters, digits, '_' and '-'");
+                        }
+                        out = value;
+                    }
+                    default -> throw new IllegalArgumentException("unknown option '" + key + "' of vis:" + kind
+                            + "; options are since=ISO-TIME, db=MAILBOX, out=NAME");
+                }
+            } else {
+                words.add(w);
+            }
+        }
+        int wanted = kind.equals("profile") ? 2 : 1;
+        if (words.size() != wanted) {
+            throw new IllegalArgumentException("usage: vis:" + kind + " VEHICLE" + (wanted == 2 ? " SENSOR" : "")
+                    + " [since=2016-01-13T00:00:00Z] [db=MAILBOX] [out=NAME]");
+        }
+        String vehicle = words.get(0);
+        if (!VEHICLE.matcher(vehicle).matches()) {
+            throw new IllegalArgumentException("'" + vehicle + "' is not a vehicle name (letters, digits, '_', '-', '.')");
+        }
+        String database = db != null ? db : defaultDatabase.get();
+        String when = since == null ? "" : " AND time_utc >= CAST('" + since + "' AS TIMESTAMP)";
+        return switch (kind) {
+            case "track" -> new Plan(kind, trackSql(vehicle, since), out != null ? out : "track-" + vehicle,
+                    List.of("title: track of " + vehicle + (since == null ? "" : " since " + since + " UTC"),
+                            "xlabel: longitude (degrees east)", "ylabel: latitude (degrees north)", "legend: positions",
+                            "plot: track", "size: 800x800"), vehicle, database);
+            case "depth" -> new Plan(kind, "SELECT time_utc, depth FROM depths WHERE vehicle = '" + vehicle + "'"
+                    + " AND source = 'm_depth'" + when + " ORDER BY time_utc DESC", out != null ? out : "depth-" + vehicle,
+                    List.of("title: depth of " + vehicle, "xlabel: time (UTC)", "ylabel: depth (m)", "legend: m_depth",
+                            "plot: depth"), vehicle, database);
+            case "profile" -> {
+                String sensor = words.get(1);
+                if (!SENSOR.matcher(sensor).matches()) {
+                    throw new IllegalArgumentException("'" + sensor + "' is not a sensor name");
+                }
+                String w = since == null ? "" : " AND r.t >= CAST('" + since + "' AS TIMESTAMP)";
+                yield new Plan(kind, "SELECT r.value, d.depth FROM sensor_def s JOIN reading r ON r.sensor_id = s.sensor_id"
+                        + " JOIN depths d ON d.file_id = r.file_id AND d.row_no = r.row_no WHERE s.name = '" + sensor
+                        + "' AND r.vehicle = '" + vehicle + "'" + w + " ORDER BY r.t DESC",
+                        out != null ? out : "profile-" + vehicle + "-" + sensor,
+                        List.of("title: " + sensor + " of " + vehicle + " against depth", "xlabel: " + sensor,
+                                "ylabel: depth (m)", "legend: " + sensor, "plot: profile"), vehicle, database);
+            }
+            default -> throw new IllegalArgumentException("unknown plot vis:" + kind);
+        };
+    }
+
+    /**
+     * The positions view's query with the vehicle (and time) inside each branch of its UNION, so
+     * that Derby reaches READING through its (sensor_id, vehicle, t) index for that vehicle only.
+     */
+    static String trackSql(String vehicle, String since) {
+        StringBuilder b = new StringBuilder("SELECT time_utc, lat, lon, source FROM (");
+        String[][] pairs = {{"m_gps_lat", "m_gps_lon", "gps"}, {"m_lat", "m_lon", "dead-reckoned"}};
+        for (int i = 0; i < pairs.length; i++) {
+            b.append(i == 0 ? "" : " UNION ALL ")
+                    .append("SELECT la.t AS time_utc, la.value AS lat, lo.value AS lon, CAST('").append(pairs[i][2])
+                    .append("' AS VARCHAR(16)) AS source FROM sensor_def sa JOIN reading la ON la.sensor_id = sa.sensor_id")
+                    .append(" AND la.vehicle = '").append(vehicle).append("'")
+                    .append(since == null ? "" : " AND la.t >= CAST('" + since + "' AS TIMESTAMP)")
+                    .append(" JOIN sensor_def so ON so.name = '").append(pairs[i][1]).append("' JOIN reading lo ON")
+                    .append(" lo.file_id = la.file_id AND lo.row_no = la.row_no AND lo.sensor_id = so.sensor_id")
+                    .append(" WHERE sa.name = '").append(pairs[i][0]).append("' AND la.value BETWEEN -90 AND 90")
+                    .append(" AND lo.value BETWEEN -180 AND 180");
+        }
+        return b.append(") p ORDER BY time_utc DESC").toString();
+    }
+
+    /** An ISO time (2016-01-13T17:00:00Z, 2016-01-13T17:00, 2016-01-13) as SQL's UTC timestamp text. */
+    static String sqlTime(String iso) {
+        try {
+            LocalDateTime t;
+            if (iso.endsWith("Z") || iso.matches(".*[+-]\\d\\d:\\d\\d$")) {
+                t = LocalDateTime.ofInstant(Instant.from(DateTimeFormatter.ISO_OFFSET_DATE_TIME.parse(iso)), ZoneOffset.UTC);
+            } else if (iso.length() == 10) {
+                t = LocalDate.parse(iso).atStartOfDay();
+            } else {
+                t = LocalDateTime.parse(iso);
+            }
+            return t.format(SQL_TIME);
+        } catch (DateTimeParseException e) {
+            throw new IllegalArgumentException("since='" + iso + "' is not an ISO time such as 2016-01-13T17:00:00Z");
+        }
+    }
+
+    private static OutgoingServerMessage error(IncomingServerMessage request, ErrorCode code, String text) {
+        return request.reply(Footer.error(Ids.SID_DATAVIS, code, text).via("RIPVServer"));
+    }
+
+    private static OutgoingServerMessage progress(IncomingServerMessage request, String text) {
+        return request.reply(Footer.progress(Ids.SID_DATAVIS, text, null).via("RIPVServer"));
+    }
+}

@@ -1,0 +1,282 @@
+package org.ripv.server.session;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.time.Instant;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.function.Consumer;
+import org.ripv.messages.ConsoleEntry;
+import org.ripv.messages.OutgoingServerMessage;
+import org.ripv.messages.SessionState;
+import org.ripv.messages.VehicleEvent;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * The live console's centre: takes what services publish (and the events only the server sees:
+ * locks, a service lost mid-call), derives each MailBox's state, appends to the transcript,
+ * fans out to the MailBox's watchers and hands events to the notifier. Called on RMI threads
+ * and the Post Office's; it never blocks on a client, the disk or the network.
+ */
+public final class ConsoleHub implements AutoCloseable {
+    private static final Logger log = LoggerFactory.getLogger(ConsoleHub.class);
+    /** How many MailBoxes one connection may watch at once. */
+    public static final int MAX_WATCHES_PER_CLIENT = 64;
+    /** Recent entries a new watcher gets with its {@code ?watch} reply. */
+    static final int REPLAY = 20;
+    /** Distinct MailBoxes one service may publish for (a hostile service cannot grow the state without end). */
+    public static final int MAX_MAILBOXES_PER_SERVICE = 1_000;
+    private static final long DAY_MILLIS = 24L * 3600 * 1000;
+    private final Map<String, Set<String>> mailboxesOf = new ConcurrentHashMap<>();
+
+    /** An event with what a notification needs: the MailBox's state and its last lines. */
+    public record Notice(ConsoleEntry event, SessionState state, List<ConsoleEntry> lastLines) {}
+
+    /** Turns a message into a frame's body (the server's codec). */
+    public interface Encoder {
+        byte[] encode(org.ripv.messages.Message m) throws IOException;
+    }
+
+    private final Encoder encoder;
+    private final Transcript transcript;
+    private final VehicleStates states;
+    private final Map<String, CopyOnWriteArrayList<Watcher>> watchers = new ConcurrentHashMap<>();
+    private final Map<String, Set<Watcher>> byClient = new ConcurrentHashMap<>();
+    private final Object order = new Object();
+    private volatile Consumer<Notice> notices = n -> { };
+
+    /**
+     * @param transcripts  the transcripts directory (DATA/transcripts)
+     * @param maxFileBytes transcript files are cut at about this size
+     * @param keepDays     transcript files older than this many days are deleted
+     * @param encoder      encodes a push once for all the watchers that are up to date
+     */
+    public ConsoleHub(Path transcripts, long maxFileBytes, int keepDays, Encoder encoder) throws IOException {
+        this.encoder = encoder;
+        this.transcript = new Transcript(transcripts, maxFileBytes, keepDays);
+        this.states = new VehicleStates(transcript::dirOf);
+    }
+
+    /** Where events go for notification (set once at start). */
+    public void onEvent(Consumer<Notice> listener) {
+        this.notices = listener;
+    }
+
+    public Transcript transcript() {
+        return transcript;
+    }
+
+    /**
+     * Entries a service published, treated as hostile: only those for well-formed MailBoxes under
+     * {@code servicePrefix} (the service's full name) are taken, at most
+     * {@link #MAX_MAILBOXES_PER_SERVICE} distinct MailBoxes per service; text is cut to
+     * {@link Entries#MAX_TEXT} characters; a time more than a day away from the server's clock is
+     * replaced by the server's. Null entries are ignored.
+     */
+    public void publish(String servicePrefix, List<ConsoleEntry> entries) {
+        List<ConsoleEntry> mine = new ArrayList<>(entries.size());
+        long now = System.currentTimeMillis();
+        for (ConsoleEntry e : entries) {
+            if (e == null || !e.mailbox().startsWith(servicePrefix) || e.mailbox().length() <= servicePrefix.length()
+                    || !known(servicePrefix, e.mailbox())) {
+                continue;
+            }
+            String text = e.text().length() <= Entries.MAX_TEXT ? e.text()
+                    : e.text().substring(0, Entries.MAX_TEXT) + " [cut: " + (e.text().length() - Entries.MAX_TEXT) + " more characters]";
+            long time = Math.abs(e.time() - now) > DAY_MILLIS ? now : e.time();
+            String user = e.user().length() <= 64 ? e.user() : e.user().substring(0, 64);
+            if (text != e.text() || time != e.time() || user != e.user()) {
+                e = new ConsoleEntry(time, e.mailbox(), e.kind(), user, text, e.event(), e.lat(), e.lon());
+            }
+            mine.add(e);
+        }
+        take(mine);
+    }
+
+    /** True when the MailBox is well formed and one the service may still add (or has already). */
+    private boolean known(String servicePrefix, String mailbox) {
+        Set<String> seen = mailboxesOf.computeIfAbsent(servicePrefix, k -> ConcurrentHashMap.newKeySet());
+        if (seen.contains(mailbox)) {
+            return true;
+        }
+        try {
+            org.ripv.naming.MailboxAddress.parse(mailbox);
+        } catch (IllegalArgumentException e) {
+            return false;
+        }
+        if (seen.size() >= MAX_MAILBOXES_PER_SERVICE) {
+            log.warn("{} published for more than {} MailBoxes; ignoring {}", servicePrefix, MAX_MAILBOXES_PER_SERVICE, mailbox);
+            return false;
+        }
+        seen.add(mailbox);
+        return true;
+    }
+
+    /** An event the server itself observed (locks, a service lost mid-call). */
+    public void serverEvent(String mailbox, VehicleEvent event, String user, String detail) {
+        take(List.of(new ConsoleEntry(System.currentTimeMillis(), mailbox, ConsoleEntry.Kind.EVENT, user, detail, event,
+                null, null)));
+    }
+
+    /** An entry the server itself wrote (a workflow's progress, receipt summary or end). */
+    public void serverEntry(ConsoleEntry entry) {
+        take(List.of(entry));
+    }
+
+    /** A service left (died, was removed, or registered again): its MailBoxes on call are lost. */
+    public void serviceGone(String servicePrefix, String why) {
+        for (String mailbox : states.onCall(servicePrefix)) {
+            serverEvent(mailbox, VehicleEvent.LINK_LOST, "", "the service " + why + " during the call");
+        }
+    }
+
+    private void take(List<ConsoleEntry> entries) {
+        if (entries.isEmpty()) {
+            return;
+        }
+        List<Notice> events = new ArrayList<>();
+        synchronized (order) {
+            Map<String, List<ConsoleEntry>> byMailbox = new LinkedHashMap<>();
+            for (ConsoleEntry e : entries) {
+                states.apply(e);
+                transcript.append(e);
+                byMailbox.computeIfAbsent(e.mailbox(), k -> new ArrayList<>()).add(e);
+                if (e.kind() == ConsoleEntry.Kind.EVENT) {
+                    events.add(new Notice(e, states.state(e.mailbox()), states.recent(e.mailbox(), 20)));
+                }
+            }
+            byMailbox.forEach((mailbox, list) -> {
+                List<Watcher> ws = watchers.get(mailbox);
+                if (ws != null && !ws.isEmpty()) {
+                    OutgoingServerMessage m = Watcher.message(mailbox, list, 0);
+                    byte[] frame;
+                    try {
+                        frame = encoder.encode(m);
+                    } catch (IOException x) {
+                        frame = null; // too large for one frame: each writer reports it
+                    }
+                    Watcher.Shared shared = new Watcher.Shared(m, frame);
+                    for (Watcher w : ws) {
+                        w.offer(list, shared);
+                    }
+                }
+            });
+        }
+        for (Notice n : events) {
+            try {
+                notices.accept(n);
+            } catch (RuntimeException x) {
+                log.warn("notification of {} failed: {}", n.event().event(), x.toString());
+            }
+        }
+    }
+
+    /**
+     * Starts a watch: sends {@code reply} (built from the recent entries and state) through the
+     * outlet first, so the client sees the replay before any live entry. Returns null, or why not.
+     */
+    public String watch(String clientId, String user, String mailbox, Outlet outlet,
+                        java.util.function.BiFunction<SessionState, List<ConsoleEntry>, OutgoingServerMessage> reply) {
+        synchronized (order) {
+            Set<Watcher> mine = byClient.computeIfAbsent(clientId, k -> ConcurrentHashMap.newKeySet());
+            if (mine.stream().anyMatch(w -> w.mailbox.equals(mailbox))) {
+                outlet.send(reply.apply(states.state(mailbox), List.of()));
+                return null;
+            }
+            if (mine.size() >= MAX_WATCHES_PER_CLIENT) {
+                return "a connection may watch at most " + MAX_WATCHES_PER_CLIENT + " MailBoxes";
+            }
+            Watcher w = new Watcher(clientId, user, mailbox, outlet);
+            mine.add(w);
+            watchers.computeIfAbsent(mailbox, k -> new CopyOnWriteArrayList<>()).add(w);
+            // Still under the lock, so no push can come first; and if sending closes the
+            // connection (too far behind), clientClosed finds the watcher and removes it.
+            outlet.send(reply.apply(states.state(mailbox), states.recent(mailbox, REPLAY)));
+            if (!outlet.isOpen()) {
+                clientClosed(clientId); // it closed while we registered: whether or not its close saw this watch
+            }
+            return null;
+        }
+    }
+
+    /** Ends a watch; false when there was none. */
+    public boolean unwatch(String clientId, String mailbox) {
+        synchronized (order) {
+            Set<Watcher> mine = byClient.get(clientId);
+            if (mine == null) {
+                return false;
+            }
+            for (Watcher w : mine) {
+                if (w.mailbox.equals(mailbox)) {
+                    remove(w);
+                    mine.remove(w);
+                    if (mine.isEmpty()) {
+                        byClient.remove(clientId);
+                    }
+                    return true;
+                }
+            }
+            return false;
+        }
+    }
+
+    /** A connection closed: its watches go, and with them everything held for it. */
+    public void clientClosed(String clientId) {
+        synchronized (order) {
+            Set<Watcher> mine = byClient.remove(clientId);
+            if (mine != null) {
+                mine.forEach(this::remove);
+            }
+        }
+    }
+
+    private void remove(Watcher w) {
+        w.stop();
+        watchers.computeIfPresent(w.mailbox, (k, list) -> {
+            list.remove(w);
+            return list.isEmpty() ? null : list;
+        });
+    }
+
+    /** The MailBoxes a connection watches. */
+    public List<String> watching(String clientId) {
+        Set<Watcher> mine = byClient.get(clientId);
+        return mine == null ? List.of() : mine.stream().map(w -> w.mailbox).sorted().toList();
+    }
+
+    /** Watchers of all MailBoxes (tests and the benchmark check that nothing is left behind). */
+    public int watcherCount() {
+        return watchers.values().stream().mapToInt(List::size).sum();
+    }
+
+    /** Entries held in all watchers' backlogs now. */
+    public long backlogTotal() {
+        return watchers.values().stream().flatMap(List::stream).mapToLong(Watcher::backlog).sum();
+    }
+
+    /** A MailBox's call state, or null when it has never published anything. */
+    public SessionState state(String mailbox) {
+        return states.state(mailbox);
+    }
+
+    /** Reads the transcript ({@code ?history}); runs on the caller's thread, so not on the Post Office's. */
+    public Transcript.Page history(String mailbox, Instant since, int last) throws IOException {
+        return transcript.history(mailbox, since, last);
+    }
+
+    @Override
+    public void close() {
+        synchronized (order) {
+            byClient.values().forEach(s -> s.forEach(Watcher::stop));
+            byClient.clear();
+            watchers.clear();
+        }
+        transcript.close();
+    }
+}

@@ -1,0 +1,85 @@
+package org.ripv.server.session;
+
+import java.time.Instant;
+import java.util.LinkedHashMap;
+import java.util.Locale;
+import java.util.Map;
+import org.ripv.messages.ConsoleEntry;
+import org.ripv.messages.VehicleEvent;
+
+/**
+ * Console entries as flat JSON fields — the same names the CLI's {@code --follow --json} prints
+ * (time, mailbox, kind, user, text, event, lat, lon; only those that apply) — and back.
+ */
+public final class Entries {
+    /** The longest text kept per entry in the transcript; longer text is cut and says so. */
+    public static final int MAX_TEXT = 4096;
+
+    private Entries() {}
+
+    public static Map<String, Object> toMap(ConsoleEntry e) {
+        Map<String, Object> m = new LinkedHashMap<>();
+        m.put("time", Instant.ofEpochMilli(e.time()).toString());
+        m.put("mailbox", e.mailbox());
+        m.put("kind", e.kind().name().toLowerCase(Locale.ROOT));
+        if (!e.user().isEmpty()) {
+            m.put("user", e.user());
+        }
+        String text = e.text();
+        if (text.length() > MAX_TEXT) {
+            text = text.substring(0, MAX_TEXT) + " [cut: " + (e.text().length() - MAX_TEXT) + " more characters]";
+        }
+        m.put("text", text);
+        if (e.event() != null) {
+            m.put("event", e.event().name());
+        }
+        if (e.lat() != null && e.lon() != null && Double.isFinite(e.lat()) && Double.isFinite(e.lon())) {
+            m.put("lat", e.lat());
+            m.put("lon", e.lon());
+        }
+        return m;
+    }
+
+    public static String toJson(ConsoleEntry e) {
+        return Json.write(toMap(e));
+    }
+
+    /** Reads back a transcript line; throws IllegalArgumentException for anything malformed. */
+    public static ConsoleEntry fromJson(String line) {
+        Map<String, Object> m = Json.parse(line);
+        long time;
+        try {
+            time = Instant.parse(string(m, "time")).toEpochMilli();
+        } catch (java.time.format.DateTimeParseException e) {
+            throw new IllegalArgumentException("bad time");
+        }
+        ConsoleEntry.Kind kind = ConsoleEntry.Kind.valueOf(string(m, "kind").toUpperCase(Locale.ROOT));
+        String event = m.get("event") instanceof String s ? s : null;
+        return new ConsoleEntry(time, string(m, "mailbox"), kind, m.get("user") instanceof String u ? u : "",
+                m.get("text") instanceof String t ? t : "", event == null ? null : VehicleEvent.valueOf(event),
+                number(m.get("lat")), number(m.get("lon")));
+    }
+
+    private static String string(Map<String, Object> m, String key) {
+        if (!(m.get(key) instanceof String s)) {
+            throw new IllegalArgumentException("no " + key);
+        }
+        return s;
+    }
+
+    private static Double number(Object o) {
+        return o instanceof Number n ? n.doubleValue() : null;
+    }
+
+    /** The entry for people: {@code 2026-11-23T14:02:03Z ru29 [alice] > GPS Location ...}. */
+    public static String toText(ConsoleEntry e) {
+        String t = Instant.ofEpochMilli(e.time()).toString();
+        return switch (e.kind()) {
+            case LINE -> t + "  " + e.text();
+            case COMMAND -> t + "  " + (e.user().isEmpty() ? "" : "[" + e.user() + "] ") + "> " + e.text();
+            case TRANSFER -> t + "  ~ " + e.text();
+            case EVENT -> t + "  * " + e.event() + (e.text().isEmpty() ? "" : " " + e.text())
+                    + (e.lat() != null && e.lon() != null ? String.format(Locale.ROOT, " (%.5f, %.5f)", e.lat(), e.lon()) : "");
+        };
+    }
+}

@@ -1,0 +1,184 @@
+package org.ripv.server.session;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.util.ArrayDeque;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.function.Function;
+import org.ripv.messages.ConsoleEntry;
+import org.ripv.messages.SessionState;
+import org.ripv.messages.SessionState.State;
+import org.ripv.messages.VehicleEvent;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * Each vehicle MailBox's call state, derived from the console entries: SURFACED puts it on call
+ * (and counts the call), DIVED marks it dived, LINK_LOST lost; lines, transfers and vehicle
+ * events are contact; a position that comes with any entry is the last position. The state is
+ * kept in {@code state.json} beside the MailBox's transcript on every event, so it survives a
+ * server restart.
+ */
+final class VehicleStates {
+    private static final Logger log = LoggerFactory.getLogger(VehicleStates.class);
+    /** Lines kept per MailBox for a watcher joining late and for e-mails. */
+    static final int RECENT = 50;
+
+    private final Function<String, Path> dirOf;
+    private final Map<String, Vehicle> vehicles = new ConcurrentHashMap<>();
+
+    /** One MailBox's state; guarded by the hub's lock. */
+    static final class Vehicle {
+        State state = State.UNKNOWN;
+        long lastContact;
+        Double lat;
+        Double lon;
+        int calls;
+        VehicleEvent lastEvent;
+        final ArrayDeque<ConsoleEntry> recent = new ArrayDeque<>();
+
+        synchronized SessionState snapshot() {
+            return new SessionState(state, lastContact, lat, lon, calls, lastEvent);
+        }
+
+        synchronized List<ConsoleEntry> recent(int n) {
+            List<ConsoleEntry> all = List.copyOf(recent);
+            return all.subList(Math.max(0, all.size() - n), all.size());
+        }
+    }
+
+    VehicleStates(Function<String, Path> dirOf) {
+        this.dirOf = dirOf;
+    }
+
+    /** Takes one entry into its MailBox's state; true when the state changed in a way worth saving. */
+    boolean apply(ConsoleEntry e) {
+        Vehicle v = vehicle(e.mailbox());
+        boolean save = false;
+        synchronized (v) {
+            v.recent.addLast(e);
+            if (v.recent.size() > RECENT) {
+                v.recent.removeFirst();
+            }
+            if (isContact(e)) {
+                v.lastContact = Math.max(v.lastContact, e.time());
+            }
+            if (e.lat() != null && e.lon() != null && Double.isFinite(e.lat()) && Double.isFinite(e.lon())
+                    && Math.abs(e.lat()) <= 90 && Math.abs(e.lon()) <= 180) {
+                v.lat = e.lat();
+                v.lon = e.lon();
+            }
+            if (e.kind() == ConsoleEntry.Kind.EVENT) {
+                v.lastEvent = e.event();
+                switch (e.event()) {
+                    case SURFACED -> {
+                        v.state = State.ON_CALL;
+                        v.calls++;
+                    }
+                    case DIVED -> v.state = State.DIVED;
+                    case LINK_LOST -> v.state = State.LOST;
+                    default -> { }
+                }
+                save = true;
+            }
+        }
+        if (save) {
+            save(e.mailbox(), v);
+        }
+        return save;
+    }
+
+    private static boolean isContact(ConsoleEntry e) {
+        return switch (e.kind()) {
+            case LINE, TRANSFER -> true;
+            case COMMAND -> false;
+            case EVENT -> switch (e.event()) {
+                case SURFACED, DIVED, ALERT, TRANSFER_DONE, TRANSFER_FAILED -> true;
+                default -> false;
+            };
+        };
+    }
+
+    /** The MailBoxes of a service (by address prefix) that are on call now. */
+    List<String> onCall(String servicePrefix) {
+        return vehicles.entrySet().stream()
+                .filter(x -> x.getKey().startsWith(servicePrefix) && x.getValue().snapshot().state() == State.ON_CALL)
+                .map(Map.Entry::getKey).sorted().toList();
+    }
+
+    /** The state, or null when the MailBox never published an event or line (here or before a restart). */
+    SessionState state(String mailbox) {
+        Vehicle v = vehicles.get(mailbox);
+        if (v == null) {
+            v = load(mailbox);
+            if (v == null) {
+                return null;
+            }
+        }
+        return v.snapshot();
+    }
+
+    List<ConsoleEntry> recent(String mailbox, int n) {
+        Vehicle v = vehicles.get(mailbox);
+        return v == null ? List.of() : v.recent(n);
+    }
+
+    private Vehicle vehicle(String mailbox) {
+        Vehicle v = vehicles.get(mailbox);
+        if (v != null) {
+            return v;
+        }
+        Vehicle loaded = load(mailbox);
+        return loaded != null ? loaded : vehicles.computeIfAbsent(mailbox, k -> new Vehicle());
+    }
+
+    /** Reads the saved state of a MailBox not seen since the server started. */
+    private Vehicle load(String mailbox) {
+        Path f = dirOf.apply(mailbox).resolve("state.json");
+        if (!Files.isRegularFile(f)) {
+            return null;
+        }
+        try {
+            Map<String, Object> m = Json.parse(Files.readString(f, StandardCharsets.UTF_8).strip());
+            Vehicle v = new Vehicle();
+            v.state = State.valueOf(String.valueOf(m.get("state")));
+            v.lastContact = m.get("lastContact") instanceof Number n ? n.longValue() : 0;
+            v.lat = m.get("lat") instanceof Number n ? n.doubleValue() : null;
+            v.lon = m.get("lon") instanceof Number n ? n.doubleValue() : null;
+            v.calls = m.get("calls") instanceof Number n ? (int) Math.min(Integer.MAX_VALUE, n.longValue()) : 0;
+            v.lastEvent = m.get("lastEvent") instanceof String s ? VehicleEvent.valueOf(s) : null;
+            Vehicle raced = vehicles.putIfAbsent(mailbox, v);
+            return raced != null ? raced : v;
+        } catch (IOException | IllegalArgumentException e) {
+            log.warn("ignoring the unreadable vehicle state {}: {}", f, e.toString());
+            return null;
+        }
+    }
+
+    private void save(String mailbox, Vehicle v) {
+        Map<String, Object> m = new LinkedHashMap<>();
+        SessionState s = v.snapshot();
+        m.put("mailbox", mailbox);
+        m.put("state", s.state().name());
+        m.put("lastContact", s.lastContact());
+        m.put("lat", s.lat());
+        m.put("lon", s.lon());
+        m.put("calls", s.calls());
+        m.put("lastEvent", s.lastEvent() == null ? null : s.lastEvent().name());
+        Path dir = dirOf.apply(mailbox);
+        try {
+            Files.createDirectories(dir);
+            Path tmp = dir.resolve("state.json.tmp");
+            Files.writeString(tmp, Json.write(m) + "\n", StandardCharsets.UTF_8);
+            Files.move(tmp, dir.resolve("state.json"), StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+        } catch (IOException e) {
+            log.warn("could not save the state of {}: {}", mailbox, e.toString());
+        }
+    }
+}

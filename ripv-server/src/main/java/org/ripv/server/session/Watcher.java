@@ -1,0 +1,140 @@
+package org.ripv.server.session;
+
+import java.time.Instant;
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.List;
+import org.ripv.messages.ConsoleBatch;
+import org.ripv.messages.ConsoleEntry;
+import org.ripv.messages.Footer;
+import org.ripv.messages.Header;
+import org.ripv.messages.IdBadge;
+import org.ripv.messages.Ids;
+import org.ripv.messages.OutgoingServerMessage;
+import org.ripv.messages.Priority;
+
+/**
+ * One client watching one MailBox. Keeps at most one push in flight on the client's connection
+ * and holds what arrives meanwhile in a bounded backlog; when the backlog overflows, the oldest
+ * entries go and the next push starts with a marker saying how many, and from when, so the
+ * client can fetch them with {@code ?history}. Nothing here blocks: a client that stops reading
+ * costs the vehicle, the service and the other watchers nothing but this backlog.
+ */
+final class Watcher {
+    /** Entries held for a watcher whose connection is busy before the oldest are skipped. */
+    static final int MAX_BACKLOG = 2_000;
+    /** The most entries in one push. */
+    static final int MAX_BATCH = 500;
+
+    final String clientId;
+    final String user;
+    final String mailbox;
+    private final Outlet outlet;
+    private final ArrayDeque<ConsoleEntry> backlog = new ArrayDeque<>();
+    private long skipped;
+    private long skippedFrom;
+    private long totalSkipped;
+    private boolean inFlight;
+    private volatile boolean stopped;
+
+    Watcher(String clientId, String user, String mailbox, Outlet outlet) {
+        this.clientId = clientId;
+        this.user = user;
+        this.mailbox = mailbox;
+        this.outlet = outlet;
+    }
+
+    /** A push built and encoded once for every watcher that is up to date. */
+    record Shared(OutgoingServerMessage message, byte[] frame) {}
+
+    /** Takes new entries; pushes at once if nothing is in flight. The shared push is used when it can be. */
+    void offer(List<ConsoleEntry> entries, Shared shared) {
+        Shared now = null;
+        synchronized (this) {
+            if (stopped) {
+                return;
+            }
+            if (!inFlight && backlog.isEmpty() && skipped == 0 && shared != null) {
+                inFlight = true;
+                now = shared;
+            } else {
+                for (ConsoleEntry e : entries) {
+                    if (backlog.size() == MAX_BACKLOG) {
+                        ConsoleEntry gone = backlog.removeFirst();
+                        if (skipped == 0) {
+                            skippedFrom = gone.time();
+                        }
+                        skipped++;
+                        totalSkipped++;
+                    }
+                    backlog.addLast(e);
+                }
+            }
+        }
+        if (now != null) {
+            send(now.message(), now.frame());
+        } else {
+            pump();
+        }
+    }
+
+    /** Sends the next batch from the backlog if nothing is in flight. */
+    private void pump() {
+        OutgoingServerMessage next;
+        synchronized (this) {
+            if (stopped || inFlight || backlog.isEmpty() && skipped == 0) {
+                return;
+            }
+            List<ConsoleEntry> batch = new ArrayList<>(Math.min(MAX_BATCH + 1, backlog.size() + 1));
+            long lost = skipped;
+            if (lost > 0) {
+                batch.add(new ConsoleEntry(System.currentTimeMillis(), mailbox, ConsoleEntry.Kind.LINE, "",
+                        "[" + lost + " lines skipped: this client read too slowly; ?history " + mailbox + " --since "
+                                + Instant.ofEpochMilli(skippedFrom) + " fetches them]", null, null, null));
+                skipped = 0;
+            }
+            while (batch.size() < MAX_BATCH && !backlog.isEmpty()) {
+                batch.add(backlog.removeFirst());
+            }
+            next = message(mailbox, batch, lost);
+            inFlight = true;
+        }
+        send(next, null);
+    }
+
+    private void send(OutgoingServerMessage m, byte[] frame) {
+        if (!outlet.push(m, frame, this::written)) {
+            synchronized (this) {
+                inFlight = false; // the connection is closing, or full of replies: the next entry tries again
+            }
+        }
+    }
+
+    private void written() {
+        synchronized (this) {
+            inFlight = false;
+        }
+        pump();
+    }
+
+    void stop() {
+        stopped = true;
+        synchronized (this) {
+            backlog.clear();
+        }
+    }
+
+    synchronized int backlog() {
+        return backlog.size();
+    }
+
+    synchronized long totalSkipped() {
+        return totalSkipped;
+    }
+
+    /** A push: message id 0, status PROGRESS, FID_CONSOLE, the entries in a {@link ConsoleBatch}. */
+    static OutgoingServerMessage message(String mailbox, List<ConsoleEntry> entries, long skipped) {
+        Header h = new Header(0, IdBadge.SERVER, List.of(), "", mailbox, "?watch " + mailbox, Priority.NORMAL, null);
+        return new OutgoingServerMessage(h, Footer.progress(Ids.FID_CONSOLE, "", new ConsoleBatch(mailbox, entries, skipped, false)));
+    }
+}

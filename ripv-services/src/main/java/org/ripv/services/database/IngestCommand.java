@@ -1,0 +1,157 @@
+package org.ripv.services.database;
+
+import java.io.IOException;
+import java.sql.Connection;
+import java.sql.DatabaseMetaData;
+import java.sql.ResultSet;
+import java.sql.SQLException;
+import java.sql.Statement;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Optional;
+import org.ripv.messages.Attachment;
+import org.ripv.messages.ErrorCode;
+import org.ripv.messages.Progress;
+import org.ripv.service.Reply;
+import org.ripv.service.Request;
+import org.ripv.services.ingest.DbaFormatException;
+import org.ripv.services.ingest.DbaIngest;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * {@code ingest NAME...}: stores Slocum DBA files from the server's download directory, which the
+ * server attaches as one bundle ({@link DatabaseServer#downloadPrefixes()}). Each file is its own
+ * transaction: a refused file stores nothing and the others still go in; the reply has one line
+ * per file and is an ERROR when any file was refused. The tables and views of
+ * {@code sql/slocumDB.sql} are created on first use.
+ */
+final class IngestCommand {
+    private static final Logger log = LoggerFactory.getLogger(IngestCommand.class);
+    /** The command word. */
+    static final String WORD = "ingest";
+    static final String SCRIPT = "slocumDB.sql";
+    /** Tables and views of the script, for the reader's GRANT. */
+    static final List<String> OBJECTS = List.of("DATA_FILE", "SENSOR_DEF", "READING", "SENSOR_LATEST", "POSITIONS", "LATEST", "DEPTHS", "DIVES");
+    static final int MAX_FILES = 1000;
+
+    private final DatabaseTarget target;
+    private boolean schemaChecked;
+
+    IngestCommand(DatabaseTarget target) {
+        this.target = target;
+    }
+
+    /** True when a command line is {@code ingest ...}. */
+    static boolean matches(String command) {
+        String c = command == null ? "" : command.strip();
+        return c.regionMatches(true, 0, WORD, 0, WORD.length()) && (c.length() == WORD.length()
+                || Character.isWhitespace(c.charAt(WORD.length())));
+    }
+
+    Reply run(Request request, Connection c) {
+        List<String> names = request.arguments();
+        if (names.isEmpty()) {
+            return Reply.error(ErrorCode.BAD_REQUEST, "usage: ingest NAME... (Slocum DBA files in the server's download"
+                    + " directory; ?dlfiles lists them)");
+        }
+        Optional<Attachment> attached = request.attachment();
+        if (attached.isEmpty()) {
+            return Reply.error(ErrorCode.BAD_REQUEST, "ingest found no files attached: the server attaches the named"
+                    + " download-directory files (is this DatabaseServer registered with a server?)");
+        }
+        List<Attachment> files;
+        try {
+            files = attached.get().files(MAX_FILES);
+        } catch (IOException e) {
+            return Reply.error(ErrorCode.BAD_REQUEST, "the attached files are not a readable bundle: " + e.getMessage());
+        }
+        try {
+            ensureSchema(c);
+        } catch (SQLException | IOException e) {
+            return Reply.error(ErrorCode.DATABASE_ERROR, "cannot create the Slocum tables of " + SCRIPT + ": "
+                    + (e instanceof SQLException s ? DatabaseHandler.describe(s) : e.getMessage()));
+        }
+        List<String> lines = new ArrayList<>();
+        int refused = 0;
+        long values = 0;
+        DbaIngest ingest = new DbaIngest(c);
+        for (int i = 0; i < files.size(); i++) {
+            Attachment f = files.get(i);
+            long t0 = System.nanoTime();
+            try {
+                DbaIngest.Outcome o = ingest.ingest(f.name(), f.data(), request.user());
+                lines.add(o.describe());
+                values += o.duplicate() ? 0 : o.values();
+                log.info("{} ingest {} for {}: {} in {} ms", target.handle(), f.name(), request.user(), o.describe(),
+                        (System.nanoTime() - t0) / 1_000_000);
+            } catch (DbaFormatException e) {
+                refused++;
+                lines.add(f.name() + ": refused, nothing stored: " + e.getMessage());
+                log.info("{} ingest {} for {} refused: {}", target.handle(), f.name(), request.user(), e.getMessage());
+            } catch (SQLException e) {
+                refused++;
+                lines.add(f.name() + ": the database failed, nothing stored: " + DatabaseHandler.describe(e));
+                log.warn("{} ingest {} failed: {}", target.handle(), f.name(), DatabaseHandler.describe(e));
+            } catch (IOException | RuntimeException e) {
+                refused++;
+                lines.add(f.name() + ": could not be read, nothing stored: " + e);
+                log.warn("{} ingest {} failed", target.handle(), f.name(), e);
+            }
+            if (files.size() > 1) {
+                request.progress(lines.get(lines.size() - 1), new Progress("files ingested", i + 1, files.size(), 0));
+            }
+        }
+        String text = String.join("\n", lines);
+        if (refused > 0) {
+            return Reply.error(ErrorCode.BAD_REQUEST, text);
+        }
+        return Reply.ok(text, new org.ripv.messages.UpdateCount((int) Math.min(Integer.MAX_VALUE, values)));
+    }
+
+    /** Creates the tables and views of {@value #SCRIPT} unless DATA_FILE exists, and lets the reader see them. */
+    void ensureSchema(Connection c) throws SQLException, IOException {
+        if (schemaChecked && !c.isClosed()) {
+            return;
+        }
+        if (!exists(c, "DATA_FILE")) {
+            boolean auto = c.getAutoCommit();
+            c.setAutoCommit(false);
+            try {
+                SqlScript.run(c, SqlScript.resource(SCRIPT), SCRIPT);
+                c.commit();
+            } catch (SQLException | RuntimeException e) {
+                c.rollback();
+                throw e;
+            } finally {
+                c.setAutoCommit(auto);
+            }
+            log.info("{}: created the Slocum tables and views of {}", target.handle(), SCRIPT);
+            if (target.readerUser() != null) {
+                try (Statement st = c.createStatement()) {
+                    for (String o : OBJECTS) {
+                        st.execute("GRANT SELECT ON " + o + " TO " + target.readerUser());
+                    }
+                } catch (SQLException e) {
+                    log.warn("{}: could not let {} read the Slocum tables: {}", target.handle(), target.readerUser(),
+                            DatabaseHandler.describe(e));
+                }
+            }
+        }
+        schemaChecked = true;
+    }
+
+    private static boolean exists(Connection c, String table) throws SQLException {
+        DatabaseMetaData md = c.getMetaData();
+        String schema = c.getSchema();
+        for (String name : new String[] {table, table.toLowerCase(Locale.ROOT)}) {
+            try (ResultSet rs = md.getTables(null, schema, name, new String[] {"TABLE"})) {
+                if (rs.next()) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+}

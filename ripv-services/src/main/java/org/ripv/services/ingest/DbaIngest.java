@@ -1,0 +1,371 @@
+package org.ripv.services.ingest;
+
+import java.io.ByteArrayInputStream;
+import java.io.IOException;
+import java.security.MessageDigest;
+import java.security.NoSuchAlgorithmException;
+import java.sql.Connection;
+import java.sql.PreparedStatement;
+import java.sql.ResultSet;
+import java.sql.SQLException;
+import java.sql.Statement;
+import java.sql.Timestamp;
+import java.time.Instant;
+import java.util.Calendar;
+import java.util.HashMap;
+import java.util.HexFormat;
+import java.util.List;
+import java.util.Map;
+import java.util.TimeZone;
+
+/**
+ * Stores one DBA file in the narrow schema of {@code sql/slocumDB.sql}: a DATA_FILE row, the
+ * sensors it names in SENSOR_DEF, and one READING per non-NaN value — all in one transaction,
+ * in JDBC batches, streaming the rows. A file whose SHA-256 is stored already is not stored
+ * again; a file the {@link DbaReader} refuses stores nothing.
+ *
+ * <p>Not thread-safe: one instance per connection, used by one thread.
+ */
+public final class DbaIngest {
+    /** Rows per JDBC batch. */
+    static final int BATCH = 5_000;
+    private static final Calendar UTC = Calendar.getInstance(TimeZone.getTimeZone("UTC"));
+
+    /**
+     * What one file gave.
+     *
+     * @param name       the name it was ingested under (the store's file name)
+     * @param dbaName    the header's {@code filename} (e.g. {@code cp_388-2016-012-0-0}), or the name
+     * @param fileId     DATA_FILE.FILE_ID (of the earlier copy when {@code duplicate})
+     * @param duplicate  true when the same bytes were stored already (nothing was added)
+     * @param positions  rows with a valid latitude/longitude pair (GPS or dead-reckoned)
+     * @param untimed    rows with neither m_present_time nor sci_m_present_time (not stored)
+     */
+    public record Outcome(String name, String dbaName, String vehicle, long fileId, boolean duplicate, long rows,
+                          int sensors, long values, long positions, long noFix, long impossible, long untimed) {
+        /** "cp_388-2016-012-0-0: 23 rows, 52 sensors, 296 values, 2 positions", and what else is worth saying. */
+        public String describe() {
+            if (duplicate) {
+                return dbaName + ": stored already (file " + fileId + "), nothing added";
+            }
+            StringBuilder b = new StringBuilder(dbaName).append(": ").append(rows).append(" rows, ").append(sensors)
+                    .append(" sensors, ").append(values).append(" values, ").append(positions).append(" positions");
+            if (noFix > 0) {
+                b.append(" (").append(noFix).append(" no-fix values left out)");
+            }
+            if (impossible > 0) {
+                b.append(" (").append(impossible).append(" impossible positions left out)");
+            }
+            if (untimed > 0) {
+                b.append(" (").append(untimed).append(" rows without a time left out)");
+            }
+            return b.toString();
+        }
+    }
+
+    private final Connection c;
+
+    public DbaIngest(Connection connection) {
+        this.c = connection;
+    }
+
+    /** The SHA-256 of a file's bytes, as 64 hex digits. */
+    public static String sha256(byte[] data) {
+        try {
+            return HexFormat.of().formatHex(MessageDigest.getInstance("SHA-256").digest(data));
+        } catch (NoSuchAlgorithmException e) {
+            throw new IllegalStateException("the JDK has no SHA-256", e);
+        }
+    }
+
+    /**
+     * Stores a file, or finds it stored already.
+     *
+     * @param name the file's name in the store (kept in DATA_FILE.NAME)
+     * @param user who asked (DATA_FILE.INGESTED_BY)
+     * @throws DbaFormatException when the file is not a good DBA file; nothing is stored
+     * @throws SQLException       when the database fails; nothing is stored
+     */
+    public Outcome ingest(String name, byte[] data, String user) throws DbaFormatException, SQLException, IOException {
+        String sha = sha256(data);
+        Outcome earlier = stored(name, sha);
+        if (earlier != null) {
+            return earlier;
+        }
+        boolean auto = c.getAutoCommit();
+        c.setAutoCommit(false);
+        try {
+            Outcome o = write(name, data, user, sha);
+            c.commit();
+            return o;
+        } catch (SQLException e) {
+            rollback();
+            if (isUniqueViolation(e)) {
+                Outcome again = stored(name, sha); // the same file, stored by someone else meanwhile
+                if (again != null) {
+                    return again;
+                }
+            }
+            throw e;
+        } catch (DbaFormatException | IOException | RuntimeException e) {
+            rollback();
+            throw e;
+        } finally {
+            c.setAutoCommit(auto);
+        }
+    }
+
+    private void rollback() {
+        try {
+            c.rollback();
+        } catch (SQLException ignored) {
+            // the connection is going anyway; the caller reports the first failure
+        }
+    }
+
+    private static boolean isUniqueViolation(SQLException e) {
+        for (SQLException x = e; x != null; x = x.getNextException()) {
+            if ("23505".equals(x.getSQLState())) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private Outcome stored(String name, String sha) throws SQLException {
+        try (PreparedStatement st = c.prepareStatement("SELECT file_id, dba_filename, vehicle, row_count, sensor_count,"
+                + " value_count, position_count FROM data_file WHERE sha256 = ?")) {
+            st.setString(1, sha);
+            try (ResultSet rs = st.executeQuery()) {
+                if (!rs.next()) {
+                    return null;
+                }
+                String dba = rs.getString(2);
+                return new Outcome(name, dba == null ? name : dba, rs.getString(3), rs.getLong(1), true, rs.getLong(4),
+                        rs.getInt(5), rs.getLong(6), rs.getLong(7), 0, 0, 0);
+            }
+        }
+    }
+
+    private Outcome write(String name, byte[] data, String user, String sha) throws DbaFormatException, SQLException, IOException {
+        try (DbaReader r = new DbaReader(new ByteArrayInputStream(data))) {
+            DbaHeader h = r.header();
+            String vehicle = h.vehicle() != null ? h.vehicle() : vehicleFromName(name);
+            String dbaName = h.filename() != null && !h.filename().isBlank() ? h.filename() : name;
+            int[] sensorIds = sensorIds(h.sensors());
+            long fileId = insertFile(h, name, vehicle, sha, user);
+            int latGps = h.column("m_gps_lat");
+            int lonGps = h.column("m_gps_lon");
+            int latDr = h.column("m_lat");
+            int lonDr = h.column("m_lon");
+            int depth = h.column("m_depth");
+            double minDepth = Double.NaN;
+            double maxDepth = Double.NaN;
+            long depths = 0;
+            double[] row = new double[h.sensors().size()];
+            double[] lastT = new double[row.length];
+            double[] lastV = new double[row.length];
+            java.util.Arrays.fill(lastT, Double.NaN);
+            long values = 0;
+            long positions = 0;
+            long untimed = 0;
+            double first = Double.NaN;
+            double last = Double.NaN;
+            int pending = 0;
+            try (PreparedStatement ins = c.prepareStatement(
+                    "INSERT INTO reading (file_id, row_no, sensor_id, vehicle, t, value) VALUES (?, ?, ?, ?, ?, ?)")) {
+                ins.setLong(1, fileId);
+                ins.setString(4, vehicle);
+                while (r.next(row)) {
+                    double t = r.time(row);
+                    if (!Double.isFinite(t) || t < 0 || t > 32_503_680_000d) { // up to year 3000
+                        untimed++;
+                        continue;
+                    }
+                    first = Double.isNaN(first) ? t : Math.min(first, t);
+                    last = Double.isNaN(last) ? t : Math.max(last, t);
+                    if (depth >= 0 && !Double.isNaN(row[depth])) {
+                        minDepth = depths == 0 ? row[depth] : Math.min(minDepth, row[depth]);
+                        maxDepth = depths == 0 ? row[depth] : Math.max(maxDepth, row[depth]);
+                        depths++;
+                    }
+                    if (pair(row, latGps, lonGps)) {
+                        positions++;
+                    }
+                    if (pair(row, latDr, lonDr)) {
+                        positions++;
+                    }
+                    ins.setLong(2, r.rows());
+                    ins.setTimestamp(5, timestamp(t), UTC);
+                    for (int i = 0; i < row.length; i++) {
+                        double v = row[i];
+                        if (Double.isNaN(v)) {
+                            continue;
+                        }
+                        if (!(lastT[i] > t)) {
+                            lastT[i] = t;
+                            lastV[i] = v;
+                        }
+                        ins.setInt(3, sensorIds[i]);
+                        ins.setDouble(6, v);
+                        ins.addBatch();
+                        values++;
+                        if (++pending == BATCH) {
+                            ins.executeBatch();
+                            pending = 0;
+                        }
+                    }
+                }
+                if (pending > 0) {
+                    ins.executeBatch();
+                }
+            }
+            latest(vehicle, fileId, sensorIds, lastT, lastV);
+            try (PreparedStatement up = c.prepareStatement("UPDATE data_file SET row_count = ?, value_count = ?,"
+                    + " position_count = ?, first_time = ?, last_time = ?, min_depth = ?, max_depth = ?, depth_count = ?"
+                    + " WHERE file_id = ?")) {
+                up.setLong(1, r.rows() - untimed);
+                up.setLong(2, values);
+                up.setLong(3, positions);
+                up.setTimestamp(4, Double.isNaN(first) ? null : timestamp(first), UTC);
+                up.setTimestamp(5, Double.isNaN(last) ? null : timestamp(last), UTC);
+                if (depths == 0) {
+                    up.setNull(6, java.sql.Types.DOUBLE);
+                    up.setNull(7, java.sql.Types.DOUBLE);
+                } else {
+                    up.setDouble(6, minDepth);
+                    up.setDouble(7, maxDepth);
+                }
+                up.setLong(8, depths);
+                up.setLong(9, fileId);
+                up.executeUpdate();
+            }
+            return new Outcome(name, dbaName, vehicle, fileId, false, r.rows() - untimed, h.sensors().size(), values,
+                    positions, r.noFix(), r.impossible(), untimed);
+        }
+    }
+
+    /** Moves SENSOR_LATEST on for the sensors whose last value in this file is newer than the one kept. */
+    private void latest(String vehicle, long fileId, int[] sensorIds, double[] lastT, double[] lastV) throws SQLException {
+        Map<Integer, Timestamp> kept = new HashMap<>();
+        try (PreparedStatement q = c.prepareStatement("SELECT sensor_id, t FROM sensor_latest WHERE vehicle = ?")) {
+            q.setString(1, vehicle);
+            try (ResultSet rs = q.executeQuery()) {
+                while (rs.next()) {
+                    kept.put(rs.getInt(1), rs.getTimestamp(2, UTC));
+                }
+            }
+        }
+        try (PreparedStatement ins = c.prepareStatement(
+                "INSERT INTO sensor_latest (vehicle, sensor_id, t, value, file_id) VALUES (?, ?, ?, ?, ?)");
+             PreparedStatement up = c.prepareStatement(
+                     "UPDATE sensor_latest SET t = ?, value = ?, file_id = ? WHERE vehicle = ? AND sensor_id = ?")) {
+            for (int i = 0; i < sensorIds.length; i++) {
+                if (Double.isNaN(lastT[i])) {
+                    continue;
+                }
+                Timestamp t = timestamp(lastT[i]);
+                Timestamp old = kept.get(sensorIds[i]);
+                if (old == null) {
+                    ins.setString(1, vehicle);
+                    ins.setInt(2, sensorIds[i]);
+                    ins.setTimestamp(3, t, UTC);
+                    ins.setDouble(4, lastV[i]);
+                    ins.setLong(5, fileId);
+                    ins.addBatch();
+                } else if (!t.before(old)) {
+                    up.setTimestamp(1, t, UTC);
+                    up.setDouble(2, lastV[i]);
+                    up.setLong(3, fileId);
+                    up.setString(4, vehicle);
+                    up.setInt(5, sensorIds[i]);
+                    up.addBatch();
+                }
+            }
+            ins.executeBatch();
+            up.executeBatch();
+        }
+    }
+
+    private static boolean pair(double[] row, int lat, int lon) {
+        return lat >= 0 && lon >= 0 && !Double.isNaN(row[lat]) && !Double.isNaN(row[lon]);
+    }
+
+    /** Epoch seconds to a Timestamp, to the microsecond (what the glider's clock resolves, and no float noise). */
+    static Timestamp timestamp(double epochSeconds) {
+        long micros = Math.round(epochSeconds * 1e6);
+        return Timestamp.from(Instant.ofEpochSecond(Math.floorDiv(micros, 1_000_000L), Math.floorMod(micros, 1_000_000L) * 1000));
+    }
+
+    /** A vehicle name from a store name when the header has none: what comes before the first '-', '_' + digit or '.'. */
+    static String vehicleFromName(String name) {
+        String v = name.replaceFirst("(?:-|_\\d|\\.).*$", "");
+        v = v.isEmpty() ? name : v;
+        return v.length() > 64 ? v.substring(0, 64) : v;
+    }
+
+    private long insertFile(DbaHeader h, String name, String vehicle, String sha, String user) throws SQLException {
+        try (PreparedStatement st = c.prepareStatement("INSERT INTO data_file (vehicle, name, dba_filename, filename_extension,"
+                + " mission_name, fileopen_time, sensors_per_cycle, sensor_count, row_count, value_count, position_count,"
+                + " sha256, ingested, ingested_by) VALUES (?, ?, ?, ?, ?, ?, ?, ?, 0, 0, 0, ?, ?, ?)",
+                Statement.RETURN_GENERATED_KEYS)) {
+            st.setString(1, vehicle);
+            st.setString(2, cut(name, 255));
+            st.setString(3, cut(h.filename(), 255));
+            st.setString(4, cut(h.tag("filename_extension"), 32));
+            st.setString(5, cut(h.tag("mission_name"), 255));
+            st.setString(6, cut(h.tag("fileopen_time"), 64));
+            st.setInt(7, Integer.parseInt(h.tag("sensors_per_cycle").strip()));
+            st.setInt(8, h.sensors().size());
+            st.setString(9, sha);
+            st.setTimestamp(10, Timestamp.from(Instant.now()), UTC);
+            st.setString(11, cut(user, 64));
+            st.executeUpdate();
+            try (ResultSet keys = st.getGeneratedKeys()) {
+                if (keys.next()) {
+                    return keys.getLong(1);
+                }
+            }
+        }
+        try (PreparedStatement st = c.prepareStatement("SELECT file_id FROM data_file WHERE sha256 = ?")) {
+            st.setString(1, sha);
+            try (ResultSet rs = st.executeQuery()) {
+                rs.next();
+                return rs.getLong(1);
+            }
+        }
+    }
+
+    private static String cut(String s, int n) {
+        return s == null || s.length() <= n ? s : s.substring(0, n);
+    }
+
+    /** The SENSOR_DEF ids of a file's sensors, adding the ones not seen before. */
+    private int[] sensorIds(List<Sensor> sensors) throws SQLException {
+        Map<String, Integer> known = new HashMap<>();
+        try (Statement st = c.createStatement(); ResultSet rs = st.executeQuery("SELECT sensor_id, name, unit FROM sensor_def")) {
+            while (rs.next()) {
+                known.put(rs.getString(2) + "\u0000" + rs.getString(3), rs.getInt(1));
+            }
+        }
+        int[] ids = new int[sensors.size()];
+        try (PreparedStatement ins = c.prepareStatement("INSERT INTO sensor_def (name, unit) VALUES (?, ?)",
+                Statement.RETURN_GENERATED_KEYS)) {
+            for (Sensor s : sensors) {
+                Integer id = known.get(s.name() + "\u0000" + s.unit());
+                if (id == null) {
+                    ins.setString(1, s.name());
+                    ins.setString(2, s.unit());
+                    ins.executeUpdate();
+                    try (ResultSet keys = ins.getGeneratedKeys()) {
+                        keys.next();
+                        id = keys.getInt(1);
+                    }
+                    known.put(s.name() + "\u0000" + s.unit(), id);
+                }
+                ids[s.index()] = id;
+            }
+        }
+        return ids;
+    }
+}
