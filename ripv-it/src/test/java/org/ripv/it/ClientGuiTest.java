@@ -326,7 +326,9 @@ class ClientGuiTest {
             await("the clock's mailbox as the target again", () -> model.service(CLOCK) == null ? ""
                     : model.service(CLOCK).target(), CLOCK_BOX::equals);
             ui.run(() -> manager.sendCommand(CLOCK, "echo still here"));
-            await("a reply over the new connection", () -> model.service(CLOCK).transcriptText(),
+            // the periodic refresh may replace the service list while we wait: read it null-safe
+            await("a reply over the new connection", () -> model.service(CLOCK) == null ? ""
+                    : model.service(CLOCK).transcriptText(),
                     t -> t.contains("\nstill here\n"));
             manager.close();
         }
