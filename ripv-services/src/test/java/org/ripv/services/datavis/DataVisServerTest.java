@@ -148,7 +148,7 @@ class DataVisServerTest {
                         default -> "wrote no";
                     });
                     assertThat(h.leftovers()).isEmpty();
-                    assertThat(w.handled.getCount()).as("the fake worker answered").isZero();
+                    assertThat(w.handled.await(10, TimeUnit.SECONDS)).as("the fake worker answered").isTrue();
                 }
             }
         }
