@@ -110,6 +110,10 @@ public final class Transcript implements AutoCloseable {
     }
 
     private void writeLoop() {
+        // Prune once at start, before this run writes anything, then hourly: what a run writes is
+        // never pruned under it by a first sweep that happens to land after its first batch.
+        lastPrune = System.currentTimeMillis();
+        prune(LocalDate.now(ZoneOffset.UTC));
         List<Object> batch = new ArrayList<>();
         while (!closed || !queue.isEmpty()) {
             try {
