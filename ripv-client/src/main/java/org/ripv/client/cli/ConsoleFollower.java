@@ -10,6 +10,7 @@ import java.util.Map;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.atomic.AtomicReference;
 import org.ripv.client.handlers.ClientSocketHandler;
+import org.ripv.json.JsonWriter;
 import org.ripv.messages.ConsoleBatch;
 import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.Ids;
@@ -83,7 +84,7 @@ public final class ConsoleFollower implements ClientSocketHandler.Listener {
         if (mine && reply.footer().result() instanceof ConsoleBatch b && b.mailbox().equals(mailbox)) {
             synchronized (out) {
                 for (ConsoleEntry e : b.entries()) {
-                    out.println(json ? Json.write(toMap(e)) : toText(e));
+                    out.println(json ? JsonWriter.write(toMap(e)) : toText(e));
                 }
                 out.flush();
             }

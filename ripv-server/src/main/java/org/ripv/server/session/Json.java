@@ -2,10 +2,11 @@ package org.ripv.server.session;
 
 import java.util.LinkedHashMap;
 import java.util.Map;
+import org.ripv.json.JsonWriter;
 
 /**
  * Flat JSON objects (strings, numbers, booleans, null) for the transcript and subscription
- * files: one object per line, written and read back without a library. Parsing is strict and
+ * files: one object per line, written by {@link JsonWriter} and read back without a library. Parsing is strict and
  * treats the line as hostile: anything else is an {@link IllegalArgumentException}.
  */
 public final class Json {
@@ -13,47 +14,11 @@ public final class Json {
 
     /** Writes a flat object; values are String, Number, Boolean or null. */
     public static String write(Map<String, ?> fields) {
-        StringBuilder b = new StringBuilder(128).append('{');
-        boolean first = true;
-        for (Map.Entry<String, ?> e : fields.entrySet()) {
-            if (!first) {
-                b.append(',');
-            }
-            first = false;
-            quote(b, e.getKey());
-            b.append(':');
-            Object v = e.getValue();
-            if (v == null || v instanceof Double d && !Double.isFinite(d) || v instanceof Float f && !Float.isFinite(f)) {
-                b.append("null"); // JSON has no NaN or Infinity
-            } else if (v instanceof Number || v instanceof Boolean) {
-                b.append(v);
-            } else {
-                quote(b, v.toString());
-            }
-        }
-        return b.append('}').toString();
+        return JsonWriter.write(fields);
     }
 
     public static void quote(StringBuilder b, String s) {
-        b.append('"');
-        for (int i = 0; i < s.length(); i++) {
-            char c = s.charAt(i);
-            switch (c) {
-                case '"' -> b.append("\\\"");
-                case '\\' -> b.append("\\\\");
-                case '\n' -> b.append("\\n");
-                case '\r' -> b.append("\\r");
-                case '\t' -> b.append("\\t");
-                default -> {
-                    if (c < 0x20 || c == 0x2028 || c == 0x2029) {
-                        b.append(String.format("\\u%04x", (int) c));
-                    } else {
-                        b.append(c);
-                    }
-                }
-            }
-        }
-        b.append('"');
+        JsonWriter.quote(b, s);
     }
 
     /** Reads a flat object: values come back as String, Double/Long, Boolean or null. */

@@ -1,21 +1,27 @@
-package org.ripv.client.cli;
+package org.ripv.json;
 
+import java.util.Arrays;
 import java.util.Collection;
 import java.util.Map;
 
-/** Just enough JSON writing for one object per reply line. */
-final class Json {
-    private Json() {}
+/**
+ * Just enough JSON writing for RIPV's one-object-per-line outputs, without a library: strings,
+ * numbers, booleans, null, maps and collections. NaN and infinities become null (JSON has
+ * neither), and every control character and U+2028/2029 is escaped, so one value is always one
+ * line.
+ */
+public final class JsonWriter {
+    private JsonWriter() {}
 
-    static String write(Object v) {
-        StringBuilder b = new StringBuilder();
-        append(b, v);
+    /** The value as JSON text. */
+    public static String write(Object value) {
+        StringBuilder b = new StringBuilder(128);
+        append(b, value);
         return b.toString();
     }
 
-    @SuppressWarnings("unchecked")
     private static void append(StringBuilder b, Object v) {
-        if (v == null) {
+        if (v == null || v instanceof Double d && !Double.isFinite(d) || v instanceof Float f && !Float.isFinite(f)) {
             b.append("null");
         } else if (v instanceof String s) {
             quote(b, s);
@@ -46,13 +52,14 @@ final class Json {
             }
             b.append(']');
         } else if (v instanceof Object[] a) {
-            append(b, java.util.Arrays.asList(a));
+            append(b, Arrays.asList(a));
         } else {
             quote(b, v.toString());
         }
     }
 
-    private static void quote(StringBuilder b, String s) {
+    /** Appends {@code s} as a JSON string. */
+    public static void quote(StringBuilder b, String s) {
         b.append('"');
         for (int i = 0; i < s.length(); i++) {
             char c = s.charAt(i);
@@ -63,7 +70,7 @@ final class Json {
                 case '\r' -> b.append("\\r");
                 case '\t' -> b.append("\\t");
                 default -> {
-                    if (c < 0x20) {
+                    if (c < 0x20 || c == 0x2028 || c == 0x2029) {
                         b.append(String.format("\\u%04x", (int) c));
                     } else {
                         b.append(c);
