@@ -322,6 +322,14 @@ class ClientGuiTest {
             again.start();
             await("reconnected", () -> model.connection(), c -> c == Connection.CONNECTED);
             assertThat(ui.get(() -> model.session().user())).isEqualTo("alice");
+            // The client's list may still show the clock from before the restart: wait for the
+            // new server to have it, so the command below does not race its registration.
+            long until = System.nanoTime() + T.toNanos();
+            while (again.serviceCount() == 0 && System.nanoTime() < until) {
+                Thread.sleep(50);
+            }
+            assertThat(again.serviceCount()).as("the clock registered with the restarted server").isEqualTo(1);
+            ui.run(() -> manager.refreshServices());
             await("the clock registered again and listed", () -> model.serviceNames(), n -> n.contains(CLOCK));
             await("the clock's mailbox as the target again", () -> model.service(CLOCK) == null ? ""
                     : model.service(CLOCK).target(), CLOCK_BOX::equals);
