@@ -18,7 +18,11 @@
 %%  - the files are removed with delete(), not the shell's rm or del, and BEFORE ok.dat is
 %%    written: the service may write the next data.dat as soon as it sees ok.dat;
 %%  - a plot that fails writes '0 message' to ok.dat instead of stopping the loop;
-%%  - a round the service gave up on (info.dat gone or changed) is dropped quietly.
+%%  - a round the service gave up on (info.dat gone or changed) is dropped quietly;
+%%  - '% plot: STYLE' draws as the built-in worker does: 'time' (x is epoch seconds, drawn as
+%%    UTC dates), 'depth' (time, depth downwards), 'profile' (y is depth, downwards), 'track'
+%%    (x longitude, y latitude in degrees at the right aspect for the latitude, the newest fix
+%%    - the last row - circled in red and labelled with '% mark: text'); anything else is 'xy'.
 
 dataFile = 'data.dat';
 inputFile = 'info.dat';
@@ -57,6 +61,8 @@ while (1)
   yLabel = '';
   legendText = {};
   plotSize = [800 600];
+  plotStyle = 'xy';
+  markText = '';
   pos = ftell(dfid);
   line = fgetl(dfid);
   while ischar(line)
@@ -86,6 +92,10 @@ while (1)
             if numel(s) == 2
               plotSize = s';
             end
+          case 'plot'
+            plotStyle = lower(value);
+          case 'mark'
+            markText = value;
         end
       end
     end
@@ -135,11 +145,22 @@ while (1)
     if isempty(visData)
       error('data.dat has no data rows');
     end
-    h = figure('visible', 'off');
+    h = figure('visible', 'off', 'Position', [0 0 plotSize]);
+    %%lines as wide as the built-in worker's (1.2 px), which also survive the JPEG
+    set(h, 'DefaultLineLineWidth', 1.2);
     if nCols == 1
       plot(visData(:, 1));
+    elseif any(strcmp(plotStyle, {'time', 'depth'}))
+      %%epoch seconds to MATLAB date numbers, shown as UTC dates
+      plot(visData(:, 1) / 86400 + datenum(1970, 1, 1), visData(:, 2:end));
+      datetick('x', 'keeplimits');
+    elseif strcmp(plotStyle, 'track')
+      plot(visData(:, 1), visData(:, 2:end), '.-', 'MarkerSize', 8);
     else
       plot(visData(:, 1), visData(:, 2:end));
+    end
+    if any(strcmp(plotStyle, {'depth', 'profile'}))
+      set(gca, 'YDir', 'reverse');
     end
     title(plotTitle, 'Interpreter', 'none');
     xlabel(xLabel, 'Interpreter', 'none');
@@ -147,6 +168,45 @@ while (1)
     if ~isempty(legendText)
       lh = legend(legendText);
       set(lh, 'Interpreter', 'none');
+    end
+    if strcmp(plotStyle, 'track') && nCols > 1
+      %%a graticule at the latitude's aspect: one degree of longitude drawn cos(latitude)
+      %%as long as one of latitude; the newest fix (the last row with a position) circled
+      %%in red and labelled
+      lon = visData(:, 1);
+      lat = visData(:, 2);
+      fix = find(isfinite(lon) & isfinite(lat));
+      if ~isempty(fix)
+        k = max(0.01, cos((min(lat(fix)) + max(lat(fix))) / 2 * pi / 180));
+        spanX = max(max(lon(fix)) - min(lon(fix)), 1e-4) * 1.2;
+        spanY = max(max(lat(fix)) - min(lat(fix)), 1e-4) * 1.2;
+        axPos = get(gca, 'Position');
+        plotW = axPos(3) * plotSize(1);
+        plotH = axPos(4) * plotSize(2);
+        if spanX * k / spanY > plotW / plotH
+          spanY = spanX * k * plotH / plotW;
+        else
+          spanX = spanY * plotW / plotH / k;
+        end
+        cx = (min(lon(fix)) + max(lon(fix))) / 2;
+        cy = (min(lat(fix)) + max(lat(fix))) / 2;
+        set(gca, 'XLim', [cx - spanX / 2, cx + spanX / 2], 'YLim', [cy - spanY / 2, cy + spanY / 2]);
+        last = fix(end);
+        if isempty(markText)
+          markText = 'newest fix';
+        end
+        hold on;
+        plot(lon(last), lat(last), 'o', 'Color', [1 0 0], 'MarkerFaceColor', [1 0 0], 'MarkerSize', 8, ...
+             'LineWidth', 2);
+        if lon(last) > cx
+          text(lon(last), lat(last), [markText '  '], 'HorizontalAlignment', 'right', ...
+               'Color', [0.7 0 0], 'FontWeight', 'bold', 'Interpreter', 'none');
+        else
+          text(lon(last), lat(last), ['  ' markText], 'HorizontalAlignment', 'left', ...
+               'Color', [0.7 0 0], 'FontWeight', 'bold', 'Interpreter', 'none');
+        end
+        hold off;
+      end
     end
     grid on;
     set(h, 'PaperUnits', 'inches', 'PaperPosition', [0 0 plotSize / 100]);
@@ -192,3 +252,4 @@ while (1)
     movefile([okFile '.tmp'], okFile, 'f');
   end
 end
+

@@ -23,6 +23,9 @@ import org.jfree.data.xy.XYDataset;
  * {@code % mark:}).
  */
 final class PlotStyles {
+    /** A track's colour: MATLAB's and Octave's first line colour, as ripvOut.m draws it. */
+    static final Color TRACK = new Color(0, 114, 189);
+
     private PlotStyles() {}
 
     /** What x is multiplied by before drawing: epoch seconds become a date axis's milliseconds. */
@@ -69,6 +72,7 @@ final class PlotStyles {
         for (int s = 0; s < data.getSeriesCount(); s++) {
             r.setSeriesShape(s, new Ellipse2D.Double(-2, -2, 4, 4));
         }
+        r.setSeriesPaint(0, TRACK); // not JFreeChart's first red: the newest fix is the red on a map
         plot.setDomainGridlineStroke(new BasicStroke(0.6f));
         plot.setRangeGridlineStroke(new BasicStroke(0.6f));
         if (minX > maxX) {
