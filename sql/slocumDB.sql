@@ -64,24 +64,26 @@ CREATE TABLE sensor_latest (
 -- A sensor's values of one vehicle in time order: positions, latest, tracks, depth plots.
 CREATE INDEX reading_sensor_vehicle_t ON reading (sensor_id, vehicle, t);
 
--- Positions in decimal degrees: a latitude and a longitude from the same row of the same file.
--- No-fix values (69696969) are never stored; impossible ones are left out here as well.
--- (Derby does not push a WHERE on the view into the UNION's branches: for one vehicle's track
--- over years of a fleet, put the vehicle into each branch as vis:track does; docs/database.md.)
+-- Every position fix in decimal degrees, one row per fix: a latitude and a longitude from the
+-- same row of a file (m_gps_lat/m_gps_lon: 'gps'; m_lat/m_lon: 'dead-reckoned'), written by the
+-- ingest beside the READINGs they come from. No-fix (69696969) and impossible values are never
+-- stored. A track is one range of the covering index below, newest first, with no join and no
+-- sort: 100,000 fixes of a glider are read without touching READING (docs/database.md).
+CREATE TABLE position_fix (
+    vehicle           VARCHAR(64)      NOT NULL,
+    t                 TIMESTAMP        NOT NULL,
+    lat               DOUBLE PRECISION NOT NULL,
+    lon               DOUBLE PRECISION NOT NULL,
+    source            VARCHAR(16)      NOT NULL,
+    file_id           INTEGER          NOT NULL,
+    row_no            INTEGER          NOT NULL
+);
+
+CREATE INDEX position_fix_vehicle_t ON position_fix (vehicle, t DESC, lat, lon, source, file_id);
+
+-- Positions in decimal degrees (vehicle, time, lat, lon, source gps or dead-reckoned).
 CREATE VIEW positions (vehicle, time_utc, lat, lon, source, file_id) AS
-SELECT la.vehicle, la.t, la.value, lo.value, CAST('gps' AS VARCHAR(16)), la.file_id
-  FROM sensor_def sa
-  JOIN reading la ON la.sensor_id = sa.sensor_id
-  JOIN sensor_def so ON so.name = 'm_gps_lon'
-  JOIN reading lo ON lo.file_id = la.file_id AND lo.row_no = la.row_no AND lo.sensor_id = so.sensor_id
- WHERE sa.name = 'm_gps_lat' AND la.value BETWEEN -90 AND 90 AND lo.value BETWEEN -180 AND 180
-UNION ALL
-SELECT la.vehicle, la.t, la.value, lo.value, CAST('dead-reckoned' AS VARCHAR(16)), la.file_id
-  FROM sensor_def sa
-  JOIN reading la ON la.sensor_id = sa.sensor_id
-  JOIN sensor_def so ON so.name = 'm_lon'
-  JOIN reading lo ON lo.file_id = la.file_id AND lo.row_no = la.row_no AND lo.sensor_id = so.sensor_id
- WHERE sa.name = 'm_lat' AND la.value BETWEEN -90 AND 90 AND lo.value BETWEEN -180 AND 180;
+SELECT vehicle, t, lat, lon, source, file_id FROM position_fix;
 
 -- Each sensor's last value per vehicle, with its time.
 CREATE VIEW latest (vehicle, sensor, unit, time_utc, value) AS

@@ -25,7 +25,7 @@ public final class BenchMain {
             "  console    the live console: 1,000 watchers of a vehicle printing 50 lines/s against one watcher,",
             "             and with one more that never reads   [--watchers N] [--rate N] [--seconds S] [--warmup S]",
             "  ingest     Slocum DBA ingest (2,136 sensors; 100,000 rows) against a direct JDBC batch insert, and",
-            "             vis:track of 100,000 positions end to end   [--runs N] [--track-runs N] [--track-only]",
+            "             vis:track of 100,000 positions end to end   [--runs N] [--track-runs N] [--only wide|long|track]",
             "  datavis    vis: to JPEG for 10,000 and 1,000,000 points, built-in worker and Octave   [--no-octave]",
             "  firststart the DatabaseServer's first start (Derby created and seeded) in a fresh JVM, against",
             "             loading the scripts statement by statement   [--runs N]",

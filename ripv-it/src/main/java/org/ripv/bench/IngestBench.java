@@ -59,7 +59,8 @@ import org.ripv.services.ingest.DbaReader;
  *   <li>{@code vis:track} of 100,000 positions end to end: client socket → RIPVServer → RMI →
  *       DatabaseServer query → server → RMI → DataVisServer built-in worker → JPEG back at the client.</li>
  * </ol>
- * Options: {@code --runs N} (default 2), {@code --track-runs N} (default 3), {@code --track-only}.
+ * Options: {@code --runs N} (default 2), {@code --track-runs N} (default 3), {@code --only wide|long|track}
+ * (one part; {@code --track-only} is {@code --only track}).
  */
 public final class IngestBench {
     private static final Calendar UTC = Calendar.getInstance(TimeZone.getTimeZone("UTC"));
@@ -69,14 +70,17 @@ public final class IngestBench {
     public static void main(String[] args) throws Exception {
         int runs = intOption(args, "--runs", 2);
         int trackRuns = intOption(args, "--track-runs", 3);
-        boolean trackOnly = java.util.Arrays.asList(args).contains("--track-only");
+        String only = Arrays.asList(args).contains("--track-only") ? "track" : stringOption(args, "--only", "all");
+        if (!List.of("all", "wide", "long", "track").contains(only)) {
+            throw new IllegalArgumentException("--only wide, long or track, not " + only);
+        }
         Path dir = Files.createTempDirectory("ripv-ingestbench");
         try {
-            if (trackOnly) {
+            if (only.equals("track")) {
                 DatabaseTarget db = EmbeddedDatabase.prepare(dir.resolve("database"), "TTY1");
                 track(dir, db, new QueryLimits(200_000, 600, 64L * 1024 * 1024), trackRuns);
             } else {
-                run(dir, runs, trackRuns);
+                run(dir, runs, trackRuns, only);
             }
         } finally {
             deleteTree(dir);
@@ -84,7 +88,7 @@ public final class IngestBench {
         System.exit(0);
     }
 
-    private static void run(Path dir, int runs, int trackRuns) throws Exception {
+    private static void run(Path dir, int runs, int trackRuns, String only) throws Exception {
         DatabaseTarget db = EmbeddedDatabase.prepare(dir.resolve("database"), "TTY1");
         QueryLimits limits = new QueryLimits(200_000, 600, 64L * 1024 * 1024);
         DatabaseServer local = new DatabaseServer("localhost", List.of(db), limits);
@@ -93,19 +97,25 @@ public final class IngestBench {
         local.replyTo(replies::add);
         System.out.printf(Locale.ROOT, "IngestBench: embedded Derby, %d run(s) per file, %s%n", runs,
                 System.getProperty("java.vm.name") + " " + System.getProperty("java.version"));
-        byte[] wide = generate("wide", 2136, 140, 0.03, false, 1);
-        byte[] long30 = generate("long", 30, 100_000, 0.5, false, 2);
+        byte[] wide = only.equals("long") ? null : generate("wide", 2136, 140, 0.03, false, 1);
+        byte[] long30 = only.equals("wide") ? null : generate("long", 30, 100_000, 0.5, false, 2);
         System.out.printf(Locale.ROOT, "%-34s %9s %10s %10s %12s %7s%n", "file", "values", "ingest ms", "direct ms",
                 "ingest v/s", "ratio");
         try (Connection c = DriverManager.getConnection(db.url(), db.user(), db.password())) {
             ingest(local, replies, "warm-up.mrg", generate("warmup", 40, 2000, 0.5, false, 3)); // creates the schema too
             clear(c);
-            measure(c, local, replies, "2,136 sensors, 1.2 MB", wide, runs);
-            measure(c, local, replies, "30 sensors, 100,000 rows", long30, runs);
+            if (wide != null) {
+                measure(c, local, replies, "2,136 sensors, 1.2 MB", wide, runs);
+            }
+            if (long30 != null) {
+                measure(c, local, replies, "30 sensors, 100,000 rows", long30, runs);
+            }
         } finally {
             local.stop();
         }
-        track(dir, db, limits, trackRuns);
+        if (only.equals("all")) {
+            track(dir, db, limits, trackRuns);
+        }
     }
 
     private static void measure(Connection c, DatabaseServer local, BlockingQueue<OutgoingServiceMessage> replies,
@@ -198,11 +208,13 @@ public final class IngestBench {
             ins.setLong(1, fileId);
             ins.setString(4, p.vehicle);
             for (int i = 0; i < p.values.length; i++) {
-                ins.setInt(2, p.rowNo[i]);
+                if (i == 0 || p.rowNo[i] != p.rowNo[i - 1]) { // a row's values share its row number and time
+                    ins.setInt(2, p.rowNo[i]);
+                    long micros = Math.round(p.time[i] * 1e6);
+                    ins.setTimestamp(5, Timestamp.from(Instant.ofEpochSecond(Math.floorDiv(micros, 1_000_000L),
+                            Math.floorMod(micros, 1_000_000L) * 1000)), UTC);
+                }
                 ins.setInt(3, p.sensor[i]);
-                long micros = Math.round(p.time[i] * 1e6);
-                ins.setTimestamp(5, Timestamp.from(Instant.ofEpochSecond(Math.floorDiv(micros, 1_000_000L),
-                        Math.floorMod(micros, 1_000_000L) * 1000)), UTC);
                 ins.setDouble(6, p.values[i]);
                 ins.addBatch();
                 if (i % 5000 == 4999) {
@@ -348,6 +360,15 @@ public final class IngestBench {
         for (int i = 0; i + 1 < args.length; i++) {
             if (args[i].equals(name)) {
                 return Integer.parseInt(args[i + 1]);
+            }
+        }
+        return dflt;
+    }
+
+    private static String stringOption(String[] args, String name, String dflt) {
+        for (int i = 0; i + 1 < args.length; i++) {
+            if (args[i].equals(name)) {
+                return args[i + 1];
             }
         }
         return dflt;

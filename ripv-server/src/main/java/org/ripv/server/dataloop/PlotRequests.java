@@ -114,9 +114,9 @@ final class PlotRequests {
         List<String> types = t.types();
         String note = t.truncated() ? " (the query was cut at the DatabaseServer's row limit: "
                 + (plan.kind().equals("sql") ? "the first " : "the newest ") + cells.size() + " rows are plotted)" : "";
-        List<double[]> rows;
+        List<String[]> rows;
         if (plan.kind().equals("sql")) {
-            rows = TableData.numbers(t);
+            rows = TableData.tokens(t);
             labels.add("xlabel: " + t.columns().get(0));
             labels.add("legend: " + String.join(" | ", t.columns().subList(1, t.columns().size())));
             if (TableData.isTime(types.get(0))) {
@@ -128,10 +128,10 @@ final class PlotRequests {
             rows = new ArrayList<>(cells.size());
             for (String[] c : cells) {
                 rows.add(switch (plan.kind()) {
-                    case "track" -> new double[] {TableData.number(c[2], types.get(2), "lon"),
-                            TableData.number(c[1], types.get(1), "lat")};
-                    default -> new double[] {TableData.number(c[0], types.get(0), t.columns().get(0)),
-                            TableData.number(c[1], types.get(1), t.columns().get(1))};
+                    case "track" -> new String[] {TableData.token(c[2], types.get(2), "lon"),
+                            TableData.token(c[1], types.get(1), "lat")};
+                    default -> new String[] {TableData.token(c[0], types.get(0), t.columns().get(0)),
+                            TableData.token(c[1], types.get(1), t.columns().get(1))};
                 });
             }
             if (plan.kind().equals("track")) {
@@ -228,24 +228,12 @@ final class PlotRequests {
     }
 
     /**
-     * The positions view's query with the vehicle (and time) inside each branch of its UNION, so
-     * that Derby reaches READING through its (sensor_id, vehicle, t) index for that vehicle only.
+     * The vehicle's positions, newest first: on the positions view, which reads POSITION_FIX, one
+     * range of its (vehicle, t DESC, lat, lon, source, file_id) index with no join and no sort (docs/database.md).
      */
     static String trackSql(String vehicle, String since) {
-        StringBuilder b = new StringBuilder("SELECT time_utc, lat, lon, source FROM (");
-        String[][] pairs = {{"m_gps_lat", "m_gps_lon", "gps"}, {"m_lat", "m_lon", "dead-reckoned"}};
-        for (int i = 0; i < pairs.length; i++) {
-            b.append(i == 0 ? "" : " UNION ALL ")
-                    .append("SELECT la.t AS time_utc, la.value AS lat, lo.value AS lon, CAST('").append(pairs[i][2])
-                    .append("' AS VARCHAR(16)) AS source FROM sensor_def sa JOIN reading la ON la.sensor_id = sa.sensor_id")
-                    .append(" AND la.vehicle = '").append(vehicle).append("'")
-                    .append(since == null ? "" : " AND la.t >= CAST('" + since + "' AS TIMESTAMP)")
-                    .append(" JOIN sensor_def so ON so.name = '").append(pairs[i][1]).append("' JOIN reading lo ON")
-                    .append(" lo.file_id = la.file_id AND lo.row_no = la.row_no AND lo.sensor_id = so.sensor_id")
-                    .append(" WHERE sa.name = '").append(pairs[i][0]).append("' AND la.value BETWEEN -90 AND 90")
-                    .append(" AND lo.value BETWEEN -180 AND 180");
-        }
-        return b.append(") p ORDER BY time_utc DESC").toString();
+        return "SELECT time_utc, lat, lon, source FROM positions WHERE vehicle = '" + vehicle + "'"
+                + (since == null ? "" : " AND time_utc >= CAST('" + since + "' AS TIMESTAMP)") + " ORDER BY time_utc DESC";
     }
 
     /** An ISO time (2016-01-13T17:00:00Z, 2016-01-13T17:00, 2016-01-13) as SQL's UTC timestamp text. */

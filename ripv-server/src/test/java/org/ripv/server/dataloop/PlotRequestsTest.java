@@ -20,8 +20,8 @@ class PlotRequestsTest {
         PlotRequests.Plan p = plots.parse("vis:track cp_388 since=2016-01-13T17:00:00Z");
         assertThat(p.kind()).isEqualTo("track");
         assertThat(p.output()).isEqualTo("track-cp_388");
-        assertThat(p.sql()).contains("la.vehicle = 'cp_388'").contains("la.t >= CAST('2016-01-13 17:00:00' AS TIMESTAMP)")
-                .contains("UNION ALL").endsWith("ORDER BY time_utc DESC");
+        assertThat(p.sql()).isEqualTo("SELECT time_utc, lat, lon, source FROM positions WHERE vehicle = 'cp_388'"
+                + " AND time_utc >= CAST('2016-01-13 17:00:00' AS TIMESTAMP) ORDER BY time_utc DESC");
         assertThat(p.labels()).contains("plot: track");
         assertThat(plots.parse("vis:depth unit_363 db=<DatabaseServer>::<other>TTY2").database())
                 .isEqualTo("<DatabaseServer>::<other>TTY2");
@@ -47,10 +47,22 @@ class PlotRequestsTest {
                 List.of(new String[] {"2016-01-13 17:20:11.24094", "1.5", "x"}, new String[] {"1970-01-01 00:00:01.0", null, null}),
                 false);
         assertThat(TableData.number(t.rows().get(0)[0], "TIMESTAMP", "T")).isEqualTo(1452705611.24094, org.assertj.core.api.Assertions.within(1e-6));
+        assertThat(TableData.token(t.rows().get(0)[0], "TIMESTAMP", "T")).isEqualTo("1452705611.24094");
+        assertThat(TableData.token("1969-12-31 23:59:58.25", "TIMESTAMP", "T")).isEqualTo("-1.75");
+        assertThat(TableData.token("1970-01-01 00:00:01.0", "TIMESTAMP", "T")).isEqualTo("1");
         assertThat(TableData.number(null, "DOUBLE", "V")).isNaN();
-        assertThatThrownBy(() -> TableData.numbers(t)).hasMessageContaining("column S (VARCHAR) holds 'x', not a number");
-        String data = new String(TableData.write(List.of("plot: time"), List.of(new double[] {1, Double.NaN}, new double[] {2.5, 3})),
-                StandardCharsets.UTF_8);
+        // the database's decimal text passes as it is; infinities and NaN become the data file's words
+        assertThat(TableData.token("-144.56061666666668", "DOUBLE", "V")).isEqualTo("-144.56061666666668");
+        assertThat(TableData.token("1.0E-5", "DOUBLE", "V")).isEqualTo("1.0E-5");
+        assertThat(TableData.token("Infinity", "DOUBLE", "V")).isEqualTo("Inf");
+        assertThat(TableData.token("-Infinity", "DOUBLE PRECISION", "V")).isEqualTo("-Inf");
+        assertThat(TableData.token("NaN", "DOUBLE", "V")).isEqualTo("NaN");
+        for (String bad : new String[] {"1.2.3", "1e", "--1", "0x10", "1d", ".", "-", "1 2", "1e5x"}) {
+            assertThatThrownBy(() -> TableData.token(bad, "VARCHAR", "S")).as(bad).hasMessageContaining("not a number");
+        }
+        assertThatThrownBy(() -> TableData.tokens(t)).hasMessageContaining("column S (VARCHAR) holds 'x', not a number");
+        String data = new String(TableData.write(List.of("plot: time"), List.of(new String[] {"1", "NaN"},
+                new String[] {"2.5", "3"})), StandardCharsets.UTF_8);
         assertThat(data).isEqualTo("% plot: time\n1 NaN\n2.5 3\n");
     }
 

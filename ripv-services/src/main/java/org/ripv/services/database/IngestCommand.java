@@ -33,7 +33,20 @@ final class IngestCommand {
     static final String WORD = "ingest";
     static final String SCRIPT = "slocumDB.sql";
     /** Tables and views of the script, for the reader's GRANT. */
-    static final List<String> OBJECTS = List.of("DATA_FILE", "SENSOR_DEF", "READING", "SENSOR_LATEST", "POSITIONS", "LATEST", "DEPTHS", "DIVES");
+    static final List<String> OBJECTS = List.of("DATA_FILE", "SENSOR_DEF", "READING", "SENSOR_LATEST", "POSITION_FIX",
+            "POSITIONS", "LATEST", "DEPTHS", "DIVES");
+    /** The objects an older database (without POSITION_FIX) gets from {@link #addPositionFixes}. */
+    static final List<String> POSITION_OBJECTS = List.of("POSITION_FIX", "POSITIONS");
+    /**
+     * How an older database's fixes come into POSITION_FIX: its positions view's join of a
+     * latitude and a longitude of the same row, with the row number.
+     */
+    private static final String BACKFILL = "INSERT INTO position_fix (vehicle, t, lat, lon, source, file_id, row_no)"
+            + " SELECT la.vehicle, la.t, la.value, lo.value, CAST('%s' AS VARCHAR(16)), la.file_id, la.row_no"
+            + " FROM sensor_def sa JOIN reading la ON la.sensor_id = sa.sensor_id"
+            + " JOIN sensor_def so ON so.name = '%s'"
+            + " JOIN reading lo ON lo.file_id = la.file_id AND lo.row_no = la.row_no AND lo.sensor_id = so.sensor_id"
+            + " WHERE sa.name = '%s' AND la.value BETWEEN -90 AND 90 AND lo.value BETWEEN -180 AND 180";
     static final int MAX_FILES = 1000;
 
     private final DatabaseTarget target;
@@ -110,36 +123,79 @@ final class IngestCommand {
         return Reply.ok(text, new org.ripv.messages.UpdateCount((int) Math.min(Integer.MAX_VALUE, values)));
     }
 
-    /** Creates the tables and views of {@value #SCRIPT} unless DATA_FILE exists, and lets the reader see them. */
+    /**
+     * Creates the tables and views of {@value #SCRIPT} unless DATA_FILE exists, and lets the reader
+     * see them; a database made before POSITION_FIX existed gets it ({@link #addPositionFixes}).
+     */
     void ensureSchema(Connection c) throws SQLException, IOException {
         if (schemaChecked && !c.isClosed()) {
             return;
         }
         if (!exists(c, "DATA_FILE")) {
-            boolean auto = c.getAutoCommit();
-            c.setAutoCommit(false);
-            try {
-                SqlScript.run(c, SqlScript.resource(SCRIPT), SCRIPT);
-                c.commit();
-            } catch (SQLException | RuntimeException e) {
-                c.rollback();
-                throw e;
-            } finally {
-                c.setAutoCommit(auto);
-            }
+            inTransaction(c, () -> SqlScript.run(c, SqlScript.resource(SCRIPT), SCRIPT));
             log.info("{}: created the Slocum tables and views of {}", target.handle(), SCRIPT);
-            if (target.readerUser() != null) {
-                try (Statement st = c.createStatement()) {
-                    for (String o : OBJECTS) {
-                        st.execute("GRANT SELECT ON " + o + " TO " + target.readerUser());
-                    }
-                } catch (SQLException e) {
-                    log.warn("{}: could not let {} read the Slocum tables: {}", target.handle(), target.readerUser(),
-                            DatabaseHandler.describe(e));
-                }
-            }
+            grantReader(c, OBJECTS);
+        } else if (!exists(c, "POSITION_FIX")) {
+            long fixes = inTransaction(c, () -> addPositionFixes(c));
+            log.info("{}: added POSITION_FIX to the Slocum tables, with the {} fixes stored before", target.handle(), fixes);
+            grantReader(c, POSITION_OBJECTS);
         }
         schemaChecked = true;
+    }
+
+    /**
+     * Brings a database made by an earlier RIPV, whose positions view joined READING with itself,
+     * to today's {@value #SCRIPT}: POSITION_FIX, its index and the positions view are made by the
+     * script's own statements, and the fixes already stored are copied in.
+     *
+     * @return the fixes copied
+     */
+    static long addPositionFixes(Connection c) throws SQLException, IOException {
+        long copied = 0;
+        try (Statement st = c.createStatement()) {
+            st.execute("DROP VIEW positions");
+            for (String sql : SqlScript.split(SqlScript.resource(SCRIPT))) {
+                if (sql.matches("(?is)CREATE\\s+(TABLE|INDEX|VIEW)\\s+(position_fix|positions|position_fix_\\w+)\\b.*")) {
+                    st.execute(sql);
+                }
+            }
+            copied += st.executeUpdate(String.format(BACKFILL, "gps", "m_gps_lon", "m_gps_lat"));
+            copied += st.executeUpdate(String.format(BACKFILL, "dead-reckoned", "m_lon", "m_lat"));
+        }
+        return copied;
+    }
+
+    private interface Work<T> {
+        T run() throws SQLException, IOException;
+    }
+
+    private static <T> T inTransaction(Connection c, Work<T> work) throws SQLException, IOException {
+        boolean auto = c.getAutoCommit();
+        c.setAutoCommit(false);
+        try {
+            T result = work.run();
+            c.commit();
+            return result;
+        } catch (SQLException | IOException | RuntimeException e) {
+            c.rollback();
+            throw e;
+        } finally {
+            c.setAutoCommit(auto);
+        }
+    }
+
+    private void grantReader(Connection c, List<String> objects) {
+        if (target.readerUser() == null) {
+            return;
+        }
+        try (Statement st = c.createStatement()) {
+            for (String o : objects) {
+                st.execute("GRANT SELECT ON " + o + " TO " + target.readerUser());
+            }
+        } catch (SQLException e) {
+            log.warn("{}: could not let {} read the Slocum tables: {}", target.handle(), target.readerUser(),
+                    DatabaseHandler.describe(e));
+        }
     }
 
     private static boolean exists(Connection c, String table) throws SQLException {

@@ -57,6 +57,20 @@ public final class DataFile {
      *                             too many columns, a bad label line, or no data rows at all
      */
     public static Summary parse(BufferedReader in, RowSink sink) throws IOException, DataFormatException {
+        return parse(in, sink, true);
+    }
+
+    /**
+     * As {@link #parse(BufferedReader, RowSink)}, checking every number's syntax but handing
+     * {@code sink} only the tokens (the values array holds NaN for gaps and nothing meaningful
+     * otherwise): for the passes that count, check or copy a file, which then need not convert
+     * every number to a double.
+     */
+    public static Summary check(BufferedReader in, RowSink sink) throws IOException, DataFormatException {
+        return parse(in, sink, false);
+    }
+
+    private static Summary parse(BufferedReader in, RowSink sink, boolean convert) throws IOException, DataFormatException {
         String title = null;
         String xLabel = null;
         String yLabel = null;
@@ -150,7 +164,7 @@ public final class DataFile {
                 String f = fields.get(c);
                 double v;
                 try {
-                    v = number(f);
+                    v = number(f, convert);
                 } catch (NumberFormatException e) {
                     throw new DataFormatException(lineNo, "column " + (c + 1) + ": '" + shorten(f)
                             + "' is not a number (use NaN, or leave the field empty, for a gap)");
@@ -175,7 +189,7 @@ public final class DataFile {
      */
     public static Summary normalize(byte[] data, PlotLabels overrides, Writer out) throws IOException, DataFormatException {
         // Pass 1 validates and collects the labels, so they can all go first, where workers look for them.
-        Summary found = parse(reader(data), (v, t) -> { });
+        Summary found = check(reader(data), (v, t) -> { });
         PlotLabels labels = overrides.or(found.labels());
         if (labels.legend() != null && labels.legend().size() > Math.max(1, found.columns() - 1)) {
             throw new DataFormatException(0, "the legend names " + labels.legend().size() + " series but the file has "
@@ -183,7 +197,7 @@ public final class DataFile {
         }
         writeLabels(labels, out);
         StringBuilder sb = new StringBuilder(64);
-        parse(reader(data), (v, tokens) -> {
+        check(reader(data), (v, tokens) -> {
             sb.setLength(0);
             for (int i = 0; i < tokens.length; i++) {
                 if (i > 0) {
@@ -227,37 +241,78 @@ public final class DataFile {
         return new BufferedReader(new InputStreamReader(new ByteArrayInputStream(data), StandardCharsets.UTF_8));
     }
 
-    /** A number, or NaN for a gap. Stricter than Double.parseDouble: no "1d", "0x1p3", "Infinity". */
-    private static double number(String f) {
+    /**
+     * A number, or NaN for a gap. Stricter than Double.parseDouble: no "1d", "0x1p3", "Infinity".
+     * Unless {@code convert}, a plain decimal (no exponent, so never infinite) is only checked and
+     * 0 stands for its value.
+     */
+    static double number(String f, boolean convert) {
         if (f.isEmpty()) {
             return Double.NaN;
         }
-        String lower = f.toLowerCase(Locale.ROOT);
-        switch (lower) {
-            case "nan", "na" -> {
-                return Double.NaN;
-            }
-            case "inf", "+inf" -> {
-                return Double.POSITIVE_INFINITY;
-            }
-            case "-inf" -> {
-                return Double.NEGATIVE_INFINITY;
-            }
-            default -> { }
-        }
-        boolean digit = false;
-        for (int i = 0; i < f.length(); i++) {
-            char ch = f.charAt(i);
-            if (ch >= '0' && ch <= '9') {
-                digit = true;
-            } else if (ch != '.' && ch != '-' && ch != '+' && ch != 'e' && ch != 'E') {
+        char first = f.charAt(0);
+        if (first >= '0' && first <= '9' || first == '.' || (first == '-' || first == '+') && f.length() > 1
+                && f.charAt(1) != 'i' && f.charAt(1) != 'I') {
+            int kind = decimal(f);
+            if (kind == NOT_A_NUMBER) {
                 throw new NumberFormatException(f);
             }
+            return convert || kind == EXPONENT ? Double.parseDouble(f) : 0;
         }
-        if (!digit) {
-            throw new NumberFormatException(f);
+        if (f.equalsIgnoreCase("nan") || f.equalsIgnoreCase("na")) {
+            return Double.NaN;
         }
-        return Double.parseDouble(f);
+        if (f.equalsIgnoreCase("inf") || f.equalsIgnoreCase("+inf")) {
+            return Double.POSITIVE_INFINITY;
+        }
+        if (f.equalsIgnoreCase("-inf")) {
+            return Double.NEGATIVE_INFINITY;
+        }
+        throw new NumberFormatException(f);
+    }
+
+    private static final int NOT_A_NUMBER = 0;
+    private static final int PLAIN = 1;
+    private static final int EXPONENT = 2;
+
+    /** [+-] digits [. digits] or [+-] . digits, then optionally [eE] [+-] digits: what parseDouble takes of these characters. */
+    static int decimal(String f) {
+        int n = f.length();
+        int i = 0;
+        if (f.charAt(0) == '-' || f.charAt(0) == '+') {
+            i++;
+        }
+        int digits = 0;
+        while (i < n && f.charAt(i) >= '0' && f.charAt(i) <= '9') {
+            i++;
+            digits++;
+        }
+        if (i < n && f.charAt(i) == '.') {
+            i++;
+            while (i < n && f.charAt(i) >= '0' && f.charAt(i) <= '9') {
+                i++;
+                digits++;
+            }
+        }
+        if (digits == 0) {
+            return NOT_A_NUMBER;
+        }
+        if (i == n) {
+            return PLAIN;
+        }
+        if (f.charAt(i) != 'e' && f.charAt(i) != 'E') {
+            return NOT_A_NUMBER;
+        }
+        i++;
+        if (i < n && (f.charAt(i) == '-' || f.charAt(i) == '+')) {
+            i++;
+        }
+        int exp = 0;
+        while (i < n && f.charAt(i) >= '0' && f.charAt(i) <= '9') {
+            i++;
+            exp++;
+        }
+        return exp > 0 && i == n ? EXPONENT : NOT_A_NUMBER;
     }
 
     private static List<String> split(String line, boolean comma) {

@@ -59,7 +59,7 @@ public final class PlotRenderer {
     public static Rendered render(Path dataFile) throws IOException, DataFormatException {
         DataFile.Summary summary;
         try (BufferedReader in = Files.newBufferedReader(dataFile, StandardCharsets.UTF_8)) {
-            summary = DataFile.parse(in, (v, t) -> { });
+            summary = DataFile.check(in, (v, t) -> { }); // counting needs no numbers
         }
         PlotLabels labels = summary.labels();
         int width = labels.widthOrDefault();

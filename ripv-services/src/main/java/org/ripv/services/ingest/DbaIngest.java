@@ -20,7 +20,8 @@ import java.util.TimeZone;
 
 /**
  * Stores one DBA file in the narrow schema of {@code sql/slocumDB.sql}: a DATA_FILE row, the
- * sensors it names in SENSOR_DEF, and one READING per non-NaN value — all in one transaction,
+ * sensors it names in SENSOR_DEF, one READING per non-NaN value and one POSITION_FIX per row with
+ * a latitude and longitude pair (GPS or dead-reckoned) — all in one transaction,
  * in JDBC batches, streaming the rows. A file whose SHA-256 is stored already is not stored
  * again; a file the {@link DbaReader} refuses stores nothing.
  *
@@ -29,7 +30,10 @@ import java.util.TimeZone;
 public final class DbaIngest {
     /** Rows per JDBC batch. */
     static final int BATCH = 5_000;
-    private static final Calendar UTC = Calendar.getInstance(TimeZone.getTimeZone("UTC"));
+    /** Per instance: JDBC drivers may set a Calendar's fields while they convert, so no two threads share one. */
+    private final Calendar utc = Calendar.getInstance(TimeZone.getTimeZone("UTC"));
+    /** POSITION_FIX.SOURCE of the (m_gps_lat, m_gps_lon) and (m_lat, m_lon) pairs. */
+    private static final String[] FIXES = {"gps", "dead-reckoned"};
 
     /**
      * What one file gave.
@@ -172,10 +176,15 @@ public final class DbaIngest {
             double first = Double.NaN;
             double last = Double.NaN;
             int pending = 0;
+            int pendingFixes = 0;
             try (PreparedStatement ins = c.prepareStatement(
-                    "INSERT INTO reading (file_id, row_no, sensor_id, vehicle, t, value) VALUES (?, ?, ?, ?, ?, ?)")) {
+                    "INSERT INTO reading (file_id, row_no, sensor_id, vehicle, t, value) VALUES (?, ?, ?, ?, ?, ?)");
+                 PreparedStatement fix = c.prepareStatement(
+                         "INSERT INTO position_fix (vehicle, t, lat, lon, source, file_id, row_no) VALUES (?, ?, ?, ?, ?, ?, ?)")) {
                 ins.setLong(1, fileId);
                 ins.setString(4, vehicle);
+                fix.setString(1, vehicle);
+                fix.setLong(6, fileId);
                 while (r.next(row)) {
                     double t = r.time(row);
                     if (!Double.isFinite(t) || t < 0 || t > 32_503_680_000d) { // up to year 3000
@@ -189,14 +198,26 @@ public final class DbaIngest {
                         maxDepth = depths == 0 ? row[depth] : Math.max(maxDepth, row[depth]);
                         depths++;
                     }
-                    if (pair(row, latGps, lonGps)) {
-                        positions++;
-                    }
-                    if (pair(row, latDr, lonDr)) {
-                        positions++;
+                    Timestamp time = timestamp(t);
+                    for (int p = 0; p < FIXES.length; p++) {
+                        int lat = p == 0 ? latGps : latDr;
+                        int lon = p == 0 ? lonGps : lonDr;
+                        if (pair(row, lat, lon)) {
+                            positions++;
+                            fix.setTimestamp(2, time, utc);
+                            fix.setDouble(3, row[lat]);
+                            fix.setDouble(4, row[lon]);
+                            fix.setString(5, FIXES[p]);
+                            fix.setLong(7, r.rows());
+                            fix.addBatch();
+                            if (++pendingFixes == BATCH) {
+                                fix.executeBatch();
+                                pendingFixes = 0;
+                            }
+                        }
                     }
                     ins.setLong(2, r.rows());
-                    ins.setTimestamp(5, timestamp(t), UTC);
+                    ins.setTimestamp(5, time, utc);
                     for (int i = 0; i < row.length; i++) {
                         double v = row[i];
                         if (Double.isNaN(v)) {
@@ -219,6 +240,9 @@ public final class DbaIngest {
                 if (pending > 0) {
                     ins.executeBatch();
                 }
+                if (pendingFixes > 0) {
+                    fix.executeBatch();
+                }
             }
             latest(vehicle, fileId, sensorIds, lastT, lastV);
             try (PreparedStatement up = c.prepareStatement("UPDATE data_file SET row_count = ?, value_count = ?,"
@@ -227,8 +251,8 @@ public final class DbaIngest {
                 up.setLong(1, r.rows() - untimed);
                 up.setLong(2, values);
                 up.setLong(3, positions);
-                up.setTimestamp(4, Double.isNaN(first) ? null : timestamp(first), UTC);
-                up.setTimestamp(5, Double.isNaN(last) ? null : timestamp(last), UTC);
+                up.setTimestamp(4, Double.isNaN(first) ? null : timestamp(first), utc);
+                up.setTimestamp(5, Double.isNaN(last) ? null : timestamp(last), utc);
                 if (depths == 0) {
                     up.setNull(6, java.sql.Types.DOUBLE);
                     up.setNull(7, java.sql.Types.DOUBLE);
@@ -252,7 +276,7 @@ public final class DbaIngest {
             q.setString(1, vehicle);
             try (ResultSet rs = q.executeQuery()) {
                 while (rs.next()) {
-                    kept.put(rs.getInt(1), rs.getTimestamp(2, UTC));
+                    kept.put(rs.getInt(1), rs.getTimestamp(2, utc));
                 }
             }
         }
@@ -269,12 +293,12 @@ public final class DbaIngest {
                 if (old == null) {
                     ins.setString(1, vehicle);
                     ins.setInt(2, sensorIds[i]);
-                    ins.setTimestamp(3, t, UTC);
+                    ins.setTimestamp(3, t, utc);
                     ins.setDouble(4, lastV[i]);
                     ins.setLong(5, fileId);
                     ins.addBatch();
                 } else if (!t.before(old)) {
-                    up.setTimestamp(1, t, UTC);
+                    up.setTimestamp(1, t, utc);
                     up.setDouble(2, lastV[i]);
                     up.setLong(3, fileId);
                     up.setString(4, vehicle);
@@ -318,7 +342,7 @@ public final class DbaIngest {
             st.setInt(7, Integer.parseInt(h.tag("sensors_per_cycle").strip()));
             st.setInt(8, h.sensors().size());
             st.setString(9, sha);
-            st.setTimestamp(10, Timestamp.from(Instant.now()), UTC);
+            st.setTimestamp(10, Timestamp.from(Instant.now()), utc);
             st.setString(11, cut(user, 64));
             st.executeUpdate();
             try (ResultSet keys = st.getGeneratedKeys()) {

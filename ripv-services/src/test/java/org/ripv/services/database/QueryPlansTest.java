@@ -17,7 +17,8 @@ import org.ripv.services.ingest.DbaIngest;
 
 /**
  * The views' query plans on Derby (its runtime statistics): the pilot's queries reach READING
- * through the (sensor_id, vehicle, t) index and the primary key, never a full scan of READING.
+ * through the (sensor_id, vehicle, t) index, never a full scan of READING; a track is one range of
+ * POSITION_FIX's covering index, newest first, without a sort.
  * With {@code -Dripv.plans=FILE} the plans are written out for docs/database.md.
  */
 class QueryPlansTest {
@@ -33,21 +34,15 @@ class QueryPlansTest {
             }
             try (Statement st = c.createStatement()) {
                 st.execute("CALL SYSCS_UTIL.SYSCS_UPDATE_STATISTICS('APP', 'READING', null)");
+                st.execute("CALL SYSCS_UTIL.SYSCS_UPDATE_STATISTICS('APP', 'POSITION_FIX', null)");
             }
             Map<String, String> queries = new LinkedHashMap<>();
-            queries.put("positions", "SELECT time_utc, lat, lon, source FROM positions WHERE vehicle = 'unit_363' ORDER BY time_utc DESC");
-            // what vis:track sends (org.ripv.server.dataloop.PlotRequests.trackSql): the vehicle inside each branch
-            queries.put("track", "SELECT time_utc, lat, lon, source FROM (SELECT la.t AS time_utc, la.value AS lat, lo.value AS lon,"
-                    + " CAST('gps' AS VARCHAR(16)) AS source FROM sensor_def sa JOIN reading la ON la.sensor_id = sa.sensor_id"
-                    + " AND la.vehicle = 'unit_363' JOIN sensor_def so ON so.name = 'm_gps_lon' JOIN reading lo ON"
-                    + " lo.file_id = la.file_id AND lo.row_no = la.row_no AND lo.sensor_id = so.sensor_id"
-                    + " WHERE sa.name = 'm_gps_lat' AND la.value BETWEEN -90 AND 90 AND lo.value BETWEEN -180 AND 180"
-                    + " UNION ALL SELECT la.t AS time_utc, la.value AS lat, lo.value AS lon,"
-                    + " CAST('dead-reckoned' AS VARCHAR(16)) AS source FROM sensor_def sa JOIN reading la ON la.sensor_id = sa.sensor_id"
-                    + " AND la.vehicle = 'unit_363' JOIN sensor_def so ON so.name = 'm_lon' JOIN reading lo ON"
-                    + " lo.file_id = la.file_id AND lo.row_no = la.row_no AND lo.sensor_id = so.sensor_id"
-                    + " WHERE sa.name = 'm_lat' AND la.value BETWEEN -90 AND 90 AND lo.value BETWEEN -180 AND 180"
-                    + ") p ORDER BY time_utc DESC");
+            queries.put("positions", "SELECT * FROM positions WHERE vehicle = 'unit_363'");
+            // what vis:track sends (org.ripv.server.dataloop.PlotRequests.trackSql)
+            queries.put("track", "SELECT time_utc, lat, lon, source FROM positions WHERE vehicle = 'unit_363'"
+                    + " ORDER BY time_utc DESC");
+            queries.put("track since", "SELECT time_utc, lat, lon, source FROM positions WHERE vehicle = 'unit_363'"
+                    + " AND time_utc >= CAST('2013-09-02 12:00:00' AS TIMESTAMP) ORDER BY time_utc DESC");
             queries.put("latest", "SELECT * FROM latest WHERE vehicle = 'unit_363'");
             queries.put("depth", "SELECT time_utc, depth FROM depths WHERE vehicle = 'unit_363' AND source = 'm_depth'");
             queries.put("dives", "SELECT * FROM dives WHERE vehicle = 'unit_363'");
@@ -62,9 +57,15 @@ class QueryPlansTest {
             if (out != null) {
                 Files.writeString(Path.of(out), all);
             }
-            assertThat(plans.get("track")).contains("READING_SENSOR_VEHICLE_T").contains("READING_PK")
-                    .doesNotContain("Table Scan ResultSet for READING");
-            assertThat(plans.get("positions")).contains("READING_SENSOR_VEHICLE_T").doesNotContain("Table Scan ResultSet for READING");
+            // the track: one range of the covering index, newest first, no sort and no base rows
+            assertThat(plans.get("track")).contains("Index Scan ResultSet for POSITION_FIX using index POSITION_FIX_VEHICLE_T")
+                    .doesNotContain("Sort ResultSet").doesNotContain("READING").doesNotContain("Index Row to Base Row")
+                    .doesNotContain("Table Scan");
+            assertThat(plans.get("track since")).contains("POSITION_FIX_VEHICLE_T").doesNotContain("Sort ResultSet")
+                    .doesNotContain("Index Row to Base Row")
+                    .doesNotContain("Table Scan");
+            assertThat(plans.get("positions")).contains("POSITION_FIX_VEHICLE_T").doesNotContain("READING")
+                    .doesNotContain("Table Scan").doesNotContain("Index Row to Base Row");
             assertThat(plans.get("latest")).doesNotContain("ResultSet for READING");
             assertThat(plans.get("dives")).doesNotContain("ResultSet for READING");
             assertThat(plans.get("depth")).contains("READING_SENSOR_VEHICLE_T").doesNotContain("Table Scan ResultSet for READING");

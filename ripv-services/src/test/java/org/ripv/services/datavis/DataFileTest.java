@@ -97,4 +97,36 @@ class DataFileTest {
         assertThat(s.rows()).isEqualTo(2);
         assertThat(sum[0]).isEqualTo(10);
     }
+
+    @Test
+    void checkingAcceptsAndRefusesExactlyWhatParsingDoes() throws Exception {
+        String[] fields = {"0", "-12.5", "+3", ".5", "5.", "1e5", "1.5E-3", "-2e+10", "1e400", "-1e400", "NaN", "na", "Inf",
+            "+inf", "-INF", "1d", "0x10", "1.2.3", "--1", "-", ".", "e5", "1e", "1e5x", "Infinity", "-NaN", "12:00", "abc"};
+        for (String f : fields) {
+            String file = "1 " + f + "\n";
+            String[] parsed = tokens(file, false);
+            String[] checked = tokens(file, true);
+            assertThat(checked).as(f).isEqualTo(parsed);
+        }
+        assertThat(tokens("1 1e400\n", true)).containsExactly("1", "Inf");
+        assertThat(tokens("1 -12.5\n", true)).containsExactly("1", "-12.5");
+        assertThat(tokens("1 5d\n", true)).containsExactly("refused: line 1: column 2: '5d' is not a number (use NaN, or leave"
+                + " the field empty, for a gap)");
+    }
+
+    /** The tokens of a one-row file's row, or why it was refused. */
+    private static String[] tokens(String file, boolean check) throws Exception {
+        String[][] row = {null};
+        DataFile.RowSink sink = (v, t) -> row[0] = t.clone();
+        try {
+            if (check) {
+                DataFile.check(DataFile.reader(file.getBytes(StandardCharsets.UTF_8)), sink);
+            } else {
+                DataFile.parse(DataFile.reader(file.getBytes(StandardCharsets.UTF_8)), sink);
+            }
+            return row[0];
+        } catch (DataFormatException e) {
+            return new String[] {"refused: " + e.getMessage()};
+        }
+    }
 }
