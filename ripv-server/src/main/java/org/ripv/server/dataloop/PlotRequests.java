@@ -45,7 +45,11 @@ final class PlotRequests {
     }
 
     /** A parsed plot request. */
-    record Plan(String kind, String sql, String output, List<String> labels, String vehicle, String database) {}
+    record Plan(String kind, String sql, String output, List<String> labels, String vehicle, String database, String since) {
+        Plan(String kind, String sql, String output, List<String> labels, String vehicle, String database) {
+            this(kind, sql, output, labels, vehicle, database, null);
+        }
+    }
 
     /** True when the body is one of the server-orchestrated plots. */
     static boolean isPlot(String body) {
@@ -74,9 +78,31 @@ final class PlotRequests {
                     + " for " + plan.kind()));
             return true;
         }
-        List<String> roles = request.header().roles();
         send.accept(progress(request, "querying " + plan.database() + " for " + plan.kind()));
-        calls.call(plan.database(), plan.sql(), user, roles, null, f -> { }).whenComplete((f, e) -> {
+        query(request, plan, plan.sql(), send, t -> {
+            if (!plan.kind().equals("track") || t.rows().isEmpty()) {
+                plot(request, visMailbox, plan, t, null, send);
+                return;
+            }
+            // the newest fix, then every fix up to it: the mark and the points agree even while an ingest runs
+            String[] newest = t.rows().get(0);
+            String points = trackPointsSql(plan.vehicle(), plan.since(), newest[0]);
+            if (!calls.permitted(user, plan.database(), points)) {
+                send.accept(error(request, ErrorCode.FORBIDDEN, "user '" + user + "' may not query " + plan.database()
+                        + " for " + plan.kind()));
+                return;
+            }
+            query(request, plan, points, send, p -> plot(request, visMailbox, plan, p,
+                    "newest fix " + newest[0] + " UTC (" + newest[1] + ")", send));
+        });
+        return true;
+    }
+
+    /** Runs one query as the user; hands its table on, or answers the error. */
+    private void query(IncomingServerMessage request, Plan plan, String sql, Consumer<OutgoingServerMessage> send,
+                       Consumer<TableResult> then) {
+        String user = request.header().origin().user();
+        calls.call(plan.database(), sql, user, request.header().roles(), null, f -> { }).whenComplete((f, e) -> {
             try {
                 if (e != null) {
                     send.accept(error(request, ErrorCode.INTERNAL, "the query failed: " + e));
@@ -85,16 +111,15 @@ final class PlotRequests {
                             "the query for " + plan.kind() + " failed: " + (f.status() == Status.OK
                                     ? "it is not a SELECT (no table came back)" : f.replyText())));
                 } else {
-                    plot(request, visMailbox, plan, t, send);
+                    then.accept(t);
                 }
             } catch (RuntimeException x) {
                 send.accept(error(request, ErrorCode.BAD_REQUEST, x.getMessage()));
             }
         });
-        return true;
     }
 
-    private void plot(IncomingServerMessage request, String visMailbox, Plan plan, TableResult t,
+    private void plot(IncomingServerMessage request, String visMailbox, Plan plan, TableResult t, String mark,
                       Consumer<OutgoingServerMessage> send) {
         if (t.rows().isEmpty()) {
             send.accept(error(request, ErrorCode.BAD_REQUEST, switch (plan.kind()) {
@@ -127,16 +152,11 @@ final class PlotRequests {
             Collections.reverse(cells);
             rows = new ArrayList<>(cells.size());
             for (String[] c : cells) {
-                rows.add(switch (plan.kind()) {
-                    case "track" -> new String[] {TableData.token(c[2], types.get(2), "lon"),
-                            TableData.token(c[1], types.get(1), "lat")};
-                    default -> new String[] {TableData.token(c[0], types.get(0), t.columns().get(0)),
-                            TableData.token(c[1], types.get(1), t.columns().get(1))};
-                });
+                rows.add(new String[] {TableData.token(c[0], types.get(0), t.columns().get(0)),
+                        TableData.token(c[1], types.get(1), t.columns().get(1))});
             }
-            if (plan.kind().equals("track")) {
-                String[] newest = cells.get(cells.size() - 1);
-                labels.add("mark: newest fix " + newest[0] + " UTC (" + newest[3] + ")");
+            if (mark != null) {
+                labels.add("mark: " + mark);
             }
         }
         byte[] data = TableData.write(labels, rows);
@@ -202,10 +222,10 @@ final class PlotRequests {
         String database = db != null ? db : defaultDatabase.get();
         String when = since == null ? "" : " AND time_utc >= CAST('" + since + "' AS TIMESTAMP)";
         return switch (kind) {
-            case "track" -> new Plan(kind, trackSql(vehicle, since), out != null ? out : "track-" + vehicle,
+            case "track" -> new Plan(kind, newestFixSql(vehicle, since), out != null ? out : "track-" + vehicle,
                     List.of("title: track of " + vehicle + (since == null ? "" : " since " + since + " UTC"),
                             "xlabel: longitude (degrees east)", "ylabel: latitude (degrees north)", "legend: positions",
-                            "plot: track", "size: 800x800"), vehicle, database);
+                            "plot: track", "size: 800x800"), vehicle, database, since);
             case "depth" -> new Plan(kind, "SELECT time_utc, depth FROM depths WHERE vehicle = '" + vehicle + "'"
                     + " AND source = 'm_depth'" + when + " ORDER BY time_utc DESC", out != null ? out : "depth-" + vehicle,
                     List.of("title: depth of " + vehicle, "xlabel: time (UTC)", "ylabel: depth (m)", "legend: m_depth",
@@ -227,13 +247,28 @@ final class PlotRequests {
         };
     }
 
+    /** A track's first query: the vehicle's newest fix (its time and source), for the mark. */
+    static String newestFixSql(String vehicle, String since) {
+        return "SELECT time_utc, source FROM positions WHERE vehicle = '" + vehicle + "'" + sinceSql(since)
+                + " ORDER BY time_utc DESC FETCH FIRST 1 ROWS ONLY";
+    }
+
     /**
-     * The vehicle's positions, newest first: on the positions view, which reads POSITION_FIX, one
-     * range of its (vehicle, t DESC, lat, lon, source, file_id) index with no join and no sort (docs/database.md).
+     * A track's points up to its newest fix, newest first, longitude and latitude only (100,000 of
+     * them are 200,000 numbers to carry, not 400,000 cells): on the positions view, which reads
+     * POSITION_FIX, one range of its (vehicle, t DESC, lat, lon, source, file_id) index with no join
+     * and no sort (docs/database.md).
      */
-    static String trackSql(String vehicle, String since) {
-        return "SELECT time_utc, lat, lon, source FROM positions WHERE vehicle = '" + vehicle + "'"
-                + (since == null ? "" : " AND time_utc >= CAST('" + since + "' AS TIMESTAMP)") + " ORDER BY time_utc DESC";
+    static String trackPointsSql(String vehicle, String since, String newest) {
+        if (!newest.matches("[0-9][0-9 :.\\-]{9,40}")) {
+            throw new IllegalArgumentException("the database's newest fix time '" + newest + "' is not a time");
+        }
+        return "SELECT lon, lat FROM positions WHERE vehicle = '" + vehicle + "'" + sinceSql(since)
+                + " AND time_utc <= CAST('" + newest + "' AS TIMESTAMP) ORDER BY time_utc DESC";
+    }
+
+    private static String sinceSql(String since) {
+        return since == null ? "" : " AND time_utc >= CAST('" + since + "' AS TIMESTAMP)";
     }
 
     /** An ISO time (2016-01-13T17:00:00Z, 2016-01-13T17:00, 2016-01-13) as SQL's UTC timestamp text. */

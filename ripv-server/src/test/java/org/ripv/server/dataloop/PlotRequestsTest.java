@@ -20,8 +20,13 @@ class PlotRequestsTest {
         PlotRequests.Plan p = plots.parse("vis:track cp_388 since=2016-01-13T17:00:00Z");
         assertThat(p.kind()).isEqualTo("track");
         assertThat(p.output()).isEqualTo("track-cp_388");
-        assertThat(p.sql()).isEqualTo("SELECT time_utc, lat, lon, source FROM positions WHERE vehicle = 'cp_388'"
-                + " AND time_utc >= CAST('2016-01-13 17:00:00' AS TIMESTAMP) ORDER BY time_utc DESC");
+        // first the newest fix for the mark, then the points up to it (newest first, so a row limit keeps the newest)
+        assertThat(p.sql()).isEqualTo("SELECT time_utc, source FROM positions WHERE vehicle = 'cp_388'"
+                + " AND time_utc >= CAST('2016-01-13 17:00:00' AS TIMESTAMP) ORDER BY time_utc DESC FETCH FIRST 1 ROWS ONLY");
+        assertThat(PlotRequests.trackPointsSql("cp_388", p.since(), "2016-01-13 17:20:11.24094")).isEqualTo(
+                "SELECT lon, lat FROM positions WHERE vehicle = 'cp_388' AND time_utc >= CAST('2016-01-13 17:00:00' AS TIMESTAMP)"
+                + " AND time_utc <= CAST('2016-01-13 17:20:11.24094' AS TIMESTAMP) ORDER BY time_utc DESC");
+        assertThatThrownBy(() -> PlotRequests.trackPointsSql("cp_388", null, "x' OR '1'='1")).hasMessageContaining("not a time");
         assertThat(p.labels()).contains("plot: track");
         assertThat(plots.parse("vis:depth unit_363 db=<DatabaseServer>::<other>TTY2").database())
                 .isEqualTo("<DatabaseServer>::<other>TTY2");

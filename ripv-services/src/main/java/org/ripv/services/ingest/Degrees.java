@@ -10,9 +10,15 @@ public final class Degrees {
 
     private Degrees() {}
 
+    /** Decimal places kept: 1e-9 degrees is a tenth of a millimetre, far below any glider's fix. */
+    static final double SCALE = 1e9;
+
     /**
      * DDMM.MMMM to decimal degrees, or NaN when the value is not a position: minutes of 60 or
      * more, or more degrees than {@code maxDegrees} (90 for a latitude, 180 for a longitude).
+     * Rounded to 9 decimals, so that 3950.8632 is stored and shown as 39.84772, not as the
+     * division's 39.847719999999995 (short decimals are also what the database and the plot
+     * workers print and parse fastest).
      */
     public static double fromDdmm(double packed, double maxDegrees) {
         if (!Double.isFinite(packed)) {
@@ -28,6 +34,6 @@ public final class Degrees {
         if (d > maxDegrees) {
             return Double.NaN;
         }
-        return Math.copySign(d, packed);
+        return Math.copySign(Math.round(d * SCALE) / SCALE, packed);
     }
 }
