@@ -16,7 +16,7 @@ import org.ripv.services.ingest.DbaReader;
 
 /**
  * The {@code % plot: track} style on the real unit_363 file: a map at 800x800 with the newest fix
- * marked in red. With {@code -Dripv.docs.images=DIR} it also writes the picture docs/datavis.md shows.
+ * marked in red (docs/datavis.md's pictures come from {@link WorkerStylesTest}).
  */
 class TrackPlotTest {
     @TempDir
@@ -57,10 +57,6 @@ class TrackPlotTest {
                 }
             }
         }
-        assertThat(red).as("the newest fix is marked in red").isGreaterThan(20);
-        String docs = System.getProperty("ripv.docs.images");
-        if (docs != null) {
-            Files.write(Path.of(docs).resolve("vis-track-unit_363.jpg"), out.jpeg());
-        }
+        assertThat(red).as("the newest fix is marked in red (the track itself is blue)").isGreaterThan(20).isLessThan(400);
     }
 }

@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
 import java.awt.image.BufferedImage;
+import java.io.ByteArrayInputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
@@ -14,6 +15,9 @@ import org.junit.jupiter.api.io.TempDir;
 import org.ripv.messages.ImageResult;
 import org.ripv.messages.OutgoingServiceMessage;
 import org.ripv.messages.Status;
+import org.ripv.services.ingest.DbaFiles;
+import org.ripv.services.ingest.DbaHeader;
+import org.ripv.services.ingest.DbaReader;
 import org.ripv.testing.Tools;
 
 /**
@@ -22,7 +26,8 @@ import org.ripv.testing.Tools;
  * a track at 60° N is a map whose degree of longitude is half as long as one of latitude (a
  * circle 10 km across stays round), with the newest fix circled in red and labelled; depth and
  * profile plots draw depth downwards. Octave is skipped with the reason when absent (and fails
- * under RIPV_REQUIRE_TOOLS). With {@code -Dripv.styles.images=DIR} the pictures are kept.
+ * under RIPV_REQUIRE_TOOLS). Then both draw the shared unit_363 file's track, depth and profile.
+ * With {@code -Dripv.styles.images=DIR} the pictures are kept (docs/images has those of unit_363).
  */
 class WorkerStylesTest {
     private static final double LAT = 60;
@@ -93,8 +98,59 @@ class WorkerStylesTest {
             line = Box.of(img, WorkerStylesTest::coloured);
             assertThat(meanY(img, line, 0.8, 1.0)).as("depth downwards: the warm surface (right) is high in the picture")
                     .isLessThan(meanY(img, line, 0.0, 0.2) - line.height() * 0.5);
+            realPlots(h, name);
             assertThat(h.leftovers()).isEmpty();
         }
+    }
+
+    /**
+     * The three named plots of the shared unit_363 file, as the server hands them to a worker
+     * (org.ripv.server.dataloop.PlotRequests: the same label lines, newest fix marked): each
+     * worker draws them, the track with its mark. These are docs/datavis.md's pictures
+     * ({@code -Dripv.styles.images=docs/images}).
+     */
+    private void realPlots(VisHarness h, String worker) throws Exception {
+        StringBuilder track = new StringBuilder("% title: track of unit_363\n% xlabel: longitude (degrees east)\n"
+                + "% ylabel: latitude (degrees north)\n% legend: positions\n% plot: track\n% size: 800x800\n");
+        StringBuilder depth = new StringBuilder("% title: depth of unit_363\n% xlabel: time (UTC)\n% ylabel: depth (m)\n"
+                + "% legend: m_depth\n% plot: depth\n");
+        StringBuilder profile = new StringBuilder("% title: sci_water_temp of unit_363 against depth\n"
+                + "% xlabel: sci_water_temp\n% ylabel: depth (m)\n% legend: sci_water_temp\n% plot: profile\n");
+        String newest = null;
+        try (DbaReader r = new DbaReader(new ByteArrayInputStream(DbaFiles.read(DbaFiles.shared("unit_363_2013_245_6_6.mrg"))))) {
+            DbaHeader head = r.header();
+            int[][] pairs = {{head.column("m_gps_lon"), head.column("m_gps_lat")}, {head.column("m_lon"), head.column("m_lat")}};
+            int mDepth = head.column("m_depth");
+            int temp = head.column("sci_water_temp");
+            int pressure = head.column("sci_water_pressure");
+            double[] row = new double[head.sensors().size()];
+            while (r.next(row)) {
+                double t = r.time(row);
+                for (int p = 0; p < 2; p++) {
+                    if (!Double.isNaN(row[pairs[p][0]]) && !Double.isNaN(row[pairs[p][1]])) {
+                        track.append(row[pairs[p][0]]).append(' ').append(row[pairs[p][1]]).append('\n');
+                        newest = java.time.LocalDateTime.ofEpochSecond((long) Math.floor(t), (int) Math.round((t - Math.floor(t))
+                                * 1000) * 1_000_000, java.time.ZoneOffset.UTC).toString().replace('T', ' ')
+                                + " UTC (" + (p == 0 ? "gps" : "dead-reckoned") + ")";
+                    }
+                }
+                if (!Double.isNaN(row[mDepth])) {
+                    depth.append(t).append(' ').append(row[mDepth]).append('\n');
+                }
+                if (!Double.isNaN(row[temp]) && !Double.isNaN(row[pressure])) {
+                    profile.append(row[temp]).append(' ').append(row[pressure] * 10).append('\n');
+                }
+            }
+        }
+        track.append("% mark: newest fix ").append(newest).append('\n');
+        BufferedImage img = plot(h, "vis-track-unit_363", track.toString(), worker);
+        assertThat(Box.of(img, WorkerStylesTest::red).count).as("the newest fix is marked").isGreaterThan(20);
+        assertThat(Box.of(img, WorkerStylesTest::darkRed).width()).as("and labelled").isGreaterThan(100);
+        assertThat(Box.of(img, WorkerStylesTest::blue).count).as("the track").isGreaterThan(50);
+        assertThat(Box.of(plot(h, "vis-depth-unit_363", depth.toString(), worker), WorkerStylesTest::coloured).count)
+                .isGreaterThan(200);
+        assertThat(Box.of(plot(h, "vis-profile-unit_363", profile.toString(), worker), WorkerStylesTest::coloured).count)
+                .isGreaterThan(200);
     }
 
     private BufferedImage plot(VisHarness h, String what, String data, String worker) throws Exception {
