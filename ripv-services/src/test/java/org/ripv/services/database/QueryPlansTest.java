@@ -38,11 +38,14 @@ class QueryPlansTest {
             }
             Map<String, String> queries = new LinkedHashMap<>();
             queries.put("positions", "SELECT * FROM positions WHERE vehicle = 'unit_363'");
-            // what vis:track sends (org.ripv.server.dataloop.PlotRequests.trackSql)
-            queries.put("track", "SELECT time_utc, lat, lon, source FROM positions WHERE vehicle = 'unit_363'"
-                    + " ORDER BY time_utc DESC");
-            queries.put("track since", "SELECT time_utc, lat, lon, source FROM positions WHERE vehicle = 'unit_363'"
-                    + " AND time_utc >= CAST('2013-09-02 12:00:00' AS TIMESTAMP) ORDER BY time_utc DESC");
+            // what vis:track sends (org.ripv.server.dataloop.PlotRequests): the newest fix, then the points up to it
+            queries.put("track: newest fix", "SELECT time_utc, source FROM positions WHERE vehicle = 'unit_363'"
+                    + " ORDER BY time_utc DESC FETCH FIRST 1 ROWS ONLY");
+            queries.put("track", "SELECT lon, lat FROM positions WHERE vehicle = 'unit_363'"
+                    + " AND time_utc <= CAST('2013-09-05 13:47:21.577' AS TIMESTAMP) ORDER BY time_utc DESC");
+            queries.put("track since", "SELECT lon, lat FROM positions WHERE vehicle = 'unit_363'"
+                    + " AND time_utc >= CAST('2013-09-05 12:00:00' AS TIMESTAMP)"
+                    + " AND time_utc <= CAST('2013-09-05 13:47:21.577' AS TIMESTAMP) ORDER BY time_utc DESC");
             queries.put("latest", "SELECT * FROM latest WHERE vehicle = 'unit_363'");
             queries.put("depth", "SELECT time_utc, depth FROM depths WHERE vehicle = 'unit_363' AND source = 'm_depth'");
             queries.put("dives", "SELECT * FROM dives WHERE vehicle = 'unit_363'");
@@ -61,6 +64,8 @@ class QueryPlansTest {
             assertThat(plans.get("track")).contains("Index Scan ResultSet for POSITION_FIX using index POSITION_FIX_VEHICLE_T")
                     .doesNotContain("Sort ResultSet").doesNotContain("READING").doesNotContain("Index Row to Base Row")
                     .doesNotContain("Table Scan");
+            assertThat(plans.get("track: newest fix")).contains("POSITION_FIX_VEHICLE_T").doesNotContain("Sort ResultSet")
+                    .doesNotContain("Index Row to Base Row");
             assertThat(plans.get("track since")).contains("POSITION_FIX_VEHICLE_T").doesNotContain("Sort ResultSet")
                     .doesNotContain("Index Row to Base Row")
                     .doesNotContain("Table Scan");
