@@ -5,8 +5,7 @@ import java.net.Inet6Address;
 import java.net.InetAddress;
 import java.net.URI;
 import java.net.UnknownHostException;
-import java.util.ArrayList;
-import java.util.List;
+import org.ripv.security.AddressRanges;
 
 /**
  * Where webhooks may go. A webhook makes the server send an HTTP request of a user's choosing from
@@ -18,13 +17,13 @@ import java.util.List;
  */
 public final class WebhookTargets {
     /** The default: only public addresses. */
-    public static final WebhookTargets PUBLIC_ONLY = new WebhookTargets(List.of(), false, "");
+    public static final WebhookTargets PUBLIC_ONLY = new WebhookTargets(AddressRanges.NONE, false, "");
 
-    private final List<Cidr> allowed;
+    private final AddressRanges allowed;
     private final boolean any;
     private final String text;
 
-    private WebhookTargets(List<Cidr> allowed, boolean any, String text) {
+    private WebhookTargets(AddressRanges allowed, boolean any, String text) {
         this.allowed = allowed;
         this.any = any;
         this.text = text;
@@ -38,17 +37,20 @@ public final class WebhookTargets {
         if (spec == null || spec.isBlank()) {
             return PUBLIC_ONLY;
         }
-        List<Cidr> ranges = new ArrayList<>();
         boolean any = false;
+        StringBuilder ranges = new StringBuilder();
         for (String part : spec.split(",")) {
-            String p = part.trim();
-            if (p.equalsIgnoreCase("any")) {
+            if (part.trim().equalsIgnoreCase("any")) {
                 any = true;
-            } else if (!p.isEmpty()) {
-                ranges.add(Cidr.parse(p));
+            } else {
+                ranges.append(part).append(',');
             }
         }
-        return new WebhookTargets(List.copyOf(ranges), any, spec.trim());
+        try {
+            return new WebhookTargets(AddressRanges.parse(ranges.toString()), any, spec.trim());
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException("--webhook-allow: " + e.getMessage());
+        }
     }
 
     /**
@@ -72,7 +74,7 @@ public final class WebhookTargets {
         }
         for (InetAddress a : all) {
             String kind = restricted(a);
-            if (kind != null && allowed.stream().noneMatch(c -> c.contains(a))) {
+            if (kind != null && !allowed.contains(a)) {
                 throw new IllegalArgumentException("webhook host '" + host + "' is " + a.getHostAddress() + ", " + kind
                         + "; this server sends webhooks only to public addresses unless started with --webhook-allow "
                         + "(docs/sessions.md#notifications)" + (text.isEmpty() ? "" : "; allowed here: " + text));
@@ -152,47 +154,5 @@ public final class WebhookTargets {
     @Override
     public String toString() {
         return text.isEmpty() ? "public addresses only" : text;
-    }
-
-    /** One allowed range. */
-    record Cidr(byte[] network, int bits) {
-        static Cidr parse(String s) {
-            int slash = s.indexOf('/');
-            String addr = slash < 0 ? s : s.substring(0, slash);
-            if (!addr.matches("[0-9A-Fa-f:.]+")) {
-                throw new IllegalArgumentException("--webhook-allow takes addresses or CIDR ranges such as 10.0.0.0/8, not '"
-                        + s + "'");
-            }
-            byte[] net;
-            try {
-                net = InetAddress.getByName(addr).getAddress(); // a literal: no DNS lookup
-            } catch (UnknownHostException e) {
-                throw new IllegalArgumentException("'" + s + "' is not an address or CIDR range");
-            }
-            int bits;
-            try {
-                bits = slash < 0 ? net.length * 8 : Integer.parseInt(s.substring(slash + 1));
-            } catch (NumberFormatException e) {
-                throw new IllegalArgumentException("'" + s + "': the prefix length is not a number");
-            }
-            if (bits < 0 || bits > net.length * 8) {
-                throw new IllegalArgumentException("'" + s + "': the prefix length must be 0-" + net.length * 8);
-            }
-            return new Cidr(net, bits);
-        }
-
-        boolean contains(InetAddress a) {
-            byte[] b = a.getAddress();
-            if (b.length != network.length) {
-                return false;
-            }
-            for (int i = 0; i < bits; i++) {
-                int mask = 0x80 >> (i % 8);
-                if ((b[i / 8] & mask) != (network[i / 8] & mask)) {
-                    return false;
-                }
-            }
-            return true;
-        }
     }
 }
