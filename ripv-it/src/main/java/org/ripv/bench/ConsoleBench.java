@@ -118,7 +118,7 @@ public final class ConsoleBench implements Callable<Integer> {
         Path dir = Files.createTempDirectory("ripv-bench-console");
         out.printf("RIPV console benchmark — %d cores, Java %s, %d lines/s, %d s per phase after %d s warm-up%n",
                 Runtime.getRuntime().availableProcessors(), System.getProperty("java.version"), rate, seconds, warmup);
-        RIPVServer server = new RIPVServer(ServerConfig.forTests(dir.resolve("server")).withMaxClients(watchers + 100)
+        RIPVServer server = new RIPVServer(ServerConfig.forTests(dir.resolve("server")).plain().withMaxClients(watchers + 100)
                 .withServiceCheck(Duration.ofSeconds(5)));
         server.start();
         PermitFile.setUser(dir.resolve("server/permit.txt"), "bench", "bench-password".toCharArray(), List.of("observers"), 1000);
@@ -186,7 +186,7 @@ public final class ConsoleBench implements Callable<Integer> {
     private List<Watch> connect(RIPVServer server, String box, int count, int capacity, CountDownLatch stall) throws Exception {
         List<Watch> list = new ArrayList<>();
         for (int i = 0; i < count; i++) {
-            ClientSocketHandler c = ClientSocketHandler.connect("localhost", server.port());
+            ClientSocketHandler c = ClientSocketHandler.connectPlain("localhost", server.port());
             c.login("bench", "bench-password".toCharArray());
             Watch w = new Watch(c, capacity, stall);
             c.addListener(w);

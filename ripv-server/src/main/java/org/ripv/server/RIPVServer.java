@@ -72,6 +72,8 @@ public final class RIPVServer implements AutoCloseable {
     private final AtomicInteger nextClientId = new AtomicInteger(100_000);
     private final PostOffice<IncomingServerMessage, OutgoingServerMessage> postOffice = new PostOffice<>(200_000);
     private final ScheduledExecutorService timers;
+    /** The threads that write every client's socket. */
+    private final org.ripv.server.handlers.WriterPool writers;
     private final ExecutorService checkers;
     private final ExecutorService withdrawals;
     private final ExecutorService liveness;
@@ -118,6 +120,7 @@ public final class RIPVServer implements AutoCloseable {
         this.config = config;
         this.sessionOptions = sessionOptions;
         this.timers = Executors.newScheduledThreadPool(1, named("ripv-server-timer"));
+        this.writers = new org.ripv.server.handlers.WriterPool(timers);
         // Calls to services: each is bounded by the RMI deadlines and at most one MailBox query
         // runs per service, so a cached pool grows by one thread per hung service at worst.
         this.checkers = Executors.newCachedThreadPool(named("ripv-service-query"));
@@ -244,6 +247,7 @@ public final class RIPVServer implements AutoCloseable {
             }
         }
         clients.values().forEach(SocketHandler::close);
+        writers.close();
         services.values().forEach(ServiceReference::close);
         services.clear();
         if (registry != null) {
@@ -331,7 +335,7 @@ public final class RIPVServer implements AutoCloseable {
                 continue;
             }
             String id = newClientId();
-            SocketHandler h = new SocketHandler(s, id, codec, new Dispatch());
+            SocketHandler h = new SocketHandler(s, id, codec, writers, new Dispatch());
             if (!security.gate().admit(id, s.getInetAddress(), h::close)) {
                 closeQuietly(s);
                 continue;
