@@ -158,6 +158,8 @@ public final class RIPVServer implements AutoCloseable {
         box = postOffice.open(POST_OFFICE, new ServerTaskManager(this));
         security = new ServerSecurity(config.security(), config.maxClients(), timers, permits::current, () -> secret);
         sessions = new ServerSessions(config.dataDir(), sessionOptions, this::permits, this::client, codec);
+        sessions.expireLocks(timers, locks, mailbox -> workflows.lockReleased(mailbox));
+        permits.onChange(sessions::permitsChanged);
         dataLoop = new org.ripv.server.dataloop.DataLoop(internalCalls, config.dataDir().resolve("ingest.properties"));
 
         InetAddress bind = config.bindAddress() == null ? null : InetAddress.getByName(config.bindAddress());

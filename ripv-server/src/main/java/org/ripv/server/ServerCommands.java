@@ -248,6 +248,7 @@ final class ServerCommands {
                 }
                 server.console().serverEvent(address.toString(), org.ripv.messages.VehicleEvent.LOCK_TAKEN, user,
                         "until " + Instant.ofEpochMilli(mine.untilMillis()));
+                server.sessions().lockTaken(address.toString(), mine);
                 return ok(request, c, address + " locked by " + user + " until " + Instant.ofEpochMilli(mine.untilMillis()), null);
             }
             case "?unlock": {

@@ -32,6 +32,7 @@ public final class ConsoleFollower implements ClientSocketHandler.Listener {
     private final CountDownLatch ended = new CountDownLatch(1);
     private final AtomicReference<Exception> cause = new AtomicReference<>();
     private volatile String mailbox = "";
+    private volatile boolean endedByServer;
 
     public ConsoleFollower(ClientSocketHandler client, PrintStream out, PrintStream err, boolean json) {
         this.client = client;
@@ -42,7 +43,8 @@ public final class ConsoleFollower implements ClientSocketHandler.Listener {
 
     /**
      * Follows until the connection ends. Returns 0 when stopped by {@link #stop}, 1 when the
-     * server refused the watch, 3 when the connection was lost.
+     * server refused the watch or ended it (the user lost the right to read the MailBox), 3 when
+     * the connection was lost.
      */
     public int follow(String address, Duration timeout) throws IOException {
         this.mailbox = address;
@@ -62,6 +64,9 @@ public final class ConsoleFollower implements ClientSocketHandler.Listener {
             return 0;
         } finally {
             client.removeListener(this);
+        }
+        if (endedByServer) {
+            return CliCommand.EXIT_ERROR_REPLY;
         }
         Exception why = cause.get();
         if (why != null) {
@@ -88,7 +93,15 @@ public final class ConsoleFollower implements ClientSocketHandler.Listener {
                 }
                 out.flush();
             }
+            if (reply.status() == Status.ERROR && fid.equals(Ids.FID_CONSOLE)) {
+                ended(); // the server ended the watch (the user lost the read right): its line above says why
+            }
         }
+    }
+
+    private void ended() {
+        endedByServer = true;
+        ended.countDown();
     }
 
     @Override

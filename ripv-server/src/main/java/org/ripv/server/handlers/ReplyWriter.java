@@ -209,7 +209,11 @@ final class ReplyWriter {
             ended = true;
             stopped = true;
         }
-        closer.run();
+        // Not on this (shared) thread: closing a TLS socket writes close_notify, which can block on
+        // a peer that stopped reading, and the server's clean-up after a client is not the writers' job.
+        Thread t = new Thread(closer, "ripv-socket-closer-" + clientId);
+        t.setDaemon(true);
+        t.start();
         return false;
     }
 

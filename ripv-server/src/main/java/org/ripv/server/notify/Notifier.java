@@ -220,6 +220,24 @@ public final class Notifier implements AutoCloseable {
 
     // ---- delivery ----
 
+    /**
+     * The read right, checked against the rules in force at each delivery and each retry, so a
+     * user who loses it (the permit file changed) stops getting that MailBox's events; the
+     * subscription's last result says so ({@code ?notify list}), written once.
+     */
+    private boolean mayRead(Subscription s, PermitFile p, String mailbox) {
+        String why = Rights.whyNotRead(p, s.user, mailbox);
+        if (why == null) {
+            return true;
+        }
+        String r = "not notified about " + mailbox + ": " + why;
+        if (!r.equals(s.lastResult())) {
+            log.info("subscription {}: {}", s.id, r);
+            result(s, r);
+        }
+        return false;
+    }
+
     /** An event happened: queue a delivery for every subscription that wants it and may read it. */
     public void accept(ConsoleHub.Notice n) {
         ConsoleEntry e = n.event();
@@ -228,8 +246,7 @@ public final class Notifier implements AutoCloseable {
             if (!s.wants(e.event(), e.mailbox())) {
                 continue;
             }
-            if (!Rights.mayRead(p, s.user, e.mailbox())) {
-                log.debug("subscription {} of {} may not read {}; not notified", s.id, s.user, e.mailbox());
+            if (!mayRead(s, p, e.mailbox())) {
                 continue;
             }
             if (outstanding.incrementAndGet() > MAX_OUTSTANDING) {
@@ -250,9 +267,9 @@ public final class Notifier implements AutoCloseable {
     }
 
     private void attempt(Subscription s, ConsoleHub.Notice n, int attempt, CompletableFuture<Void> done) {
-        if (!subscriptions.containsKey(s.id) || closed) {
+        if (!subscriptions.containsKey(s.id) || closed || !mayRead(s, permits.get(), n.event().mailbox())) {
             outstanding.decrementAndGet();
-            done.complete(null); // removed meanwhile
+            done.complete(null); // removed meanwhile, or its user lost the right to read (the permit file changed)
             return;
         }
         if (s.channel == Subscription.Channel.WEBHOOK) {

@@ -244,6 +244,33 @@ public final class ConsoleHub implements AutoCloseable {
         });
     }
 
+    /**
+     * The rules changed: every watch is checked again, and one whose user may no longer read its
+     * MailBox ends, with a last message to that client saying why (see {@link Watcher#end}).
+     *
+     * @param whyNotRead null when the user (first argument) may read the MailBox (second), else why not
+     * @return how many watches ended
+     */
+    public int recheck(java.util.function.BiFunction<String, String, String> whyNotRead) {
+        int ended = 0;
+        synchronized (order) {
+            for (Map.Entry<String, Set<Watcher>> e : byClient.entrySet()) {
+                for (Watcher w : List.copyOf(e.getValue())) {
+                    String why = whyNotRead.apply(w.user, w.mailbox);
+                    if (why != null) {
+                        remove(w);
+                        e.getValue().remove(w);
+                        w.end(why);
+                        ended++;
+                        log.info("client {} ({}) no longer watches {}: {}", w.clientId, w.user, w.mailbox, why);
+                    }
+                }
+            }
+            byClient.values().removeIf(Set::isEmpty);
+        }
+        return ended;
+    }
+
     /** The MailBoxes a connection watches. */
     public List<String> watching(String clientId) {
         Set<Watcher> mine = byClient.get(clientId);

@@ -124,6 +124,21 @@ final class Watcher {
         }
     }
 
+    /**
+     * Ends this watch because the user may no longer read the MailBox: what waits for it is
+     * dropped (it may not read that either) and the client gets one last push, an ERROR
+     * {@code FORBIDDEN} whose batch holds one line saying why, after which nothing more comes.
+     */
+    void end(String why) {
+        stop();
+        String text = "watch of " + mailbox + " ended: " + why;
+        ConsoleEntry line = new ConsoleEntry(System.currentTimeMillis(), mailbox, ConsoleEntry.Kind.LINE, "", "[" + text + "]",
+                null, null, null);
+        OutgoingServerMessage m = message(mailbox, List.of(line), 0);
+        outlet.send(new OutgoingServerMessage(m.header(), Footer.error(Ids.FID_CONSOLE,
+                org.ripv.messages.ErrorCode.FORBIDDEN, text).withResult(m.footer().result())));
+    }
+
     synchronized int backlog() {
         return backlog.size();
     }
