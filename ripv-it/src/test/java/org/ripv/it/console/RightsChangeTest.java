@@ -146,7 +146,8 @@ class RightsChangeTest {
         assertThat(mail.waitForIncomingEmail(T.toMillis(), 3)).isTrue();
         waitFor(() -> listText(olga).contains("not notified about " + box));
         Thread.sleep(500); // anything still on its way to olga would arrive now
-        assertThat(o.entries).hasSize(olgaHad + 1); // only the line that ended her watch
+        assertThat(o.entries).hasSize(olgaHad); // nothing after the line that ended her watch
+        assertThat(o.texts().get(olgaHad - 1)).startsWith("[watch of " + box + " ended");
         assertThat(o.texts()).doesNotContain("after the change");
         assertThat(toOlga.errors()).hasSize(1); // told once
         List<String> to = new ArrayList<>();

@@ -32,21 +32,18 @@ final class ReplyWriter {
     /** The most messages one turn writes before the worker moves on to other clients. */
     static final int MAX_PER_TURN = 256;
 
-    private static final OutgoingServerMessage POISON = new OutgoingServerMessage(
-            Header.request(0, "", "", null), Footer.unanswered());
+    /** What waits: a reply, or a push with its frame if encoded once for many clients (else null) and what to run once it went out. */
+    private record Item(OutgoingServerMessage message, byte[] frame, Runnable written) {}
+
+    private static final Item POISON = new Item(null, null, null);
 
     private final String clientId;
     private final FrameCodec codec;
     private final Runnable closer;
     private final WriterPool pool;
     /** Linked, not an array: an idle client must not hold thousands of empty slots. */
-    private final BlockingQueue<OutgoingServerMessage> replies;
+    private final BlockingQueue<Item> replies;
     private final int capacity;
-    /** A push: its frame if encoded once for many clients (else null), and what to run once it went out. */
-    private record Push(byte[] frame, Runnable written) {}
-
-    /** Pushes whose sender wants to hear when they went out (console watchers pace themselves by it). */
-    private final java.util.Map<OutgoingServerMessage, Push> afterWrite = new java.util.concurrent.ConcurrentHashMap<>();
     private final Object lock = new Object();
     private boolean scheduled;
     private boolean stopped;
@@ -74,7 +71,7 @@ final class ReplyWriter {
 
     /** Queues a reply; false when the queue is full (the client is not reading). */
     boolean offer(OutgoingServerMessage reply) {
-        if (!replies.offer(reply)) {
+        if (!replies.offer(new Item(reply, null, null))) {
             return false;
         }
         scheduleIfNeeded();
@@ -90,9 +87,7 @@ final class ReplyWriter {
         if (replies.remainingCapacity() < capacity / 2) {
             return false;
         }
-        afterWrite.put(message, new Push(frame, written));
-        if (!replies.offer(message)) {
-            afterWrite.remove(message);
+        if (!replies.offer(new Item(message, frame, written))) {
             return false;
         }
         scheduleIfNeeded();
@@ -101,7 +96,7 @@ final class ReplyWriter {
 
     /** Queues a last reply, after which the writer closes the connection; false when full. */
     boolean offerLast(OutgoingServerMessage reply) {
-        if (!replies.offer(reply) || !replies.offer(POISON)) {
+        if (!replies.offer(new Item(reply, null, null)) || !replies.offer(POISON)) {
             return false;
         }
         scheduleIfNeeded();
@@ -114,7 +109,6 @@ final class ReplyWriter {
             stopped = true;
         }
         replies.clear();
-        afterWrite.clear();
     }
 
     private void scheduleIfNeeded() {
@@ -147,10 +141,10 @@ final class ReplyWriter {
     }
 
     /** Writes first and whatever else waits, flushes once; then as {@link #turn()}. */
-    private boolean write(OutgoingServerMessage first) {
+    private boolean write(Item first) {
         boolean close = true;
         try {
-            OutgoingServerMessage m = first;
+            Item m = first;
             int n = 0;
             while (m != null) {
                 if (m == POISON) {
@@ -158,15 +152,14 @@ final class ReplyWriter {
                     afterFlush();
                     return end();
                 }
-                Push push = afterWrite.remove(m);
-                if (push != null) {
-                    flushed.add(push.written());
+                if (m.written() != null) {
+                    flushed.add(m.written());
                 }
-                if (push != null && push.frame() != null) {
-                    out.writeInt(push.frame().length);
-                    out.write(push.frame());
+                if (m.frame() != null) {
+                    out.writeInt(m.frame().length);
+                    out.write(m.frame());
                 } else {
-                    encode(m);
+                    encode(m.message());
                 }
                 m = ++n < MAX_PER_TURN ? replies.poll() : null;
             }
