@@ -222,19 +222,15 @@ public final class Notifier implements AutoCloseable {
 
     /**
      * The read right, checked against the rules in force at each delivery and each retry, so a
-     * user who loses it (the permit file changed) stops getting that MailBox's events; the
-     * subscription's last result says so ({@code ?notify list}), written once.
+     * user who loses it (the permit file changed) stops getting that MailBox's events. Nothing
+     * is written to the subscription's result: that would tell the user about a MailBox they may
+     * not read.
      */
     private boolean mayRead(Subscription s, PermitFile p, String mailbox) {
-        String why = Rights.whyNotRead(p, s.user, mailbox);
-        if (why == null) {
+        if (Rights.mayRead(p, s.user, mailbox)) {
             return true;
         }
-        String r = "not notified about " + mailbox + ": " + why;
-        if (!r.equals(s.lastResult())) {
-            log.info("subscription {}: {}", s.id, r);
-            result(s, r);
-        }
+        log.debug("subscription {} of {} may not read {}; not notified", s.id, s.user, mailbox);
         return false;
     }
 
