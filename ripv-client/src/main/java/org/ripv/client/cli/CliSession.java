@@ -254,7 +254,7 @@ public final class CliSession {
         err.println("Cancelled: stopped waiting for '" + what + "'; the server may still finish it (its reply will be ignored)");
     }
 
-    /** {@code export csv|json FILE}: the last table received, to a local file ({@link TableExport}). */
+    /** {@code export csv|json FILE}: the last table received, to a local file ({@link org.ripv.export.TableExport}). */
     private void export(String args) throws IOException {
         String[] a = args.isEmpty() ? new String[0] : args.split("\\s+", 2);
         if (a.length != 2 || !(a[0].equalsIgnoreCase("csv") || a[0].equalsIgnoreCase("json"))) {
@@ -265,7 +265,8 @@ public final class CliSession {
             localError(ErrorCode.BAD_REQUEST, "no query result to export yet: run a SELECT first");
             return;
         }
-        String text = a[0].equalsIgnoreCase("csv") ? TableExport.csv(lastTable) : TableExport.json(lastTable);
+        String text = a[0].equalsIgnoreCase("csv") ? org.ripv.export.TableExport.csv(lastTable)
+                : org.ripv.export.TableExport.json(lastTable);
         Path file = Path.of(a[1]);
         Files.writeString(file, text, java.nio.charset.StandardCharsets.UTF_8);
         local("exported " + lastTable.rows().size() + " rows as " + a[0].toLowerCase(java.util.Locale.ROOT) + " to " + file);

@@ -24,6 +24,7 @@ public final class ServiceLayoutPanel extends JPanel {
     private final MamPanel mam;
     private final FimPanel fim;
     private final DatabasePanel dab;
+    private final org.ripv.client.charts.PlotPanel plot;
     private final ImagePanel dav;
     private final ConsolePanel console;
 
@@ -41,9 +42,10 @@ public final class ServiceLayoutPanel extends JPanel {
         mam = new MamPanel(service, manager);
         fim = new FimPanel(manager);
         dab = "DAB".equals(kind) ? new DatabasePanel(service, manager) : null;
-        dav = "DAV".equals(kind) ? new ImagePanel(manager) : null;
+        plot = "DAV".equals(kind) ? new org.ripv.client.charts.PlotPanel(manager) : null; // the chart, or the JPEG
+        dav = plot == null ? null : plot.image();
         console = dab == null && dav == null && client != null ? new ConsolePanel(service, client, manager) : null;
-        JComponent fourth = dab != null ? dab : dav != null ? dav : console;
+        JComponent fourth = dab != null ? dab : plot != null ? plot : console;
 
         // Fixed base sizes: GridBag then shares the window by weight alone, so the quadrants do
         // not jump about when a long mailbox name or path arrives.
@@ -125,8 +127,8 @@ public final class ServiceLayoutPanel extends JPanel {
                 }
             }
             case IMAGE -> {
-                if (dav != null) {
-                    dav.update(m);
+                if (plot != null) {
+                    plot.update(m);
                 }
             }
             case FILES -> fim.updateFiles(model);
@@ -151,8 +153,8 @@ public final class ServiceLayoutPanel extends JPanel {
         if (dab != null) {
             dab.update(m);
         }
-        if (dav != null) {
-            dav.update(m);
+        if (plot != null) {
+            plot.update(m);
         }
     }
 
@@ -178,8 +180,13 @@ public final class ServiceLayoutPanel extends JPanel {
         return dab;
     }
 
-    /** The DAV panel, or null. */
+    /** The DAV panel's JPEG view, or null. */
     public ImagePanel dav() {
         return dav;
+    }
+
+    /** The DAV panel (interactive chart, or the JPEG), or null. */
+    public org.ripv.client.charts.PlotPanel plot() {
+        return plot;
     }
 }
