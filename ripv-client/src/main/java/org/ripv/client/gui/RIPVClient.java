@@ -223,6 +223,9 @@ public final class RIPVClient {
         for (JMenuItem i : java.util.List.of(services, commandLine, mailboxes, files, next)) {
             view.add(i);
         }
+        view.addSeparator();
+        org.ripv.client.layout.QuadrantMenu.items(() -> tabs.getSelectedComponent() instanceof ServiceLayoutPanel p
+                ? p.quadrants() : null).forEach(view::add);
         return view;
     }
 

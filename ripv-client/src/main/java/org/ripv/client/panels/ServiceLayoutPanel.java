@@ -27,6 +27,7 @@ public final class ServiceLayoutPanel extends JPanel {
     private final org.ripv.client.charts.PlotPanel plot;
     private final ImagePanel dav;
     private final ConsolePanel console;
+    private final org.ripv.client.layout.Quadrants quadrants;
 
     public ServiceLayoutPanel(ServiceModel model, GuiManager manager) {
         this(model, manager, null);
@@ -60,6 +61,12 @@ public final class ServiceLayoutPanel extends JPanel {
         right = split(javax.swing.JSplitPane.VERTICAL_SPLIT, mam, fim, 0.45, "rightSplit");
         columns = split(javax.swing.JSplitPane.HORIZONTAL_SPLIT, left != null ? left : com, right, 0.65, "columnSplit");
         add(columns, java.awt.BorderLayout.CENTER);
+        quadrants = new org.ripv.client.layout.Quadrants(this, columns, left, right, com, fourth, mam, fim);
+    }
+
+    /** Enlarging, maximising and restoring this tab's quadrants (View menu, Ctrl+Shift+E / M / R). */
+    public org.ripv.client.layout.Quadrants quadrants() {
+        return quadrants;
     }
 
     private static javax.swing.JSplitPane split(int orientation, JComponent a, JComponent b, double weight, String name) {
