@@ -55,6 +55,9 @@ class DataViewsGuiTest {
     static final Path SHARED = Path.of("../ripv-services/src/test/resources/slocum");
     static final String DATABASE = "<DatabaseServer>::<localhost>";
     static final String DATAVIS = "<DataVisServer>::<localhost>";
+    /** AssertJ-Swing's robot takes the old modifier masks. */
+    @SuppressWarnings("deprecation")
+    static final int CTRL_SHIFT = InputEvent.CTRL_MASK | InputEvent.SHIFT_MASK;
 
     @TempDir
     Path dir;
@@ -183,7 +186,7 @@ class DataViewsGuiTest {
                     - span) < span * 0.01);
 
             // Maximise the DAV quadrant with Ctrl+Shift+M (the chart has the focus), restore the same way.
-            robot.pressAndReleaseKey(KeyEvent.VK_M, InputEvent.CTRL_DOWN_MASK | InputEvent.SHIFT_DOWN_MASK);
+            robot.pressAndReleaseKey(KeyEvent.VK_M, CTRL_SHIFT);
             ClientGuiTest.waitFor("DAV alone in the tab", () -> vis.quadrants().state().mode() == QuadrantState.Mode.MAXIMISED
                     && !vis.com().isShowing() && plot.isShowing());
             GuiActionRunner.execute(() -> gm.sendCommand(DATAVIS, "vis:depth cp_388"));
@@ -192,14 +195,14 @@ class DataViewsGuiTest {
             robot.waitForIdle();
             ClientGuiTest.screenshotOf(client, "client-chart-maximised.png");
             GuiActionRunner.execute(() -> plot.chartPanel().requestFocusInWindow());
-            robot.pressAndReleaseKey(KeyEvent.VK_M, InputEvent.CTRL_DOWN_MASK | InputEvent.SHIFT_DOWN_MASK);
+            robot.pressAndReleaseKey(KeyEvent.VK_M, CTRL_SHIFT);
             ClientGuiTest.waitFor("the four quadrants back", () -> vis.com().isShowing() && vis.mam().isShowing());
 
             // Enlarge by keyboard: the chart gets three quarters; restore puts the dividers back.
-            robot.pressAndReleaseKey(KeyEvent.VK_E, InputEvent.CTRL_DOWN_MASK | InputEvent.SHIFT_DOWN_MASK);
+            robot.pressAndReleaseKey(KeyEvent.VK_E, CTRL_SHIFT);
             ClientGuiTest.waitFor("DAV enlarged", () -> vis.quadrants().state().mode() == QuadrantState.Mode.ENLARGED
                     && plot.getWidth() > vis.getWidth() * 0.6);
-            robot.pressAndReleaseKey(KeyEvent.VK_R, InputEvent.CTRL_DOWN_MASK | InputEvent.SHIFT_DOWN_MASK);
+            robot.pressAndReleaseKey(KeyEvent.VK_R, CTRL_SHIFT);
             ClientGuiTest.waitFor("restored", () -> vis.quadrants().state().mode() == QuadrantState.Mode.NORMAL);
 
             // Save as SVG and PNG, the data as CSV.
@@ -214,7 +217,7 @@ class DataViewsGuiTest {
             assertThat(Files.readAllLines(csv).get(0)).isEqualTo("series,unit,x,time_utc,y");
 
             // The Fleet window by its key.
-            robot.pressAndReleaseKey(KeyEvent.VK_F, InputEvent.CTRL_DOWN_MASK | InputEvent.SHIFT_DOWN_MASK);
+            robot.pressAndReleaseKey(KeyEvent.VK_F, CTRL_SHIFT);
             ClientGuiTest.waitFor("the Fleet window with both gliders", () -> {
                 java.awt.Window[] ws = client.frame().getOwnedWindows();
                 for (java.awt.Window w : ws) {

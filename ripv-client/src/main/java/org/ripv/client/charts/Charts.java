@@ -2,7 +2,6 @@ package org.ripv.client.charts;
 
 import java.awt.BasicStroke;
 import java.awt.Color;
-import java.awt.Font;
 import java.awt.geom.Ellipse2D;
 import java.awt.geom.Rectangle2D;
 import java.io.ByteArrayOutputStream;
@@ -13,14 +12,12 @@ import java.util.Set;
 import java.util.TimeZone;
 import org.jfree.chart.ChartUtils;
 import org.jfree.chart.JFreeChart;
-import org.jfree.chart.annotations.XYPointerAnnotation;
 import org.jfree.chart.axis.DateAxis;
 import org.jfree.chart.axis.NumberAxis;
 import org.jfree.chart.axis.ValueAxis;
 import org.jfree.chart.labels.StandardXYToolTipGenerator;
 import org.jfree.chart.plot.XYPlot;
 import org.jfree.chart.renderer.xy.XYLineAndShapeRenderer;
-import org.jfree.chart.ui.TextAnchor;
 import org.jfree.data.xy.DefaultXYDataset;
 import org.jfree.svg.SVGGraphics2D;
 import org.ripv.messages.ChartData;
@@ -28,11 +25,16 @@ import org.ripv.messages.ChartData;
 /**
  * Builds the interactive chart for a {@link ChartData} the way the built-in worker draws its JPEG
  * (docs/datavis.md): a UTC date axis for time, depth downwards, a track at the aspect right for
- * its latitude with the newest fix marked in red and labelled; and writes it as PNG or SVG.
+ * its latitude with the newest fix marked in red and labelled in the legend; and writes it as PNG or SVG.
  * Plain JFreeChart objects, no Swing: works headless.
  */
 public final class Charts {
-    /** The key of the newest fix's one-point series, drawn last, in red. */
+    /** Series colours (red is kept for the newest fix). */
+    private static final Color[] PALETTE = {new Color(0x1f77b4), new Color(0xff7f0e), new Color(0x2ca02c),
+        new Color(0x9467bd), new Color(0x8c564b), new Color(0xe377c2), new Color(0x7f7f7f), new Color(0xbcbd22),
+        new Color(0x17becf)};
+
+    /** The key of the newest fix's one-point series (drawn last, in red) when its mark has no label of its own. */
     public static final String NEWEST = "newest fix";
 
     private Charts() {}
@@ -50,7 +52,10 @@ public final class Charts {
         }
         ChartData.Mark newest = data.newest();
         if (newest != null) {
-            dataset.addSeries(NEWEST, new double[][] {{newest.x()}, {newest.y()}});
+            // The legend labels it in full ("newest fix 2013-09-05 13:47:21 UTC (gps)"): a label
+            // beside the point would run off the plot whatever side it took.
+            String key = newest.label().isBlank() || keys.contains(newest.label()) ? NEWEST : newest.label();
+            dataset.addSeries(key, new double[][] {{newest.x()}, {newest.y()}});
         }
         ValueAxis x;
         if (data.kind().timeAxis()) {
@@ -69,6 +74,7 @@ public final class Charts {
         XYLineAndShapeRenderer r = new XYLineAndShapeRenderer(true, track);
         for (int s = 0; s < data.series().size(); s++) {
             r.setSeriesStroke(s, new BasicStroke(1.2f));
+            r.setSeriesPaint(s, PALETTE[s % PALETTE.length]);
             if (track) {
                 r.setSeriesShape(s, new Ellipse2D.Double(-2, -2, 4, 4));
             }
@@ -87,14 +93,6 @@ public final class Charts {
         plot.setRangeGridlinePaint(Color.LIGHT_GRAY);
         plot.setDomainPannable(true);
         plot.setRangePannable(true);
-        if (newest != null) {
-            XYPointerAnnotation label = new XYPointerAnnotation(newest.label(), newest.x(), newest.y(), Math.PI * 0.75);
-            label.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 12));
-            label.setPaint(Color.RED.darker());
-            label.setArrowPaint(Color.RED.darker());
-            label.setTextAnchor(TextAnchor.BOTTOM_RIGHT);
-            plot.addAnnotation(label);
-        }
         boolean legend = data.series().size() > 1 || newest != null;
         JFreeChart chart = new JFreeChart(data.title().isEmpty() ? null : data.title(), JFreeChart.DEFAULT_TITLE_FONT, plot,
                 legend);

@@ -72,7 +72,19 @@ public final class FleetView {
         table.setAutoCreateRowSorter(true);
         table.getColumnModel().getColumn(COLUMNS.indexOf("Track")).setCellRenderer(new TrackCell());
         table.getColumnModel().getColumn(COLUMNS.indexOf("Track")).setPreferredWidth(170);
-        table.getColumnModel().getColumn(COLUMNS.indexOf("Last fix (UTC)")).setPreferredWidth(130);
+        int[] widths = {150, 80, 130, 130, 90, 100, 110, 170};
+        for (int c = 0; c < widths.length; c++) {
+            table.getColumnModel().getColumn(c).setPreferredWidth(widths[c]);
+        }
+        javax.swing.table.DefaultTableCellRenderer degrees = new javax.swing.table.DefaultTableCellRenderer() {
+            @Override
+            protected void setValue(Object value) {
+                setText(value instanceof Double d ? String.format(Locale.ROOT, "%.5f", d) : "—");
+            }
+        };
+        degrees.setHorizontalAlignment(javax.swing.SwingConstants.RIGHT);
+        table.getColumnModel().getColumn(4).setCellRenderer(degrees);
+        table.getColumnModel().getColumn(5).setCellRenderer(degrees);
         status.setName("fleetStatus");
         JButton refresh = button("Refresh", KeyEvent.VK_R, "fleetRefresh", "Ask the database and the server again (also every minute)");
         refresh.addActionListener(e -> refresh());
@@ -96,7 +108,7 @@ public final class FleetView {
         dialog.setContentPane(content);
         dialog.getRootPane().registerKeyboardAction(e -> dialog.dispose(), KeyStroke.getKeyStroke(KeyEvent.VK_ESCAPE, 0),
                 JComponent.WHEN_IN_FOCUSED_WINDOW);
-        dialog.setSize(980, 420);
+        dialog.setSize(1000, 420);
         dialog.setLocationRelativeTo(owner);
         tick = new Timer(10_000, e -> rows.fireTableRowsUpdated(0, Math.max(0, rows.getRowCount() - 1)));
         refreshTimer = new Timer(60_000, e -> refresh());
@@ -273,15 +285,12 @@ public final class FleetView {
                 case 1 -> v.state().isEmpty() ? "—" : v.state();
                 case 2 -> v.fixTime() > 0 ? TIME.format(Instant.ofEpochMilli(v.fixTime())) : "—";
                 case 3 -> FleetModel.age(v.fixTime(), clock.getAsLong());
-                case 4 -> Double.isNaN(v.lat()) ? null : round(v.lat());
-                case 5 -> Double.isNaN(v.lon()) ? null : round(v.lon());
+                case 4 -> Double.isNaN(v.lat()) ? null : v.lat();
+                case 5 -> Double.isNaN(v.lon()) ? null : v.lon();
                 case 6 -> v.source();
                 default -> v;
             };
         }
 
-        private double round(double d) {
-            return Math.round(d * 100000) / 100000.0;
-        }
     }
 }

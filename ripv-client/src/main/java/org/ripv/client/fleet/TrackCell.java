@@ -38,7 +38,7 @@ final class TrackCell extends JComponent implements TableCellRenderer {
             g2.setColor(getBackground());
             g2.fillRect(0, 0, getWidth(), getHeight());
             g2.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
-            paintTrack(g2, vehicle, 4, 3, getWidth() - 8, getHeight() - 6,
+            paintTrack(g2, vehicle, 8, 7, getWidth() - 16, getHeight() - 14,
                     selected ? getForeground() : UIManager.getColor("Component.accentColor") == null ? new Color(0x2f6fb3)
                             : UIManager.getColor("Component.accentColor"));
         } finally {

@@ -104,8 +104,8 @@ class ChartsTest {
         JFreeChart c = Charts.chart(TRACK);
         XYPlot plot = c.getXYPlot();
         assertThat(plot.getDataset().getSeriesCount()).isEqualTo(2);
-        assertThat(plot.getDataset().getSeriesKey(1)).isEqualTo(Charts.NEWEST);
-        assertThat(plot.getAnnotations()).hasSize(1);
+        assertThat(plot.getDataset().getSeriesKey(1)).as("labelled in the legend").isEqualTo("newest fix 2013-09-05 13:45 UTC");
+        assertThat(c.getLegend()).isNotNull();
         Charts.fit(c, TRACK, 600, 400);
         double spanX = plot.getDomainAxis().getRange().getLength();
         double spanY = plot.getRangeAxis().getRange().getLength();
