@@ -19,7 +19,6 @@ import org.jfree.chart.labels.StandardXYToolTipGenerator;
 import org.jfree.chart.plot.XYPlot;
 import org.jfree.chart.renderer.xy.XYLineAndShapeRenderer;
 import org.jfree.data.xy.DefaultXYDataset;
-import org.jfree.svg.SVGGraphics2D;
 import org.ripv.messages.ChartData;
 
 /**
@@ -153,10 +152,25 @@ public final class Charts {
         return out.toByteArray();
     }
 
-    /** The chart as an SVG document (JFreeSVG) of {@code width} x {@code height}. */
-    public static byte[] svg(JFreeChart chart, int width, int height) {
-        SVGGraphics2D g = new SVGGraphics2D(width, height);
-        chart.draw(g, new Rectangle2D.Double(0, 0, width, height));
-        return g.getSVGDocument().getBytes(StandardCharsets.UTF_8);
+    /**
+     * Whether SVG can be written: JFreeSVG ({@code org.jfree:org.jfree.svg}, JFreeChart's companion,
+     * GPL-licensed) is on the class path. It is a runtime dependency only, so a build without it
+     * loses SVG (the menu item is disabled) and nothing else.
+     */
+    public static boolean svgAvailable() {
+        return org.jfree.chart.util.ExportUtils.isJFreeSVGAvailable();
+    }
+
+    /** The chart as an SVG document (JFreeSVG, found at run time) of {@code width} x {@code height}. */
+    public static byte[] svg(JFreeChart chart, int width, int height) throws IOException {
+        try {
+            Class<?> c = Class.forName("org.jfree.svg.SVGGraphics2D");
+            java.awt.Graphics2D g = (java.awt.Graphics2D) c.getConstructor(double.class, double.class).newInstance(
+                    (double) width, (double) height);
+            chart.draw(g, new Rectangle2D.Double(0, 0, width, height));
+            return ((String) c.getMethod("getSVGDocument").invoke(g)).getBytes(StandardCharsets.UTF_8);
+        } catch (ReflectiveOperationException | LinkageError e) {
+            throw new IOException("SVG needs JFreeSVG (org.jfree:org.jfree.svg) on the class path: " + e, e);
+        }
     }
 }

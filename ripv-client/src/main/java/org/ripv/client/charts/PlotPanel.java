@@ -104,6 +104,7 @@ public final class PlotPanel extends JPanel {
             });
             item.setName("save-" + f.name().toLowerCase(Locale.ROOT));
             item.setMnemonic(f.name().charAt(0));
+            item.setEnabled(f != Format.SVG || Charts.svgAvailable());
             item.addActionListener(e -> choose(f));
             formats.add(item);
         }

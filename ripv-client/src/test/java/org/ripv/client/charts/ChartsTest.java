@@ -153,6 +153,7 @@ class ChartsTest {
                 org.assertj.core.api.Assertions.within(span * 1e-6));
 
         // Every format; the JPEG exactly as it arrived.
+        assertThat(Charts.svgAvailable()).as("JFreeSVG at run time").isTrue();
         assertThat(new String(plot.bytes(PlotPanel.Format.SVG), StandardCharsets.UTF_8)).contains("<svg").contains("depth of cp_388");
         byte[] png = plot.bytes(PlotPanel.Format.PNG);
         assertThat(png).startsWith(0x89, 'P', 'N', 'G');
