@@ -120,6 +120,14 @@ class DataViewsGuiTest {
             FleetModel.Vehicle papa = fleet.vehicles().get(1);
             assertThat(papa.lat()).isEqualTo(lat);
             assertThat(papa.trackLon()).hasSize((int) c.rows());
+            // An ingested file exports like any query result (docs/client.md, DAB): its values, long form.
+            TableResult file = (TableResult) gm.ask(DATABASE + "TTY1", "SELECT r.row_no, r.t AS time_utc, s.name AS sensor,"
+                    + " s.unit, r.value FROM reading r JOIN sensor_def s ON s.sensor_id = r.sensor_id"
+                    + " JOIN data_file f ON f.file_id = r.file_id WHERE f.name = 'cp_388_2016_012_0_0.mrg'"
+                    + " ORDER BY r.row_no, s.name").get(60, TimeUnit.SECONDS).footer().result();
+            assertThat(file.rows()).hasSizeGreaterThan(100);
+            assertThat(org.ripv.export.TableExport.json(file)).contains("\"SENSOR\":\"m_depth\",\"UNIT\":\"m\",\"VALUE\":");
+            assertThat(org.ripv.export.TableExport.csv(file)).startsWith("ROW_NO,TIME_UTC,SENSOR,UNIT,VALUE\r\n");
             Thread.sleep(300); // a reply dispatched as a table would land now
             assertThat(ui.get(() -> model.service(DATABASE).tables())).as("the Fleet's queries open no DAB tab").isEmpty();
         } finally {
