@@ -47,7 +47,7 @@ public final class Quadrants {
         parts.put(Quadrant.FIM, fim);
         for (Map.Entry<Quadrant, JComponent> e : parts.entrySet()) {
             Quadrant q = e.getKey();
-            e.getValue().addMouseListener(new MouseAdapter() {
+            MouseAdapter twice = new MouseAdapter() {
                 @Override
                 public void mouseClicked(MouseEvent ev) {
                     // Only the quadrant's own area (its titled border), not its children's clicks.
@@ -55,7 +55,14 @@ public final class Quadrants {
                         maximise(q);
                     }
                 }
-            });
+            };
+            e.getValue().addMouseListener(twice);
+            // A quadrant made of cards (DAV: chart or picture) has its titles one level down.
+            for (Component child : e.getValue().getComponents()) {
+                if (child instanceof JComponent j && j.getBorder() instanceof javax.swing.border.TitledBorder) {
+                    j.addMouseListener(twice);
+                }
+            }
         }
     }
 
