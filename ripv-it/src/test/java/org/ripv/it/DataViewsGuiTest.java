@@ -155,12 +155,20 @@ class DataViewsGuiTest {
         });
         FrameFixture window = new FrameFixture(robot, client.frame());
         FleetView fleet = null;
+        // A simulated glider on a SerialPortServer: a vehicle MailBox with a call state for the Fleet.
+        org.ripv.services.simulator.GliderSimulator glider = new org.ripv.services.simulator.GliderSimulator(
+                dir.resolve("glider"), Duration.ofSeconds(3), ClientGuiTest.YMODEM);
+        int gliderPort = glider.listen(0);
+        sys.register(new org.ripv.services.serial.SerialPortServer("localhost", List.of(
+                org.ripv.services.serial.LinkSettings.defaults("tcp://127.0.0.1:" + gliderPort)
+                        .withIdleTimeout(Duration.ofSeconds(1)).withReconnectEvery(Duration.ofMillis(300))
+                        .withYmodem(ClientGuiTest.YMODEM)), null, false, dir.resolve("serial-work")));
         try {
             window.show();
             GuiActionRunner.execute(() -> client.frame().setSize(1400, 900));
             GuiActionRunner.execute(() -> client.showLogin("localhost:" + sys.server().port(), "alice",
                     TestSystem.PASSWORD.toCharArray(), true));
-            ClientGuiTest.waitFor("both services as tabs", () -> client.tabs().getTabCount() == 2);
+            ClientGuiTest.waitFor("the three services as tabs", () -> client.tabs().getTabCount() == 3);
             GuiActionRunner.execute(() -> {
                 client.frame().toFront();
                 client.frame().requestFocus();
@@ -226,20 +234,34 @@ class DataViewsGuiTest {
 
             // The Fleet window by its key.
             robot.pressAndReleaseKey(KeyEvent.VK_F, CTRL_SHIFT);
-            ClientGuiTest.waitFor("the Fleet window with both gliders", () -> {
+            ClientGuiTest.waitFor("the Fleet window with both gliders and the vehicle MailBox", () -> {
                 java.awt.Window[] ws = client.frame().getOwnedWindows();
                 for (java.awt.Window w : ws) {
                     if (w.isShowing() && "fleetView".equals(w.getName())) {
                         javax.swing.JTable t = (javax.swing.JTable) find(w, "fleetTable");
-                        return t != null && t.getRowCount() == 2;
+                        return t != null && t.getRowCount() == 3;
                     }
                 }
                 return false;
             });
             fleet = GuiActionRunner.execute(() -> client.showFleet());
             FleetView f = fleet;
-            ClientGuiTest.waitFor("the fleet refreshed", () -> f.statusText().startsWith("2 vehicle(s)"));
-            assertThat(GuiActionRunner.execute(() -> f.table().getValueAt(1, 3).toString())).endsWith("days ago");
+            ClientGuiTest.waitFor("the fleet refreshed", () -> f.statusText().startsWith("3 vehicle(s)"));
+            ClientGuiTest.waitFor("the glider's call state", () -> {
+                f.refresh();
+                return f.model().vehicles().stream().anyMatch(v -> v.mailbox().startsWith("<SerialPortServer>")
+                        && !v.state().isEmpty());
+            });
+            assertThat(GuiActionRunner.execute(() -> f.model().vehicles().stream().filter(v -> v.name().equals("unit_363"))
+                    .findFirst().orElseThrow().fixTime())).isPositive();
+            assertThat(GuiActionRunner.execute(() -> {
+                for (int r = 0; r < f.table().getRowCount(); r++) {
+                    if (f.table().getValueAt(r, 0).toString().startsWith("unit_363")) {
+                        return f.table().getValueAt(r, 3).toString();
+                    }
+                }
+                return "no row";
+            })).endsWith("days ago");
             assertThat(GuiActionRunner.execute(() -> gm.model().service(DATABASE).tables())).isEmpty();
             robot.waitForIdle();
             screenshotOfWindow(f.dialog(), "client-fleet.png");
@@ -253,6 +275,7 @@ class DataViewsGuiTest {
             }
             window.cleanUp();
             prefs.removeNode();
+            glider.close();
         }
     }
 

@@ -72,7 +72,7 @@ public final class FleetView {
         table.setAutoCreateRowSorter(true);
         table.getColumnModel().getColumn(COLUMNS.indexOf("Track")).setCellRenderer(new TrackCell());
         table.getColumnModel().getColumn(COLUMNS.indexOf("Track")).setPreferredWidth(170);
-        int[] widths = {150, 80, 130, 130, 90, 100, 110, 170};
+        int[] widths = {165, 75, 130, 110, 85, 95, 120, 160};
         for (int c = 0; c < widths.length; c++) {
             table.getColumnModel().getColumn(c).setPreferredWidth(widths[c]);
         }
@@ -159,7 +159,12 @@ public final class FleetView {
         List<MailboxStatus> mailboxes = new ArrayList<>();
         String database = null;
         for (ServiceModel s : manager.model().services()) {
-            mailboxes.addAll(s.mailboxes());
+            boolean vehicles = org.ripv.messages.Ids.SID_SERIAL.equals(s.descriptor().sid());
+            for (MailboxStatus m : s.mailboxes()) {
+                // A SerialPortServer MailBox is a vehicle even before it has said anything (no session yet).
+                mailboxes.add(m.session() == null && vehicles ? m.withSession(new org.ripv.messages.SessionState(
+                        org.ripv.messages.SessionState.State.UNKNOWN, 0, null, null, 0, null)) : m);
+            }
             if (database == null && "DAB".equals(s.panel()) && !s.mailboxes().isEmpty()) {
                 database = s.mailboxes().get(0).address();
             }
@@ -280,8 +285,10 @@ public final class FleetView {
         public Object getValueAt(int r, int c) {
             FleetModel.Vehicle v = fleet.vehicles().get(r);
             return switch (c) {
-                case 0 -> v.name() + (v.mailbox().isEmpty() ? "" : "  (" + v.mailbox().substring(v.mailbox().lastIndexOf('>') + 1)
-                        + ")");
+                case 0 -> {
+                    String handle = v.mailbox().substring(v.mailbox().lastIndexOf('>') + 1);
+                    yield v.mailbox().isEmpty() || handle.equalsIgnoreCase(v.name()) ? v.name() : v.name() + "  (" + handle + ")";
+                }
                 case 1 -> v.state().isEmpty() ? "—" : v.state();
                 case 2 -> v.fixTime() > 0 ? TIME.format(Instant.ofEpochMilli(v.fixTime())) : "—";
                 case 3 -> FleetModel.age(v.fixTime(), clock.getAsLong());
