@@ -71,6 +71,7 @@ public final class Charts {
         y.setInverted(data.kind().yInverted());
         boolean track = data.kind() == ChartData.Kind.TRACK;
         XYLineAndShapeRenderer r = new XYLineAndShapeRenderer(true, track);
+        r.setDrawSeriesLineAsPath(true); // one path a series: tens of thousands of points repaint fast; NaN still breaks it
         for (int s = 0; s < data.series().size(); s++) {
             r.setSeriesStroke(s, new BasicStroke(1.2f));
             r.setSeriesPaint(s, PALETTE[s % PALETTE.length]);

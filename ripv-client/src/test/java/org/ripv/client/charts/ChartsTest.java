@@ -117,6 +117,28 @@ class ChartsTest {
     }
 
     @Test
+    void aGapBreaksTheLine() {
+        ChartData gap = new ChartData(ChartData.Kind.XY, "", "x", "y", List.of(new ChartData.Series("s", "", new double[] {0, 1, 2, 3, 4},
+                new double[] {1, 1, Double.NaN, 1, 1}), new ChartData.Series("t", "", new double[] {0, 4}, new double[] {0, 2})),
+                null, 5, false);
+        JFreeChart c = Charts.chart(gap);
+        c.getXYPlot().setDomainGridlinesVisible(false); // only the series' pixels
+        c.getXYPlot().setRangeGridlinesVisible(false);
+        java.awt.image.BufferedImage img = new java.awt.image.BufferedImage(400, 300, java.awt.image.BufferedImage.TYPE_INT_RGB);
+        org.jfree.chart.ChartRenderingInfo info = new org.jfree.chart.ChartRenderingInfo();
+        java.awt.Graphics2D g = img.createGraphics();
+        c.draw(g, new java.awt.geom.Rectangle2D.Double(0, 0, 400, 300), info);
+        g.dispose();
+        java.awt.geom.Rectangle2D area = info.getPlotInfo().getDataArea();
+        XYPlot plot = c.getXYPlot();
+        int y = (int) Math.round(plot.getRangeAxis().valueToJava2D(1, area, plot.getRangeAxisEdge()));
+        int drawn = (int) Math.round(plot.getDomainAxis().valueToJava2D(0.5, area, plot.getDomainAxisEdge()));
+        int gapX = (int) Math.round(plot.getDomainAxis().valueToJava2D(1.6, area, plot.getDomainAxisEdge()));
+        assertThat(img.getRGB(drawn, y) & 0xffffff).as("the line between two points").isNotEqualTo(0xffffff);
+        assertThat(img.getRGB(gapX, y) & 0xffffff).as("nothing across the gap").isEqualTo(0xffffff);
+    }
+
+    @Test
     void theReadoutNamesTheNearestPointInItsUnitsAndSkipsGaps() {
         Readout r = Readout.nearest(DEPTH, 1452700061_000.0, 12.0, 1000, 0.5, 12);
         assertThat(r.text()).isEqualTo("m_depth: 12.5 m at 2016-01-13 15:47:40 UTC");
