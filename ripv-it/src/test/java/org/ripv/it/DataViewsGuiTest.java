@@ -135,6 +135,25 @@ class DataViewsGuiTest {
         }
     }
 
+    @Test
+    void theCliExportsAPlotsDataLikeAQueryResult() throws Exception {
+        java.io.ByteArrayOutputStream out = new java.io.ByteArrayOutputStream();
+        Path json = dir.resolve("track.json");
+        Path table = dir.resolve("after.csv");
+        int code = new picocli.CommandLine(new org.ripv.client.cli.CliCommand(new java.io.ByteArrayInputStream(new byte[0]),
+                new java.io.PrintStream(out, true, StandardCharsets.UTF_8), new java.io.PrintStream(out, true, StandardCharsets.UTF_8)))
+                .execute("--server", "localhost:" + sys.server().port(), "--user", "alice", "--password", TestSystem.PASSWORD,
+                        "--timeout", "120", "--exec", "use " + DATAVIS + "TTY1", "--exec", "vis:depth unit_363",
+                        "--exec", "export json " + json, "--exec", "use " + DATABASE + "TTY1",
+                        "--exec", "SELECT vehicle FROM positions FETCH FIRST 1 ROWS ONLY", "--exec", "export csv " + table);
+        String said = out.toString(StandardCharsets.UTF_8);
+        assertThat(code).as(said).isZero();
+        assertThat(said).contains("exported the plot's data (1 series,");
+        assertThat(Files.readString(json)).startsWith("{\"title\":\"depth of unit_363\",\"kind\":\"depth\"")
+                .contains("\"unit\":\"m\"");
+        assertThat(Files.readString(table)).as("a table after the plot: the table").startsWith("VEHICLE\r\n");
+    }
+
     static void waitUntil(java.util.concurrent.Callable<Boolean> check) throws Exception {
         long deadline = System.nanoTime() + 60_000_000_000L;
         while (!check.call()) {
