@@ -35,7 +35,6 @@ public final class WriterPool implements AutoCloseable {
     private final BlockingQueue<ReplyWriter> ready = new LinkedBlockingQueue<>();
     private final List<Worker> workers = new CopyOnWriteArrayList<>();
     private final AtomicInteger names = new AtomicInteger();
-    private final AtomicInteger detached = new AtomicInteger();
     private final ScheduledFuture<?> check;
     private volatile boolean closed;
 
@@ -52,16 +51,6 @@ public final class WriterPool implements AutoCloseable {
         ready.add(writer);
     }
 
-    /** Workers in the pool now (not counting those that stay with one stuck client). */
-    public int workers() {
-        return workers.size();
-    }
-
-    /** Workers that left the pool so far to stay with one client that was slow to take its bytes. */
-    public int detachedCount() {
-        return detached.get();
-    }
-
     private void startWorker() {
         Worker w = new Worker();
         workers.add(w);
@@ -74,7 +63,6 @@ public final class WriterPool implements AutoCloseable {
             long since = w.since;
             if (since != 0 && now - since > TimeUnit.MILLISECONDS.toNanos(STALL_MILLIS) && workers.remove(w)) {
                 w.detached = true;
-                detached.incrementAndGet();
                 log.debug("{} has been writing to one client for over {} ms: it stays with that client, a new worker"
                         + " takes its place", w.thread.getName(), STALL_MILLIS);
                 if (!closed) {
