@@ -52,6 +52,8 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
     private final YmodemCommands ymodem;
     private final ReentrantLock lock = new ReentrantLock();
     private final LinkState state;
+    private final CommandCancel plainCancel;
+    private final RunningCommand running = new RunningCommand();
 
     /**
      * @param handle   the MailBox handle, for messages
@@ -77,8 +79,9 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
                 : settings.carrier() == CarrierMode.REQUIRE && !settings.isTcp() ? VehicleConsole.Calls.CARRIER
                 : VehicleConsole.Calls.DIALOG;
         this.console = new VehicleConsole(mailbox, vehicle.call(), settings.prompt(), how, publish);
-        this.ymodem = new YmodemCommands(handle, settings, vehicleText, console, workDir);
+        this.ymodem = new YmodemCommands(handle, settings, vehicleText, console, workDir, running);
         this.state = new LinkState(vehicle, console, opener, lock);
+        this.plainCancel = new CommandCancel(settings.interrupt());
     }
 
     /**
@@ -116,16 +119,19 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
         if (settings.carrier() == CarrierMode.REQUIRE && !l.carrier()) {
             return Availability.notAvailable("no carrier (DCD low) on " + l.describe() + call);
         }
-        return Availability.available(l.describe() + call);
+        String now = running.describe();
+        return now == null ? Availability.available(l.describe() + call)
+                : Availability.running(now, l.describe() + call);
     }
 
     /**
-     * Cancels a running YMODEM transfer ({@link YmodemCommands#cancel}). A plain command is not
-     * cancelled yet (the link's interrupt, then waiting for the prompt).
+     * Cancels a running YMODEM transfer ({@link YmodemCommands#cancel}: CAN CAN, then back to the
+     * prompt) or plain command ({@link CommandCancel}: the link's interrupt, then its prompt).
+     * False for a link whose interrupt is {@code none}.
      */
     @Override
     public boolean cancel(Request running) {
-        return ymodem.cancel();
+        return ymodem.cancel() || plainCancel.ask();
     }
 
     @Override
@@ -141,6 +147,7 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
             Connection l = usableLink();
             String command = request.command().trim();
             console.command(request.user(), command);
+            running.start(command, request.user());
             try {
                 if (command.startsWith("ymodem:get")) {
                     return ymodem.get(l, request);
@@ -152,7 +159,7 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
                     throw new ServiceException(ErrorCode.UNKNOWN_COMMAND,
                             "unknown '" + command.split("\\s+")[0] + "'; use ymodem:get NAME… or ymodem:put NAME");
                 }
-                return plain(l, command);
+                return plain(l, command, request.user());
             } catch (EOFException e) {
                 state.failed(l, e);
                 throw new ServiceException(ErrorCode.DEVICE_ERROR, e.getMessage()
@@ -163,6 +170,8 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
                 state.failed(l, e);
                 throw new ServiceException(ErrorCode.DEVICE_ERROR, "link " + l.describe() + " failed: " + e
                         + "; the link will be reopened when it comes back");
+            } finally {
+                running.end();
             }
         } finally {
             lock.unlock();
@@ -191,16 +200,20 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
 
     // ---- plain commands
 
-    private Reply plain(Connection l, String command) throws IOException, ServiceException {
+    private Reply plain(Connection l, String command, String user) throws IOException, ServiceException {
         StringBuilder text = new StringBuilder();
         boolean closed;
         l.listen();
+        plainCancel.begin();
         try {
-            l.write((command + settings.lineEnding()).getBytes(StandardCharsets.ISO_8859_1));
-            l.flush();
-            closed = replies.read(l, text, settings.commandTimeout().toMillis(), command);
+            plainCancel.send(l, (command + settings.lineEnding()).getBytes(StandardCharsets.ISO_8859_1));
+            closed = replies.read(l, text, settings.commandTimeout().toMillis(), command, plainCancel);
         } finally {
+            plainCancel.end();
             l.stopListening();
+        }
+        if (plainCancel.asked() && !closed) {
+            return cancelled(l, command, user, text);
         }
         if (text.isEmpty() && !closed) {
             throw new ServiceException(ErrorCode.TIMEOUT, "no answer to '" + Header.abbreviate(command) + "' from " + l.describe()
@@ -212,6 +225,22 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
             return Reply.ok(reply + (reply.isEmpty() ? "" : "\n") + "(the vehicle closed the link)");
         }
         return Reply.ok(reply);
+    }
+
+    /**
+     * A plain command was interrupted: the reply is an error (the server turns it into CANCELLED
+     * naming who asked), saying whether the vehicle is back at its prompt and what it printed.
+     */
+    private Reply cancelled(Connection l, String command, String user, StringBuilder text) throws ServiceException {
+        boolean back = vehicleText.endsWithPrompt(text);
+        String printed = vehicleText.clean(text.toString(), command);
+        String how = "interrupted '" + Header.abbreviate(command) + "' with " + plainCancel.describe() + "; "
+                + (back ? "the vehicle is back at its prompt"
+                : "the vehicle was not back at its prompt within " + replies.settleMillis() / 1000 + " s (the next command"
+                        + " waits for it)");
+        console.transfer(user, how);
+        throw new ServiceException(ErrorCode.CANCELLED, how + (printed.isEmpty() ? "" : "; it had printed:\n"
+                + (printed.length() > 2000 ? "…" + printed.substring(printed.length() - 2000) : printed)));
     }
 
     @Override

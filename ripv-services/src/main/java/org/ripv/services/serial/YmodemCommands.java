@@ -43,11 +43,14 @@ final class YmodemCommands {
     private final ReplyReader replies;
     private final VehicleConsole console;
     private final Path workDir;
+    private final RunningCommand running;
     /** A transfer is under way, and whether ?cancel asked it to stop (checked where it answers or sends a block). */
     private volatile boolean transferring;
     private volatile boolean cancelRequested;
 
-    YmodemCommands(String handle, LinkSettings settings, VehicleText vehicleText, VehicleConsole console, Path workDir) {
+    YmodemCommands(String handle, LinkSettings settings, VehicleText vehicleText, VehicleConsole console, Path workDir,
+                   RunningCommand running) {
+        this.running = running;
         this.handle = handle;
         this.settings = settings;
         this.vehicleText = vehicleText;
@@ -138,7 +141,9 @@ final class YmodemCommands {
             transferring = true;
             try {
                 files = new YmodemReceiver(c, settings.ymodem(),
-                        TransferConsole.both(progress, new TransferConsole(console, request.user(), "receiving")))
+                        TransferConsole.both(progress, TransferConsole.both(new TransferConsole(console, request.user(), "receiving"),
+                                running.transfer("ymodem:get", names.stream().anyMatch(n -> n.contains("*") || n.contains("?"))
+                                        ? -1 : names.size()))))
                         .cancelWhen(() -> cancelRequested)
                         .stopWaitingWhen(text -> vehicleText.promptAfterEcho(text, vehicleCommand)).receiveBatch(sink);
             } catch (YmodemException e) {
@@ -199,7 +204,8 @@ final class YmodemCommands {
             transferring = true;
             try {
                 new YmodemSender(c, settings.ymodem(),
-                        TransferConsole.both(progress, new TransferConsole(console, request.user(), "sending")))
+                        TransferConsole.both(progress, TransferConsole.both(new TransferConsole(console, request.user(), "sending"),
+                                running.transfer("ymodem:put", 1))))
                         .cancelWhen(() -> cancelRequested).sendBatch(List.of(file), true);
             } finally {
                 transferring = false;
