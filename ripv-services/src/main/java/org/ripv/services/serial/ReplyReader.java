@@ -68,6 +68,11 @@ final class ReplyReader {
         return false;
     }
 
+    /** Whether {@code text} ends with the vehicle's prompt. */
+    boolean endsWithPrompt(CharSequence text) {
+        return vehicleText.endsWithPrompt(text);
+    }
+
     /** How long a cancelled command's vehicle has to be back at its prompt: twice the idle timeout, at least 3 s. */
     long settleMillis() {
         return Math.max(3000, 2 * settings.idleTimeout().toMillis());

@@ -54,6 +54,9 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
     private final LinkState state;
     private final CommandCancel plainCancel;
     private final RunningCommand running = new RunningCommand();
+    private final LineSync lineSync;
+    /** A cancelled command left the vehicle away from its prompt: the next command resynchronises first. */
+    private boolean lineDirty;
 
     /**
      * @param handle   the MailBox handle, for messages
@@ -82,6 +85,7 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
         this.ymodem = new YmodemCommands(handle, settings, vehicleText, console, workDir, running);
         this.state = new LinkState(vehicle, console, opener, lock);
         this.plainCancel = new CommandCancel(settings.interrupt());
+        this.lineSync = new LineSync(settings, replies);
     }
 
     /**
@@ -206,6 +210,9 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
         l.listen();
         plainCancel.begin();
         try {
+            if (lineDirty) {
+                lineDirty = !lineSync.resync(l);
+            }
             plainCancel.send(l, (command + settings.lineEnding()).getBytes(StandardCharsets.ISO_8859_1));
             closed = replies.read(l, text, settings.commandTimeout().toMillis(), command, plainCancel);
         } finally {
@@ -233,6 +240,7 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
      */
     private Reply cancelled(Connection l, String command, String user, StringBuilder text) throws ServiceException {
         boolean back = vehicleText.endsWithPrompt(text);
+        lineDirty = !back;
         String printed = vehicleText.clean(text.toString(), command);
         String how = "interrupted '" + Header.abbreviate(command) + "' with " + plainCancel.describe() + "; "
                 + (back ? "the vehicle is back at its prompt"
