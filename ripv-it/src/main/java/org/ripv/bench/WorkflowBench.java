@@ -97,21 +97,25 @@ public final class WorkflowBench implements Callable<Integer> {
         out.printf(Locale.ROOT, "the six transfers alone over the paced line: %.2f s (the bytes at the line rate: %.2f s)%n",
                 alone, arithmetic);
 
-        RIPVServer server = new RIPVServer(ServerConfig.forTests(dir.resolve("server")).withServiceCheck(Duration.ofSeconds(5)));
-        server.start();
         int worst = 0;
-        try {
-            PermitFile.setUser(dir.resolve("server/permit.txt"), "pilot", "bench-password".toCharArray(), List.of("operators"), 1000);
-            server.reloadPermits();
-            for (int run = 1; run <= runs; run++) {
-                double t = oneCall(server, dir.resolve("run-" + run), gets, put);
+        for (int run = 1; run <= runs; run++) {
+            // a fresh server each run: nothing "fetched before", an empty download store
+            Path runDir = dir.resolve("run-" + run);
+            RIPVServer server = new RIPVServer(ServerConfig.forTests(runDir.resolve("server"))
+                    .withServiceCheck(Duration.ofSeconds(5)));
+            server.start();
+            try {
+                PermitFile.setUser(runDir.resolve("server/permit.txt"), "pilot", "bench-password".toCharArray(),
+                        List.of("operators"), 1000);
+                server.reloadPermits();
+                double t = oneCall(server, runDir, gets, put);
                 double ratio = t / alone;
                 out.printf(Locale.ROOT, "run %d: call → WORKFLOW_DONE %.2f s = %.3f × the transfers alone (target ≤ 1.15)%n",
                         run, t, ratio);
                 worst = Math.max(worst, (int) Math.ceil(ratio * 1000));
+            } finally {
+                server.stop();
             }
-        } finally {
-            server.stop();
         }
         return worst <= 1150 ? 0 : 1;
     }
@@ -137,13 +141,13 @@ public final class WorkflowBench implements Callable<Integer> {
         try {
             Path local = Files.createDirectories(work.resolve("local"));
             Files.write(local.resolve("goto_l10.ma"), put);
-            pilot.upload(local.resolve("goto_l10.ma"), "goto_l10.ma", null);
+            pilot.upload(local.resolve("goto_l10.ma"), "goto_l10.ma", ClientSocketHandler.IfExists.REPLACE, null);
             Files.writeString(local.resolve("bench.wf"), String.join("\n",
                     "workflow once",
                     "send dir expect=SBD",
                     "ymodem:get *.SBD timeout=10m",
                     "ymodem:put goto_l10.ma timeout=10m", ""));
-            pilot.upload(local.resolve("bench.wf"), "bench.wf", null);
+            pilot.upload(local.resolve("bench.wf"), "bench.wf", ClientSocketHandler.IfExists.REPLACE, null);
             require(pilot.call("", "?queue add " + mb + " bench.wf", Priority.NORMAL, Duration.ofSeconds(30), null));
 
             CompletableFuture<Long> done = new CompletableFuture<>();

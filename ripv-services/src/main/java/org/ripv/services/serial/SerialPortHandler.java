@@ -2,7 +2,6 @@ package org.ripv.services.serial;
 
 import java.io.EOFException;
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.locks.ReentrantLock;
@@ -11,7 +10,6 @@ import org.ripv.commands.SingleLineCommand;
 import org.ripv.exceptions.ServiceException;
 import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.ErrorCode;
-import org.ripv.messages.Header;
 import org.ripv.service.Availability;
 import org.ripv.service.CommandHandler;
 import org.ripv.service.Reply;
@@ -22,8 +20,7 @@ import org.ripv.services.serial.ymodem.YmodemException;
  * Owns one link to a vehicle and runs its MailBox's commands (thesis: SerialPortHandler).
  *
  * <ul>
- *   <li>A plain command is written with the line ending; the reply is read until the prompt or
- *       the idle timeout, and returned without the echoed command line and the prompt.</li>
+ *   <li>A plain command: {@link PlainCommands}.</li>
  *   <li>{@code ymodem:get NAME…} and {@code ymodem:put NAME}: {@link YmodemCommands}.</li>
  * </ul>
  *
@@ -52,11 +49,8 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
     private final YmodemCommands ymodem;
     private final ReentrantLock lock = new ReentrantLock();
     private final LinkState state;
-    private final CommandCancel plainCancel;
+    private final PlainCommands plain;
     private final RunningCommand running = new RunningCommand();
-    private final LineSync lineSync;
-    /** A cancelled command left the vehicle away from its prompt: the next command resynchronises first. */
-    private boolean lineDirty;
 
     /**
      * @param handle   the MailBox handle, for messages
@@ -84,8 +78,7 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
         this.console = new VehicleConsole(mailbox, vehicle.call(), settings.prompt(), how, publish);
         this.ymodem = new YmodemCommands(handle, settings, vehicleText, console, workDir, running);
         this.state = new LinkState(vehicle, console, opener, lock);
-        this.plainCancel = new CommandCancel(settings.interrupt());
-        this.lineSync = new LineSync(settings, replies);
+        this.plain = new PlainCommands(settings, vehicleText, replies, console, state);
     }
 
     /**
@@ -135,7 +128,7 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
      */
     @Override
     public boolean cancel(Request running) {
-        return ymodem.cancel() || plainCancel.ask();
+        return ymodem.cancel() || plain.cancel();
     }
 
     @Override
@@ -163,7 +156,7 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
                     throw new ServiceException(ErrorCode.UNKNOWN_COMMAND,
                             "unknown '" + command.split("\\s+")[0] + "'; use ymodem:get NAME… or ymodem:put NAME");
                 }
-                return plain(l, command, request.user());
+                return plain.run(l, command, request.user());
             } catch (EOFException e) {
                 state.failed(l, e);
                 throw new ServiceException(ErrorCode.DEVICE_ERROR, e.getMessage()
@@ -200,55 +193,6 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
                     + "; nothing was sent");
         }
         return l;
-    }
-
-    // ---- plain commands
-
-    private Reply plain(Connection l, String command, String user) throws IOException, ServiceException {
-        StringBuilder text = new StringBuilder();
-        boolean closed;
-        l.listen();
-        plainCancel.begin();
-        try {
-            if (lineDirty) {
-                lineDirty = !lineSync.resync(l);
-            }
-            plainCancel.send(l, (command + settings.lineEnding()).getBytes(StandardCharsets.ISO_8859_1));
-            closed = replies.read(l, text, settings.commandTimeout().toMillis(), command, plainCancel);
-        } finally {
-            plainCancel.end();
-            l.stopListening();
-        }
-        if (plainCancel.asked() && !closed) {
-            return cancelled(l, command, user, text);
-        }
-        if (text.isEmpty() && !closed) {
-            throw new ServiceException(ErrorCode.TIMEOUT, "no answer to '" + Header.abbreviate(command) + "' from " + l.describe()
-                    + " within " + settings.idleTimeout().toMillis() + " ms");
-        }
-        String reply = vehicleText.clean(text.toString(), command);
-        if (closed) {
-            state.failed(l, new EOFException("closed by the vehicle"));
-            return Reply.ok(reply + (reply.isEmpty() ? "" : "\n") + "(the vehicle closed the link)");
-        }
-        return Reply.ok(reply);
-    }
-
-    /**
-     * A plain command was interrupted: the reply is an error (the server turns it into CANCELLED
-     * naming who asked), saying whether the vehicle is back at its prompt and what it printed.
-     */
-    private Reply cancelled(Connection l, String command, String user, StringBuilder text) throws ServiceException {
-        boolean back = vehicleText.endsWithPrompt(text);
-        lineDirty = !back;
-        String printed = vehicleText.clean(text.toString(), command);
-        String how = "interrupted '" + Header.abbreviate(command) + "' with " + plainCancel.describe() + "; "
-                + (back ? "the vehicle is back at its prompt"
-                : "the vehicle was not back at its prompt within " + replies.settleMillis() / 1000 + " s (the next command"
-                        + " waits for it)");
-        console.transfer(user, how);
-        throw new ServiceException(ErrorCode.CANCELLED, how + (printed.isEmpty() ? "" : "; it had printed:\n"
-                + (printed.length() > 2000 ? "…" + printed.substring(printed.length() - 2000) : printed)));
     }
 
     @Override
