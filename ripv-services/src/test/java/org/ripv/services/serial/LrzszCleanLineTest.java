@@ -28,7 +28,8 @@ import org.ripv.testing.Tools;
  * conditions under which a late 'C' once turned the next {@code yr} into a refused {@code Cyr}. The
  * vehicle keeps a 'C' in its line after each send, as that late 'C' did, so the stray byte is there
  * in every round, not in 3 of 19.
- * And a vehicle that refuses the first start of each transfer: it is tried once more on a clean line.
+ * And a vehicle that refuses the first start of each transfer: it is tried once more on a clean
+ * line; and a get cancelled midway (CAN CAN to sb) leaves a clean line for the next put.
  */
 class LrzszCleanLineTest {
     static final Duration T = Duration.ofSeconds(60);
@@ -120,6 +121,44 @@ class LrzszCleanLineTest {
                 assertTrue(listing.ok(), listing.text());
                 assertTrue(listing.text().contains("UP" + ROUNDS + ".BIN"), listing.text());
                 assertTrue(!listing.text().contains("Bad command"), "the listing comes clean: " + listing.text());
+            } finally {
+                serial.stop();
+            }
+        }
+    }
+
+    @Test
+    @SuppressWarnings("try")
+    void aGetCancelledMidwayLeavesACleanLineForTheNextPut() throws Exception {
+        Path dir = Files.createDirectories(tmp.resolve("vehicle"));
+        byte[] huge = new byte[3_000_000];
+        new Random(15).nextBytes(huge);
+        Files.write(dir.resolve("HUGE.LOG"), huge);
+        Path pty = tmp.resolve("ttyCX");
+        try (Socat socat = vehicle(dir, pty, "")) {
+            SerialPortServer serial = new SerialPortServer("testhost", List.of(link(pty)), null, false, tmp.resolve("work"));
+            serial.start();
+            try {
+                ServiceProbe probe = new ServiceProbe(serial);
+                Eventually.await("pty open", Duration.ofSeconds(10), () -> probe.status("ttyCX").available());
+                AtomicBoolean asked = new AtomicBoolean();
+                probe.onProgress = m -> {
+                    if (asked.compareAndSet(false, true)) {
+                        assertTrue(probe.cancel("ttyCX", m.header().messageId()), "the transfer takes the cancel");
+                    }
+                };
+                ServiceProbe.Answer got = probe.send("ttyCX", "ymodem:get HUGE.LOG", T);
+                probe.onProgress = m -> { };
+                assertTrue(asked.get(), "a progress came");
+                assertEquals(org.ripv.messages.ErrorCode.CANCELLED, got.last().footer().errorCode(), got.text());
+                byte[] up = new byte[5_000];
+                new Random(16).nextBytes(up);
+                ServiceProbe.Answer put = probe.send("ttyCX", "ymodem:put AFTER.BIN", new Attachment("AFTER.BIN", up), T);
+                assertTrue(put.ok(), "the put after a cancelled get: " + put.text());
+                assertArrayEquals(up, Files.readAllBytes(dir.resolve("AFTER.BIN")));
+                ServiceProbe.Answer listing = probe.send("ttyCX", "dir", T);
+                assertTrue(listing.ok() && listing.text().contains("AFTER.BIN") && !listing.text().contains("Bad command"),
+                        listing.text());
             } finally {
                 serial.stop();
             }
