@@ -111,7 +111,7 @@ public final class PostgresStateStore implements StateStore {
 
     /** PostgreSQL text cannot hold NUL; a stored text never needs one. */
     private static String text(String s) {
-        return s.indexOf('\0') < 0 ? s : s.replace('\0', '\uFFFD');
+        return s == null || s.indexOf(0) < 0 ? s : s.replace((char) 0, (char) 0xFFFD);
     }
 
     private <T> T run(String what, PgConnections.Work<T> work) throws IOException {
