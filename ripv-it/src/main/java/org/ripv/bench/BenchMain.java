@@ -31,6 +31,8 @@ public final class BenchMain {
             "             loading the scripts statement by statement   [--runs N]",
             "  calls      100 vehicles calling 100 listen:// links within a minute: accepted, streamed, delay",
             "             [--vehicles N] [--spread S] [--surface S] [--lines-per-second N]",
+            "  store      vehicle transcript appends through the server's writer into the embedded store and into",
+            "             PostgreSQL (RIPV_PG_URL) against direct JDBC batch inserts   [--entries N]",
             "  (the multi-host speeds — round trips across network namespaces, time to notice a cut host —",
             "   are measured by ripv-it's MultiHostTest, as root: docs/performance.md)",
             "See docs/performance.md for what each measures and the figures.");
@@ -63,6 +65,7 @@ public final class BenchMain {
             case "firststart" -> FirstStartBench.main(rest);
             case "calls" -> System.exit(Launchers.commandLine(new CallsBench(), "ripv bench calls").execute(rest));
             case "ingest" -> IngestBench.main(rest);
+            case "store" -> StoreBench.main(rest);
             default -> {
                 System.err.println("Error: unknown benchmark '" + args[0] + "'\n" + USAGE);
                 System.exit(2);
