@@ -320,6 +320,30 @@ class StateStoreContractTest {
         assertThat(stores.get(0).describe()).doesNotContain("password=" + System.getenv().getOrDefault("RIPV_PG_PASSWORD", "x"));
     }
 
+    /** PostgreSQL: a connection the server drops (a restart, a cut) is replaced, and the transaction tried again. */
+    @Test
+    void postgresReplacesABrokenConnection() throws Exception {
+        open(Kind.POSTGRES).close();
+        StoreLocation tagged = new StoreLocation(schema.location().jdbcUrl() + "&ApplicationName=" + schema.name,
+                schema.location().user(), schema.location().password());
+        StateStore s = StateStores.open(tagged, dataDir, 8192);
+        open.add(s);
+        s.appendTranscript(List.of(line(T0, A, "before")));
+        s.saveQueue(A, "one");
+        int killed;
+        try (Connection c = schema.connect(); Statement st = c.createStatement();
+             ResultSet rs = st.executeQuery("SELECT count(pg_terminate_backend(pid)) FROM pg_stat_activity WHERE application_name = '"
+                     + schema.name + "'")) {
+            rs.next();
+            killed = rs.getInt(1);
+        }
+        assertThat(killed).isGreaterThanOrEqualTo(1);
+        s.appendTranscript(List.of(line(T0 + 1, A, "after")));
+        s.saveQueue(A, "two");
+        assertThat(texts(s.readTranscript(A, 0, 10, false))).containsExactly("before", "after");
+        assertThat(s.loadQueues()).extracting(Stored::text).containsExactly("two");
+    }
+
     @Test
     void anUnreachableDatabaseIsAClearErrorAndNoPasswordIsShown() {
         StoreLocation nowhere = new StoreLocation("jdbc:postgresql://127.0.0.1:1/ripv?password=hunter2", "ripv", "hunter2");
