@@ -59,7 +59,7 @@ final class PgConnections implements AutoCloseable {
                 if (!broken(e) || closed) {
                     throw e;
                 }
-                log.warn("the state database connection failed ({}); trying once more on a new one", e.getMessage());
+                log.warn("the state database connection failed ({}); trying once more on a new one", PostgresStateStore.reason(e));
                 return attempt(work);
             }
         } finally {

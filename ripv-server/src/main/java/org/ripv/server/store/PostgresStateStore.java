@@ -118,8 +118,18 @@ public final class PostgresStateStore implements StateStore {
         try {
             return db.transaction(work);
         } catch (SQLException e) {
-            throw new IOException("state database " + describe() + ": could not " + what + ": " + e.getMessage(), e);
+            throw new IOException("state database " + describe() + ": could not " + what + ": " + reason(e), e);
         }
+    }
+
+    /**
+     * What went wrong, short: a failed batch's own message repeats every row's values (transcript
+     * text, in the log), so its first cause stands for it.
+     */
+    static String reason(SQLException e) {
+        SQLException cause = e instanceof java.sql.BatchUpdateException && e.getNextException() != null ? e.getNextException() : e;
+        String m = String.valueOf(cause.getMessage());
+        return (m.length() > 300 ? m.substring(0, 300) + "..." : m) + (cause.getSQLState() == null ? "" : " (SQLSTATE " + cause.getSQLState() + ")");
     }
 
     // ---- transcripts ----
