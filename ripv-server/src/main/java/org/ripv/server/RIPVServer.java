@@ -422,6 +422,10 @@ public final class RIPVServer implements AutoCloseable {
         return locks;
     }
 
+    ServerState state() {
+        return state;
+    }
+
     ServerSessions sessions() {
         return sessions;
     }
