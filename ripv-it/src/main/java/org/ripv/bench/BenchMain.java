@@ -34,6 +34,8 @@ public final class BenchMain {
             "  workflow   the simulator calls in with a queued workflow (dir, ymodem:get of 5 files, 500 KB, ymodem:put",
             "             of 100 KB) at 115200 baud: call → WORKFLOW_DONE against the transfers alone, same run",
             "             [--baud N] [--runs N] [--files N] [--get-bytes N] [--put-bytes N]",
+            "  store      vehicle transcript appends through the server's writer into the embedded store and into",
+            "             PostgreSQL (RIPV_PG_URL) against direct JDBC batch inserts   [--entries N]",
             "  (the multi-host speeds — round trips across network namespaces, time to notice a cut host —",
             "   are measured by ripv-it's MultiHostTest, as root: docs/performance.md)",
             "See docs/performance.md for what each measures and the figures.");
@@ -67,6 +69,7 @@ public final class BenchMain {
             case "calls" -> System.exit(Launchers.commandLine(new CallsBench(), "ripv bench calls").execute(rest));
             case "ingest" -> IngestBench.main(rest);
             case "workflow" -> System.exit(Launchers.commandLine(new WorkflowBench(), "ripv bench workflow").execute(rest));
+            case "store" -> StoreBench.main(rest);
             default -> {
                 System.err.println("Error: unknown benchmark '" + args[0] + "'\n" + USAGE);
                 System.exit(2);

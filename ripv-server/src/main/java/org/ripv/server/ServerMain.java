@@ -95,6 +95,8 @@ public final class ServerMain implements Callable<Integer> {
         int transcriptDays;
         @Option(names = "--transcript-file-mb", defaultValue = "64", description = "A transcript file is continued in a new one past this size (default ${DEFAULT-VALUE} MB).")
         long transcriptFileMb;
+        @CommandLine.Mixin
+        org.ripv.server.store.StateStoreOptions stateStore = new org.ripv.server.store.StateStoreOptions();
 
         @Override
         public Integer call() throws Exception {
@@ -130,6 +132,7 @@ public final class ServerMain implements Callable<Integer> {
             }
             SessionOptions sessions;
             try {
+                config = config.withStateStore(stateStore.location(System.err));
                 sessions = SessionOptions.defaults().withTranscripts(transcriptFileMb * 1024 * 1024, transcriptDays)
                         .withWebhooks(org.ripv.server.notify.WebhookTargets.parse(webhookAllow));
                 if (smtp != null) {
