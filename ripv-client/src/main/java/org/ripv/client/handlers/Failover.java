@@ -1,0 +1,77 @@
+package org.ripv.client.handlers;
+
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.Consumer;
+import org.ripv.failover.ServerList;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * Connects to whichever server of a list answers ({@code --server host1,host2}: an active server
+ * and its standbys, which listen on nothing until they take over). It starts with the server
+ * that answered last time, so a reconnect after a takeover does not first wait on the dead one.
+ */
+public final class Failover {
+    private static final Logger log = LoggerFactory.getLogger(Failover.class);
+
+    /** Opens one connection. */
+    @FunctionalInterface
+    public interface Dialer {
+        ClientSocketHandler dial(String host, int port) throws IOException;
+    }
+
+    private final ServerList servers;
+    private final Consumer<String> say;
+    private volatile int last;
+
+    /**
+     * @param servers the servers, in order of preference
+     * @param say     where "connected to the second server" lines go besides the log (null: the log only)
+     */
+    public Failover(ServerList servers, Consumer<String> say) {
+        this.servers = servers;
+        this.say = say == null ? m -> { } : say;
+    }
+
+    public ServerList servers() {
+        return servers;
+    }
+
+    /**
+     * Tries each server once, the last one that answered first.
+     *
+     * @throws IOException naming every server tried and why each failed
+     */
+    public ClientSocketHandler connect(Dialer dialer) throws IOException {
+        int n = servers.size();
+        int from = last;
+        List<String> failures = new ArrayList<>();
+        IOException first = null;
+        for (int i = 0; i < n; i++) {
+            int at = (from + i) % n;
+            ServerList.Endpoint e = servers.get(at);
+            try {
+                ClientSocketHandler h = dialer.dial(e.host(), e.port());
+                last = at;
+                if (!failures.isEmpty() || (n > 1 && at != 0)) {
+                    String line = "connected to " + e + servers.position(at)
+                            + (failures.isEmpty() ? "" : "; " + String.join("; ", failures));
+                    log.info("{}", line);
+                    say.accept(line);
+                }
+                return h;
+            } catch (IOException ex) {
+                if (first == null) {
+                    first = ex;
+                }
+                failures.add(e + " did not answer (" + ex.getMessage() + ")");
+            }
+        }
+        if (n == 1) {
+            throw first;
+        }
+        throw new IOException("no server of " + servers + " answers: " + String.join("; ", failures), first);
+    }
+}
