@@ -91,9 +91,11 @@ public final class ServerMain implements Callable<Integer> {
         int transcriptDays;
         @Option(names = "--transcript-file-mb", defaultValue = "64", description = "A transcript file is continued in a new one past this size (default ${DEFAULT-VALUE} MB).")
         long transcriptFileMb;
-        private volatile int openedOutbound = -1;
+        @CommandLine.Mixin
+        org.ripv.server.store.StateStoreOptions stateStore = new org.ripv.server.store.StateStoreOptions();
         @CommandLine.Mixin
         org.ripv.server.standby.StandbyOptions standby = new org.ripv.server.standby.StandbyOptions();
+        private volatile int openedOutbound = -1;
 
         @Override
         public Integer call() throws Exception {
@@ -129,6 +131,7 @@ public final class ServerMain implements Callable<Integer> {
             }
             SessionOptions sessions;
             try {
+                config = config.withStateStore(stateStore.location(System.err));
                 sessions = SessionOptions.defaults().withTranscripts(transcriptFileMb * 1024 * 1024, transcriptDays);
                 if (smtp != null) {
                     sessions = sessions.withSmtp(org.ripv.server.notify.Smtp.parse(smtp, smtpCredentials));
@@ -145,12 +148,12 @@ public final class ServerMain implements Callable<Integer> {
             String tlsFingerprint = fingerprint;
             org.ripv.server.standby.StandbyLoop.Opener<RIPVServer> open = () -> open(cfg, opts);
             java.util.function.Consumer<RIPVServer> ready = s -> ready(s, cfg, tlsFingerprint);
-            if (standby.enabled()) {
+            if (!config.stateStore().isEmbedded()) {
                 // A hot standby: serve only while holding the lead in the state database.
                 String me = (bind != null ? bind : rmiHostname != null ? rmiHostname : org.ripv.naming.Handles.localHost()) + ":" + port;
-                var loop = new org.ripv.server.standby.StandbyLoop<>(standby.leads(me, System.err), open, ready);
+                var loop = new org.ripv.server.standby.StandbyLoop<>(standby.leads(config.stateStore(), me), open, ready);
                 Runtime.getRuntime().addShutdownHook(new Thread(loop::stop, "ripv-server-shutdown"));
-                System.err.println("RIPVServer on " + me + ": taking the lead in " + standby.url()
+                System.err.println("RIPVServer on " + me + ": taking the lead in " + config.stateStore()
                         + " (standing by while another server holds it)");
                 loop.run();
                 return 0;

@@ -54,6 +54,8 @@ public final class Leadership implements AutoCloseable {
     }
 
     private final String url;
+    /** The URL without its parameters (which may hold a password), for log lines. */
+    private final String shown;
     private final Properties properties;
     private final Timings timings;
     private final String me;
@@ -71,9 +73,10 @@ public final class Leadership implements AutoCloseable {
      */
     public Leadership(String url, String user, String password, String me, Timings timings) {
         if (url == null || !url.startsWith("jdbc:postgresql:")) {
-            throw new IllegalArgumentException("a standby needs a PostgreSQL state database (jdbc:postgresql://HOST/DB), not " + url);
+            throw new IllegalArgumentException("a standby needs a PostgreSQL state database (jdbc:postgresql://HOST/DB)");
         }
         this.url = url;
+        this.shown = url.replaceFirst("\\?.*$", "");
         this.timings = timings;
         this.me = me;
         this.properties = new Properties();
@@ -108,15 +111,15 @@ public final class Leadership implements AutoCloseable {
             String why;
             try {
                 if (tryLock()) {
-                    log.info("this server ({}) holds the lead in {}: serving", me, url);
+                    log.info("this server ({}) holds the lead in {}: serving", me, shown);
                     checking = timer.scheduleWithFixedDelay(this::check, timings.check().toMillis(), timings.check().toMillis(),
                             TimeUnit.MILLISECONDS);
                     return;
                 }
-                why = "standing by: " + holder() + " holds the lead in " + url;
+                why = "standing by: " + holder() + " holds the lead in " + shown;
             } catch (SQLException e) {
                 drop();
-                why = "standing by: cannot reach the state database " + url + " (" + e.getMessage() + "); serving nothing";
+                why = "standing by: cannot reach the state database " + shown + " (" + e.getMessage() + "); serving nothing";
             }
             if (!why.equals(said)) {
                 log.warn("{}", why);
@@ -188,7 +191,7 @@ public final class Leadership implements AutoCloseable {
             }
             lose("the state database no longer shows this server's lock");
         } catch (SQLException | RuntimeException e) {
-            lose("lost the state database " + url + " (" + e.getMessage() + ")");
+            lose("lost the state database " + shown + " (" + e.getMessage() + ")");
         }
     }
 
