@@ -31,8 +31,9 @@ public final class BenchMain {
             "             loading the scripts statement by statement   [--runs N]",
             "  calls      100 vehicles calling 100 listen:// links within a minute: accepted, streamed, delay",
             "             [--vehicles N] [--spread S] [--surface S] [--lines-per-second N]",
-            "  (the multi-host speeds — round trips across network namespaces, time to notice a cut host —",
-            "   are measured by ripv-it's MultiHostTest, as root: docs/performance.md)",
+            "  hosts      as root, in network namespaces: the request round trip across hosts against bare TCP",
+            "             between the same namespaces, cut service host -> ?services says so, and kill -9 of",
+            "             the active server -> the standby answers (PostgreSQL state)   [--requests N] [--takeovers N]",
             "See docs/performance.md for what each measures and the figures.");
 
     public static void main(String[] args) throws Exception {
@@ -63,6 +64,7 @@ public final class BenchMain {
             case "firststart" -> FirstStartBench.main(rest);
             case "calls" -> System.exit(Launchers.commandLine(new CallsBench(), "ripv bench calls").execute(rest));
             case "ingest" -> IngestBench.main(rest);
+            case "hosts" -> HostsBench.main(rest);
             default -> {
                 System.err.println("Error: unknown benchmark '" + args[0] + "'\n" + USAGE);
                 System.exit(2);

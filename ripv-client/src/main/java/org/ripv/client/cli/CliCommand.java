@@ -106,7 +106,7 @@ public final class CliCommand implements Callable<Integer> {
             client = new org.ripv.client.handlers.Failover(servers, err::println).connect((h, p) -> ClientSocketHandler.connect(h, p,
                     plain ? javax.net.SocketFactory.getDefault() : trusted != null ? trusted
                             : Tls.trustOnFirstUse(h, p, knownHosts != null ? knownHosts : Tls.defaultKnownHosts(), err::println),
-                    Duration.ofSeconds(10)));
+                    servers.size() > 1 ? org.ripv.client.handlers.Failover.CONNECT : Duration.ofSeconds(10)));
         } catch (IOException e) {
             err.println("Error: cannot connect to " + servers + ": " + e.getMessage());
             return EXIT_NO_SESSION;

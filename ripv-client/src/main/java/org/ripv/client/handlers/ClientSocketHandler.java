@@ -99,7 +99,8 @@ public final class ClientSocketHandler implements AutoCloseable {
      */
     public static ClientSocketHandler connect(String host, int port) throws IOException {
         if (host.indexOf(',') >= 0) {
-            return failover(host, port).connect(ClientSocketHandler::connect);
+            return failover(host, port).connect((h, p) -> connect(h, p,
+                    Tls.trustOnFirstUse(h, p, Tls.defaultKnownHosts(), n -> log.warn("{}", n)), Failover.CONNECT));
         }
         return connect(host, port, Tls.trustOnFirstUse(host, port, Tls.defaultKnownHosts(), n -> log.warn("{}", n)),
                 Duration.ofSeconds(10));
@@ -108,7 +109,7 @@ public final class ClientSocketHandler implements AutoCloseable {
     /** Connects over plain TCP, to a server started with {@code --plain} (a test lab); a list as in {@link #connect(String, int)}. */
     public static ClientSocketHandler connectPlain(String host, int port) throws IOException {
         if (host.indexOf(',') >= 0) {
-            return failover(host, port).connect(ClientSocketHandler::connectPlain);
+            return failover(host, port).connect((h, p) -> connect(h, p, SocketFactory.getDefault(), Failover.CONNECT));
         }
         return connect(host, port, SocketFactory.getDefault(), Duration.ofSeconds(10));
     }
@@ -135,7 +136,8 @@ public final class ClientSocketHandler implements AutoCloseable {
             s.setTcpNoDelay(true);
             s.connect(new InetSocketAddress(host, port), (int) timeout.toMillis());
             if (s instanceof javax.net.ssl.SSLSocket tls) {
-                s.setSoTimeout((int) timeout.toMillis());
+                // A short connect deadline (a server list) must not cut a slow first handshake short.
+                s.setSoTimeout((int) Math.max(timeout.toMillis(), 10_000));
                 handshake(tls);
             }
             s.setSoTimeout(0);

@@ -15,6 +15,11 @@ import org.slf4j.LoggerFactory;
  */
 public final class Failover {
     private static final Logger log = LoggerFactory.getLogger(Failover.class);
+    /**
+     * How long each server of a list may take to accept the connection: a dead or cut-off one
+     * must not hold up the others for the usual 10 s (the TLS handshake still gets 10 s).
+     */
+    public static final java.time.Duration CONNECT = java.time.Duration.ofSeconds(3);
 
     /** Opens one connection. */
     @FunctionalInterface

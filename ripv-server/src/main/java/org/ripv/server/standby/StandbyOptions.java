@@ -21,7 +21,8 @@ public final class StandbyOptions {
             throw new IllegalArgumentException("--lead-check takes 100 to 10000 ms, not " + checkMillis);
         }
         Duration check = Duration.ofMillis(checkMillis);
-        Leadership.Timings t = new Leadership.Timings(check, Duration.ofSeconds(3), Duration.ofSeconds(5).plus(check),
+        // The holder notices within check + 3 s; the database drops a silent holder 3 s after that and more.
+        Leadership.Timings t = new Leadership.Timings(check, Duration.ofSeconds(3), Duration.ofSeconds(4).plus(check),
                 Duration.ofSeconds(1));
         return () -> new Leadership(db.jdbcUrl(), db.user(), db.password(), me, t);
     }
