@@ -93,6 +93,41 @@ class FailoverTest {
     }
 
     @Test
+    void theGuiReconnectsToTheSecondServerWhenTheFirstGoesAway() throws Exception {
+        int[] p = freePorts(4);
+        ServerConfig a = ServerConfig.forTests(dir.resolve("a")).withPorts(p[0], p[1], -1);
+        ServerConfig b = ServerConfig.forTests(dir.resolve("b")).withPorts(p[2], p[3], -1);
+        java.util.concurrent.ExecutorService ui = java.util.concurrent.Executors.newSingleThreadExecutor();
+        org.ripv.client.managers.GuiManager gui = new org.ripv.client.managers.GuiManager(new org.ripv.client.managers.ClientModel(),
+                ui, ClientSocketHandler::connect, new org.ripv.client.managers.GuiManager.Timings(Duration.ofSeconds(30),
+                Duration.ofMillis(200), Duration.ofSeconds(1)));
+        try {
+            try (TestSystem first = TestSystem.start(a)) {
+                first.user("alice", "operators");
+                Files.createDirectories(dir.resolve("b"));
+                Files.copy(dir.resolve("a").resolve("service.secret"), dir.resolve("b").resolve("service.secret"));
+                Files.copy(a.permitFile(), b.permitFile());
+                // What the log-in dialog passes for "localhost:A, localhost:B" (HostPort keeps a list whole).
+                String list = org.ripv.client.panels.HostPort.parse("localhost:" + p[0] + ", localhost:" + p[2], 4444).host();
+                gui.logIn(list, 4444, "alice", TestSystem.PASSWORD.toCharArray()).get(20, java.util.concurrent.TimeUnit.SECONDS);
+                assertThat(gui.connection().server()).isEqualTo("localhost:" + p[0]);
+            }
+            try (TestSystem second = TestSystem.start(b)) {
+                long end = System.nanoTime() + Duration.ofSeconds(15).toNanos();
+                while (gui.connection() == null || !gui.connection().server().equals("localhost:" + p[2])) {
+                    assertThat(System.nanoTime()).as("the GUI logged in to the second server by itself").isLessThan(end);
+                    Thread.sleep(100);
+                }
+                assertThat(gui.connection().call("", "?ping", org.ripv.messages.Priority.NORMAL, Duration.ofSeconds(10), null)
+                        .footer().status().toString()).isEqualTo("OK");
+            }
+        } finally {
+            gui.close();
+            ui.shutdownNow();
+        }
+    }
+
+    @Test
     void aListNobodyAnswersNamesEveryServer() {
         ByteArrayOutputStream err = new ByteArrayOutputStream();
         CliCommand cmd = new CliCommand(new ByteArrayInputStream(new byte[0]), new PrintStream(new ByteArrayOutputStream()),
