@@ -34,6 +34,8 @@ public final class BenchMain {
             "  hosts      as root, in network namespaces: the request round trip across hosts against bare TCP",
             "             between the same namespaces, cut service host -> ?services says so, and kill -9 of",
             "             the active server -> the standby answers (PostgreSQL state)   [--requests N] [--takeovers N]",
+            "  store      vehicle transcript appends through the server's writer into the embedded store and into",
+            "             PostgreSQL (RIPV_PG_URL) against direct JDBC batch inserts   [--entries N]",
             "See docs/performance.md for what each measures and the figures.");
 
     public static void main(String[] args) throws Exception {
@@ -65,6 +67,7 @@ public final class BenchMain {
             case "calls" -> System.exit(Launchers.commandLine(new CallsBench(), "ripv bench calls").execute(rest));
             case "ingest" -> IngestBench.main(rest);
             case "hosts" -> HostsBench.main(rest);
+            case "store" -> StoreBench.main(rest);
             default -> {
                 System.err.println("Error: unknown benchmark '" + args[0] + "'\n" + USAGE);
                 System.exit(2);

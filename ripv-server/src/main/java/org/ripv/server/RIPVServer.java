@@ -137,12 +137,12 @@ public final class RIPVServer implements AutoCloseable {
         RmiSupport.configure(5_000, 15_000);
         org.ripv.files.PrivateFiles.createDirectories(config.dataDir());
         org.ripv.files.PrivateFiles.restrict(config.dataDir()); // the data directory is RIPV's alone (0700)
+        state = ServerState.open(config, sessionOptions); // first: an unreachable database leaves nothing open
         permits = new PermitWatcher(config.permitFile());
         files = new FileStore(config.dataDir().resolve("upload"), config.dataDir().resolve("download"), config.maxUpload());
         secret = ServiceSecret.loadOrCreate(config.dataDir().resolve("service.secret"));
         codec = new FrameCodec(config.maxFrame());
         pending = new PendingRequests(timers, config.requestTimeout(), this::timedOut);
-        state = ServerState.open(config, sessionOptions);
         workflows = new org.ripv.server.workflow.Workflows(state.store(), new WorkflowBridge(this));
         endings = new RequestEndings(this, pending, withdrawals, config.requestTimeout());
         box = postOffice.open(POST_OFFICE, new ServerTaskManager(this));
@@ -420,6 +420,10 @@ public final class RIPVServer implements AutoCloseable {
 
     Map<String, OperatorLock> locks() {
         return locks;
+    }
+
+    ServerState state() {
+        return state;
     }
 
     ServerSessions sessions() {

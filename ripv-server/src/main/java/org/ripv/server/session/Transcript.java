@@ -127,7 +127,11 @@ public final class Transcript implements AutoCloseable {
             List<CountDownLatch> waiting = new ArrayList<>();
             for (Object o : batch) {
                 if (o instanceof ConsoleEntry e) {
-                    lines.add(line(e));
+                    try {
+                        lines.add(line(e));
+                    } catch (RuntimeException x) {
+                        log.warn("transcript of {}: could not write: {}", e.mailbox(), x.toString());
+                    }
                 } else if (o instanceof CountDownLatch l) {
                     waiting.add(l);
                 }
@@ -147,26 +151,48 @@ public final class Transcript implements AutoCloseable {
         return new StateStore.TranscriptLine(e.mailbox(), e.time(), Entries.toJson(e));
     }
 
-    /** Stores a batch; a store that fails is tried again (a database coming back) before the batch is given up. */
+    /** How long a failing store (a database restarting or failing over) is retried before a batch is given up. */
+    static final Duration RETRY_FOR = Duration.ofSeconds(30);
+
+    /**
+     * Stores a batch. A store that fails is tried again, waiting 0.5 s, 1 s, 2 s ... up to
+     * {@link #RETRY_FOR} in all, while new entries wait in the queue; only then (or when closing)
+     * is the batch given up, and the log says how many entries were lost.
+     */
     private void store(List<StateStore.TranscriptLine> lines) {
         if (lines.isEmpty()) {
             return;
         }
+        long giveUp = System.nanoTime() + RETRY_FOR.toNanos();
+        long wait = 500;
         for (int attempt = 1; ; attempt++) {
             try {
                 store.appendTranscript(lines);
+                if (attempt > 1) {
+                    log.info("transcript: stored again after {} attempts", attempt);
+                }
                 return;
             } catch (IOException | RuntimeException x) {
-                if (attempt == 3 || closed && attempt == 2) {
-                    log.warn("transcript: could not store {} entries: {}", lines.size(), x.toString());
+                if (closed || System.nanoTime() + wait * 1_000_000 > giveUp) {
+                    log.warn("transcript: could not store {} entries, they are lost: {}", lines.size(), x.toString());
                     return;
+                }
+                if (attempt == 1) {
+                    log.warn("transcript: could not store {} entries ({}); trying again for up to {} s", lines.size(),
+                            x.toString(), RETRY_FOR.toSeconds());
                 }
                 try {
-                    Thread.sleep(500L * attempt);
+                    Thread.sleep(wait);
                 } catch (InterruptedException ie) {
-                    Thread.currentThread().interrupt();
+                    // close(): one last try
+                    try {
+                        store.appendTranscript(lines);
+                    } catch (IOException | RuntimeException last) {
+                        log.warn("transcript: could not store {} entries, they are lost: {}", lines.size(), last.toString());
+                    }
                     return;
                 }
+                wait = Math.min(wait * 2, 8000);
             }
         }
     }

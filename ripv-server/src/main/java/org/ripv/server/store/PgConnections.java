@@ -59,7 +59,7 @@ final class PgConnections implements AutoCloseable {
                 if (!broken(e) || closed) {
                     throw e;
                 }
-                log.warn("the state database connection failed ({}); trying once more on a new one", e.getMessage());
+                log.warn("the state database connection failed ({}); trying once more on a new one", PostgresStateStore.reason(e));
                 return attempt(work);
             }
         } finally {
@@ -76,6 +76,9 @@ final class PgConnections implements AutoCloseable {
             c.commit();
             healthy = true;
             return result;
+        } catch (AssertionError e) {
+            // pgjdbc 42.7 throws this from a batch on a connection the server has closed
+            throw new SQLException("the state database connection failed: " + e.getMessage(), "08006", e);
         } catch (SQLException | RuntimeException e) {
             try {
                 c.rollback();
@@ -95,14 +98,25 @@ final class PgConnections implements AutoCloseable {
         return e instanceof SQLTransientConnectionException || state != null && (state.startsWith("08") || state.equals("57P01"));
     }
 
+    /** An idle connection that still answers (the database may have restarted meanwhile), or a new one. */
     private Connection take() throws SQLException {
-        synchronized (idle) {
-            Connection c = idle.pollFirst();
-            if (c != null) {
+        while (true) {
+            Connection c;
+            synchronized (idle) {
+                c = idle.pollFirst();
+            }
+            if (c == null) {
+                return open();
+            }
+            if (c.isValid(2)) {
                 return c;
             }
+            try {
+                c.close();
+            } catch (SQLException ignored) {
+                // already gone
+            }
         }
-        return open();
     }
 
     private void give(Connection c, boolean healthy) {

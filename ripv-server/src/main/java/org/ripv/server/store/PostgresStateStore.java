@@ -111,15 +111,25 @@ public final class PostgresStateStore implements StateStore {
 
     /** PostgreSQL text cannot hold NUL; a stored text never needs one. */
     private static String text(String s) {
-        return s.indexOf('\0') < 0 ? s : s.replace('\0', '\uFFFD');
+        return s == null || s.indexOf(0) < 0 ? s : s.replace((char) 0, (char) 0xFFFD);
     }
 
     private <T> T run(String what, PgConnections.Work<T> work) throws IOException {
         try {
             return db.transaction(work);
         } catch (SQLException e) {
-            throw new IOException("state database " + describe() + ": could not " + what + ": " + e.getMessage(), e);
+            throw new IOException("state database " + describe() + ": could not " + what + ": " + reason(e), e);
         }
+    }
+
+    /**
+     * What went wrong, short: a failed batch's own message repeats every row's values (transcript
+     * text, in the log), so its first cause stands for it.
+     */
+    static String reason(SQLException e) {
+        SQLException cause = e instanceof java.sql.BatchUpdateException && e.getNextException() != null ? e.getNextException() : e;
+        String m = String.valueOf(cause.getMessage());
+        return (m.length() > 300 ? m.substring(0, 300) + "..." : m) + (cause.getSQLState() == null ? "" : " (SQLSTATE " + cause.getSQLState() + ")");
     }
 
     // ---- transcripts ----
