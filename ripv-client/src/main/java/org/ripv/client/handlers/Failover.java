@@ -11,7 +11,9 @@ import org.slf4j.LoggerFactory;
 /**
  * Connects to whichever server of a list answers ({@code --server host1,host2}: an active server
  * and its standbys, which listen on nothing until they take over). It starts with the server
- * that answered last time, so a reconnect after a takeover does not first wait on the dead one.
+ * that answered last time; a server that failed last time goes after those that did not, and of
+ * those that failed, the quickest to fail goes first: a standby refuses at once (its host is up,
+ * nothing listens yet), while a cut-off host costs the whole connect deadline.
  */
 public final class Failover {
     private static final Logger log = LoggerFactory.getLogger(Failover.class);
@@ -30,6 +32,8 @@ public final class Failover {
     private final ServerList servers;
     private final Consumer<String> say;
     private volatile int last;
+    /** How long each server's last failed attempt took, in ms; 0 when it answered or was not tried. */
+    private final long[] failedIn;
 
     /**
      * @param servers the servers, in order of preference
@@ -38,6 +42,7 @@ public final class Failover {
     public Failover(ServerList servers, Consumer<String> say) {
         this.servers = servers;
         this.say = say == null ? m -> { } : say;
+        this.failedIn = new long[servers.size()];
     }
 
     public ServerList servers() {
@@ -52,13 +57,23 @@ public final class Failover {
     public ClientSocketHandler connect(Dialer dialer) throws IOException {
         int n = servers.size();
         int from = last;
+        List<Integer> order = new ArrayList<>();
+        for (int i = 0; i < n; i++) {
+            order.add((from + i) % n);
+        }
+        synchronized (failedIn) {
+            order.sort(java.util.Comparator.comparingLong(i -> failedIn[i])); // stable: ties keep the rotation
+        }
         List<String> failures = new ArrayList<>();
         IOException first = null;
-        for (int i = 0; i < n; i++) {
-            int at = (from + i) % n;
+        for (int at : order) {
             ServerList.Endpoint e = servers.get(at);
+            long t0 = System.nanoTime();
             try {
                 ClientSocketHandler h = dialer.dial(e.host(), e.port());
+                synchronized (failedIn) {
+                    failedIn[at] = 0;
+                }
                 last = at;
                 if (!failures.isEmpty() || (n > 1 && at != 0)) {
                     String line = "connected to " + e + servers.position(at)
@@ -68,6 +83,9 @@ public final class Failover {
                 }
                 return h;
             } catch (IOException ex) {
+                synchronized (failedIn) {
+                    failedIn[at] = Math.max(1, (System.nanoTime() - t0) / 1_000_000);
+                }
                 if (first == null) {
                     first = ex;
                 }
