@@ -50,6 +50,8 @@ class StateDbOptionTest {
                 .hasMessageContaining("need --state-db");
         assertThatThrownBy(() -> parse("--state-db", "jdbc:mysql://h/db")).isInstanceOf(IllegalArgumentException.class)
                 .hasMessageContaining("--state-db takes a PostgreSQL JDBC URL");
+        assertThatThrownBy(() -> parse("--state-db", "jdbc:postgresql://h/db", "--state-db-password-file", dir.resolve("none").toString()))
+                .isInstanceOf(java.io.IOException.class).hasMessageContaining("cannot read --state-db-password-file");
     }
 
     @Test

@@ -81,6 +81,9 @@ public final class PostgresStateStore implements StateStore {
         try {
             db.transaction(c -> {
                 try (Statement st = c.createStatement()) {
+                    if (schemaPresent(st)) {
+                        return null; // a user with rights on the tables only need not be allowed to create
+                    }
                     st.execute("SELECT pg_advisory_xact_lock(" + SCHEMA_LOCK + ")");
                     for (String sql : SCHEMA) {
                         st.execute(sql);
@@ -93,6 +96,18 @@ public final class PostgresStateStore implements StateStore {
             throw new IOException("cannot use the state database " + store.describe() + ": " + e.getMessage(), e);
         }
         return store;
+    }
+
+    /** Whether every table and index is there already (in the URL's schema, else public). */
+    private static boolean schemaPresent(Statement st) throws SQLException {
+        StringBuilder q = new StringBuilder("SELECT true");
+        for (String name : new String[] {"ripv_transcript", "ripv_transcript_mailbox", "ripv_transcript_time", "ripv_document",
+            "ripv_receipt", "ripv_audit"}) {
+            q.append(" AND to_regclass('").append(name).append("') IS NOT NULL");
+        }
+        try (ResultSet rs = st.executeQuery(q.toString())) {
+            return rs.next() && rs.getBoolean(1);
+        }
     }
 
     /**

@@ -27,8 +27,13 @@ public final class StateStoreOptions {
             return StoreLocation.embedded();
         }
         String u = user != null ? user : System.getenv("RIPV_STATE_DB_USER");
-        String pw = org.ripv.launch.Secrets.resolve(null, passwordFile, "RIPV_STATE_DB_PASSWORD", "--state-db-password",
-                u != null && !u.isEmpty(), err);
+        String pw;
+        try {
+            pw = org.ripv.launch.Secrets.resolve(null, passwordFile, "RIPV_STATE_DB_PASSWORD", "--state-db-password",
+                    u != null && !u.isEmpty(), err);
+        } catch (IOException e) {
+            throw new IOException("cannot read --state-db-password-file " + passwordFile + ": " + e, e);
+        }
         return new StoreLocation(url, u == null || u.isEmpty() ? null : u, pw);
     }
 }

@@ -344,6 +344,45 @@ class StateStoreContractTest {
         assertThat(s.loadQueues()).extracting(Stored::text).containsExactly("two");
     }
 
+    /**
+     * PostgreSQL with the rights docs/operations.md names: a user that may only read and write the
+     * tables uses them once they exist; before, it is told why it cannot make them.
+     */
+    @Test
+    void postgresNeedsCreateOnlyForTheFirstStart() throws Exception {
+        open(Kind.POSTGRES).close(); // the tables, made by the admin
+        String role = schema.name + "_dml";
+        try (Connection c = schema.connect(); Statement st = c.createStatement()) {
+            st.execute("CREATE ROLE " + role + " LOGIN PASSWORD 'dml-pass'");
+            st.execute("GRANT USAGE ON SCHEMA " + schema.name + " TO " + role);
+            st.execute("GRANT SELECT, INSERT, UPDATE, DELETE ON ALL TABLES IN SCHEMA " + schema.name + " TO " + role);
+            st.execute("GRANT USAGE ON ALL SEQUENCES IN SCHEMA " + schema.name + " TO " + role);
+        }
+        try {
+            StateStore s = StateStores.open(new StoreLocation(schema.location().jdbcUrl(), role, "dml-pass"), dataDir, 0);
+            open.add(s);
+            s.appendTranscript(List.of(line(T0, A, "by the writer")));
+            s.saveQueue(A, "q");
+            s.saveReceipt(A, "0000000000001-1-1.txt", "r", 10);
+            s.appendAudit(List.of(new AuditRecord(T0, false, "login user=alice")));
+            s.pruneTranscripts(LocalDate.parse("2020-01-01"));
+            assertThat(texts(s.readTranscript(A, 0, 10, false))).containsExactly("by the writer");
+            try (Connection c = schema.connect(); Statement st = c.createStatement()) {
+                st.execute("DROP TABLE ripv_audit");
+            }
+            assertThatThrownBy(() -> StateStores.open(new StoreLocation(schema.location().jdbcUrl(), role, "dml-pass"), dataDir, 0))
+                    .isInstanceOf(IOException.class).hasMessageContaining("cannot use the state database")
+                    .hasMessageContaining("permission denied");
+        } finally {
+            open.forEach(StateStore::close);
+            open.clear();
+            try (Connection c = schema.connect(); Statement st = c.createStatement()) {
+                st.execute("DROP OWNED BY " + role + " CASCADE");
+                st.execute("DROP ROLE " + role);
+            }
+        }
+    }
+
     @Test
     void anUnreachableDatabaseIsAClearErrorAndNoPasswordIsShown() {
         StoreLocation nowhere = new StoreLocation("jdbc:postgresql://127.0.0.1:1/ripv?password=hunter2", "ripv", "hunter2");
