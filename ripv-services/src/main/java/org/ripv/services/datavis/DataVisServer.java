@@ -254,6 +254,8 @@ public final class DataVisServer extends RIPVService {
             request.progress("plotting " + summary.rows() + " rows of " + file.name() + " with the " + config.worker()
                     + " worker", new Progress("rows checked and handed to the " + config.worker() + " worker",
                             summary.rows(), summary.rows(), 0));
+            // The chart's numbers for an interactive plot in the client, while the worker draws.
+            org.ripv.messages.ChartData chart = ChartDataBuilder.forReply(config.worker(), file.data(), summary);
             String status = awaitWorker(watch, vis, exchangeName);
             if (!status.equals("1") && !status.isEmpty()) {
                 String why = status.startsWith("0") ? status.substring(1).strip() : status;
@@ -275,7 +277,7 @@ public final class DataVisServer extends RIPVService {
                     ms, request.user());
             return Reply.ok("plotted " + summary.rows() + " rows x " + Math.max(1, summary.columns() - 1) + " series of "
                     + file.name() + " to " + jpegName + " (" + bytes.length + " bytes) in " + ms + " ms with the "
-                    + config.worker() + " worker", new ImageResult(jpegName, bytes));
+                    + config.worker() + " worker", new ImageResult(jpegName, bytes, chart));
         } finally {
             Exchange.clean(dir); // whatever happened, the next request starts from an empty exchange
         }
