@@ -54,7 +54,7 @@ public final class Leadership implements AutoCloseable {
     }
 
     private final String url;
-    /** The URL without its parameters (which may hold a password), for log lines. */
+    /** The URL with any password in it masked, for messages. */
     private final String shown;
     private final Properties properties;
     private final Timings timings;
@@ -76,7 +76,7 @@ public final class Leadership implements AutoCloseable {
             throw new IllegalArgumentException("a standby needs a PostgreSQL state database (jdbc:postgresql://HOST/DB)");
         }
         this.url = url;
-        this.shown = url.replaceFirst("\\?.*$", "");
+        this.shown = url.replaceAll("(?i)(password=)[^&]*", "$1***");
         this.timings = timings;
         this.me = me;
         this.properties = new Properties();
@@ -106,7 +106,23 @@ public final class Leadership implements AutoCloseable {
      * @throws InterruptedException when stopped while standing by
      */
     public void awaitLead() throws InterruptedException {
+        try {
+            awaitLead(false);
+        } catch (java.io.IOException e) {
+            throw new IllegalStateException(e); // not thrown without failFast
+        }
+    }
+
+    /**
+     * As {@link #awaitLead()}; with {@code failFast}, a database that cannot be asked at the first
+     * try fails at once (a wrong URL or password at a server's start is an error to report, not
+     * an outage to sit out).
+     *
+     * @throws java.io.IOException with failFast, when the first try cannot reach the database
+     */
+    public void awaitLead(boolean failFast) throws InterruptedException, java.io.IOException {
         String said = null;
+        boolean first = true;
         while (!closed) {
             String why;
             try {
@@ -119,8 +135,12 @@ public final class Leadership implements AutoCloseable {
                 why = "standing by: " + holder() + " holds the lead in " + shown;
             } catch (SQLException e) {
                 drop();
+                if (first && failFast) {
+                    throw new java.io.IOException("cannot use the state database " + shown + ": " + e.getMessage(), e);
+                }
                 why = "standing by: cannot reach the state database " + shown + " (" + e.getMessage() + "); serving nothing";
             }
+            first = false;
             if (!why.equals(said)) {
                 log.warn("{}", why);
                 said = why;

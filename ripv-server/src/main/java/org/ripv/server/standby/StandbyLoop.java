@@ -43,15 +43,18 @@ public final class StandbyLoop<S extends AutoCloseable> {
 
     /**
      * Runs until {@link #stop}. A failure to open what is served ends it (a port in use will not
-     * free itself), after giving the lead up.
+     * free itself), after giving the lead up; so does a database that cannot be reached at the
+     * very first try (a wrong URL or password). Later, an unreachable database means standing by.
      */
     public void run() throws Exception {
+        boolean first = true;
         try {
             while (!stopping) {
                 Leadership l = leads.get();
                 lead = l;
                 try {
-                    l.awaitLead();
+                    l.awaitLead(first);
+                    first = false;
                 } catch (InterruptedException e) {
                     if (stopping) {
                         return;

@@ -90,6 +90,22 @@ class LeadershipTest {
     }
 
     @Test
+    void anUnreachableDatabaseFailsAServersStartButOnlyDelaysAStandby() throws Exception {
+        String nowhere = "jdbc:postgresql://127.0.0.1:1/ripv?password=hunter2";
+        try (Leadership l = new Leadership(nowhere, null, null, "a:4444", FAST)) {
+            assertThatThrownBy(() -> l.awaitLead(true)).isInstanceOf(java.io.IOException.class)
+                    .hasMessageContaining("cannot use the state database jdbc:postgresql://127.0.0.1:1/ripv?password=***")
+                    .hasMessageNotContaining("hunter2");
+        }
+        Leadership later = new Leadership(nowhere, null, null, "a:4444", FAST);
+        CompletableFuture<Void> waiting = standBy(later);
+        Thread.sleep(1_000);
+        assertThat(waiting).as("without failFast it stands by").isNotDone();
+        later.close();
+        assertThat(waiting).failsWithin(5, TimeUnit.SECONDS);
+    }
+
+    @Test
     void timingsThatWouldLetTwoServeAreRefused() {
         assertThatThrownBy(() -> new Leadership.Timings(Duration.ofSeconds(5), Duration.ofSeconds(5), Duration.ofSeconds(2),
                 Duration.ofSeconds(1))).hasMessageContaining("two servers could serve at once");
