@@ -63,8 +63,8 @@ public final class CliCommand implements Callable<Integer> {
 
     @Option(names = "--follow", paramLabel = "MAILBOX", description = "Print the MailBox's live console (lines, commands, events) until Ctrl-C; after any --exec lines.")
     String follow;
-    @Option(names = "--no-reconnect", description = "With --follow: end (exit 3) when the connection is lost, instead of"
-            + " logging in again to the server (or the first of --server's list that answers) and watching on.")
+    @Option(names = "--no-reconnect", description = "With --follow or on a terminal: end (exit 3) when the connection is lost, instead"
+            + " of logging in again to the server (or the first of --server's list that answers) and going on.")
     boolean noReconnect;
     @Option(names = "--timeout", defaultValue = "3600", description = "Seconds to wait for one reply (default ${DEFAULT-VALUE}; the server fails silent requests sooner).")
     long timeout;
@@ -111,8 +111,9 @@ public final class CliCommand implements Callable<Integer> {
             err.println("Error: cannot connect to " + servers + ": " + e.getMessage());
             return EXIT_NO_SESSION;
         }
-        // --follow runs all night: it keeps the password to log in again after a server restart or takeover.
-        char[] again = follow != null && !noReconnect ? pw.clone() : null;
+        // --follow runs all night, a terminal session for hours: both keep the password to log in again
+        // after a server restart or a standby's takeover.
+        char[] again = (follow != null || interactive()) && !noReconnect ? pw.clone() : null;
         try (client) {
             try {
                 client.login(user, pw);
@@ -123,9 +124,23 @@ public final class CliCommand implements Callable<Integer> {
                 java.util.Arrays.fill(pw, '\0');
             }
             CliSession session = new CliSession(client, out, err, json, Duration.ofSeconds(timeout));
+            Reconnect reconnect = again == null ? null : () -> {
+                ClientSocketHandler c = connect(servers, trusted);
+                char[] p = again.clone();
+                try {
+                    c.login(user, p);
+                    return c;
+                } catch (Exception e) {
+                    c.close();
+                    throw e;
+                } finally {
+                    java.util.Arrays.fill(p, '\0');
+                }
+            };
             try {
                 if (interactive()) {
-                    return new Shell(session, client, history != null ? history : Shell.defaultHistory(), err).run();
+                    return new Shell(session, client, history != null ? history : Shell.defaultHistory(), err, reconnect,
+                            c -> new CliSession(c, out, err, json, Duration.ofSeconds(timeout))).run();
                 }
                 if (exec != null && !exec.isEmpty()) {
                     for (String line : exec) {
@@ -146,19 +161,6 @@ public final class CliCommand implements Callable<Integer> {
             }
             out.flush();
             if (follow != null) {
-                ConsoleFollower.Reconnect reconnect = again == null ? null : () -> {
-                    ClientSocketHandler c = connect(servers, trusted);
-                    char[] p = again.clone();
-                    try {
-                        c.login(user, p);
-                        return c;
-                    } catch (Exception e) {
-                        c.close();
-                        throw e;
-                    } finally {
-                        java.util.Arrays.fill(p, '\0');
-                    }
-                };
                 try {
                     return new ConsoleFollower(client, out, err, json, reconnect).follow(follow,
                             Duration.ofSeconds(Math.min(timeout, 60)));

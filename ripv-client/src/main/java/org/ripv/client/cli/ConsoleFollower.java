@@ -30,12 +30,6 @@ import org.ripv.messages.Status;
  * apply: time, mailbox, kind, user, text, event, lat, lon.
  */
 public final class ConsoleFollower implements ClientSocketHandler.Listener {
-    /** Logs in again after the connection is lost: the same server restarted, or the next of a list. */
-    @FunctionalInterface
-    public interface Reconnect {
-        ClientSocketHandler connect() throws Exception;
-    }
-
     /** The longest wait between two attempts to reconnect. */
     static final Duration MAX_BACKOFF = Duration.ofSeconds(10);
 
