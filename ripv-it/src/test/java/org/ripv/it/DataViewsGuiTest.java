@@ -248,7 +248,8 @@ class DataViewsGuiTest {
                 plot.export(PlotPanel.Format.CSV, csv);
             });
             waitUntil(() -> Files.exists(svg) && Files.exists(csv));
-            assertThat(Files.readString(svg, StandardCharsets.UTF_8)).contains("<svg").contains("depth of cp_388");
+            assertThat(Files.readString(svg, StandardCharsets.UTF_8)).contains("<svg").contains("depth of cp_388")
+                    .contains("<polyline").contains("depth (m)");
             assertThat(Files.readAllLines(csv).get(0)).isEqualTo("series,unit,x,time_utc,y");
 
             // The Fleet window by its key.
