@@ -31,14 +31,6 @@ public final class SvgChart {
     private static final int TITLE_FONT = 14;
     private static final double CHAR = 0.62; // average glyph width of a sans-serif font, in font sizes
     private static final double MAX_PIXEL = 1e6; // coordinates beyond this are clamped (extreme zoom)
-    private static final long SECOND = 1000;
-    private static final long MINUTE = 60 * SECOND;
-    private static final long HOUR = 60 * MINUTE;
-    private static final long DAY = 24 * HOUR;
-    private static final long[] TIME_STEPS = {SECOND, 2 * SECOND, 5 * SECOND, 10 * SECOND, 15 * SECOND, 30 * SECOND,
-        MINUTE, 2 * MINUTE, 5 * MINUTE, 10 * MINUTE, 15 * MINUTE, 30 * MINUTE, HOUR, 2 * HOUR, 3 * HOUR, 6 * HOUR,
-        12 * HOUR, DAY, 2 * DAY, 7 * DAY};
-
     private SvgChart() {}
 
     /** The colour (0xRRGGBB) of series number {@code index}. */
@@ -152,18 +144,18 @@ public final class SvgChart {
             double legendHeight = rows.isEmpty() ? 0 : rows.size() * 17 + 8;
             double bottom = 24 + (data.xLabel().isEmpty() ? 0 : 18) + legendHeight + 8;
             ph = Math.max(40, height - top - bottom);
-            double[] yTicks = numberTicks(yMin, yMax, Math.max(2, (int) (ph / 45)));
-            int yDecimals = decimals(yTicks);
+            double[] yTicks = AxisTicks.numbers(yMin, yMax, Math.max(2, (int) (ph / 45)));
+            int yDecimals = AxisTicks.decimals(yTicks);
             double tickWidth = 0;
             for (double t : yTicks) {
-                tickWidth = Math.max(tickWidth, textWidth(number(t, yDecimals), TICK_FONT));
+                tickWidth = Math.max(tickWidth, textWidth(AxisTicks.label(t, yDecimals), TICK_FONT));
             }
             left = 12 + (data.yLabel().isEmpty() ? 0 : 20) + tickWidth + 8;
             pw = Math.max(40, width - left - 24);
             if (data.kind() == ChartData.Kind.TRACK) {
                 aspect();
-                yTicks = numberTicks(yMin, yMax, Math.max(2, (int) (ph / 45)));
-                yDecimals = decimals(yTicks);
+                yTicks = AxisTicks.numbers(yMin, yMax, Math.max(2, (int) (ph / 45)));
+                yDecimals = AxisTicks.decimals(yTicks);
             }
             head();
             grid(yTicks, yDecimals);
@@ -223,10 +215,10 @@ public final class SvgChart {
         private void grid(double[] yTicks, int yDecimals) {
             boolean time = data.kind().timeAxis();
             int target = Math.max(2, (int) (pw / (time ? 110 : 80)));
-            double[] xTicks = time ? timeTicks(xMin, xMax, target) : numberTicks(xMin, xMax, target);
-            String pattern = time ? timePattern(xTicks) : "";
+            double[] xTicks = time ? AxisTicks.times(xMin, xMax, target) : AxisTicks.numbers(xMin, xMax, target);
+            String pattern = time ? AxisTicks.timePattern(xTicks) : "";
             DateTimeFormatter timeFormat = time ? DateTimeFormatter.ofPattern(pattern, Locale.ROOT).withZone(ZoneOffset.UTC) : null;
-            int xDecimals = decimals(xTicks);
+            int xDecimals = AxisTicks.decimals(xTicks);
             out.append("<g class=\"grid\" stroke=\"#d3d3d3\" stroke-width=\"0.8\">\n");
             for (double t : xTicks) {
                 double x = px(t);
@@ -241,7 +233,7 @@ public final class SvgChart {
             out.append("</g>\n");
             out.append("<g class=\"x-ticks\" font-size=\"").append(TICK_FONT).append("\" text-anchor=\"middle\" fill=\"#333333\">\n");
             for (double t : xTicks) {
-                String label = time ? timeFormat.format(Instant.ofEpochMilli((long) t)) : number(t, xDecimals);
+                String label = time ? timeFormat.format(Instant.ofEpochMilli((long) t)) : AxisTicks.label(t, xDecimals);
                 out.append("<text x=\"").append(fmt(px(t))).append("\" y=\"").append(fmt(top + ph + 15)).append("\">")
                         .append(escape(label)).append("</text>\n");
             }
@@ -249,7 +241,7 @@ public final class SvgChart {
             out.append("<g class=\"y-ticks\" font-size=\"").append(TICK_FONT).append("\" text-anchor=\"end\" fill=\"#333333\">\n");
             for (double t : yTicks) {
                 out.append("<text x=\"").append(fmt(left - 6)).append("\" y=\"").append(fmt(py(t) + 4)).append("\">")
-                        .append(escape(number(t, yDecimals))).append("</text>\n");
+                        .append(escape(AxisTicks.label(t, yDecimals))).append("</text>\n");
             }
             out.append("</g>\n");
             String xLabel = data.xLabel();
@@ -515,90 +507,6 @@ public final class SvgChart {
 
     private static String markLabel(ChartData.Mark mark) {
         return mark.label().isBlank() ? "newest fix" : mark.label();
-    }
-
-    /** Round tick values (1, 2, 2.5 or 5 times a power of ten apart), about {@code target} of them. */
-    static double[] numberTicks(double lo, double hi, int target) {
-        double raw = (hi - lo) / Math.max(1, target);
-        double magnitude = Math.pow(10, Math.floor(Math.log10(raw)));
-        double m = raw / magnitude;
-        double step = (m <= 1 ? 1 : m <= 2 ? 2 : m <= 2.5 ? 2.5 : m <= 5 ? 5 : 10) * magnitude;
-        double first = Math.ceil(lo / step - 1e-9);
-        List<Double> ticks = new ArrayList<>();
-        for (int i = 0; i < 1000; i++) {
-            double t = (first + i) * step;
-            if (t > hi + step * 1e-9) {
-                break;
-            }
-            ticks.add(Math.abs(t) < step * 1e-9 ? 0.0 : t);
-        }
-        return ticks.stream().mapToDouble(Double::doubleValue).toArray();
-    }
-
-    /** Tick times (epoch milliseconds) at round seconds, minutes, hours or days, about {@code target} of them. */
-    static double[] timeTicks(double lo, double hi, int target) {
-        double raw = (hi - lo) / Math.max(1, target);
-        long step = 0;
-        for (long s : TIME_STEPS) {
-            if (s >= raw) {
-                step = s;
-                break;
-            }
-        }
-        if (step == 0) { // over a week a tick: a round number of days
-            double days = raw / DAY;
-            double magnitude = Math.pow(10, Math.floor(Math.log10(days)));
-            double m = days / magnitude;
-            step = (long) ((m <= 1 ? 1 : m <= 2 ? 2 : m <= 5 ? 5 : 10) * magnitude) * DAY;
-        }
-        if (raw < SECOND) { // under a second a tick: plain numbers of milliseconds
-            return numberTicks(lo, hi, target);
-        }
-        List<Double> ticks = new ArrayList<>();
-        long first = Math.floorDiv((long) Math.ceil(lo), step) * step;
-        for (long t = first; t <= hi && ticks.size() < 1000; t += step) {
-            if (t >= lo) {
-                ticks.add((double) t);
-            }
-        }
-        return ticks.stream().mapToDouble(Double::doubleValue).toArray();
-    }
-
-    /** Seconds when ticks are closer than a minute; the date when they are a day or more apart or the axis spans days. */
-    private static String timePattern(double[] ticks) {
-        long step = ticks.length > 1 ? (long) (ticks[1] - ticks[0]) : DAY;
-        String pattern;
-        if (step >= DAY) {
-            pattern = "uuuu-MM-dd";
-        } else if (step < SECOND) {
-            pattern = "HH:mm:ss.SSS";
-        } else if (ticks.length > 0 && Math.floorDiv((long) ticks[0], DAY) != Math.floorDiv((long) ticks[ticks.length - 1], DAY)) {
-            pattern = step < MINUTE ? "MM-dd HH:mm:ss" : "MM-dd HH:mm";
-        } else {
-            pattern = step < MINUTE ? "HH:mm:ss" : "HH:mm";
-        }
-        return pattern;
-    }
-
-    /** Decimals enough to tell the ticks apart. */
-    private static int decimals(double[] ticks) {
-        if (ticks.length < 2) {
-            return 0;
-        }
-        double step = Math.abs(ticks[1] - ticks[0]);
-        int d = (int) Math.max(0, -Math.floor(Math.log10(step) + 1e-9));
-        double scaled = step * Math.pow(10, d);
-        if (Math.abs(scaled - Math.rint(scaled)) > 1e-6) {
-            d++; // 2.5, 0.25, ...
-        }
-        return Math.min(d, 12);
-    }
-
-    private static String number(double v, int decimals) {
-        if (v != 0 && (Math.abs(v) >= 1e12 || decimals > 8)) {
-            return String.format(Locale.ROOT, "%.4g", v);
-        }
-        return String.format(Locale.ROOT, "%." + decimals + "f", v + 0.0);
     }
 
     private static double textWidth(String s, int fontSize) {

@@ -239,11 +239,11 @@ class SvgChartTest {
 
     @Test
     void ticksAreRoundNumbersAndTimes() {
-        assertThat(SvgChart.numberTicks(0.13, 0.87, 5)).usingComparatorWithPrecision(1e-12)
+        assertThat(AxisTicks.numbers(0.13, 0.87, 5)).usingComparatorWithPrecision(1e-12)
                 .containsExactly(0.2, 0.4, 0.6, 0.8);
-        assertThat(SvgChart.numberTicks(-3, 3, 6)).containsExactly(-3, -2, -1, 0, 1, 2, 3);
+        assertThat(AxisTicks.numbers(-3, 3, 6)).containsExactly(-3, -2, -1, 0, 1, 2, 3);
         // 3 days in about 6 ticks: midnights and noons.
-        double[] t = SvgChart.timeTicks(T0, T0 + 3 * 86_400_000.0, 6);
+        double[] t = AxisTicks.times(T0, T0 + 3 * 86_400_000.0, 6);
         for (double v : t) {
             assertThat(v % 43_200_000).isZero();
         }
