@@ -368,16 +368,50 @@ public final class SvgChart {
                     .append(fmt(y)).append("\" r=\"6\" fill=\"").append(hex(NEWEST_COLOUR)).append("\"/>\n");
             String label = markLabel(mark);
             double w = textWidth(label, TICK_FONT);
-            boolean rightOf = x + 10 + w <= left + pw || x - left < pw / 2;
-            double tx = rightOf ? x + 10 : x - 10;
-            double ty = Math.max(top + TICK_FONT + 2, Math.min(top + ph - 4, y + 4));
-            double bx = rightOf ? tx - 2 : tx - w - 2;
+            // Of the four places beside the dot, the one inside the plot covering the fewest points.
+            double bestX = 0;
+            double bestY = 0;
+            boolean rightOf = true;
+            long best = Long.MAX_VALUE;
+            for (int place = 0; place < 4; place++) {
+                boolean right = place % 2 == 0;
+                double bx = right ? x + 8 : x - 8 - w - 4;
+                double by = place < 2 ? y - 8 - TICK_FONT - 4 : y + 8;
+                long cost = covered(bx, by, w + 4, TICK_FONT + 4);
+                if (bx < left || bx + w + 4 > left + pw || by < top || by + TICK_FONT + 4 > top + ph) {
+                    cost += 1_000_000; // cut by the plot's edge
+                }
+                if (cost < best) {
+                    best = cost;
+                    bestX = bx;
+                    bestY = by;
+                    rightOf = right;
+                }
+            }
+            double bx = bestX;
+            double tx = rightOf ? bx + 2 : bx + w + 2;
+            double ty = bestY + TICK_FONT;
             out.append("<rect x=\"").append(fmt(bx)).append("\" y=\"").append(fmt(ty - TICK_FONT)).append("\" width=\"")
                     .append(fmt(w + 4)).append("\" height=\"").append(TICK_FONT + 4)
                     .append("\" fill=\"#ffffff\" fill-opacity=\"0.8\"/>\n");
             out.append("<text class=\"newest-label\" x=\"").append(fmt(tx)).append("\" y=\"").append(fmt(ty))
                     .append("\" font-size=\"").append(TICK_FONT).append("\" text-anchor=\"").append(rightOf ? "start" : "end")
                     .append("\" fill=\"#b00000\">").append(escape(label)).append("</text>\n</g>\n");
+        }
+
+        /** Points of the chart drawn within a box (pixels), to keep the newest fix's label off the line. */
+        private long covered(double bx, double by, double bw, double bh) {
+            long n = 0;
+            for (ChartData.Series series : data.series()) {
+                for (int i = 0; i < series.size(); i++) {
+                    double x = px(series.x()[i]);
+                    double y = py(series.y()[i]);
+                    if (x >= bx && x <= bx + bw && y >= by && y <= by + bh) {
+                        n++;
+                    }
+                }
+            }
+            return n;
         }
 
         private void plotFrame() {

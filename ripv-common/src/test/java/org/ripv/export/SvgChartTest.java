@@ -180,6 +180,17 @@ class SvgChartTest {
         assertThat(attr(dot, "cx")).isCloseTo(p.get(3)[0], org.assertj.core.api.Assertions.within(0.11));
         assertThat(attr(dot, "cy")).isCloseTo(p.get(3)[1], org.assertj.core.api.Assertions.within(0.11));
         assertThat(texts(newest)).containsExactly("newest fix 2013-09-05 13:45:50 UTC (gps)");
+        // The label's box, inside the plot, covers none of the track's points.
+        Element box = (Element) newest.getElementsByTagNameNS(SVG, "rect").item(0);
+        Element area = (Element) all(d, "clipPath").get(0).getElementsByTagNameNS(SVG, "rect").item(0);
+        double bx = attr(box, "x");
+        double by = attr(box, "y");
+        assertThat(bx).isGreaterThanOrEqualTo(attr(area, "x"));
+        assertThat(bx + attr(box, "width")).isLessThanOrEqualTo(attr(area, "x") + attr(area, "width"));
+        for (double[] q : points(line)) {
+            assertThat(q[0] >= bx && q[0] <= bx + attr(box, "width") && q[1] >= by && q[1] <= by + attr(box, "height"))
+                    .as("point %s,%s under the label", q[0], q[1]).isFalse();
+        }
         assertThat(texts(group(d, "legend"))).containsExactly("positions", "newest fix 2013-09-05 13:45:50 UTC (gps)");
         // North up; a kilometre as long east-west as north-south: pixels per degree of longitude
         // are cos(latitude) of those per degree of latitude.
