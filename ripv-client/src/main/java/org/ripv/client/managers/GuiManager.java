@@ -341,7 +341,7 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
             }
             m.append(kind, text);
             model.fire(ClientModel.Kind.COM, service);
-            if (kind == LineKind.ERROR || kind == LineKind.REPLY) {
+            if (kind == LineKind.ERROR || kind == LineKind.REPLY || kind == LineKind.NOTICE) {
                 // The status bar shows the latest outcome: a later success replaces an error.
                 model.notice(service + ": " + text, kind == LineKind.ERROR);
             }
@@ -358,6 +358,67 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
             if (m != null && !Objects.equals(m.progress(), progress)) {
                 m.progress(progress);
                 model.fire(ClientModel.Kind.COM, service);
+            }
+        });
+    }
+
+    @Override
+    public void requestStarted(String service, long messageId, String command) {
+        ui.execute(() -> {
+            ServiceModel m = model.service(service);
+            if (m != null) {
+                m.started(messageId, command, System.currentTimeMillis());
+                model.fire(ClientModel.Kind.COM, service);
+            }
+        });
+    }
+
+    @Override
+    public void requestProgress(String service, long messageId, Progress progress) {
+        ui.execute(() -> {
+            ServiceModel m = service == null ? null : model.service(service);
+            if (m != null && m.progress(messageId, progress)) {
+                model.fire(ClientModel.Kind.COM, service);
+            }
+        });
+    }
+
+    @Override
+    public void requestEnded(String service, long messageId, org.ripv.messages.ErrorCode code) {
+        ui.execute(() -> {
+            ServiceModel m = model.service(service);
+            if (m != null && m.ended(messageId) != null) {
+                model.fire(ClientModel.Kind.COM, service);
+            }
+        });
+    }
+
+    /**
+     * Asks the server to stop one of a tab's running requests ({@code ?cancel MESSAGE-ID}): the
+     * request shows "cancelling" until its final reply, ERROR {@code CANCELLED}, ends it. When the
+     * server refuses (the service cannot stop that command, no rights), the refusal shows in the
+     * status bar and the request runs on. Call on the UI thread.
+     */
+    public void cancel(String service, long messageId) {
+        ServiceModel m = model.service(service);
+        if (m == null || !m.cancelling(messageId, true)) {
+            return;
+        }
+        model.fire(ClientModel.Kind.COM, service);
+        requests.call("?cancel " + messageId, (reply, e) -> {
+            boolean refused = e != null || reply.status() == org.ripv.messages.Status.ERROR;
+            if (e != null) {
+                showNotice("'?cancel " + messageId + "' got no reply: " + Failures.describe(e), true);
+            }
+            if (refused) {
+                ui.execute(() -> {
+                    ServiceModel now = model.service(service);
+                    if (now != null && now.cancelling(messageId, false)) {
+                        model.fire(ClientModel.Kind.COM, service);
+                    }
+                });
+            } else if (!reply.footer().replyText().isBlank()) {
+                showNotice(reply.footer().replyText(), false);
             }
         });
     }
@@ -401,8 +462,20 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
     public void showConsole(org.ripv.messages.ConsoleBatch batch, boolean live) {
         ui.execute(() -> {
             model.console().add(batch);
+            for (ServiceModel s : model.services()) {
+                if (belongsTo(batch.mailbox(), s.name()) && s.console(batch.mailbox(), batch.entries())) {
+                    model.fire(ClientModel.Kind.MAILBOXES, s.name()); // the badges in SEL and MAM
+                }
+            }
             if (live) {
                 for (org.ripv.messages.ConsoleEntry e : batch.entries()) {
+                    if (e.kind() == org.ripv.messages.ConsoleEntry.Kind.EVENT
+                            && (e.event() == org.ripv.messages.VehicleEvent.WORKFLOW_DONE
+                            || e.event() == org.ripv.messages.VehicleEvent.WORKFLOW_FAILED)) {
+                        String vehicle = e.mailbox().substring(e.mailbox().lastIndexOf('>') + 1);
+                        model.notice(vehicle + " " + e.event() + (e.text().isEmpty() ? "" : ": " + e.text()),
+                                e.event() == org.ripv.messages.VehicleEvent.WORKFLOW_FAILED);
+                    }
                     if (ConsoleModel.notifies(e)) {
                         String vehicle = e.mailbox().substring(e.mailbox().lastIndexOf('>') + 1);
                         desktop.show("RIPV: " + vehicle + " " + e.event(), e.text().isEmpty() ? e.mailbox() : e.text(),

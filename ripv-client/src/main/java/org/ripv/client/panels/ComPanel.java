@@ -12,7 +12,6 @@ import javax.swing.JButton;
 import javax.swing.JComboBox;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
-import javax.swing.JProgressBar;
 import javax.swing.JScrollPane;
 import javax.swing.JTextArea;
 import javax.swing.JTextField;
@@ -37,7 +36,7 @@ public final class ComPanel extends JPanel {
     private final JLabel priorityLabel = value("priorityLabel");
     private final JLabel serviceStatus = value("serviceStatus");
     private final JTextArea replies = new JTextArea();
-    private final JProgressBar progress = new JProgressBar();
+    private final RunningPanel running;
     private final CommandHistory history = new CommandHistory();
     private long shownRevision = -1;
     private String shownTarget;
@@ -47,6 +46,7 @@ public final class ComPanel extends JPanel {
         super(new BorderLayout(4, 4));
         this.service = service;
         this.manager = manager;
+        this.running = new RunningPanel(service, manager);
         setName("com");
         setBorder(BorderFactory.createTitledBorder("COM — communications"));
 
@@ -115,12 +115,10 @@ public final class ComPanel extends JPanel {
         buttons.add(clear);
         line.add(buttons, BorderLayout.EAST);
 
-        progress.setName("comProgress");
-        progress.setStringPainted(true);
-        progress.setVisible(false);
+        running.setVisible(false);
 
         JPanel south = new JPanel(new BorderLayout(0, 2));
-        south.add(progress, BorderLayout.NORTH);
+        south.add(running, BorderLayout.NORTH);
         south.add(line, BorderLayout.SOUTH);
 
         add(labels, BorderLayout.NORTH);
@@ -186,13 +184,7 @@ public final class ComPanel extends JPanel {
                 shownTarget = m.target(); // each MailBox has its own history
                 history.reset(m.history());
             }
-            Progress p = m.progress();
-            progress.setVisible(p != null);
-            if (p != null) {
-                progress.setIndeterminate(p.percent() < 0);
-                progress.setValue(Math.max(0, p.percent()));
-                progress.setString(progressText(p));
-            }
+            running.update(m);
         } finally {
             updating = false;
         }
@@ -204,18 +196,12 @@ public final class ComPanel extends JPanel {
 
     /** "ymodem:get LOG  12 KB / 64 KB  1 KB/s  0:52 left": the COM progress bar's words. */
     static String progressText(Progress p) {
-        StringBuilder b = new StringBuilder(p.what()).append("  ").append(org.ripv.client.managers.Transfer.size(p.done()));
-        if (p.total() > 0) {
-            b.append(" / ").append(org.ripv.client.managers.Transfer.size(p.total()));
-        }
-        if (p.ratePerSecond() > 0) {
-            b.append("  ").append(org.ripv.client.managers.Transfer.size((long) p.ratePerSecond())).append("/s");
-            if (p.total() > p.done()) {
-                long eta = (long) Math.ceil((p.total() - p.done()) / p.ratePerSecond());
-                b.append("  ").append(eta / 60).append(':').append(String.format(java.util.Locale.ROOT, "%02d", eta % 60)).append(" left");
-            }
-        }
-        return b.toString();
+        return org.ripv.client.managers.ProgressText.of(p);
+    }
+
+    /** The running requests' progress bars' words, oldest first. */
+    public java.util.List<String> runningTexts() {
+        return running.texts();
     }
 
     /** Puts the keyboard focus in the command line (when its tab is shown). */
