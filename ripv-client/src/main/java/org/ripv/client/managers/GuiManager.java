@@ -72,6 +72,7 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
     private final ReplyDispatcher dispatcher;
     private final Transfers transfers;
     private final DesktopNotice desktop;
+    private final WorkflowActions workflows;
 
     /** A manager for the Swing GUI: changes go to the event thread. */
     public GuiManager(ClientModel model) {
@@ -97,6 +98,7 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
         this.dispatcher = new ReplyDispatcher(this, requests);
         this.transfers = new Transfers(model, ui, io, session::connection, this, requests);
         this.desktop = new DesktopNotice(model::notice);
+        this.workflows = new WorkflowActions(model.workflows(), ui, io, session::connection);
     }
 
     private static ThreadFactory named(String prefix) {
@@ -242,6 +244,36 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
      */
     public Transfer download(String name, Path localDir) {
         return transfers.download(name, localDir);
+    }
+
+    // ---------------------------------------------------------------- workflow queues (docs/workflows.md)
+
+    /** Asks a MailBox's queue ({@code ?queue}) and its last receipts ({@code ?receipts --last N}). Any thread. */
+    public void refreshQueue(String mailbox, int lastReceipts) {
+        workflows.refresh(mailbox, Math.max(1, Math.min(1000, lastReceipts)));
+    }
+
+    /**
+     * Uploads a workflow file from this computer and queues it ({@code ?queue add MAILBOX NAME});
+     * a refusal names the line and reason in {@link WorkflowModel.Queue#refusals()}. Any thread.
+     */
+    public void queueFile(String mailbox, Path local, ClientSocketHandler.IfExists ifExists) {
+        workflows.addFile(mailbox, local, ifExists);
+    }
+
+    /** Uploads a workflow written in the GUI as {@code name} and queues it. Any thread. */
+    public void queueText(String mailbox, String name, String text, ClientSocketHandler.IfExists ifExists) {
+        workflows.addText(mailbox, name, text, ifExists);
+    }
+
+    /** {@code ?queue remove MAILBOX ID}. Any thread. */
+    public void unqueue(String mailbox, long id) {
+        workflows.remove(mailbox, id);
+    }
+
+    /** {@code ?queue clear MAILBOX}. Any thread. */
+    public void clearQueue(String mailbox) {
+        workflows.clear(mailbox);
     }
 
     /** Writes bytes to a file off the UI thread (DAB export, DAV save); the outcome is a notice. */

@@ -19,6 +19,8 @@ public final class MamPanel extends JPanel {
     private final MailboxTree tree;
     private final JButton lock = new JButton("Lock");
     private final JButton unlock = new JButton("Unlock");
+    private final JButton queue = new JButton("Queue…");
+    private WorkflowDialog workflows;
     private String target = "";
 
     public MamPanel(String service, GuiManager manager) {
@@ -43,10 +45,15 @@ public final class MamPanel extends JPanel {
         unlock.setMnemonic(java.awt.event.KeyEvent.VK_K);
         unlock.setToolTipText("Release your lock on the target MailBox (?unlock)");
         unlock.addActionListener(e -> manager.sendCommand(service, "?unlock " + target));
+        queue.setName("queueButton");
+        queue.setMnemonic(java.awt.event.KeyEvent.VK_Q);
+        queue.setToolTipText("The target MailBox's workflow queue and receipts: list, add (a file or written here), remove, clear");
+        queue.addActionListener(e -> openWorkflows(manager));
         JPanel buttons = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 0));
         buttons.add(refresh);
         buttons.add(lock);
         buttons.add(unlock);
+        buttons.add(queue);
         add(buttons, BorderLayout.SOUTH);
     }
 
@@ -56,6 +63,23 @@ public final class MamPanel extends JPanel {
         tree.update(m.mailboxes(), m.target());
         lock.setEnabled(!target.isEmpty());
         unlock.setEnabled(!target.isEmpty());
+        queue.setEnabled(!target.isEmpty());
+    }
+
+    /** Opens (or brings to the front) the workflow window of the target MailBox. */
+    public WorkflowDialog openWorkflows(GuiManager manager) {
+        if (target.isEmpty()) {
+            return null;
+        }
+        if (workflows == null || !workflows.isDisplayable() || !workflows.mailbox().equals(target)) {
+            if (workflows != null) {
+                workflows.dispose();
+            }
+            workflows = new WorkflowDialog(javax.swing.SwingUtilities.getWindowAncestor(this), manager, target);
+        }
+        workflows.setVisible(true);
+        workflows.toFront();
+        return workflows;
     }
 
     public MailboxTree tree() {
