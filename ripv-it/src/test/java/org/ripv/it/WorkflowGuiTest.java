@@ -133,8 +133,11 @@ class WorkflowGuiTest {
             }
         }
         long t0 = System.nanoTime();
-        ui.run(() -> manager.cancel(DATABASE, r.messageId()));
-        assertThat(ui.get(() -> model.service(DATABASE).running().get(0).cancelling())).isTrue();
+        boolean cancelling = ui.get(() -> {
+            manager.cancel(DATABASE, r.messageId());
+            return model.service(DATABASE).running().get(0).cancelling();
+        });
+        assertThat(cancelling).isTrue();
         until("the query gone from COM", () -> model.service(DATABASE).running(), List::isEmpty);
         assertThat(Duration.ofNanos(System.nanoTime() - t0)).isLessThan(Duration.ofSeconds(20));
         String text = until("the cancelled line", () -> model.service(DATABASE).transcriptText(),

@@ -96,7 +96,7 @@ public final class RIPVClient {
         sel.setBorder(BorderFactory.createTitledBorder("SEL — services"));
         sel.add(new JScrollPane(serviceTree), BorderLayout.CENTER);
         sel.add(refresh, BorderLayout.SOUTH);
-        sel.setPreferredSize(new Dimension(290, 400)); // "<SerialPortServer>::<localhost>" whole
+        sel.setPreferredSize(new Dimension(330, 400)); // "<SerialPortServer>::<localhost>" and a vehicle's badge whole
 
         JPanel center = new JPanel(new BorderLayout());
         center.add(tabs, BorderLayout.CENTER);

@@ -29,9 +29,14 @@ public final class WorkflowModel {
 
     /** One run's receipt: its first line, its result line and its whole text. */
     public record Receipt(String title, String result, String text) {
+        private static final Pattern TITLE = Pattern.compile("^receipt: (workflow \\d+ '.*') of (\\S+) on .*, (run \\d+)$");
+
+        /** "DONE  workflow 1 'fetch.wf' (alice), run 2": the receipt list's words. */
         @Override
         public String toString() {
-            return title.replaceFirst("^receipt: ", "") + (result.isEmpty() ? "" : " — " + result.replaceFirst("^result: ", ""));
+            String verdict = result.isEmpty() ? "RUNNING" : result.replaceFirst("^result: (\\S+).*$", "$1");
+            Matcher m = TITLE.matcher(title);
+            return verdict + "  " + (m.matches() ? m.group(1) + " (" + m.group(2) + "), " + m.group(3) : title.replaceFirst("^receipt: ", ""));
         }
     }
 

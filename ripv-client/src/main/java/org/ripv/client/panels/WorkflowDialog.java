@@ -76,6 +76,7 @@ public final class WorkflowDialog extends JDialog {
     private final JSpinner last = new JSpinner(new SpinnerNumberModel(20, 1, 1000, 5));
     private final JTextArea events = new JTextArea(5, 40);
     private final JTabbedPane tabs = new JTabbedPane();
+    private JScrollPane refusalScroll;
     private final WorkflowModel.Listener queueListener;
     private final ConsoleModel.Listener consoleListener;
     /** What "Keep both" or "Replace" does after the server said the name is taken. */
@@ -84,6 +85,8 @@ public final class WorkflowDialog extends JDialog {
     private Object highlight;
     /** The file Add file… sent last: a refused one is opened in the editor, at the line at fault. */
     private Path sentFile;
+    /** Names this window uploaded: sending one again (a mended workflow) replaces it without asking. */
+    private final java.util.Set<String> uploadedHere = new java.util.HashSet<>();
 
     public WorkflowDialog(Window owner, GuiManager manager, String mailbox) {
         super(owner, "Workflows — " + handle(mailbox), ModalityType.MODELESS);
@@ -120,7 +123,7 @@ public final class WorkflowDialog extends JDialog {
         JPanel south = new JPanel(new BorderLayout(4, 2));
         south.setBorder(BorderFactory.createEmptyBorder(2, 6, 6, 6));
         south.add(outcome, BorderLayout.NORTH);
-        JScrollPane refusalScroll = new JScrollPane(refusalList);
+        refusalScroll = new JScrollPane(refusalList);
         refusalScroll.setBorder(BorderFactory.createTitledBorder("Refused: the line and why (click to show it in the editor)"));
         south.add(refusalScroll, BorderLayout.CENTER);
 
@@ -146,6 +149,18 @@ public final class WorkflowDialog extends JDialog {
         render();
         consoleChanged();
         refresh();
+        javax.swing.SwingUtilities.invokeLater(() -> split(tabs));
+    }
+
+    /** Receipts: the list takes 40 % once the window has its size. */
+    private static void split(java.awt.Container c) {
+        for (java.awt.Component x : c.getComponents()) {
+            if (x instanceof JSplitPane s && s.getOrientation() == JSplitPane.HORIZONTAL_SPLIT) {
+                s.setDividerLocation(0.4);
+            } else if (x instanceof java.awt.Container inner) {
+                split(inner);
+            }
+        }
     }
 
     private static String handle(String address) {
@@ -258,7 +273,7 @@ public final class WorkflowDialog extends JDialog {
         receiptText.setEditable(false);
         receiptText.setFont(new Font(Font.MONOSPACED, Font.PLAIN, receiptText.getFont().getSize()));
         JSplitPane split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, new JScrollPane(receiptList), new JScrollPane(receiptText));
-        split.setResizeWeight(0.35);
+        split.setResizeWeight(0.4);
         split.setBorder(null);
         JButton refresh = button("Refresh", KeyEvent.VK_H, "receiptsRefresh", "Ask the server again (?receipts --last N)");
         refresh.addActionListener(e -> refresh());
@@ -315,9 +330,10 @@ public final class WorkflowDialog extends JDialog {
         sentFile = null;
         retry = how -> {
             outcome("uploading " + n + " …", false);
+            uploadedHere.add(n);
             manager.queueText(mailbox, n, text, how);
         };
-        retry.accept(ifExists);
+        retry.accept(ifExists == IfExists.ASK && uploadedHere.contains(n) ? IfExists.REPLACE : ifExists);
     }
 
     private void removeSelected() {
@@ -350,6 +366,10 @@ public final class WorkflowDialog extends JDialog {
         }
         refusals.clear();
         q.refusals().forEach(refusals::addElement);
+        if (refusalScroll.isVisible() == q.refusals().isEmpty()) {
+            refusalScroll.setVisible(!q.refusals().isEmpty()); // only when there is something to show
+            getContentPane().revalidate();
+        }
         clearMark();
         if (!q.refusals().isEmpty() && sentFile != null) {
             // A refused file from disk: open it in the editor to mend it there.
