@@ -259,6 +259,12 @@ class WorkflowGuiTest {
             window.button("cancel-" + id).click();
             ClientGuiTest.waitFor("the query cancelled", () -> db.com().runningTexts().isEmpty()
                     && db.com().replyText().contains("-- cancelled 'SELECT"));
+            // Escape in COM cancels the newest running request too.
+            ClientGuiTest.command(window, SLOW);
+            ClientGuiTest.waitFor("the second query running", () -> db.com().runningTexts().size() == 1);
+            window.textBox("commandField").pressAndReleaseKeys(java.awt.event.KeyEvent.VK_ESCAPE);
+            ClientGuiTest.waitFor("the second query cancelled by Escape", () -> db.com().runningTexts().isEmpty()
+                    && db.com().replyText().split("-- cancelled 'SELECT", -1).length == 3);
 
             // The vehicle's queue: written in the window, refused at line 3, mended, queued.
             ClientGuiTest.showTab(client, VEHICLE);

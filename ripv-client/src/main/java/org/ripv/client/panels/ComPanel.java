@@ -41,6 +41,7 @@ public final class ComPanel extends JPanel {
     private long shownRevision = -1;
     private String shownTarget;
     private boolean updating;
+    private java.util.List<ServiceModel.Running> shownRunning = java.util.List.of();
 
     public ComPanel(String service, GuiManager manager) {
         super(new BorderLayout(4, 4));
@@ -116,6 +117,18 @@ public final class ComPanel extends JPanel {
         line.add(buttons, BorderLayout.EAST);
 
         running.setVisible(false);
+        // Escape anywhere in COM cancels the newest running request, as its Cancel button does.
+        getInputMap(WHEN_ANCESTOR_OF_FOCUSED_COMPONENT).put(javax.swing.KeyStroke.getKeyStroke(KeyEvent.VK_ESCAPE, 0),
+                "ripv-cancel");
+        getActionMap().put("ripv-cancel", new javax.swing.AbstractAction() {
+            @Override
+            public void actionPerformed(java.awt.event.ActionEvent e) {
+                java.util.List<ServiceModel.Running> now = shownRunning;
+                if (!now.isEmpty()) {
+                    manager.cancel(service, now.get(now.size() - 1).messageId());
+                }
+            }
+        });
 
         JPanel south = new JPanel(new BorderLayout(0, 2));
         south.add(running, BorderLayout.NORTH);
@@ -185,6 +198,7 @@ public final class ComPanel extends JPanel {
                 history.reset(m.history());
             }
             running.update(m);
+            shownRunning = m.running();
         } finally {
             updating = false;
         }
