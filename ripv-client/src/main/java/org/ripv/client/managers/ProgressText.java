@@ -10,7 +10,17 @@ public final class ProgressText {
 
     /** "ymodem:get LOG  12 KB / 64 KB  1 KB/s  0:52 left". */
     public static String of(Progress p) {
-        StringBuilder b = new StringBuilder(p.what()).append("  ").append(Transfer.size(p.done()));
+        return of(p.what(), p);
+    }
+
+    /**
+     * As {@link #of(Progress)}, led by the command that runs: "ymodem:get *.SBD · 01230000.SBD  12 KB
+     * / 20 KB …" (the item the progress is about follows when the command does not name it).
+     */
+    public static String of(String command, Progress p) {
+        String label = command == null || command.isBlank() ? p.what()
+                : p.what().isBlank() || command.contains(p.what()) ? command : command + " · " + p.what();
+        StringBuilder b = new StringBuilder(label).append("  ").append(Transfer.size(p.done()));
         if (p.total() > 0) {
             b.append(" / ").append(Transfer.size(p.total()));
         }

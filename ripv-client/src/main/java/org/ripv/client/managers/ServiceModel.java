@@ -40,7 +40,7 @@ public final class ServiceModel {
         /** "ymodem:get LOG  12 KB / 64 KB  1 KB/s  0:52 left", or "running: dir  0:07" before any progress. */
         public String text(long now) {
             if (progress != null) {
-                return ProgressText.of(progress);
+                return (cancelling ? "cancelling: " : "") + ProgressText.of(command, progress);
             }
             long s = Math.max(0, (now - started) / 1000);
             return (cancelling ? "cancelling: " : "running: ") + command + "  " + ProgressText.clock(s);

@@ -76,6 +76,11 @@ class WorkflowViewsTest {
         manager.requestProgress(SERIAL, 99, new Progress("someone else's", 1, 2, 1));
         ui.sync();
         assertThat(m.running().get(0).text(0)).isEqualTo("ymodem:get mission.log  40 KB / 100 KB  512 B/s  2:00 left");
+        manager.requestStarted(SERIAL, 42, "ymodem:get *.SBD");
+        manager.requestProgress(SERIAL, 42, new Progress("01230000.SBD", 10 * 1024, 20 * 1024, 1024));
+        ui.sync();
+        assertThat(m.running().get(1).text(0)).isEqualTo("ymodem:get *.SBD · 01230000.SBD  10 KB / 20 KB  1 KB/s  0:10 left");
+        manager.requestEnded(SERIAL, 42, null);
         ui.run(() -> manager.showProgress(SERIAL, new Progress("ymodem:get mission.log", 40 * 1024, 100 * 1024, 512)));
         assertThat(m.serviceStatus()).isEqualTo("busy: ymodem:get mission.log (40%, ETA 2:00)");
         boolean cancelling = ui.get(() -> {
