@@ -87,6 +87,10 @@ public final class ServerMain implements Callable<Integer> {
         String smtp;
         @Option(names = "--smtp-credentials", paramLabel = "FILE", description = "Properties file with user=, password= (and from=, starttls=true) for --smtp.")
         Path smtpCredentials;
+        @Option(names = "--webhook-allow", paramLabel = "CIDR[,CIDR...]",
+                description = "Non-public addresses webhooks may reach too (e.g. 10.0.0.0/8, 127.0.0.1/32, or any); "
+                        + "by default only public addresses (docs/sessions.md#notifications).")
+        String webhookAllow;
         @Option(names = "--transcript-days", defaultValue = "90", description = "Days of vehicle transcripts to keep (default ${DEFAULT-VALUE}).")
         int transcriptDays;
         @Option(names = "--transcript-file-mb", defaultValue = "64", description = "A transcript file is continued in a new one past this size (default ${DEFAULT-VALUE} MB).")
@@ -126,7 +130,8 @@ public final class ServerMain implements Callable<Integer> {
             }
             SessionOptions sessions;
             try {
-                sessions = SessionOptions.defaults().withTranscripts(transcriptFileMb * 1024 * 1024, transcriptDays);
+                sessions = SessionOptions.defaults().withTranscripts(transcriptFileMb * 1024 * 1024, transcriptDays)
+                        .withWebhooks(org.ripv.server.notify.WebhookTargets.parse(webhookAllow));
                 if (smtp != null) {
                     sessions = sessions.withSmtp(org.ripv.server.notify.Smtp.parse(smtp, smtpCredentials));
                 } else if (smtpCredentials != null) {

@@ -31,7 +31,7 @@ final class ServerSessions implements AutoCloseable {
                    Function<String, Optional<SocketHandler>> clients, FrameCodec codec) throws IOException {
         console = new ConsoleHub(dataDir.resolve("transcripts"), options.transcriptFileBytes(), options.keepDays(), codec::encode);
         notifier = new Notifier(dataDir.resolve("notify").resolve("subscriptions.jsonl"), permits, options.smtp(),
-                options.notifyBackoff(), options.notifyTimeout());
+                options.notifyBackoff(), options.notifyTimeout(), options.webhooks());
         console.onEvent(notifier::accept);
         consoleCommands = new ConsoleCommands(console, permits, id -> clients.apply(id).map(ServerSessions::outlet),
                 RIPVServer.SERVER_SERVICE);

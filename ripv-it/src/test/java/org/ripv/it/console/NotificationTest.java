@@ -35,6 +35,7 @@ import org.ripv.messages.Status;
 import org.ripv.messages.VehicleEvent;
 import org.ripv.server.ServerConfig;
 import org.ripv.server.SessionOptions;
+import org.ripv.server.notify.WebhookTargets;
 import org.ripv.server.notify.Smtp;
 
 /**
@@ -84,8 +85,11 @@ class NotificationTest {
         Files.writeString(credentials, "user=ripv\npassword=mail secret\nfrom=ripv@example.org\n");
         Smtp smtp = Smtp.parse("127.0.0.1:" + mail.getSmtp().getPort(), credentials);
         sys = TestSystem.start(ServerConfig.forTests(dir.resolve("server")),
-                SessionOptions.defaults().withSmtp(smtp).withNotifyTiming(Duration.ofMillis(200), Duration.ofSeconds(2)));
+                SessionOptions.defaults().withSmtp(smtp).withNotifyTiming(Duration.ofMillis(200), Duration.ofSeconds(2))
+                        .withWebhooks(WebhookTargets.parse("127.0.0.1/32"))); // the receivers here are on loopback
         sys.user("alice", "operators").user("olga", "observers").user("eve");
+        // eve may add webhooks (a right of its own) but may read no MailBox.
+        sys.rules("allow @operators * * *", "allow @observers * * ?read", "allow eve RIPVServer * ?webhook *");
         vehicle = new VehicleConsoleService("localhost", "ru29");
         sys.register(vehicle);
     }

@@ -19,6 +19,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Properties;
+import java.util.Set;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutorService;
@@ -39,6 +40,7 @@ import jakarta.mail.internet.InternetAddress;
 import jakarta.mail.internet.MimeMessage;
 import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.SessionState;
+import org.ripv.messages.VehicleEvent;
 import org.ripv.server.permit.PermitFile;
 import org.ripv.server.session.ConsoleHub;
 import org.ripv.server.session.Entries;
@@ -58,6 +60,9 @@ public final class Notifier implements AutoCloseable {
     private static final Logger log = LoggerFactory.getLogger(Notifier.class);
     /** Tries per delivery. */
     public static final int ATTEMPTS = 4;
+    /** The pseudo-command the permit file is asked about for adding or keeping a webhook. */
+    public static final String WEBHOOK = "?webhook";
+    private static final String SERVICE = "RIPVServer";
     /** Deliveries waiting or in flight before new ones are dropped (and said so in the last result). */
     static final int MAX_OUTSTANDING = 10_000;
     /** Subscriptions one user may hold. */
@@ -68,6 +73,7 @@ public final class Notifier implements AutoCloseable {
     private final Smtp smtp;
     private final Duration backoff;
     private final Duration timeout;
+    private final WebhookTargets targets;
     private final Map<String, Subscription> subscriptions = new ConcurrentHashMap<>();
     private final ScheduledExecutorService retries;
     private final ExecutorService http;
@@ -82,9 +88,12 @@ public final class Notifier implements AutoCloseable {
      * @param smtp    the SMTP server for e-mail, or null for none
      * @param backoff the first retry's delay (later ones grow four-fold)
      * @param timeout how long a receiver may take to connect, and then to answer
+     * @param targets where webhooks may go ({@code --webhook-allow})
      */
-    public Notifier(Path file, Supplier<PermitFile> permits, Smtp smtp, Duration backoff, Duration timeout) throws IOException {
+    public Notifier(Path file, Supplier<PermitFile> permits, Smtp smtp, Duration backoff, Duration timeout,
+                    WebhookTargets targets) throws IOException {
         this.file = file;
+        this.targets = targets;
         this.permits = permits;
         this.smtp = smtp;
         this.backoff = backoff;
@@ -109,10 +118,14 @@ public final class Notifier implements AutoCloseable {
     // ---- subscriptions ----
 
     /** Adds a subscription; returns it. Throws IllegalArgumentException for a bad target, event list or glob. */
-    synchronized Subscription add(String user, Subscription.Channel channel, String target, String events, String glob)
+    Subscription add(String user, Subscription.Channel channel, String target, String events, String glob)
             throws IOException {
         if (channel == Subscription.Channel.WEBHOOK) {
-            checkUrl(target);
+            String why = whyNoWebhook(permits.get(), user, target);
+            if (why != null) {
+                throw new Refused(why);
+            }
+            targets.check(checkUrl(target));
         } else {
             if (smtp == null) {
                 throw new IllegalArgumentException("this server sends no e-mail: it was started without --smtp HOST:PORT");
@@ -126,23 +139,46 @@ public final class Notifier implements AutoCloseable {
         if (glob.length() > 300 || glob.isBlank()) {
             throw new IllegalArgumentException("a MailBox glob is 1-300 characters");
         }
-        if (subscriptions.values().stream().filter(s -> s.user.equals(user)).count() >= MAX_PER_USER) {
-            throw new IllegalArgumentException("a user may hold at most " + MAX_PER_USER + " subscriptions; ?notify remove some");
+        Set<VehicleEvent> wanted = Subscription.parseEvents(events);
+        synchronized (this) { // not around the checks above: resolving a webhook's host may take seconds
+            if (subscriptions.values().stream().filter(s -> s.user.equals(user)).count() >= MAX_PER_USER) {
+                throw new IllegalArgumentException("a user may hold at most " + MAX_PER_USER + " subscriptions; ?notify remove some");
+            }
+            String id;
+            do {
+                byte[] b = new byte[4];
+                random.nextBytes(b);
+                id = "n" + HexFormat.of().formatHex(b);
+            } while (subscriptions.containsKey(id));
+            Subscription s = new Subscription(id, user, channel, target, wanted, events.equalsIgnoreCase("all"), glob);
+            subscriptions.put(id, s);
+            save();
+            return s;
         }
-        String id;
-        do {
-            byte[] b = new byte[4];
-            random.nextBytes(b);
-            id = "n" + HexFormat.of().formatHex(b);
-        } while (subscriptions.containsKey(id));
-        Subscription s = new Subscription(id, user, channel, target, Subscription.parseEvents(events),
-                events.equalsIgnoreCase("all"), glob);
-        subscriptions.put(id, s);
-        save();
-        return s;
     }
 
-    private static void checkUrl(String url) {
+    /**
+     * A webhook lets its owner make the server send HTTP requests, so it is a right of its own:
+     * the pseudo-command {@code ?webhook URL} of service RIPVServer (docs/permit.md). Null when allowed.
+     */
+    static String whyNoWebhook(PermitFile p, String user, String url) {
+        PermitFile.User u = p.user(user).orElse(null);
+        if (u == null) {
+            return "user '" + user + "' is no longer in the permit file";
+        }
+        PermitFile.Decision d = p.decide(u, SERVICE, "", WEBHOOK + " " + url);
+        return d.allowed() ? null : "user '" + user + "' may not add webhooks (" + d.because()
+                + "); e-mail notifications need no extra right";
+    }
+
+    /** A subscription refused by the permit file rather than for its form. */
+    static final class Refused extends IllegalArgumentException {
+        Refused(String message) {
+            super(message);
+        }
+    }
+
+    private static URI checkUrl(String url) {
         URI u;
         try {
             u = URI.create(url);
@@ -153,6 +189,10 @@ public final class Notifier implements AutoCloseable {
                 || !(u.getScheme().equalsIgnoreCase("http") || u.getScheme().equalsIgnoreCase("https"))) {
             throw new IllegalArgumentException("a webhook is an http:// or https:// URL with a host, not '" + url + "'");
         }
+        if (u.getUserInfo() != null) {
+            throw new IllegalArgumentException("a webhook URL may not carry a user name or password");
+        }
+        return u;
     }
 
     /** Removes a user's subscription; false when the user has none with that id. */
@@ -256,7 +296,12 @@ public final class Notifier implements AutoCloseable {
             return;
         }
         if (s.channel == Subscription.Channel.WEBHOOK) {
-            post(s, n, attempt, done);
+            try {
+                http.execute(() -> post(s, n, attempt, done));
+            } catch (RejectedExecutionException e) {
+                outstanding.decrementAndGet();
+                done.complete(null);
+            }
         } else {
             try {
                 mail.execute(() -> mail(s, n, attempt, done));
@@ -268,6 +313,20 @@ public final class Notifier implements AutoCloseable {
     }
 
     private void post(Subscription s, ConsoleHub.Notice n, int attempt, CompletableFuture<Void> done) {
+        // Checked again at each delivery: the right may have been taken away, and a name may now
+        // resolve somewhere else (this narrows DNS rebinding to the gap before the connect).
+        String refusal = whyNoWebhook(permits.get(), s.user, s.target);
+        if (refusal == null) {
+            try {
+                targets.check(URI.create(s.target));
+            } catch (IllegalArgumentException e) {
+                refusal = e.getMessage();
+            }
+        }
+        if (refusal != null) {
+            failed(s, n, attempt, "refused: " + refusal, false, done);
+            return;
+        }
         HttpRequest req;
         try {
             req = HttpRequest.newBuilder(URI.create(s.target)).timeout(timeout)

@@ -67,6 +67,8 @@ public final class NotifyCommands {
                     return error(request, fid, "usage: " + USAGE);
                 }
             }
+        } catch (Notifier.Refused e) {
+            return request.reply(Footer.error(fid, ErrorCode.FORBIDDEN, e.getMessage()).via(via));
         } catch (IllegalArgumentException e) {
             return error(request, fid, e.getMessage());
         }

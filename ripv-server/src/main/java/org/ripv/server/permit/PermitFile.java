@@ -73,6 +73,7 @@ public final class PermitFile {
             "#   ?lock and ?unlock (other ? commands need only a log-in);",
             "#   MAILBOX: a handle such as ttyS0 or *;  COMMAND-PATTERN: the whole one-line command, * matching anything;",
             "#   ?read is reading a MailBox: watching its console (?watch), ?history, notifications.",
+            "#   ?webhook URL (service RIPVServer) is adding a webhook notification.",
             "# The first rule that matches decides; a command no rule allows is refused.",
             "# quota WHO BYTES: how much a user may keep in the upload directory (first match; default 1G).",
             "",

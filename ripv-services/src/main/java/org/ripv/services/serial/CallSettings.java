@@ -3,6 +3,7 @@ package org.ripv.services.serial;
 import java.time.Duration;
 import java.util.Objects;
 import java.util.regex.Pattern;
+import org.ripv.security.AddressRanges;
 
 /**
  * How one link's calls and console are read (kept apart from {@link LinkSettings}, which says how
@@ -16,9 +17,11 @@ import java.util.regex.Pattern;
  * @param lineLength     console lines are cut at this many characters
  * @param linesPerSecond console lines per second the link may publish; the excess is counted
  *                       and marked "N lines skipped"
+ * @param callers        on {@code listen://} links, the addresses calls are taken from
+ *                       ({@code callers=CIDR[,CIDR...]}); empty: anyone who can reach the port
  */
 public record CallSettings(String name, Pattern surface, Duration quiet, Pattern alert, int lineLength,
-                           int linesPerSecond) {
+                           int linesPerSecond, AddressRanges callers) {
 
     /** The Slocum surface dialog: "Glider ru29 at surface." or a GPS fix line. */
     public static final String DEFAULT_SURFACE = "Glider .* at surface|GPS Location:";
@@ -35,6 +38,7 @@ public record CallSettings(String name, Pattern surface, Duration quiet, Pattern
         }
         Objects.requireNonNull(surface, "surface");
         Objects.requireNonNull(alert, "alert");
+        Objects.requireNonNull(callers, "callers");
         if (quiet == null || quiet.isNegative() || quiet.isZero()) {
             throw new IllegalArgumentException("quiet time must be positive, got " + quiet);
         }
@@ -49,18 +53,23 @@ public record CallSettings(String name, Pattern surface, Duration quiet, Pattern
     /** The defaults: no name, the Slocum surface dialog, 10 minutes quiet, 1,024-character lines, 200 lines/s. */
     public static CallSettings defaults() {
         return new CallSettings(null, Pattern.compile(DEFAULT_SURFACE), DEFAULT_QUIET, Pattern.compile(DEFAULT_ALERT),
-                DEFAULT_LINE_LENGTH, DEFAULT_LINES_PER_SECOND);
+                DEFAULT_LINE_LENGTH, DEFAULT_LINES_PER_SECOND, AddressRanges.NONE);
     }
 
     public CallSettings withName(String newName) {
-        return new CallSettings(newName, surface, quiet, alert, lineLength, linesPerSecond);
+        return new CallSettings(newName, surface, quiet, alert, lineLength, linesPerSecond, callers);
     }
 
     public CallSettings withQuiet(Duration newQuiet) {
-        return new CallSettings(name, surface, newQuiet, alert, lineLength, linesPerSecond);
+        return new CallSettings(name, surface, newQuiet, alert, lineLength, linesPerSecond, callers);
     }
 
     public CallSettings withLimits(int newLineLength, int newLinesPerSecond) {
-        return new CallSettings(name, surface, quiet, alert, newLineLength, newLinesPerSecond);
+        return new CallSettings(name, surface, quiet, alert, newLineLength, newLinesPerSecond, callers);
+    }
+
+    /** Takes calls only from these addresses (a RUDICS gateway's, a modem server's). */
+    public CallSettings withCallers(AddressRanges newCallers) {
+        return new CallSettings(name, surface, quiet, alert, lineLength, linesPerSecond, newCallers);
     }
 }

@@ -55,7 +55,8 @@ final class LinkState {
      */
     void start(ScheduledExecutorService scheduler) throws IOException {
         if (vehicle.isListen()) {
-            calls = CallListener.open(VehicleLink.listenUri(settings.device()), handle, this::incoming);
+            calls = CallListener.open(VehicleLink.listenUri(settings.device()), handle, vehicle.call().callers(),
+                    this::incoming);
             downReason = "no call yet";
             return;
         }

@@ -42,7 +42,7 @@ public final class SerialPortServerCommand implements Callable<Integer> {
                     + "optionally followed by its own settings, e.g. /dev/ttyUSB0,baud=9600,carrier=require,name=ru29 "
                     + "(keys: baud, data-bits, parity, stop-bits, carrier, line-ending, prompt, prompt-regex, idle-timeout, "
                     + "command-timeout, send-command, receive-command, maxcommand; name, surface, quiet, alert, line-length, "
-                    + "rate). Repeatable.")
+                    + "rate, callers). Repeatable.")
     List<String> links = new ArrayList<>();
 
     @Option(names = "--no-enumerate", description = "Do not open MailBoxes for the serial ports jSerialComm finds; only the --link ones.")
@@ -117,6 +117,11 @@ public final class SerialPortServerCommand implements Callable<Integer> {
             description = "Console lines per second per link; the excess is marked 'N lines skipped' (default ${DEFAULT-VALUE}).")
     int rate;
 
+    @Option(names = "--callers", paramLabel = "CIDR[,CIDR...]",
+            description = "On listen:// links: take calls only from these addresses, e.g. the RUDICS gateway's "
+                    + "(per link: callers=...; default: anyone who can reach the port).")
+    String callers;
+
     @Option(names = "--work", paramLabel = "DIR", description = "Where incoming files are assembled (default: a temporary directory).")
     Path workDir;
 
@@ -169,7 +174,7 @@ public final class SerialPortServerCommand implements Callable<Integer> {
 
     /** The keys of a link's call and console settings ({@link CallSettings}). */
     static final java.util.Set<String> CALL_KEYS = java.util.Set.of("name", "surface", "quiet", "alert", "line-length",
-            "rate");
+            "rate", "callers");
 
     /** A link's settings and its call settings ({@code name=ru29,surface=...,quiet=600,alert=...}). */
     VehicleLink link(String spec) {
@@ -183,9 +188,18 @@ public final class SerialPortServerCommand implements Callable<Integer> {
         try {
             return new VehicleLink(link, new CallSettings(o.get("name"), regex(o.getOrDefault("surface", surface), "surface"),
                     Duration.ofSeconds(number(o, "quiet", quietSeconds)), regex(o.getOrDefault("alert", alert), "alert"),
-                    number(o, "line-length", lineLength), number(o, "rate", rate)));
+                    number(o, "line-length", lineLength), number(o, "rate", rate),
+                    callers(o.getOrDefault("callers", callers))));
         } catch (IllegalArgumentException e) {
             throw new IllegalArgumentException("--link '" + spec + "': " + e.getMessage(), e);
+        }
+    }
+
+    private static org.ripv.security.AddressRanges callers(String spec) {
+        try {
+            return org.ripv.security.AddressRanges.parse(spec);
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException("callers: " + e.getMessage());
         }
     }
 

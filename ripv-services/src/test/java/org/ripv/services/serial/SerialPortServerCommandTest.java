@@ -2,6 +2,7 @@ package org.ripv.services.serial;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -109,6 +110,22 @@ class SerialPortServerCommandTest {
         assertTrue(tcp.call().surface().matcher("GLIDER AT SURFACE").find());
         assertTrue(CallSettings.defaults().surface().matcher("Glider ru29 at surface.").find());
         assertTrue(CallSettings.defaults().alert().matcher("MS_ABORT_OVERDUE").find());
+        assertTrue(anonymous.call().callers().isEmpty());
+    }
+
+    @Test
+    void callersLimitWhoMayCallAListenLink() throws Exception {
+        SerialPortServerCommand c = parse("--server", "h", "--callers", "10.1.0.0/16",
+                "--link", "listen://0.0.0.0:2323,name=ru29,callers=192.0.2.7,2001:db8::/32", "--link", "listen://2324");
+        VehicleLink ru29 = c.link(c.links.get(0));
+        assertTrue(ru29.call().callers().contains(java.net.InetAddress.getByName("192.0.2.7")));
+        assertTrue(ru29.call().callers().contains(java.net.InetAddress.getByName("2001:db8::5")));
+        assertFalse(ru29.call().callers().contains(java.net.InetAddress.getByName("10.1.2.3")));
+        VehicleLink other = c.link(c.links.get(1));
+        assertTrue(other.call().callers().contains(java.net.InetAddress.getByName("10.1.2.3")));
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> c.link("listen://2325,callers=gateway.example.org"));
+        assertTrue(e.getMessage().contains("callers") && e.getMessage().contains("'gateway.example.org'"), e.getMessage());
     }
 
     @Test

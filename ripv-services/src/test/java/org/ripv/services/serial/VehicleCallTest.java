@@ -151,6 +151,28 @@ class VehicleCallTest {
     }
 
     @Test
+    void aCallerFromAnAddressNotInCallersGetsOneLineAndIsNeverTheVehicle() throws Exception {
+        // The link takes calls only from 127.0.0.2 (standing for the RUDICS gateway); 127.0.0.1 is someone else.
+        start(CallSettings.defaults().withName("ru29").withCallers(org.ripv.security.AddressRanges.parse("127.0.0.2/32")));
+        int port = serial.listenPort("ru29");
+        try (Socket stranger = new Socket("127.0.0.1", port, java.net.InetAddress.getByName("127.0.0.1"), 0)) {
+            stranger.setSoTimeout(10_000);
+            say(stranger, "Glider ru29 at surface.\r\nGPS Location:  4137.994 N -7032.188 E measured 1.0 secs ago\r\n");
+            assertThat(new String(stranger.getInputStream().readAllBytes(), StandardCharsets.US_ASCII))
+                    .isEqualTo("RIPV: calls from this address are not taken on this link\r\n");
+        }
+        try (Socket gateway = new Socket("127.0.0.1", port, java.net.InetAddress.getByName("127.0.0.2"), 0)) {
+            gateway.setSoTimeout(10_000);
+            say(gateway, "Glider ru29 at surface.\r\n");
+            awaitEvent(VehicleEvent.SURFACED, 1);
+            assertThat(event(VehicleEvent.SURFACED, 1).text()).contains("caller 127.0.0.2:");
+        }
+        awaitEvent(VehicleEvent.DIVED, 1);
+        assertThat(probe.lines("ru29")).containsExactly("Glider ru29 at surface.");
+        assertThat(probe.events("ru29")).hasSize(2);
+    }
+
+    @Test
     void aCallerThatSaysNothingForTheQuietTimeIsHungUpSoTheVehicleCanCall() throws Exception {
         start(CallSettings.defaults().withName("ru29").withQuiet(Duration.ofSeconds(1)));
         try (Socket squatter = call()) {
