@@ -180,8 +180,7 @@ public final class ComPanel extends JPanel {
             priorityLabel.setText(m.priority().name().toLowerCase(java.util.Locale.ROOT) + " (" + m.priority().level() + ")");
             priority.setSelectedItem(m.priority());
             serviceStatus.setText(m.serviceStatus().isEmpty() ? " " : m.serviceStatus());
-            serviceStatus.setForeground(m.serviceStatus().startsWith("not") ? Colors.error()
-                    : javax.swing.UIManager.getColor("Label.foreground"));
+            colourStatus();
             // A value too long for the panel shows whole in its tooltip.
             tip(talkingTo, "Talking To", m.target());
             tip(lastAction, "Last Action", m.lastAction());
@@ -201,6 +200,21 @@ public final class ComPanel extends JPanel {
             shownRunning = m.running();
         } finally {
             updating = false;
+        }
+    }
+
+    /** SS in red when the MailBox cannot take commands, in the current theme's red. */
+    private void colourStatus() {
+        serviceStatus.setForeground(serviceStatus.getText().startsWith("not") ? Colors.error()
+                : javax.swing.UIManager.getColor("Label.foreground"));
+    }
+
+    /** A theme change: SS takes the new theme's red (it was set for the old one). */
+    @Override
+    public void updateUI() {
+        super.updateUI();
+        if (serviceStatus != null) {
+            javax.swing.SwingUtilities.invokeLater(this::colourStatus); // after the labels took the new look
         }
     }
 

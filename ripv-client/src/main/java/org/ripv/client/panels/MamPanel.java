@@ -1,7 +1,6 @@
 package org.ripv.client.panels;
 
 import java.awt.BorderLayout;
-import java.awt.FlowLayout;
 import javax.swing.BorderFactory;
 import javax.swing.JButton;
 import javax.swing.JPanel;
@@ -49,11 +48,12 @@ public final class MamPanel extends JPanel {
         queue.setMnemonic(java.awt.event.KeyEvent.VK_Q);
         queue.setToolTipText("The target MailBox's workflow queue and receipts: list, add (a file or written here), remove, clear");
         queue.addActionListener(e -> openWorkflows(manager));
-        JPanel buttons = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 0));
+        // Two rows, so every button shows in a narrow quadrant (1280×800) as FIM's do.
+        JPanel buttons = new JPanel(new java.awt.GridLayout(2, 2, 4, 2));
         buttons.add(refresh);
+        buttons.add(queue);
         buttons.add(lock);
         buttons.add(unlock);
-        buttons.add(queue);
         add(buttons, BorderLayout.SOUTH);
     }
 
