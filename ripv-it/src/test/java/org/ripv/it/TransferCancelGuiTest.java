@@ -20,7 +20,7 @@ import org.ripv.services.serial.SerialPortServer;
 import org.ripv.services.simulator.GliderSimulator;
 
 /**
- * A YMODEM get from the simulated glider, seen and stopped from the GUI's model: its COM
+ * A YMODEM get from the simulated glider behind a slow link (a relay at 256 KB/s), seen and stopped from the GUI's model: its COM
  * progress bar shows bytes, rate and time left from the service's PROGRESS replies, Cancel
  * sends {@code ?cancel}, the transfer ends CANCELLED, nothing of the file is stored, and the
  * vehicle answers the next command.
@@ -33,6 +33,7 @@ class TransferCancelGuiTest {
     Path dir;
     TestSystem sys;
     GliderSimulator glider;
+    SlowLinkRelay relay;
     ClientGuiTest.UiThread ui;
     GuiManager manager;
     ClientModel model;
@@ -42,12 +43,12 @@ class TransferCancelGuiTest {
         sys = TestSystem.start(dir);
         sys.user("alice", "operators");
         glider = new GliderSimulator(dir.resolve("glider"), Duration.ofSeconds(3), ClientGuiTest.YMODEM);
-        // Big enough to take several seconds over loopback YMODEM, so there is a middle to cancel in.
-        byte[] big = new byte[24 * 1024 * 1024];
+        // 2 MB through a 256 KB/s link: about 8 s, so there is a middle to see and cancel in.
+        byte[] big = new byte[2 * 1024 * 1024];
         new java.util.Random(7).nextBytes(big);
         Files.write(glider.directory().resolve("BIG.DAT"), big);
-        int port = glider.listen(0);
-        LinkSettings link = LinkSettings.defaults("tcp://127.0.0.1:" + port).withIdleTimeout(Duration.ofSeconds(1))
+        relay = new SlowLinkRelay(glider.listen(0), 256 * 1024);
+        LinkSettings link = LinkSettings.defaults("tcp://127.0.0.1:" + relay.port()).withIdleTimeout(Duration.ofSeconds(1))
                 .withReconnectEvery(Duration.ofMillis(300)).withYmodem(ClientGuiTest.YMODEM);
         sys.register(new SerialPortServer("localhost", List.of(link), null, false, dir.resolve("serial-work")));
     }
@@ -61,6 +62,9 @@ class TransferCancelGuiTest {
             ui.close();
         }
         sys.close();
+        if (relay != null) {
+            relay.close();
+        }
         if (glider != null) {
             glider.close();
         }
@@ -94,8 +98,8 @@ class TransferCancelGuiTest {
                 && l.get(0).progress() != null && l.get(0).progress().done() > 0
                 && l.get(0).progress().done() < l.get(0).progress().total()).get(0);
         String text = r.text(System.currentTimeMillis());
-        assertThat(text).as(text).matches("ymodem:get BIG\\.DAT  [0-9.]+ [KM]B / 24\\.0 MB  [0-9.]+ [KM]?B/s  [0-9:]+ left");
-        assertThat(ui.get(() -> model.service(SERIAL).serviceStatus())).matches("busy: BIG\\.DAT \\(\\d+%, ETA [0-9:]+\\)");
+        assertThat(text).as(text).matches("ymodem:get BIG\\.DAT  [0-9.]+ [KM]B / 2\\.0 MB  [0-9.]+ [KM]?B/s  [0-9:]+ left");
+        assertThat(ui.get(() -> model.service(SERIAL).serviceStatus())).matches("busy: ymodem:get BIG\\.DAT \\(\\d+%, ETA [0-9:]+\\)");
         boolean cancelling = ui.get(() -> {
             manager.cancel(SERIAL, r.messageId());
             return model.service(SERIAL).running().get(0).cancelling();

@@ -18,9 +18,7 @@ public final class ProgressText {
      * / 20 KB …" (the item the progress is about follows when the command does not name it).
      */
     public static String of(String command, Progress p) {
-        String label = command == null || command.isBlank() ? p.what()
-                : p.what().isBlank() || command.contains(p.what()) ? command : command + " · " + p.what();
-        StringBuilder b = new StringBuilder(label).append("  ").append(Transfer.size(p.done()));
+        StringBuilder b = new StringBuilder(label(command, p)).append("  ").append(Transfer.size(p.done()));
         if (p.total() > 0) {
             b.append(" / ").append(Transfer.size(p.total()));
         }
@@ -32,6 +30,12 @@ public final class ProgressText {
             b.append("  ").append(eta).append(" left");
         }
         return b.toString();
+    }
+
+    /** The command, and the item the progress is about when the command does not name it. */
+    static String label(String command, Progress p) {
+        return command == null || command.isBlank() ? p.what()
+                : p.what().isBlank() || command.contains(p.what()) ? command : command + " · " + p.what();
     }
 
     /** Time left at the reported rate ({@code 1:12}), or empty when unknown (no rate, no total, done). */

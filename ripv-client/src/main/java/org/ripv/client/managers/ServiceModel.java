@@ -113,7 +113,10 @@ public final class ServiceModel {
     public String serviceStatus() {
         if (progress != null) {
             String eta = ProgressText.eta(progress);
-            return "busy: " + progress.what() + (progress.percent() >= 0 ? " (" + progress.percent() + "%"
+            // Led by the command when it is one of this tab's ("ymodem:get *.SBD · 0123.SBD").
+            String what = running.values().stream().filter(r -> progress.equals(r.progress())).findFirst()
+                    .map(r -> ProgressText.label(r.command(), progress)).orElse(progress.what());
+            return "busy: " + what + (progress.percent() >= 0 ? " (" + progress.percent() + "%"
                     + (eta.isEmpty() ? "" : ", ETA " + eta) + ")" : "");
         }
         return serviceStatus;
