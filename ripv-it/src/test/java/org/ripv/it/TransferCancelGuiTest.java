@@ -117,4 +117,40 @@ class TransferCancelGuiTest {
         ui.run(() -> manager.sendCommand(SERIAL, "dir"));
         until("dir answered after the cancel", () -> model.service(SERIAL).transcriptText(), s -> s.contains("SENSOR.DAT"));
     }
+
+    @Test
+    void windowShowsTheTransfersRateAndTimeLeftAndCancelsIt() throws Exception {
+        ClientGuiTest.requireDisplay();
+        java.util.prefs.Preferences prefs = java.util.prefs.Preferences.userRoot().node("org/ripv/test/" + java.util.UUID.randomUUID());
+        org.assertj.swing.core.Robot robot = org.assertj.swing.core.BasicRobot.robotWithNewAwtHierarchy();
+        GuiManager gm = org.assertj.swing.edt.GuiActionRunner.execute(() -> new GuiManager(new ClientModel()));
+        org.ripv.client.gui.RIPVClient client = org.assertj.swing.edt.GuiActionRunner.execute(() -> {
+            com.formdev.flatlaf.FlatLightLaf.setup();
+            return new org.ripv.client.gui.RIPVClient(gm, prefs);
+        });
+        org.assertj.swing.fixture.FrameFixture window = new org.assertj.swing.fixture.FrameFixture(robot, client.frame());
+        try {
+            window.show();
+            gm.logIn("localhost", sys.server().port(), "alice", TestSystem.PASSWORD.toCharArray()).get(20, TimeUnit.SECONDS);
+            ClientGuiTest.waitFor("the serial tab", () -> client.panel(SERIAL) != null);
+            ClientGuiTest.showTab(client, SERIAL);
+            org.ripv.client.panels.ServiceLayoutPanel tab = org.assertj.swing.edt.GuiActionRunner.execute(() -> client.panel(SERIAL));
+            ClientGuiTest.waitFor("the glider as the target", () -> !gm.model().service(SERIAL).target().isEmpty());
+            ClientGuiTest.command(window, "ymodem:get BIG.DAT");
+            ClientGuiTest.waitFor("rate and time left on the bar", () -> tab.com().runningTexts().stream()
+                    .anyMatch(t -> t.matches("ymodem:get BIG\\.DAT  [0-9.]+ [KM]B / 2\\.0 MB  [0-9.]+ KB/s  0:0[2-9] left")));
+            ClientGuiTest.screenshotOf(client, "client-transfer.png");
+            long id = org.assertj.swing.edt.GuiActionRunner.execute(() -> gm.model().service(SERIAL).running().get(0).messageId());
+            window.button("cancel-" + id).click();
+            ClientGuiTest.waitFor("the get cancelled", () -> tab.com().runningTexts().isEmpty()
+                    && tab.com().replyText().contains("-- cancelled 'ymodem:get BIG.DAT'"));
+        } catch (Throwable t) {
+            ClientGuiTest.screenshot("TransferCancelGuiTest-failure.png");
+            throw t;
+        } finally {
+            window.cleanUp();
+            gm.close();
+            prefs.removeNode();
+        }
+    }
 }
