@@ -246,6 +246,11 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
         return transfers.download(name, localDir);
     }
 
+    /** Writes bytes to a file off the UI thread (DAB export, DAV save); the outcome is a notice. */
+    public void save(Path file, byte[] bytes) {
+        transfers.save(file, bytes);
+    }
+
     // ---------------------------------------------------------------- workflow queues (docs/workflows.md)
 
     /** Asks a MailBox's queue ({@code ?queue}) and its last receipts ({@code ?receipts --last N}). Any thread. */
@@ -274,11 +279,6 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
     /** {@code ?queue clear MAILBOX}. Any thread. */
     public void clearQueue(String mailbox) {
         workflows.clear(mailbox);
-    }
-
-    /** Writes bytes to a file off the UI thread (DAB export, DAV save); the outcome is a notice. */
-    public void save(Path file, byte[] bytes) {
-        transfers.save(file, bytes);
     }
 
     // ---------------------------------------------------------------- dispatch
