@@ -282,6 +282,16 @@ class WorkflowGuiTest {
                     && dialog[0].refusalTexts().equals(List.of(dialog[0].refusalTexts().get(0)))
                     && dialog[0].refusalTexts().get(0).startsWith("line 3: unknown step 'ymodem:gte'"));
             screenshotOf(dialog[0], "client-workflow-refused.png");
+            // A refused file from this computer opens in the editor, at the line at fault.
+            Path disk = dir.resolve("from-disk.wf");
+            Files.writeString(disk, "workflow once\nnotify fine\nsend dir timeout=forever\n");
+            GuiActionRunner.execute(() -> {
+                dialog[0].showTab(0);
+                dialog[0].queueFile(disk, IfExists.ASK);
+            });
+            ClientGuiTest.waitFor("the file's refusal in the editor", () -> dialog[0].markedLine() == 3
+                    && dialog[0].editorContent().startsWith("from-disk.wf\nworkflow once\nnotify fine")
+                    && dialog[0].refusalTexts().get(0).startsWith("line 3: "));
             GuiActionRunner.execute(() -> {
                 dialog[0].editorText("ru29-fetch.wf", GOOD);
                 dialog[0].queueEditorText();

@@ -486,6 +486,11 @@ public final class WorkflowDialog extends JDialog {
         editor.setCaretPosition(0);
     }
 
+    /** The editor's name and text, as "NAME\nTEXT". */
+    public String editorContent() {
+        return name.getText() + "\n" + editor.getText();
+    }
+
     /** Queues what the editor holds, as "Upload and queue" does. */
     public void queueEditorText() {
         queueText(IfExists.ASK);
