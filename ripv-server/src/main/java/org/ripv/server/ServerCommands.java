@@ -277,7 +277,9 @@ final class ServerCommands {
     }
 
     static String describe(MailboxStatus s) {
-        return s.address() + ": " + (s.available() ? "available" : "not available") + (s.busy() ? ", busy" : "")
+        String what = !s.running().isEmpty() ? "busy: " + s.running()
+                : (s.available() ? "available" : "not available") + (s.busy() ? ", busy" : "");
+        return s.address() + ": " + what
                 + (s.lockedBy().isEmpty() ? "" : ", locked by " + s.lockedBy())
                 + (s.detail().isEmpty() ? "" : " (" + s.detail() + ")")
                 + (s.session() == null ? "" : "; vehicle " + org.ripv.server.session.ConsoleCommands.describeState(s.session()));

@@ -65,6 +65,7 @@ public final class RIPVClient {
     private final JSplitPane split;
     private final WindowLayout saved;
     private boolean syncing;
+    private org.ripv.client.fleet.FleetView fleetView;
     private long lastFocusRefresh;
 
     public RIPVClient(GuiManager manager, Preferences prefs) {
@@ -227,7 +228,27 @@ public final class RIPVClient {
         for (JMenuItem i : java.util.List.of(services, commandLine, mailboxes, files, next)) {
             view.add(i);
         }
+        view.addSeparator();
+        org.ripv.client.layout.QuadrantMenu.items(() -> tabs.getSelectedComponent() instanceof ServiceLayoutPanel p
+                ? p.quadrants() : null).forEach(view::add);
+        view.addSeparator();
+        JMenuItem fleet = new JMenuItem("Fleet...", KeyEvent.VK_T);
+        fleet.setName("fleetMenu");
+        fleet.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_F, java.awt.event.InputEvent.CTRL_DOWN_MASK
+                | java.awt.event.InputEvent.SHIFT_DOWN_MASK));
+        fleet.addActionListener(e -> showFleet());
+        view.add(fleet);
         return view;
+    }
+
+    /** Opens the Fleet window (or brings it to the front) and refreshes it. */
+    public org.ripv.client.fleet.FleetView showFleet() {
+        if (fleetView == null || !fleetView.dialog().isDisplayable()) {
+            fleetView = new org.ripv.client.fleet.FleetView(frame, manager);
+        }
+        fleetView.show();
+        fleetView.dialog().toFront();
+        return fleetView;
     }
 
     /** Shows the window. */

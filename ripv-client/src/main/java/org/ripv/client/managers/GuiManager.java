@@ -246,6 +246,14 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
         return transfers.download(name, localDir);
     }
 
+    /**
+     * Sends a request whose final reply goes to the returned future only, not to the panels (the
+     * Fleet view's queries to the DatabaseServer: no DAB tab opens for them). Any thread.
+     */
+    public java.util.concurrent.CompletableFuture<OutgoingServerMessage> ask(String mailbox, String body) {
+        return requests.ask(mailbox, body);
+    }
+
     /** Writes bytes to a file off the UI thread (DAB export, DAV save); the outcome is a notice. */
     public void save(Path file, byte[] bytes) {
         transfers.save(file, bytes);

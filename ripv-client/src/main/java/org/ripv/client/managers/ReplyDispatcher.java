@@ -45,6 +45,9 @@ final class ReplyDispatcher {
     void dispatch(OutgoingServerMessage reply) {
         Footer f = reply.footer();
         Header h = reply.header();
+        if (requests.quiet(h.messageId(), f.status().isFinal())) {
+            return; // asked by a view for itself (GuiManager.ask): the future has it
+        }
         Origin origin = requests.origin(h.messageId(), f.status().isFinal());
         String originService = origin == null ? null : origin.service();
         boolean echo = origin != null && origin.echo();

@@ -25,6 +25,8 @@ final class Requests {
     private final Supplier<ClientSocketHandler> conn;
     private final GuiInterface gui;
     private final Map<Long, Origin> origins = new ConcurrentHashMap<>();
+    /** Requests whose replies go to their caller only (see {@link #ask}), not to the panels. */
+    private final java.util.Set<Long> quiet = ConcurrentHashMap.newKeySet();
 
     Requests(ClientModel model, Executor io, Supplier<ClientSocketHandler> conn, GuiInterface gui) {
         this.model = model;
@@ -135,6 +137,43 @@ final class Requests {
             send("", "?unwatch " + previous, Priority.NORMAL, null);
         }
         send("", "?watch " + mailbox, Priority.NORMAL, null);
+    }
+
+    /**
+     * Sends a request whose final reply only completes the returned future (the Fleet view's
+     * queries): dispatch leaves it alone, so no DAB tab opens for it. Any thread.
+     */
+    java.util.concurrent.CompletableFuture<org.ripv.messages.OutgoingServerMessage> ask(String mailbox, String body) {
+        java.util.concurrent.CompletableFuture<org.ripv.messages.OutgoingServerMessage> out =
+                new java.util.concurrent.CompletableFuture<>();
+        io.execute(() -> {
+            ClientSocketHandler h = conn.get();
+            if (h == null) {
+                out.completeExceptionally(new IOException("not connected to a server"));
+                return;
+            }
+            Header header = Header.request(h.nextId(), mailbox, body, Priority.NORMAL);
+            quiet.add(header.messageId()); // before sending: the reply may beat us back
+            try {
+                h.send(header, null).whenComplete((reply, e) -> {
+                    if (e != null) {
+                        quiet.remove(header.messageId());
+                        out.completeExceptionally(e);
+                    } else {
+                        out.complete(reply);
+                    }
+                });
+            } catch (IOException | RuntimeException e) {
+                quiet.remove(header.messageId());
+                out.completeExceptionally(e);
+            }
+        });
+        return out;
+    }
+
+    /** Whether a reply answers an {@link #ask}; forgotten once the reply is final. */
+    boolean quiet(long messageId, boolean isFinal) {
+        return isFinal ? quiet.remove(messageId) : quiet.contains(messageId);
     }
 
     /** Where the request a reply answers came from, or null; forgotten once the reply is final. */

@@ -126,7 +126,7 @@ class PanelsTest {
         ServiceLayoutPanel p = new ServiceLayoutPanel(model.service(VIS), manager);
         assertThat(p.dav()).isNotNull();
         assertThat(p.dab()).isNull();
-        assertThat(split(p, "leftSplit").getBottomComponent()).isSameAs(p.dav());
+        assertThat(split(p, "leftSplit").getBottomComponent()).isSameAs(p.plot());
     }
 
     @Test

@@ -1,0 +1,5 @@
+/**
+ * Query results and chart data as CSV (RFC 4180) and JSON files, the same for the CLI's
+ * {@code export csv|json FILE} and the GUI's export buttons (JSON through {@link org.ripv.json.JsonWriter}).
+ */
+package org.ripv.export;
