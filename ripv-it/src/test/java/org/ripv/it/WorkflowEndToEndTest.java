@@ -175,6 +175,12 @@ class WorkflowEndToEndTest {
             assertThat(f[2]).isEqualTo(sha256(stored));
         }
         assertThat(Files.readAllBytes(glider.directory().resolve("goto_l10.ma"))).isEqualTo(mission);
+        // the receipt is in the vehicle's transcript too, files and SHA-256s included
+        String history = await(alice, "?history " + mb, h -> h.contains("result: DONE"));
+        assertThat(history).contains("receipt: workflow 1 'fetch.wf' of alice").contains("step 2/4 (line 3) ymodem:get *.SBD: OK");
+        for (String[] f : files) {
+            assertThat(history).contains("file " + f[0] + " " + f[1] + " bytes sha256 " + f[2]);
+        }
         // once: gone from the queue, and the lock it held is free again
         assertThat(await(alice, "?queue " + mb, q -> q.contains("empty"))).contains("empty");
         assertThat(ok(alice, "?status " + mb)).doesNotContain("locked");

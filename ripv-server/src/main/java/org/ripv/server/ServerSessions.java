@@ -27,10 +27,10 @@ final class ServerSessions implements AutoCloseable {
     private final ConsoleCommands consoleCommands;
     private final NotifyCommands notifyCommands;
 
-    ServerSessions(Path dataDir, SessionOptions options, Supplier<PermitFile> permits,
+    ServerSessions(Path dataDir, org.ripv.server.store.StateStore store, SessionOptions options, Supplier<PermitFile> permits,
                    Function<String, Optional<SocketHandler>> clients, FrameCodec codec) throws IOException {
-        console = new ConsoleHub(dataDir.resolve("transcripts"), options.transcriptFileBytes(), options.keepDays(), codec::encode);
-        notifier = new Notifier(dataDir.resolve("notify").resolve("subscriptions.jsonl"), permits, options.smtp(),
+        console = new ConsoleHub(dataDir.resolve("transcripts"), store, options.keepDays(), codec::encode);
+        notifier = new Notifier(store, permits, options.smtp(),
                 options.notifyBackoff(), options.notifyTimeout(), options.webhooks());
         console.onEvent(notifier::accept);
         consoleCommands = new ConsoleCommands(console, permits, id -> clients.apply(id).map(ServerSessions::outlet),

@@ -32,7 +32,9 @@ public final class CliCommand implements Callable<Integer> {
     public static final int EXIT_ERROR_REPLY = 1;
     public static final int EXIT_NO_SESSION = 3;
 
-    @Option(names = "--server", required = true, paramLabel = "HOST[:PORT]", description = "The server (port 4444 unless given).")
+    @Option(names = "--server", required = true, paramLabel = "HOST[:PORT][,HOST2[:PORT]]",
+            description = "The server (port 4444 unless given); several, comma-separated (an active server and its standbys):"
+                    + " the first that answers.")
     String server;
     @Option(names = "--user", required = true, description = "User name.")
     String user;
@@ -80,18 +82,14 @@ public final class CliCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws IOException {
-        String host = server;
-        int port = 4444;
-        int colon = server.lastIndexOf(':');
-        if (colon > 0 && server.indexOf(':') == colon) {
-            host = server.substring(0, colon);
-            try {
-                port = Integer.parseInt(server.substring(colon + 1));
-            } catch (NumberFormatException e) {
-                err.println("Error: '" + server + "' is not HOST[:PORT]");
-                return 2;
-            }
+        org.ripv.failover.ServerList servers;
+        try {
+            servers = org.ripv.failover.ServerList.parse(server, 4444);
+        } catch (IllegalArgumentException e) {
+            err.println("Error: " + e.getMessage());
+            return 2;
         }
+        String host = servers.first().host();
         char[] pw = password(host);
         if (pw == null) {
             err.println("Error: no password: give --password-file, set RIPV_PASSWORD, or run on a terminal to be asked");
@@ -103,12 +101,14 @@ public final class CliCommand implements Callable<Integer> {
                 err.println("Error: --plain excludes --tls and --truststore");
                 return 2;
             }
-            javax.net.SocketFactory factory = plain ? javax.net.SocketFactory.getDefault()
-                    : truststore != null ? Tls.socketFactory(truststore, truststorePassword.toCharArray())
-                    : Tls.trustOnFirstUse(host, port, knownHosts != null ? knownHosts : Tls.defaultKnownHosts(), err::println);
-            client = ClientSocketHandler.connect(host, port, factory, Duration.ofSeconds(10));
+            javax.net.SocketFactory trusted = truststore != null ? Tls.socketFactory(truststore, truststorePassword.toCharArray()) : null;
+            // Each server of a list is its own host to trust (a standby has its own certificate).
+            client = new org.ripv.client.handlers.Failover(servers, err::println).connect((h, p) -> ClientSocketHandler.connect(h, p,
+                    plain ? javax.net.SocketFactory.getDefault() : trusted != null ? trusted
+                            : Tls.trustOnFirstUse(h, p, knownHosts != null ? knownHosts : Tls.defaultKnownHosts(), err::println),
+                    servers.size() > 1 ? org.ripv.client.handlers.Failover.CONNECT : Duration.ofSeconds(10)));
         } catch (IOException e) {
-            err.println("Error: cannot connect to " + host + ":" + port + ": " + e.getMessage());
+            err.println("Error: cannot connect to " + servers + ": " + e.getMessage());
             return EXIT_NO_SESSION;
         }
         try (client) {

@@ -254,6 +254,10 @@ class PanelsTest {
         assertThatThrownBy(() -> HostPort.parse("host:http", 4444)).hasMessageContaining("'http'");
         assertThatThrownBy(() -> HostPort.parse("host:70000", 4444)).hasMessageContaining("70000");
         assertThatThrownBy(() -> HostPort.parse("  ", 4444)).hasMessageContaining("host");
+        // A server list (an active server and its standby) stays whole for the connection to try in turn.
+        assertThat(HostPort.parse("a.example.org, b.example.org:4445", 4444)).isEqualTo(new HostPort("a.example.org:4444,b.example.org:4445", 4444));
+        assertThat(HostPort.parse("a,b", 4444).toString()).isEqualTo("a:4444,b:4444");
+        assertThatThrownBy(() -> HostPort.parse("a,b:http", 4444)).hasMessageContaining("'b:http'");
     }
 
     static JLabel label(Container root, String name) {

@@ -52,14 +52,14 @@ public final class ConsoleHub implements AutoCloseable {
     private volatile Consumer<Notice> notices = n -> { };
 
     /**
-     * @param transcripts  the transcripts directory (DATA/transcripts)
-     * @param maxFileBytes transcript files are cut at about this size
-     * @param keepDays     transcript files older than this many days are deleted
+     * @param transcripts  the transcripts directory (DATA/transcripts; each MailBox's state.json)
+     * @param store        where transcript entries are kept
+     * @param keepDays     transcript entries older than this many days are deleted
      * @param encoder      encodes a push once for all the watchers that are up to date
      */
-    public ConsoleHub(Path transcripts, long maxFileBytes, int keepDays, Encoder encoder) throws IOException {
+    public ConsoleHub(Path transcripts, org.ripv.server.store.StateStore store, int keepDays, Encoder encoder) throws IOException {
         this.encoder = encoder;
-        this.transcript = new Transcript(transcripts, maxFileBytes, keepDays);
+        this.transcript = new Transcript(transcripts, store, keepDays);
         this.states = new VehicleStates(transcript::dirOf);
     }
 

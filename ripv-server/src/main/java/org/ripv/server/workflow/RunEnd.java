@@ -42,6 +42,10 @@ final class RunEnd {
             default -> { }
         }
         write(receipt);
+        // The receipt also goes into the vehicle's transcript, so ?history tells the whole night's story.
+        for (String line : receipt.render().split("\n")) {
+            workflows.announce(mailbox, e.owner(), line);
+        }
         String summary = name + ": " + result.toLowerCase(Locale.ROOT) + (error.isEmpty() ? "" : ": " + error);
         if (result.equals("DONE")) {
             workflows.event(mailbox, VehicleEvent.WORKFLOW_DONE, summary);

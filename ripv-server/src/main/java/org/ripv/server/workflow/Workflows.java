@@ -6,7 +6,6 @@ import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
-import java.nio.file.Path;
 import java.time.Instant;
 import java.util.List;
 import java.util.Locale;
@@ -64,15 +63,14 @@ public final class Workflows implements AutoCloseable {
     record LineWaiter(String mailbox, Pattern regex, java.util.concurrent.CompletableFuture<String> seen) {}
 
     /**
-     * @param dir  where queues, receipts and the fetched-file lists live ({@code DATA/workflows})
-     * @param host the server
+     * @param store where queues, receipts and the fetched-file lists are kept (the server's state store)
+     * @param host  the server
      */
-    public Workflows(Path dir, WorkflowHost host) throws IOException {
+    public Workflows(org.ripv.server.store.StateStore store, WorkflowHost host) throws IOException {
         this.host = host;
-        AtomicFiles.directory(dir);
-        this.queues = new WorkflowQueues(dir.resolve("queues"));
-        this.receipts = new Receipts(dir.resolve("receipts"));
-        this.fetched = new FetchedFiles(dir.resolve("fetched"));
+        this.queues = new WorkflowQueues(store);
+        this.receipts = new Receipts(store);
+        this.fetched = new FetchedFiles(store);
         AtomicInteger n = new AtomicInteger();
         this.threads = Executors.newCachedThreadPool(r -> {
             Thread t = new Thread(r, "ripv-workflow-" + n.incrementAndGet());
