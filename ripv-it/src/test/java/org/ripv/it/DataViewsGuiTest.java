@@ -140,15 +140,20 @@ class DataViewsGuiTest {
         java.io.ByteArrayOutputStream out = new java.io.ByteArrayOutputStream();
         Path json = dir.resolve("track.json");
         Path table = dir.resolve("after.csv");
+        Path svg = dir.resolve("depth-cli.svg");
         int code = new picocli.CommandLine(new org.ripv.client.cli.CliCommand(new java.io.ByteArrayInputStream(new byte[0]),
                 new java.io.PrintStream(out, true, StandardCharsets.UTF_8), new java.io.PrintStream(out, true, StandardCharsets.UTF_8)))
                 .execute("--server", "localhost:" + sys.server().port(), "--user", "alice", "--password", TestSystem.PASSWORD,
                         "--timeout", "120", "--exec", "use " + DATAVIS + "TTY1", "--exec", "vis:depth unit_363",
-                        "--exec", "export json " + json, "--exec", "use " + DATABASE + "TTY1",
-                        "--exec", "SELECT vehicle FROM positions FETCH FIRST 1 ROWS ONLY", "--exec", "export csv " + table);
+                        "--exec", "export json " + json, "--exec", "export svg " + svg, "--exec", "use " + DATABASE + "TTY1",
+                        "--exec", "SELECT vehicle FROM positions FETCH FIRST 1 ROWS ONLY", "--exec", "export csv " + table,
+                        "--exec", "export svg " + dir.resolve("table.svg"));
         String said = out.toString(StandardCharsets.UTF_8);
-        assertThat(code).as(said).isZero();
-        assertThat(said).contains("exported the plot's data (1 series,");
+        assertThat(code).as(said).isNotZero(); // the last export: a table is no plot
+        assertThat(said).contains("exported the plot's data (1 series,").contains("exported the plot (1 series,")
+                .contains("no plot to export as SVG");
+        assertThat(Files.readString(svg)).startsWith("<?xml").contains("depth of unit_363").contains("<polyline");
+        assertThat(dir.resolve("table.svg")).doesNotExist();
         assertThat(Files.readString(json)).startsWith("{\"title\":\"depth of unit_363\",\"kind\":\"depth\"")
                 .contains("\"unit\":\"m\"");
         assertThat(Files.readString(table)).as("a table after the plot: the table").startsWith("VEHICLE\r\n");
@@ -248,7 +253,8 @@ class DataViewsGuiTest {
                 plot.export(PlotPanel.Format.CSV, csv);
             });
             waitUntil(() -> Files.exists(svg) && Files.exists(csv));
-            assertThat(Files.readString(svg, StandardCharsets.UTF_8)).contains("<svg").contains("depth of cp_388");
+            assertThat(Files.readString(svg, StandardCharsets.UTF_8)).contains("<svg").contains("depth of cp_388")
+                    .contains("<polyline").contains("depth (m)");
             assertThat(Files.readAllLines(csv).get(0)).isEqualTo("series,unit,x,time_utc,y");
 
             // The Fleet window by its key.

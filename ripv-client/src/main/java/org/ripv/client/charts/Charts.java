@@ -3,7 +3,6 @@ package org.ripv.client.charts;
 import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.geom.Ellipse2D;
-import java.awt.geom.Rectangle2D;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
@@ -19,20 +18,16 @@ import org.jfree.chart.labels.StandardXYToolTipGenerator;
 import org.jfree.chart.plot.XYPlot;
 import org.jfree.chart.renderer.xy.XYLineAndShapeRenderer;
 import org.jfree.data.xy.DefaultXYDataset;
+import org.ripv.export.SvgChart;
 import org.ripv.messages.ChartData;
 
 /**
  * Builds the interactive chart for a {@link ChartData} the way the built-in worker draws its JPEG
  * (docs/datavis.md): a UTC date axis for time, depth downwards, a track at the aspect right for
- * its latitude with the newest fix marked in red and labelled in the legend; and writes it as PNG or SVG.
- * Plain JFreeChart objects, no Swing: works headless.
+ * its latitude with the newest fix marked in red and labelled in the legend; and writes it as PNG
+ * (JFreeChart) or SVG ({@link SvgChart}, from the data). Plain JFreeChart objects, no Swing: works headless.
  */
 public final class Charts {
-    /** Series colours (red is kept for the newest fix). */
-    private static final Color[] PALETTE = {new Color(0x1f77b4), new Color(0xff7f0e), new Color(0x2ca02c),
-        new Color(0x9467bd), new Color(0x8c564b), new Color(0xe377c2), new Color(0x7f7f7f), new Color(0xbcbd22),
-        new Color(0x17becf)};
-
     /** The key of the newest fix's one-point series (drawn last, in red) when its mark has no label of its own. */
     public static final String NEWEST = "newest fix";
 
@@ -74,7 +69,7 @@ public final class Charts {
         r.setDrawSeriesLineAsPath(true); // one path a series: tens of thousands of points repaint fast; NaN still breaks it
         for (int s = 0; s < data.series().size(); s++) {
             r.setSeriesStroke(s, new BasicStroke(1.2f));
-            r.setSeriesPaint(s, PALETTE[s % PALETTE.length]);
+            r.setSeriesPaint(s, new Color(SvgChart.colour(s))); // the SVG's palette
             if (track) {
                 r.setSeriesShape(s, new Ellipse2D.Double(-2, -2, 4, 4));
             }
@@ -84,7 +79,7 @@ public final class Charts {
             r.setSeriesLinesVisible(s, false);
             r.setSeriesShapesVisible(s, true);
             r.setSeriesShape(s, new Ellipse2D.Double(-6, -6, 12, 12));
-            r.setSeriesPaint(s, Color.RED);
+            r.setSeriesPaint(s, new Color(SvgChart.NEWEST_COLOUR));
         }
         r.setDefaultToolTipGenerator(new StandardXYToolTipGenerator());
         XYPlot plot = new XYPlot(dataset, x, y, r);
@@ -154,24 +149,15 @@ public final class Charts {
     }
 
     /**
-     * Whether SVG can be written: JFreeSVG ({@code org.jfree:org.jfree.svg}, JFreeChart's companion,
-     * GPL-licensed) is on the class path. It is a runtime dependency only, so a build without it
-     * loses SVG (the menu item is disabled) and nothing else.
+     * The chart as an SVG document of {@code width} x {@code height}, written from its data
+     * ({@link SvgChart}) for the ranges its axes show now (the zoom included).
      */
-    public static boolean svgAvailable() {
-        return org.jfree.chart.util.ExportUtils.isJFreeSVGAvailable();
-    }
-
-    /** The chart as an SVG document (JFreeSVG, found at run time) of {@code width} x {@code height}. */
-    public static byte[] svg(JFreeChart chart, int width, int height) throws IOException {
-        try {
-            Class<?> c = Class.forName("org.jfree.svg.SVGGraphics2D");
-            java.awt.Graphics2D g = (java.awt.Graphics2D) c.getConstructor(double.class, double.class).newInstance(
-                    (double) width, (double) height);
-            chart.draw(g, new Rectangle2D.Double(0, 0, width, height));
-            return ((String) c.getMethod("getSVGDocument").invoke(g)).getBytes(StandardCharsets.UTF_8);
-        } catch (ReflectiveOperationException | LinkageError e) {
-            throw new IOException("SVG needs JFreeSVG (org.jfree:org.jfree.svg) on the class path: " + e, e);
-        }
+    public static byte[] svg(JFreeChart chart, ChartData data, int width, int height) {
+        XYPlot plot = chart.getXYPlot();
+        org.jfree.data.Range x = plot.getDomainAxis().getRange();
+        org.jfree.data.Range y = plot.getRangeAxis().getRange();
+        SvgChart.View view = new SvgChart.View(x.getLowerBound(), x.getUpperBound(), y.getLowerBound(), y.getUpperBound(),
+                width, height);
+        return SvgChart.svg(data, view).getBytes(StandardCharsets.UTF_8);
     }
 }

@@ -104,11 +104,11 @@ public final class PlotPanel extends JPanel {
             });
             item.setName("save-" + f.name().toLowerCase(Locale.ROOT));
             item.setMnemonic(f.name().charAt(0));
-            item.setEnabled(f != Format.SVG || Charts.svgAvailable());
             item.addActionListener(e -> choose(f));
             formats.add(item);
         }
         save.addActionListener(e -> formats.show(save, 0, save.getHeight()));
+        svgInChartMenu();
         JPanel buttons = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 0));
         buttons.add(reset);
         buttons.add(save);
@@ -135,6 +135,24 @@ public final class PlotPanel extends JPanel {
     }
 
     private boolean trackZoomed;
+
+    /** JFreeChart's right-click "Save as" offers SVG only with JFreeSVG (GPL, not shipped): offer ours there. */
+    private void svgInChartMenu() {
+        JPopupMenu menu = chartPanel.getPopupMenu();
+        for (java.awt.Component c : menu == null ? new java.awt.Component[0] : menu.getComponents()) {
+            if (c instanceof javax.swing.JMenu sub) {
+                for (java.awt.Component i : sub.getMenuComponents()) {
+                    if (i instanceof JMenuItem png && "SAVE_AS_PNG".equals(png.getActionCommand())) {
+                        JMenuItem svg = new JMenuItem("SVG...");
+                        svg.setName("chartMenu-svg");
+                        svg.addActionListener(e -> choose(Format.SVG));
+                        sub.add(svg);
+                        return;
+                    }
+                }
+            }
+        }
+    }
 
     private boolean isAutoRange() {
         return !trackZoomed;
@@ -270,7 +288,7 @@ public final class PlotPanel extends JPanel {
         int h = Math.max(300, chartPanel.getHeight());
         return switch (f) {
             case PNG -> Charts.png(chart, w, h);
-            case SVG -> Charts.svg(chart, w, h);
+            case SVG -> Charts.svg(chart, data, w, h);
             case CSV -> ChartExport.csv(data).getBytes(StandardCharsets.UTF_8);
             case JSON -> ChartExport.json(data).getBytes(StandardCharsets.UTF_8);
             case JPEG -> throw new IllegalStateException();

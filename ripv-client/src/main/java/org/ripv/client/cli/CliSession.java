@@ -76,6 +76,7 @@ public final class CliSession {
             "                                   upload to the server's upload directory; when NAME is taken: replace it, or keep both",
             "  get NAME [LOCALDIR]              download from the server's download directory (default: the current directory)",
             "  export csv|json LOCALFILE        write the last query result to a local file (numbers as numbers, NULL as null)",
+            "  export svg LOCALFILE             write the last plot (a vis: reply with data) as an SVG picture",
             "  help                             this, and the current service's help",
             "  quit                             end the session (Ctrl-D too)",
             "  anything else                    a command for the current MailBox");
@@ -261,12 +262,26 @@ public final class CliSession {
 
     /**
      * {@code export csv|json FILE}: the last table received, or a plot's data when one came after
-     * it, to a local file ({@link org.ripv.export.TableExport}, {@link org.ripv.export.ChartExport}).
+     * it, to a local file ({@link org.ripv.export.TableExport}, {@link org.ripv.export.ChartExport});
+     * {@code export svg FILE}: that plot as a picture of all its data ({@link org.ripv.export.SvgChart}).
      */
     private void export(String args) throws IOException {
         String[] a = args.isEmpty() ? new String[0] : args.split("\\s+", 2);
-        if (a.length != 2 || !(a[0].equalsIgnoreCase("csv") || a[0].equalsIgnoreCase("json"))) {
-            localError(ErrorCode.BAD_REQUEST, "usage: export csv|json LOCALFILE (writes the last query result or plot's data)");
+        if (a.length != 2 || !(a[0].equalsIgnoreCase("csv") || a[0].equalsIgnoreCase("json") || a[0].equalsIgnoreCase("svg"))) {
+            localError(ErrorCode.BAD_REQUEST, "usage: export csv|json|svg LOCALFILE (writes the last query result or plot's data;"
+                    + " svg: the plot)");
+            return;
+        }
+        if (a[0].equalsIgnoreCase("svg")) {
+            if (lastChart == null) {
+                localError(ErrorCode.BAD_REQUEST, "no plot to export as SVG: the last reply was not a plot with data (a vis: plot"
+                        + " of the built-in worker)");
+                return;
+            }
+            Path file = Path.of(a[1]);
+            Files.writeString(file, org.ripv.export.SvgChart.svg(lastChart, org.ripv.export.SvgChart.View.fit(lastChart, 900, 560)),
+                    java.nio.charset.StandardCharsets.UTF_8);
+            local("exported the plot (" + lastChart.series().size() + " series, " + lastChart.points() + " points) as svg to " + file);
             return;
         }
         if (lastChart != null) {
