@@ -546,6 +546,9 @@ public final class RIPVServer implements AutoCloseable {
     void console(ServiceReference ref, List<org.ripv.messages.ConsoleEntry> entries) {
         sessions.console().publish(ref.descriptor().name(), entries);
         workflows.onConsole(ref.descriptor().name(), entries);
+        // Answer only once they are stored: the service offers what a server did not take to the
+        // next one (restarted, or a standby), so a server that dies now loses no transcript line.
+        sessions.console().transcript().sync();
     }
 
     /** Current MailBox status with the operator lock and the vehicle's call state added. */

@@ -73,7 +73,11 @@ public final class RIPVClient {
         this.model = manager.model();
         this.prefs = prefs;
         frame.setName("ripvClient");
-        serviceTree = new ServiceTree(this::selectService);
+        serviceTree = new ServiceTree(this::selectService, (service, mailbox) -> {
+            // A vehicle picked in SEL: its tab comes to the front with that MailBox as the target.
+            selectService(service);
+            manager.selectMailbox(service, mailbox);
+        });
         tabs.setName("serviceTabs");
         tabs.addChangeListener(e -> {
             if (tabs.getSelectedComponent() instanceof ServiceLayoutPanel p) {
@@ -93,7 +97,7 @@ public final class RIPVClient {
         sel.setBorder(BorderFactory.createTitledBorder("SEL — services"));
         sel.add(new JScrollPane(serviceTree), BorderLayout.CENTER);
         sel.add(refresh, BorderLayout.SOUTH);
-        sel.setPreferredSize(new Dimension(290, 400)); // "<SerialPortServer>::<localhost>" whole
+        sel.setPreferredSize(new Dimension(330, 400)); // "<SerialPortServer>::<localhost>" and a vehicle's badge whole
 
         JPanel center = new JPanel(new BorderLayout());
         center.add(tabs, BorderLayout.CENTER);
@@ -289,6 +293,21 @@ public final class RIPVClient {
     private void changed(ClientModel.Change c) {
         switch (c.kind()) {
             case SERVICES -> syncServices();
+            case MAILBOXES -> {
+                // The SEL tree shows each vehicle's state badge under its service.
+                syncing = true;
+                try {
+                    serviceTree.update(model);
+                } finally {
+                    syncing = false;
+                }
+                ServiceLayoutPanel p = c.service() == null ? null : panels.get(c.service());
+                if (p != null) {
+                    p.update(model, c.kind());
+                } else if (c.service() == null) {
+                    panels.values().forEach(x -> x.update(model, c.kind()));
+                }
+            }
             case CONNECTION -> showConnection();
             case NOTICE -> {
                 // The latest message only, on one line; the whole of it in the tooltip.

@@ -79,6 +79,26 @@ final class Requests {
         });
     }
 
+    /**
+     * Sends a server command in the background and hands its final reply (or the failure) to
+     * {@code then}, on the reader or an I/O thread. ERROR replies also reach the status bar
+     * through dispatch.
+     */
+    void call(String command, java.util.function.BiConsumer<org.ripv.messages.OutgoingServerMessage, Throwable> then) {
+        io.execute(() -> {
+            ClientSocketHandler h = conn.get();
+            if (h == null) {
+                then.accept(null, new IOException("not connected to a server"));
+                return;
+            }
+            try {
+                h.send("", command, Priority.NORMAL, null).whenComplete(then);
+            } catch (IOException | RuntimeException e) {
+                then.accept(null, e);
+            }
+        });
+    }
+
     /** See {@link GuiManager#sendCommand}; on the UI thread. */
     void sendCommand(String service, String line) {
         ServiceModel m = model.service(service);
@@ -170,19 +190,30 @@ final class Requests {
                 return;
             }
             Header header = Header.request(h.nextId(), mailbox, body, priority);
+            // A tab's own command to a service runs until its final reply: COM shows it, with Cancel.
+            boolean tracked = origin != null && origin.echo() && !mailbox.isEmpty();
             if (origin != null) {
                 origins.put(header.messageId(), origin); // before sending: the reply may beat us back
+            }
+            if (tracked) {
+                gui.requestStarted(origin.service(), header.messageId(), body);
             }
             try {
                 h.send(header, null).whenComplete((reply, e) -> {
                     if (e != null) {
                         origins.remove(header.messageId());
                         failed(origin, body, Failures.describe(e));
+                        if (tracked) {
+                            gui.requestEnded(origin.service(), header.messageId(), null);
+                        }
                     }
                 });
             } catch (IOException | RuntimeException e) {
                 origins.remove(header.messageId());
                 failed(origin, body, Failures.describe(e));
+                if (tracked) {
+                    gui.requestEnded(origin.service(), header.messageId(), null);
+                }
             }
         });
     }

@@ -266,6 +266,32 @@ class PanelsTest {
         return (JLabel) c;
     }
 
+    @Test
+    void comShowsEachRunningRequestWithItsCancelButton() {
+        ComPanel com = new ComPanel(DB, manager);
+        manager.requestStarted(DB, 17, "SELECT COUNT(*) FROM reading");
+        manager.requestStarted(DB, 18, "SELECT 1");
+        manager.requestProgress(DB, 18, new org.ripv.messages.Progress("rows", 50, 200, 25));
+        drain();
+        com.update(model.service(DB));
+        assertThat(com.runningTexts()).hasSize(2);
+        assertThat(com.runningTexts().get(0)).startsWith("running: SELECT COUNT(*) FROM reading  0:0");
+        assertThat(com.runningTexts().get(1)).isEqualTo("SELECT 1 · rows  50 B / 200 B  25 B/s  0:06 left");
+        javax.swing.JButton cancel = (javax.swing.JButton) find(com, "cancel-17");
+        assertThat(cancel.isEnabled()).isTrue();
+        cancel.doClick(); // marks at once; the (offline) refusal waits in the UI queue
+        com.update(model.service(DB));
+        assertThat(model.service(DB).running().get(0).cancelling()).isTrue();
+        assertThat(cancel.getText()).isEqualTo("Cancelling…");
+        assertThat(cancel.isEnabled()).as("one ?cancel per request").isFalse();
+        manager.requestEnded(DB, 17, ErrorCode.CANCELLED);
+        manager.requestEnded(DB, 18, null);
+        drain();
+        com.update(model.service(DB));
+        assertThat(com.runningTexts()).isEmpty();
+        assertThat(find(com, "running").isVisible()).isFalse();
+    }
+
     static Component find(Container root, String name) {
         for (Component c : root.getComponents()) {
             if (name.equals(c.getName())) {
