@@ -36,6 +36,9 @@ public final class Ids {
     public static final String FID_LOGINS = "111120";
     /** {@code ?unlock-login USER|ADDRESS}: lifts a log-in block or lock. */
     public static final String FID_UNLOCK_LOGIN = "111121";
+    // The state store (issue 15, range 777720-777739).
+    /** {@code ?audit [--last N] [--since ISO-TIME]}: the audit trail, from the server's state store. */
+    public static final String FID_AUDIT = "777720";
     // Store files (issue 10 part B), range 444480-444499.
     /** {@code ?delete NAME}: removes a file from the upload or download store. */
     public static final String FID_DELETE = "444480";

@@ -13,13 +13,17 @@ import org.slf4j.LoggerFactory;
 
 /**
  * Carries a service's console entries to the server on a thread of its own, batched, so that a
- * vehicle printing fast never waits on RMI. The queue is bounded: when the server cannot keep up,
- * entries are skipped and one "N lines skipped" line per MailBox says so, in place (after the
- * entries queued before the skip), once there is room.
+ * vehicle printing fast never waits on RMI. A batch the server did not take (it is restarting, or
+ * a standby is taking over) is offered again until it is, so nothing said in between is lost. The
+ * queue is bounded: when the server cannot keep up, or stays away, entries are skipped and one
+ * "N lines skipped" line per MailBox says so, in place (after the entries queued before the skip),
+ * once there is room.
  */
 final class ConsolePublisher {
     private static final Logger log = LoggerFactory.getLogger(ConsolePublisher.class);
     private static final int BATCH = 500;
+    /** How long one batch is offered to a server that keeps failing before it is counted as skipped. */
+    static final long GIVE_UP_MILLIS = 5 * 60_000;
 
     private final BlockingQueue<ConsoleEntry> queue;
     private final Supplier<ReplySink> sink;
@@ -68,19 +72,23 @@ final class ConsolePublisher {
 
     private void run() {
         List<ConsoleEntry> batch = new ArrayList<>(BATCH);
+        long failingSince = 0;
+        long wait = 0;
         try {
             while (!Thread.currentThread().isInterrupted()) {
-                ConsoleEntry first = queue.poll(1, TimeUnit.SECONDS);
-                if (first == null) {
-                    if (anySkipped) {
-                        queueSkipMarkers();
-                    }
-                    first = queue.poll();
+                if (batch.isEmpty()) {
+                    ConsoleEntry first = queue.poll(1, TimeUnit.SECONDS);
                     if (first == null) {
-                        continue;
+                        if (anySkipped) {
+                            queueSkipMarkers();
+                        }
+                        first = queue.poll();
+                        if (first == null) {
+                            continue;
+                        }
                     }
+                    batch.add(first);
                 }
-                batch.add(first);
                 queue.drainTo(batch, BATCH - batch.size());
                 if (anySkipped && queue.isEmpty()) {
                     queueSkipMarkers(); // everything queued before the skip is in this batch
@@ -88,11 +96,31 @@ final class ConsolePublisher {
                 }
                 try {
                     sink.get().console(List.copyOf(batch));
+                    batch.clear();
+                    failingSince = 0;
+                    wait = 0;
                 } catch (Exception e) {
-                    // Not registered, or the server is away: the console is live, not a queue.
-                    log.debug("dropped {} console entries: {}", batch.size(), e.toString());
+                    // The server restarted, or a standby is taking over: keep the batch and try again,
+                    // so what the vehicle said meanwhile reaches the transcript (the queue behind it
+                    // stays bounded and skips, with a marker, if this lasts). Give up on a batch only
+                    // after GIVE_UP_MILLIS, so that one the server keeps refusing cannot stop the console.
+                    long now = System.nanoTime();
+                    if (failingSince == 0) {
+                        failingSince = now;
+                    } else if (now - failingSince > GIVE_UP_MILLIS * 1_000_000L) {
+                        log.warn("dropped {} console entries after {} s of failures: {}", batch.size(), GIVE_UP_MILLIS / 1000,
+                                e.toString());
+                        skipped.computeIfAbsent(batch.get(0).mailbox(), m -> new AtomicLong()).addAndGet(batch.size());
+                        anySkipped = true;
+                        batch.clear();
+                        failingSince = 0;
+                        wait = 0;
+                        continue;
+                    }
+                    wait = wait == 0 ? 100 : Math.min(wait * 2, 2000);
+                    log.debug("console entries not delivered ({}); trying again in {} ms", e.toString(), wait);
+                    Thread.sleep(wait);
                 }
-                batch.clear();
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();

@@ -249,7 +249,7 @@ public abstract class RIPVService {
             } catch (RuntimeException e) {
                 a = Availability.notAvailable(e.toString());
             }
-            out.add(new MailboxStatus(box.address(), a.available(), a.detail(), box.key().isHeld(), ""));
+            out.add(new MailboxStatus(box.address(), a.available(), a.detail(), box.key().isHeld(), "", null, a.running()));
         }
         return out;
     }

@@ -24,7 +24,9 @@ import org.slf4j.LoggerFactory;
  * Keeps a {@link RIPVService} registered with a RIPVServer over RMI: exports the service, looks
  * the server up, registers by challenge–response over the secret ({@link ServiceProof}; the
  * secret itself never crosses the wire, and an impostor in the registry gets none of it), checks in every heartbeat, and registers again
- * whenever the server has gone away and come back — no restart by hand.
+ * whenever the server has gone away and come back — no restart by hand. Given several servers
+ * (an active one and its standbys, {@link ServiceOptions#servers}), it tries them in turn and
+ * registers with whichever answers: a standby listens on nothing until it takes over.
  */
 public final class ServiceConnector implements AutoCloseable {
     private static final Logger log = LoggerFactory.getLogger(ServiceConnector.class);
@@ -47,6 +49,8 @@ public final class ServiceConnector implements AutoCloseable {
     private final Object tokenLock = new Object();
     private boolean registering;
     private final java.util.concurrent.CompletableFuture<String> fatal = new java.util.concurrent.CompletableFuture<>();
+    /** Which of {@code options.servers()} this service uses (or tries) now. */
+    private volatile int current;
 
     private ServiceConnector(RIPVService service, ServiceOptions options, java.rmi.server.RMIServerSocketFactory sockets)
             throws RemoteException {
@@ -116,16 +120,17 @@ public final class ServiceConnector implements AutoCloseable {
                 log.info("{}: the server no longer knows this service; registering again", service.name());
                 lost();
             }
-            register();
+            registerAny();
         } catch (RemoteException | NotBoundException e) {
             if (token != null) {
-                log.warn("{}: lost the server at {}:{} ({}); will register again when it is back", service.name(),
-                        options.serverHost(), options.registryPort(), e.getClass().getSimpleName());
+                log.warn("{}: lost the server at {} ({}); will register again when it{} is back", service.name(),
+                        where(), e.getClass().getSimpleName(), options.servers().size() > 1 ? " or another of " + options.servers() : "");
                 lost();
+                failOver();
             } else if (!warnedAway) {
                 warnedAway = true;
-                log.warn("{}: no RIPVServer at {}:{} yet ({}); retrying every {} ms", service.name(), options.serverHost(),
-                        options.outbound() ? options.outboundPort() : options.registryPort(), e.getMessage(),
+                log.warn("{}: no RIPVServer at {} yet ({}); retrying every {} ms", service.name(),
+                        options.servers().size() > 1 ? "any of " + options.servers() : where(), e.getMessage(),
                         options.heartbeat().toMillis());
             }
         } catch (Impostor e) {
@@ -142,12 +147,67 @@ public final class ServiceConnector implements AutoCloseable {
         } catch (SecurityException e) {
             // Retrying cannot fix a wrong secret: stop and let the launcher say so.
             log.error("{}: the server refused registration: {}", service.name(), e.getMessage());
-            fatal.complete("the server at " + options.serverHost() + ":" + options.registryPort()
-                    + " refused the registration: " + e.getMessage());
+            fatal.complete("the server at " + where() + " refused the registration: " + e.getMessage());
             timer.shutdown();
         } catch (RuntimeException e) {
             log.error("{}: heartbeat failed", service.name(), e);
         }
+    }
+
+    /** After losing the server: try the others at once rather than a heartbeat later (a standby taking over). */
+    private void failOver() {
+        if (options.servers().size() == 1) {
+            return;
+        }
+        try {
+            registerAny();
+        } catch (RemoteException | NotBoundException e) {
+            log.debug("{}: no server answers yet: {}", service.name(), e.toString());
+        }
+    }
+
+    /** The server in use now, as HOST:PORT (the outbound port in outbound-only mode). */
+    private String where() {
+        return host() + ":" + (options.outbound() ? options.outboundPort() : registryPort());
+    }
+
+    private String host() {
+        return options.servers().get(current).host();
+    }
+
+    private int registryPort() {
+        return options.servers().get(current).port();
+    }
+
+    /**
+     * Registers with the server in use, else with each other one in turn; the first that answers
+     * becomes the server in use. Only "nobody there" moves on: a refusal comes from a live server.
+     */
+    private void registerAny() throws RemoteException, NotBoundException {
+        int n = options.servers().size();
+        int from = current;
+        Exception first = null;
+        for (int i = 0; i < n; i++) {
+            int at = (from + i) % n;
+            current = at;
+            try {
+                register();
+                if (at != from) {
+                    log.info("{}: {} did not answer ({}); now registered with {}{}", service.name(), options.servers().get(from)
+                            .host(), first == null ? "?" : first.getMessage(), where(), options.servers().position(at));
+                }
+                return;
+            } catch (RemoteException | NotBoundException e) {
+                if (first == null) {
+                    first = e;
+                }
+            }
+        }
+        current = from;
+        if (first instanceof RemoteException r) {
+            throw r;
+        }
+        throw (NotBoundException) first;
     }
 
     /** Where refusals the service can fix are printed besides the log (a launcher's standard error). */
@@ -184,7 +244,7 @@ public final class ServiceConnector implements AutoCloseable {
         if (options.outbound()) {
             s = openChannel();
         } else {
-            Registry registry = RmiSupport.registry(options.serverHost(), options.registryPort());
+            Registry registry = RmiSupport.registry(host(), registryPort());
             s = (GenericRMIInterface) registry.lookup(GenericRMIInterface.BINDING);
         }
         ServiceDescriptor d = service.descriptor().withRegistration(nextStamp());
@@ -196,7 +256,7 @@ public final class ServiceConnector implements AutoCloseable {
             answer = answer(s.challenge(mine));
             if (answer == null || !ServiceProof.same(answer[1], ServiceProof.serverProof(secret, mine, answer[0]))) {
                 throw new Impostor("the object bound as '" + GenericRMIInterface.BINDING + "' in the registry at "
-                        + options.serverHost() + ":" + options.registryPort() + " cannot prove it holds the service secret:"
+                        + host() + ":" + registryPort() + " cannot prove it holds the service secret:"
                         + " it is an impostor, or this service's --secret-file is not that server's DATA/service.secret");
             }
         }
@@ -212,7 +272,7 @@ public final class ServiceConnector implements AutoCloseable {
                 String confirmation = s.register(d, stub,
                         answer[0] + " " + ServiceProof.serviceProof(secret, mine, answer[0], d.name(), stub));
                 if (!ServiceProof.same(confirmation, ServiceProof.serverProof(secret, answer[0], mine))) {
-                    throw new Impostor("the server at " + options.serverHost() + ":" + options.registryPort()
+                    throw new Impostor("the server at " + host() + ":" + registryPort()
                             + " accepted the registration without proving it holds the service secret");
                 }
                 t = ServiceProof.token(secret, mine, answer[0]);
@@ -231,8 +291,8 @@ public final class ServiceConnector implements AutoCloseable {
         warnedImpostor = false;
         lastNotice = null;
         registered.countDown();
-        log.info("{} registered with the RIPVServer at {}:{}{}", d.name(), options.serverHost(),
-                options.outbound() ? options.outboundPort() : options.registryPort(), options.outbound() ? " (outbound only)" : "");
+        log.info("{} registered with the RIPVServer at {}{}{}", d.name(), where(), options.servers().position(current),
+                options.outbound() ? " (outbound only)" : "");
     }
 
     /**
@@ -246,10 +306,10 @@ public final class ServiceConnector implements AutoCloseable {
             old.close();
         }
         java.net.Socket socket = new java.net.Socket();
-        String where = options.serverHost() + ":" + options.outboundPort();
+        String where = host() + ":" + options.outboundPort();
         try {
             org.ripv.rmi.DeadlineSocketFactory f = org.ripv.rmi.DeadlineSocketFactory.fromSystem();
-            socket.connect(new java.net.InetSocketAddress(options.serverHost(), options.outboundPort()), f.connectMillis());
+            socket.connect(new java.net.InetSocketAddress(host(), options.outboundPort()), f.connectMillis());
             socket.setSoTimeout(Math.max(f.readMillis(), 5_000));
             java.io.DataInputStream in = new java.io.DataInputStream(new java.io.BufferedInputStream(socket.getInputStream()));
             java.io.DataOutputStream out = new java.io.DataOutputStream(new java.io.BufferedOutputStream(socket.getOutputStream()));

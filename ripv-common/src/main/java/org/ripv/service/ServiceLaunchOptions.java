@@ -10,8 +10,9 @@ import picocli.CommandLine.Option;
  * {@code --server HOST[:REGPORT] [--secret-file F] [--host NAME] [--export-port N]}.
  */
 public final class ServiceLaunchOptions {
-    @Option(names = "--server", required = true, paramLabel = "HOST[:REGPORT]",
-            description = "The RIPVServer to register with (RMI registry port 1099 unless given). //HOST works too.")
+    @Option(names = "--server", required = true, paramLabel = "HOST[:REGPORT][,HOST2[:REGPORT]]",
+            description = "The RIPVServer to register with (RMI registry port 1099 unless given). //HOST works too."
+                    + " Several, comma-separated: an active server and its standbys; the service registers with whichever answers.")
     String server;
 
     @Option(names = "--secret-file", paramLabel = "FILE",
@@ -122,7 +123,8 @@ public final class ServiceLaunchOptions {
     void applyBind() throws java.io.IOException {
         String address = bind;
         if (address == null && (host == null || host.isBlank())) {
-            address = routeTo((String) ServiceOptions.parseServer(server)[0]).getHostAddress();
+            address = routeTo(org.ripv.failover.ServerList.parse(server, ServiceOptions.DEFAULT_REGISTRY_PORT).first().host())
+                    .getHostAddress();
         }
         if (address == null || address.isBlank() || address.equals("*")) {
             return;
@@ -147,7 +149,7 @@ public final class ServiceLaunchOptions {
     }
 
     public ServiceOptions toOptions() throws java.io.IOException {
-        Object[] hp = ServiceOptions.parseServer(server);
+        org.ripv.failover.ServerList servers = org.ripv.failover.ServerList.parse(server, ServiceOptions.DEFAULT_REGISTRY_PORT);
         if (outboundPort == 0 || outboundPort > 65535 || outboundPort < -1) {
             throw new IllegalArgumentException("--outbound-only takes the server's outbound port, 1 to 65535, not " + outboundPort);
         }
@@ -156,7 +158,7 @@ public final class ServiceLaunchOptions {
         }
         System.setProperty(org.ripv.rmi.DeadlineSocketFactory.CONNECT_PROPERTY, Integer.toString(rmiConnectTimeout));
         System.setProperty(org.ripv.rmi.DeadlineSocketFactory.READ_PROPERTY, Integer.toString(rmiReadTimeout));
-        return new ServiceOptions((String) hp[0], (Integer) hp[1], ServiceOptions.resolveSecret(secretFile), exportPort,
-                Duration.ofSeconds(3), outboundPort);
+        return new ServiceOptions(servers.first().host(), servers.first().port(), ServiceOptions.resolveSecret(secretFile),
+                exportPort, Duration.ofSeconds(3), outboundPort).withServers(servers);
     }
 }

@@ -17,9 +17,11 @@ import java.util.Objects;
  * @param heartbeat    how often the service checks in, and retries when the server is away
  * @param outboundPort the server's outbound-service port when the service only connects out
  *                     (NAT, firewalls: {@code --outbound-only}), or -1 for plain RMI both ways
+ * @param servers      every server to try, the first being {@code serverHost:registryPort}: an
+ *                     active server and its standbys ({@code --server host1,host2}); null for that one only
  */
 public record ServiceOptions(String serverHost, int registryPort, String secret, int exportPort, Duration heartbeat,
-                             int outboundPort) {
+                             int outboundPort, org.ripv.failover.ServerList servers) {
     public static final int DEFAULT_REGISTRY_PORT = 1099;
     /** The server's port for services in outbound-only mode. */
     public static final int DEFAULT_OUTBOUND_PORT = 4446;
@@ -29,9 +31,20 @@ public record ServiceOptions(String serverHost, int registryPort, String secret,
         this(serverHost, registryPort, secret, exportPort, heartbeat, -1);
     }
 
+    /** One server, outbound-only when {@code outboundPort} is positive. */
+    public ServiceOptions(String serverHost, int registryPort, String secret, int exportPort, Duration heartbeat,
+                          int outboundPort) {
+        this(serverHost, registryPort, secret, exportPort, heartbeat, outboundPort, null);
+    }
+
     /** The same, connecting out only, to the server's outbound port. */
     public ServiceOptions outboundOnly(int port) {
-        return new ServiceOptions(serverHost, registryPort, secret, exportPort, heartbeat, port);
+        return new ServiceOptions(serverHost, registryPort, secret, exportPort, heartbeat, port, servers);
+    }
+
+    /** The same with a list of servers to try in turn (an active server and its standbys); the first becomes serverHost. */
+    public ServiceOptions withServers(org.ripv.failover.ServerList list) {
+        return new ServiceOptions(list.first().host(), list.first().port(), secret, exportPort, heartbeat, outboundPort, list);
     }
 
     /** True in outbound-only mode. */
@@ -45,6 +58,7 @@ public record ServiceOptions(String serverHost, int registryPort, String secret,
         Objects.requireNonNull(serverHost, "serverHost");
         Objects.requireNonNull(secret, "secret");
         heartbeat = heartbeat == null ? Duration.ofSeconds(3) : heartbeat;
+        servers = servers == null ? org.ripv.failover.ServerList.of(serverHost, registryPort) : servers;
     }
 
     public static ServiceOptions of(String serverHost, int registryPort, String secret) {

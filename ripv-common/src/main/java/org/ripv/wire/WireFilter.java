@@ -6,7 +6,7 @@ import java.util.Set;
 
 /**
  * The allowlist for every object stream RIPV reads, on the client socket and on RMI: RIPV's own
- * message classes, the few JDK types they carry, and (on RMI) remote stubs of RIPV's interface.
+ * message classes, the few JDK types they carry (a chart's {@code double[]} among them), and (on RMI) remote stubs of RIPV's interface.
  * Anything else, and anything deeper, bigger or with more references than the limits, is
  * rejected before it is instantiated.
  */
@@ -19,7 +19,7 @@ public final class WireFilter implements ObjectInputFilter {
             "java.util.ImmutableCollections$List12",
             "java.util.Collections$UnmodifiableRandomAccessList", "java.util.Collections$UnmodifiableList",
             "java.util.Collections$UnmodifiableCollection",
-            "[B", "[Ljava.lang.String;", "[Ljava.lang.Object;");
+            "[B", "[D", "[Ljava.lang.String;", "[Ljava.lang.Object;");
     private static final Set<String> RMI = Set.of(
             "java.lang.reflect.Proxy", "java.rmi.server.RemoteObjectInvocationHandler",
             "java.rmi.server.RemoteObject", "java.rmi.server.RemoteStub", "java.rmi.Remote");
@@ -84,7 +84,7 @@ public final class WireFilter implements ObjectInputFilter {
 
     private boolean allowed(Class<?> c) {
         while (c.isArray()) {
-            if (c == byte[].class || c == String[].class || c == Object[].class
+            if (c == byte[].class || c == double[].class || c == String[].class || c == Object[].class
                     || allowRmiRuntime && c == StackTraceElement[].class) {
                 return true;
             }

@@ -32,8 +32,14 @@ public final class BenchMain {
             "             loading the scripts statement by statement   [--runs N]",
             "  calls      100 vehicles calling 100 listen:// links within a minute: accepted, streamed, delay",
             "             [--vehicles N] [--spread S] [--surface S] [--lines-per-second N]",
-            "  (the multi-host speeds — round trips across network namespaces, time to notice a cut host —",
-            "   are measured by ripv-it's MultiHostTest, as root: docs/performance.md)",
+            "  hosts      as root, in network namespaces: the request round trip across hosts against bare TCP",
+            "             between the same namespaces, cut service host -> ?services says so, and kill -9 of",
+            "             the active server -> the standby answers (PostgreSQL state)   [--requests N] [--takeovers N]",
+            "  store      vehicle transcript appends through the server's writer into the embedded store and into",
+            "             PostgreSQL (RIPV_PG_URL) against direct JDBC batch inserts   [--entries N]",
+            "  workflow   the simulator calls in with a queued workflow (dir, ymodem:get of 5 files, 500 KB, ymodem:put",
+            "             of 100 KB) at 115200 baud: call → WORKFLOW_DONE against the transfers alone, same run",
+            "             [--baud N] [--runs N] [--files N] [--get-bytes N] [--put-bytes N]",
             "See docs/performance.md for what each measures and the figures.");
 
     public static void main(String[] args) throws Exception {
@@ -46,7 +52,7 @@ public final class BenchMain {
             System.exit(0);
         }
         String[] rest = Arrays.copyOfRange(args, 1, args.length);
-        if (!List.of("broker", "calls").contains(args[0]) && (Arrays.asList(rest).contains("--help") || Arrays.asList(rest).contains("-h"))) {
+        if (!List.of("broker", "calls", "workflow").contains(args[0]) && (Arrays.asList(rest).contains("--help") || Arrays.asList(rest).contains("-h"))) {
             System.out.println(USAGE); // the benchmarks without a picocli command of their own
             System.exit(0);
         }
@@ -64,6 +70,9 @@ public final class BenchMain {
             case "firststart" -> FirstStartBench.main(rest);
             case "calls" -> System.exit(Launchers.commandLine(new CallsBench(), "ripv bench calls").execute(rest));
             case "ingest" -> IngestBench.main(rest);
+            case "hosts" -> HostsBench.main(rest);
+            case "store" -> StoreBench.main(rest);
+            case "workflow" -> System.exit(Launchers.commandLine(new WorkflowBench(), "ripv bench workflow").execute(rest));
             default -> {
                 System.err.println("Error: unknown benchmark '" + args[0] + "'\n" + USAGE);
                 System.exit(2);

@@ -116,9 +116,13 @@ public final class ConsoleBench implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         Path dir = Files.createTempDirectory("ripv-bench-console");
-        out.printf("RIPV console benchmark — %d cores, Java %s, %d lines/s, %d s per phase after %d s warm-up%n",
-                Runtime.getRuntime().availableProcessors(), System.getProperty("java.version"), rate, seconds, warmup);
-        RIPVServer server = new RIPVServer(ServerConfig.forTests(dir.resolve("server")).withMaxClients(watchers + 100)
+        out.printf("RIPV console benchmark — %d cores, Java %s (%s), %d lines/s, %d s per phase after %d s warm-up;"
+                        + " load average %.1f%n", Runtime.getRuntime().availableProcessors(), System.getProperty("java.version"),
+                String.join("+", ManagementFactory.getGarbageCollectorMXBeans().stream().map(b -> b.getName()).toList()),
+                rate, seconds, warmup, ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage());
+        // Plain TCP: the raw watchers read frames off the socket (TLS would add each client's own
+        // encryption, the same with any writer design; docs/performance.md).
+        RIPVServer server = new RIPVServer(ServerConfig.forTests(dir.resolve("server")).plain().withMaxClients(watchers + 100)
                 .withServiceCheck(Duration.ofSeconds(5)));
         server.start();
         PermitFile.setUser(dir.resolve("server/permit.txt"), "bench", "bench-password".toCharArray(), List.of("observers"), 1000);
@@ -175,6 +179,7 @@ public final class ConsoleBench implements Callable<Integer> {
                     server.console().backlogTotal(), usedHeapAfterGc() >> 20);
             stall.countDown();
             close(stalled);
+            out.printf("load average at the end %.1f%n", ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage());
         } finally {
             connector.close();
             vehicle.stop();
@@ -186,7 +191,7 @@ public final class ConsoleBench implements Callable<Integer> {
     private List<Watch> connect(RIPVServer server, String box, int count, int capacity, CountDownLatch stall) throws Exception {
         List<Watch> list = new ArrayList<>();
         for (int i = 0; i < count; i++) {
-            ClientSocketHandler c = ClientSocketHandler.connect("localhost", server.port());
+            ClientSocketHandler c = ClientSocketHandler.connectPlain("localhost", server.port());
             c.login("bench", "bench-password".toCharArray());
             Watch w = new Watch(c, capacity, stall);
             c.addListener(w);

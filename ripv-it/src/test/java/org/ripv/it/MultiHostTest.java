@@ -49,7 +49,7 @@ class MultiHostTest {
 
     @Test
     void fourHostsACutLinkANatRouterAndARestart() throws Exception {
-        Netns.assumeUsable();
+        NetnsAssume.usable();
         long began = System.nanoTime();
         try (Netns net = Netns.create()) {
             net.host("srv", SRV + "/24");

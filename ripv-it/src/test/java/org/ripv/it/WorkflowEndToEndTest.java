@@ -175,6 +175,12 @@ class WorkflowEndToEndTest {
             assertThat(f[2]).isEqualTo(sha256(stored));
         }
         assertThat(Files.readAllBytes(glider.directory().resolve("goto_l10.ma"))).isEqualTo(mission);
+        // the receipt is in the vehicle's transcript too, files and SHA-256s included
+        String history = await(alice, "?history " + mb, h -> h.contains("result: DONE"));
+        assertThat(history).contains("receipt: workflow 1 'fetch.wf' of alice").contains("step 2/4 (line 3) ymodem:get *.SBD: OK");
+        for (String[] f : files) {
+            assertThat(history).contains("file " + f[0] + " " + f[1] + " bytes sha256 " + f[2]);
+        }
         // once: gone from the queue, and the lock it held is free again
         assertThat(await(alice, "?queue " + mb, q -> q.contains("empty"))).contains("empty");
         assertThat(ok(alice, "?status " + mb)).doesNotContain("locked");
@@ -214,7 +220,8 @@ class WorkflowEndToEndTest {
         ClientSocketHandler olga = sys.login("olga");
         upload(alice, "go.wf", "send GO\n");
         sys.rules("allow @operators * * *", "allow @observers RIPVServer * ?upload*", "allow @observers RIPVServer * ?queue add *",
-                "allow @observers SerialPortServer * dir*", "deny @observers SerialPortServer * *");
+                "allow @observers SerialPortServer * dir*", "allow @observers SerialPortServer * ?read",
+                "deny @observers SerialPortServer * *");
         OutgoingServerMessage refused = cmd(olga, "?queue add " + mb + " go.wf");
         assertThat(refused.footer().errorCode()).isEqualTo(ErrorCode.FORBIDDEN);
         assertThat(refused.footer().replyText()).contains("go.wf:1").contains("may not send 'GO'");
@@ -226,6 +233,29 @@ class WorkflowEndToEndTest {
         assertThat(ok(olga, "?queue " + mb)).contains("go.wf");
         assertThat(ok(alice, "?queue remove " + mb + " 1")).contains("removed workflow 1");
         assertThat(ok(alice, "?queue " + mb)).contains("empty");
+    }
+
+    @Test
+    void theQueueAndTheReceiptsNeedTheReadRightOnTheMailBox() throws Exception {
+        start();
+        ClientSocketHandler alice = sys.login("alice");
+        upload(alice, "dir.wf", "send dir\n");
+        ok(alice, "?queue add " + mb + " dir.wf");
+        ClientSocketHandler olga = sys.login("olga");
+        // olga may upload and queue in general, but not read this vehicle
+        sys.rules("allow @operators * * *", "allow @observers RIPVServer * ?queue*", "allow @observers RIPVServer * ?receipts*",
+                "allow @observers SerialPortServer * dir*", "deny @observers SerialPortServer * *");
+        for (String body : List.of("?queue " + mb, "?receipts " + mb, "?receipts " + mb + " --last 3",
+                "?queue add " + mb + " dir.wf", "?queue remove " + mb + " 1", "?queue clear " + mb)) {
+            OutgoingServerMessage r = cmd(olga, body);
+            assertThat(r.footer().errorCode()).as(body).isEqualTo(ErrorCode.FORBIDDEN);
+            assertThat(r.footer().replyText()).as(body).contains("may not read " + mb);
+        }
+        assertThat(ok(alice, "?queue " + mb)).contains("dir.wf"); // nothing was changed
+        sys.rules("allow @operators * * *", "allow @observers RIPVServer * ?queue*", "allow @observers RIPVServer * ?receipts*",
+                "allow @observers SerialPortServer * ?read", "deny @observers SerialPortServer * *");
+        assertThat(ok(olga, "?queue " + mb)).contains("dir.wf");
+        assertThat(ok(olga, "?receipts " + mb)).contains("no workflow receipts");
     }
 
     @Test

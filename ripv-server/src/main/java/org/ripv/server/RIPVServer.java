@@ -72,6 +72,8 @@ public final class RIPVServer implements AutoCloseable {
     private final AtomicInteger nextClientId = new AtomicInteger(100_000);
     private final PostOffice<IncomingServerMessage, OutgoingServerMessage> postOffice = new PostOffice<>(200_000);
     private final ScheduledExecutorService timers;
+    /** The threads that write every client's socket. */
+    private final org.ripv.server.handlers.WriterPool writers;
     private final ExecutorService checkers;
     private final ExecutorService withdrawals;
     private final ExecutorService liveness;
@@ -101,6 +103,7 @@ public final class RIPVServer implements AutoCloseable {
     private OutboundListener outbound;
     private volatile boolean running;
     private ServerSessions sessions;
+    private ServerState state;
 
     /** An operator's hold on a MailBox ({@code ?lock}). */
     record OperatorLock(String user, String clientId, long untilMillis) {
@@ -117,24 +120,16 @@ public final class RIPVServer implements AutoCloseable {
     public RIPVServer(ServerConfig config, SessionOptions sessionOptions) {
         this.config = config;
         this.sessionOptions = sessionOptions;
-        this.timers = Executors.newScheduledThreadPool(1, named("ripv-server-timer"));
+        this.timers = Executors.newScheduledThreadPool(1, Threads.named("ripv-server-timer"));
+        this.writers = new org.ripv.server.handlers.WriterPool(timers);
         // Calls to services: each is bounded by the RMI deadlines and at most one MailBox query
         // runs per service, so a cached pool grows by one thread per hung service at worst.
-        this.checkers = Executors.newCachedThreadPool(named("ripv-service-query"));
+        this.checkers = Executors.newCachedThreadPool(Threads.named("ripv-service-query"));
         this.withdrawals = new java.util.concurrent.ThreadPoolExecutor(0, 16, 30, TimeUnit.SECONDS,
-                new java.util.concurrent.SynchronousQueue<>(), named("ripv-withdraw"));
-        this.liveness = Executors.newFixedThreadPool(2, named("ripv-service-check"));
-        this.fileWork = Executors.newFixedThreadPool(2, named("ripv-file-work"));
+                new java.util.concurrent.SynchronousQueue<>(), Threads.named("ripv-withdraw"));
+        this.liveness = Executors.newFixedThreadPool(2, Threads.named("ripv-service-check"));
+        this.fileWork = Executors.newFixedThreadPool(2, Threads.named("ripv-file-work"));
         this.serviceLiveness = new ServiceLiveness(services, liveness, checkers, timers, config.serviceCheck(), this::drop);
-    }
-
-    private static java.util.concurrent.ThreadFactory named(String name) {
-        AtomicInteger n = new AtomicInteger();
-        return r -> {
-            Thread t = new Thread(r, name + "-" + n.incrementAndGet());
-            t.setDaemon(true);
-            return t;
-        };
     }
 
     /** Opens the data directory, the permit file, the RMI registry and the client port. Returns at once. */
@@ -145,16 +140,19 @@ public final class RIPVServer implements AutoCloseable {
         RmiSupport.configure(5_000, 15_000);
         org.ripv.files.PrivateFiles.createDirectories(config.dataDir());
         org.ripv.files.PrivateFiles.restrict(config.dataDir()); // the data directory is RIPV's alone (0700)
+        state = ServerState.open(config, sessionOptions); // first: an unreachable database leaves nothing open
         permits = new PermitWatcher(config.permitFile());
         files = new FileStore(config.dataDir().resolve("upload"), config.dataDir().resolve("download"), config.maxUpload());
         secret = ServiceSecret.loadOrCreate(config.dataDir().resolve("service.secret"));
         codec = new FrameCodec(config.maxFrame());
         pending = new PendingRequests(timers, config.requestTimeout(), this::timedOut);
-        workflows = new org.ripv.server.workflow.Workflows(config.dataDir().resolve("workflows"), new WorkflowBridge(this));
+        workflows = new org.ripv.server.workflow.Workflows(state.store(), new WorkflowBridge(this));
         endings = new RequestEndings(this, pending, withdrawals, config.requestTimeout());
         box = postOffice.open(POST_OFFICE, new ServerTaskManager(this));
         security = new ServerSecurity(config.security(), config.maxClients(), timers, permits::current, () -> secret);
-        sessions = new ServerSessions(config.dataDir(), sessionOptions, this::permits, this::client, codec);
+        sessions = new ServerSessions(config.dataDir(), state.store(), sessionOptions, this::permits, this::client, codec);
+        sessions.expireLocks(timers, locks, mailbox -> workflows.lockReleased(mailbox));
+        permits.onChange(sessions::permitsChanged);
         dataLoop = new org.ripv.server.dataloop.DataLoop(internalCalls, config.dataDir().resolve("ingest.properties"));
 
         InetAddress bind = config.bindAddress() == null ? null : InetAddress.getByName(config.bindAddress());
@@ -244,6 +242,7 @@ public final class RIPVServer implements AutoCloseable {
             }
         }
         clients.values().forEach(SocketHandler::close);
+        writers.close();
         services.values().forEach(ServiceReference::close);
         services.clear();
         if (registry != null) {
@@ -264,6 +263,9 @@ public final class RIPVServer implements AutoCloseable {
         }
         if (sessions != null) {
             sessions.close();
+        }
+        if (state != null) {
+            state.close();
         }
         timers.shutdownNow();
         checkers.shutdownNow();
@@ -331,7 +333,7 @@ public final class RIPVServer implements AutoCloseable {
                 continue;
             }
             String id = newClientId();
-            SocketHandler h = new SocketHandler(s, id, codec, new Dispatch());
+            SocketHandler h = new SocketHandler(s, id, codec, writers, new Dispatch());
             if (!security.gate().admit(id, s.getInetAddress(), h::close)) {
                 closeQuietly(s);
                 continue;
@@ -424,6 +426,10 @@ public final class RIPVServer implements AutoCloseable {
 
     Map<String, OperatorLock> locks() {
         return locks;
+    }
+
+    ServerState state() {
+        return state;
     }
 
     ServerSessions sessions() {
@@ -540,6 +546,9 @@ public final class RIPVServer implements AutoCloseable {
     void console(ServiceReference ref, List<org.ripv.messages.ConsoleEntry> entries) {
         sessions.console().publish(ref.descriptor().name(), entries);
         workflows.onConsole(ref.descriptor().name(), entries);
+        // Answer only once they are stored: the service offers what a server did not take to the
+        // next one (restarted, or a standby), so a server that dies now loses no transcript line.
+        sessions.console().transcript().sync();
     }
 
     /** Current MailBox status with the operator lock and the vehicle's call state added. */

@@ -4,6 +4,7 @@ import java.rmi.RemoteException;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
+import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.Footer;
 import org.ripv.messages.Header;
@@ -115,10 +116,12 @@ final class RequestCancels {
                             .via(RIPVServer.SERVER_SERVICE)));
                 }
                 log.info("{} cancelled {} of {} before it ran", byUser, what, h.origin().user());
+                transcript(h, byUser, "before it ran");
                 return new Outcome(true, ErrorCode.NONE, "cancelled " + what + ": it had not started and will not run");
             }
             if (ref.cancel(h)) {
                 log.info("{} cancelled {} of {} while it ran", byUser, what, h.origin().user());
+                transcript(h, byUser, "while it ran");
                 return new Outcome(true, ErrorCode.NONE, "asked " + p.service() + " to stop " + what
                         + "; its reply will say CANCELLED");
             }
@@ -129,6 +132,16 @@ final class RequestCancels {
             cancelledBy.remove(key);
             return new Outcome(false, ErrorCode.SERVICE_GONE, "could not reach " + p.service() + " to cancel " + what + ": "
                     + e.getMessage());
+        }
+    }
+
+    /** The MailBox's console and transcript say who cancelled what, and whose it was. */
+    private void transcript(Header h, String byUser, String when) {
+        try {
+            server.publishServerEntry(ConsoleEntry.command(h.mailboxAddress(), byUser, "?cancel #" + h.messageId() + " '"
+                    + Header.abbreviate(h.body()) + "' of " + h.origin().user() + " (" + when + ")"));
+        } catch (RuntimeException e) {
+            log.warn("could not note the cancel of #{} in the console of {}: {}", h.messageId(), h.mailboxAddress(), e.toString());
         }
     }
 

@@ -65,6 +65,7 @@ final class ServerCommands {
         COMMANDS.put("?unwatch", new Command(Ids.FID_UNWATCH, "?unwatch MAILBOX", "stop following it"));
         COMMANDS.put("?history", new Command(Ids.FID_HISTORY, "?history MAILBOX [--last N] [--since ISO-TIME]", "its transcript"));
         COMMANDS.put("?notify", new Command(Ids.FID_NOTIFY, "?notify add|list|remove ...", "e-mail or webhook on vehicle events"));
+        COMMANDS.put("?audit", new Command(Ids.FID_AUDIT, "?audit [--last N] [--since ISO-TIME]", "the audit trail (needs a right)"));
         COMMANDS.put("?logout", new Command(Ids.FID_LOGOUT, "?logout", "end the session and close the connection"));
     }
 
@@ -79,7 +80,7 @@ final class ServerCommands {
 
     /** Commands that touch the disk: they run on the file workers, not on the Post Office's thread. */
     private static final java.util.Set<String> FILE_WORK = java.util.Set.of("?upload", "?upload-cancel", "?download",
-            "?dlfiles", "?ulfiles", "?delete", "?queue", "?receipts", "?history", "?notify");
+            "?dlfiles", "?ulfiles", "?delete", "?queue", "?receipts", "?history", "?notify", "?audit");
 
     /** Runs one {@code ?} command; its reply (or replies) go to the Post Office's outbox. */
     void run(IncomingServerMessage request) {
@@ -248,6 +249,7 @@ final class ServerCommands {
                 }
                 server.console().serverEvent(address.toString(), org.ripv.messages.VehicleEvent.LOCK_TAKEN, user,
                         "until " + Instant.ofEpochMilli(mine.untilMillis()));
+                server.sessions().lockTaken(address.toString(), mine);
                 return ok(request, c, address + " locked by " + user + " until " + Instant.ofEpochMilli(mine.untilMillis()), null);
             }
             case "?unlock": {
@@ -267,6 +269,9 @@ final class ServerCommands {
             case "?logins", "?unlock-login":
                 permit(request, c);
                 return SecurityCommands.run(request, c.fid(), w, server.security().throttle());
+            case "?audit":
+                permit(request, c);
+                return org.ripv.server.store.AuditCommand.run(request, c.fid(), w, server.state().audit(), server.state().store());
             case "?watch", "?unwatch", "?history":
                 return server.sessions().consoleCommands().run(request, c.fid(), w);
             case "?notify":
@@ -277,7 +282,9 @@ final class ServerCommands {
     }
 
     static String describe(MailboxStatus s) {
-        return s.address() + ": " + (s.available() ? "available" : "not available") + (s.busy() ? ", busy" : "")
+        String what = !s.running().isEmpty() ? "busy: " + s.running()
+                : (s.available() ? "available" : "not available") + (s.busy() ? ", busy" : "");
+        return s.address() + ": " + what
                 + (s.lockedBy().isEmpty() ? "" : ", locked by " + s.lockedBy())
                 + (s.detail().isEmpty() ? "" : " (" + s.detail() + ")")
                 + (s.session() == null ? "" : "; vehicle " + org.ripv.server.session.ConsoleCommands.describeState(s.session()));

@@ -22,11 +22,14 @@ import javax.net.ssl.SSLContext;
  * @param tls            a TLS context for the client port, or null for plain TCP
  * @param clientJar      the client jar the landing page offers, or null
  * @param security       log-in deadline, per-address and brute-force limits, TLS on or off (docs/security.md)
+ * @param stateStore     where transcripts, workflow queues and receipts, subscriptions and the audit trail are
+ *                       kept: embedded (files in the data directory) or PostgreSQL (docs/operations.md)
  */
 public record ServerConfig(String bindAddress, int port, int registryPort, int httpPort, Path dataDir, Path permitFile,
                            Duration requestTimeout, Duration serviceCheck, long maxUpload, int maxFrame, int maxClients,
                            SSLContext tls, Path clientJar,
-                           org.ripv.server.security.SecuritySettings security) {
+                           org.ripv.server.security.SecuritySettings security,
+                           org.ripv.server.store.StoreLocation stateStore) {
 
     public static final int DEFAULT_PORT = 4444;
     public static final int DEFAULT_REGISTRY_PORT = 1099;
@@ -39,13 +42,16 @@ public record ServerConfig(String bindAddress, int port, int registryPort, int h
         if (security == null) {
             security = org.ripv.server.security.SecuritySettings.defaults();
         }
+        if (stateStore == null) {
+            stateStore = org.ripv.server.store.StoreLocation.embedded();
+        }
     }
 
     /** Defaults for a data directory. */
     public static ServerConfig defaults(Path dataDir) {
         return new ServerConfig(null, DEFAULT_PORT, DEFAULT_REGISTRY_PORT, DEFAULT_HTTP_PORT, dataDir, null,
                 Duration.ofSeconds(60), Duration.ofSeconds(3), 256L * 1024 * 1024,
-                org.ripv.wire.FrameCodec.DEFAULT_MAX_FRAME, 1000, null, null, null);
+                org.ripv.wire.FrameCodec.DEFAULT_MAX_FRAME, 1000, null, null, null, null);
     }
 
     /** Defaults for tests: free ports, no landing page, short checks. */
@@ -55,52 +61,58 @@ public record ServerConfig(String bindAddress, int port, int registryPort, int h
 
     public ServerConfig withPorts(int clientPort, int registry, int http) {
         return new ServerConfig(bindAddress, clientPort, registry, http, dataDir, permitFile, requestTimeout, serviceCheck,
-                maxUpload, maxFrame, maxClients, tls, clientJar, security);
+                maxUpload, maxFrame, maxClients, tls, clientJar, security, stateStore);
     }
 
     public ServerConfig withRequestTimeout(Duration t) {
         return new ServerConfig(bindAddress, port, registryPort, httpPort, dataDir, permitFile, t, serviceCheck,
-                maxUpload, maxFrame, maxClients, tls, clientJar, security);
+                maxUpload, maxFrame, maxClients, tls, clientJar, security, stateStore);
     }
 
     public ServerConfig withServiceCheck(Duration t) {
         return new ServerConfig(bindAddress, port, registryPort, httpPort, dataDir, permitFile, requestTimeout, t,
-                maxUpload, maxFrame, maxClients, tls, clientJar, security);
+                maxUpload, maxFrame, maxClients, tls, clientJar, security, stateStore);
     }
 
     public ServerConfig withMaxUpload(long bytes) {
         return new ServerConfig(bindAddress, port, registryPort, httpPort, dataDir, permitFile, requestTimeout,
-                serviceCheck, bytes, maxFrame, maxClients, tls, clientJar, security);
+                serviceCheck, bytes, maxFrame, maxClients, tls, clientJar, security, stateStore);
     }
 
     public ServerConfig withPermitFile(Path file) {
         return new ServerConfig(bindAddress, port, registryPort, httpPort, dataDir, file, requestTimeout,
-                serviceCheck, maxUpload, maxFrame, maxClients, tls, clientJar, security);
+                serviceCheck, maxUpload, maxFrame, maxClients, tls, clientJar, security, stateStore);
     }
 
     public ServerConfig withTls(SSLContext context) {
         return new ServerConfig(bindAddress, port, registryPort, httpPort, dataDir, permitFile, requestTimeout,
-                serviceCheck, maxUpload, maxFrame, maxClients, context, clientJar, security);
+                serviceCheck, maxUpload, maxFrame, maxClients, context, clientJar, security, stateStore);
     }
 
     public ServerConfig withClientJar(Path jar) {
         return new ServerConfig(bindAddress, port, registryPort, httpPort, dataDir, permitFile, requestTimeout,
-                serviceCheck, maxUpload, maxFrame, maxClients, tls, jar, security);
+                serviceCheck, maxUpload, maxFrame, maxClients, tls, jar, security, stateStore);
     }
 
     public ServerConfig withBindAddress(String address) {
         return new ServerConfig(address, port, registryPort, httpPort, dataDir, permitFile, requestTimeout,
-                serviceCheck, maxUpload, maxFrame, maxClients, tls, clientJar, security);
+                serviceCheck, maxUpload, maxFrame, maxClients, tls, clientJar, security, stateStore);
     }
 
     public ServerConfig withSecurity(org.ripv.server.security.SecuritySettings s) {
         return new ServerConfig(bindAddress, port, registryPort, httpPort, dataDir, permitFile, requestTimeout,
-                serviceCheck, maxUpload, maxFrame, maxClients, tls, clientJar, s);
+                serviceCheck, maxUpload, maxFrame, maxClients, tls, clientJar, s, stateStore);
     }
 
     public ServerConfig withMaxClients(int n) {
         return new ServerConfig(bindAddress, port, registryPort, httpPort, dataDir, permitFile, requestTimeout,
-                serviceCheck, maxUpload, maxFrame, n, tls, clientJar, security);
+                serviceCheck, maxUpload, maxFrame, n, tls, clientJar, security, stateStore);
+    }
+
+    /** Where the server keeps its state: embedded (the default) or a PostgreSQL database ({@code --state-db}). */
+    public ServerConfig withStateStore(org.ripv.server.store.StoreLocation where) {
+        return new ServerConfig(bindAddress, port, registryPort, httpPort, dataDir, permitFile, requestTimeout,
+                serviceCheck, maxUpload, maxFrame, maxClients, tls, clientJar, security, where);
     }
 
     /** Plain TCP on the client port and the landing page, for a test lab ({@code --plain}). */

@@ -95,6 +95,11 @@ public final class ServerMain implements Callable<Integer> {
         int transcriptDays;
         @Option(names = "--transcript-file-mb", defaultValue = "64", description = "A transcript file is continued in a new one past this size (default ${DEFAULT-VALUE} MB).")
         long transcriptFileMb;
+        @CommandLine.Mixin
+        org.ripv.server.store.StateStoreOptions stateStore = new org.ripv.server.store.StateStoreOptions();
+        @CommandLine.Mixin
+        org.ripv.server.standby.StandbyOptions standby = new org.ripv.server.standby.StandbyOptions();
+        private volatile int openedOutbound = -1;
 
         @Override
         public Integer call() throws Exception {
@@ -130,6 +135,7 @@ public final class ServerMain implements Callable<Integer> {
             }
             SessionOptions sessions;
             try {
+                config = config.withStateStore(stateStore.location(System.err));
                 sessions = SessionOptions.defaults().withTranscripts(transcriptFileMb * 1024 * 1024, transcriptDays)
                         .withWebhooks(org.ripv.server.notify.WebhookTargets.parse(webhookAllow));
                 if (smtp != null) {
@@ -142,24 +148,57 @@ public final class ServerMain implements Callable<Integer> {
                 return 2;
             }
             org.ripv.rmi.RmiSupport.filterProcess();
-            RIPVServer server = new RIPVServer(config, sessions);
-            server.start();
-            String outbound = "";
-            if (outboundPort >= 0) {
-                try {
-                    outbound = ", services behind NAT connect out to port " + server.openOutbound(outboundPort);
-                } catch (java.io.IOException e) {
-                    System.err.println("Warning: " + e.getMessage() + "; services in --outbound-only mode cannot connect");
-                }
+            ServerConfig cfg = config;
+            SessionOptions opts = sessions;
+            String tlsFingerprint = fingerprint;
+            org.ripv.server.standby.StandbyLoop.Opener<RIPVServer> open = () -> open(cfg, opts);
+            java.util.function.Consumer<RIPVServer> ready = s -> ready(s, cfg, tlsFingerprint);
+            if (!config.stateStore().isEmbedded()) {
+                // A hot standby: serve only while holding the lead in the state database.
+                String me = (bind != null ? bind : rmiHostname != null ? rmiHostname : org.ripv.naming.Handles.localHost()) + ":" + port;
+                var loop = new org.ripv.server.standby.StandbyLoop<>(standby.leads(config.stateStore(), me), open, ready);
+                Runtime.getRuntime().addShutdownHook(new Thread(loop::stop, "ripv-server-shutdown"));
+                System.err.println("RIPVServer on " + me + ": taking the lead in " + config.stateStore()
+                        + " (standing by while another server holds it)");
+                loop.run();
+                return 0;
             }
+            RIPVServer server = open.open();
             CountDownLatch stopped = new CountDownLatch(1);
             Runtime.getRuntime().addShutdownHook(new Thread(() -> {
                 server.stop();
                 stopped.countDown();
             }, "ripv-server-shutdown"));
-            PermitFile p = PermitFile.load(config.permitFile());
-            if (p.users().isEmpty()) {
-                System.err.println("No users yet: add one with  ripv passwd --permit " + config.permitFile() + " USER --roles operators");
+            ready.accept(server);
+            stopped.await();
+            return 0;
+        }
+
+        /** Starts a server and its outbound port (a busy one only warns). */
+        private RIPVServer open(ServerConfig config, SessionOptions sessions) throws java.io.IOException {
+            RIPVServer server = new RIPVServer(config, sessions);
+            server.start();
+            openedOutbound = -1;
+            if (outboundPort >= 0) {
+                try {
+                    openedOutbound = server.openOutbound(outboundPort);
+                } catch (java.io.IOException e) {
+                    System.err.println("Warning: " + e.getMessage() + "; services in --outbound-only mode cannot connect");
+                }
+            }
+            return server;
+        }
+
+        /** The "ready" lines, each time a server starts serving. */
+        private void ready(RIPVServer server, ServerConfig config, String fingerprint) {
+            String outbound = openedOutbound > 0 ? ", services behind NAT connect out to port " + openedOutbound : "";
+            try {
+                PermitFile p = PermitFile.load(config.permitFile());
+                if (p.users().isEmpty()) {
+                    System.err.println("No users yet: add one with  ripv passwd --permit " + config.permitFile() + " USER --roles operators");
+                }
+            } catch (IOException e) {
+                System.err.println("Warning: cannot read the permit file " + config.permitFile() + ": " + e.getMessage());
             }
             if (fingerprint == null) {
                 fingerprint = server.tlsFingerprint();
@@ -173,8 +212,6 @@ public final class ServerMain implements Callable<Integer> {
                 System.err.println("TLS certificate fingerprint: " + fingerprint
                         + "\n  (clients show it when they first connect; compare before trusting)");
             }
-            stopped.await();
-            return 0;
         }
 
         private static Path defaultClientJar() {

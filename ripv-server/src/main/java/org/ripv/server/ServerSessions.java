@@ -26,11 +26,12 @@ final class ServerSessions implements AutoCloseable {
     private final Notifier notifier;
     private final ConsoleCommands consoleCommands;
     private final NotifyCommands notifyCommands;
+    private LockExpiries lockExpiries;
 
-    ServerSessions(Path dataDir, SessionOptions options, Supplier<PermitFile> permits,
+    ServerSessions(Path dataDir, org.ripv.server.store.StateStore store, SessionOptions options, Supplier<PermitFile> permits,
                    Function<String, Optional<SocketHandler>> clients, FrameCodec codec) throws IOException {
-        console = new ConsoleHub(dataDir.resolve("transcripts"), options.transcriptFileBytes(), options.keepDays(), codec::encode);
-        notifier = new Notifier(dataDir.resolve("notify").resolve("subscriptions.jsonl"), permits, options.smtp(),
+        console = new ConsoleHub(dataDir.resolve("transcripts"), store, options.keepDays(), codec::encode);
+        notifier = new Notifier(store, permits, options.smtp(),
                 options.notifyBackoff(), options.notifyTimeout(), options.webhooks());
         console.onEvent(notifier::accept);
         consoleCommands = new ConsoleCommands(console, permits, id -> clients.apply(id).map(ServerSessions::outlet),
@@ -55,6 +56,30 @@ final class ServerSessions implements AutoCloseable {
                 return !h.isClosed();
             }
         };
+    }
+
+    /** Operator locks that run out are released with an event ({@link LockExpiries}). */
+    void expireLocks(java.util.concurrent.ScheduledExecutorService timers, Map<String, RIPVServer.OperatorLock> locks,
+                     java.util.function.Consumer<String> released) {
+        lockExpiries = new LockExpiries(timers, locks, console, released);
+    }
+
+    /** An operator took or renewed the lock on a MailBox ({@code ?lock}). */
+    void lockTaken(String mailbox, RIPVServer.OperatorLock lock) {
+        if (lockExpiries != null) {
+            lockExpiries.taken(mailbox, lock);
+        }
+    }
+
+    /**
+     * The permit file changed: watches whose user lost the read right end, each told why once;
+     * notifications check the rules in force at each delivery (Notifier).
+     */
+    void permitsChanged(PermitFile rules) {
+        console.recheck((user, mailbox) -> {
+            String why = org.ripv.server.session.Rights.whyNotRead(rules, user, mailbox);
+            return why == null ? null : why + "; the permit file changed";
+        });
     }
 
     ConsoleHub console() {
@@ -84,6 +109,9 @@ final class ServerSessions implements AutoCloseable {
 
     @Override
     public void close() {
+        if (lockExpiries != null) {
+            lockExpiries.close();
+        }
         notifier.close();
         console.close();
     }

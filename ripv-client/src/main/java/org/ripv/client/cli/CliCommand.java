@@ -32,7 +32,9 @@ public final class CliCommand implements Callable<Integer> {
     public static final int EXIT_ERROR_REPLY = 1;
     public static final int EXIT_NO_SESSION = 3;
 
-    @Option(names = "--server", required = true, paramLabel = "HOST[:PORT]", description = "The server (port 4444 unless given).")
+    @Option(names = "--server", required = true, paramLabel = "HOST[:PORT][,HOST2[:PORT]]",
+            description = "The server (port 4444 unless given); several, comma-separated (an active server and its standbys):"
+                    + " the first that answers.")
     String server;
     @Option(names = "--user", required = true, description = "User name.")
     String user;
@@ -61,6 +63,9 @@ public final class CliCommand implements Callable<Integer> {
 
     @Option(names = "--follow", paramLabel = "MAILBOX", description = "Print the MailBox's live console (lines, commands, events) until Ctrl-C; after any --exec lines.")
     String follow;
+    @Option(names = "--no-reconnect", description = "With --follow or on a terminal: end (exit 3) when the connection is lost, instead"
+            + " of logging in again to the server (or the first of --server's list that answers) and going on.")
+    boolean noReconnect;
     @Option(names = "--timeout", defaultValue = "3600", description = "Seconds to wait for one reply (default ${DEFAULT-VALUE}; the server fails silent requests sooner).")
     long timeout;
 
@@ -80,37 +85,35 @@ public final class CliCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws IOException {
-        String host = server;
-        int port = 4444;
-        int colon = server.lastIndexOf(':');
-        if (colon > 0 && server.indexOf(':') == colon) {
-            host = server.substring(0, colon);
-            try {
-                port = Integer.parseInt(server.substring(colon + 1));
-            } catch (NumberFormatException e) {
-                err.println("Error: '" + server + "' is not HOST[:PORT]");
-                return 2;
-            }
+        org.ripv.failover.ServerList servers;
+        try {
+            servers = org.ripv.failover.ServerList.parse(server, 4444);
+        } catch (IllegalArgumentException e) {
+            err.println("Error: " + e.getMessage());
+            return 2;
         }
+        String host = servers.first().host();
         char[] pw = password(host);
         if (pw == null) {
             err.println("Error: no password: give --password-file, set RIPV_PASSWORD, or run on a terminal to be asked");
             return 2;
         }
+        if (plain && (truststore != null || tls)) {
+            err.println("Error: --plain excludes --tls and --truststore");
+            return 2;
+        }
         ClientSocketHandler client;
+        javax.net.SocketFactory trusted;
         try {
-            if (plain && (truststore != null || tls)) {
-                err.println("Error: --plain excludes --tls and --truststore");
-                return 2;
-            }
-            javax.net.SocketFactory factory = plain ? javax.net.SocketFactory.getDefault()
-                    : truststore != null ? Tls.socketFactory(truststore, truststorePassword.toCharArray())
-                    : Tls.trustOnFirstUse(host, port, knownHosts != null ? knownHosts : Tls.defaultKnownHosts(), err::println);
-            client = ClientSocketHandler.connect(host, port, factory, Duration.ofSeconds(10));
+            trusted = truststore != null ? Tls.socketFactory(truststore, truststorePassword.toCharArray()) : null;
+            client = connect(servers, trusted);
         } catch (IOException e) {
-            err.println("Error: cannot connect to " + host + ":" + port + ": " + e.getMessage());
+            err.println("Error: cannot connect to " + servers + ": " + e.getMessage());
             return EXIT_NO_SESSION;
         }
+        // --follow runs all night, a terminal session for hours: both keep the password to log in again
+        // after a server restart or a standby's takeover.
+        char[] again = (follow != null || interactive()) && !noReconnect ? pw.clone() : null;
         try (client) {
             try {
                 client.login(user, pw);
@@ -121,9 +124,23 @@ public final class CliCommand implements Callable<Integer> {
                 java.util.Arrays.fill(pw, '\0');
             }
             CliSession session = new CliSession(client, out, err, json, Duration.ofSeconds(timeout));
+            Reconnect reconnect = again == null ? null : () -> {
+                ClientSocketHandler c = connect(servers, trusted);
+                char[] p = again.clone();
+                try {
+                    c.login(user, p);
+                    return c;
+                } catch (Exception e) {
+                    c.close();
+                    throw e;
+                } finally {
+                    java.util.Arrays.fill(p, '\0');
+                }
+            };
             try {
                 if (interactive()) {
-                    return new Shell(session, client, history != null ? history : Shell.defaultHistory(), err).run();
+                    return new Shell(session, client, history != null ? history : Shell.defaultHistory(), err, reconnect,
+                            c -> new CliSession(c, out, err, json, Duration.ofSeconds(timeout))).run();
                 }
                 if (exec != null && !exec.isEmpty()) {
                     for (String line : exec) {
@@ -145,14 +162,27 @@ public final class CliCommand implements Callable<Integer> {
             out.flush();
             if (follow != null) {
                 try {
-                    return new ConsoleFollower(client, out, err, json).follow(follow, Duration.ofSeconds(Math.min(timeout, 60)));
+                    return new ConsoleFollower(client, out, err, json, reconnect).follow(follow,
+                            Duration.ofSeconds(Math.min(timeout, 60)));
                 } catch (IOException e) {
                     err.println("Error: " + e.getMessage());
                     return EXIT_NO_SESSION;
                 }
             }
             return session.anyError() ? EXIT_ERROR_REPLY : 0;
+        } finally {
+            if (again != null) {
+                java.util.Arrays.fill(again, '\0');
+            }
         }
+    }
+
+    /** Connects to the first server of the list that answers; each is its own host to trust (a standby has its own certificate). */
+    private ClientSocketHandler connect(org.ripv.failover.ServerList servers, javax.net.SocketFactory trusted) throws IOException {
+        return new org.ripv.client.handlers.Failover(servers, err::println).connect((h, p) -> ClientSocketHandler.connect(h, p,
+                plain ? javax.net.SocketFactory.getDefault() : trusted != null ? trusted
+                        : Tls.trustOnFirstUse(h, p, knownHosts != null ? knownHosts : Tls.defaultKnownHosts(), err::println),
+                servers.size() > 1 ? org.ripv.client.handlers.Failover.CONNECT : Duration.ofSeconds(10)));
     }
 
     /** A person at a terminal, with no --exec lines: the interactive CLI. */

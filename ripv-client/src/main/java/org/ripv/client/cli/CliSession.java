@@ -42,6 +42,8 @@ public final class CliSession {
     private Priority priority = Priority.NORMAL;
     private boolean anyError;
     private org.ripv.messages.TableResult lastTable;
+    /** A plot's data, when it came after the last table (export writes whichever came last). */
+    private org.ripv.messages.ChartData lastChart;
     /** The request being waited for, so that {@link #cancel()} can end the wait. */
     private volatile CompletableFuture<OutgoingServerMessage> waiting;
     /** The message id of the request being waited for, 0 for none (what {@code ?cancel} names). */
@@ -74,6 +76,7 @@ public final class CliSession {
             "                                   upload to the server's upload directory; when NAME is taken: replace it, or keep both",
             "  get NAME [LOCALDIR]              download from the server's download directory (default: the current directory)",
             "  export csv|json LOCALFILE        write the last query result to a local file (numbers as numbers, NULL as null)",
+            "  export svg LOCALFILE             write the last plot (a vis: reply with data) as an SVG picture",
             "  help                             this, and the current service's help",
             "  quit                             end the session (Ctrl-D too)",
             "  anything else                    a command for the current MailBox");
@@ -191,6 +194,9 @@ public final class CliSession {
         if (reply != null) {
             if (reply.footer().result() instanceof org.ripv.messages.TableResult t) {
                 lastTable = t;
+                lastChart = null;
+            } else if (reply.footer().result() instanceof org.ripv.messages.ImageResult img && img.chart() != null) {
+                lastChart = img.chart();
             }
             print(reply);
         }
@@ -254,18 +260,45 @@ public final class CliSession {
         err.println("Cancelled: stopped waiting for '" + what + "'; the server may still finish it (its reply will be ignored)");
     }
 
-    /** {@code export csv|json FILE}: the last table received, to a local file ({@link TableExport}). */
+    /**
+     * {@code export csv|json FILE}: the last table received, or a plot's data when one came after
+     * it, to a local file ({@link org.ripv.export.TableExport}, {@link org.ripv.export.ChartExport});
+     * {@code export svg FILE}: that plot as a picture of all its data ({@link org.ripv.export.SvgChart}).
+     */
     private void export(String args) throws IOException {
         String[] a = args.isEmpty() ? new String[0] : args.split("\\s+", 2);
-        if (a.length != 2 || !(a[0].equalsIgnoreCase("csv") || a[0].equalsIgnoreCase("json"))) {
-            localError(ErrorCode.BAD_REQUEST, "usage: export csv|json LOCALFILE (writes the last query result)");
+        if (a.length != 2 || !(a[0].equalsIgnoreCase("csv") || a[0].equalsIgnoreCase("json") || a[0].equalsIgnoreCase("svg"))) {
+            localError(ErrorCode.BAD_REQUEST, "usage: export csv|json|svg LOCALFILE (writes the last query result or plot's data;"
+                    + " svg: the plot)");
+            return;
+        }
+        if (a[0].equalsIgnoreCase("svg")) {
+            if (lastChart == null) {
+                localError(ErrorCode.BAD_REQUEST, "no plot to export as SVG: the last reply was not a plot with data (a vis: plot"
+                        + " of the built-in worker)");
+                return;
+            }
+            Path file = Path.of(a[1]);
+            Files.writeString(file, org.ripv.export.SvgChart.svg(lastChart, org.ripv.export.SvgChart.View.fit(lastChart, 900, 560)),
+                    java.nio.charset.StandardCharsets.UTF_8);
+            local("exported the plot (" + lastChart.series().size() + " series, " + lastChart.points() + " points) as svg to " + file);
+            return;
+        }
+        if (lastChart != null) {
+            boolean csv = a[0].equalsIgnoreCase("csv");
+            Path file = Path.of(a[1]);
+            Files.writeString(file, csv ? org.ripv.export.ChartExport.csv(lastChart) : org.ripv.export.ChartExport.json(lastChart),
+                    java.nio.charset.StandardCharsets.UTF_8);
+            local("exported the plot's data (" + lastChart.series().size() + " series, " + lastChart.points() + " points) as "
+                    + a[0].toLowerCase(java.util.Locale.ROOT) + " to " + file);
             return;
         }
         if (lastTable == null) {
             localError(ErrorCode.BAD_REQUEST, "no query result to export yet: run a SELECT first");
             return;
         }
-        String text = a[0].equalsIgnoreCase("csv") ? TableExport.csv(lastTable) : TableExport.json(lastTable);
+        String text = a[0].equalsIgnoreCase("csv") ? org.ripv.export.TableExport.csv(lastTable)
+                : org.ripv.export.TableExport.json(lastTable);
         Path file = Path.of(a[1]);
         Files.writeString(file, text, java.nio.charset.StandardCharsets.UTF_8);
         local("exported " + lastTable.rows().size() + " rows as " + a[0].toLowerCase(java.util.Locale.ROOT) + " to " + file);

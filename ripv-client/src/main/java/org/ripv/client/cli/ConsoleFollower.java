@@ -4,10 +4,15 @@ import java.io.IOException;
 import java.io.PrintStream;
 import java.time.Duration;
 import java.time.Instant;
+import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Set;
 import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicReference;
 import org.ripv.client.handlers.ClientSocketHandler;
 import org.ripv.json.JsonWriter;
@@ -25,30 +30,90 @@ import org.ripv.messages.Status;
  * apply: time, mailbox, kind, user, text, event, lat, lon.
  */
 public final class ConsoleFollower implements ClientSocketHandler.Listener {
-    private final ClientSocketHandler client;
+    /** The longest wait between two attempts to reconnect. */
+    static final Duration MAX_BACKOFF = Duration.ofSeconds(10);
+
+    private final ClientSocketHandler first;
     private final PrintStream out;
     private final PrintStream err;
     private final boolean json;
-    private final CountDownLatch ended = new CountDownLatch(1);
+    private final Reconnect reconnect;
+    private final CountDownLatch stopped = new CountDownLatch(1);
+    private volatile CountDownLatch ended = new CountDownLatch(1);
     private final AtomicReference<Exception> cause = new AtomicReference<>();
     private volatile String mailbox = "";
+    private volatile boolean endedByServer;
+    // The server replays recent entries on every ?watch: after a reconnect, skip what was printed.
+    private long lastTime = Long.MIN_VALUE;
+    private final Set<ConsoleEntry> atLastTime = new HashSet<>();
 
     public ConsoleFollower(ClientSocketHandler client, PrintStream out, PrintStream err, boolean json) {
-        this.client = client;
+        this(client, out, err, json, null);
+    }
+
+    /** With {@code reconnect}, a lost connection is followed by logging in again and watching on. */
+    public ConsoleFollower(ClientSocketHandler client, PrintStream out, PrintStream err, boolean json, Reconnect reconnect) {
+        this.first = client;
         this.out = out;
         this.err = err;
         this.json = json;
+        this.reconnect = reconnect;
     }
 
     /**
-     * Follows until the connection ends. Returns 0 when stopped by {@link #stop}, 1 when the
-     * server refused the watch, 3 when the connection was lost.
+     * Follows until stopped, or until the connection ends when there is no way to reconnect.
+     * Returns 0 when stopped by {@link #stop} or interrupted, 1 when the server refused the watch
+     * or ended it (the user lost the right to read the MailBox), 3 when the connection was lost
+     * (and could not be, or was not to be, made again).
      */
     public int follow(String address, Duration timeout) throws IOException {
         this.mailbox = address;
+        ClientSocketHandler client = first;
+        List<ClientSocketHandler> made = new ArrayList<>();
+        try {
+            while (true) {
+                int r = watch(client, address, timeout);
+                Exception why = cause.get();
+                if (r != LOST) {
+                    return r;
+                }
+                if (reconnect == null) {
+                    err.println("Error: " + why.getMessage());
+                    return CliCommand.EXIT_NO_SESSION;
+                }
+                err.println("Connection lost (" + why.getMessage() + "); logging in again...");
+                client = reconnect();
+                if (client == null) {
+                    return 0; // stopped while waiting
+                }
+                made.add(client);
+                err.println("Reconnected to " + client.server() + "; lines from before are in ?history " + address);
+            }
+        } finally {
+            for (ClientSocketHandler c : made) {
+                c.close();
+            }
+        }
+    }
+
+    private static final int LOST = -1;
+
+    /** One watch on one connection: the exit code, or LOST. */
+    private int watch(ClientSocketHandler client, String address, Duration timeout) throws IOException {
+        cause.set(null);
+        ended = new CountDownLatch(1);
         client.addListener(this);
         try {
-            OutgoingServerMessage r = client.call("", "?watch " + address, Priority.NORMAL, timeout, null);
+            OutgoingServerMessage r;
+            try {
+                r = client.call("", "?watch " + address, Priority.NORMAL, timeout, null);
+            } catch (IOException e) {
+                if (!client.isOpen() || cause.get() != null) {
+                    cause.compareAndSet(null, e);
+                    return LOST;
+                }
+                throw e;
+            }
             if (r.status() != Status.OK) {
                 err.println("Error: " + r.footer().replyText() + " [" + r.footer().errorCode() + ", " + r.footer().serviceId() + "]");
                 return CliCommand.EXIT_ERROR_REPLY;
@@ -57,22 +122,49 @@ public final class ConsoleFollower implements ClientSocketHandler.Listener {
                 err.println(r.footer().replyText() + "; Ctrl-C stops");
             }
             ended.await();
+            if (stopped.getCount() == 0) {
+                return 0;
+            }
+            if (endedByServer) {
+                return CliCommand.EXIT_ERROR_REPLY;
+            }
+            return cause.get() != null ? LOST : 0;
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             return 0;
         } finally {
             client.removeListener(this);
         }
-        Exception why = cause.get();
-        if (why != null) {
-            err.println("Error: " + why.getMessage());
-            return CliCommand.EXIT_NO_SESSION;
+    }
+
+    /** Tries again and again, waiting longer each time (up to {@link #MAX_BACKOFF}); null when stopped. */
+    private ClientSocketHandler reconnect() {
+        long wait = 500;
+        while (stopped.getCount() > 0) {
+            try {
+                return reconnect.connect();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                return null;
+            } catch (Exception e) {
+                err.println("Could not log in again (" + e.getMessage() + "); next try in " + wait / 1000.0 + " s");
+            }
+            try {
+                if (stopped.await(wait, TimeUnit.MILLISECONDS)) {
+                    return null;
+                }
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                return null;
+            }
+            wait = Math.min(wait * 2, MAX_BACKOFF.toMillis());
         }
-        return 0;
+        return null;
     }
 
     /** Ends {@link #follow} (for embedding; the command line ends by Ctrl-C). */
     public void stop() {
+        stopped.countDown();
         ended.countDown();
     }
 
@@ -84,11 +176,34 @@ public final class ConsoleFollower implements ClientSocketHandler.Listener {
         if (mine && reply.footer().result() instanceof ConsoleBatch b && b.mailbox().equals(mailbox)) {
             synchronized (out) {
                 for (ConsoleEntry e : b.entries()) {
+                    if (seen(e)) {
+                        continue;
+                    }
                     out.println(json ? JsonWriter.write(toMap(e)) : toText(e));
                 }
                 out.flush();
             }
+            if (reply.status() == Status.ERROR && fid.equals(Ids.FID_CONSOLE)) {
+                ended(); // the server ended the watch (the user lost the read right): its line above says why
+            }
         }
+    }
+
+    private void ended() {
+        endedByServer = true;
+        ended.countDown();
+    }
+
+    /** True for an entry printed already (a replay after reconnecting); remembers the others. */
+    private boolean seen(ConsoleEntry e) {
+        if (e.time() < lastTime) {
+            return true;
+        }
+        if (e.time() > lastTime) {
+            lastTime = e.time();
+            atLastTime.clear();
+        }
+        return !atLastTime.add(e);
     }
 
     @Override

@@ -48,9 +48,7 @@ final class ReplyPrinter {
         }
         if (f.status() == Status.PROGRESS) {
             if (f.result() instanceof Progress p) {
-                err.printf("  ... %s %d/%d%s%s%n", p.what(), p.done(), p.total(),
-                        p.percent() >= 0 ? " (" + p.percent() + "%)" : "",
-                        p.ratePerSecond() > 0 ? String.format(" %.0f/s", p.ratePerSecond()) : "");
+                err.println("  ... " + progressLine(p));
             } else {
                 err.println("  ... " + f.replyText());
             }
@@ -68,6 +66,14 @@ final class ReplyPrinter {
         } else if (f.result() != null) {
             out.println(f.result());
         }
+    }
+
+    /** {@code receiving MISSION1.LOG 20000/50000 (40%) 11.2 kB/s ETA 0:03}: what is known of it. */
+    static String progressLine(Progress p) {
+        return p.what() + " " + p.done() + (p.total() > 0 ? "/" + p.total() : "")
+                + (p.percent() >= 0 ? " (" + p.percent() + "%)" : "")
+                + (p.rateText().isEmpty() ? "" : " " + p.rateText())
+                + (p.etaText().isEmpty() ? "" : " ETA " + p.etaText());
     }
 
     static String table(TableResult t) {
@@ -166,6 +172,7 @@ final class ReplyPrinter {
             m.put("done", p.done());
             m.put("total", p.total());
             m.put("rate", p.ratePerSecond());
+            m.put("etaSeconds", p.etaSeconds());
         } else if (r instanceof ImageResult img) {
             m.put("name", img.name());
             m.put("bytes", img.jpeg().length);
@@ -185,6 +192,7 @@ final class ReplyPrinter {
         Map<String, Object> m = new LinkedHashMap<>();
         m.put("address", s.address());
         m.put("available", s.available());
+        m.put("running", s.running());
         m.put("busy", s.busy());
         m.put("lockedBy", s.lockedBy());
         m.put("detail", s.detail());

@@ -34,8 +34,9 @@ public final class ClientCommand implements Callable<Integer> {
     /** Exit code: no display (headless) or bad arguments. */
     public static final int EXIT_USAGE = 2;
 
-    @Parameters(index = "0", arity = "0..1", paramLabel = "HOST[:PORT]",
-            description = "The RIPVServer to log in to (default: the last one used, else localhost:4444).")
+    @Parameters(index = "0", arity = "0..1", paramLabel = "HOST[:PORT][,HOST2[:PORT]]",
+            description = "The RIPVServer to log in to (default: the last one used, else localhost:4444); several,"
+                    + " comma-separated (an active server and its standbys): whichever answers, on every reconnect too.")
     String server;
 
     @Option(names = "--user", paramLabel = "USER", description = "User name (default: the last one used).")

@@ -65,6 +65,7 @@ public final class RIPVClient {
     private final JSplitPane split;
     private final WindowLayout saved;
     private boolean syncing;
+    private org.ripv.client.fleet.FleetView fleetView;
     private long lastFocusRefresh;
 
     public RIPVClient(GuiManager manager, Preferences prefs) {
@@ -72,7 +73,11 @@ public final class RIPVClient {
         this.model = manager.model();
         this.prefs = prefs;
         frame.setName("ripvClient");
-        serviceTree = new ServiceTree(this::selectService);
+        serviceTree = new ServiceTree(this::selectService, (service, mailbox) -> {
+            // A vehicle picked in SEL: its tab comes to the front with that MailBox as the target.
+            selectService(service);
+            manager.selectMailbox(service, mailbox);
+        });
         tabs.setName("serviceTabs");
         tabs.addChangeListener(e -> {
             if (tabs.getSelectedComponent() instanceof ServiceLayoutPanel p) {
@@ -92,7 +97,7 @@ public final class RIPVClient {
         sel.setBorder(BorderFactory.createTitledBorder("SEL — services"));
         sel.add(new JScrollPane(serviceTree), BorderLayout.CENTER);
         sel.add(refresh, BorderLayout.SOUTH);
-        sel.setPreferredSize(new Dimension(290, 400)); // "<SerialPortServer>::<localhost>" whole
+        sel.setPreferredSize(new Dimension(330, 400)); // "<SerialPortServer>::<localhost>" and a vehicle's badge whole
 
         JPanel center = new JPanel(new BorderLayout());
         center.add(tabs, BorderLayout.CENTER);
@@ -223,7 +228,27 @@ public final class RIPVClient {
         for (JMenuItem i : java.util.List.of(services, commandLine, mailboxes, files, next)) {
             view.add(i);
         }
+        view.addSeparator();
+        org.ripv.client.layout.QuadrantMenu.items(() -> tabs.getSelectedComponent() instanceof ServiceLayoutPanel p
+                ? p.quadrants() : null).forEach(view::add);
+        view.addSeparator();
+        JMenuItem fleet = new JMenuItem("Fleet...", KeyEvent.VK_T);
+        fleet.setName("fleetMenu");
+        fleet.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_F, java.awt.event.InputEvent.CTRL_DOWN_MASK
+                | java.awt.event.InputEvent.SHIFT_DOWN_MASK));
+        fleet.addActionListener(e -> showFleet());
+        view.add(fleet);
         return view;
+    }
+
+    /** Opens the Fleet window (or brings it to the front) and refreshes it. */
+    public org.ripv.client.fleet.FleetView showFleet() {
+        if (fleetView == null || !fleetView.dialog().isDisplayable()) {
+            fleetView = new org.ripv.client.fleet.FleetView(frame, manager);
+        }
+        fleetView.show();
+        fleetView.dialog().toFront();
+        return fleetView;
     }
 
     /** Shows the window. */
@@ -268,6 +293,21 @@ public final class RIPVClient {
     private void changed(ClientModel.Change c) {
         switch (c.kind()) {
             case SERVICES -> syncServices();
+            case MAILBOXES -> {
+                // The SEL tree shows each vehicle's state badge under its service.
+                syncing = true;
+                try {
+                    serviceTree.update(model);
+                } finally {
+                    syncing = false;
+                }
+                ServiceLayoutPanel p = c.service() == null ? null : panels.get(c.service());
+                if (p != null) {
+                    p.update(model, c.kind());
+                } else if (c.service() == null) {
+                    panels.values().forEach(x -> x.update(model, c.kind()));
+                }
+            }
             case CONNECTION -> showConnection();
             case NOTICE -> {
                 // The latest message only, on one line; the whole of it in the tooltip.

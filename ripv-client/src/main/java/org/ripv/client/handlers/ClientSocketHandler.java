@@ -94,15 +94,32 @@ public final class ClientSocketHandler implements AutoCloseable {
     /**
      * Connects over TLS, trusting the server's certificate on first use ({@link Tls#trustOnFirstUse}
      * with {@link Tls#defaultKnownHosts}); a server whose certificate changed is refused.
+     * A {@code host} of the form {@code host1[:port],host2[:port]} connects to whichever answers
+     * ({@link Failover}; {@code port} is then the default port).
      */
     public static ClientSocketHandler connect(String host, int port) throws IOException {
+        if (host.indexOf(',') >= 0) {
+            return failover(host, port).connect((h, p) -> connect(h, p,
+                    Tls.trustOnFirstUse(h, p, Tls.defaultKnownHosts(), n -> log.warn("{}", n)), Failover.CONNECT));
+        }
         return connect(host, port, Tls.trustOnFirstUse(host, port, Tls.defaultKnownHosts(), n -> log.warn("{}", n)),
                 Duration.ofSeconds(10));
     }
 
-    /** Connects over plain TCP, to a server started with {@code --plain} (a test lab). */
+    /** Connects over plain TCP, to a server started with {@code --plain} (a test lab); a list as in {@link #connect(String, int)}. */
     public static ClientSocketHandler connectPlain(String host, int port) throws IOException {
+        if (host.indexOf(',') >= 0) {
+            return failover(host, port).connect((h, p) -> connect(h, p, SocketFactory.getDefault(), Failover.CONNECT));
+        }
         return connect(host, port, SocketFactory.getDefault(), Duration.ofSeconds(10));
+    }
+
+    /** One Failover per list, so that reconnects start with the server that answered last. */
+    private static final java.util.Map<String, Failover> FAILOVERS = new java.util.concurrent.ConcurrentHashMap<>();
+
+    private static Failover failover(String list, int defaultPort) {
+        return FAILOVERS.computeIfAbsent(list + "|" + defaultPort,
+                k -> new Failover(org.ripv.failover.ServerList.parse(list, defaultPort), null));
     }
 
     /** Connects with the given socket factory (an {@code SSLSocketFactory} for TLS). */
@@ -119,7 +136,8 @@ public final class ClientSocketHandler implements AutoCloseable {
             s.setTcpNoDelay(true);
             s.connect(new InetSocketAddress(host, port), (int) timeout.toMillis());
             if (s instanceof javax.net.ssl.SSLSocket tls) {
-                s.setSoTimeout((int) timeout.toMillis());
+                // A short connect deadline (a server list) must not cut a slow first handshake short.
+                s.setSoTimeout((int) Math.max(timeout.toMillis(), 10_000));
                 handshake(tls);
             }
             s.setSoTimeout(0);

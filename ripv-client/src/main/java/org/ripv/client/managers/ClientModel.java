@@ -72,6 +72,12 @@ public final class ClientModel {
     private boolean noticeIsError;
     private final List<Listener> listeners = new CopyOnWriteArrayList<>();
     private final ConsoleModel console = new ConsoleModel();
+    private final WorkflowModel workflows = new WorkflowModel();
+
+    /** The workflow queues and receipts looked at. */
+    public WorkflowModel workflows() {
+        return workflows;
+    }
 
     /** The live consoles of watched MailBoxes. */
     public ConsoleModel console() {

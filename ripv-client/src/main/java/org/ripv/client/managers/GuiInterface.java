@@ -75,4 +75,19 @@ public interface GuiInterface {
     /** Transcript entries ({@code ?history}, 555702) to put before a console's lines. */
     default void showHistory(org.ripv.messages.ConsoleBatch batch) {
     }
+
+    /** A request of a service tab was sent and runs until its final reply (COM shows it with Cancel). */
+    default void requestStarted(String service, long messageId, String command) {
+    }
+
+    /** A PROGRESS reply for a running request. */
+    default void requestProgress(String service, long messageId, Progress progress) {
+    }
+
+    /**
+     * A running request ended: its final reply came ({@code code} null for OK, else the error's
+     * code, e.g. {@code CANCELLED}), or it failed without one.
+     */
+    default void requestEnded(String service, long messageId, org.ripv.messages.ErrorCode code) {
+    }
 }

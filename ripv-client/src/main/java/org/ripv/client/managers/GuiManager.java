@@ -72,6 +72,7 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
     private final ReplyDispatcher dispatcher;
     private final Transfers transfers;
     private final DesktopNotice desktop;
+    private final WorkflowActions workflows;
 
     /** A manager for the Swing GUI: changes go to the event thread. */
     public GuiManager(ClientModel model) {
@@ -97,6 +98,7 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
         this.dispatcher = new ReplyDispatcher(this, requests);
         this.transfers = new Transfers(model, ui, io, session::connection, this, requests);
         this.desktop = new DesktopNotice(model::notice);
+        this.workflows = new WorkflowActions(model.workflows(), ui, io, session::connection);
     }
 
     private static ThreadFactory named(String prefix) {
@@ -244,9 +246,47 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
         return transfers.download(name, localDir);
     }
 
+    /**
+     * Sends a request whose final reply goes to the returned future only, not to the panels (the
+     * Fleet view's queries to the DatabaseServer: no DAB tab opens for them). Any thread.
+     */
+    public java.util.concurrent.CompletableFuture<OutgoingServerMessage> ask(String mailbox, String body) {
+        return requests.ask(mailbox, body);
+    }
+
     /** Writes bytes to a file off the UI thread (DAB export, DAV save); the outcome is a notice. */
     public void save(Path file, byte[] bytes) {
         transfers.save(file, bytes);
+    }
+
+    // ---------------------------------------------------------------- workflow queues (docs/workflows.md)
+
+    /** Asks a MailBox's queue ({@code ?queue}) and its last receipts ({@code ?receipts --last N}). Any thread. */
+    public void refreshQueue(String mailbox, int lastReceipts) {
+        workflows.refresh(mailbox, Math.max(1, Math.min(1000, lastReceipts)));
+    }
+
+    /**
+     * Uploads a workflow file from this computer and queues it ({@code ?queue add MAILBOX NAME});
+     * a refusal names the line and reason in {@link WorkflowModel.Queue#refusals()}. Any thread.
+     */
+    public void queueFile(String mailbox, Path local, ClientSocketHandler.IfExists ifExists) {
+        workflows.addFile(mailbox, local, ifExists);
+    }
+
+    /** Uploads a workflow written in the GUI as {@code name} and queues it. Any thread. */
+    public void queueText(String mailbox, String name, String text, ClientSocketHandler.IfExists ifExists) {
+        workflows.addText(mailbox, name, text, ifExists);
+    }
+
+    /** {@code ?queue remove MAILBOX ID}. Any thread. */
+    public void unqueue(String mailbox, long id) {
+        workflows.remove(mailbox, id);
+    }
+
+    /** {@code ?queue clear MAILBOX}. Any thread. */
+    public void clearQueue(String mailbox) {
+        workflows.clear(mailbox);
     }
 
     // ---------------------------------------------------------------- dispatch
@@ -341,7 +381,7 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
             }
             m.append(kind, text);
             model.fire(ClientModel.Kind.COM, service);
-            if (kind == LineKind.ERROR || kind == LineKind.REPLY) {
+            if (kind == LineKind.ERROR || kind == LineKind.REPLY || kind == LineKind.NOTICE) {
                 // The status bar shows the latest outcome: a later success replaces an error.
                 model.notice(service + ": " + text, kind == LineKind.ERROR);
             }
@@ -358,6 +398,67 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
             if (m != null && !Objects.equals(m.progress(), progress)) {
                 m.progress(progress);
                 model.fire(ClientModel.Kind.COM, service);
+            }
+        });
+    }
+
+    @Override
+    public void requestStarted(String service, long messageId, String command) {
+        ui.execute(() -> {
+            ServiceModel m = model.service(service);
+            if (m != null) {
+                m.started(messageId, command, System.currentTimeMillis());
+                model.fire(ClientModel.Kind.COM, service);
+            }
+        });
+    }
+
+    @Override
+    public void requestProgress(String service, long messageId, Progress progress) {
+        ui.execute(() -> {
+            ServiceModel m = service == null ? null : model.service(service);
+            if (m != null && m.progress(messageId, progress)) {
+                model.fire(ClientModel.Kind.COM, service);
+            }
+        });
+    }
+
+    @Override
+    public void requestEnded(String service, long messageId, org.ripv.messages.ErrorCode code) {
+        ui.execute(() -> {
+            ServiceModel m = model.service(service);
+            if (m != null && m.ended(messageId) != null) {
+                model.fire(ClientModel.Kind.COM, service);
+            }
+        });
+    }
+
+    /**
+     * Asks the server to stop one of a tab's running requests ({@code ?cancel MESSAGE-ID}): the
+     * request shows "cancelling" until its final reply, ERROR {@code CANCELLED}, ends it. When the
+     * server refuses (the service cannot stop that command, no rights), the refusal shows in the
+     * status bar and the request runs on. Call on the UI thread.
+     */
+    public void cancel(String service, long messageId) {
+        ServiceModel m = model.service(service);
+        if (m == null || !m.cancelling(messageId, true)) {
+            return;
+        }
+        model.fire(ClientModel.Kind.COM, service);
+        requests.call("?cancel " + messageId, (reply, e) -> {
+            boolean refused = e != null || reply.status() == org.ripv.messages.Status.ERROR;
+            if (e != null) {
+                showNotice("'?cancel " + messageId + "' got no reply: " + Failures.describe(e), true);
+            }
+            if (refused) {
+                ui.execute(() -> {
+                    ServiceModel now = model.service(service);
+                    if (now != null && now.cancelling(messageId, false)) {
+                        model.fire(ClientModel.Kind.COM, service);
+                    }
+                });
+            } else if (!reply.footer().replyText().isBlank()) {
+                showNotice(reply.footer().replyText(), false);
             }
         });
     }
@@ -401,8 +502,20 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
     public void showConsole(org.ripv.messages.ConsoleBatch batch, boolean live) {
         ui.execute(() -> {
             model.console().add(batch);
+            for (ServiceModel s : model.services()) {
+                if (belongsTo(batch.mailbox(), s.name()) && s.console(batch.mailbox(), batch.entries())) {
+                    model.fire(ClientModel.Kind.MAILBOXES, s.name()); // the badges in SEL and MAM
+                }
+            }
             if (live) {
                 for (org.ripv.messages.ConsoleEntry e : batch.entries()) {
+                    if (e.kind() == org.ripv.messages.ConsoleEntry.Kind.EVENT
+                            && (e.event() == org.ripv.messages.VehicleEvent.WORKFLOW_DONE
+                            || e.event() == org.ripv.messages.VehicleEvent.WORKFLOW_FAILED)) {
+                        String vehicle = e.mailbox().substring(e.mailbox().lastIndexOf('>') + 1);
+                        model.notice(vehicle + " " + e.event() + (e.text().isEmpty() ? "" : ": " + e.text()),
+                                e.event() == org.ripv.messages.VehicleEvent.WORKFLOW_FAILED);
+                    }
                     if (ConsoleModel.notifies(e)) {
                         String vehicle = e.mailbox().substring(e.mailbox().lastIndexOf('>') + 1);
                         desktop.show("RIPV: " + vehicle + " " + e.event(), e.text().isEmpty() ? e.mailbox() : e.text(),

@@ -45,10 +45,16 @@ final class ReplyDispatcher {
     void dispatch(OutgoingServerMessage reply) {
         Footer f = reply.footer();
         Header h = reply.header();
+        if (requests.quiet(h.messageId(), f.status().isFinal())) {
+            return; // asked by a view for itself (GuiManager.ask): the future has it
+        }
         Origin origin = requests.origin(h.messageId(), f.status().isFinal());
         String originService = origin == null ? null : origin.service();
         boolean echo = origin != null && origin.echo();
         Result result = f.result();
+        if (originService != null && echo && !h.isServerCommand() && f.status().isFinal()) {
+            gui.requestEnded(originService, h.messageId(), f.status() == Status.ERROR ? f.errorCode() : null);
+        }
         if (f.status() == Status.ERROR) {
             error(reply, origin);
             if (h.isServerCommand()) {
@@ -171,7 +177,10 @@ final class ReplyDispatcher {
         String full = text + " [" + f.errorCode() + " " + f.errorCode().number() + "]";
         String service = serviceOf(reply.header(), origin == null ? null : origin.service());
         log.info("error reply to '{}': {}", reply.header().body(), full);
-        if (service != null) {
+        if (service != null && f.errorCode() == org.ripv.messages.ErrorCode.CANCELLED) {
+            // Not a failure: someone stopped it on purpose, and the line says who.
+            gui.showReply(service, LineKind.NOTICE, "cancelled '" + reply.header().body() + "': " + text);
+        } else if (service != null) {
             gui.showReply(service, LineKind.ERROR, full);
         } else {
             // A background request (refresh, status): the status bar is where it shows.
@@ -233,6 +242,7 @@ final class ReplyDispatcher {
         if (f.status() == Status.PROGRESS) {
             if (result instanceof Progress p) {
                 gui.showProgress(service, p);
+                gui.requestProgress(service, reply.header().messageId(), p);
             }
             if (!f.replyText().isBlank() && !(result instanceof Progress)) {
                 gui.showReply(service, LineKind.PROGRESS, f.replyText());

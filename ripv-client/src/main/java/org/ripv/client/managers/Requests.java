@@ -25,6 +25,8 @@ final class Requests {
     private final Supplier<ClientSocketHandler> conn;
     private final GuiInterface gui;
     private final Map<Long, Origin> origins = new ConcurrentHashMap<>();
+    /** Requests whose replies go to their caller only (see {@link #ask}), not to the panels. */
+    private final java.util.Set<Long> quiet = ConcurrentHashMap.newKeySet();
 
     Requests(ClientModel model, Executor io, Supplier<ClientSocketHandler> conn, GuiInterface gui) {
         this.model = model;
@@ -77,6 +79,26 @@ final class Requests {
         });
     }
 
+    /**
+     * Sends a server command in the background and hands its final reply (or the failure) to
+     * {@code then}, on the reader or an I/O thread. ERROR replies also reach the status bar
+     * through dispatch.
+     */
+    void call(String command, java.util.function.BiConsumer<org.ripv.messages.OutgoingServerMessage, Throwable> then) {
+        io.execute(() -> {
+            ClientSocketHandler h = conn.get();
+            if (h == null) {
+                then.accept(null, new IOException("not connected to a server"));
+                return;
+            }
+            try {
+                h.send("", command, Priority.NORMAL, null).whenComplete(then);
+            } catch (IOException | RuntimeException e) {
+                then.accept(null, e);
+            }
+        });
+    }
+
     /** See {@link GuiManager#sendCommand}; on the UI thread. */
     void sendCommand(String service, String line) {
         ServiceModel m = model.service(service);
@@ -117,6 +139,43 @@ final class Requests {
         send("", "?watch " + mailbox, Priority.NORMAL, null);
     }
 
+    /**
+     * Sends a request whose final reply only completes the returned future (the Fleet view's
+     * queries): dispatch leaves it alone, so no DAB tab opens for it. Any thread.
+     */
+    java.util.concurrent.CompletableFuture<org.ripv.messages.OutgoingServerMessage> ask(String mailbox, String body) {
+        java.util.concurrent.CompletableFuture<org.ripv.messages.OutgoingServerMessage> out =
+                new java.util.concurrent.CompletableFuture<>();
+        io.execute(() -> {
+            ClientSocketHandler h = conn.get();
+            if (h == null) {
+                out.completeExceptionally(new IOException("not connected to a server"));
+                return;
+            }
+            Header header = Header.request(h.nextId(), mailbox, body, Priority.NORMAL);
+            quiet.add(header.messageId()); // before sending: the reply may beat us back
+            try {
+                h.send(header, null).whenComplete((reply, e) -> {
+                    if (e != null) {
+                        quiet.remove(header.messageId());
+                        out.completeExceptionally(e);
+                    } else {
+                        out.complete(reply);
+                    }
+                });
+            } catch (IOException | RuntimeException e) {
+                quiet.remove(header.messageId());
+                out.completeExceptionally(e);
+            }
+        });
+        return out;
+    }
+
+    /** Whether a reply answers an {@link #ask}; forgotten once the reply is final. */
+    boolean quiet(long messageId, boolean isFinal) {
+        return isFinal ? quiet.remove(messageId) : quiet.contains(messageId);
+    }
+
     /** Where the request a reply answers came from, or null; forgotten once the reply is final. */
     Origin origin(long messageId, boolean isFinal) {
         return isFinal ? origins.remove(messageId) : origins.get(messageId);
@@ -131,19 +190,30 @@ final class Requests {
                 return;
             }
             Header header = Header.request(h.nextId(), mailbox, body, priority);
+            // A tab's own command to a service runs until its final reply: COM shows it, with Cancel.
+            boolean tracked = origin != null && origin.echo() && !mailbox.isEmpty();
             if (origin != null) {
                 origins.put(header.messageId(), origin); // before sending: the reply may beat us back
+            }
+            if (tracked) {
+                gui.requestStarted(origin.service(), header.messageId(), body);
             }
             try {
                 h.send(header, null).whenComplete((reply, e) -> {
                     if (e != null) {
                         origins.remove(header.messageId());
                         failed(origin, body, Failures.describe(e));
+                        if (tracked) {
+                            gui.requestEnded(origin.service(), header.messageId(), null);
+                        }
                     }
                 });
             } catch (IOException | RuntimeException e) {
                 origins.remove(header.messageId());
                 failed(origin, body, Failures.describe(e));
+                if (tracked) {
+                    gui.requestEnded(origin.service(), header.messageId(), null);
+                }
             }
         });
     }

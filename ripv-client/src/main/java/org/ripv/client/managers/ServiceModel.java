@@ -26,6 +26,27 @@ public final class ServiceModel {
     /** One line (or block) of the COM reply area. */
     public record Line(LineKind kind, String text) {}
 
+    /**
+     * A request this tab sent to a service that has not had its final reply yet (a vehicle
+     * command, a transfer, a query, a plot): the COM panel shows it with a Cancel button.
+     *
+     * @param messageId  the id {@code ?cancel} takes
+     * @param command    what was sent
+     * @param started    when it was sent (epoch ms)
+     * @param progress   the service's latest PROGRESS for it, or null
+     * @param cancelling {@code ?cancel} was sent and its outcome is not known yet
+     */
+    public record Running(long messageId, String command, long started, Progress progress, boolean cancelling) {
+        /** "ymodem:get LOG  12 KB / 64 KB  1 KB/s  0:52 left", or "running: dir  0:07" before any progress. */
+        public String text(long now) {
+            if (progress != null) {
+                return (cancelling ? "cancelling: " : "") + ProgressText.of(command, progress);
+            }
+            long s = Math.max(0, (now - started) / 1000);
+            return (cancelling ? "cancelling: " : "running: ") + command + "  " + ProgressText.clock(s);
+        }
+    }
+
     /** The DAV panel's picture: the reply's bytes and, when they decode, the image. */
     public record Picture(ImageResult result, BufferedImage image) {}
 
@@ -44,6 +65,7 @@ public final class ServiceModel {
     private final java.util.Map<String, List<String>> histories = new java.util.HashMap<>();
     private final List<Line> transcript = new ArrayList<>();
     private Progress progress;
+    private final java.util.LinkedHashMap<Long, Running> running = new java.util.LinkedHashMap<>();
     private final List<TableResult> tables = new ArrayList<>();
     private Picture picture;
     private long transcriptRevision;
@@ -90,7 +112,12 @@ public final class ServiceModel {
      */
     public String serviceStatus() {
         if (progress != null) {
-            return "busy: " + progress.what() + (progress.percent() >= 0 ? " (" + progress.percent() + "%)" : "");
+            String eta = ProgressText.eta(progress);
+            // Led by the command when it is one of this tab's ("ymodem:get *.SBD · 0123.SBD").
+            String what = running.values().stream().filter(r -> progress.equals(r.progress())).findFirst()
+                    .map(r -> ProgressText.label(r.command(), progress)).orElse(progress.what());
+            return "busy: " + what + (progress.percent() >= 0 ? " (" + progress.percent() + "%"
+                    + (eta.isEmpty() ? "" : ", ETA " + eta) + ")" : "");
         }
         return serviceStatus;
     }
@@ -107,6 +134,11 @@ public final class ServiceModel {
     /** The transfer or long command in progress, or null. */
     public Progress progress() {
         return progress;
+    }
+
+    /** The requests of this tab still waiting for their final reply, oldest first. */
+    public List<Running> running() {
+        return List.copyOf(running.values());
     }
 
     /** DAB: one entry per query answered, oldest first. */
@@ -169,6 +201,28 @@ public final class ServiceModel {
         }
     }
 
+    /**
+     * Brings the MailBoxes' call state up to date with console entries pushed since the last
+     * {@code ?mailboxes} ({@link SessionStates}); true when a badge changed.
+     */
+    boolean console(String mailbox, List<org.ripv.messages.ConsoleEntry> entries) {
+        for (int i = 0; i < mailboxes.size(); i++) {
+            MailboxStatus m = mailboxes.get(i);
+            if (m.address().equals(mailbox)) {
+                org.ripv.messages.SessionState st = m.session();
+                for (org.ripv.messages.ConsoleEntry e : entries) {
+                    st = SessionStates.apply(st, e);
+                }
+                if (java.util.Objects.equals(st, m.session())) {
+                    return false;
+                }
+                mailboxes.set(i, m.withSession(st));
+                return true;
+            }
+        }
+        return false;
+    }
+
     void target(String mailbox) {
         this.target = mailbox == null ? "" : mailbox;
         this.serviceStatus = "";
@@ -210,6 +264,40 @@ public final class ServiceModel {
 
     void progress(Progress p) {
         this.progress = p;
+    }
+
+    void started(long messageId, String command, long now) {
+        running.put(messageId, new Running(messageId, command, now, null, false));
+    }
+
+    /** A PROGRESS reply for a running request; false when it is not one of ours. */
+    boolean progress(long messageId, Progress p) {
+        Running r = running.get(messageId);
+        if (r == null) {
+            return false;
+        }
+        running.put(messageId, new Running(messageId, r.command(), r.started(), p, r.cancelling()));
+        return true;
+    }
+
+    /** {@code ?cancel} sent (true) or refused (false); false when the request is not running. */
+    boolean cancelling(long messageId, boolean on) {
+        Running r = running.get(messageId);
+        if (r == null) {
+            return false;
+        }
+        running.put(messageId, new Running(messageId, r.command(), r.started(), r.progress(), on));
+        return true;
+    }
+
+    /** The final reply came (or the request failed): the request is no longer running. */
+    Running ended(long messageId) {
+        return running.remove(messageId);
+    }
+
+    /** The connection went: nothing of ours runs any more. */
+    void endAll() {
+        running.clear();
     }
 
     void addTable(TableResult t) {

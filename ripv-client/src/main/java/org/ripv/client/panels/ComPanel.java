@@ -12,7 +12,6 @@ import javax.swing.JButton;
 import javax.swing.JComboBox;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
-import javax.swing.JProgressBar;
 import javax.swing.JScrollPane;
 import javax.swing.JTextArea;
 import javax.swing.JTextField;
@@ -37,16 +36,18 @@ public final class ComPanel extends JPanel {
     private final JLabel priorityLabel = value("priorityLabel");
     private final JLabel serviceStatus = value("serviceStatus");
     private final JTextArea replies = new JTextArea();
-    private final JProgressBar progress = new JProgressBar();
+    private final RunningPanel running;
     private final CommandHistory history = new CommandHistory();
     private long shownRevision = -1;
     private String shownTarget;
     private boolean updating;
+    private java.util.List<ServiceModel.Running> shownRunning = java.util.List.of();
 
     public ComPanel(String service, GuiManager manager) {
         super(new BorderLayout(4, 4));
         this.service = service;
         this.manager = manager;
+        this.running = new RunningPanel(service, manager);
         setName("com");
         setBorder(BorderFactory.createTitledBorder("COM — communications"));
 
@@ -115,12 +116,22 @@ public final class ComPanel extends JPanel {
         buttons.add(clear);
         line.add(buttons, BorderLayout.EAST);
 
-        progress.setName("comProgress");
-        progress.setStringPainted(true);
-        progress.setVisible(false);
+        running.setVisible(false);
+        // Escape anywhere in COM cancels the newest running request, as its Cancel button does.
+        getInputMap(WHEN_ANCESTOR_OF_FOCUSED_COMPONENT).put(javax.swing.KeyStroke.getKeyStroke(KeyEvent.VK_ESCAPE, 0),
+                "ripv-cancel");
+        getActionMap().put("ripv-cancel", new javax.swing.AbstractAction() {
+            @Override
+            public void actionPerformed(java.awt.event.ActionEvent e) {
+                java.util.List<ServiceModel.Running> now = shownRunning;
+                if (!now.isEmpty()) {
+                    manager.cancel(service, now.get(now.size() - 1).messageId());
+                }
+            }
+        });
 
         JPanel south = new JPanel(new BorderLayout(0, 2));
-        south.add(progress, BorderLayout.NORTH);
+        south.add(running, BorderLayout.NORTH);
         south.add(line, BorderLayout.SOUTH);
 
         add(labels, BorderLayout.NORTH);
@@ -169,8 +180,7 @@ public final class ComPanel extends JPanel {
             priorityLabel.setText(m.priority().name().toLowerCase(java.util.Locale.ROOT) + " (" + m.priority().level() + ")");
             priority.setSelectedItem(m.priority());
             serviceStatus.setText(m.serviceStatus().isEmpty() ? " " : m.serviceStatus());
-            serviceStatus.setForeground(m.serviceStatus().startsWith("not") ? Colors.error()
-                    : javax.swing.UIManager.getColor("Label.foreground"));
+            colourStatus();
             // A value too long for the panel shows whole in its tooltip.
             tip(talkingTo, "Talking To", m.target());
             tip(lastAction, "Last Action", m.lastAction());
@@ -186,15 +196,25 @@ public final class ComPanel extends JPanel {
                 shownTarget = m.target(); // each MailBox has its own history
                 history.reset(m.history());
             }
-            Progress p = m.progress();
-            progress.setVisible(p != null);
-            if (p != null) {
-                progress.setIndeterminate(p.percent() < 0);
-                progress.setValue(Math.max(0, p.percent()));
-                progress.setString(progressText(p));
-            }
+            running.update(m);
+            shownRunning = m.running();
         } finally {
             updating = false;
+        }
+    }
+
+    /** SS in red when the MailBox cannot take commands, in the current theme's red. */
+    private void colourStatus() {
+        serviceStatus.setForeground(serviceStatus.getText().startsWith("not") ? Colors.error()
+                : javax.swing.UIManager.getColor("Label.foreground"));
+    }
+
+    /** A theme change: SS takes the new theme's red (it was set for the old one). */
+    @Override
+    public void updateUI() {
+        super.updateUI();
+        if (serviceStatus != null) {
+            javax.swing.SwingUtilities.invokeLater(this::colourStatus); // after the labels took the new look
         }
     }
 
@@ -204,18 +224,12 @@ public final class ComPanel extends JPanel {
 
     /** "ymodem:get LOG  12 KB / 64 KB  1 KB/s  0:52 left": the COM progress bar's words. */
     static String progressText(Progress p) {
-        StringBuilder b = new StringBuilder(p.what()).append("  ").append(org.ripv.client.managers.Transfer.size(p.done()));
-        if (p.total() > 0) {
-            b.append(" / ").append(org.ripv.client.managers.Transfer.size(p.total()));
-        }
-        if (p.ratePerSecond() > 0) {
-            b.append("  ").append(org.ripv.client.managers.Transfer.size((long) p.ratePerSecond())).append("/s");
-            if (p.total() > p.done()) {
-                long eta = (long) Math.ceil((p.total() - p.done()) / p.ratePerSecond());
-                b.append("  ").append(eta / 60).append(':').append(String.format(java.util.Locale.ROOT, "%02d", eta % 60)).append(" left");
-            }
-        }
-        return b.toString();
+        return org.ripv.client.managers.ProgressText.of(p);
+    }
+
+    /** The running requests' progress bars' words, oldest first. */
+    public java.util.List<String> runningTexts() {
+        return running.texts();
     }
 
     /** Puts the keyboard focus in the command line (when its tab is shown). */

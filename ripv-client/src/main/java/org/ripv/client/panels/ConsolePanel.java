@@ -136,30 +136,8 @@ public final class ConsolePanel extends JPanel {
     /** The server's state for the MailBox, brought up to date by the console's own entries since. */
     SessionState state() {
         SessionState s = serverState;
-        List<ConsoleEntry> entries = model.console().entries(mailbox);
-        for (ConsoleEntry e : entries) {
-            if (s != null && e.time() <= s.lastContact()) {
-                continue;
-            }
-            SessionState.State st = s == null ? SessionState.State.UNKNOWN : s.state();
-            long contact = s == null ? 0 : s.lastContact();
-            int calls = s == null ? 0 : s.calls();
-            if (e.kind() == ConsoleEntry.Kind.EVENT) {
-                switch (e.event()) {
-                    case SURFACED -> {
-                        st = SessionState.State.ON_CALL;
-                        calls++;
-                    }
-                    case DIVED -> st = SessionState.State.DIVED;
-                    case LINK_LOST -> st = SessionState.State.LOST;
-                    default -> { }
-                }
-            }
-            if (e.kind() != ConsoleEntry.Kind.COMMAND) {
-                contact = Math.max(contact, e.time());
-            }
-            s = new SessionState(st, contact, e.lat() != null ? e.lat() : s == null ? null : s.lat(),
-                    e.lon() != null ? e.lon() : s == null ? null : s.lon(), calls, e.event() != null ? e.event() : s == null ? null : s.lastEvent());
+        for (ConsoleEntry e : model.console().entries(mailbox)) {
+            s = org.ripv.client.managers.SessionStates.apply(s, e);
         }
         return s;
     }

@@ -55,7 +55,12 @@ public final class DatabasePanel extends JPanel {
         export.setMnemonic(java.awt.event.KeyEvent.VK_X);
         export.setName("exportButton");
         export.setToolTipText("Save this tab's table as a CSV file");
-        export.addActionListener(e -> export());
+        export.addActionListener(e -> export(false));
+        JButton json = new JButton("Export JSON");
+        json.setMnemonic(java.awt.event.KeyEvent.VK_J);
+        json.setName("exportJsonButton");
+        json.setToolTipText("Save this tab's table as JSON: numbers as numbers, NULL as null");
+        json.addActionListener(e -> export(true));
         JButton close = new JButton("Close");
         close.setMnemonic(java.awt.event.KeyEvent.VK_W);
         close.setToolTipText("Close this tab");
@@ -68,6 +73,7 @@ public final class DatabasePanel extends JPanel {
         JPanel buttons = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 0));
         buttons.add(copy);
         buttons.add(export);
+        buttons.add(json);
         buttons.add(close);
         add(empty, BorderLayout.NORTH);
         add(tabs, BorderLayout.CENTER);
@@ -150,18 +156,24 @@ public final class DatabasePanel extends JPanel {
                 + " row(s)", false);
     }
 
-    private void export() {
+    private void export(boolean json) {
         int i = tabs.getSelectedIndex();
         if (i < 0) {
             return;
         }
         TableResult r = shown.get(i);
         JFileChooser chooser = new JFileChooser();
-        chooser.setDialogTitle("Export " + title(r.query()) + " as CSV");
-        chooser.setSelectedFile(new java.io.File("query-" + (i + 1) + ".csv"));
+        chooser.setDialogTitle("Export " + title(r.query()) + (json ? " as JSON" : " as CSV"));
+        chooser.setSelectedFile(new java.io.File("query-" + (i + 1) + (json ? ".json" : ".csv")));
         if (chooser.showSaveDialog(this) == JFileChooser.APPROVE_OPTION) {
-            manager.save(chooser.getSelectedFile().toPath(), TableText.csv(r).getBytes(StandardCharsets.UTF_8));
+            manager.save(chooser.getSelectedFile().toPath(), exported(i, json));
         }
+    }
+
+    /** What Export CSV / Export JSON write for a tab ({@link org.ripv.export.TableExport}, shared with the CLI). */
+    public byte[] exported(int tab, boolean json) {
+        TableResult r = shown.get(tab);
+        return (json ? org.ripv.export.TableExport.json(r) : TableText.csv(r)).getBytes(StandardCharsets.UTF_8);
     }
 
     /** A read-only table model over a {@link TableResult}; numeric SQL types sort as numbers. */

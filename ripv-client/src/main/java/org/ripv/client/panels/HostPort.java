@@ -11,11 +11,18 @@ public record HostPort(String host, int port) {
         }
     }
 
-    /** Parses {@code host}, {@code host:port}, {@code [v6]} or {@code [v6]:port}. */
+    /**
+     * Parses {@code host}, {@code host:port}, {@code [v6]} or {@code [v6]:port}; or a list of
+     * them ({@code host1,host2:4445}: an active server and its standbys), kept whole as the host,
+     * which {@code ClientSocketHandler.connect} then tries in turn.
+     */
     public static HostPort parse(String text, int defaultPort) {
         String t = text == null ? "" : text.strip();
         if (t.isEmpty()) {
             throw new IllegalArgumentException("enter a server as host or host:port");
+        }
+        if (t.indexOf(',') >= 0) {
+            return new HostPort(org.ripv.failover.ServerList.parse(t, defaultPort).toString(), defaultPort);
         }
         String host = t;
         String port = null;
@@ -49,6 +56,9 @@ public record HostPort(String host, int port) {
 
     @Override
     public String toString() {
+        if (host.indexOf(',') >= 0) {
+            return host;
+        }
         return (host.indexOf(':') >= 0 ? "[" + host + "]" : host) + ":" + port;
     }
 }

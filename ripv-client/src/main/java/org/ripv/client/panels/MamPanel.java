@@ -1,7 +1,6 @@
 package org.ripv.client.panels;
 
 import java.awt.BorderLayout;
-import java.awt.FlowLayout;
 import javax.swing.BorderFactory;
 import javax.swing.JButton;
 import javax.swing.JPanel;
@@ -19,6 +18,8 @@ public final class MamPanel extends JPanel {
     private final MailboxTree tree;
     private final JButton lock = new JButton("Lock");
     private final JButton unlock = new JButton("Unlock");
+    private final JButton queue = new JButton("Queue…");
+    private WorkflowDialog workflows;
     private String target = "";
 
     public MamPanel(String service, GuiManager manager) {
@@ -43,8 +44,14 @@ public final class MamPanel extends JPanel {
         unlock.setMnemonic(java.awt.event.KeyEvent.VK_K);
         unlock.setToolTipText("Release your lock on the target MailBox (?unlock)");
         unlock.addActionListener(e -> manager.sendCommand(service, "?unlock " + target));
-        JPanel buttons = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 0));
+        queue.setName("queueButton");
+        queue.setMnemonic(java.awt.event.KeyEvent.VK_Q);
+        queue.setToolTipText("The target MailBox's workflow queue and receipts: list, add (a file or written here), remove, clear");
+        queue.addActionListener(e -> openWorkflows(manager));
+        // Two rows, so every button shows in a narrow quadrant (1280×800) as FIM's do.
+        JPanel buttons = new JPanel(new java.awt.GridLayout(2, 2, 4, 2));
         buttons.add(refresh);
+        buttons.add(queue);
         buttons.add(lock);
         buttons.add(unlock);
         add(buttons, BorderLayout.SOUTH);
@@ -56,6 +63,23 @@ public final class MamPanel extends JPanel {
         tree.update(m.mailboxes(), m.target());
         lock.setEnabled(!target.isEmpty());
         unlock.setEnabled(!target.isEmpty());
+        queue.setEnabled(!target.isEmpty());
+    }
+
+    /** Opens (or brings to the front) the workflow window of the target MailBox. */
+    public WorkflowDialog openWorkflows(GuiManager manager) {
+        if (target.isEmpty()) {
+            return null;
+        }
+        if (workflows == null || !workflows.isDisplayable() || !workflows.mailbox().equals(target)) {
+            if (workflows != null) {
+                workflows.dispose();
+            }
+            workflows = new WorkflowDialog(javax.swing.SwingUtilities.getWindowAncestor(this), manager, target);
+        }
+        workflows.setVisible(true);
+        workflows.toFront();
+        return workflows;
     }
 
     public MailboxTree tree() {

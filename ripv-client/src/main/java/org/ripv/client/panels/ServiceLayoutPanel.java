@@ -24,8 +24,10 @@ public final class ServiceLayoutPanel extends JPanel {
     private final MamPanel mam;
     private final FimPanel fim;
     private final DatabasePanel dab;
+    private final org.ripv.client.charts.PlotPanel plot;
     private final ImagePanel dav;
     private final ConsolePanel console;
+    private final org.ripv.client.layout.Quadrants quadrants;
 
     public ServiceLayoutPanel(ServiceModel model, GuiManager manager) {
         this(model, manager, null);
@@ -41,9 +43,10 @@ public final class ServiceLayoutPanel extends JPanel {
         mam = new MamPanel(service, manager);
         fim = new FimPanel(manager);
         dab = "DAB".equals(kind) ? new DatabasePanel(service, manager) : null;
-        dav = "DAV".equals(kind) ? new ImagePanel(manager) : null;
+        plot = "DAV".equals(kind) ? new org.ripv.client.charts.PlotPanel(manager) : null; // the chart, or the JPEG
+        dav = plot == null ? null : plot.image();
         console = dab == null && dav == null && client != null ? new ConsolePanel(service, client, manager) : null;
-        JComponent fourth = dab != null ? dab : dav != null ? dav : console;
+        JComponent fourth = dab != null ? dab : plot != null ? plot : console;
 
         // Fixed base sizes: GridBag then shares the window by weight alone, so the quadrants do
         // not jump about when a long mailbox name or path arrives.
@@ -58,6 +61,12 @@ public final class ServiceLayoutPanel extends JPanel {
         right = split(javax.swing.JSplitPane.VERTICAL_SPLIT, mam, fim, 0.45, "rightSplit");
         columns = split(javax.swing.JSplitPane.HORIZONTAL_SPLIT, left != null ? left : com, right, 0.65, "columnSplit");
         add(columns, java.awt.BorderLayout.CENTER);
+        quadrants = new org.ripv.client.layout.Quadrants(this, columns, left, right, com, fourth, mam, fim);
+    }
+
+    /** Enlarging, maximising and restoring this tab's quadrants (View menu, Ctrl+Shift+E / M / R). */
+    public org.ripv.client.layout.Quadrants quadrants() {
+        return quadrants;
     }
 
     private static javax.swing.JSplitPane split(int orientation, JComponent a, JComponent b, double weight, String name) {
@@ -125,8 +134,8 @@ public final class ServiceLayoutPanel extends JPanel {
                 }
             }
             case IMAGE -> {
-                if (dav != null) {
-                    dav.update(m);
+                if (plot != null) {
+                    plot.update(m);
                 }
             }
             case FILES -> fim.updateFiles(model);
@@ -151,8 +160,8 @@ public final class ServiceLayoutPanel extends JPanel {
         if (dab != null) {
             dab.update(m);
         }
-        if (dav != null) {
-            dav.update(m);
+        if (plot != null) {
+            plot.update(m);
         }
     }
 
@@ -178,8 +187,13 @@ public final class ServiceLayoutPanel extends JPanel {
         return dab;
     }
 
-    /** The DAV panel, or null. */
+    /** The DAV panel's JPEG view, or null. */
     public ImagePanel dav() {
         return dav;
+    }
+
+    /** The DAV panel (interactive chart, or the JPEG), or null. */
+    public org.ripv.client.charts.PlotPanel plot() {
+        return plot;
     }
 }

@@ -8,36 +8,14 @@ import org.ripv.messages.TableResult;
 public final class TableText {
     private TableText() {}
 
-    /** The whole table, header first, CRLF line ends, SQL NULL as an empty field. */
+    /** The whole table, header first, CRLF line ends, SQL NULL as an empty field ({@link org.ripv.export.TableExport}). */
     public static String csv(TableResult t) {
-        StringBuilder b = new StringBuilder();
-        row(b, t.columns().toArray(String[]::new));
-        for (String[] r : t.rows()) {
-            row(b, r);
-        }
-        return b.toString();
+        return org.ripv.export.TableExport.csv(t);
     }
 
-    private static void row(StringBuilder b, String[] values) {
-        for (int i = 0; i < values.length; i++) {
-            if (i > 0) {
-                b.append(',');
-            }
-            b.append(csvField(values[i]));
-        }
-        b.append("\r\n");
-    }
-
-    /** One CSV field, quoted when it holds a comma, quote or line break. */
+    /** One CSV field, quoted when it needs it. */
     public static String csvField(String v) {
-        if (v == null) {
-            return "";
-        }
-        if (v.indexOf(',') >= 0 || v.indexOf('"') >= 0 || v.indexOf('\n') >= 0 || v.indexOf('\r') >= 0
-                || (!v.isEmpty() && (Character.isWhitespace(v.charAt(0)) || Character.isWhitespace(v.charAt(v.length() - 1))))) {
-            return '"' + v.replace("\"", "\"\"") + '"';
-        }
-        return v;
+        return org.ripv.export.TableExport.field(v);
     }
 
     /** The selected rows (all when none is selected) as TSV with a header line, in view order. */

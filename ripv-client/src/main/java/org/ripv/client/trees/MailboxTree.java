@@ -107,13 +107,54 @@ public final class MailboxTree extends JTree {
         throw new IllegalArgumentException("no mailbox '" + handle + "' under " + service);
     }
 
+    /** "on call, last contact 2026-…Z, at 41.63323, -70.53647, 3 calls": a vehicle node's tooltip. */
+    public static String sessionTip(MailboxStatus s) {
+        org.ripv.messages.SessionState st = s.session();
+        if (st == null) {
+            return "";
+        }
+        StringBuilder b = new StringBuilder(st.state().words());
+        if (st.lastContact() > 0) {
+            b.append(", last contact ").append(java.time.Instant.ofEpochMilli(st.lastContact()));
+        }
+        if (st.hasPosition()) {
+            b.append(String.format(java.util.Locale.ROOT, ", at %.5f, %.5f", st.lat(), st.lon()));
+        }
+        return b.append(", ").append(st.calls()).append(st.calls() == 1 ? " call" : " calls").toString();
+    }
+
+    /** Re-words every node, so times since last contact stay current. */
+    public void tick() {
+        int[] idx = new int[root.getChildCount()];
+        for (int k = 0; k < idx.length; k++) {
+            idx[k] = k;
+        }
+        if (idx.length > 0) {
+            treeModel.nodesChanged(root, idx);
+        }
+    }
+
+    private final javax.swing.Timer ticker = new javax.swing.Timer(30_000, e -> tick());
+
+    @Override
+    public void addNotify() {
+        super.addNotify();
+        ticker.start();
+    }
+
+    @Override
+    public void removeNotify() {
+        ticker.stop();
+        super.removeNotify();
+    }
+
     @Override
     public String getToolTipText(java.awt.event.MouseEvent e) {
         TreePath p = getPathForLocation(e.getX(), e.getY());
         if (p != null && p.getLastPathComponent() instanceof DefaultMutableTreeNode n && n.getUserObject() instanceof Item i) {
             MailboxStatus s = i.status();
             return s.address() + ": " + (s.available() ? "available" : "not available")
-                    + (s.detail().isBlank() ? "" : " — " + s.detail());
+                    + (s.detail().isBlank() ? "" : " — " + s.detail()) + (s.session() == null ? "" : "; " + sessionTip(s));
         }
         return "Pick a MailBox to talk to (it becomes Talking To, TT)";
     }

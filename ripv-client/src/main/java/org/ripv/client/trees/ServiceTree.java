@@ -23,6 +23,14 @@ public final class ServiceTree extends JTree {
 
     /** @param onSelect told of the service the operator picked */
     public ServiceTree(Consumer<String> onSelect) {
+        this(onSelect, (service, mailbox) -> onSelect.accept(service));
+    }
+
+    /**
+     * @param onSelect  told of the service the operator picked
+     * @param onVehicle told of the service and MailBox when the operator picks a vehicle under a service
+     */
+    public ServiceTree(Consumer<String> onSelect, java.util.function.BiConsumer<String, String> onVehicle) {
         setModel(treeModel);
         setName("serviceTree");
         setRootVisible(true);
@@ -33,8 +41,57 @@ public final class ServiceTree extends JTree {
                     && e.getNewLeadSelectionPath().getLastPathComponent() instanceof DefaultMutableTreeNode n
                     && n.getUserObject() instanceof Item item) {
                 onSelect.accept(item.descriptor().name());
+            } else if (!rebuilding && e.getNewLeadSelectionPath() != null
+                    && e.getNewLeadSelectionPath().getLastPathComponent() instanceof DefaultMutableTreeNode n
+                    && n.getUserObject() instanceof Vehicle v) {
+                onVehicle.accept(v.service(), v.status().address());
             }
         });
+        // "last contact N min ago" moves on by itself.
+        ticker = new javax.swing.Timer(30_000, e -> tick());
+    }
+
+    private final javax.swing.Timer ticker;
+
+    /**
+     * A vehicle MailBox under its service (one whose server state is known: it has published
+     * console events): its handle, state badge and time since last contact.
+     */
+    public record Vehicle(String service, org.ripv.messages.MailboxStatus status) {
+        public String handle() {
+            return status.address().startsWith(service) ? status.address().substring(service.length()) : status.address();
+        }
+
+        @Override
+        public String toString() {
+            return handle() + "  " + org.ripv.client.managers.ConsoleModel.badge(status.session(), java.time.Instant.now());
+        }
+    }
+
+    /** Re-words every node, so times since last contact stay current. */
+    public void tick() {
+        for (int i = 0; i < root.getChildCount(); i++) {
+            javax.swing.tree.TreeNode n = root.getChildAt(i);
+            int[] idx = new int[n.getChildCount()];
+            for (int k = 0; k < idx.length; k++) {
+                idx[k] = k;
+            }
+            if (idx.length > 0) {
+                treeModel.nodesChanged(n, idx);
+            }
+        }
+    }
+
+    @Override
+    public void addNotify() {
+        super.addNotify();
+        ticker.start();
+    }
+
+    @Override
+    public void removeNotify() {
+        ticker.stop();
+        super.removeNotify();
     }
 
     /** A service node; shows as its name. */
@@ -48,20 +105,37 @@ public final class ServiceTree extends JTree {
     /** Rebuilds from the model, keeping the selection when the service is still there. */
     public void update(ClientModel model) {
         String selected = selectedService();
+        String selectedVehicle = selectedVehicle();
         rebuilding = true;
         try {
             root.setUserObject(model.server().isEmpty() ? "RIPVServer" : "RIPVServer " + model.server());
             root.removeAllChildren();
             DefaultMutableTreeNode keep = null;
+            java.util.List<DefaultMutableTreeNode> withVehicles = new java.util.ArrayList<>();
             for (ServiceModel s : model.services()) {
-                DefaultMutableTreeNode n = new DefaultMutableTreeNode(new Item(s.descriptor()), false);
+                DefaultMutableTreeNode n = new DefaultMutableTreeNode(new Item(s.descriptor()), true);
                 root.add(n);
                 if (s.name().equals(selected)) {
                     keep = n;
                 }
+                for (org.ripv.messages.MailboxStatus m : s.mailboxes()) {
+                    if (m.session() != null) {
+                        DefaultMutableTreeNode v = new DefaultMutableTreeNode(new Vehicle(s.name(), m), false);
+                        n.add(v);
+                        if (m.address().equals(selectedVehicle)) {
+                            keep = v;
+                        }
+                    }
+                }
+                if (n.getChildCount() > 0) {
+                    withVehicles.add(n);
+                }
             }
             treeModel.reload();
             expandRow(0);
+            for (DefaultMutableTreeNode n : withVehicles) {
+                expandPath(new TreePath(n.getPath()));
+            }
             if (keep != null) {
                 setSelectionPath(new TreePath(keep.getPath()));
             }
@@ -85,13 +159,39 @@ public final class ServiceTree extends JTree {
         }
     }
 
-    /** The selected service's name, or null. */
+    /** The selected service's name (or the service of the selected vehicle), or null. */
     public String selectedService() {
         TreePath p = getSelectionPath();
         if (p != null && p.getLastPathComponent() instanceof DefaultMutableTreeNode n && n.getUserObject() instanceof Item i) {
             return i.descriptor().name();
         }
+        if (p != null && p.getLastPathComponent() instanceof DefaultMutableTreeNode n && n.getUserObject() instanceof Vehicle v) {
+            return v.service();
+        }
         return null;
+    }
+
+    /** The selected vehicle's MailBox address, or null. */
+    public String selectedVehicle() {
+        TreePath p = getSelectionPath();
+        if (p != null && p.getLastPathComponent() instanceof DefaultMutableTreeNode n && n.getUserObject() instanceof Vehicle v) {
+            return v.status().address();
+        }
+        return null;
+    }
+
+    /** The vehicle nodes' words under a service, in order ("ru29  ● on call · last contact 3 min ago"). */
+    public java.util.List<String> vehicles(String service) {
+        java.util.List<String> out = new java.util.ArrayList<>();
+        for (int i = 0; i < root.getChildCount(); i++) {
+            DefaultMutableTreeNode n = (DefaultMutableTreeNode) root.getChildAt(i);
+            if (((Item) n.getUserObject()).descriptor().name().equals(service)) {
+                for (int k = 0; k < n.getChildCount(); k++) {
+                    out.add(((DefaultMutableTreeNode) n.getChildAt(k)).getUserObject().toString());
+                }
+            }
+        }
+        return out;
     }
 
     /** The services shown, in order. */
@@ -109,6 +209,9 @@ public final class ServiceTree extends JTree {
         if (p != null && p.getLastPathComponent() instanceof DefaultMutableTreeNode n && n.getUserObject() instanceof Item i) {
             ServiceDescriptor d = i.descriptor();
             return d.description() + " (SID " + d.sid() + (d.panel().isEmpty() ? "" : ", " + d.panel()) + ")";
+        }
+        if (p != null && p.getLastPathComponent() instanceof DefaultMutableTreeNode n && n.getUserObject() instanceof Vehicle v) {
+            return v.status().address() + ": " + MailboxTree.sessionTip(v.status());
         }
         return null;
     }

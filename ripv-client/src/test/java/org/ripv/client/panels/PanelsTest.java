@@ -126,7 +126,7 @@ class PanelsTest {
         ServiceLayoutPanel p = new ServiceLayoutPanel(model.service(VIS), manager);
         assertThat(p.dav()).isNotNull();
         assertThat(p.dab()).isNull();
-        assertThat(split(p, "leftSplit").getBottomComponent()).isSameAs(p.dav());
+        assertThat(split(p, "leftSplit").getBottomComponent()).isSameAs(p.plot());
     }
 
     @Test
@@ -254,12 +254,42 @@ class PanelsTest {
         assertThatThrownBy(() -> HostPort.parse("host:http", 4444)).hasMessageContaining("'http'");
         assertThatThrownBy(() -> HostPort.parse("host:70000", 4444)).hasMessageContaining("70000");
         assertThatThrownBy(() -> HostPort.parse("  ", 4444)).hasMessageContaining("host");
+        // A server list (an active server and its standby) stays whole for the connection to try in turn.
+        assertThat(HostPort.parse("a.example.org, b.example.org:4445", 4444)).isEqualTo(new HostPort("a.example.org:4444,b.example.org:4445", 4444));
+        assertThat(HostPort.parse("a,b", 4444).toString()).isEqualTo("a:4444,b:4444");
+        assertThatThrownBy(() -> HostPort.parse("a,b:http", 4444)).hasMessageContaining("'b:http'");
     }
 
     static JLabel label(Container root, String name) {
         Component c = find(root, name);
         assertThat(c).as("a component named " + name).isInstanceOf(JLabel.class);
         return (JLabel) c;
+    }
+
+    @Test
+    void comShowsEachRunningRequestWithItsCancelButton() {
+        ComPanel com = new ComPanel(DB, manager);
+        manager.requestStarted(DB, 17, "SELECT COUNT(*) FROM reading");
+        manager.requestStarted(DB, 18, "SELECT 1");
+        manager.requestProgress(DB, 18, new org.ripv.messages.Progress("rows", 50, 200, 25));
+        drain();
+        com.update(model.service(DB));
+        assertThat(com.runningTexts()).hasSize(2);
+        assertThat(com.runningTexts().get(0)).startsWith("running: SELECT COUNT(*) FROM reading  0:0");
+        assertThat(com.runningTexts().get(1)).isEqualTo("SELECT 1 · rows  50 B / 200 B  25 B/s  0:06 left");
+        javax.swing.JButton cancel = (javax.swing.JButton) find(com, "cancel-17");
+        assertThat(cancel.isEnabled()).isTrue();
+        cancel.doClick(); // marks at once; the (offline) refusal waits in the UI queue
+        com.update(model.service(DB));
+        assertThat(model.service(DB).running().get(0).cancelling()).isTrue();
+        assertThat(cancel.getText()).isEqualTo("Cancelling…");
+        assertThat(cancel.isEnabled()).as("one ?cancel per request").isFalse();
+        manager.requestEnded(DB, 17, ErrorCode.CANCELLED);
+        manager.requestEnded(DB, 18, null);
+        drain();
+        com.update(model.service(DB));
+        assertThat(com.runningTexts()).isEmpty();
+        assertThat(find(com, "running").isVisible()).isFalse();
     }
 
     static Component find(Container root, String name) {

@@ -33,6 +33,35 @@ class TreesTest {
     }
 
     @Test
+    void serviceTreeShowsEachVehicleWithItsBadgeUnderItsService() {
+        ClientModel model = new ClientModel();
+        try (GuiManager m = new GuiManager(model, Runnable::run, (h, p) -> {
+            throw new IOException("offline");
+        }, GuiManager.Timings.DEFAULT)) {
+            List<String> picked = new ArrayList<>();
+            ServiceTree tree = new ServiceTree(picked::add, (service, box) -> picked.add(service + " " + box));
+            m.dispatch(reply(Ids.FID_SERVICES, "", new ServiceList(List.of(
+                    new ServiceDescriptor("<S>::<h>", "888888", "serial", "", List.of()),
+                    new ServiceDescriptor("<D>::<h>", "666666", "database", "DAB", List.of())))));
+            long contact = java.time.Instant.now().minusSeconds(12 * 60 + 5).toEpochMilli();
+            m.dispatch(reply(Ids.FID_MAILBOXES, "", new org.ripv.messages.MailboxList(List.of(
+                    new MailboxStatus("<S>::<h>ru29", true, "", false, "", new org.ripv.messages.SessionState(
+                            org.ripv.messages.SessionState.State.DIVED, contact, 41.6, -70.5, 3, null)),
+                    new MailboxStatus("<S>::<h>ttyS1", true, "", false, ""),
+                    new MailboxStatus("<D>::<h>TTY1", true, "", false, "")))));
+            tree.update(model);
+            assertThat(tree.services()).containsExactly("<S>::<h>", "<D>::<h>");
+            assertThat(tree.vehicles("<S>::<h>")).containsExactly("ru29  ○ dived · last contact 12 min ago");
+            assertThat(tree.vehicles("<D>::<h>")).as("a MailBox that never published is no vehicle").isEmpty();
+            tree.setSelectionRow(2); // root, <S>, ru29
+            assertThat(picked).containsExactly("<S>::<h> <S>::<h>ru29");
+            assertThat(tree.selectedService()).isEqualTo("<S>::<h>");
+            tree.update(model);
+            assertThat(tree.selectedVehicle()).as("kept across a rebuild").isEqualTo("<S>::<h>ru29");
+        }
+    }
+
+    @Test
     void serviceTreeFollowsTheServiceListAndKeepsTheSelection() {
         ClientModel model = new ClientModel();
         try (GuiManager m = new GuiManager(model, Runnable::run, (h, p) -> {

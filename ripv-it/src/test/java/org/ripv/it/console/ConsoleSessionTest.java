@@ -135,6 +135,39 @@ class ConsoleSessionTest {
     }
 
     @Test
+    void aLockThatRunsOutIsReleasedWithAnEvent() throws Exception {
+        sys.user("bob", "operators");
+        ClientSocketHandler alice = sys.login("alice");
+        ClientSocketHandler bob = sys.login("bob");
+        ClientSocketHandler olga = sys.login("olga");
+        Pushes o = Pushes.on(olga);
+        call(olga, "?watch " + box);
+        // A lock renewed before its end is not released at the first lock's end.
+        assertThat(call(alice, "?lock " + box + " 1").status()).isEqualTo(Status.OK);
+        assertThat(call(alice, "?lock " + box + " 3").status()).isEqualTo(Status.OK);
+        long renewed = System.nanoTime();
+        assertThat(call(bob, "?lock " + box + " 60").footer().errorCode()).isEqualTo(ErrorCode.MAILBOX_LOCKED);
+        assertThat(o.await(e -> e.event() == VehicleEvent.LOCK_RELEASED, T)).isTrue();
+        long held = (System.nanoTime() - renewed) / 1_000_000;
+        assertThat(held).isBetween(2_000L, 10_000L); // the 3 s lock, not the 1 s one
+        List<ConsoleEntry> released = o.entries.stream().filter(e -> e.event() == VehicleEvent.LOCK_RELEASED).toList();
+        assertThat(released).singleElement().satisfies(e -> {
+            assertThat(e.user()).isEqualTo("alice");
+            assertThat(e.text()).isEqualTo("its time ran out");
+        });
+        assertThat(o.entries.stream().filter(e -> e.event() == VehicleEvent.LOCK_TAKEN).count()).isEqualTo(2);
+        // The lock is really gone: bob takes it; when he unlocks, that is the release, with no second one at its end.
+        assertThat(call(bob, "?lock " + box + " 1").status()).isEqualTo(Status.OK);
+        assertThat(call(bob, "?unlock " + box).status()).isEqualTo(Status.OK);
+        assertThat(o.await(e -> e.event() == VehicleEvent.LOCK_RELEASED && e.user().equals("bob"), T)).isTrue();
+        Thread.sleep(1_500);
+        assertThat(o.entries.stream().filter(e -> e.event() == VehicleEvent.LOCK_RELEASED).count()).isEqualTo(2);
+        assertThat(sys.server().console().history(box, null, 100).entries().stream()
+                .filter(e -> e.event() == VehicleEvent.LOCK_RELEASED).map(ConsoleEntry::text))
+                .containsExactly("its time ran out", "");
+    }
+
+    @Test
     void aServiceRestartedMidCallLeavesTheVehicleLostUntilItsNextCall() throws Exception {
         ClientSocketHandler olga = sys.login("olga");
         Pushes o = Pushes.on(olga);

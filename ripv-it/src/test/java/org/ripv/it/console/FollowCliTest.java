@@ -65,7 +65,7 @@ class FollowCliTest {
         vehicle.line("said before anyone watched"); // replayed on ?watch
         ByteArrayOutputStream out = new ByteArrayOutputStream();
         ByteArrayOutputStream err = new ByteArrayOutputStream();
-        CompletableFuture<Integer> exit = follow(out, err, "olga", "--json");
+        CompletableFuture<Integer> exit = follow(out, err, "olga", "--json", "--no-reconnect");
         waitFor(out, "said before anyone watched");
         vehicle.event(VehicleEvent.SURFACED, "Glider ru29 at surface", 41.63323, -70.53647);
         sys.login("alice").call(vehicle.mailbox(), "say hi \"there\"", Priority.NORMAL, Duration.ofSeconds(20), null);
@@ -87,7 +87,7 @@ class FollowCliTest {
     void followPrintsTextAndRefusesWithoutTheReadRight() throws Exception {
         ByteArrayOutputStream out = new ByteArrayOutputStream();
         ByteArrayOutputStream err = new ByteArrayOutputStream();
-        CompletableFuture<Integer> exit = follow(out, err, "alice");
+        CompletableFuture<Integer> exit = follow(out, err, "alice", "--no-reconnect");
         waitFor(err, "watching " + vehicle.mailbox());
         vehicle.event(VehicleEvent.DIVED, "", null, null);
         vehicle.line("after the dive");
@@ -104,5 +104,51 @@ class FollowCliTest {
         ByteArrayOutputStream err2 = new ByteArrayOutputStream();
         assertThat(follow(out2, err2, "eve").get(20, TimeUnit.SECONDS)).isEqualTo(CliCommand.EXIT_ERROR_REPLY);
         assertThat(err2.toString(StandardCharsets.UTF_8)).contains("may not read", "FORBIDDEN");
+    }
+
+    @Test
+    void followLogsInAgainAfterAServerRestartAndPrintsNothingTwice() throws Exception {
+        // The server must come back where it was: the same ports and data directory (its certificate).
+        int[] ports = new int[2];
+        for (int i = 0; i < 2; i++) {
+            try (java.net.ServerSocket s = new java.net.ServerSocket(0)) {
+                ports[i] = s.getLocalPort();
+            }
+        }
+        org.ripv.server.ServerConfig config = org.ripv.server.ServerConfig.forTests(dir.resolve("fixed"))
+                .withPorts(ports[0], ports[1], -1);
+        sys.close();
+        sys = TestSystem.start(config);
+        sys.user("olga", "observers");
+        sys.register(vehicle = new VehicleConsoleService("localhost", "ru29"));
+        vehicle.line("before the restart");
+        ByteArrayOutputStream out = new ByteArrayOutputStream();
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        CliCommand cmd = new CliCommand(new ByteArrayInputStream(new byte[0]), new PrintStream(out, true, StandardCharsets.UTF_8),
+                new PrintStream(err, true, StandardCharsets.UTF_8));
+        java.util.concurrent.atomic.AtomicInteger exit = new java.util.concurrent.atomic.AtomicInteger(-1);
+        Thread cli = new Thread(() -> exit.set(new CommandLine(cmd).execute("--server", "localhost:" + ports[0], "--user", "olga",
+                "--password", TestSystem.PASSWORD, "--known-hosts", TestSystem.knownHosts().toString(),
+                "--follow", vehicle.mailbox())));
+        cli.start();
+        try {
+            waitFor(out, "before the restart");
+            sys.close(); // the server goes away, and comes back a moment later
+            Thread.sleep(1500);
+            sys = TestSystem.start(config);
+            sys.register(vehicle = new VehicleConsoleService("localhost", "ru29"));
+            waitFor(err, "Reconnected to localhost:" + ports[0]);
+            vehicle.line("after the restart");
+            waitFor(out, "after the restart");
+            String text = out.toString(StandardCharsets.UTF_8);
+            // The new server replays its transcript on ?watch: what was printed is not printed again.
+            assertThat(text.split("before the restart", -1)).hasSize(2);
+            assertThat(err.toString(StandardCharsets.UTF_8)).contains("Connection lost").contains("logging in again");
+            assertThat(cli.isAlive()).isTrue();
+        } finally {
+            cli.interrupt();
+            cli.join(10_000);
+        }
+        assertThat(exit.get()).isZero();
     }
 }

@@ -27,13 +27,22 @@ class InteractiveCliTmuxTest {
     @TempDir
     Path dir;
     TestSystem sys;
+    org.ripv.server.ServerConfig config;
     Path launcher;
     Path history;
 
     @BeforeEach
     void start() throws Exception {
         Tools.require("tmux");
-        sys = TestSystem.start(dir.resolve("sys"));
+        int[] ports = new int[2];
+        for (int i = 0; i < 2; i++) {
+            try (java.net.ServerSocket s = new java.net.ServerSocket(0)) {
+                ports[i] = s.getLocalPort();
+            }
+        }
+        // Fixed ports and data directory: a restarted server comes back where it was, with its certificate.
+        config = org.ripv.server.ServerConfig.forTests(dir.resolve("sys")).withPorts(ports[0], ports[1], -1);
+        sys = TestSystem.start(config);
         sys.user("alice", "operators");
         sys.register(new ClockService("localhost"));
         history = dir.resolve("home/.ripv/history");
@@ -122,6 +131,27 @@ class InteractiveCliTmuxTest {
             t.await("Up recalled the previous session's last command", Duration.ofSeconds(10),
                     s -> Tmux.lastLine(s).equals("alice@localhost> help"));
             t.keys("C-u");
+            t.type("quit");
+            t.keys("Enter");
+            t.awaitText("CLI-EXIT=0");
+        }
+    }
+
+    @Test
+    void aLostConnectionIsMadeAgainAndTheSessionGoesOnInItsMailBox() throws Exception {
+        try (Tmux t = cli()) {
+            t.type("use " + BOX);
+            t.keys("Enter");
+            t.await("the prompt with the MailBox", Duration.ofSeconds(10), s -> Tmux.lastLine(s).equals("alice@localhost TTY1>"));
+            sys.close(); // the server goes away while the pilot reads...
+            Thread.sleep(1000);
+            sys = TestSystem.start(config); // ...and is back (restarted, or a standby took over)
+            sys.register(new ClockService("localhost"));
+            t.type("echo after the restart");
+            t.keys("Enter");
+            t.await("logged in again, the reply, the same MailBox", Duration.ofSeconds(40),
+                    s -> s.contains("was lost; logging in again") && s.contains("Logged in again to localhost:")
+                            && s.contains("\nafter the restart\n") && Tmux.lastLine(s).equals("alice@localhost TTY1>"));
             t.type("quit");
             t.keys("Enter");
             t.awaitText("CLI-EXIT=0");

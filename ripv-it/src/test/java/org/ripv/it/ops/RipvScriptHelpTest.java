@@ -34,7 +34,7 @@ class RipvScriptHelpTest {
         List<Arguments> all = new ArrayList<>();
         for (String c : List.of("", "help", "demo", "build", "server", "passwd", "service", "service serial",
                 "service database", "service datavis", "service clock", "simulator", "client", "cli",
-                "bench", "bench broker", "bench database", "bench ymodem", "bench datavis", "bench firststart", "bench calls")) {
+                "bench", "bench broker", "bench database", "bench ymodem", "bench datavis", "bench firststart", "bench calls", "bench hosts", "bench workflow")) {
             for (String flag : List.of("--help", "-h")) {
                 all.add(Arguments.of(c, flag));
             }

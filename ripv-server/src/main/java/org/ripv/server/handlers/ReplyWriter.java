@@ -4,6 +4,8 @@ import java.io.BufferedOutputStream;
 import java.io.DataOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
@@ -17,40 +19,44 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * One client's reply queue and the only thread that writes its socket. The thread runs only
- * while replies wait: it ends after {@link #IDLE_MILLIS} with nothing to send and the next reply
- * starts another, so an idle client costs no writer thread (docs/performance.md). A lock makes
- * sure at most one runs and a reply queued as it ends is never stranded.
+ * One client's reply queue. Nothing writes the socket but the {@link WriterPool}'s worker that
+ * holds this writer: {@link #scheduled} is true from the moment a reply finds the queue without a
+ * worker until a worker has written everything and found the queue empty, so at most one thread
+ * writes at a time and a reply queued as a worker finishes is never stranded. An idle client
+ * costs no writer thread (docs/performance.md).
  */
 final class ReplyWriter {
     private static final Logger log = LoggerFactory.getLogger(ReplyWriter.class);
-    /** How long the writer thread waits for more replies before it ends. */
+    /** How long a worker that stays with one slow client waits for more before it ends. */
     static final long IDLE_MILLIS = 5_000;
+    /** The most messages one turn writes before the worker moves on to other clients. */
+    static final int MAX_PER_TURN = 256;
 
-    private static final OutgoingServerMessage POISON = new OutgoingServerMessage(
-            Header.request(0, "", "", null), Footer.unanswered());
+    /** What waits: a reply, or a push with its frame if encoded once for many clients (else null) and what to run once it went out. */
+    private record Item(OutgoingServerMessage message, byte[] frame, Runnable written) {}
+
+    private static final Item POISON = new Item(null, null, null);
 
     private final String clientId;
     private final FrameCodec codec;
     private final Runnable closer;
+    private final WriterPool pool;
     /** Linked, not an array: an idle client must not hold thousands of empty slots. */
-    private final BlockingQueue<OutgoingServerMessage> replies;
+    private final BlockingQueue<Item> replies;
     private final int capacity;
-    /** A push: its frame if encoded once for many clients (else null), and what to run once it went out. */
-    private record Push(byte[] frame, Runnable written) {}
-
-    /** Pushes whose sender wants to hear when they went out (console watchers pace themselves by it). */
-    private final java.util.Map<OutgoingServerMessage, Push> afterWrite = new java.util.concurrent.ConcurrentHashMap<>();
     private final Object lock = new Object();
-    private boolean running;
+    private boolean scheduled;
     private boolean stopped;
+    private boolean ended;
     private DataOutputStream out;
+    private final List<Runnable> flushed = new ArrayList<>();
 
     /** @param closer closes the connection after a write failed or the last reply went out */
-    ReplyWriter(String clientId, FrameCodec codec, int capacity, Runnable closer) {
+    ReplyWriter(String clientId, FrameCodec codec, int capacity, WriterPool pool, Runnable closer) {
         this.clientId = clientId;
         this.codec = codec;
         this.closer = closer;
+        this.pool = pool;
         this.replies = new LinkedBlockingQueue<>(capacity);
         this.capacity = capacity;
     }
@@ -60,20 +66,20 @@ final class ReplyWriter {
         synchronized (lock) {
             out = new DataOutputStream(new BufferedOutputStream(socketOut, buffer));
         }
-        startIfNeeded();
+        scheduleIfNeeded();
     }
 
     /** Queues a reply; false when the queue is full (the client is not reading). */
     boolean offer(OutgoingServerMessage reply) {
-        if (!replies.offer(reply)) {
+        if (!replies.offer(new Item(reply, null, null))) {
             return false;
         }
-        startIfNeeded();
+        scheduleIfNeeded();
         return true;
     }
 
     /**
-     * Queues an unasked message (a console push); {@code written} runs on the writer thread once
+     * Queues an unasked message (a console push); {@code written} runs on the writing thread once
      * it has been written and flushed. {@code frame}, when not null, is the message already
      * encoded. False when the queue is more than half full (pushes never crowd out replies).
      */
@@ -81,21 +87,19 @@ final class ReplyWriter {
         if (replies.remainingCapacity() < capacity / 2) {
             return false;
         }
-        afterWrite.put(message, new Push(frame, written));
-        if (!replies.offer(message)) {
-            afterWrite.remove(message);
+        if (!replies.offer(new Item(message, frame, written))) {
             return false;
         }
-        startIfNeeded();
+        scheduleIfNeeded();
         return true;
     }
 
     /** Queues a last reply, after which the writer closes the connection; false when full. */
     boolean offerLast(OutgoingServerMessage reply) {
-        if (!replies.offer(reply) || !replies.offer(POISON)) {
+        if (!replies.offer(new Item(reply, null, null)) || !replies.offer(POISON)) {
             return false;
         }
-        startIfNeeded();
+        scheduleIfNeeded();
         return true;
     }
 
@@ -105,70 +109,107 @@ final class ReplyWriter {
             stopped = true;
         }
         replies.clear();
-        afterWrite.clear();
-        replies.offer(POISON);
     }
 
-    private void startIfNeeded() {
+    private void scheduleIfNeeded() {
         synchronized (lock) {
-            if (running || out == null || stopped || replies.isEmpty()) {
+            if (scheduled || out == null || stopped || replies.isEmpty()) {
                 return;
             }
-            running = true;
+            scheduled = true;
         }
-        Thread t = new Thread(this::run, "ripv-socket-writer-" + clientId);
-        t.setDaemon(true);
-        t.start();
+        pool.ready(this);
     }
 
-    private void run() {
+    /**
+     * One worker's turn: writes what waits (at most {@link #MAX_PER_TURN} messages) with one flush.
+     * True when more waits and this writer is still scheduled (the caller puts it back in line or
+     * keeps writing it); false when its queue was empty or the connection ended.
+     */
+    boolean turn() {
+        return write(replies.poll());
+    }
+
+    /**
+     * Writes this client alone, on the calling thread, until it has had nothing to write for
+     * {@link #IDLE_MILLIS} (a worker that left the pool because this client was slow).
+     */
+    void dedicated() throws InterruptedException {
+        while (write(replies.poll(IDLE_MILLIS, TimeUnit.MILLISECONDS))) {
+            // each round blocks in poll or in the socket, never spins
+        }
+    }
+
+    /** Writes first and whatever else waits, flushes once; then as {@link #turn()}. */
+    private boolean write(Item first) {
         boolean close = true;
-        java.util.List<Runnable> flushed = new java.util.ArrayList<>();
         try {
-            while (true) {
-                OutgoingServerMessage m = replies.poll(IDLE_MILLIS, TimeUnit.MILLISECONDS);
-                if (m == null) {
-                    synchronized (lock) {
-                        if (replies.isEmpty()) {
-                            running = false; // all is flushed; the next reply starts another writer
-                            close = stopped;
-                            return;
-                        }
-                    }
-                    continue;
-                }
+            Item m = first;
+            int n = 0;
+            while (m != null) {
                 if (m == POISON) {
                     out.flush();
-                    return;
+                    afterFlush();
+                    return end();
                 }
-                Push push = afterWrite.remove(m);
-                if (push != null) {
-                    flushed.add(push.written());
+                if (m.written() != null) {
+                    flushed.add(m.written());
                 }
-                if (push != null && push.frame() != null) {
-                    out.writeInt(push.frame().length);
-                    out.write(push.frame());
+                if (m.frame() != null) {
+                    out.writeInt(m.frame().length);
+                    out.write(m.frame());
                 } else {
-                    write(m);
+                    encode(m.message());
                 }
-                if (replies.isEmpty()) {
-                    out.flush();
-                    flushed.forEach(Runnable::run);
-                    flushed.clear();
-                }
+                m = ++n < MAX_PER_TURN ? replies.poll() : null;
             }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
+            if (n > 0) {
+                out.flush();
+                afterFlush();
+            }
+            close = false;
         } catch (IOException e) {
             log.debug("client {}: write failed: {}", clientId, e.toString());
+        } catch (RuntimeException e) {
+            log.error("client {}: writing failed", clientId, e);
         } finally {
             if (close) {
-                closer.run();
+                end();
             }
+        }
+        synchronized (lock) {
+            if (stopped || replies.isEmpty()) {
+                scheduled = false; // all is flushed; the next reply schedules this writer again
+                return false;
+            }
+            return true;
         }
     }
 
-    private void write(OutgoingServerMessage m) throws IOException {
+    private void afterFlush() {
+        for (Runnable r : flushed) {
+            r.run();
+        }
+        flushed.clear();
+    }
+
+    /** The last reply went out or a write failed: the connection closes, and nothing is written again. */
+    private boolean end() {
+        synchronized (lock) {
+            if (ended) {
+                return false;
+            }
+            ended = true;
+            stopped = true;
+        }
+        // On this writer, as part of its turn: closing a TLS socket writes close_notify, which could
+        // block on a peer that stopped reading, and then the pool's stall check replaces this writer.
+        // (Closing on threads of their own let a log-in flood reconnect faster: LoginFloodAttackTest.)
+        closer.run();
+        return false;
+    }
+
+    private void encode(OutgoingServerMessage m) throws IOException {
         try {
             codec.writeNoFlush(out, m);
         } catch (ProtocolException tooLarge) {

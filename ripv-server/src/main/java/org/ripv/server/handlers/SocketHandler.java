@@ -19,11 +19,10 @@ import org.slf4j.LoggerFactory;
 
 /**
  * One connected client (thesis: SocketHandler). A reader thread reads frames and hands each
- * request to the server; a {@link ReplyWriter} drains this client's own reply queue on a thread
- * that exists only while replies wait (an idle client costs one thread, docs/performance.md), so
- * a client that
- * stops reading fills only its own queue — and is then disconnected — while everyone else is
- * served. Anything that breaks the protocol closes this connection and nothing else.
+ * request to the server; replies and console pushes wait in this client's own {@link ReplyWriter}
+ * queue, which the server's few {@link WriterPool} threads write (an idle client costs one
+ * thread, its reader; docs/performance.md). A client that stops reading fills only its own
+ * queue — and is then disconnected — while everyone else is served. Anything that breaks the protocol closes this connection and nothing else.
  */
 public final class SocketHandler {
     private static final Logger log = LoggerFactory.getLogger(SocketHandler.class);
@@ -51,13 +50,14 @@ public final class SocketHandler {
     private volatile List<String> roles = List.of();
     private volatile boolean closed;
 
-    public SocketHandler(Socket socket, String clientId, FrameCodec codec, Dispatcher dispatcher) {
+    /** @param writers the server's writer threads, shared by all clients */
+    public SocketHandler(Socket socket, String clientId, FrameCodec codec, WriterPool writers, Dispatcher dispatcher) {
         this.socket = socket;
         this.clientId = clientId;
         this.codec = codec;
         this.dispatcher = dispatcher;
         this.badge = new IdBadge(clientId, "");
-        this.writer = new ReplyWriter(clientId, codec, MAX_QUEUED_REPLIES, this::close);
+        this.writer = new ReplyWriter(clientId, codec, MAX_QUEUED_REPLIES, writers, this::close);
         this.reader = new Thread(this::readLoop, "ripv-socket-handler-" + clientId);
         reader.setDaemon(true);
     }

@@ -6,9 +6,6 @@ import java.net.http.HttpClient;
 import java.net.http.HttpRequest;
 import java.net.http.HttpResponse;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
-import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.security.SecureRandom;
 import java.time.Duration;
 import java.time.Instant;
@@ -46,6 +43,7 @@ import org.ripv.server.session.ConsoleHub;
 import org.ripv.server.session.Entries;
 import org.ripv.server.session.Json;
 import org.ripv.server.session.Rights;
+import org.ripv.server.store.StateStore;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -68,7 +66,7 @@ public final class Notifier implements AutoCloseable {
     /** Subscriptions one user may hold. */
     static final int MAX_PER_USER = 50;
 
-    private final Path file;
+    private final StateStore store;
     private final Supplier<PermitFile> permits;
     private final Smtp smtp;
     private final Duration backoff;
@@ -84,15 +82,15 @@ public final class Notifier implements AutoCloseable {
     private volatile boolean closed;
 
     /**
-     * @param file    where subscriptions persist (DATA/notify/subscriptions.jsonl)
+     * @param store   where subscriptions persist (embedded: DATA/notify/subscriptions.jsonl)
      * @param smtp    the SMTP server for e-mail, or null for none
      * @param backoff the first retry's delay (later ones grow four-fold)
      * @param timeout how long a receiver may take to connect, and then to answer
      * @param targets where webhooks may go ({@code --webhook-allow})
      */
-    public Notifier(Path file, Supplier<PermitFile> permits, Smtp smtp, Duration backoff, Duration timeout,
+    public Notifier(StateStore store, Supplier<PermitFile> permits, Smtp smtp, Duration backoff, Duration timeout,
                     WebhookTargets targets) throws IOException {
-        this.file = file;
+        this.store = store;
         this.targets = targets;
         this.permits = permits;
         this.smtp = smtp;
@@ -211,11 +209,12 @@ public final class Notifier implements AutoCloseable {
     }
 
     private void load() throws IOException {
-        if (!Files.isRegularFile(file)) {
+        java.util.Optional<StateStore.Stored> stored = store.loadSubscriptions();
+        if (stored.isEmpty()) {
             return;
         }
         int n = 0;
-        for (String line : Files.readAllLines(file, StandardCharsets.UTF_8)) {
+        for (String line : stored.get().text().split("\n")) {
             n++;
             if (line.isBlank()) {
                 continue;
@@ -224,26 +223,16 @@ public final class Notifier implements AutoCloseable {
                 Subscription s = Subscription.fromJson(line);
                 subscriptions.put(s.id, s);
             } catch (IllegalArgumentException e) {
-                log.warn("{}:{}: ignoring an unreadable subscription: {}", file, n, e.getMessage());
+                log.warn("{}:{}: ignoring an unreadable subscription: {}", stored.get().where(), n, e.getMessage());
             }
         }
     }
 
-    /** Rewrites the file through a temporary one (owner-only: it names addresses and URLs). */
+    /** Replaces the stored subscriptions whole (embedded: an owner-only file; it names addresses and URLs). */
     private synchronized void save() throws IOException {
-        Files.createDirectories(file.getParent());
-        Path tmp = file.resolveSibling(file.getFileName() + ".tmp");
         StringBuilder b = new StringBuilder();
         subscriptions.values().stream().sorted((a, c) -> a.id.compareTo(c.id)).forEach(s -> b.append(s.toJson()).append('\n'));
-        Files.deleteIfExists(tmp);
-        try {
-            Files.createFile(tmp, java.nio.file.attribute.PosixFilePermissions.asFileAttribute(
-                    java.nio.file.attribute.PosixFilePermissions.fromString("rw-------")));
-        } catch (UnsupportedOperationException e) {
-            Files.createFile(tmp);
-        }
-        Files.writeString(tmp, b, StandardCharsets.UTF_8);
-        Files.move(tmp, file, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+        store.saveSubscriptions(b.toString());
     }
 
     private void result(Subscription s, String r) {
@@ -260,6 +249,20 @@ public final class Notifier implements AutoCloseable {
 
     // ---- delivery ----
 
+    /**
+     * The read right, checked against the rules in force at each delivery and each retry, so a
+     * user who loses it (the permit file changed) stops getting that MailBox's events. Nothing
+     * is written to the subscription's result: that would tell the user about a MailBox they may
+     * not read.
+     */
+    private boolean mayRead(Subscription s, PermitFile p, String mailbox) {
+        if (Rights.mayRead(p, s.user, mailbox)) {
+            return true;
+        }
+        log.debug("subscription {} of {} may not read {}; not notified", s.id, s.user, mailbox);
+        return false;
+    }
+
     /** An event happened: queue a delivery for every subscription that wants it and may read it. */
     public void accept(ConsoleHub.Notice n) {
         ConsoleEntry e = n.event();
@@ -268,8 +271,7 @@ public final class Notifier implements AutoCloseable {
             if (!s.wants(e.event(), e.mailbox())) {
                 continue;
             }
-            if (!Rights.mayRead(p, s.user, e.mailbox())) {
-                log.debug("subscription {} of {} may not read {}; not notified", s.id, s.user, e.mailbox());
+            if (!mayRead(s, p, e.mailbox())) {
                 continue;
             }
             if (outstanding.incrementAndGet() > MAX_OUTSTANDING) {
@@ -290,9 +292,9 @@ public final class Notifier implements AutoCloseable {
     }
 
     private void attempt(Subscription s, ConsoleHub.Notice n, int attempt, CompletableFuture<Void> done) {
-        if (!subscriptions.containsKey(s.id) || closed) {
+        if (!subscriptions.containsKey(s.id) || closed || !mayRead(s, permits.get(), n.event().mailbox())) {
             outstanding.decrementAndGet();
-            done.complete(null); // removed meanwhile
+            done.complete(null); // removed meanwhile, or its user lost the right to read (the permit file changed)
             return;
         }
         if (s.channel == Subscription.Channel.WEBHOOK) {

@@ -16,6 +16,7 @@ public final class PermitWatcher {
     private final Path file;
     private volatile PermitFile current;
     private volatile long stamp;
+    private final java.util.List<java.util.function.Consumer<PermitFile>> listeners = new java.util.concurrent.CopyOnWriteArrayList<>();
 
     /** Loads the file, writing the template when there is none yet. */
     public PermitWatcher(Path file) throws IOException {
@@ -27,10 +28,26 @@ public final class PermitWatcher {
         return current;
     }
 
+    /**
+     * Runs {@code listener} with the new rules after each successful reload (rights already granted,
+     * such as watches, are checked again by it; docs/permit.md). A listener must not block.
+     */
+    public void onChange(java.util.function.Consumer<PermitFile> listener) {
+        listeners.add(listener);
+    }
+
     /** Reads the file now. */
     public void reload() throws IOException {
-        current = PermitFile.load(file);
+        PermitFile loaded = PermitFile.load(file);
+        current = loaded;
         stamp = stamp(file);
+        for (java.util.function.Consumer<PermitFile> l : listeners) {
+            try {
+                l.accept(loaded);
+            } catch (RuntimeException e) {
+                log.error("re-checking rights after the permit file changed failed", e);
+            }
+        }
     }
 
     /** Reads the file again if it changed since the last read; the server calls it now and then. */

@@ -7,9 +7,22 @@ import org.slf4j.LoggerFactory;
  * One line per security event on the logger {@code ripv.audit}, as {@code event key=value ...}
  * so that grep and awk read it (docs/security.md, "Reading the audit lines"). Values are cut and
  * stripped of white space and control characters: a user name an attacker chose cannot forge a line.
+ * Each line also goes to the audit trails added with {@link #addTrail} (the server's state store).
  */
 public final class Audit {
     private static final Logger AUDIT = LoggerFactory.getLogger("ripv.audit");
+    private static final java.util.List<Trail> TRAILS = new java.util.concurrent.CopyOnWriteArrayList<>();
+
+    /** Where audit lines are kept beyond the log; must not block (the store's {@code AuditTrail} queues). */
+    public interface Trail {
+        void record(boolean warn, String line);
+    }
+
+    /** Adds a trail until the returned handle is closed (a running server's store; one per server). */
+    public static AutoCloseable addTrail(Trail t) {
+        TRAILS.add(t);
+        return () -> TRAILS.remove(t);
+    }
 
     private Audit() {}
 
@@ -24,6 +37,8 @@ public final class Audit {
         } else {
             AUDIT.info("{}", b);
         }
+        String line = b.toString();
+        TRAILS.forEach(t -> t.record(warn, line));
     }
 
     private static final java.util.Map<String, long[]> LIMITED = new java.util.concurrent.ConcurrentHashMap<>();

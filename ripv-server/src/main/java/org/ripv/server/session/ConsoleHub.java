@@ -52,14 +52,14 @@ public final class ConsoleHub implements AutoCloseable {
     private volatile Consumer<Notice> notices = n -> { };
 
     /**
-     * @param transcripts  the transcripts directory (DATA/transcripts)
-     * @param maxFileBytes transcript files are cut at about this size
-     * @param keepDays     transcript files older than this many days are deleted
+     * @param transcripts  the transcripts directory (DATA/transcripts; each MailBox's state.json)
+     * @param store        where transcript entries are kept
+     * @param keepDays     transcript entries older than this many days are deleted
      * @param encoder      encodes a push once for all the watchers that are up to date
      */
-    public ConsoleHub(Path transcripts, long maxFileBytes, int keepDays, Encoder encoder) throws IOException {
+    public ConsoleHub(Path transcripts, org.ripv.server.store.StateStore store, int keepDays, Encoder encoder) throws IOException {
         this.encoder = encoder;
-        this.transcript = new Transcript(transcripts, maxFileBytes, keepDays);
+        this.transcript = new Transcript(transcripts, store, keepDays);
         this.states = new VehicleStates(transcript::dirOf);
     }
 
@@ -242,6 +242,33 @@ public final class ConsoleHub implements AutoCloseable {
             list.remove(w);
             return list.isEmpty() ? null : list;
         });
+    }
+
+    /**
+     * The rules changed: every watch is checked again, and one whose user may no longer read its
+     * MailBox ends, with a last message to that client saying why (see {@link Watcher#end}).
+     *
+     * @param whyNotRead null when the user (first argument) may read the MailBox (second), else why not
+     * @return how many watches ended
+     */
+    public int recheck(java.util.function.BiFunction<String, String, String> whyNotRead) {
+        int ended = 0;
+        synchronized (order) {
+            for (Map.Entry<String, Set<Watcher>> e : byClient.entrySet()) {
+                for (Watcher w : List.copyOf(e.getValue())) {
+                    String why = whyNotRead.apply(w.user, w.mailbox);
+                    if (why != null) {
+                        remove(w);
+                        e.getValue().remove(w);
+                        w.end(why);
+                        ended++;
+                        log.info("client {} ({}) no longer watches {}: {}", w.clientId, w.user, w.mailbox, why);
+                    }
+                }
+            }
+            byClient.values().removeIf(Set::isEmpty);
+        }
+        return ended;
     }
 
     /** The MailBoxes a connection watches. */

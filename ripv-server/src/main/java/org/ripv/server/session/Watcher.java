@@ -14,8 +14,8 @@ import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.Priority;
 
 /**
- * One client watching one MailBox. Keeps at most one push in flight on the client's connection
- * and holds what arrives meanwhile in a bounded backlog; when the backlog overflows, the oldest
+ * One client watching one MailBox. Keeps at most {@link #MAX_IN_FLIGHT} pushes queued on the
+ * client's connection and holds what arrives beyond that in a bounded backlog; when the backlog overflows, the oldest
  * entries go and the next push starts with a marker saying how many, and from when, so the
  * client can fetch them with {@code ?history}. Nothing here blocks: a client that stops reading
  * costs the vehicle, the service and the other watchers nothing but this backlog.
@@ -25,6 +25,12 @@ final class Watcher {
     static final int MAX_BACKLOG = 2_000;
     /** The most entries in one push. */
     static final int MAX_BATCH = 500;
+    /**
+     * Pushes queued on the connection and not yet written, beyond which entries wait in the
+     * backlog. Up-to-date watchers queue the push shared by all (encoded once); a writer that
+     * finds several waiting sends them with one flush, so a busy server coalesces by itself.
+     */
+    static final int MAX_IN_FLIGHT = 32;
 
     final String clientId;
     final String user;
@@ -34,7 +40,7 @@ final class Watcher {
     private long skipped;
     private long skippedFrom;
     private long totalSkipped;
-    private boolean inFlight;
+    private int inFlight;
     private volatile boolean stopped;
 
     Watcher(String clientId, String user, String mailbox, Outlet outlet) {
@@ -54,8 +60,8 @@ final class Watcher {
             if (stopped) {
                 return;
             }
-            if (!inFlight && backlog.isEmpty() && skipped == 0 && shared != null) {
-                inFlight = true;
+            if (inFlight < MAX_IN_FLIGHT && backlog.isEmpty() && skipped == 0 && shared != null) {
+                inFlight++;
                 now = shared;
             } else {
                 for (ConsoleEntry e : entries) {
@@ -82,7 +88,7 @@ final class Watcher {
     private void pump() {
         OutgoingServerMessage next;
         synchronized (this) {
-            if (stopped || inFlight || backlog.isEmpty() && skipped == 0) {
+            if (stopped || inFlight >= MAX_IN_FLIGHT || backlog.isEmpty() && skipped == 0) {
                 return;
             }
             List<ConsoleEntry> batch = new ArrayList<>(Math.min(MAX_BATCH + 1, backlog.size() + 1));
@@ -97,7 +103,7 @@ final class Watcher {
                 batch.add(backlog.removeFirst());
             }
             next = message(mailbox, batch, lost);
-            inFlight = true;
+            inFlight++;
         }
         send(next, null);
     }
@@ -105,14 +111,14 @@ final class Watcher {
     private void send(OutgoingServerMessage m, byte[] frame) {
         if (!outlet.push(m, frame, this::written)) {
             synchronized (this) {
-                inFlight = false; // the connection is closing, or full of replies: the next entry tries again
+                inFlight--; // the connection is closing, or full of replies: the next entry tries again
             }
         }
     }
 
     private void written() {
         synchronized (this) {
-            inFlight = false;
+            inFlight--;
         }
         pump();
     }
@@ -122,6 +128,21 @@ final class Watcher {
         synchronized (this) {
             backlog.clear();
         }
+    }
+
+    /**
+     * Ends this watch because the user may no longer read the MailBox: what waits for it is
+     * dropped (it may not read that either) and the client gets one last push, an ERROR
+     * {@code FORBIDDEN} whose batch holds one line saying why, after which nothing more comes.
+     */
+    void end(String why) {
+        stop();
+        String text = "watch of " + mailbox + " ended: " + why;
+        ConsoleEntry line = new ConsoleEntry(System.currentTimeMillis(), mailbox, ConsoleEntry.Kind.LINE, "", "[" + text + "]",
+                null, null, null);
+        OutgoingServerMessage m = message(mailbox, List.of(line), 0);
+        outlet.send(new OutgoingServerMessage(m.header(), Footer.error(Ids.FID_CONSOLE,
+                org.ripv.messages.ErrorCode.FORBIDDEN, text).withResult(m.footer().result())));
     }
 
     synchronized int backlog() {

@@ -3,32 +3,26 @@ package org.ripv.server.workflow;
 import java.io.IOException;
 import java.io.StringReader;
 import java.io.StringWriter;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
-import java.nio.file.Path;
 import java.util.Properties;
+import org.ripv.server.store.StateStore;
 
 /**
  * Which files of each vehicle a workflow has fetched, by name and size, so that
- * {@code ymodem:get *.DBD} fetches only what is new. One owner-only file per MailBox in
- * {@code DATA/workflows/fetched/}.
+ * {@code ymodem:get *.DBD} fetches only what is new. Kept in the server's {@link StateStore}
+ * (embedded: one owner-only file per MailBox in {@code DATA/workflows/fetched/}).
  */
 final class FetchedFiles {
-    private final Path dir;
+    private final StateStore store;
 
-    FetchedFiles(Path dir) throws IOException {
-        this.dir = AtomicFiles.directory(dir);
-    }
-
-    private Path file(String mailbox) {
-        return dir.resolve(AtomicFiles.key(mailbox) + ".properties");
+    FetchedFiles(StateStore store) {
+        this.store = store;
     }
 
     private Properties read(String mailbox) throws IOException {
         Properties p = new Properties();
-        Path f = file(mailbox);
-        if (Files.exists(f)) {
-            p.load(new StringReader(Files.readString(f, StandardCharsets.UTF_8)));
+        java.util.Optional<String> text = store.loadFetched(mailbox);
+        if (text.isPresent()) {
+            p.load(new StringReader(text.get()));
         }
         return p;
     }
@@ -43,6 +37,6 @@ final class FetchedFiles {
         p.setProperty(name, Long.toString(size));
         StringWriter w = new StringWriter();
         p.store(w, "files fetched by workflows from " + mailbox + ": name=size");
-        AtomicFiles.write(file(mailbox), w.toString());
+        store.saveFetched(mailbox, w.toString());
     }
 }

@@ -1,61 +1,37 @@
 package org.ripv.server.workflow;
 
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
-import java.util.stream.Stream;
+import org.ripv.server.store.EmbeddedStateStore;
+import org.ripv.server.store.StateStore;
 
-/** The receipts of every run, one owner-only text file each in {@code DATA/workflows/receipts/MAILBOX-KEY/}. */
+/**
+ * The receipts of every run, kept in the server's {@link StateStore} (embedded: one owner-only
+ * text file each in {@code DATA/workflows/receipts/MAILBOX-KEY/}).
+ */
 final class Receipts {
-    private final Path dir;
+    private final StateStore store;
 
+    /** Receipts in files of their own under {@code dir}. */
     Receipts(Path dir) throws IOException {
-        this.dir = AtomicFiles.directory(dir);
+        this(new EmbeddedStateStore(EmbeddedStateStore.Layout.in(dir).withReceipts(dir), 1 << 20));
+    }
+
+    Receipts(StateStore store) {
+        this.store = store;
     }
 
     /** The most receipts kept per MailBox; older ones are deleted as new runs start. */
     static final int KEEP = 1000;
 
+    /** Stores a receipt, replacing this run's earlier one; keeps the newest {@link #KEEP} (an every-call workflow leaves one per call). */
     void write(Receipt r) throws IOException {
-        Path d = AtomicFiles.directory(dir.resolve(AtomicFiles.key(r.mailbox)));
-        Path f = d.resolve(r.fileName());
-        boolean first = !Files.exists(f);
-        AtomicFiles.write(f, r.render());
-        if (first) {
-            prune(d);
-        }
-    }
-
-    /** Keeps the newest {@link #KEEP} receipts (an every-call workflow leaves one per call). */
-    private static void prune(Path d) throws IOException {
-        List<Path> files;
-        try (Stream<Path> s = Files.list(d)) {
-            files = s.filter(p -> p.getFileName().toString().endsWith(".txt") && !p.getFileName().toString().startsWith("."))
-                    .sorted().toList();
-        }
-        for (Path old : files.subList(0, Math.max(0, files.size() - KEEP))) {
-            Files.deleteIfExists(old);
-        }
+        store.saveReceipt(r.mailbox, r.fileName(), r.render(), KEEP);
     }
 
     /** The last {@code n} receipts of a MailBox, oldest first. */
     List<String> last(String mailbox, int n) throws IOException {
-        Path d = dir.resolve(AtomicFiles.key(mailbox));
-        if (!Files.isDirectory(d)) {
-            return List.of();
-        }
-        List<Path> files;
-        try (Stream<Path> s = Files.list(d)) {
-            files = s.filter(p -> p.getFileName().toString().endsWith(".txt") && !p.getFileName().toString().startsWith("."))
-                    .sorted().toList();
-        }
-        List<String> out = new ArrayList<>();
-        for (Path p : files.subList(Math.max(0, files.size() - n), files.size())) {
-            out.add(Files.readString(p, StandardCharsets.UTF_8));
-        }
-        return out;
+        return store.lastReceipts(mailbox, n);
     }
 }

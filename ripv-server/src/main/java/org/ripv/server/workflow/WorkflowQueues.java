@@ -3,9 +3,6 @@ package org.ripv.server.workflow;
 import java.io.IOException;
 import java.io.StringReader;
 import java.io.StringWriter;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.DirectoryStream;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -14,14 +11,16 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.Properties;
 import java.util.function.UnaryOperator;
+import org.ripv.server.store.EmbeddedStateStore;
+import org.ripv.server.store.StateStore;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * The per-MailBox queues of workflows, kept in {@code DATA/workflows/queues/} (one owner-only
- * properties file per MailBox, written whole through a temporary file and an atomic move), so
- * that they survive restarts of the server and of services. Thread-safe; every change is on
- * disk before the method returns.
+ * The per-MailBox queues of workflows, kept in the server's {@link StateStore} (embedded: one
+ * owner-only properties file per MailBox in {@code DATA/workflows/queues/}, written whole through
+ * a temporary file and an atomic move), so that they survive restarts of the server and of
+ * services. Thread-safe; every change is stored before the method returns.
  */
 public final class WorkflowQueues {
     private static final Logger log = LoggerFactory.getLogger(WorkflowQueues.class);
@@ -29,7 +28,7 @@ public final class WorkflowQueues {
     /** The most workflows one MailBox's queue may hold. */
     public static final int MAX_PER_MAILBOX = 100;
 
-    private final Path dir;
+    private final StateStore store;
     private final Map<String, Queue> queues = new LinkedHashMap<>();
 
     private static final class Queue {
@@ -37,24 +36,27 @@ public final class WorkflowQueues {
         final List<QueuedWorkflow> entries = new ArrayList<>();
     }
 
-    /** Opens the queues in {@code dir}, reading what an earlier server left there. */
+    /** Opens the queues in {@code dir} (files of their own), reading what an earlier server left there. */
     public WorkflowQueues(Path dir) throws IOException {
-        this.dir = AtomicFiles.directory(dir);
-        try (DirectoryStream<Path> files = Files.newDirectoryStream(dir, "*.properties")) {
-            for (Path f : files) {
-                try {
-                    load(f);
-                } catch (IOException | RuntimeException e) {
-                    // One damaged file must not cost the other vehicles their queues; it stays for a person to look at.
-                    log.error("could not read the workflow queue {}: {}; it is left as it is", f, e.toString());
-                }
+        this(new EmbeddedStateStore(EmbeddedStateStore.Layout.in(dir).withQueues(dir), 1 << 20));
+    }
+
+    /** Opens the queues kept in {@code store}, reading what an earlier server left there. */
+    public WorkflowQueues(StateStore store) throws IOException {
+        this.store = store;
+        for (StateStore.Stored f : store.loadQueues()) {
+            try {
+                load(f.text());
+            } catch (IOException | RuntimeException e) {
+                // One damaged queue must not cost the other vehicles theirs; it stays for a person to look at.
+                log.error("could not read the workflow queue {}: {}; it is left as it is", f.where(), e.toString());
             }
         }
     }
 
-    private void load(Path f) throws IOException {
+    private void load(String text) throws IOException {
         Properties p = new Properties();
-        p.load(new StringReader(Files.readString(f, StandardCharsets.UTF_8)));
+        p.load(new StringReader(text));
         String mailbox = p.getProperty("mailbox");
         if (mailbox == null) {
             throw new IOException("no mailbox= line");
@@ -109,7 +111,7 @@ public final class WorkflowQueues {
         }
         StringWriter w = new StringWriter();
         p.store(w, "RIPV workflow queue of " + mailbox + " (docs/workflows.md); written by the server");
-        AtomicFiles.write(dir.resolve(AtomicFiles.key(mailbox) + ".properties"), w.toString());
+        store.saveQueue(mailbox, w.toString());
     }
 
     /** Adds a parsed workflow at the end of a MailBox's queue. */

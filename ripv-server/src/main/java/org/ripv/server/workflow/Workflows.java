@@ -6,7 +6,6 @@ import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
-import java.nio.file.Path;
 import java.time.Instant;
 import java.util.List;
 import java.util.Locale;
@@ -29,6 +28,7 @@ import org.ripv.messages.VehicleEvent;
 import org.ripv.naming.MailboxAddress;
 import org.ripv.server.files.FileNames;
 import org.ripv.server.permit.PermitFile;
+import org.ripv.server.session.Rights;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -63,15 +63,14 @@ public final class Workflows implements AutoCloseable {
     record LineWaiter(String mailbox, Pattern regex, java.util.concurrent.CompletableFuture<String> seen) {}
 
     /**
-     * @param dir  where queues, receipts and the fetched-file lists live ({@code DATA/workflows})
-     * @param host the server
+     * @param store where queues, receipts and the fetched-file lists are kept (the server's state store)
+     * @param host  the server
      */
-    public Workflows(Path dir, WorkflowHost host) throws IOException {
+    public Workflows(org.ripv.server.store.StateStore store, WorkflowHost host) throws IOException {
         this.host = host;
-        AtomicFiles.directory(dir);
-        this.queues = new WorkflowQueues(dir.resolve("queues"));
-        this.receipts = new Receipts(dir.resolve("receipts"));
-        this.fetched = new FetchedFiles(dir.resolve("fetched"));
+        this.queues = new WorkflowQueues(store);
+        this.receipts = new Receipts(store);
+        this.fetched = new FetchedFiles(store);
         AtomicInteger n = new AtomicInteger();
         this.threads = Executors.newCachedThreadPool(r -> {
             Thread t = new Thread(r, "ripv-workflow-" + n.incrementAndGet());
@@ -236,6 +235,7 @@ public final class Workflows implements AutoCloseable {
         String user = request.header().origin().user();
         if (w.length == 2) {
             String mailbox = address(w[1]);
+            mayRead(user, mailbox);
             return ok(request, Ids.FID_QUEUE, listing(mailbox));
         }
         String verb = w.length > 1 ? w[1].toLowerCase(Locale.ROOT) : "";
@@ -243,6 +243,7 @@ public final class Workflows implements AutoCloseable {
             case "add" -> {
                 usage(w.length == 4, "?queue add MAILBOX NAME");
                 String mailbox = address(w[2]);
+                mayRead(user, mailbox);
                 PermitFile.User u = permitted(request);
                 Workflow wf = read(w[3]);
                 checkSteps(u, mailbox, wf);
@@ -259,6 +260,7 @@ public final class Workflows implements AutoCloseable {
             case "remove" -> {
                 usage(w.length == 4, "?queue remove MAILBOX ID");
                 String mailbox = address(w[2]);
+                mayRead(user, mailbox);
                 long id;
                 try {
                     id = Long.parseLong(w[3]);
@@ -283,6 +285,7 @@ public final class Workflows implements AutoCloseable {
             case "clear" -> {
                 usage(w.length == 3, "?queue clear MAILBOX");
                 String mailbox = address(w[2]);
+                mayRead(user, mailbox);
                 List<QueuedWorkflow> all = queues.list(mailbox);
                 for (QueuedWorkflow e : all) {
                     mayChange(request, e);
@@ -299,6 +302,14 @@ public final class Workflows implements AutoCloseable {
 
     /** {@code ?receipts MAILBOX [--last N]}. */
     public OutgoingServerMessage receiptsCommand(IncomingServerMessage request) throws IOException {
+        try {
+            return receipts(request);
+        } catch (Refused e) {
+            return request.reply(Footer.error(Ids.FID_RECEIPTS, ErrorCode.FORBIDDEN, e.getMessage()).via(SERVER));
+        }
+    }
+
+    private OutgoingServerMessage receipts(IncomingServerMessage request) throws IOException {
         String[] w = request.header().body().trim().split("\\s+");
         int n = 5;
         if (w.length == 4 && w[2].equals("--last")) {
@@ -314,6 +325,7 @@ public final class Workflows implements AutoCloseable {
             usage(w.length == 2, "?receipts MAILBOX [--last N]");
         }
         String mailbox = address(w[1]);
+        mayRead(request.header().origin().user(), mailbox);
         List<String> last = receipts.last(mailbox, n);
         if (last.isEmpty()) {
             return ok(request, Ids.FID_RECEIPTS, "no workflow receipts for " + mailbox + " yet");
@@ -352,6 +364,17 @@ public final class Workflows implements AutoCloseable {
     private static void usage(boolean ok, String usage) {
         if (!ok) {
             throw new IllegalArgumentException("usage: " + usage);
+        }
+    }
+
+    /**
+     * A queue and its receipts show what a vehicle is told and what it answered: reading them
+     * needs the read right on the MailBox, as watching and {@code ?history} do ({@link Rights}).
+     */
+    private void mayRead(String user, String mailbox) {
+        String why = Rights.whyNotRead(host.permits(), user, mailbox);
+        if (why != null) {
+            throw new Refused(why);
         }
     }
 

@@ -45,7 +45,7 @@ class ReceiptsTest {
     @Test
     void onlyTheNewestAreKept() throws Exception {
         Receipts receipts = new Receipts(dir);
-        Path d = dir.resolve(AtomicFiles.key(MB));
+        Path d = dir.resolve(org.ripv.server.store.DataFiles.key(MB));
         Files.createDirectories(d);
         for (int i = 0; i < Receipts.KEEP + 5; i++) {
             Files.writeString(d.resolve(String.format("%013d-1-%d.txt", i, i)), "old " + i);

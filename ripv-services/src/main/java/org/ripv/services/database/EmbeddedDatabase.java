@@ -91,6 +91,9 @@ public final class EmbeddedDatabase {
             log.warn("{} has no {}: its first start did not finish; creating it again", db, CREDENTIALS);
             deleteTree(db);
         }
+        if (SeedInChild.wanted() && SeedInChild.run(dataDir, handle)) {
+            return prepare(dataDir, handle); // made by a JVM of its own (first start in seconds): reuse it
+        }
         String ownerPassword = randomPassword();
         String readerPassword = randomPassword();
         long started = System.nanoTime();

@@ -92,6 +92,7 @@ public final class DataVisServer extends RIPVService {
     private final AtomicLong sequence = new AtomicLong();
     private volatile PlotWorker builtin;
     private volatile OctaveWorker octave;
+    private final PlotCancel plotCancel = new PlotCancel();
 
     public DataVisServer(String host, Config config) {
         super("DataVisServer", Ids.SID_DATAVIS, host);
@@ -179,6 +180,16 @@ public final class DataVisServer extends RIPVService {
             return workerAvailability();
         }
 
+        /** Stops the running plot: its wait ends and the worker is stopped (it is started again for the next one). */
+        @Override
+        public boolean cancel(Request running) {
+            if (!plotCancel.ask()) {
+                return false;
+            }
+            stopWorker();
+            return true;
+        }
+
         @Override
         public Reply execute(Request request) throws Exception {
             String line = request.command().strip();
@@ -241,7 +252,7 @@ public final class DataVisServer extends RIPVService {
     private Reply plot(Request request, VisCommand vis, Attachment file) throws Exception {
         long t0 = System.nanoTime();
         if (config.worker() == WorkerMode.BUILTIN && (builtin == null || !builtin.isAlive())) {
-            log.warn("the built-in plot worker had stopped; starting it again");
+            log.info("the built-in plot worker had stopped (or a plot was cancelled); starting it again");
             builtin = PlotWorker.start(dir);
         }
         String exchangeName = vis.output() + "-" + sequence.incrementAndGet(); // a late worker's JPEG never passes for ours
@@ -249,12 +260,25 @@ public final class DataVisServer extends RIPVService {
         Exchange.clean(dir);
         try (WatchService watch = FileSystems.getDefault().newWatchService()) {
             dir.register(watch, StandardWatchEventKinds.ENTRY_CREATE, StandardWatchEventKinds.ENTRY_MODIFY);
+            plotCancel.begin(watch);
             DataFile.Summary summary = writeData(vis, file);
             Exchange.writeAtomically(dir, Exchange.INFO, (exchangeName + "\n").getBytes(StandardCharsets.UTF_8));
             request.progress("plotting " + summary.rows() + " rows of " + file.name() + " with the " + config.worker()
                     + " worker", new Progress("rows checked and handed to the " + config.worker() + " worker",
                             summary.rows(), summary.rows(), 0));
-            String status = awaitWorker(watch, vis, exchangeName);
+            // The chart's numbers for an interactive plot in the client, while the worker draws.
+            org.ripv.messages.ChartData chart = ChartDataBuilder.forReply(config.worker(), file.data(), summary);
+            String status;
+            try {
+                status = awaitWorker(watch, vis, exchangeName);
+            } catch (java.nio.file.ClosedWatchServiceException e) {
+                if (!plotCancel.asked()) {
+                    throw e;
+                }
+                log.info("vis:{} for {} was cancelled; the {} worker was stopped", file.name(), request.user(), config.worker());
+                throw new ServiceException(ErrorCode.CANCELLED, "plot of " + file.name() + " cancelled; the "
+                        + config.worker() + " worker was stopped and starts again for the next plot");
+            }
             if (!status.equals("1") && !status.isEmpty()) {
                 String why = status.startsWith("0") ? status.substring(1).strip() : status;
                 throw new ServiceException(ErrorCode.WORKER_ERROR, "the " + config.worker() + " worker could not plot "
@@ -275,9 +299,27 @@ public final class DataVisServer extends RIPVService {
                     ms, request.user());
             return Reply.ok("plotted " + summary.rows() + " rows x " + Math.max(1, summary.columns() - 1) + " series of "
                     + file.name() + " to " + jpegName + " (" + bytes.length + " bytes) in " + ms + " ms with the "
-                    + config.worker() + " worker", new ImageResult(jpegName, bytes));
+                    + config.worker() + " worker", new ImageResult(jpegName, bytes, chart));
         } finally {
+            plotCancel.end();
             Exchange.clean(dir); // whatever happened, the next request starts from an empty exchange
+        }
+    }
+
+    /**
+     * A cancelled plot's worker: the built-in one is told to stop without waiting for it (it drops
+     * the plot it is drawing) and a new one starts with the next request; Octave is killed and its
+     * supervisor starts it again.
+     */
+    private void stopWorker() {
+        PlotWorker w = builtin;
+        if (w != null) {
+            builtin = null;
+            w.stop();
+        }
+        OctaveWorker o = octave;
+        if (o != null) {
+            o.kill();
         }
     }
 

@@ -177,6 +177,15 @@ public final class OctaveWorker implements AutoCloseable {
         return lastExit;
     }
 
+    /** Kills the running Octave (a cancelled plot); the supervisor starts it again. */
+    public void kill() {
+        Process p = process;
+        if (p != null) {
+            p.descendants().forEach(ProcessHandle::destroyForcibly);
+            p.destroyForcibly();
+        }
+    }
+
     /** Stops Octave (and its gnuplot) and does not start it again. */
     @Override
     public void close() {

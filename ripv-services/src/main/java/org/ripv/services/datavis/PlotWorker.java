@@ -136,6 +136,15 @@ public final class PlotWorker implements AutoCloseable {
         Exchange.writeAtomically(dir, Exchange.OK, (status + "\n").getBytes(StandardCharsets.UTF_8));
     }
 
+    /**
+     * Tells the worker to stop and does not wait (a cancelled plot): a plot it is drawing is
+     * dropped, since the request that wanted it has cleaned the exchange.
+     */
+    public void stop() {
+        closing = true;
+        thread.interrupt();
+    }
+
     /** Stops the worker thread and waits for it. */
     @Override
     public void close() {

@@ -27,11 +27,14 @@ import org.ripv.services.serial.ymodem.YmodemConfig;
  * @param ymodem          YMODEM timeouts and retries
  * @param maxCommand      the longest command written to this link ({@code maxcommand=}, default
  *                        {@link SingleLineCommand#DEFAULT_MAX}); longer ones are refused
+ * @param interrupt       what {@code ?cancel} writes to stop a running plain command
+ *                        ({@code interrupt=}, default Ctrl-C, {@link Interrupt}); empty: the link
+ *                        has none and plain commands cannot be cancelled
  */
 public record LinkSettings(String device, int baud, int dataBits, Parity parity, StopBits stopBits,
                            String lineEnding, Pattern prompt, Duration idleTimeout, Duration commandTimeout,
                            CarrierMode carrier, String sendCommand, String receiveCommand,
-                           Duration reconnectEvery, YmodemConfig ymodem, int maxCommand) {
+                           Duration reconnectEvery, YmodemConfig ymodem, int maxCommand, String interrupt) {
 
     /** PicoDOS's prompt. */
     public static final String DEFAULT_PROMPT = "C:\\>";
@@ -96,6 +99,16 @@ public record LinkSettings(String device, int baud, int dataBits, Parity parity,
             throw new IllegalArgumentException("maxcommand " + maxCommand + " is outside 1–" + SingleLineCommand.SERVER_MAX
                     + " (the server's cap)");
         }
+        Objects.requireNonNull(interrupt, "interrupt");
+    }
+
+    /** Settings with the default interrupt, Ctrl-C. */
+    public LinkSettings(String device, int baud, int dataBits, Parity parity, StopBits stopBits,
+                        String lineEnding, Pattern prompt, Duration idleTimeout, Duration commandTimeout,
+                        CarrierMode carrier, String sendCommand, String receiveCommand,
+                        Duration reconnectEvery, YmodemConfig ymodem, int maxCommand) {
+        this(device, baud, dataBits, parity, stopBits, lineEnding, prompt, idleTimeout, commandTimeout, carrier,
+                sendCommand, receiveCommand, reconnectEvery, ymodem, maxCommand, Interrupt.CTRL_C);
     }
 
     /** Settings with the default command length limit. */
@@ -126,37 +139,42 @@ public record LinkSettings(String device, int baud, int dataBits, Parity parity,
 
     public LinkSettings withDevice(String newDevice) {
         return new LinkSettings(newDevice, baud, dataBits, parity, stopBits, lineEnding, prompt, idleTimeout,
-                commandTimeout, carrier, sendCommand, receiveCommand, reconnectEvery, ymodem, maxCommand);
+                commandTimeout, carrier, sendCommand, receiveCommand, reconnectEvery, ymodem, maxCommand, interrupt);
     }
 
     public LinkSettings withIdleTimeout(Duration idle) {
         return new LinkSettings(device, baud, dataBits, parity, stopBits, lineEnding, prompt, idle,
-                commandTimeout, carrier, sendCommand, receiveCommand, reconnectEvery, ymodem, maxCommand);
+                commandTimeout, carrier, sendCommand, receiveCommand, reconnectEvery, ymodem, maxCommand, interrupt);
     }
 
     public LinkSettings withReconnectEvery(Duration every) {
         return new LinkSettings(device, baud, dataBits, parity, stopBits, lineEnding, prompt, idleTimeout,
-                commandTimeout, carrier, sendCommand, receiveCommand, every, ymodem, maxCommand);
+                commandTimeout, carrier, sendCommand, receiveCommand, every, ymodem, maxCommand, interrupt);
     }
 
     public LinkSettings withYmodem(YmodemConfig config) {
         return new LinkSettings(device, baud, dataBits, parity, stopBits, lineEnding, prompt, idleTimeout,
-                commandTimeout, carrier, sendCommand, receiveCommand, reconnectEvery, config, maxCommand);
+                commandTimeout, carrier, sendCommand, receiveCommand, reconnectEvery, config, maxCommand, interrupt);
     }
 
     public LinkSettings withVehicleCommands(String send, String receive) {
         return new LinkSettings(device, baud, dataBits, parity, stopBits, lineEnding, prompt, idleTimeout,
-                commandTimeout, carrier, send, receive, reconnectEvery, ymodem, maxCommand);
+                commandTimeout, carrier, send, receive, reconnectEvery, ymodem, maxCommand, interrupt);
     }
 
     public LinkSettings withCarrier(CarrierMode mode) {
         return new LinkSettings(device, baud, dataBits, parity, stopBits, lineEnding, prompt, idleTimeout,
-                commandTimeout, mode, sendCommand, receiveCommand, reconnectEvery, ymodem, maxCommand);
+                commandTimeout, mode, sendCommand, receiveCommand, reconnectEvery, ymodem, maxCommand, interrupt);
     }
 
     public LinkSettings withMaxCommand(int max) {
         return new LinkSettings(device, baud, dataBits, parity, stopBits, lineEnding, prompt, idleTimeout,
-                commandTimeout, carrier, sendCommand, receiveCommand, reconnectEvery, ymodem, max);
+                commandTimeout, carrier, sendCommand, receiveCommand, reconnectEvery, ymodem, max, interrupt);
+    }
+
+    public LinkSettings withInterrupt(String keys) {
+        return new LinkSettings(device, baud, dataBits, parity, stopBits, lineEnding, prompt, idleTimeout,
+                commandTimeout, carrier, sendCommand, receiveCommand, reconnectEvery, ymodem, maxCommand, keys);
     }
 
     /** {@code 115200 8N1} */

@@ -23,6 +23,14 @@ final class ReplyReader {
      * {@code command} (a fresh connection's banner) only ends the reply if nothing follows it.
      */
     boolean read(Link l, StringBuilder text, long maxMillis, String command) throws IOException {
+        return read(l, text, maxMillis, command, null);
+    }
+
+    /**
+     * As {@link #read(Link, StringBuilder, long, String)}; once {@code cancel} has been asked, the
+     * vehicle has {@link #settleMillis} from then to come back to its prompt.
+     */
+    boolean read(Link l, StringBuilder text, long maxMillis, String command, CommandCancel cancel) throws IOException {
         byte[] buf = new byte[4096];
         long deadline = System.nanoTime() + maxMillis * 1_000_000;
         long idle = settings.idleTimeout().toMillis();
@@ -31,7 +39,11 @@ final class ReplyReader {
         while (System.nanoTime() - deadline < 0) {
             int n;
             try {
-                n = l.read(buf, 0, buf.length, wait);
+                long asked = cancel == null ? 0 : cancel.askedAt();
+                if (asked != 0 && deadline - (asked + settleMillis() * 1_000_000) > 0) {
+                    deadline = asked + settleMillis() * 1_000_000;
+                }
+                n = l.read(buf, 0, buf.length, Math.max(1, Math.min(wait, (deadline - System.nanoTime()) / 1_000_000)));
             } catch (EOFException e) {
                 return true;
             }
@@ -54,6 +66,16 @@ final class ReplyReader {
             }
         }
         return false;
+    }
+
+    /** Whether {@code text} ends with the vehicle's prompt. */
+    boolean endsWithPrompt(CharSequence text) {
+        return vehicleText.endsWithPrompt(text);
+    }
+
+    /** How long a cancelled command's vehicle has to be back at its prompt: twice the idle timeout, at least 3 s. */
+    long settleMillis() {
+        return Math.max(3000, 2 * settings.idleTimeout().toMillis());
     }
 
     /** Reads and forgets until the vehicle is back at its prompt or quiet (after a transfer). */

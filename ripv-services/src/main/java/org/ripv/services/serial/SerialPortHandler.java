@@ -2,7 +2,6 @@ package org.ripv.services.serial;
 
 import java.io.EOFException;
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.locks.ReentrantLock;
@@ -11,7 +10,6 @@ import org.ripv.commands.SingleLineCommand;
 import org.ripv.exceptions.ServiceException;
 import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.ErrorCode;
-import org.ripv.messages.Header;
 import org.ripv.service.Availability;
 import org.ripv.service.CommandHandler;
 import org.ripv.service.Reply;
@@ -22,8 +20,7 @@ import org.ripv.services.serial.ymodem.YmodemException;
  * Owns one link to a vehicle and runs its MailBox's commands (thesis: SerialPortHandler).
  *
  * <ul>
- *   <li>A plain command is written with the line ending; the reply is read until the prompt or
- *       the idle timeout, and returned without the echoed command line and the prompt.</li>
+ *   <li>A plain command: {@link PlainCommands}.</li>
  *   <li>{@code ymodem:get NAME…} and {@code ymodem:put NAME}: {@link YmodemCommands}.</li>
  * </ul>
  *
@@ -52,6 +49,8 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
     private final YmodemCommands ymodem;
     private final ReentrantLock lock = new ReentrantLock();
     private final LinkState state;
+    private final PlainCommands plain;
+    private final RunningCommand running = new RunningCommand();
 
     /**
      * @param handle   the MailBox handle, for messages
@@ -77,8 +76,9 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
                 : settings.carrier() == CarrierMode.REQUIRE && !settings.isTcp() ? VehicleConsole.Calls.CARRIER
                 : VehicleConsole.Calls.DIALOG;
         this.console = new VehicleConsole(mailbox, vehicle.call(), settings.prompt(), how, publish);
-        this.ymodem = new YmodemCommands(handle, settings, vehicleText, console, workDir);
+        this.ymodem = new YmodemCommands(handle, settings, vehicleText, console, workDir, running);
         this.state = new LinkState(vehicle, console, opener, lock);
+        this.plain = new PlainCommands(settings, vehicleText, replies, console, state);
     }
 
     /**
@@ -116,16 +116,19 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
         if (settings.carrier() == CarrierMode.REQUIRE && !l.carrier()) {
             return Availability.notAvailable("no carrier (DCD low) on " + l.describe() + call);
         }
-        return Availability.available(l.describe() + call);
+        String now = running.describe();
+        return now == null ? Availability.available(l.describe() + call)
+                : Availability.running(now, l.describe() + call);
     }
 
     /**
-     * Cancels a running YMODEM transfer ({@link YmodemCommands#cancel}). A plain command is not
-     * cancelled yet (the link's interrupt, then waiting for the prompt).
+     * Cancels a running YMODEM transfer ({@link YmodemCommands#cancel}: CAN CAN, then back to the
+     * prompt) or plain command ({@link CommandCancel}: the link's interrupt, then its prompt).
+     * False for a link whose interrupt is {@code none}.
      */
     @Override
     public boolean cancel(Request running) {
-        return ymodem.cancel();
+        return ymodem.cancel() || plain.cancel();
     }
 
     @Override
@@ -141,6 +144,7 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
             Connection l = usableLink();
             String command = request.command().trim();
             console.command(request.user(), command);
+            running.start(command, request.user());
             try {
                 if (command.startsWith("ymodem:get")) {
                     return ymodem.get(l, request);
@@ -152,7 +156,7 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
                     throw new ServiceException(ErrorCode.UNKNOWN_COMMAND,
                             "unknown '" + command.split("\\s+")[0] + "'; use ymodem:get NAME… or ymodem:put NAME");
                 }
-                return plain(l, command);
+                return plain.run(l, command, request.user());
             } catch (EOFException e) {
                 state.failed(l, e);
                 throw new ServiceException(ErrorCode.DEVICE_ERROR, e.getMessage()
@@ -163,6 +167,8 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
                 state.failed(l, e);
                 throw new ServiceException(ErrorCode.DEVICE_ERROR, "link " + l.describe() + " failed: " + e
                         + "; the link will be reopened when it comes back");
+            } finally {
+                running.end();
             }
         } finally {
             lock.unlock();
@@ -187,31 +193,6 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
                     + "; nothing was sent");
         }
         return l;
-    }
-
-    // ---- plain commands
-
-    private Reply plain(Connection l, String command) throws IOException, ServiceException {
-        StringBuilder text = new StringBuilder();
-        boolean closed;
-        l.listen();
-        try {
-            l.write((command + settings.lineEnding()).getBytes(StandardCharsets.ISO_8859_1));
-            l.flush();
-            closed = replies.read(l, text, settings.commandTimeout().toMillis(), command);
-        } finally {
-            l.stopListening();
-        }
-        if (text.isEmpty() && !closed) {
-            throw new ServiceException(ErrorCode.TIMEOUT, "no answer to '" + Header.abbreviate(command) + "' from " + l.describe()
-                    + " within " + settings.idleTimeout().toMillis() + " ms");
-        }
-        String reply = vehicleText.clean(text.toString(), command);
-        if (closed) {
-            state.failed(l, new EOFException("closed by the vehicle"));
-            return Reply.ok(reply + (reply.isEmpty() ? "" : "\n") + "(the vehicle closed the link)");
-        }
-        return Reply.ok(reply);
     }
 
     @Override

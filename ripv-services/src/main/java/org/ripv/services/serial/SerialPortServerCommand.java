@@ -41,7 +41,7 @@ public final class SerialPortServerCommand implements Callable<Integer> {
                     + "or listen://[ADDR:]PORT where the vehicle (or its modem or RUDICS gateway) calls in; "
                     + "optionally followed by its own settings, e.g. /dev/ttyUSB0,baud=9600,carrier=require,name=ru29 "
                     + "(keys: baud, data-bits, parity, stop-bits, carrier, line-ending, prompt, prompt-regex, idle-timeout, "
-                    + "command-timeout, send-command, receive-command, maxcommand; name, surface, quiet, alert, line-length, "
+                    + "command-timeout, send-command, receive-command, maxcommand, interrupt; name, surface, quiet, alert, line-length, "
                     + "rate, callers). Repeatable.")
     List<String> links = new ArrayList<>();
 
@@ -117,6 +117,11 @@ public final class SerialPortServerCommand implements Callable<Integer> {
             description = "Console lines per second per link; the excess is marked 'N lines skipped' (default ${DEFAULT-VALUE}).")
     int rate;
 
+    @Option(names = "--interrupt", defaultValue = "^C", paramLabel = "KEYS",
+            description = "What ?cancel writes to stop a running vehicle command: ^C, \\x03, text, or none"
+                    + " (per link: interrupt=; default ${DEFAULT-VALUE}).")
+    String interrupt;
+
     @Option(names = "--callers", paramLabel = "CIDR[,CIDR...]",
             description = "On listen:// links: take calls only from these addresses, e.g. the RUDICS gateway's "
                     + "(per link: callers=...; default: anyone who can reach the port).")
@@ -128,7 +133,7 @@ public final class SerialPortServerCommand implements Callable<Integer> {
     /** The keys a {@code --link} may override for itself, after its device: {@code DEVICE,baud=9600,...}. */
     static final java.util.Set<String> LINK_KEYS = java.util.Set.of("baud", "data-bits", "parity", "stop-bits", "carrier",
             "line-ending", "prompt", "prompt-regex", "idle-timeout", "command-timeout", "send-command", "receive-command",
-            "maxcommand");
+            "maxcommand", "interrupt");
 
     /**
      * Builds a link's settings: the command line's options, overridden by any {@code key=value}
@@ -169,7 +174,8 @@ public final class SerialPortServerCommand implements Callable<Integer> {
                 Duration.ofMillis(number(o, "idle-timeout", idleMillis)),
                 Duration.ofSeconds(number(o, "command-timeout", commandSeconds)), mode,
                 o.getOrDefault("send-command", sendCommand), o.getOrDefault("receive-command", receiveCommand),
-                Duration.ofSeconds(Math.max(1, reconnectSeconds)), YmodemConfig.lrzsz(), number(o, "maxcommand", maxCommand));
+                Duration.ofSeconds(Math.max(1, reconnectSeconds)), YmodemConfig.lrzsz(), number(o, "maxcommand", maxCommand),
+                Interrupt.parse(o.getOrDefault("interrupt", interrupt)));
     }
 
     /** The keys of a link's call and console settings ({@link CallSettings}). */

@@ -24,6 +24,7 @@ import org.ripv.services.serial.ymodem.FileNames;
 import org.ripv.services.serial.ymodem.SendFile;
 import org.ripv.services.serial.ymodem.YmodemException;
 import org.ripv.services.serial.ymodem.YmodemReceiver;
+import org.ripv.services.serial.ymodem.YmodemRefusedException;
 import org.ripv.services.serial.ymodem.YmodemSender;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -36,6 +37,8 @@ import org.slf4j.LoggerFactory;
 final class YmodemCommands {
     private static final Logger log = LoggerFactory.getLogger(YmodemCommands.class);
     private static final AtomicLong TRANSFERS = new AtomicLong();
+    /** How many more times a transfer start the vehicle refused is tried, after a resync (the {@code Cyr} story). */
+    static final int START_RETRIES = 1;
 
     private final String handle;
     private final LinkSettings settings;
@@ -43,15 +46,20 @@ final class YmodemCommands {
     private final ReplyReader replies;
     private final VehicleConsole console;
     private final Path workDir;
+    private final RunningCommand running;
+    private final LineSync lineSync;
     /** A transfer is under way, and whether ?cancel asked it to stop (checked where it answers or sends a block). */
     private volatile boolean transferring;
     private volatile boolean cancelRequested;
 
-    YmodemCommands(String handle, LinkSettings settings, VehicleText vehicleText, VehicleConsole console, Path workDir) {
+    YmodemCommands(String handle, LinkSettings settings, VehicleText vehicleText, VehicleConsole console, Path workDir,
+                   RunningCommand running) {
+        this.running = running;
         this.handle = handle;
         this.settings = settings;
         this.vehicleText = vehicleText;
         this.replies = new ReplyReader(settings, vehicleText);
+        this.lineSync = new LineSync(settings, replies);
         this.console = console;
         this.workDir = workDir;
     }
@@ -70,7 +78,11 @@ final class YmodemCommands {
         return true;
     }
 
-    /** Runs a transfer in binary mode and reports its end on the console. */
+    /**
+     * Runs a transfer in binary mode and reports its end on the console. The exchange leaves a
+     * clean line when it succeeds ({@link LineSync}); here it is made clean after a failure or a
+     * cancel, so the next command always meets the vehicle's prompt.
+     */
     private Reply transfer(Connection c, Request request, Exchange exchange) throws IOException, ServiceException {
         c.listen();
         c.binary(true);
@@ -79,7 +91,7 @@ final class YmodemCommands {
             console.event(VehicleEvent.TRANSFER_DONE, r.text() + " for " + request.user());
             return r;
         } catch (ServiceException | IOException e) {
-            if (e instanceof YmodemException) {
+            if (!(e instanceof java.io.EOFException)) {
                 resync(c);
             }
             String why = e.getMessage();
@@ -92,10 +104,12 @@ final class YmodemCommands {
         }
     }
 
-    /** After a failed transfer, lets the vehicle finish and return to its prompt. */
+    /** After a failed or cancelled transfer, lets the vehicle finish and brings its line back to a clean prompt. */
     private void resync(Connection c) {
         try {
-            replies.drain(c);
+            if (!lineSync.resync(c)) {
+                log.info("{}: the vehicle did not show its prompt after a failed transfer", handle);
+            }
         } catch (IOException e) {
             log.debug("{}: link failed after a failed transfer: {}", handle, e.toString()); // the reader reports it
         }
@@ -131,25 +145,31 @@ final class YmodemCommands {
         try {
             DirectorySink sink = new DirectorySink(dir);
             String vehicleCommand = settings.sendCommand() + " " + String.join(" ", names);
-            write(c, vehicleCommand);
             ProgressReporter progress = new ProgressReporter(request, "receiving");
-            List<FileHeader> files;
+            List<FileHeader> files = null;
             cancelRequested = false;
             transferring = true;
             try {
-                files = new YmodemReceiver(c, settings.ymodem(),
-                        TransferConsole.both(progress, new TransferConsole(console, request.user(), "receiving")))
-                        .cancelWhen(() -> cancelRequested)
-                        .stopWaitingWhen(text -> vehicleText.promptAfterEcho(text, vehicleCommand)).receiveBatch(sink);
-            } catch (YmodemException e) {
-                // our 'C's may sit in the shell's line: end that line so the shell is clean again
-                c.write(settings.lineEnding().getBytes(StandardCharsets.ISO_8859_1));
-                c.flush();
-                throw e;
+                for (int attempt = 0; files == null; attempt++) {
+                    write(c, vehicleCommand);
+                    try {
+                        files = new YmodemReceiver(c, settings.ymodem(), TransferConsole.both(progress,
+                                TransferConsole.both(new TransferConsole(console, request.user(), "receiving"),
+                                        running.transfer("ymodem:get", names.stream().anyMatch(n -> n.contains("*")
+                                                || n.contains("?")) ? -1 : names.size()))))
+                                .cancelWhen(() -> cancelRequested)
+                                .stopWaitingWhen(text -> vehicleText.promptAfterEcho(text, vehicleCommand)).receiveBatch(sink);
+                    } catch (YmodemRefusedException e) {
+                        if (attempt >= START_RETRIES || cancelRequested) {
+                            throw e;
+                        }
+                        refused(c, request, vehicleCommand, e.getMessage());
+                    }
+                }
             } finally {
                 transferring = false;
             }
-            replies.drain(c);
+            lineSync.resync(c);
             if (files.isEmpty()) {
                 throw new ServiceException(ErrorCode.TRANSFER_FAILED, "the vehicle sent no files for '"
                         + String.join(" ", names) + "'");
@@ -192,23 +212,42 @@ final class YmodemCommands {
             throw new ServiceException(ErrorCode.BAD_FILE_NAME, e.getMessage());
         }
         return transfer(c, request, () -> {
-            write(c, settings.receiveCommand());
-            awaitReceiver(c, settings.receiveCommand());
+            for (int attempt = 0; ; attempt++) {
+                write(c, settings.receiveCommand());
+                String refusal = awaitReceiver(c, settings.receiveCommand());
+                if (refusal == null) {
+                    break;
+                }
+                String why = "the vehicle did not start receiving after '" + settings.receiveCommand() + "'; it said: " + refusal;
+                if (attempt >= START_RETRIES) {
+                    throw new ServiceException(ErrorCode.TRANSFER_FAILED, why + (attempt > 0 ? " (tried "
+                            + (attempt + 1) + " times, with a clean line before each)" : ""));
+                }
+                refused(c, request, settings.receiveCommand(), why);
+            }
             ProgressReporter progress = new ProgressReporter(request, "sending");
             cancelRequested = false;
             transferring = true;
             try {
                 new YmodemSender(c, settings.ymodem(),
-                        TransferConsole.both(progress, new TransferConsole(console, request.user(), "sending")))
+                        TransferConsole.both(progress, TransferConsole.both(new TransferConsole(console, request.user(), "sending"),
+                                running.transfer("ymodem:put", 1))))
                         .cancelWhen(() -> cancelRequested).sendBatch(List.of(file), true);
             } finally {
                 transferring = false;
             }
-            replies.drain(c);
+            lineSync.resync(c);
             String text = "sent " + file.name() + " (" + file.length() + " bytes) in " + progress.summary(file.length());
             log.info("{}: {}", handle, text);
             return Reply.ok(text);
         });
+    }
+
+    /** The vehicle refused a transfer's start: say so, clean its line, and let the caller try once more. */
+    private void refused(Connection c, Request request, String vehicleCommand, String why) throws IOException {
+        log.info("{}: '{}' was refused ({}); resynchronising with the prompt and trying once more", handle, vehicleCommand, why);
+        console.transfer(request.user(), "'" + vehicleCommand + "' was refused; trying once more on a clean line");
+        lineSync.resync(c);
     }
 
     private void write(Connection c, String vehicleCommand) throws IOException {
@@ -218,10 +257,11 @@ final class YmodemCommands {
 
     /**
      * Reads past the echo of the vehicle's receive command until its YMODEM receiver asks with a
-     * lone 'C'. A shell that answers with text instead ("Bad command", then its prompt, which
-     * holds a 'C' too) fails the command with that text rather than getting block 0 typed at it.
+     * lone 'C' (returns null). A shell that answers with text instead ("Bad command", then its
+     * prompt, which holds a 'C' too) is a refusal: its text is returned, rather than block 0
+     * being typed at it.
      */
-    private void awaitReceiver(Link l, String vehicleCommand) throws IOException, ServiceException {
+    private String awaitReceiver(Link l, String vehicleCommand) throws IOException, ServiceException {
         StringBuilder said = new StringBuilder();
         byte[] buf = new byte[512];
         long deadline = System.nanoTime() + settings.ymodem().startTimeout().toNanos();
@@ -236,14 +276,13 @@ final class YmodemCommands {
                 // a receiver sends 'C' and waits; a shell's text goes on at once
                 int more = l.read(buf, 0, buf.length, 200);
                 if (more == 0) {
-                    return;
+                    return null;
                 }
                 said.append(new String(buf, 0, more, StandardCharsets.ISO_8859_1));
                 continue;
             }
             if (echo >= 0 && vehicleText.endsWithPrompt(rest) || n == 0 && !rest.isBlank()) {
-                throw new ServiceException(ErrorCode.TRANSFER_FAILED, "the vehicle did not start receiving after '"
-                        + vehicleCommand + "'; it said: " + vehicleText.clean(rest, vehicleCommand));
+                return vehicleText.clean(rest, vehicleCommand);
             }
         }
         throw new ServiceException(ErrorCode.TRANSFER_FAILED, "the vehicle did not start receiving within "

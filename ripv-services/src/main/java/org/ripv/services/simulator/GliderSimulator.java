@@ -37,7 +37,7 @@ import org.slf4j.LoggerFactory;
 /**
  * A PicoDOS-like glider for tests and demos: a {@code C:\>} prompt, echo of what it is sent,
  * and the commands {@code dir}, {@code del NAME}, {@code type NAME}, {@code ys NAME…} (send by
- * YMODEM), {@code yr} (receive by YMODEM) and {@code GO}, which "submerges" it: it stops
+ * YMODEM), {@code yr} (receive by YMODEM), {@code monitor [SECONDS]} (prints until Ctrl-C) and {@code GO}, which "submerges" it: it stops
  * answering and, on TCP, drops the connection and refuses new ones until it surfaces.
  *
  * <p>It serves one connection at a time, on a TCP port ({@link #listen}) or on a serial device
@@ -361,10 +361,39 @@ public final class GliderSimulator implements AutoCloseable {
                 say(shell, "Mission started; submerging for " + submerge.toSeconds() + " s\r\n");
                 return true;
             }
-            case "HELP", "?" -> say(shell, "dir, type NAME, del NAME, ys NAME..., yr, go\r\n");
+            case "MONITOR" -> monitor(shell, words);
+            case "HELP", "?" -> say(shell, "dir, type NAME, del NAME, ys NAME..., yr, monitor [SECONDS], go\r\n");
             default -> say(shell, "Bad command or file name\r\n");
         }
         return false;
+    }
+
+    /**
+     * {@code monitor [SECONDS]}: prints a depth line every 250 ms until Ctrl-C or the time is up
+     * (default 60 s), like a glider's sensor report: a command that only an interrupt stops.
+     */
+    private void monitor(ShellLink shell, String[] words) throws IOException {
+        long seconds = 60;
+        if (words.length > 1) {
+            try {
+                seconds = Math.min(3600, Long.parseLong(words[1]));
+            } catch (NumberFormatException e) {
+                say(shell, "usage: monitor [SECONDS]\r\n");
+                return;
+            }
+        }
+        long end = System.nanoTime() + seconds * 1_000_000_000L;
+        byte[] keys = new byte[64];
+        for (int i = 0; running && System.nanoTime() - end < 0; i++) {
+            int n = shell.read(keys, 0, keys.length, 250);
+            for (int k = 0; k < n; k++) {
+                if (keys[k] == 3) {
+                    say(shell, "^C\r\n");
+                    return;
+                }
+            }
+            say(shell, String.format(Locale.ROOT, "m_depth %.2f m\r\n", 5 + 3 * Math.sin(i / 8.0)));
+        }
     }
 
     private Path file(ShellLink shell, String[] words) throws IOException {

@@ -72,6 +72,19 @@ final class VisHarness implements AutoCloseable {
         }
     }
 
+    /** Waits for a PROGRESS reply to message {@code id} (the plot has been handed to the worker). */
+    OutgoingServiceMessage awaitProgress(long id, long seconds) throws InterruptedException {
+        OutgoingServiceMessage m = queue(id).poll(seconds, TimeUnit.SECONDS);
+        assertThat(m).as("a reply to #" + id).isNotNull();
+        assertThat(m.footer().status()).as(m.footer().replyText()).isEqualTo(Status.PROGRESS);
+        return m;
+    }
+
+    /** {@code ?cancel} as the server passes it on. */
+    boolean cancel(long id) {
+        return service.cancel(mailbox(), "123456", id);
+    }
+
     OutgoingServiceMessage run(String command, String fileName, String text) throws InterruptedException {
         return finalReply(send(command, fileName, text), 60);
     }

@@ -67,6 +67,18 @@ class SerialPortServerCommandTest {
     }
 
     @Test
+    void theInterruptIsCtrlCUnlessALinkSaysOtherwise() {
+        SerialPortServerCommand c = parse("--server", "h", "--link", "/dev/ttyUSB0", "--link", "/dev/ttyUSB1,interrupt=^X^C",
+                "--link", "/dev/ttyUSB2,interrupt=none");
+        assertEquals("\u0003", c.settings(c.links.get(0)).interrupt());
+        assertEquals("\u0018\u0003", c.settings(c.links.get(1)).interrupt());
+        assertEquals("", c.settings(c.links.get(2)).interrupt());
+        assertEquals("", parse("--server", "h", "--interrupt", "none").settings("COM1").interrupt());
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> c.settings("/dev/x,interrupt=^1"));
+        assertTrue(e.getMessage().contains("not a control key"), e.getMessage());
+    }
+
+    @Test
     void defaultsArePicoDos() {
         LinkSettings s = parse("--server", "h").settings("COM1");
         assertEquals("115200 8N1", s.frameDescription());

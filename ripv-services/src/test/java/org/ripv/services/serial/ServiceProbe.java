@@ -103,6 +103,16 @@ public final class ServiceProbe {
         }
     }
 
+    /** The message id of the last request sent (a test cancels it while {@link #send} waits in another thread). */
+    public long lastId() {
+        return ids.get();
+    }
+
+    /** {@code ?cancel} as the server passes it on: true when the handler accepted. */
+    public boolean cancel(String handle, long messageId) {
+        return service.cancel(service.name().mailbox(handle).toString(), "123456", messageId);
+    }
+
     public MailboxStatus status(String handle) {
         String address = service.name().mailbox(handle).toString();
         return service.mailboxes().stream().filter(s -> s.address().equals(address)).findFirst().orElseThrow();

@@ -5,8 +5,10 @@ import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.function.Function;
 import java.util.stream.Stream;
 import org.jline.reader.Candidate;
 import org.jline.reader.Completer;
@@ -18,6 +20,7 @@ import org.jline.reader.UserInterruptException;
 import org.jline.terminal.Terminal;
 import org.jline.terminal.TerminalBuilder;
 import org.ripv.client.cli.CliSession;
+import org.ripv.client.cli.Reconnect;
 import org.ripv.client.handlers.ClientSocketHandler;
 import org.ripv.naming.MailboxAddress;
 
@@ -34,16 +37,34 @@ public final class Shell {
         return Path.of(System.getProperty("user.home"), ".ripv", "history");
     }
 
-    private final CliSession session;
-    private final ClientSocketHandler client;
+    /** How long the shell keeps trying to log in again before it gives up (a standby takes over within 15 s). */
+    static final Duration RECONNECT_FOR = Duration.ofSeconds(30);
+
+    private volatile CliSession session;
+    private volatile ClientSocketHandler client;
     private final Path history;
     private final PrintStream err;
+    private final Reconnect reconnect;
+    private final Function<ClientSocketHandler, CliSession> sessions;
+    private final List<ClientSocketHandler> made = new ArrayList<>();
 
     public Shell(CliSession session, ClientSocketHandler client, Path history, PrintStream err) {
+        this(session, client, history, err, null, null);
+    }
+
+    /**
+     * With {@code reconnect}, a lost connection is made again (the same server restarted, or a
+     * standby of the list) and the session goes on in the MailBox it was in; {@code sessions}
+     * makes the new connection's session.
+     */
+    public Shell(CliSession session, ClientSocketHandler client, Path history, PrintStream err, Reconnect reconnect,
+                 Function<ClientSocketHandler, CliSession> sessions) {
         this.session = session;
         this.client = client;
         this.history = history;
         this.err = err;
+        this.reconnect = reconnect;
+        this.sessions = sessions;
     }
 
     /**
@@ -54,9 +75,9 @@ public final class Shell {
     public int run() throws IOException {
         prepareHistory();
         try (Terminal terminal = TerminalBuilder.builder().system(true).name("ripv").build()) {
-            Completions completions = new Completions(new ServerFacts(client));
+            TabCompleter completer = new TabCompleter(new Completions(new ServerFacts(client)));
             LineReader reader = LineReaderBuilder.builder().terminal(terminal).appName("ripv")
-                    .completer(new TabCompleter(completions))
+                    .completer(completer)
                     .variable(LineReader.HISTORY_FILE, history)
                     .option(LineReader.Option.DISABLE_EVENT_EXPANSION, true) // '!' belongs to SQL and vehicles
                     .option(LineReader.Option.HISTORY_IGNORE_DUPS, true)
@@ -74,19 +95,70 @@ public final class Shell {
                     } catch (EndOfFileException e) {
                         break;
                     }
+                    if (!client.isOpen() && !reconnected(completer)) { // lost while waiting at the prompt
+                        return org.ripv.client.cli.CliCommand.EXIT_NO_SESSION;
+                    }
                     if (!session.run(line)) {
                         break;
                     }
                     if (!client.isOpen()) {
-                        err.println("Error: the connection to " + client.server() + " was lost");
-                        return org.ripv.client.cli.CliCommand.EXIT_NO_SESSION;
+                        if (!reconnected(completer)) {
+                            return org.ripv.client.cli.CliCommand.EXIT_NO_SESSION;
+                        }
+                        err.println("If '" + line + "' did not reach the server, run it again.");
                     }
                 }
             } finally {
                 reader.getHistory().save();
+                for (ClientSocketHandler c : made) {
+                    c.close();
+                }
             }
         }
         return 0;
+    }
+
+    /** Logs in again (growing back-off, for {@link #RECONNECT_FOR}) and goes on in the same MailBox; false when it could not. */
+    private boolean reconnected(TabCompleter completer) {
+        String lost = client.server();
+        if (reconnect == null) {
+            err.println("Error: the connection to " + lost + " was lost");
+            return false;
+        }
+        err.println("The connection to " + lost + " was lost; logging in again...");
+        long end = System.nanoTime() + RECONNECT_FOR.toNanos();
+        long wait = 500;
+        Exception last = null;
+        while (System.nanoTime() < end) {
+            try {
+                ClientSocketHandler c = reconnect.connect();
+                made.add(c);
+                String mailbox = session.mailbox();
+                client = c;
+                session = sessions.apply(c);
+                completer.completions = new Completions(new ServerFacts(c));
+                if (!mailbox.isEmpty()) {
+                    session.run("use " + mailbox);
+                }
+                err.println("Logged in again to " + c.server() + ".");
+                return true;
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                break;
+            } catch (Exception e) {
+                last = e;
+            }
+            try {
+                Thread.sleep(wait);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                break;
+            }
+            wait = Math.min(wait * 2, 5000);
+        }
+        err.println("Error: could not log in again within " + RECONNECT_FOR.toSeconds() + " s"
+                + (last == null ? "" : ": " + last.getMessage()));
+        return false;
     }
 
     private String user() {
@@ -129,7 +201,7 @@ public final class Shell {
 
     /** JLine's side of {@link Completions}, and local file names after {@code put}. */
     private final class TabCompleter implements Completer {
-        private final Completions completions;
+        private volatile Completions completions;
 
         TabCompleter(Completions completions) {
             this.completions = completions;

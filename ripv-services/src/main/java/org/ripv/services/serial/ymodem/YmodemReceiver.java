@@ -102,7 +102,7 @@ public final class YmodemReceiver {
             Kind kind = readPacket(config.startInterval().toMillis());
             if (waitingForFirst && gaveUp.test(noise)) {
                 String said = noise.toString().replaceAll("[\\p{Cntrl}&&[^\\n]]", "").strip();
-                throw new YmodemException("the other end did not start sending; it said: " + said);
+                throw new YmodemRefusedException("the other end did not start sending; it said: " + said);
             }
             switch (kind) {
                 case CANCEL -> throw new YmodemException("sender cancelled the transfer (CAN CAN)", true);

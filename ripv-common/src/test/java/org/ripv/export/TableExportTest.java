@@ -1,4 +1,4 @@
-package org.ripv.client.cli;
+package org.ripv.export;
 
 import static org.assertj.core.api.Assertions.assertThat;
 

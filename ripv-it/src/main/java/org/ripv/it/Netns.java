@@ -7,16 +7,15 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
-import org.junit.jupiter.api.Assumptions;
 
 /**
  * Network namespaces for the multi-host test: hosts on one bridge that lives in a namespace of
  * its own (nothing is added to the machine's own network), a router namespace that masquerades
  * a private network behind it, and Java programs started inside them with {@code ip netns exec}.
  * Everything it made goes away on {@link #close}, on failure too; namespaces left by a run that
- * was killed are removed by the next.
+ * was killed are removed by the next. Used by the multi-host tests and {@code ./ripv bench hosts}.
  */
-final class Netns implements AutoCloseable {
+public final class Netns implements AutoCloseable {
     private static final String FAMILY = "ripvt";
     private final String prefix;
     private final List<String> namespaces = new ArrayList<>();
@@ -28,33 +27,41 @@ final class Netns implements AutoCloseable {
         this.bridgeNs = prefix + "sw";
     }
 
-    /** Skips (or under RIPV_REQUIRE_TOOLS fails) where network namespaces cannot be made. */
-    static void assumeUsable() {
-        String why = null;
+    /** Why network namespaces cannot be made here, or null when they can. */
+    public static String unusable() {
         if (!"root".equals(System.getProperty("user.name"))) {
-            why = "needs root for network namespaces (ip netns); CI runs as root";
-        } else if (!org.ripv.testing.Tools.onPath("ip") || !org.ripv.testing.Tools.onPath("nft")) {
-            why = "needs ip (iproute2) and nft (nftables) on the PATH; .ci/run installs them";
-        } else {
-            try {
-                String probe = FAMILY + "probe" + ProcessHandle.current().pid();
-                sh("ip", "netns", "add", probe);
-                sh("ip", "netns", "del", probe);
-            } catch (IOException e) {
-                why = "network namespaces are not allowed here: " + e.getMessage();
+            return "needs root for network namespaces (ip netns); CI runs as root";
+        }
+        if (!onPath("ip") || !onPath("nft")) {
+            return "needs ip (iproute2) and nft (nftables) on the PATH; .ci/run installs them";
+        }
+        try {
+            String probe = FAMILY + "probe" + ProcessHandle.current().pid();
+            sh("ip", "netns", "add", probe);
+            sh("ip", "netns", "del", probe);
+            return null;
+        } catch (IOException e) {
+            return "network namespaces are not allowed here: " + e.getMessage();
+        }
+    }
+
+    /** True when {@code command} is an executable on the PATH. */
+    public static boolean onPath(String command) {
+        String path = System.getenv("PATH");
+        if (path == null) {
+            return false;
+        }
+        for (String dir : path.split(java.io.File.pathSeparator)) {
+            Path p = Path.of(dir, command);
+            if (Files.isRegularFile(p) && Files.isExecutable(p)) {
+                return true;
             }
         }
-        if (why == null) {
-            return;
-        }
-        if (System.getenv("RIPV_REQUIRE_TOOLS") != null) {
-            throw new AssertionError("RIPV_REQUIRE_TOOLS is set but this test " + why);
-        }
-        Assumptions.abort(why);
+        return false;
     }
 
     /** A fresh set, after removing what killed runs left. */
-    static Netns create() throws IOException {
+    public static Netns create() throws IOException {
         removeStale();
         Netns n = new Netns(FAMILY + ProcessHandle.current().pid() + "x");
         n.add(n.bridgeNs);
@@ -85,7 +92,7 @@ final class Netns implements AutoCloseable {
         }
     }
 
-    String ns(String host) {
+    public String ns(String host) {
         return prefix + host;
     }
 
@@ -96,7 +103,7 @@ final class Netns implements AutoCloseable {
     }
 
     /** A host on the bridge: namespace, a veth pair to the bridge, an address. */
-    void host(String host, String cidr) throws IOException {
+    public void host(String host, String cidr) throws IOException {
         String ns = ns(host);
         add(ns);
         sh("ip", "-n", ns, "link", "add", "eth0", "type", "veth", "peer", "name", host, "netns", bridgeNs);
@@ -112,7 +119,7 @@ final class Netns implements AutoCloseable {
      * firewall drops every connection from outside in (as a home or ship's router does), so the
      * server can route to the host but never reach it.
      */
-    void natHost(String router, String routerLan, String host, String routerInner, String hostCidr, String hostGateway)
+    public void natHost(String router, String routerLan, String host, String routerInner, String hostCidr, String hostGateway)
             throws IOException {
         host(router, routerLan);
         String r = ns(router);
@@ -135,12 +142,12 @@ final class Netns implements AutoCloseable {
     }
 
     /** Routes {@code net} from {@code host} through {@code via}. */
-    void route(String host, String net, String via) throws IOException {
+    public void route(String host, String net, String via) throws IOException {
         in(ns(host), "ip", "route", "add", net, "via", via);
     }
 
     /** Drops every packet in and out of a host (a cut link, as a firewall or a dead radio sees it). */
-    void cut(String host) throws IOException {
+    public void cut(String host) throws IOException {
         nft(ns(host), """
                 table inet ripvcut {
                   chain inbound { type filter hook input priority -10; policy drop; iifname "lo" accept; }
@@ -149,7 +156,7 @@ final class Netns implements AutoCloseable {
                 """);
     }
 
-    void mend(String host) throws IOException {
+    public void mend(String host) throws IOException {
         in(ns(host), "nft", "delete", "table", "inet", "ripvcut");
     }
 
@@ -163,14 +170,14 @@ final class Netns implements AutoCloseable {
         }
     }
 
-    String in(String ns, String... cmd) throws IOException {
+    public String in(String ns, String... cmd) throws IOException {
         List<String> all = new ArrayList<>(List.of("ip", "netns", "exec", ns));
         all.addAll(List.of(cmd));
         return sh(all.toArray(String[]::new));
     }
 
     /** Starts a Java main class of this build inside a host's namespace, its output to a log. */
-    Process java(String host, Path log, String mainClass, String... args) throws IOException {
+    public Process java(String host, Path log, String mainClass, String... args) throws IOException {
         List<String> cmd = new ArrayList<>(List.of("ip", "netns", "exec", ns(host),
                 Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-Xmx256m", "-XX:+UseSerialGC", "-XX:TieredStopAtLevel=1", "-Xshare:auto",
@@ -181,7 +188,7 @@ final class Netns implements AutoCloseable {
         return p;
     }
 
-    static String sh(String... cmd) throws IOException {
+    public static String sh(String... cmd) throws IOException {
         Process p = new ProcessBuilder(cmd).redirectErrorStream(true).start();
         try {
             if (!p.waitFor(30, TimeUnit.SECONDS)) {

@@ -25,7 +25,9 @@ import org.ripv.messages.Priority;
  * rtt HOST:PORT USER PASS N MAILBOX BODY            RTT ping medianUs p90Us / RTT request medianUs p90Us
  * echo-server PORT                                  READY; echoes 8-byte frames forever
  * tcp-rtt HOST PORT N                               RTT tcp medianUs p90Us
+ * takeover H1:P,H2:P USER PASS SECONDS              ANSWER epochMs server, each time another server answers ?ping
  * </pre>
+ * HOST:PORT may be a list ({@code h1:4444,h2:4444}): the first that answers.
  */
 public final class NetProbe {
     private NetProbe() {}
@@ -37,18 +39,26 @@ public final class NetProbe {
             case "rtt" -> rtt(a);
             case "echo-server" -> echoServer(Integer.parseInt(a[1]));
             case "tcp-rtt" -> tcpRtt(a[1], Integer.parseInt(a[2]), Integer.parseInt(a[3]));
+            case "takeover" -> takeover(a);
             default -> throw new IllegalArgumentException(a[0]);
         }
         System.exit(0);
     }
 
     private static ClientSocketHandler login(String server, String user, String password) throws Exception {
-        String[] hp = server.split(":");
         // Each run's server has a new certificate: trust it in a file of this probe's own, not ~/.ripv/known_hosts.
-        java.nio.file.Path known = java.nio.file.Files.createTempFile("ripv-probe-known-hosts", "");
-        known.toFile().deleteOnExit();
-        System.setProperty(org.ripv.client.handlers.Tls.KNOWN_HOSTS_PROPERTY, known.toString());
-        ClientSocketHandler c = ClientSocketHandler.connect(hp[0], Integer.parseInt(hp[1]));
+        if (System.getProperty(org.ripv.client.handlers.Tls.KNOWN_HOSTS_PROPERTY) == null) {
+            java.nio.file.Path known = java.nio.file.Files.createTempFile("ripv-probe-known-hosts", "");
+            known.toFile().deleteOnExit();
+            System.setProperty(org.ripv.client.handlers.Tls.KNOWN_HOSTS_PROPERTY, known.toString());
+        }
+        ClientSocketHandler c;
+        if (server.indexOf(',') >= 0) {
+            c = ClientSocketHandler.connect(server, 4444);
+        } else {
+            String[] hp = server.split(":");
+            c = ClientSocketHandler.connect(hp[0], Integer.parseInt(hp[1]));
+        }
         c.login(user, password.toCharArray());
         return c;
     }
@@ -86,6 +96,37 @@ public final class NetProbe {
             // Wait for the printing, not only the replies: dependents of a future run in no fixed order.
             CompletableFuture.allOf(printed.toArray(CompletableFuture[]::new)).get(300, TimeUnit.SECONDS);
         }
+    }
+
+    /**
+     * A client of a server list that keeps asking {@code ?ping} (every 100 ms, reconnecting and
+     * logging in again at once when the connection drops) and prints which server answers each
+     * time that changes: the time a takeover takes as a client sees it.
+     */
+    private static void takeover(String[] a) throws Exception {
+        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(Long.parseLong(a[4]));
+        String last = null;
+        ClientSocketHandler c = null;
+        while (System.nanoTime() < end) {
+            try {
+                if (c == null || !c.isOpen()) {
+                    c = login(a[1], a[2], a[3]);
+                }
+                c.call("", "?ping", Priority.NORMAL, Duration.ofSeconds(2), null);
+                if (!c.server().equals(last)) {
+                    last = c.server();
+                    System.out.println("ANSWER " + System.currentTimeMillis() + " " + last);
+                    System.out.flush();
+                }
+            } catch (Exception e) {
+                if (c != null) {
+                    c.close();
+                }
+                c = null;
+            }
+            Thread.sleep(100);
+        }
+        System.out.println("END");
     }
 
     private static void watch(String[] a) throws Exception {

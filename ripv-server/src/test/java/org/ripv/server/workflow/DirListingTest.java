@@ -5,10 +5,10 @@ import static org.assertj.core.api.Assertions.assertThat;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
 
-class RunnerTest {
+class DirListingTest {
     @Test
     void aPicoDosListingGivesNamesAndSizes() {
-        Map<String, Long> files = Runner.listing("""
+        Map<String, Long> files = DirListing.listing("""
                  Volume in drive C is GLIDER
                  Directory of C:\\
 
@@ -19,16 +19,16 @@ class RunnerTest {
                 C:\\>
                 """);
         assertThat(files).containsExactly(Map.entry("01230000.SBD", 20000L), Map.entry("MISSION1.LOG", 10348L));
-        assertThat(Runner.listing("HUGE.LOG 99999999999999999999999 11-23-26 15:02")).isEmpty();
-        assertThat(Runner.listing("")).isEmpty();
+        assertThat(DirListing.listing("HUGE.LOG 99999999999999999999999 11-23-26 15:02")).isEmpty();
+        assertThat(DirListing.listing("")).isEmpty();
     }
 
     @Test
     void globsMatchWholeNamesIgnoringCase() {
-        assertThat(Runner.glob("*.SBD").matcher("01230000.sbd").matches()).isTrue();
-        assertThat(Runner.glob("*.SBD").matcher("01230000.SBDX").matches()).isFalse();
-        assertThat(Runner.glob("0123000?.DBD").matcher("01230007.DBD").matches()).isTrue();
-        assertThat(Runner.glob("0123000?.DBD").matcher("012300077.DBD").matches()).isFalse();
-        assertThat(Runner.glob("a+b(1).LOG").matcher("A+B(1).log").matches()).as("regex characters are literal").isTrue();
+        assertThat(DirListing.glob("*.SBD").matcher("01230000.sbd").matches()).isTrue();
+        assertThat(DirListing.glob("*.SBD").matcher("01230000.SBDX").matches()).isFalse();
+        assertThat(DirListing.glob("0123000?.DBD").matcher("01230007.DBD").matches()).isTrue();
+        assertThat(DirListing.glob("0123000?.DBD").matcher("012300077.DBD").matches()).isFalse();
+        assertThat(DirListing.glob("a+b(1).LOG").matcher("A+B(1).log").matches()).as("regex characters are literal").isTrue();
     }
 }

@@ -1,4 +1,4 @@
-package org.ripv.server.workflow;
+package org.ripv.server.store;
 
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
@@ -13,20 +13,30 @@ import java.security.NoSuchAlgorithmException;
 import java.util.HexFormat;
 import java.util.Locale;
 
-/** Owner-only directories and files written whole: a temporary file, then an atomic move. */
-final class AtomicFiles {
-    private AtomicFiles() {}
+/**
+ * Owner-only directories and files written whole: a temporary file, then an atomic move; and the
+ * file-name-safe keys the data directory uses for MailBoxes. Shared by the embedded store and
+ * the tests that look at its files.
+ */
+public final class DataFiles {
+    private DataFiles() {}
 
-    static Path directory(Path dir) throws IOException {
+    public static Path directory(Path dir) throws IOException {
         Files.createDirectories(dir);
         ownerOnly(dir, "rwx------");
         return dir;
     }
 
-    static void write(Path file, String text) throws IOException {
+    public static void write(Path file, String text) throws IOException {
         Path tmp = file.resolveSibling("." + file.getFileName() + ".tmp");
+        Files.deleteIfExists(tmp);
+        try {
+            // owner-only from the start: queues and subscriptions name users, addresses and URLs
+            Files.createFile(tmp, PosixFilePermissions.asFileAttribute(PosixFilePermissions.fromString("rw-------")));
+        } catch (UnsupportedOperationException e) {
+            Files.createFile(tmp);
+        }
         Files.writeString(tmp, text, StandardCharsets.UTF_8);
-        ownerOnly(tmp, "rw-------");
         try {
             Files.move(tmp, file, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
         } catch (AtomicMoveNotSupportedException e) {
@@ -35,7 +45,7 @@ final class AtomicFiles {
     }
 
     /** Writes a new file; never replaces one. */
-    static void create(Path file, String text) throws IOException {
+    public static void create(Path file, String text) throws IOException {
         if (Files.exists(file)) {
             throw new FileAlreadyExistsException(file.toString());
         }
@@ -51,7 +61,7 @@ final class AtomicFiles {
     }
 
     /** A file-name-safe key for a MailBox address: readable letters plus a hash, so that none collide. */
-    static String key(String mailbox) {
+    public static String key(String mailbox) {
         StringBuilder b = new StringBuilder();
         for (char c : mailbox.toCharArray()) {
             b.append(Character.isLetterOrDigit(c) || c == '-' || c == '.' ? c : '_');
@@ -62,7 +72,7 @@ final class AtomicFiles {
         return b.toString().toLowerCase(Locale.ROOT) + "-" + sha256(mailbox.getBytes(StandardCharsets.UTF_8)).substring(0, 12);
     }
 
-    static String sha256(byte[] data) {
+    public static String sha256(byte[] data) {
         try {
             return HexFormat.of().formatHex(MessageDigest.getInstance("SHA-256").digest(data));
         } catch (NoSuchAlgorithmException e) {

@@ -1,0 +1,582 @@
+package org.ripv.client.panels;
+
+import java.awt.BorderLayout;
+import java.awt.Color;
+import java.awt.Dimension;
+import java.awt.FlowLayout;
+import java.awt.Font;
+import java.awt.Window;
+import java.awt.event.KeyEvent;
+import java.nio.file.Path;
+import java.util.List;
+import javax.swing.BorderFactory;
+import javax.swing.DefaultListModel;
+import javax.swing.JButton;
+import javax.swing.JDialog;
+import javax.swing.JFileChooser;
+import javax.swing.JLabel;
+import javax.swing.JList;
+import javax.swing.JOptionPane;
+import javax.swing.JPanel;
+import javax.swing.JScrollPane;
+import javax.swing.JSpinner;
+import javax.swing.JSplitPane;
+import javax.swing.JTabbedPane;
+import javax.swing.JTable;
+import javax.swing.JTextArea;
+import javax.swing.JTextField;
+import javax.swing.ListSelectionModel;
+import javax.swing.SpinnerNumberModel;
+import javax.swing.UIManager;
+import javax.swing.event.DocumentEvent;
+import javax.swing.event.DocumentListener;
+import javax.swing.table.AbstractTableModel;
+import javax.swing.text.BadLocationException;
+import javax.swing.text.DefaultHighlighter;
+import org.ripv.client.handlers.ClientSocketHandler.IfExists;
+import org.ripv.client.managers.ClientModel;
+import org.ripv.client.managers.ConsoleModel;
+import org.ripv.client.managers.GuiManager;
+import org.ripv.client.managers.WorkflowModel;
+import org.ripv.messages.ConsoleEntry;
+import org.ripv.messages.VehicleEvent;
+
+/**
+ * One vehicle MailBox's workflow queue and receipts (docs/workflows.md), opened from the MAM
+ * panel: the queue as {@code ?queue} lists it, with Add file…, Remove and Clear; a small editor
+ * to write a workflow and queue it (it is uploaded, then {@code ?queue add}), where a refused
+ * file's line is marked and its reason listed; the receipts ({@code ?receipts}); and the
+ * workflow lines and WORKFLOW_DONE / WORKFLOW_FAILED events of the live console. It renders
+ * {@link WorkflowModel}; the queue is asked again whenever a workflow event arrives.
+ */
+public final class WorkflowDialog extends JDialog {
+    /** What the editor starts with: the file format in a few lines. */
+    static final String EXAMPLE = """
+            # One step a line; '#' starts a comment. docs/workflows.md has them all.
+            workflow once
+            send dir expect='\\.MI|\\.LOG|\\.DBD|\\.SBD' timeout=30s
+            ymodem:get *.SBD timeout=10m
+            notify "logs fetched"
+            """;
+
+    private final GuiManager manager;
+    private final ClientModel model;
+    private final String mailbox;
+    private final QueueTable table = new QueueTable();
+    private final JTable queueTable = new JTable(table);
+    private final JLabel outcome = new JLabel(" ");
+    private final DefaultListModel<WorkflowModel.Refusal> refusals = new DefaultListModel<>();
+    private final JList<WorkflowModel.Refusal> refusalList = new JList<>(refusals);
+    private final JTextField name = new JTextField(18);
+    private final JTextArea editor = new JTextArea(EXAMPLE);
+    private final JTextArea lineNumbers = new JTextArea("1");
+    private final DefaultListModel<WorkflowModel.Receipt> receipts = new DefaultListModel<>();
+    private final JList<WorkflowModel.Receipt> receiptList = new JList<>(receipts);
+    private final JTextArea receiptText = new JTextArea();
+    private final JSpinner last = new JSpinner(new SpinnerNumberModel(20, 1, 1000, 5));
+    private final JTextArea events = new JTextArea(5, 40);
+    private final JTabbedPane tabs = new JTabbedPane();
+    private JScrollPane refusalScroll;
+    private final WorkflowModel.Listener queueListener;
+    private final ConsoleModel.Listener consoleListener;
+    /** What "Keep both" or "Replace" does after the server said the name is taken. */
+    private java.util.function.Consumer<IfExists> retry;
+    private String lastWorkflowEntry = "";
+    private Object highlight;
+    /** The file Add file… sent last: a refused one is opened in the editor, at the line at fault. */
+    private Path sentFile;
+    /** Names this window uploaded: sending one again (a mended workflow) replaces it without asking. */
+    private final java.util.Set<String> uploadedHere = new java.util.HashSet<>();
+
+    public WorkflowDialog(Window owner, GuiManager manager, String mailbox) {
+        super(owner, "Workflows — " + handle(mailbox), ModalityType.MODELESS);
+        this.manager = manager;
+        this.model = manager.model();
+        this.mailbox = mailbox;
+        setName("workflowDialog");
+        setDefaultCloseOperation(DISPOSE_ON_CLOSE);
+
+        JLabel title = new JLabel(mailbox);
+        title.setName("workflowMailbox");
+        title.setBorder(BorderFactory.createEmptyBorder(4, 6, 4, 6));
+        title.setFont(title.getFont().deriveFont(Font.BOLD));
+
+        tabs.setName("workflowTabs");
+        tabs.addTab("Queue", queueTab());
+        tabs.setMnemonicAt(0, KeyEvent.VK_Q);
+        tabs.addTab("Write a workflow", editorTab());
+        tabs.setMnemonicAt(1, KeyEvent.VK_W);
+        tabs.addTab("Receipts", receiptsTab());
+        tabs.setMnemonicAt(2, KeyEvent.VK_R);
+
+        outcome.setName("workflowOutcome");
+        refusalList.setName("workflowRefusals");
+        refusalList.setVisibleRowCount(2);
+        refusalList.setSelectionMode(ListSelectionModel.SINGLE_SELECTION);
+        refusalList.addListSelectionListener(e -> {
+            WorkflowModel.Refusal r = refusalList.getSelectedValue();
+            if (!e.getValueIsAdjusting() && r != null && r.line() > 0) {
+                tabs.setSelectedIndex(1);
+                markLine(r.line());
+            }
+        });
+        JPanel south = new JPanel(new BorderLayout(4, 2));
+        south.setBorder(BorderFactory.createEmptyBorder(2, 6, 6, 6));
+        south.add(outcome, BorderLayout.NORTH);
+        refusalScroll = new JScrollPane(refusalList);
+        refusalScroll.setBorder(BorderFactory.createTitledBorder("Refused: the line and why (click to show it in the editor)"));
+        south.add(refusalScroll, BorderLayout.CENTER);
+
+        getContentPane().add(title, BorderLayout.NORTH);
+        getContentPane().add(tabs, BorderLayout.CENTER);
+        getContentPane().add(south, BorderLayout.SOUTH);
+        setPreferredSize(new Dimension(900, 620));
+        pack();
+        setLocationRelativeTo(owner);
+
+        queueListener = changed -> {
+            if (changed.equals(mailbox)) {
+                render();
+            }
+        };
+        consoleListener = changed -> {
+            if (changed.equals(mailbox)) {
+                consoleChanged();
+            }
+        };
+        model.workflows().addListener(queueListener);
+        model.console().addListener(consoleListener);
+        render();
+        consoleChanged();
+        refresh();
+        javax.swing.SwingUtilities.invokeLater(() -> split(tabs));
+    }
+
+    /** Receipts: the list takes 40 % once the window has its size. */
+    private static void split(java.awt.Container c) {
+        for (java.awt.Component x : c.getComponents()) {
+            if (x instanceof JSplitPane s && s.getOrientation() == JSplitPane.HORIZONTAL_SPLIT) {
+                s.setDividerLocation(0.4);
+            } else if (x instanceof java.awt.Container inner) {
+                split(inner);
+            }
+        }
+    }
+
+    private static String handle(String address) {
+        int i = address.lastIndexOf('>');
+        return i < 0 ? address : address.substring(i + 1);
+    }
+
+    private JPanel queueTab() {
+        queueTable.setName("queueTable");
+        queueTable.setSelectionMode(ListSelectionModel.SINGLE_SELECTION);
+        queueTable.setAutoResizeMode(JTable.AUTO_RESIZE_LAST_COLUMN);
+        int[] widths = {40, 80, 80, 170, 50, 330};
+        for (int i = 0; i < widths.length; i++) {
+            queueTable.getColumnModel().getColumn(i).setPreferredWidth(widths[i]);
+        }
+        JButton refresh = button("Refresh", KeyEvent.VK_F, "queueRefresh", "Ask the server again (?queue, ?receipts)");
+        refresh.addActionListener(e -> refresh());
+        JButton add = button("Add file…", KeyEvent.VK_A, "queueAddFile",
+                "Upload a workflow file from this computer and queue it (?queue add)");
+        add.addActionListener(e -> chooseFile());
+        JButton remove = button("Remove", KeyEvent.VK_M, "queueRemove", "Remove the selected workflow (?queue remove)");
+        remove.addActionListener(e -> removeSelected());
+        JButton clear = button("Clear", KeyEvent.VK_L, "queueClear", "Remove every workflow of this MailBox (?queue clear)");
+        clear.addActionListener(e -> {
+            if (JOptionPane.showConfirmDialog(this, "Remove every workflow queued for " + handle(mailbox) + "?",
+                    "Clear the queue", JOptionPane.OK_CANCEL_OPTION, JOptionPane.WARNING_MESSAGE) == JOptionPane.OK_OPTION) {
+                manager.clearQueue(mailbox);
+            }
+        });
+        JPanel buttons = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 0));
+        buttons.add(refresh);
+        buttons.add(add);
+        buttons.add(remove);
+        buttons.add(clear);
+
+        events.setName("workflowEvents");
+        events.setEditable(false);
+        events.setFont(new Font(Font.MONOSPACED, Font.PLAIN, events.getFont().getSize()));
+        JScrollPane eventScroll = new JScrollPane(events);
+        eventScroll.setBorder(BorderFactory.createTitledBorder("Workflow lines and events (live console)"));
+
+        JSplitPane split = new JSplitPane(JSplitPane.VERTICAL_SPLIT, new JScrollPane(queueTable), eventScroll);
+        split.setResizeWeight(0.6);
+        split.setBorder(null);
+        JPanel p = new JPanel(new BorderLayout(4, 4));
+        p.setBorder(BorderFactory.createEmptyBorder(4, 4, 4, 4));
+        p.add(split, BorderLayout.CENTER);
+        p.add(buttons, BorderLayout.SOUTH);
+        return p;
+    }
+
+    private JPanel editorTab() {
+        name.setName("workflowName");
+        name.setText(handle(mailbox) + ".wf");
+        name.setToolTipText("The name the workflow is uploaded under (the server's upload directory)");
+        editor.setName("workflowEditor");
+        Font mono = new Font(Font.MONOSPACED, Font.PLAIN, editor.getFont().getSize());
+        editor.setFont(mono);
+        editor.setTabSize(4);
+        lineNumbers.setFont(mono);
+        lineNumbers.setEditable(false);
+        lineNumbers.setFocusable(false);
+        lineNumbers.setBackground(UIManager.getColor("Panel.background"));
+        lineNumbers.setBorder(BorderFactory.createEmptyBorder(0, 4, 0, 6));
+        editor.getDocument().addDocumentListener(new DocumentListener() {
+            @Override
+            public void insertUpdate(DocumentEvent e) {
+                edited();
+            }
+
+            @Override
+            public void removeUpdate(DocumentEvent e) {
+                edited();
+            }
+
+            @Override
+            public void changedUpdate(DocumentEvent e) {
+                edited();
+            }
+        });
+        edited();
+        JScrollPane scroll = new JScrollPane(editor);
+        scroll.setRowHeaderView(lineNumbers);
+        JButton queue = button("Upload and queue", KeyEvent.VK_U, "queueText",
+                "Upload the text as NAME and queue it for this MailBox (?upload, then ?queue add)");
+        queue.addActionListener(e -> queueText(IfExists.ASK));
+        JLabel nameLabel = new JLabel("Name:");
+        nameLabel.setDisplayedMnemonic(KeyEvent.VK_N);
+        nameLabel.setLabelFor(name);
+        JPanel top = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 0));
+        top.add(nameLabel);
+        top.add(name);
+        top.add(queue);
+        JPanel p = new JPanel(new BorderLayout(4, 4));
+        p.setBorder(BorderFactory.createEmptyBorder(4, 4, 4, 4));
+        p.add(top, BorderLayout.NORTH);
+        p.add(scroll, BorderLayout.CENTER);
+        return p;
+    }
+
+    private JPanel receiptsTab() {
+        receiptList.setName("receiptList");
+        receiptList.setSelectionMode(ListSelectionModel.SINGLE_SELECTION);
+        receiptList.addListSelectionListener(e -> {
+            WorkflowModel.Receipt r = receiptList.getSelectedValue();
+            receiptText.setText(r == null ? "" : r.text());
+            receiptText.setCaretPosition(0);
+        });
+        receiptText.setName("receiptText");
+        receiptText.setEditable(false);
+        receiptText.setFont(new Font(Font.MONOSPACED, Font.PLAIN, receiptText.getFont().getSize()));
+        JSplitPane split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, new JScrollPane(receiptList), new JScrollPane(receiptText));
+        split.setResizeWeight(0.4);
+        split.setBorder(null);
+        JButton refresh = button("Refresh", KeyEvent.VK_H, "receiptsRefresh", "Ask the server again (?receipts --last N)");
+        refresh.addActionListener(e -> refresh());
+        JLabel lastLabel = new JLabel("Last:");
+        lastLabel.setDisplayedMnemonic(KeyEvent.VK_T);
+        lastLabel.setLabelFor(last);
+        JPanel buttons = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 0));
+        buttons.add(lastLabel);
+        buttons.add(last);
+        buttons.add(refresh);
+        JPanel p = new JPanel(new BorderLayout(4, 4));
+        p.setBorder(BorderFactory.createEmptyBorder(4, 4, 4, 4));
+        p.add(split, BorderLayout.CENTER);
+        p.add(buttons, BorderLayout.SOUTH);
+        return p;
+    }
+
+    private static JButton button(String text, int mnemonic, String name, String tip) {
+        JButton b = new JButton(text);
+        b.setMnemonic(mnemonic);
+        b.setName(name);
+        b.setToolTipText(tip);
+        return b;
+    }
+
+    /** Asks the server for the queue and the receipts. */
+    public void refresh() {
+        manager.refreshQueue(mailbox, (Integer) last.getValue());
+    }
+
+    private void chooseFile() {
+        JFileChooser chooser = new JFileChooser();
+        chooser.setDialogTitle("Queue a workflow file for " + handle(mailbox));
+        if (chooser.showOpenDialog(this) == JFileChooser.APPROVE_OPTION) {
+            queueFile(chooser.getSelectedFile().toPath(), IfExists.ASK);
+        }
+    }
+
+    /** Uploads a workflow file and queues it (what Add file… does once a file is chosen). */
+    public void queueFile(Path file, IfExists ifExists) {
+        retry = how -> queueFile(file, how);
+        sentFile = file;
+        outcome("uploading " + file.getFileName() + " …", false);
+        manager.queueFile(mailbox, file, ifExists);
+    }
+
+    private void queueText(IfExists ifExists) {
+        String n = name.getText().strip();
+        if (n.isEmpty()) {
+            outcome("give the workflow a name first (e.g. " + handle(mailbox) + ".wf)", true);
+            return;
+        }
+        String text = editor.getText();
+        sentFile = null;
+        retry = how -> {
+            outcome("uploading " + n + " …", false);
+            uploadedHere.add(n);
+            manager.queueText(mailbox, n, text, how);
+        };
+        retry.accept(ifExists == IfExists.ASK && uploadedHere.contains(n) ? IfExists.REPLACE : ifExists);
+    }
+
+    private void removeSelected() {
+        int row = queueTable.getSelectedRow();
+        if (row < 0) {
+            outcome("pick a workflow in the queue first, then Remove", true);
+            return;
+        }
+        manager.unqueue(mailbox, table.rows.get(row).id());
+    }
+
+    private void outcome(String text, boolean error) {
+        String first = text.lines().findFirst().orElse(" ");
+        outcome.setText(first.isBlank() ? " " : first);
+        outcome.setToolTipText(text.isBlank() ? null : text);
+        outcome.setForeground(error ? Colors.error() : UIManager.getColor("Label.foreground"));
+    }
+
+    private void render() {
+        WorkflowModel.Queue q = model.workflows().queue(mailbox);
+        long selected = queueTable.getSelectedRow() < 0 ? -1 : table.rows.get(queueTable.getSelectedRow()).id();
+        table.show(q.entries());
+        for (int i = 0; i < q.entries().size(); i++) {
+            if (q.entries().get(i).id() == selected) {
+                queueTable.setRowSelectionInterval(i, i);
+            }
+        }
+        if (!q.outcome().isEmpty()) {
+            outcome(q.outcome(), q.outcomeIsError());
+        }
+        refusals.clear();
+        q.refusals().forEach(refusals::addElement);
+        if (refusalScroll.isVisible() == q.refusals().isEmpty()) {
+            refusalScroll.setVisible(!q.refusals().isEmpty()); // only when there is something to show
+            getContentPane().revalidate();
+        }
+        clearMark();
+        if (!q.refusals().isEmpty() && sentFile != null) {
+            // A refused file from disk: open it in the editor to mend it there.
+            try {
+                editorText(sentFile.getFileName().toString(), java.nio.file.Files.readString(sentFile));
+                tabs.setSelectedIndex(1);
+            } catch (java.io.IOException | RuntimeException e) {
+                outcome(q.outcome() + " (and " + sentFile + " cannot be read again: " + e.getMessage() + ")", true);
+            }
+            sentFile = null;
+        }
+        if (!q.refusals().isEmpty() && q.refusals().get(0).line() > 0 && tabs.getSelectedIndex() == 1) {
+            markLine(q.refusals().get(0).line());
+        }
+        WorkflowModel.Receipt shown = receiptList.getSelectedValue();
+        if (!receipts.isEmpty() || !q.receipts().isEmpty()) {
+            List<WorkflowModel.Receipt> now = q.receipts();
+            if (!now.equals(java.util.Collections.list(receipts.elements()))) {
+                receipts.clear();
+                now.forEach(receipts::addElement);
+                int keep = shown == null ? -1 : now.indexOf(shown);
+                receiptList.setSelectedIndex(keep >= 0 ? keep : now.isEmpty() ? -1 : 0);
+            }
+        }
+        if (!q.nameTaken().isEmpty() && retry != null && isShowing()) {
+            java.util.function.Consumer<IfExists> again = retry;
+            retry = null;
+            javax.swing.SwingUtilities.invokeLater(() -> askAboutTakenName(q.nameTaken(), again));
+        }
+    }
+
+    private void askAboutTakenName(String taken, java.util.function.Consumer<IfExists> again) {
+        Object[] options = {"Keep both", "Replace", "Cancel"};
+        int answer = JOptionPane.showOptionDialog(this, "The server's upload directory already has a file named " + taken + ".\n"
+                        + "Keep both (yours is stored under a new name and that one is queued), replace it (needs the right), or cancel?",
+                "File exists", JOptionPane.DEFAULT_OPTION, JOptionPane.QUESTION_MESSAGE, null, options, options[0]);
+        if (answer == 0) {
+            again.accept(IfExists.KEEP);
+        } else if (answer == 1) {
+            again.accept(IfExists.REPLACE);
+        }
+    }
+
+    /** The editor's line numbers follow its text; a mark on a refused line goes with an edit. */
+    private void edited() {
+        int lines = editor.getLineCount();
+        StringBuilder b = new StringBuilder();
+        for (int i = 1; i <= lines; i++) {
+            b.append(i).append(i < lines ? "\n" : "");
+        }
+        if (!b.toString().equals(lineNumbers.getText())) {
+            lineNumbers.setText(b.toString());
+        }
+    }
+
+    private void markLine(int line) {
+        clearMark();
+        try {
+            int start = editor.getLineStartOffset(Math.min(line, editor.getLineCount()) - 1);
+            int end = editor.getLineEndOffset(Math.min(line, editor.getLineCount()) - 1);
+            Color c = Colors.dark() ? new Color(0x6B2A2A) : new Color(0xFFD6D6);
+            highlight = editor.getHighlighter().addHighlight(start, end, new DefaultHighlighter.DefaultHighlightPainter(c));
+            editor.setCaretPosition(start);
+        } catch (BadLocationException e) {
+            highlight = null;
+        }
+    }
+
+    private void clearMark() {
+        if (highlight != null) {
+            editor.getHighlighter().removeHighlight(highlight);
+            highlight = null;
+        }
+    }
+
+    /** Workflow lines and events of the live console; a new one means the queue has moved on. */
+    private void consoleChanged() {
+        StringBuilder b = new StringBuilder();
+        String newest = "";
+        for (ConsoleEntry e : model.console().entries(mailbox)) {
+            if (isWorkflow(e)) {
+                String line = ConsoleModel.text(e);
+                b.append(line).append('\n');
+                newest = line;
+            }
+        }
+        if (!newest.equals(lastWorkflowEntry)) {
+            boolean first = lastWorkflowEntry.isEmpty() && events.getText().isEmpty();
+            lastWorkflowEntry = newest;
+            events.setText(b.toString());
+            events.setCaretPosition(events.getDocument().getLength());
+            if (!first) {
+                refresh();
+            }
+        }
+    }
+
+    /** A workflow's progress line ("workflow 1 'x.wf': step 2/4 …") or a WORKFLOW_DONE / WORKFLOW_FAILED event. */
+    static boolean isWorkflow(ConsoleEntry e) {
+        return e.kind() == ConsoleEntry.Kind.EVENT
+                ? e.event() == VehicleEvent.WORKFLOW_DONE || e.event() == VehicleEvent.WORKFLOW_FAILED
+                : e.kind() == ConsoleEntry.Kind.COMMAND && e.text().startsWith("workflow ");
+    }
+
+    /** Shows one tab: 0 queue, 1 editor, 2 receipts. */
+    public void showTab(int index) {
+        tabs.setSelectedIndex(index);
+    }
+
+    /** Puts text into the editor (tests, and a future "open"). */
+    public void editorText(String name, String text) {
+        this.name.setText(name);
+        editor.setText(text);
+        editor.setCaretPosition(0);
+    }
+
+    /** The editor's name and text, as "NAME\nTEXT". */
+    public String editorContent() {
+        return name.getText() + "\n" + editor.getText();
+    }
+
+    /** Queues what the editor holds, as "Upload and queue" does. */
+    public void queueEditorText() {
+        queueText(IfExists.ASK);
+    }
+
+    public String mailbox() {
+        return mailbox;
+    }
+
+    public String outcomeText() {
+        return outcome.getText();
+    }
+
+    public List<String> refusalTexts() {
+        return java.util.Collections.list(refusals.elements()).stream().map(Object::toString).toList();
+    }
+
+    /** The editor line marked as refused (1-based), or 0. */
+    public int markedLine() {
+        if (highlight == null) {
+            return 0;
+        }
+        try {
+            return editor.getLineOfOffset(((javax.swing.text.Highlighter.Highlight) highlight).getStartOffset()) + 1;
+        } catch (BadLocationException e) {
+            return 0;
+        }
+    }
+
+    public String eventsText() {
+        return events.getText();
+    }
+
+    public List<String> receiptTitles() {
+        return java.util.Collections.list(receipts.elements()).stream().map(Object::toString).toList();
+    }
+
+    public int queueRows() {
+        return table.getRowCount();
+    }
+
+    @Override
+    public void dispose() {
+        model.workflows().removeListener(queueListener);
+        model.console().removeListener(consoleListener);
+        super.dispose();
+    }
+
+    /** The queue as a table: ID, owner, mode, file, steps, state. */
+    private static final class QueueTable extends AbstractTableModel {
+        private static final String[] COLUMNS = {"ID", "Owner", "Mode", "File", "Steps", "State"};
+        private List<WorkflowModel.Entry> rows = List.of();
+
+        void show(List<WorkflowModel.Entry> entries) {
+            if (!entries.equals(rows)) {
+                rows = entries;
+                fireTableDataChanged();
+            }
+        }
+
+        @Override
+        public int getRowCount() {
+            return rows.size();
+        }
+
+        @Override
+        public int getColumnCount() {
+            return COLUMNS.length;
+        }
+
+        @Override
+        public String getColumnName(int c) {
+            return COLUMNS[c];
+        }
+
+        @Override
+        public Object getValueAt(int r, int c) {
+            WorkflowModel.Entry e = rows.get(r);
+            return switch (c) {
+                case 0 -> e.id();
+                case 1 -> e.owner();
+                case 2 -> e.mode();
+                case 3 -> e.file();
+                case 4 -> e.steps();
+                default -> e.state() + (e.added().isEmpty() ? "" : "  (added " + e.added() + ")");
+            };
+        }
+    }
+}

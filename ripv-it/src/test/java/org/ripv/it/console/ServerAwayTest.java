@@ -1,0 +1,72 @@
+package org.ripv.it.console;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.net.ServerSocket;
+import java.nio.file.Path;
+import java.time.Duration;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.ripv.bench.VehicleConsoleService;
+import org.ripv.it.TestSystem;
+import org.ripv.messages.Priority;
+import org.ripv.server.ServerConfig;
+import org.ripv.service.ServiceConnector;
+
+/**
+ * What a vehicle says while the server is away — restarting, or a standby taking over — reaches
+ * the transcript once a server is back: the service keeps the entries the server did not take
+ * and offers them again, and the server answers only once they are stored.
+ */
+class ServerAwayTest {
+    @TempDir
+    Path dir;
+
+    @Test
+    void linesSaidWhileTheServerIsAwayAreInItsTranscriptWhenItIsBack() throws Exception {
+        int[] ports = new int[2];
+        for (int i = 0; i < 2; i++) {
+            try (ServerSocket s = new ServerSocket(0)) {
+                ports[i] = s.getLocalPort();
+            }
+        }
+        ServerConfig config = ServerConfig.forTests(dir.resolve("server")).withPorts(ports[0], ports[1], -1);
+        VehicleConsoleService vehicle = new VehicleConsoleService("localhost", "ru29");
+        ServiceConnector connector = null;
+        TestSystem sys = TestSystem.start(config);
+        try {
+            sys.user("alice", "operators");
+            connector = ServiceConnector.connect(vehicle, sys.serviceOptions()); // outlives the server
+            assertThat(connector.awaitRegistered(Duration.ofSeconds(20))).isTrue();
+            vehicle.line("before the server went away");
+            sys.close();
+
+            for (int i = 1; i <= 50; i++) {
+                vehicle.line("said while away " + i);
+            }
+            Thread.sleep(500);
+            sys = TestSystem.start(config);
+            long end = System.nanoTime() + Duration.ofSeconds(30).toNanos();
+            String history = "";
+            while (System.nanoTime() < end && !history.contains("said while away 50")) {
+                Thread.sleep(200);
+                history = sys.login("alice").call("", "?history " + vehicle.mailbox() + " --last 100", Priority.NORMAL,
+                        Duration.ofSeconds(10), null).footer().replyText();
+            }
+            assertThat(history).contains("before the server went away");
+            int at = -1;
+            for (int i = 1; i <= 50; i++) {
+                int next = history.indexOf("said while away " + i + "\n") >= 0 ? history.indexOf("said while away " + i + "\n")
+                        : history.indexOf("said while away " + i);
+                assertThat(next).as("line %d, in order", i).isGreaterThan(at);
+                at = next;
+            }
+        } finally {
+            if (connector != null) {
+                connector.close();
+            }
+            vehicle.stop();
+            sys.close();
+        }
+    }
+}
