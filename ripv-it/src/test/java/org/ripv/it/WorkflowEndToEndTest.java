@@ -203,6 +203,23 @@ class WorkflowEndToEndTest {
     }
 
     @Test
+    void aWorkflowOfAThousandStepsRunsToTheEnd() throws Exception {
+        start();
+        ClientSocketHandler alice = sys.login("alice");
+        StringBuilder wf = new StringBuilder("# a long night's checklist\n");
+        for (int i = 1; i <= 1000; i++) {
+            wf.append(i % 100 == 0 ? "notify \"step " + i + "\"\n" : "send dir\n");
+        }
+        upload(alice, "long.wf", wf.toString());
+        assertThat(ok(alice, "?queue add " + mb + " long.wf")).contains("(1000 step(s), once)");
+        event(VehicleEvent.SURFACED);
+        String receipt = await(alice, "?receipts " + mb, WorkflowEndToEndTest::ended);
+        assertThat(receipt).contains("result: DONE").contains("step 1000/1000 (line 1001) notify step 1000: OK")
+                .contains("step 999/1000 (line 1000) dir: OK");
+        assertThat(count(receipt, ": OK in ")).isEqualTo(1000);
+    }
+
+    @Test
     void aBadWorkflowIsRefusedWholeWithLineAndReasonAndRightsApply() throws Exception {
         start();
         ClientSocketHandler alice = sys.login("alice");

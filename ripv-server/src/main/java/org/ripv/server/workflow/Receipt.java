@@ -53,6 +53,11 @@ final class Receipt {
     }
 
     String render() {
+        return render(true);
+    }
+
+    /** The receipt as text; without {@code outputs} for the transcript, which has the vehicle's output already. */
+    String render(boolean outputs) {
         StringBuilder b = new StringBuilder();
         b.append("receipt: workflow ").append(queueId).append(" '").append(file).append("' of ").append(owner)
                 .append(" on ").append(mailbox).append(", run ").append(run).append('\n');
@@ -68,7 +73,7 @@ final class Receipt {
             if (!s.error().isEmpty()) {
                 b.append("  error: ").append(s.error().replace("\n", "\n         ")).append('\n');
             }
-            if (!s.output().isEmpty()) {
+            if (outputs && !s.output().isEmpty()) {
                 b.append("  output: ").append(s.output().replace("\n", "\n          ")).append('\n');
             }
         }

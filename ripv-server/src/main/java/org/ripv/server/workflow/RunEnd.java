@@ -42,8 +42,9 @@ final class RunEnd {
             default -> { }
         }
         write(receipt);
-        // The receipt also goes into the vehicle's transcript, so ?history tells the whole night's story.
-        for (String line : receipt.render().split("\n")) {
+        // The receipt also goes into the vehicle's transcript (without the outputs, which are there
+        // already), so ?history tells the whole night's story.
+        for (String line : receipt.render(false).split("\n")) {
             workflows.announce(mailbox, e.owner(), line);
         }
         String summary = name + ": " + result.toLowerCase(Locale.ROOT) + (error.isEmpty() ? "" : ": " + error);
