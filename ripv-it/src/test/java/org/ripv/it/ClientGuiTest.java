@@ -154,6 +154,20 @@ class ClientGuiTest {
             });
         }
 
+        /** Reads {@code value} on this thread until {@code ok} holds; fails naming {@code what} and the last value. */
+        <V> V until(String what, Duration timeout, Callable<V> value, java.util.function.Predicate<V> ok) throws Exception {
+            long end = System.nanoTime() + timeout.toNanos();
+            V v = get(value);
+            while (!ok.test(v)) {
+                if (System.nanoTime() > end) {
+                    throw new AssertionError("timed out waiting for " + what + "; last value: " + v);
+                }
+                Thread.sleep(20);
+                v = get(value);
+            }
+            return v;
+        }
+
         @Override
         public void close() {
             thread.shutdownNow();

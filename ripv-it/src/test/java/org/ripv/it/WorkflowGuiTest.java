@@ -90,16 +90,7 @@ class WorkflowGuiTest {
     }
 
     private <V> V until(String what, java.util.concurrent.Callable<V> value, java.util.function.Predicate<V> ok) throws Exception {
-        long end = System.nanoTime() + T.toNanos();
-        V v = ui.get(value);
-        while (!ok.test(v)) {
-            if (System.nanoTime() > end) {
-                throw new AssertionError("timed out waiting for " + what + "; last value: " + v);
-            }
-            Thread.sleep(20);
-            v = ui.get(value);
-        }
-        return v;
+        return ui.until(what, T, value, ok);
     }
 
     private void logIn() throws Exception {
