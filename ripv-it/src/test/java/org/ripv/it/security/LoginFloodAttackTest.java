@@ -37,6 +37,9 @@ class LoginFloodAttackTest {
     static final String CLOCK = "<ClockService>::<localhost>TTY1";
     static final Duration T = Duration.ofSeconds(20);
 
+    /** The least a quiet p99 counts as (ms): the scheduling latency of a 2-core machine with one more thread busy. */
+    static final double QUIET_FLOOR_MS = 2.0;
+
     @TempDir
     Path dir;
 
@@ -74,12 +77,15 @@ class LoginFloodAttackTest {
                 System.out.println(last);
                 assertThat(during).as("the flood ran while ?status was measured").isPositive();
                 assertThat(flood.errors).as("no attacker saw anything but refusals").isEmpty();
-                if (loaded < 3 * quiet) {
+                // Since the shared writer pool, a quiet ?status p99 can be 0.3 ms: below the few
+                // milliseconds any second runnable thread costs on 2 cores, so 3x of it would measure the
+                // scheduler, not the server. The quiet value counts as at least QUIET_FLOOR_MS.
+                if (loaded < 3 * Math.max(quiet, QUIET_FLOOR_MS)) {
                     assertThat(tooMany).as("attackers are told they are blocked before the close").isPositive();
                     return;
                 }
             }
-            throw new AssertionError("?status p99 rose above 3x its quiet value under a log-in flood: " + last);
+            throw new AssertionError("?status p99 rose above 3x its quiet value (at least " + QUIET_FLOOR_MS + " ms) under a log-in flood: " + last);
         }
     }
 
