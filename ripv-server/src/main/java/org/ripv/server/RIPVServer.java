@@ -20,8 +20,6 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.Footer;
-import org.ripv.messages.Header;
-import org.ripv.messages.Ids;
 import org.ripv.messages.IncomingServerMessage;
 import org.ripv.messages.IncomingServiceMessage;
 import org.ripv.messages.MailboxStatus;
@@ -67,6 +65,7 @@ public final class RIPVServer implements AutoCloseable {
     private final ServerConfig config;
     private final SessionOptions sessionOptions;
     private final Map<String, SocketHandler> clients = new ConcurrentHashMap<>();
+    private final ClientDispatch dispatch = new ClientDispatch(this);
     private final Map<String, ServiceReference> services = new ConcurrentHashMap<>();
     private final Map<String, OperatorLock> locks = new ConcurrentHashMap<>();
     private final AtomicInteger nextClientId = new AtomicInteger(100_000);
@@ -320,7 +319,6 @@ public final class RIPVServer implements AutoCloseable {
         }
     }
 
-
     private void acceptLoop() {
         while (running) {
             Socket s;
@@ -333,7 +331,7 @@ public final class RIPVServer implements AutoCloseable {
                 continue;
             }
             String id = newClientId();
-            SocketHandler h = new SocketHandler(s, id, codec, writers, new Dispatch());
+            SocketHandler h = new SocketHandler(s, id, codec, writers, dispatch);
             if (!security.gate().admit(id, s.getInetAddress(), h::close)) {
                 closeQuietly(s);
                 continue;
@@ -363,41 +361,6 @@ public final class RIPVServer implements AutoCloseable {
             s.close();
         } catch (IOException ignored) {
             // nothing to do
-        }
-    }
-
-    /** Requests arriving on client sockets. */
-    private final class Dispatch implements SocketHandler.Dispatcher {
-        @Override
-        public void received(SocketHandler client, IncomingServerMessage request) {
-            Header h = request.header();
-            String body = h.body().trim();
-            if (body.equals("?login") || body.startsWith("?login ")) {
-                security.logins().login(client, request); // on the client's thread, PBKDF2 on the log-in pool
-                return;
-            }
-            if (!client.isLoggedIn() && !body.equals("?help") && !body.equals("?ping")) {
-                client.send(request.reply(Footer.error(Ids.FID_LOGIN, ErrorCode.NOT_LOGGED_IN,
-                        "log in first (?login USER with the password), then send '" + Header.abbreviate(body) + "'")));
-                return;
-            }
-            IncomingServerMessage stamped = new IncomingServerMessage(
-                    h.withOrigin(client.badge(), client.roles()).withDestination(""));
-            if (!box.deliver(stamped)) {
-                client.send(request.reply(Footer.error(Ids.FID_NONE, ErrorCode.NOT_AVAILABLE,
-                        "the server is overloaded: too many requests waiting; try again shortly")));
-            }
-        }
-
-        @Override
-        public void closed(SocketHandler client) {
-            clients.remove(client.clientId(), client);
-            security.gate().closed(client.clientId());
-            pending.forgetClient(client.clientId());
-            files.abortAll(client.clientId());
-            if (sessions.clientClosed(client.clientId(), locks)) {
-                workflows.lockReleased(null);
-            }
         }
     }
 
@@ -439,6 +402,11 @@ public final class RIPVServer implements AutoCloseable {
     /** The live console: watchers, vehicle state, transcripts (tests and benchmarks look inside). */
     public ConsoleHub console() {
         return sessions.console();
+    }
+
+    /** Forgets a client whose connection closed (only that handler: an id may be reused). */
+    void forgetClient(SocketHandler client) {
+        clients.remove(client.clientId(), client);
     }
 
     Optional<SocketHandler> client(String clientId) {
