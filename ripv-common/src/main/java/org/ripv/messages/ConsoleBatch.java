@@ -19,4 +19,10 @@ public record ConsoleBatch(String mailbox, List<ConsoleEntry> entries, long skip
         Objects.requireNonNull(mailbox, "mailbox");
         entries = List.copyOf(entries);
     }
+
+    /** Travels as one packed array ({@link PackedConsole}), not an object per entry and field. */
+    @java.io.Serial
+    private Object writeReplace() {
+        return new PackedConsole(this);
+    }
 }

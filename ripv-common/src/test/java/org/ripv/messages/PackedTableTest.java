@@ -16,7 +16,7 @@ import org.ripv.wire.WireFilter;
 
 /** A TableResult crosses object streams as one packed array and comes back equal; bad packed data is refused. */
 class PackedTableTest {
-    private static Object roundTrip(Object o) throws Exception {
+    static Object roundTrip(Object o) throws Exception {
         ByteArrayOutputStream b = new ByteArrayOutputStream();
         try (ObjectOutputStream out = new ObjectOutputStream(b)) {
             out.writeObject(o);
