@@ -156,6 +156,13 @@ public final class ConsoleBench implements Callable<Integer> {
             }
             Figures many = run(vehicle, crowd, seconds);
             report(watchers + " watchers", many, base);
+            int full = Math.min(fullClients, watchers);
+            if (full > 0 && full < crowd.size()) {
+                Figures f = figures(crowd.subList(0, full));
+                Figures r = figures(crowd.subList(full, crowd.size()));
+                out.printf("  of which %d full clients p50 %.2f ms p99 %.2f ms; %d raw p50 %.2f ms p99 %.2f ms%n",
+                        full, f.p50Ms(), f.p99Ms(), crowd.size() - full, r.p50Ms(), r.p99Ms());
+            }
 
             long heapBefore = usedHeapAfterGc();
             CountDownLatch stall = new CountDownLatch(1);
@@ -236,6 +243,11 @@ public final class ConsoleBench implements Callable<Integer> {
         }
         Thread.sleep(1000); // let the last lines arrive
         ws.forEach(w -> w.recording = false);
+        return figures(ws);
+    }
+
+    /** The delays the watchers recorded, together. */
+    private static Figures figures(List<Watch> ws) {
         long count = 0;
         for (Watch w : ws) {
             count += Math.min(w.n.get(), w.delays.length);
