@@ -9,12 +9,8 @@ import java.time.LocalDate;
 import java.time.ZoneOffset;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.ArrayBlockingQueue;
-import java.util.concurrent.BlockingQueue;
-import java.util.concurrent.CountDownLatch;
-import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicLong;
 import org.ripv.messages.ConsoleEntry;
+import org.ripv.server.store.BatchWriter;
 import org.ripv.server.store.EmbeddedStateStore;
 import org.ripv.server.store.StateStore;
 import org.slf4j.Logger;
@@ -24,7 +20,7 @@ import org.slf4j.LoggerFactory;
  * The per-vehicle transcript: every console entry, as one JSON line, kept in the server's
  * {@link StateStore} (embedded: {@code DATA/transcripts/<mailbox-dir>/YYYY-MM-DD[.N].jsonl}, UTC
  * days, a file over the size limit continued in {@code .1}, {@code .2}, ...), by one writer thread
- * in batches so that neither disk nor database holds up the console. Entries older than the kept
+ * in batches ({@link BatchWriter}) so that neither disk nor database holds up the console. Entries older than the kept
  * number of days are deleted. When the writer cannot keep up, entries are dropped and a line in
  * the transcript says how many.
  */
@@ -39,11 +35,8 @@ public final class Transcript implements AutoCloseable {
     private final StateStore store;
     private final boolean ownsStore;
     private final int keepDays;
-    private final BlockingQueue<Object> queue = new ArrayBlockingQueue<>(QUEUE);
-    private final AtomicLong dropped = new AtomicLong();
-    private final Thread writer;
+    private final BatchWriter<ConsoleEntry> writer;
     private volatile String droppedMailbox;
-    private volatile boolean closed;
     private long lastPrune;
 
     /**
@@ -74,77 +67,61 @@ public final class Transcript implements AutoCloseable {
         this.ownsStore = ownsStore;
         this.keepDays = Math.max(1, keepDays);
         Files.createDirectories(root);
-        this.writer = new Thread(this::writeLoop, "ripv-transcript-writer");
-        writer.setDaemon(true);
-        writer.start();
+        this.writer = new BatchWriter<>("ripv-transcript-writer", QUEUE, 4096, new BatchWriter.Sink<>() {
+            @Override
+            public void started() {
+                // Prune once at start, before this run writes anything, then hourly: what a run writes is
+                // never pruned under it by a first sweep that happens to land after its first batch.
+                lastPrune = System.currentTimeMillis();
+                prune(LocalDate.now(ZoneOffset.UTC));
+            }
+
+            @Override
+            public void write(List<ConsoleEntry> batch, long dropped) {
+                store(lines(batch, dropped));
+            }
+
+            @Override
+            public void afterRound() {
+                long now = System.currentTimeMillis();
+                if (now - lastPrune > Duration.ofHours(1).toMillis()) {
+                    lastPrune = now;
+                    prune(LocalDate.now(ZoneOffset.UTC));
+                }
+            }
+        });
     }
 
     /** Queues an entry; never blocks. */
     public void append(ConsoleEntry e) {
-        if (closed || !queue.offer(e)) {
+        if (!writer.offer(e)) {
             droppedMailbox = e.mailbox();
-            dropped.incrementAndGet();
         }
     }
 
     /** Waits (briefly) until everything queued so far is on disk, so a reader sees it. */
     public void sync() {
-        CountDownLatch done = new CountDownLatch(1);
-        if (!closed && queue.offer(done)) {
-            try {
-                done.await(5, TimeUnit.SECONDS);
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-        }
+        writer.sync();
     }
 
-    private void writeLoop() {
-        // Prune once at start, before this run writes anything, then hourly: what a run writes is
-        // never pruned under it by a first sweep that happens to land after its first batch.
-        lastPrune = System.currentTimeMillis();
-        prune(LocalDate.now(ZoneOffset.UTC));
-        List<Object> batch = new ArrayList<>();
-        while (!closed || !queue.isEmpty()) {
-            try {
-                Object first = queue.poll(1, TimeUnit.SECONDS);
-                if (first != null) {
-                    batch.add(first);
-                    queue.drainTo(batch, 4096);
-                }
-            } catch (InterruptedException e) {
-                if (closed) {
-                    queue.drainTo(batch);
-                } else {
-                    continue;
-                }
-            }
-            List<StateStore.TranscriptLine> lines = new ArrayList<>(batch.size() + 1);
-            long lost = dropped.getAndSet(0);
-            if (lost > 0) {
-                lines.add(line(ConsoleEntry.line(droppedMailbox, "[transcript: " + lost + " entries dropped, the disk could not keep up]")));
-            }
-            List<CountDownLatch> waiting = new ArrayList<>();
-            for (Object o : batch) {
-                if (o instanceof ConsoleEntry e) {
-                    try {
-                        lines.add(line(e));
-                    } catch (RuntimeException x) {
-                        log.warn("transcript of {}: could not write: {}", e.mailbox(), x.toString());
-                    }
-                } else if (o instanceof CountDownLatch l) {
-                    waiting.add(l);
-                }
-            }
-            batch.clear();
-            store(lines);
-            waiting.forEach(CountDownLatch::countDown);
-            long now = System.currentTimeMillis();
-            if (now - lastPrune > Duration.ofHours(1).toMillis()) {
-                lastPrune = now;
-                prune(LocalDate.now(ZoneOffset.UTC));
+    private List<StateStore.TranscriptLine> lines(List<ConsoleEntry> batch, long dropped) {
+        List<StateStore.TranscriptLine> lines = new ArrayList<>(batch.size() + 1);
+        if (dropped > 0) {
+            String mailbox = droppedMailbox; // null only if the count was read between a drop and its naming
+            if (mailbox != null) {
+                lines.add(line(ConsoleEntry.line(mailbox, "[transcript: " + dropped + " entries dropped, the disk could not keep up]")));
+            } else {
+                log.warn("transcript: {} entries dropped, the disk could not keep up", dropped);
             }
         }
+        for (ConsoleEntry e : batch) {
+            try {
+                lines.add(line(e));
+            } catch (RuntimeException x) {
+                log.warn("transcript of {}: could not write: {}", e.mailbox(), x.toString());
+            }
+        }
+        return lines;
     }
 
     private static StateStore.TranscriptLine line(ConsoleEntry e) {
@@ -173,7 +150,7 @@ public final class Transcript implements AutoCloseable {
                 }
                 return;
             } catch (IOException | RuntimeException x) {
-                if (closed || System.nanoTime() + wait * 1_000_000 > giveUp) {
+                if (writer.isClosed() || System.nanoTime() + wait * 1_000_000 > giveUp) {
                     log.warn("transcript: could not store {} entries, they are lost: {}", lines.size(), x.toString());
                     return;
                 }
@@ -244,13 +221,7 @@ public final class Transcript implements AutoCloseable {
 
     @Override
     public void close() {
-        closed = true;
-        writer.interrupt();
-        try {
-            writer.join(5000);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
+        writer.close();
         if (ownsStore) {
             store.close();
         }
