@@ -132,7 +132,9 @@ class TransferCancelGuiTest {
                     .anyMatch(t -> t.matches("ymodem:get BIG\\.DAT  [0-9.]+ [KM]B / 2\\.0 MB  [0-9.]+ KB/s  0:0[2-9] left")));
             ClientGuiTest.screenshotOf(client, "client-transfer.png");
             long id = org.assertj.swing.edt.GuiActionRunner.execute(() -> gm.model().service(SERIAL).running().get(0).messageId());
-            window.button("cancel-" + id).click();
+            javax.swing.JButton cancel = window.button("cancel-" + id).target();
+            ClientGuiTest.press(() -> window.button("cancel-" + id), () -> tab.com().runningTexts().isEmpty()
+                    || cancel.getText().startsWith("Cancelling"));
             ClientGuiTest.waitFor("the get cancelled", () -> tab.com().runningTexts().isEmpty()
                     && tab.com().replyText().contains("-- cancelled 'ymodem:get BIG.DAT'"));
         } catch (Throwable t) {

@@ -248,34 +248,10 @@ class WorkflowGuiTest {
             Thread.sleep(2500); // the clock on the bar moves on: the picture shows a running time
             ClientGuiTest.screenshotOf(client, "client-cancel.png");
             // A robot click can land beside a button whose bar re-lays out as its clock ticks (seen
-            // under CI): when nothing happened, press it again.
-            for (int attempt = 1; attempt <= 3; attempt++) {
-                if (attempt == 1) {
-                    window.button("cancel-" + id).click();
-                } else {
-                    // Under CI the robot's clicks kept landing on the bar's text beside the button
-                    // (the failure screenshots show it selected): press the button itself.
-                    javax.swing.JButton b = window.button("cancel-" + id).target();
-                    GuiActionRunner.execute(() -> b.doClick());
-                }
-                long end = System.nanoTime() + Duration.ofSeconds(5).toNanos();
-                boolean took = false;
-                while (!took && System.nanoTime() < end) {
-                    Thread.sleep(100);
-                    javax.swing.JButton button;
-                    try {
-                        button = window.button("cancel-" + id).target();
-                    } catch (RuntimeException gone) {
-                        took = true; // the request ended
-                        continue;
-                    }
-                    took = GuiActionRunner.execute(() -> db.com().runningTexts().isEmpty()
-                            || db.com().replyText().contains("-- cancelled") || button.getText().startsWith("Cancelling"));
-                }
-                if (took) {
-                    break;
-                }
-            }
+            // under CI, the bar's text selected in the failure screenshots): press() falls back to doClick.
+            javax.swing.JButton cancel = window.button("cancel-" + id).target();
+            ClientGuiTest.press(() -> window.button("cancel-" + id), () -> db.com().runningTexts().isEmpty()
+                    || db.com().replyText().contains("-- cancelled") || cancel.getText().startsWith("Cancelling"));
             ClientGuiTest.waitFor("the query cancelled", () -> db.com().runningTexts().isEmpty()
                     && db.com().replyText().contains("-- cancelled 'SELECT"));
             // Escape in COM cancels the newest running request too.
@@ -289,9 +265,9 @@ class WorkflowGuiTest {
             ClientGuiTest.showTab(client, VEHICLE);
             ServiceLayoutPanel tab = GuiActionRunner.execute(() -> client.panel(VEHICLE));
             ClientGuiTest.waitFor("the vehicle target", () -> !gm.model().service(VEHICLE).target().isEmpty());
-            window.button("queueButton").click();
-            ClientGuiTest.waitFor("the workflow window", () -> tab.mam().openWorkflows(gm).isShowing());
-            dialog[0] = GuiActionRunner.execute(() -> tab.mam().openWorkflows(gm));
+            ClientGuiTest.press(() -> window.button("queueButton"), () -> tab.mam().workflowsWindow() != null);
+            ClientGuiTest.waitFor("the workflow window", () -> tab.mam().workflowsWindow() != null);
+            dialog[0] = GuiActionRunner.execute(() -> tab.mam().workflowsWindow());
             GuiActionRunner.execute(() -> {
                 dialog[0].showTab(1);
                 dialog[0].editorText("ru29-fetch.wf", BAD);

@@ -4,7 +4,6 @@ import java.io.IOException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.ServerSocket;
-import java.net.Socket;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.rmi.RemoteException;
@@ -17,7 +16,6 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicInteger;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.Footer;
 import org.ripv.messages.IncomingServerMessage;
@@ -64,11 +62,9 @@ public final class RIPVServer implements AutoCloseable {
 
     private final ServerConfig config;
     private final SessionOptions sessionOptions;
-    private final Map<String, SocketHandler> clients = new ConcurrentHashMap<>();
     private final ClientDispatch dispatch = new ClientDispatch(this);
     private final Map<String, ServiceReference> services = new ConcurrentHashMap<>();
     private final Map<String, OperatorLock> locks = new ConcurrentHashMap<>();
-    private final AtomicInteger nextClientId = new AtomicInteger(100_000);
     private final PostOffice<IncomingServerMessage, OutgoingServerMessage> postOffice = new PostOffice<>(200_000);
     private final ScheduledExecutorService timers;
     /** The threads that write every client's socket. */
@@ -90,7 +86,7 @@ public final class RIPVServer implements AutoCloseable {
     private PendingRequests pending;
     private volatile RequestEndings endings;
     private ServerSocket listener;
-    private Thread acceptor;
+    private volatile ClientAcceptor acceptor;
     private Registry registry;
     private int registryPort;
     private LandingPage landingPage;
@@ -188,9 +184,7 @@ public final class RIPVServer implements AutoCloseable {
             throw e;
         }
         running = true;
-        acceptor = new Thread(this::acceptLoop, "ripv-server-acceptor");
-        acceptor.setDaemon(true);
-        acceptor.start();
+        acceptor = new ClientAcceptor(listener, codec, writers, dispatch, security.gate());
         long check = config.serviceCheck().toMillis();
         timers.scheduleWithFixedDelay(this::checkServices, check, check, TimeUnit.MILLISECONDS);
         log.info("RIPVServer listening for clients on port {}{}, RMI registry on port {}, data in {}", port(),
@@ -233,14 +227,15 @@ public final class RIPVServer implements AutoCloseable {
                 log.debug("landing page close: {}", e.toString());
             }
         }
-        if (listener != null) {
+        if (acceptor != null) {
+            acceptor.close(); // the listener, then every client
+        } else if (listener != null) {
             try {
                 listener.close();
             } catch (IOException ignored) {
                 // closing anyway
             }
         }
-        clients.values().forEach(SocketHandler::close);
         writers.close();
         services.values().forEach(ServiceReference::close);
         services.clear();
@@ -319,51 +314,6 @@ public final class RIPVServer implements AutoCloseable {
         }
     }
 
-    private void acceptLoop() {
-        while (running) {
-            Socket s;
-            try {
-                s = listener.accept();
-            } catch (IOException e) {
-                if (running) {
-                    log.warn("accept failed: {}", e.toString());
-                }
-                continue;
-            }
-            String id = newClientId();
-            SocketHandler h = new SocketHandler(s, id, codec, writers, dispatch);
-            if (!security.gate().admit(id, s.getInetAddress(), h::close)) {
-                closeQuietly(s);
-                continue;
-            }
-            clients.put(id, h);
-            log.debug("client {} connected from {}", id, s.getRemoteSocketAddress());
-            h.start();
-        }
-    }
-
-    private String newClientId() {
-        while (true) {
-            int n = nextClientId.incrementAndGet();
-            if (n > 999_999) {
-                nextClientId.compareAndSet(n, 100_000);
-                continue;
-            }
-            String id = Integer.toString(n);
-            if (!clients.containsKey(id)) {
-                return id;
-            }
-        }
-    }
-
-    private static void closeQuietly(Socket s) {
-        try {
-            s.close();
-        } catch (IOException ignored) {
-            // nothing to do
-        }
-    }
-
     // ---- used by the TaskManager and commands (package-private) ----
 
     ServerConfig config() {
@@ -406,11 +356,15 @@ public final class RIPVServer implements AutoCloseable {
 
     /** Forgets a client whose connection closed (only that handler: an id may be reused). */
     void forgetClient(SocketHandler client) {
-        clients.remove(client.clientId(), client);
+        ClientAcceptor a = acceptor;
+        if (a != null) {
+            a.forget(client);
+        }
     }
 
     Optional<SocketHandler> client(String clientId) {
-        return Optional.ofNullable(clients.get(clientId));
+        ClientAcceptor a = acceptor;
+        return a == null ? Optional.empty() : a.client(clientId);
     }
 
     ServiceLiveness liveness() {

@@ -82,6 +82,11 @@ public final class MamPanel extends JPanel {
         return workflows;
     }
 
+    /** The workflow window the Queue button opened, or null while none is showing. */
+    public WorkflowDialog workflowsWindow() {
+        return workflows != null && workflows.isShowing() ? workflows : null;
+    }
+
     public MailboxTree tree() {
         return tree;
     }

@@ -1,6 +1,7 @@
 package org.ripv.it.security;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.io.IOException;
 import java.nio.file.Path;
@@ -117,6 +118,18 @@ class LoginFloodAttackTest {
             awaitClosed(d);
             ClientSocketHandler e = connectFrom(sys, "127.0.5.3");
             assertThat(refused(e, "alice", TestSystem.PASSWORD).getMessage()).contains("too many failed log-ins");
+
+            // Keeping at the blocked name from one address counts against the address: after its ten
+            // free tries it is blocked too, and its next connection is refused before the TLS handshake.
+            for (int i = 1; i <= 10; i++) {
+                ClientSocketHandler again = connectFrom(sys, "127.0.5.4");
+                assertThat(refused(again, "alice", "guess" + i).getMessage()).contains("too many failed log-ins for this user");
+                awaitClosed(again);
+            }
+            ClientSocketHandler last = connectFrom(sys, "127.0.5.4");
+            assertThat(refused(last, "alice", "guess11").getMessage()).contains("too many failed log-ins for this address");
+            awaitClosed(last);
+            assertThatThrownBy(() -> connectFrom(sys, "127.0.5.4").close()).as("refused at connect").isInstanceOf(IOException.class);
 
             // An observer may not lift it; an admin (here: operators, whom the template allows all) may.
             ClientSocketHandler olga = sys.login("olga");

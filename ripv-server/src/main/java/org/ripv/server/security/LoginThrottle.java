@@ -92,6 +92,21 @@ public final class LoginThrottle {
         return blocked(user, address);
     }
 
+    /**
+     * A log-in refused because its user name is blocked: a failure of the address alone. Someone
+     * who keeps trying a blocked name from one address soon has the address blocked, and is then
+     * refused at connect, before any TLS handshake ({@link ConnectionGate}). Returns the address's
+     * block, or null.
+     */
+    public synchronized Block refusedWhileBlocked(String address) {
+        long now = clock.getAsLong();
+        if (states.size() > MAX_ENTRIES) {
+            prune(now);
+        }
+        fail(states.computeIfAbsent(addressKey(address), k -> new State()), policy.freePerAddress(), now);
+        return addressBlocked(address);
+    }
+
     private void fail(State s, int free, long now) {
         if (s.last != 0 && now - s.last > policy.lock().toMillis() && s.blockedUntil <= now) {
             s.failures = 0; // quiet for a lock's length: start afresh

@@ -108,6 +108,12 @@ public final class Logins {
     public Check check(String user, char[] password, String address, String where) {
         try {
             LoginThrottle.Block block = throttle.blocked(user, address);
+            if (block != null && throttle.addressBlocked(address) == null) {
+                // Trying a blocked name again counts against the address: a flood that keeps at it
+                // is soon refused at connect, before the TLS handshake that each try costs.
+                LoginThrottle.Block addressBlock = throttle.refusedWhileBlocked(address);
+                block = addressBlock != null ? addressBlock : block;
+            }
             if (block != null) {
                 Audit.limited("login-refused " + user + " " + address, "login-refused", "user", user, "from", address, "via", where,
                         "reason", block.locked() ? "locked" : "blocked", "blocked", block.who(), "seconds-left", seconds(block));

@@ -35,6 +35,22 @@ class LoginThrottleTest {
     }
 
     @Test
+    void anAddressThatKeepsTryingABlockedNameIsBlockedItself() {
+        for (int i = 0; i < 4; i++) {
+            t.failure("alice", "10.0.0." + i);
+        }
+        assertThat(t.blocked("alice", "192.0.2.50").who()).isEqualTo("user alice");
+        for (int i = 0; i < 5; i++) {
+            assertThat(t.refusedWhileBlocked("192.0.2.50")).as("free refusals " + i).isNull();
+        }
+        LoginThrottle.Block b = t.refusedWhileBlocked("192.0.2.50");
+        assertThat(b.who()).isEqualTo("address 192.0.2.50");
+        assertThat(b.left()).isEqualTo(Duration.ofSeconds(1));
+        assertThat(t.addressBlocked("192.0.2.50")).isNotNull();
+        assertThat(t.addressBlocked("192.0.2.51")).as("only that address").isNull();
+    }
+
+    @Test
     void anAddressGuessingManyNamesIsBlockedAndASuccessDoesNotClearIt() {
         for (int i = 0; i < 5; i++) {
             assertThat(t.failure("user" + i, "192.0.2.7")).isNull();
