@@ -29,8 +29,8 @@ import picocli.CommandLine.Option;
                 + "(prompt, history, Tab completion; help lists the commands), or from --exec lines or standard input.",
                 "The password comes from --password-file, else $RIPV_PASSWORD, else the terminal (not echoed)."})
 public final class CliCommand implements Callable<Integer> {
-    public static final int EXIT_ERROR_REPLY = 1;
-    public static final int EXIT_NO_SESSION = 3;
+    public static final int EXIT_ERROR_REPLY = ExitCodes.ERROR_REPLY;
+    public static final int EXIT_NO_SESSION = ExitCodes.NO_SESSION;
 
     @Option(names = "--server", required = true, paramLabel = "HOST[:PORT][,HOST2[:PORT]]",
             description = "The server (port 4444 unless given); several, comma-separated (an active server and its standbys):"

@@ -79,7 +79,7 @@ public final class ConsoleFollower implements ClientSocketHandler.Listener {
                 }
                 if (reconnect == null) {
                     err.println("Error: " + why.getMessage());
-                    return CliCommand.EXIT_NO_SESSION;
+                    return ExitCodes.NO_SESSION;
                 }
                 err.println("Connection lost (" + why.getMessage() + "); logging in again...");
                 client = reconnect();
@@ -116,7 +116,7 @@ public final class ConsoleFollower implements ClientSocketHandler.Listener {
             }
             if (r.status() != Status.OK) {
                 err.println("Error: " + r.footer().replyText() + " [" + r.footer().errorCode() + ", " + r.footer().serviceId() + "]");
-                return CliCommand.EXIT_ERROR_REPLY;
+                return ExitCodes.ERROR_REPLY;
             }
             if (!json) {
                 err.println(r.footer().replyText() + "; Ctrl-C stops");
@@ -126,7 +126,7 @@ public final class ConsoleFollower implements ClientSocketHandler.Listener {
                 return 0;
             }
             if (endedByServer) {
-                return CliCommand.EXIT_ERROR_REPLY;
+                return ExitCodes.ERROR_REPLY;
             }
             return cause.get() != null ? LOST : 0;
         } catch (InterruptedException e) {

@@ -96,14 +96,14 @@ public final class Shell {
                         break;
                     }
                     if (!client.isOpen() && !reconnected(completer)) { // lost while waiting at the prompt
-                        return org.ripv.client.cli.CliCommand.EXIT_NO_SESSION;
+                        return org.ripv.client.cli.ExitCodes.NO_SESSION;
                     }
                     if (!session.run(line)) {
                         break;
                     }
                     if (!client.isOpen()) {
                         if (!reconnected(completer)) {
-                            return org.ripv.client.cli.CliCommand.EXIT_NO_SESSION;
+                            return org.ripv.client.cli.ExitCodes.NO_SESSION;
                         }
                         err.println("If '" + line + "' did not reach the server, run it again.");
                     }
