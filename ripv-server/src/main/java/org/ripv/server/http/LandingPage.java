@@ -1,27 +1,22 @@
 package org.ripv.server.http;
 
+import static org.ripv.server.http.Pages.html;
+import static org.ripv.server.http.Pages.send;
+
 import com.sun.net.httpserver.HttpExchange;
 import com.sun.net.httpserver.HttpServer;
 import java.io.IOException;
-import java.io.InputStream;
 import java.io.OutputStream;
 import java.net.InetSocketAddress;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
-import java.util.ArrayList;
-import java.util.HashSet;
-import java.util.List;
 import java.util.Locale;
 import java.util.Objects;
-import java.util.Set;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.Supplier;
 import java.util.regex.Pattern;
-import org.ripv.server.files.FileNames;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -49,7 +44,7 @@ import org.slf4j.LoggerFactory;
 public final class LandingPage implements AutoCloseable {
     private static final Logger log = LoggerFactory.getLogger(LandingPage.class);
     /** Multipart boundaries and headers on top of the files themselves. */
-    static final long FORM_OVERHEAD = 64 * 1024;
+    static final long FORM_OVERHEAD = FormUpload.FORM_OVERHEAD;
     private static final Pattern SAFE_HOST = Pattern.compile("[A-Za-z0-9.\\-]{1,253}(:\\d{1,5})?|\\[[0-9A-Fa-f:.]{2,45}](:\\d{1,5})?");
 
     /**
@@ -87,12 +82,14 @@ public final class LandingPage implements AutoCloseable {
 
     private final Options options;
     private final WebLogin web;
+    private final FormUpload form;
     private HttpServer http;
     private ExecutorService pool;
 
     public LandingPage(Options options) {
         this.options = Objects.requireNonNull(options, "options");
         this.web = new WebLogin(options.access(), options.tls() != null);
+        this.form = new FormUpload(options.uploadDir(), options.maxUploadBytes(), web);
     }
 
     /** As {@link #LandingPage(Options)} without a client port in the JNLP. */
@@ -175,9 +172,9 @@ public final class LandingPage implements AutoCloseable {
                         ex.getResponseHeaders().set("Allow", "POST");
                         send(ex, 405, "text/plain; charset=utf-8", "use POST with multipart/form-data (the form on /)\n");
                     } else {
-                        WebSessions.Session session = web.uploader(ex, this::drainAndFail);
+                        WebSessions.Session session = web.uploader(ex, form::drainAndFail);
                         if (session != null) {
-                            upload(ex, session);
+                            form.upload(ex, session);
                         }
                     }
                 }
@@ -277,176 +274,6 @@ public final class LandingPage implements AutoCloseable {
         InetSocketAddress local = ex.getLocalAddress();
         String a = local.getAddress().getHostAddress();
         return (a.indexOf(':') >= 0 ? "[" + a + "]" : a) + ":" + local.getPort();
-    }
-
-    private void upload(HttpExchange ex, WebSessions.Session session) throws IOException {
-        String boundary = MultipartStream.boundary(ex.getRequestHeaders().getFirst("Content-Type"));
-        if (boundary == null) {
-            drainAndFail(ex, 400, "Not a form upload", "The upload must be sent as multipart/form-data (use the form on the front page).");
-            return;
-        }
-        long limit = options.maxUploadBytes();
-        String declared = ex.getRequestHeaders().getFirst("Content-Length");
-        if (declared != null) {
-            try {
-                if (Long.parseLong(declared.trim()) > limit + FORM_OVERHEAD) {
-                    // Refuse before reading: the CGI's $MAXIMUMUPLOAD.
-                    fail(ex, 413, "Upload too large", "The upload is " + declared.trim() + " bytes; this server takes at most "
-                            + limit + " bytes per upload. None of the files were saved.");
-                    return;
-                }
-            } catch (NumberFormatException e) {
-                drainAndFail(ex, 400, "Bad request", "Content-Length '" + declared + "' is not a number.");
-                return;
-            }
-        }
-        Path dir = options.uploadDir();
-        if (!Files.isDirectory(dir) || !Files.isWritable(dir)) {
-            drainAndFail(ex, 500, "Bad directory", "The server's upload directory"
-                    + " does not exist or is not writable; tell the server's administrator. None of the files were saved.");
-            return;
-        }
-        List<Pending> pending = new ArrayList<>();
-        try {
-            MultipartStream form = new MultipartStream(ex.getRequestBody(), boundary);
-            long total = 0;
-            Set<String> names = new HashSet<>();
-            for (MultipartStream.Part part = form.next(); part != null; part = form.next()) {
-                if (!part.isFile() || part.fileName().isEmpty()) {
-                    form.copyBody(OutputStream.nullOutputStream(), FORM_OVERHEAD, "a form field");
-                    continue;
-                }
-                String name = part.fileName();
-                try {
-                    FileNames.check(name);
-                } catch (IllegalArgumentException e) {
-                    throw new Refused(400, "Filename problem", e.getMessage()
-                            + ". Files may not have forward or backward slashes in their names, nor begin with a dot. "
-                            + "Rename the file on your computer and upload it again.");
-                }
-                if (!web.mayUpload(session, name)) {
-                    throw new Refused(403, "Not allowed", "User " + session.user + " may not upload " + name
-                            + " (the permit file has no rule allowing ?upload for them).");
-                }
-                if (Files.exists(dir.resolve(name))) {
-                    throw new Refused(409, "File exists", "A file named " + name + " is in the upload directory"
-                            + " already, and this page never replaces one. Rename yours, or ask an operator.");
-                }
-                if (!names.add(name)) {
-                    throw new Refused(400, "Filename problem", "'" + name + "' is given twice in one upload.");
-                }
-                Path tmp = Files.createTempFile(dir, ".ripv-form-", ".part");
-                pending.add(new Pending(name, tmp, 0));
-                long size;
-                try (OutputStream out = Files.newOutputStream(tmp)) {
-                    size = form.copyBody(out, limit - total, "'" + name + "'");
-                } catch (MultipartStream.TooLargeException e) {
-                    throw new Refused(413, "Upload too large", "The files are over this server's limit of " + limit
-                            + " bytes per upload (at " + name + ").");
-                }
-                total += size;
-                pending.set(pending.size() - 1, new Pending(name, tmp, size));
-            }
-            if (pending.isEmpty()) {
-                throw new Refused(400, "No files", "The form held no files to upload.");
-            }
-            if (!web.charge(session, pending.size(), total, 4 * limit)) {
-                throw new Refused(429, "Too much", "This log-in has uploaded as much as one session may ("
-                        + WebSessions.MAX_FILES + " files, " + 4 * limit + " bytes); log in again later.");
-            }
-            // Every file arrived and passed the rules: now, and only now, put them in place (never over another).
-            StringBuilder saved = new StringBuilder();
-            for (Pending p : pending) {
-                try {
-                    Files.move(p.tmp(), dir.resolve(p.name()));
-                } catch (java.nio.file.FileAlreadyExistsException e) {
-                    throw new Refused(409, "File exists", "A file named " + p.name() + " arrived meanwhile; nothing of it was replaced.");
-                }
-                saved.append("<li>").append(html(p.name())).append(" (").append(p.size()).append(" bytes)</li>");
-                log.info("landing page upload stored {} ({} bytes) for {} from {}", p.name(), p.size(), session.user, ex.getRemoteAddress());
-            }
-            pending.clear();
-            send(ex, 200, "text/html; charset=utf-8", page("Upload complete",
-                    "<p>Saved in the server's upload directory:</p><ul id=\"saved\">" + saved + "</ul><p><a href=\"/\">Back</a></p>"));
-        } catch (Refused r) {
-            // Clean up before answering, so the browser never sees a half-done upload directory.
-            deleteAll(pending);
-            log.info("landing page upload refused: {}", r.getMessage());
-            drainAndFail(ex, r.status, r.title, r.getMessage() + (r.getMessage().contains("None of the files") ? ""
-                    : " None of the files were saved."));
-        } catch (MultipartStream.MalformedException e) {
-            deleteAll(pending);
-            drainAndFail(ex, 400, "Bad form data", e.getMessage() + ". None of the files were saved.");
-        } finally {
-            deleteAll(pending);
-        }
-    }
-
-    /** A file of the form received into a hidden temporary file, not yet moved into place. */
-    private record Pending(String name, Path tmp, long size) {}
-
-    private static void deleteAll(List<Pending> pending) throws IOException {
-        for (Pending p : pending) {
-            Files.deleteIfExists(p.tmp());
-        }
-        pending.clear();
-    }
-
-    /** A rule the upload broke. */
-    private static final class Refused extends IOException {
-        private static final long serialVersionUID = 1L;
-        final int status;
-        final String title;
-
-        Refused(int status, String title, String message) {
-            super(message);
-            this.status = status;
-            this.title = title;
-        }
-    }
-
-    /** Answers with an error, reading (a bounded amount of) what the client still sends so it sees the answer. */
-    private void drainAndFail(HttpExchange ex, int status, String title, String text) throws IOException {
-        try (InputStream in = ex.getRequestBody()) {
-            long budget = options.maxUploadBytes() + FORM_OVERHEAD;
-            byte[] b = new byte[64 * 1024];
-            int r;
-            while (budget > 0 && (r = in.read(b, 0, (int) Math.min(b.length, budget))) > 0) {
-                budget -= r;
-            }
-        } catch (IOException e) {
-            log.debug("while draining a refused upload: {}", e.toString());
-        }
-        fail(ex, status, title, text);
-    }
-
-    static void fail(HttpExchange ex, int status, String title, String text) throws IOException {
-        send(ex, status, "text/html; charset=utf-8", page("Error: " + title, "<p id=\"error\">" + html(text)
-                + "</p><p><a href=\"/\">Back</a></p>"));
-    }
-
-    static String page(String title, String body) {
-        return "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" + html(title)
-                + "</title></head><body style=\"font-family:sans-serif\"><h1>" + html(title) + "</h1>\n" + body
-                + "\n</body></html>\n";
-    }
-
-    static void send(HttpExchange ex, int status, String type, String body) throws IOException {
-        byte[] bytes = body.getBytes(StandardCharsets.UTF_8);
-        ex.getResponseHeaders().set("Content-Type", type);
-        ex.getResponseHeaders().set("X-Content-Type-Options", "nosniff");
-        if ("HEAD".equalsIgnoreCase(ex.getRequestMethod())) {
-            ex.sendResponseHeaders(status, -1);
-            return;
-        }
-        ex.sendResponseHeaders(status, bytes.length);
-        try (OutputStream out = ex.getResponseBody()) {
-            out.write(bytes);
-        }
-    }
-
-    static String html(String s) {
-        return s.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;").replace("\"", "&quot;");
     }
 
     private static String xml(String s) {

@@ -59,11 +59,11 @@ final class WebLogin {
     /** GET: the log-in form; POST: checks the password with the server's limits and starts a session. */
     void login(HttpExchange ex, String method) throws IOException {
         if (access == null) {
-            LandingPage.send(ex, 404, "text/plain; charset=utf-8", "this server takes no uploads through its web page, so there is no log-in\n");
+            Pages.send(ex, 404, "text/plain; charset=utf-8", "this server takes no uploads through its web page, so there is no log-in\n");
             return;
         }
         if ("GET".equals(method) || "HEAD".equals(method)) {
-            LandingPage.send(ex, 200, "text/html; charset=utf-8", LandingPage.page("Log in to upload",
+            Pages.send(ex, 200, "text/html; charset=utf-8", Pages.page("Log in to upload",
                     "<form id=\"login\" method=\"post\" action=\"/login\"><p>User <input name=\"user\" autocomplete=\"username\"></p>"
                     + "<p>Password <input name=\"password\" type=\"password\" autocomplete=\"current-password\"></p>"
                     + "<p><input type=\"submit\" value=\"Log in\"></p></form>"));
@@ -71,7 +71,7 @@ final class WebLogin {
         }
         if (!"POST".equals(method)) {
             ex.getResponseHeaders().set("Allow", "GET, POST");
-            LandingPage.send(ex, 405, "text/plain; charset=utf-8", method + " is not allowed here\n");
+            Pages.send(ex, 405, "text/plain; charset=utf-8", method + " is not allowed here\n");
             return;
         }
         byte[] body = ex.getRequestBody().readNBytes(4096);
@@ -80,13 +80,13 @@ final class WebLogin {
         char[] password = f.getOrDefault("password", "").toCharArray();
         WebAccess.Result r = access.login(user, password, ex.getRemoteAddress().getAddress().getHostAddress());
         if (r.user() == null) {
-            LandingPage.fail(ex, 403, "Log-in refused", r.refusal());
+            Pages.fail(ex, 403, "Log-in refused", r.refusal());
             return;
         }
         WebSessions.Session s = sessions.create(r.user());
         ex.getResponseHeaders().add("Set-Cookie", WebSessions.cookie(s, secure));
         ex.getResponseHeaders().set("Location", "/");
-        LandingPage.send(ex, 303, "text/html; charset=utf-8", LandingPage.page("Logged in", "<p>Logged in as " + LandingPage.html(r.user())
+        Pages.send(ex, 303, "text/html; charset=utf-8", Pages.page("Logged in", "<p>Logged in as " + Pages.html(r.user())
                 + ". <a href=\"/\">Back</a></p>"));
     }
 
@@ -116,7 +116,7 @@ final class WebLogin {
                     + " (the same users and rights as the client).</p>\n";
         }
         return "<h2>Upload files to the server</h2>\n"
-                + "<p>Logged in as " + LandingPage.html(s.user) + ". Files go to the server's upload directory, where services can use"
+                + "<p>Logged in as " + Pages.html(s.user) + ". Files go to the server's upload directory, where services can use"
                 + " them (for example <code>vis:NAME</code> or <code>ymodem:put NAME</code>). Plain file names only: no slashes or "
                 + "backslashes, no leading dot; an existing file is never replaced. At most " + maxUploadBytes
                 + " bytes per upload, all files together. If any file breaks a rule, none is saved.</p>\n"
