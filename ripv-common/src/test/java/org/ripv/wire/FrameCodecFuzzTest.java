@@ -15,11 +15,17 @@ import net.jqwik.api.Provide;
 import net.jqwik.api.Tuple;
 import org.junit.jupiter.api.Assertions;
 import org.ripv.messages.Attachment;
+import org.ripv.messages.ConsoleBatch;
+import org.ripv.messages.ConsoleEntry;
+import org.ripv.messages.Footer;
 import org.ripv.messages.Header;
 import org.ripv.messages.IdBadge;
+import org.ripv.messages.Ids;
 import org.ripv.messages.IncomingServerMessage;
 import org.ripv.messages.Message;
+import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.Priority;
+import org.ripv.messages.VehicleEvent;
 
 /**
  * Fuzzing the frame decoder (issue 10): whatever bytes a socket delivers, reading a frame gives a
@@ -29,11 +35,19 @@ import org.ripv.messages.Priority;
 class FrameCodecFuzzTest {
     private static final FrameCodec CODEC = new FrameCodec(64 * 1024);
     private static final byte[] VALID;
+    /** A console push: its batch travels in its own packed form (PackedConsole). */
+    private static final byte[] VALID_PUSH;
 
     static {
         try {
             VALID = CODEC.encode(new IncomingServerMessage(new Header(7, new IdBadge("123456", "alice"), List.of("operators"),
                     "", "<SerialPortServer>::<h>ttyV0", "dir", Priority.NORMAL, new Attachment("a.bin", new byte[] {1, 2, 3}))));
+            String box = "<SerialPortServer>::<h>ttyV0";
+            VALID_PUSH = CODEC.encode(new OutgoingServerMessage(new Header(0, IdBadge.SERVER, List.of(), "", box, "?watch " + box,
+                    Priority.NORMAL, null), Footer.progress(Ids.FID_CONSOLE, "", new ConsoleBatch(box, List.of(
+                    ConsoleEntry.line(box, "Glider ru29 at surface"),
+                    ConsoleEntry.event(box, VehicleEvent.SURFACED, "GPS Location: 4137.994 N -7032.188 E", 41.63, -70.54)),
+                    3, false))));
         } catch (Exception e) {
             throw new ExceptionInInitializerError(e);
         }
@@ -61,6 +75,11 @@ class FrameCodecFuzzTest {
         decodesCleanly(body);
     }
 
+    @Property(tries = 400)
+    void mutatedConsolePushesDecodeCleanly(@ForAll("pushMutations") byte[] body) {
+        decodesCleanly(body);
+    }
+
     @Property(tries = 200)
     void framesOnAStreamReadCleanly(@ForAll("lengthPrefixed") byte[] stream) {
         Assertions.assertTimeoutPreemptively(Duration.ofSeconds(5), () -> {
@@ -78,12 +97,21 @@ class FrameCodecFuzzTest {
     /** A valid serialized message with bytes flipped, inserted, cut or overwritten. */
     @Provide
     Arbitrary<byte[]> mutations() {
-        Arbitrary<Integer> at = Arbitraries.integers().between(0, VALID.length - 1);
+        return mutationsOf(VALID);
+    }
+
+    @Provide
+    Arbitrary<byte[]> pushMutations() {
+        return mutationsOf(VALID_PUSH);
+    }
+
+    private static Arbitrary<byte[]> mutationsOf(byte[] valid) {
+        Arbitrary<Integer> at = Arbitraries.integers().between(0, valid.length - 1);
         Arbitrary<Byte> value = Arbitraries.bytes();
         Arbitrary<Tuple.Tuple3<Integer, Integer, Byte>> edit = Arbitraries.integers().between(0, 3)
                 .flatMap(kind -> at.flatMap(i -> value.map(v -> Tuple.of(kind, i, v))));
         return edit.list().ofMinSize(1).ofMaxSize(8).map(edits -> {
-                    byte[] b = VALID.clone();
+                    byte[] b = valid.clone();
                     for (var e : edits) {
                         int i = Math.min(e.get2(), b.length - 1);
                         switch (e.get1()) {
