@@ -39,7 +39,8 @@ import org.ripv.services.simulator.GliderSimulator;
 /**
  * Issue 15 point 5: a server keeping its state in PostgreSQL ({@code --state-db}) stops, and a
  * server with a new, empty data directory (another host, as a standby would be) starts on the same
- * database: the transcript, the workflow queue, the receipts and the subscriptions are all there,
+ * database: the transcript, the vehicle's call state, the workflow queue, the receipts and the
+ * subscriptions are all there,
  * the queued workflow runs on the next call, and the audit trail holds both servers' log-ins.
  * Needs RIPV_PG_URL (skipped without it, a failure under RIPV_REQUIRE_TOOLS=1).
  */
@@ -142,6 +143,11 @@ class StateStoreRestartTest {
         assertThat(last2.get(0).text()).isEqualTo("quotes \" tab\t ünïcödé");
         assertThat(last2.get(1).event()).isEqualTo(VehicleEvent.DIVED);
         assertThat(h).anyMatch(e -> e.event() == VehicleEvent.SURFACED);
+        // the vehicle's call state came along: dived after one call, not "nothing heard from it yet"
+        org.ripv.messages.SessionState vehicle = ((org.ripv.messages.MailboxStatus) cmd(again, "?status " + mb).footer().result()).session();
+        assertThat(vehicle.state()).isEqualTo(org.ripv.messages.SessionState.State.DIVED);
+        assertThat(vehicle.calls()).isEqualTo(1);
+        assertThat(vehicle.lastContact()).isPositive();
         NotifyList subs = (NotifyList) cmd(again, "?notify list").footer().result();
         assertThat(subs.subscriptions()).extracting(NotifyList.Subscription::id).containsExactly(subId);
         assertThat(subs.subscriptions().get(0).mailboxes()).isEqualTo("*ru*");

@@ -82,6 +82,12 @@ final class ClientAcceptor {
                 continue;
             }
             clients.put(id, h);
+            if (!running) {
+                // Accepted just as the server stopped: close() may already have closed the others,
+                // and this one must not live on, talking to a stopped server.
+                h.close();
+                break;
+            }
             log.debug("client {} connected from {}", id, s.getRemoteSocketAddress());
             h.start();
         }

@@ -470,7 +470,7 @@ public final class RIPVServer implements AutoCloseable {
         workflows.onConsole(ref.descriptor().name(), entries);
         // Answer only once they are stored: the service offers what a server did not take to the
         // next one (restarted, or a standby), so a server that dies now loses no transcript line.
-        sessions.console().transcript().sync();
+        sessions.console().sync();
     }
 
     /** Current MailBox status with the operator lock and the vehicle's call state added. */

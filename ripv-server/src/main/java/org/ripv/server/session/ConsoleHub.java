@@ -60,7 +60,7 @@ public final class ConsoleHub implements AutoCloseable {
     public ConsoleHub(Path transcripts, org.ripv.server.store.StateStore store, int keepDays, Encoder encoder) throws IOException {
         this.encoder = encoder;
         this.transcript = new Transcript(transcripts, store, keepDays);
-        this.states = new VehicleStates(transcript::dirOf);
+        this.states = new VehicleStates(store);
     }
 
     /** Where events go for notification (set once at start). */
@@ -297,8 +297,15 @@ public final class ConsoleHub implements AutoCloseable {
         return transcript.history(mailbox, since, last);
     }
 
+    /** Waits (briefly) until every entry taken so far is in the transcript and every state change saved. */
+    public void sync() {
+        transcript.sync();
+        states.sync();
+    }
+
     @Override
     public void close() {
+        states.close();
         synchronized (order) {
             byClient.values().forEach(s -> s.forEach(Watcher::stop));
             byClient.clear();

@@ -1,20 +1,17 @@
 package org.ripv.server.session;
 
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
-import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.ArrayDeque;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
-import java.util.function.Function;
 import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.SessionState;
 import org.ripv.messages.SessionState.State;
 import org.ripv.messages.VehicleEvent;
+import org.ripv.server.store.BatchWriter;
+import org.ripv.server.store.StateStore;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -22,15 +19,20 @@ import org.slf4j.LoggerFactory;
  * Each vehicle MailBox's call state, derived from the console entries: SURFACED puts it on call
  * (and counts the call), DIVED marks it dived, LINK_LOST lost; lines, transfers and vehicle
  * events are contact; a position that comes with any entry is the last position. The state is
- * kept in {@code state.json} beside the MailBox's transcript on every event, so it survives a
- * server restart.
+ * saved in the server's {@link StateStore} on every event (embedded: {@code state.json} beside the
+ * MailBox's transcript; PostgreSQL: a document), so it survives a server restart and a standby
+ * that takes over starts from it.
  */
 final class VehicleStates {
     private static final Logger log = LoggerFactory.getLogger(VehicleStates.class);
     /** Lines kept per MailBox for a watcher joining late and for e-mails. */
     static final int RECENT = 50;
 
-    private final Function<String, Path> dirOf;
+    private final StateStore store;
+    /** Saves on a thread of their own: a database that is slow or failing over never holds the hub's lock. */
+    private final BatchWriter<Saved> saves;
+
+    private record Saved(String mailbox, String json) {}
     private final Map<String, Vehicle> vehicles = new ConcurrentHashMap<>();
 
     /** One MailBox's state; guarded by the hub's lock. */
@@ -53,8 +55,32 @@ final class VehicleStates {
         }
     }
 
-    VehicleStates(Function<String, Path> dirOf) {
-        this.dirOf = dirOf;
+    VehicleStates(StateStore store) {
+        this.store = store;
+        this.saves = new BatchWriter<>("ripv-vehicle-state-writer", 10_000, 1000, (batch, dropped) -> {
+            if (dropped > 0) {
+                log.warn("{} vehicle state saves dropped: the state store could not keep up", dropped);
+            }
+            Map<String, String> newest = new LinkedHashMap<>();
+            batch.forEach(x -> newest.put(x.mailbox(), x.json())); // only each MailBox's last state matters
+            newest.forEach((mailbox, json) -> {
+                try {
+                    store.saveVehicleState(mailbox, json);
+                } catch (IOException | RuntimeException e) {
+                    log.warn("could not save the state of {}: {}", mailbox, e.toString());
+                }
+            });
+        });
+    }
+
+    /** Waits (briefly) until the states changed so far are saved. */
+    void sync() {
+        saves.sync();
+    }
+
+    /** Saves what waits, then stops. */
+    void close() {
+        saves.close();
     }
 
     /** Takes one entry into its MailBox's state; true when the state changed in a way worth saving. */
@@ -140,12 +166,12 @@ final class VehicleStates {
 
     /** Reads the saved state of a MailBox not seen since the server started. */
     private Vehicle load(String mailbox) {
-        Path f = dirOf.apply(mailbox).resolve("state.json");
-        if (!Files.isRegularFile(f)) {
-            return null;
-        }
         try {
-            Map<String, Object> m = Json.parse(Files.readString(f, StandardCharsets.UTF_8).strip());
+            java.util.Optional<String> saved = store.loadVehicleState(mailbox);
+            if (saved.isEmpty()) {
+                return null;
+            }
+            Map<String, Object> m = Json.parse(saved.get().strip());
             Vehicle v = new Vehicle();
             v.state = State.valueOf(String.valueOf(m.get("state")));
             v.lastContact = m.get("lastContact") instanceof Number n ? n.longValue() : 0;
@@ -155,8 +181,8 @@ final class VehicleStates {
             v.lastEvent = m.get("lastEvent") instanceof String s ? VehicleEvent.valueOf(s) : null;
             Vehicle raced = vehicles.putIfAbsent(mailbox, v);
             return raced != null ? raced : v;
-        } catch (IOException | IllegalArgumentException e) {
-            log.warn("ignoring the unreadable vehicle state {}: {}", f, e.toString());
+        } catch (IOException | RuntimeException e) {
+            log.warn("ignoring the unreadable state of {}: {}", mailbox, e.toString());
             return null;
         }
     }
@@ -171,14 +197,6 @@ final class VehicleStates {
         m.put("lon", s.lon());
         m.put("calls", s.calls());
         m.put("lastEvent", s.lastEvent() == null ? null : s.lastEvent().name());
-        Path dir = dirOf.apply(mailbox);
-        try {
-            Files.createDirectories(dir);
-            Path tmp = dir.resolve("state.json.tmp");
-            Files.writeString(tmp, Json.write(m) + "\n", StandardCharsets.UTF_8);
-            Files.move(tmp, dir.resolve("state.json"), StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-        } catch (IOException e) {
-            log.warn("could not save the state of {}: {}", mailbox, e.toString());
-        }
+        saves.offer(new Saved(mailbox, Json.write(m) + "\n"));
     }
 }

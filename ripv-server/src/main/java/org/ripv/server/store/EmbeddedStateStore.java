@@ -136,6 +136,24 @@ public final class EmbeddedStateStore implements StateStore {
         return out;
     }
 
+    /** Beside the MailBox's transcript files, where earlier versions kept it. */
+    private Path vehicleStateFile(String mailbox) {
+        return transcriptDir(layout.transcripts(), mailbox).resolve("state.json");
+    }
+
+    @Override
+    public void saveVehicleState(String mailbox, String json) throws IOException {
+        Path f = vehicleStateFile(mailbox);
+        Files.createDirectories(f.getParent());
+        DataFiles.write(f, json);
+    }
+
+    @Override
+    public Optional<String> loadVehicleState(String mailbox) throws IOException {
+        Path f = vehicleStateFile(mailbox);
+        return Files.isRegularFile(f) ? Optional.of(Files.readString(f, StandardCharsets.UTF_8)) : Optional.empty();
+    }
+
     @Override
     public void saveFetched(String mailbox, String document) throws IOException {
         DataFiles.write(DataFiles.directory(layout.fetched()).resolve(DataFiles.key(mailbox) + ".properties"), document);

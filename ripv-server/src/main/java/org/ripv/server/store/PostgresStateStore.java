@@ -32,6 +32,7 @@ public final class PostgresStateStore implements StateStore {
     static final long SCHEMA_LOCK = 0x52495056L;
     private static final String QUEUE = "queue";
     private static final String FETCHED = "fetched";
+    private static final String VEHICLE_STATE = "vehicle-state";
     private static final String SUBSCRIPTIONS = "subscriptions";
 
     private static final String[] SCHEMA = {
@@ -247,6 +248,16 @@ public final class PostgresStateStore implements StateStore {
     @Override
     public List<Stored> loadQueues() throws IOException {
         return loadDocuments(QUEUE, null);
+    }
+
+    @Override
+    public void saveVehicleState(String mailbox, String json) throws IOException {
+        saveDocument(VEHICLE_STATE, mailbox, json);
+    }
+
+    @Override
+    public Optional<String> loadVehicleState(String mailbox) throws IOException {
+        return loadDocuments(VEHICLE_STATE, mailbox).stream().findFirst().map(Stored::text);
     }
 
     @Override

@@ -53,6 +53,17 @@ public interface StateStore extends AutoCloseable {
     /** Deletes entries of days before {@code oldestKept} (UTC). */
     void pruneTranscripts(LocalDate oldestKept) throws IOException;
 
+    // ---- vehicle call state ----
+
+    /**
+     * Replaces a vehicle MailBox's call state (on call, dived, lost; last contact, position,
+     * calls), one JSON document whose format the server's session package owns. Kept here so a
+     * standby that takes over knows where each vehicle stands.
+     */
+    void saveVehicleState(String mailbox, String json) throws IOException;
+
+    Optional<String> loadVehicleState(String mailbox) throws IOException;
+
     // ---- workflows ----
 
     /** Replaces a MailBox's workflow queue document. */

@@ -117,6 +117,23 @@ class StateStoreContractTest {
 
     @ParameterizedTest
     @EnumSource(Kind.class)
+    void aVehiclesCallStateIsReplacedWholeAndOutlivesTheStore(Kind kind) throws Exception {
+        StateStore s = open(kind);
+        assertThat(s.loadVehicleState(A)).isEmpty();
+        s.saveVehicleState(A, "{\"state\":\"DIVED\",\"calls\":3}\n");
+        s.saveVehicleState(A, "{\"state\":\"ON_CALL\",\"calls\":4}\n");
+        s.saveVehicleState(B, "{\"state\":\"LOST\"}\n");
+        s = reopen(kind, s);
+        assertThat(s.loadVehicleState(A)).contains("{\"state\":\"ON_CALL\",\"calls\":4}\n");
+        assertThat(s.loadVehicleState(B)).contains("{\"state\":\"LOST\"}\n");
+        if (kind == Kind.EMBEDDED) {
+            // where earlier versions kept it, so an upgraded server finds its vehicles' states
+            assertThat(dataDir.resolve("transcripts")).isDirectoryRecursivelyContaining("glob:**/state.json");
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(Kind.class)
     void aLargeTranscriptBatchIsStoredWholeInOrder(Kind kind) throws Exception {
         StateStore s = open(kind);
         List<TranscriptLine> batch = new ArrayList<>();
