@@ -20,7 +20,7 @@ import org.ripv.messages.Status;
 /**
  * ripvOut.m under GNU Octave ({@code octave-cli}), started and restarted by the service.
  * Skipped when Octave is not installed; CI installs it (docs/datavis.md lists the packages).
- * Two plots only: each Octave start costs seconds.
+ * Few plots: each Octave start costs seconds.
  */
 class DataVisOctaveTest {
     @TempDir
@@ -81,6 +81,39 @@ class DataVisOctaveTest {
             VisHarness.decode(((ImageResult) second.footer().result()).jpeg());
             assertThat(octave.starts()).isGreaterThanOrEqualTo(2);
             assertThat(h.leftovers()).isEmpty();
+        }
+    }
+
+    @Test
+    void aCancelledOctavePlotKillsOctaveAndTheNextPlotGetsAFreshOne() throws Exception {
+        assumeTrue(octaveInstalled(), "octave-cli is not on the PATH: install octave gnuplot-nox ghostscript "
+                + "fonts-dejavu-core fonts-freefont-otf to run ripvOut.m");
+        StringBuilder big = new StringBuilder(8_000_000);
+        for (int i = 0; i < 500_000; i++) {
+            big.append(i).append(' ').append(String.format(java.util.Locale.ROOT, "%.3f", Math.sin(i / 1000.0))).append('\n');
+        }
+        DataVisServer.Config config = DataVisServer.Config.of(tmp).withWorker(WorkerMode.OCTAVE)
+                .withTimeout(Duration.ofSeconds(120));
+        try (VisHarness h = new VisHarness(config)) {
+            OctaveWorker octave = octaveOf(h.service);
+            long id = h.send("vis:big.dat", "big.dat", big.toString());
+            h.awaitProgress(id, 60); // handed to Octave, which takes many seconds for half a million points
+            long pid = octave.pid();
+            assertThat(pid).isPositive();
+            ProcessHandle drawing = ProcessHandle.of(pid).orElseThrow();
+            long t0 = System.nanoTime();
+            assertThat(h.cancel(id)).as("the plot is with Octave: the cancel is taken").isTrue();
+            OutgoingServiceMessage r = h.finalReply(id, 10);
+            assertThat(r.footer().errorCode()).as(r.footer().replyText()).isEqualTo(org.ripv.messages.ErrorCode.CANCELLED);
+            assertThat((System.nanoTime() - t0) / 1_000_000).as("ms to the reply").isLessThan(5_000);
+            drawing.onExit().get(10, TimeUnit.SECONDS); // the Octave that was drawing it is gone
+
+            OutgoingServiceMessage next = h.run("vis:two.dat", "two.dat", "% title: after the cancel\n1\n3\n2\n");
+            assertThat(next.footer().status()).as(next.footer().replyText()).isEqualTo(Status.OK);
+            VisHarness.decode(((ImageResult) next.footer().result()).jpeg());
+            assertThat(octave.pid()).as("a new Octave").isNotEqualTo(pid);
+            assertThat(octave.starts()).isGreaterThanOrEqualTo(2);
+            assertThat(h.leftovers()).as("the cancelled plot left nothing in the exchange").isEmpty();
         }
     }
 
