@@ -29,7 +29,8 @@ import org.ripv.testing.Tools;
  * vehicle keeps a 'C' in its line after each send, as that late 'C' did, so the stray byte is there
  * in every round, not in 3 of 19.
  * And a vehicle that refuses the first start of each transfer: it is tried once more on a clean
- * line; and a get cancelled midway (CAN CAN to sb) leaves a clean line for the next put.
+ * line; and a get cancelled midway (CAN CAN to sb) leaves a clean line for the next put, as a
+ * put cancelled midway (CAN CAN to rb) does for the next get.
  */
 class LrzszCleanLineTest {
     static final Duration T = Duration.ofSeconds(60);
@@ -158,6 +159,48 @@ class LrzszCleanLineTest {
                 assertArrayEquals(up, Files.readAllBytes(dir.resolve("AFTER.BIN")));
                 ServiceProbe.Answer listing = probe.send("ttyCX", "dir", T);
                 assertTrue(listing.ok() && listing.text().contains("AFTER.BIN") && !listing.text().contains("Bad command"),
+                        listing.text());
+            } finally {
+                serial.stop();
+            }
+        }
+    }
+
+    @Test
+    @SuppressWarnings("try")
+    void aPutCancelledMidwayStopsRbAndLeavesACleanLineForTheNextGet() throws Exception {
+        Path dir = Files.createDirectories(tmp.resolve("vehicle"));
+        byte[] log = new byte[20_000];
+        new Random(17).nextBytes(log);
+        Files.write(dir.resolve("MISSION.LOG"), log);
+        Path pty = tmp.resolve("ttyCP");
+        try (Socat socat = vehicle(dir, pty, "")) {
+            SerialPortServer serial = new SerialPortServer("testhost", List.of(link(pty)), null, false, tmp.resolve("work"));
+            serial.start();
+            try {
+                ServiceProbe probe = new ServiceProbe(serial);
+                Eventually.await("pty open", Duration.ofSeconds(10), () -> probe.status("ttyCP").available());
+                byte[] huge = new byte[3_000_000];
+                new Random(18).nextBytes(huge);
+                AtomicBoolean asked = new AtomicBoolean();
+                probe.onProgress = m -> {
+                    if (asked.compareAndSet(false, true)) {
+                        assertTrue(probe.cancel("ttyCP", m.header().messageId()), "the transfer takes the cancel");
+                    }
+                };
+                ServiceProbe.Answer put = probe.send("ttyCP", "ymodem:put HUGE.BIN", new Attachment("HUGE.BIN", huge), T);
+                probe.onProgress = m -> { };
+                assertTrue(asked.get(), "a progress came");
+                assertEquals(org.ripv.messages.ErrorCode.CANCELLED, put.last().footer().errorCode(), put.text());
+                // rb was told (CAN CAN) and gave up: whatever it kept is not the whole file
+                Path partial = dir.resolve("HUGE.BIN");
+                assertTrue(!Files.exists(partial) || Files.size(partial) < huge.length,
+                        "rb stopped before the end; socat: " + socat.log());
+                ServiceProbe.Answer got = probe.send("ttyCP", "ymodem:get MISSION.LOG", T);
+                assertTrue(got.ok(), "the get after a cancelled put: " + got.text());
+                assertArrayEquals(log, assertInstanceOf(FileData.class, got.last().footer().result()).data());
+                ServiceProbe.Answer listing = probe.send("ttyCP", "dir", T);
+                assertTrue(listing.ok() && listing.text().contains("MISSION.LOG") && !listing.text().contains("Bad command"),
                         listing.text());
             } finally {
                 serial.stop();
