@@ -53,6 +53,9 @@ public final class ConsoleBench implements Callable<Integer> {
             + " deserialize every push (default ${DEFAULT-VALUE}); the others read raw frames (see RawWatchers).")
     int fullClients;
 
+    @picocli.CommandLine.Spec
+    picocli.CommandLine.Model.CommandSpec spec;
+
     private final PrintStream out;
 
     public ConsoleBench() {
@@ -117,8 +120,22 @@ public final class ConsoleBench implements Callable<Integer> {
 
     record Figures(double p50Ms, double p99Ms, double maxMs, long samples, long skipped) {}
 
+    /** Refuses counts and times the benchmark cannot run with, naming the option. */
+    private void check() {
+        String bad = watchers < 1 ? "--watchers must be at least 1, got " + watchers
+                : rate < 1 || rate > 10_000 ? "--rate must be 1 to 10000 lines a second, got " + rate
+                : seconds < 1 || seconds > 3600 ? "--seconds must be 1 to 3600, got " + seconds
+                : baselineSeconds < 1 || baselineSeconds > 3600 ? "--baseline-seconds must be 1 to 3600, got " + baselineSeconds
+                : warmup < 0 || warmup > 600 ? "--warmup must be 0 to 600, got " + warmup
+                : fullClients < 0 ? "--full-clients must not be negative, got " + fullClients : null;
+        if (bad != null) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(), bad);
+        }
+    }
+
     @Override
     public Integer call() throws Exception {
+        check();
         Path dir = Files.createTempDirectory("ripv-bench-console");
         out.printf("RIPV console benchmark — %d cores, Java %s (%s), %d lines/s, %d s per phase after %d s warm-up"
                         + " (the one-watcher phase %d s);"
