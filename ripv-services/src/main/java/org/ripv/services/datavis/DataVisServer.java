@@ -275,6 +275,11 @@ public final class DataVisServer extends RIPVService {
                 if (!plotCancel.asked()) {
                     throw e;
                 }
+                status = null;
+            }
+            // A cancel taken as the worker finished still cancels: the operator was told it was
+            // taken, and the worker has been stopped all the same.
+            if (plotCancel.asked()) {
                 log.info("vis:{} for {} was cancelled; the {} worker was stopped", file.name(), request.user(), config.worker());
                 throw new ServiceException(ErrorCode.CANCELLED, "plot of " + file.name() + " cancelled; the "
                         + config.worker() + " worker was stopped and starts again for the next plot");
