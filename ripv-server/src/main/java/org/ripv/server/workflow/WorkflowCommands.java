@@ -39,11 +39,20 @@ final class WorkflowCommands {
 
     /** {@code ?queue MAILBOX}, {@code ?queue add MAILBOX NAME}, {@code ?queue remove MAILBOX ID}, {@code ?queue clear MAILBOX}. */
     OutgoingServerMessage queue(IncomingServerMessage request) throws IOException {
+        return answer(request, Ids.FID_QUEUE, this::queueOrRefuse);
+    }
+
+    /** A command's answer, or FORBIDDEN with the reason when the rules refuse it. */
+    private static OutgoingServerMessage answer(IncomingServerMessage request, String fid, Command command) throws IOException {
         try {
-            return queueOrRefuse(request);
+            return command.run(request);
         } catch (Workflows.Refused e) {
-            return request.reply(Footer.error(Ids.FID_QUEUE, ErrorCode.FORBIDDEN, e.getMessage()).via(Workflows.SERVER));
+            return request.reply(Footer.error(fid, ErrorCode.FORBIDDEN, e.getMessage()).via(Workflows.SERVER));
         }
+    }
+
+    private interface Command {
+        OutgoingServerMessage run(IncomingServerMessage request) throws IOException;
     }
 
     private OutgoingServerMessage queueOrRefuse(IncomingServerMessage request) throws IOException {
@@ -118,11 +127,7 @@ final class WorkflowCommands {
 
     /** {@code ?receipts MAILBOX [--last N]}. */
     OutgoingServerMessage receipts(IncomingServerMessage request) throws IOException {
-        try {
-            return receiptsOrRefuse(request);
-        } catch (Workflows.Refused e) {
-            return request.reply(Footer.error(Ids.FID_RECEIPTS, ErrorCode.FORBIDDEN, e.getMessage()).via(Workflows.SERVER));
-        }
+        return answer(request, Ids.FID_RECEIPTS, this::receiptsOrRefuse);
     }
 
     private OutgoingServerMessage receiptsOrRefuse(IncomingServerMessage request) throws IOException {

@@ -128,6 +128,21 @@ class LrzszCleanLineTest {
         }
     }
 
+    /** Sends a transfer and cancels it at its first progress report; the answer must be CANCELLED. */
+    private static void cancelledAtFirstProgress(ServiceProbe probe, String handle, String command,
+                                                 Attachment attachment) throws Exception {
+        AtomicBoolean asked = new AtomicBoolean();
+        probe.onProgress = m -> {
+            if (asked.compareAndSet(false, true)) {
+                assertTrue(probe.cancel(handle, m.header().messageId()), "the transfer takes the cancel");
+            }
+        };
+        ServiceProbe.Answer a = attachment == null ? probe.send(handle, command, T) : probe.send(handle, command, attachment, T);
+        probe.onProgress = m -> { };
+        assertTrue(asked.get(), "a progress came");
+        assertEquals(org.ripv.messages.ErrorCode.CANCELLED, a.last().footer().errorCode(), a.text());
+    }
+
     @Test
     @SuppressWarnings("try")
     void aGetCancelledMidwayLeavesACleanLineForTheNextPut() throws Exception {
@@ -142,16 +157,7 @@ class LrzszCleanLineTest {
             try {
                 ServiceProbe probe = new ServiceProbe(serial);
                 Eventually.await("pty open", Duration.ofSeconds(10), () -> probe.status("ttyCX").available());
-                AtomicBoolean asked = new AtomicBoolean();
-                probe.onProgress = m -> {
-                    if (asked.compareAndSet(false, true)) {
-                        assertTrue(probe.cancel("ttyCX", m.header().messageId()), "the transfer takes the cancel");
-                    }
-                };
-                ServiceProbe.Answer got = probe.send("ttyCX", "ymodem:get HUGE.LOG", T);
-                probe.onProgress = m -> { };
-                assertTrue(asked.get(), "a progress came");
-                assertEquals(org.ripv.messages.ErrorCode.CANCELLED, got.last().footer().errorCode(), got.text());
+                cancelledAtFirstProgress(probe, "ttyCX", "ymodem:get HUGE.LOG", null);
                 byte[] up = new byte[5_000];
                 new Random(16).nextBytes(up);
                 ServiceProbe.Answer put = probe.send("ttyCX", "ymodem:put AFTER.BIN", new Attachment("AFTER.BIN", up), T);
@@ -182,16 +188,7 @@ class LrzszCleanLineTest {
                 Eventually.await("pty open", Duration.ofSeconds(10), () -> probe.status("ttyCP").available());
                 byte[] huge = new byte[3_000_000];
                 new Random(18).nextBytes(huge);
-                AtomicBoolean asked = new AtomicBoolean();
-                probe.onProgress = m -> {
-                    if (asked.compareAndSet(false, true)) {
-                        assertTrue(probe.cancel("ttyCP", m.header().messageId()), "the transfer takes the cancel");
-                    }
-                };
-                ServiceProbe.Answer put = probe.send("ttyCP", "ymodem:put HUGE.BIN", new Attachment("HUGE.BIN", huge), T);
-                probe.onProgress = m -> { };
-                assertTrue(asked.get(), "a progress came");
-                assertEquals(org.ripv.messages.ErrorCode.CANCELLED, put.last().footer().errorCode(), put.text());
+                cancelledAtFirstProgress(probe, "ttyCP", "ymodem:put HUGE.BIN", new Attachment("HUGE.BIN", huge));
                 // rb was told (CAN CAN) and gave up: whatever it kept is not the whole file
                 Path partial = dir.resolve("HUGE.BIN");
                 assertTrue(!Files.exists(partial) || Files.size(partial) < huge.length,
