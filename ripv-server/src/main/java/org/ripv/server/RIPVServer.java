@@ -457,8 +457,11 @@ public final class RIPVServer implements AutoCloseable {
     }
 
     void drop(ServiceReference ref, String why) {
+        // The calls end first, so a workflow step under way is cut (it resumes on the next call)
+        // rather than failed by the request ending below.
+        String name = ref.descriptor().name();
+        workflows.onConsole(name, sessions.console().serviceGone(name, why));
         endings.drop(ref, why);
-        sessions.console().serviceGone(ref.descriptor().name(), why);
     }
 
     /**

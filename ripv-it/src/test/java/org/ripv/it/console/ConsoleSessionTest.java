@@ -188,6 +188,52 @@ class ConsoleSessionTest {
         assertThat(s.calls()).isEqualTo(2);
     }
 
+    /** Polls {@code ?queue MAILBOX} until its answer contains {@code text}; returns that answer. */
+    static String awaitQueue(ClientSocketHandler c, String mailbox, String text, Duration within) throws Exception {
+        long end = System.nanoTime() + within.toNanos();
+        String q = "";
+        while (System.nanoTime() < end) {
+            q = call(c, "?queue " + mailbox).footer().replyText();
+            if (q.contains(text)) {
+                return q;
+            }
+            Thread.sleep(100);
+        }
+        throw new AssertionError("?queue never said '" + text + "'; last: " + q);
+    }
+
+    @Test
+    void aWorkflowOnACallWhoseServiceGoesAwayIsCutAtOnceAndResumesOnTheNextCall() throws Exception {
+        ClientSocketHandler alice = sys.login("alice");
+        Path wf = dir.resolve("wait.wf");
+        Files.writeString(wf, "send say first\nwait-for 'go on' timeout=5m\nsend say last\n");
+        alice.upload(wf, "wait.wf", null);
+        assertThat(call(alice, "?queue add " + box + " wait.wf").footer().replyText()).contains("it runs when the vehicle calls");
+        vehicle.event(VehicleEvent.SURFACED, "", 41.5, -70.5);
+        awaitQueue(alice, box, "running step 2/3", T);
+
+        // The service dies mid-call: the call is lost for the workflows too, not only for the
+        // watchers — the waiting step is cut now (not failed when its 5 minutes are up) ...
+        connector.close();
+        awaitQueue(alice, box, "cut at step 2/3, resumes on the next call", Duration.ofSeconds(10));
+        // ... and a workflow queued now waits for the next call instead of running on a vehicle that is gone.
+        assertThat(call(alice, "?queue add " + box + " wait.wf").footer().replyText()).contains("it runs when the vehicle calls");
+
+        VehicleConsoleService back = new VehicleConsoleService("localhost", "ru29");
+        sys.register(back);
+        back.event(VehicleEvent.SURFACED, "", 41.6, -70.6);
+        awaitQueue(alice, box, "running step 2/3", T);
+        back.line("go on");
+        long end = System.nanoTime() + T.toNanos();
+        String receipts = "";
+        while (System.nanoTime() < end && !receipts.contains("result: DONE")) {
+            receipts = call(alice, "?receipts " + box).footer().replyText();
+            Thread.sleep(100);
+        }
+        // Resumed where it was cut, on the next call: the cut run's receipt, then the resumed one's.
+        assertThat(receipts).contains("result: CUT").contains("(resumed at step 2)").contains("result: DONE");
+    }
+
     @Test
     void aSlowWatcherSkipsWithAMarkerWhileTheOthersGetEverything() throws Exception {
         ClientSocketHandler fast = sys.login("alice");

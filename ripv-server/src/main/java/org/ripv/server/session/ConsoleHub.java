@@ -129,11 +129,19 @@ public final class ConsoleHub implements AutoCloseable {
         take(List.of(entry));
     }
 
-    /** A service left (died, was removed, or registered again): its MailBoxes on call are lost. */
-    public void serviceGone(String servicePrefix, String why) {
+    /**
+     * A service left (died, was removed, or registered again): its MailBoxes on call are lost.
+     *
+     * @return the LINK_LOST events it published, for the others who follow calls (the workflows)
+     */
+    public List<ConsoleEntry> serviceGone(String servicePrefix, String why) {
+        List<ConsoleEntry> lost = new ArrayList<>();
         for (String mailbox : states.onCall(servicePrefix)) {
-            serverEvent(mailbox, VehicleEvent.LINK_LOST, "", "the service " + why + " during the call");
+            lost.add(new ConsoleEntry(System.currentTimeMillis(), mailbox, ConsoleEntry.Kind.EVENT, "",
+                    "the service " + why + " during the call", VehicleEvent.LINK_LOST, null, null));
         }
+        take(lost);
+        return lost;
     }
 
     private void take(List<ConsoleEntry> entries) {
