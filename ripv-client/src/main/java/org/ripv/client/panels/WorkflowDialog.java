@@ -1,7 +1,6 @@
 package org.ripv.client.panels;
 
 import java.awt.BorderLayout;
-import java.awt.Color;
 import java.awt.Dimension;
 import java.awt.FlowLayout;
 import java.awt.Font;
@@ -24,15 +23,10 @@ import javax.swing.JSplitPane;
 import javax.swing.JTabbedPane;
 import javax.swing.JTable;
 import javax.swing.JTextArea;
-import javax.swing.JTextField;
 import javax.swing.ListSelectionModel;
 import javax.swing.SpinnerNumberModel;
 import javax.swing.UIManager;
-import javax.swing.event.DocumentEvent;
-import javax.swing.event.DocumentListener;
 import javax.swing.table.AbstractTableModel;
-import javax.swing.text.BadLocationException;
-import javax.swing.text.DefaultHighlighter;
 import org.ripv.client.handlers.ClientSocketHandler.IfExists;
 import org.ripv.client.managers.ClientModel;
 import org.ripv.client.managers.ConsoleModel;
@@ -67,9 +61,7 @@ public final class WorkflowDialog extends JDialog {
     private final JLabel outcome = new JLabel(" ");
     private final DefaultListModel<WorkflowModel.Refusal> refusals = new DefaultListModel<>();
     private final JList<WorkflowModel.Refusal> refusalList = new JList<>(refusals);
-    private final JTextField name = new JTextField(18);
-    private final JTextArea editor = new JTextArea(EXAMPLE);
-    private final JTextArea lineNumbers = new JTextArea("1");
+    private final WorkflowEditor editor;
     private final DefaultListModel<WorkflowModel.Receipt> receipts = new DefaultListModel<>();
     private final JList<WorkflowModel.Receipt> receiptList = new JList<>(receipts);
     private final JTextArea receiptText = new JTextArea();
@@ -82,7 +74,6 @@ public final class WorkflowDialog extends JDialog {
     /** What "Keep both" or "Replace" does after the server said the name is taken. */
     private java.util.function.Consumer<IfExists> retry;
     private String lastWorkflowEntry = "";
-    private Object highlight;
     /** The file Add file… sent last: a refused one is opened in the editor, at the line at fault. */
     private Path sentFile;
     /** Names this window uploaded: sending one again (a mended workflow) replaces it without asking. */
@@ -93,6 +84,7 @@ public final class WorkflowDialog extends JDialog {
         this.manager = manager;
         this.model = manager.model();
         this.mailbox = mailbox;
+        this.editor = new WorkflowEditor(handle(mailbox) + ".wf", () -> queueText(IfExists.ASK));
         setName("workflowDialog");
         setDefaultCloseOperation(DISPOSE_ON_CLOSE);
 
@@ -104,7 +96,7 @@ public final class WorkflowDialog extends JDialog {
         tabs.setName("workflowTabs");
         tabs.addTab("Queue", queueTab());
         tabs.setMnemonicAt(0, KeyEvent.VK_Q);
-        tabs.addTab("Write a workflow", editorTab());
+        tabs.addTab("Write a workflow", editor);
         tabs.setMnemonicAt(1, KeyEvent.VK_W);
         tabs.addTab("Receipts", receiptsTab());
         tabs.setMnemonicAt(2, KeyEvent.VK_R);
@@ -117,7 +109,7 @@ public final class WorkflowDialog extends JDialog {
             WorkflowModel.Refusal r = refusalList.getSelectedValue();
             if (!e.getValueIsAdjusting() && r != null && r.line() > 0) {
                 tabs.setSelectedIndex(1);
-                markLine(r.line());
+                editor.markLine(r.line());
             }
         });
         JPanel south = new JPanel(new BorderLayout(4, 2));
@@ -212,55 +204,6 @@ public final class WorkflowDialog extends JDialog {
         return p;
     }
 
-    private JPanel editorTab() {
-        name.setName("workflowName");
-        name.setText(handle(mailbox) + ".wf");
-        name.setToolTipText("The name the workflow is uploaded under (the server's upload directory)");
-        editor.setName("workflowEditor");
-        Font mono = new Font(Font.MONOSPACED, Font.PLAIN, editor.getFont().getSize());
-        editor.setFont(mono);
-        editor.setTabSize(4);
-        lineNumbers.setFont(mono);
-        lineNumbers.setEditable(false);
-        lineNumbers.setFocusable(false);
-        lineNumbers.setBackground(UIManager.getColor("Panel.background"));
-        lineNumbers.setBorder(BorderFactory.createEmptyBorder(0, 4, 0, 6));
-        editor.getDocument().addDocumentListener(new DocumentListener() {
-            @Override
-            public void insertUpdate(DocumentEvent e) {
-                edited();
-            }
-
-            @Override
-            public void removeUpdate(DocumentEvent e) {
-                edited();
-            }
-
-            @Override
-            public void changedUpdate(DocumentEvent e) {
-                edited();
-            }
-        });
-        edited();
-        JScrollPane scroll = new JScrollPane(editor);
-        scroll.setRowHeaderView(lineNumbers);
-        JButton queue = button("Upload and queue", KeyEvent.VK_U, "queueText",
-                "Upload the text as NAME and queue it for this MailBox (?upload, then ?queue add)");
-        queue.addActionListener(e -> queueText(IfExists.ASK));
-        JLabel nameLabel = new JLabel("Name:");
-        nameLabel.setDisplayedMnemonic(KeyEvent.VK_N);
-        nameLabel.setLabelFor(name);
-        JPanel top = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 0));
-        top.add(nameLabel);
-        top.add(name);
-        top.add(queue);
-        JPanel p = new JPanel(new BorderLayout(4, 4));
-        p.setBorder(BorderFactory.createEmptyBorder(4, 4, 4, 4));
-        p.add(top, BorderLayout.NORTH);
-        p.add(scroll, BorderLayout.CENTER);
-        return p;
-    }
-
     private JPanel receiptsTab() {
         receiptList.setName("receiptList");
         receiptList.setSelectionMode(ListSelectionModel.SINGLE_SELECTION);
@@ -291,7 +234,7 @@ public final class WorkflowDialog extends JDialog {
         return p;
     }
 
-    private static JButton button(String text, int mnemonic, String name, String tip) {
+    static JButton button(String text, int mnemonic, String name, String tip) {
         JButton b = new JButton(text);
         b.setMnemonic(mnemonic);
         b.setName(name);
@@ -321,12 +264,12 @@ public final class WorkflowDialog extends JDialog {
     }
 
     private void queueText(IfExists ifExists) {
-        String n = name.getText().strip();
+        String n = editor.fileName();
         if (n.isEmpty()) {
             outcome("give the workflow a name first (e.g. " + handle(mailbox) + ".wf)", true);
             return;
         }
-        String text = editor.getText();
+        String text = editor.text();
         sentFile = null;
         retry = how -> {
             outcome("uploading " + n + " …", false);
@@ -370,7 +313,7 @@ public final class WorkflowDialog extends JDialog {
             refusalScroll.setVisible(!q.refusals().isEmpty()); // only when there is something to show
             getContentPane().revalidate();
         }
-        clearMark();
+        editor.clearMark();
         if (!q.refusals().isEmpty() && sentFile != null) {
             // A refused file from disk: open it in the editor to mend it there.
             try {
@@ -382,7 +325,7 @@ public final class WorkflowDialog extends JDialog {
             sentFile = null;
         }
         if (!q.refusals().isEmpty() && q.refusals().get(0).line() > 0 && tabs.getSelectedIndex() == 1) {
-            markLine(q.refusals().get(0).line());
+            editor.markLine(q.refusals().get(0).line());
         }
         WorkflowModel.Receipt shown = receiptList.getSelectedValue();
         if (!receipts.isEmpty() || !q.receipts().isEmpty()) {
@@ -410,38 +353,6 @@ public final class WorkflowDialog extends JDialog {
             again.accept(IfExists.KEEP);
         } else if (answer == 1) {
             again.accept(IfExists.REPLACE);
-        }
-    }
-
-    /** The editor's line numbers follow its text; a mark on a refused line goes with an edit. */
-    private void edited() {
-        int lines = editor.getLineCount();
-        StringBuilder b = new StringBuilder();
-        for (int i = 1; i <= lines; i++) {
-            b.append(i).append(i < lines ? "\n" : "");
-        }
-        if (!b.toString().equals(lineNumbers.getText())) {
-            lineNumbers.setText(b.toString());
-        }
-    }
-
-    private void markLine(int line) {
-        clearMark();
-        try {
-            int start = editor.getLineStartOffset(Math.min(line, editor.getLineCount()) - 1);
-            int end = editor.getLineEndOffset(Math.min(line, editor.getLineCount()) - 1);
-            Color c = Colors.dark() ? new Color(0x6B2A2A) : new Color(0xFFD6D6);
-            highlight = editor.getHighlighter().addHighlight(start, end, new DefaultHighlighter.DefaultHighlightPainter(c));
-            editor.setCaretPosition(start);
-        } catch (BadLocationException e) {
-            highlight = null;
-        }
-    }
-
-    private void clearMark() {
-        if (highlight != null) {
-            editor.getHighlighter().removeHighlight(highlight);
-            highlight = null;
         }
     }
 
@@ -481,14 +392,12 @@ public final class WorkflowDialog extends JDialog {
 
     /** Puts text into the editor (tests, and a future "open"). */
     public void editorText(String name, String text) {
-        this.name.setText(name);
-        editor.setText(text);
-        editor.setCaretPosition(0);
+        editor.show(name, text);
     }
 
     /** The editor's name and text, as "NAME\nTEXT". */
     public String editorContent() {
-        return name.getText() + "\n" + editor.getText();
+        return editor.content();
     }
 
     /** Queues what the editor holds, as "Upload and queue" does. */
@@ -510,14 +419,7 @@ public final class WorkflowDialog extends JDialog {
 
     /** The editor line marked as refused (1-based), or 0. */
     public int markedLine() {
-        if (highlight == null) {
-            return 0;
-        }
-        try {
-            return editor.getLineOfOffset(((javax.swing.text.Highlighter.Highlight) highlight).getStartOffset()) + 1;
-        } catch (BadLocationException e) {
-            return 0;
-        }
+        return editor.markedLine();
     }
 
     public String eventsText() {
