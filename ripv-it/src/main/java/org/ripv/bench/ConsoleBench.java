@@ -53,6 +53,10 @@ public final class ConsoleBench implements Callable<Integer> {
             + " deserialize every push (default ${DEFAULT-VALUE}); the others read raw frames (see RawWatchers).")
     int fullClients;
 
+    @Option(names = "--raw-threads", description = "Selector threads reading the raw watchers (default: one per core,"
+            + " as real watchers read side by side on their own machines).")
+    int rawThreads = Runtime.getRuntime().availableProcessors();
+
     @picocli.CommandLine.Spec
     picocli.CommandLine.Model.CommandSpec spec;
 
@@ -118,7 +122,12 @@ public final class ConsoleBench implements Callable<Integer> {
         }
     }
 
-    record Figures(double p50Ms, double p99Ms, double maxMs, long samples, long skipped) {}
+    /**
+     * @param fewest the fewest lines one watcher saw (each should see every line: a raw watcher
+     *               has no skip marker to count, so a short one shows here)
+     * @param shortOnes how many watchers saw fewer lines than the one that saw most, less one
+     */
+    record Figures(double p50Ms, double p99Ms, double maxMs, long samples, long skipped, int fewest, int shortOnes) {}
 
     /** Refuses counts and times the benchmark cannot run with, naming the option. */
     private void check() {
@@ -127,7 +136,8 @@ public final class ConsoleBench implements Callable<Integer> {
                 : seconds < 1 || seconds > 3600 ? "--seconds must be 1 to 3600, got " + seconds
                 : baselineSeconds < 1 || baselineSeconds > 3600 ? "--baseline-seconds must be 1 to 3600, got " + baselineSeconds
                 : warmup < 0 || warmup > 600 ? "--warmup must be 0 to 600, got " + warmup
-                : fullClients < 0 ? "--full-clients must not be negative, got " + fullClients : null;
+                : fullClients < 0 ? "--full-clients must not be negative, got " + fullClients
+                : rawThreads < 1 || rawThreads > 64 ? "--raw-threads must be 1 to 64, got " + rawThreads : null;
         if (bad != null) {
             throw new picocli.CommandLine.ParameterException(spec.commandLine(), bad);
         }
@@ -157,15 +167,15 @@ public final class ConsoleBench implements Callable<Integer> {
         String box = vehicle.mailbox();
         int capacity = rate * (seconds + 2);
         try {
-            out.printf("(%d of the watchers are full clients; the rest read raw frames on one selector thread: RawWatchers)%n",
-                    Math.min(fullClients, watchers));
+            out.printf("(%d of the watchers are full clients; the rest read raw frames on %d selector threads: RawWatchers)%n",
+                    Math.min(fullClients, watchers), rawThreads);
             List<Watch> one = connect(server, box, 1, rate * (baselineSeconds + 2), null);
             Figures base = run(vehicle, one, baselineSeconds);
             report("1 watcher", base, base);
             close(one);
 
             List<Watch> crowd = connect(server, box, Math.min(fullClients, watchers), capacity, null);
-            RawWatchers raws = new RawWatchers();
+            RawWatchers raws = new RawWatchers(rawThreads);
             for (int i = crowd.size(); i < watchers; i++) {
                 Watch w = new Watch(() -> { }, capacity, null);
                 raws.add("localhost", server.port(), "bench", "bench-password".toCharArray(), box, w::record);
@@ -195,6 +205,7 @@ public final class ConsoleBench implements Callable<Integer> {
             out.printf("  p99 with it / p99 without it: %.2f× (target: unchanged)%n", withStall.p99Ms() / many.p99Ms());
             close(crowd);
             raws.close();
+            floor(many);
             // Then a flood the never-reading one cannot absorb in socket buffers: its backlog must stay bounded.
             String pad = "x".repeat(200);
             for (int i = 0; i < 50_000; i++) {
@@ -244,6 +255,11 @@ public final class ConsoleBench implements Callable<Integer> {
 
     /** Prints at the rate for warm-up plus measuring time; returns the delays seen during measuring. */
     private Figures run(VehicleConsoleService vehicle, List<Watch> ws, int seconds) throws InterruptedException {
+        return run(vehicle::line, ws, seconds);
+    }
+
+    /** Sends "bench I NANOS" lines at the rate for warm-up plus measuring time; returns the delays seen during measuring. */
+    private Figures run(java.util.function.Consumer<String> vehicle, List<Watch> ws, int seconds) throws InterruptedException {
         long period = 1_000_000_000L / rate;
         long start = System.nanoTime();
         long total = (long) (warmup + seconds) * rate;
@@ -256,11 +272,32 @@ public final class ConsoleBench implements Callable<Integer> {
             if (wait > 0) {
                 Thread.sleep(wait / 1_000_000, (int) (wait % 1_000_000));
             }
-            vehicle.line("bench " + i + " " + System.nanoTime());
+            vehicle.accept("bench " + i + " " + System.nanoTime());
         }
         Thread.sleep(1000); // let the last lines arrive
         ws.forEach(w -> w.recording = false);
         return figures(ws);
+    }
+
+    /**
+     * The same fan-out with no RIPV in it ({@link FanOutFloor}): what this machine's kernel costs
+     * for it, against which the crowd's p99 is set.
+     */
+    private void floor(Figures crowd) throws Exception {
+        int frame = RawWatchers.lastFrameBytes > 0 ? RawWatchers.lastFrameBytes : 480;
+        int writers = Math.max(2, Runtime.getRuntime().availableProcessors()); // as the server's WriterPool
+        List<Watch> ws = new ArrayList<>();
+        for (int i = 0; i < watchers; i++) {
+            ws.add(new Watch(() -> { }, rate * (seconds + 2), null));
+        }
+        try (FanOutFloor f = new FanOutFloor(ws, writers, rawThreads, frame)) {
+            Figures bare = run(f::line, ws, seconds);
+            out.printf("%-26s p50 %7.2f ms   p99 %7.2f ms   max %8.2f ms   %8d samples   (%d-byte frames, %d writer threads,"
+                            + " no RIPV: the machine's own cost)%n", "bare fan-out to " + watchers, bare.p50Ms(), bare.p99Ms(),
+                    bare.maxMs(), bare.samples(), frame, writers);
+            out.printf("  %d watchers p99 / bare fan-out p99: %.2f× (what RIPV adds on top of the kernel's fan-out)%n",
+                    watchers, crowd.p99Ms() / bare.p99Ms());
+        }
     }
 
     /** The delays the watchers recorded, together. */
@@ -279,17 +316,23 @@ public final class ConsoleBench implements Callable<Integer> {
             skipped += w.skipped;
         }
         Arrays.sort(all);
+        int most = ws.stream().mapToInt(w -> Math.min(w.n.get(), w.delays.length)).max().orElse(0);
+        int fewest = ws.stream().mapToInt(w -> Math.min(w.n.get(), w.delays.length)).min().orElse(0);
+        int shortOnes = (int) ws.stream().filter(w -> Math.min(w.n.get(), w.delays.length) < most - 1).count(); // the line at the warm-up's end counts for some, not others
         if (all.length == 0) {
-            return new Figures(Double.NaN, Double.NaN, Double.NaN, 0, skipped);
+            return new Figures(Double.NaN, Double.NaN, Double.NaN, 0, skipped, 0, 0);
         }
         return new Figures(all[all.length / 2] / 1000.0, all[(int) Math.min(all.length - 1, all.length * 0.99)] / 1000.0,
-                all[all.length - 1] / 1000.0, all.length, skipped);
+                all[all.length - 1] / 1000.0, all.length, skipped, fewest, shortOnes);
     }
 
     private void report(String what, Figures f, Figures base) {
         out.printf("%-26s p50 %7.2f ms   p99 %7.2f ms   max %8.2f ms   %8d samples   %d skipped   p99 %.2f× one watcher%s%n",
                 what, f.p50Ms(), f.p99Ms(), f.maxMs(), f.samples(), f.skipped(), f.p99Ms() / base.p99Ms(),
                 f == base ? "" : "   (targets: p99 ≤ 100 ms and ≤ 3×)");
+        if (f.shortOnes() > 0) {
+            out.printf("  %d watcher(s) saw fewer lines than the others (the fewest: %d)%n", f.shortOnes(), f.fewest());
+        }
     }
 
     private static long usedHeapAfterGc() {

@@ -10,6 +10,7 @@ import java.nio.channels.SelectionKey;
 import java.nio.channels.Selector;
 import java.nio.channels.SocketChannel;
 import java.nio.charset.StandardCharsets;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.function.LongConsumer;
 import org.ripv.messages.Attachment;
@@ -22,17 +23,23 @@ import org.ripv.messages.Status;
 import org.ripv.wire.FrameCodec;
 
 /**
- * Many watchers for the console benchmark on one selector thread. Each speaks the real protocol
- * to log in and {@code ?watch} (blocking, one at a time), then its pushes are read as raw frames
- * and each line's send time is taken from the frame's bytes instead of deserializing it: a
+ * Many watchers for the console benchmark on a few selector threads. Each speaks the real
+ * protocol to log in and {@code ?watch} (blocking, one at a time), then its pushes are read as raw
+ * frames and each line's send time is taken from the frame's bytes instead of deserializing it: a
  * thousand full clients, each with its own reader thread deserializing in the benchmark's own
  * JVM on two cores, would measure the clients rather than the server.
+ *
+ * <p>There is one selector thread per core, each with its share of the connections. Real watchers
+ * read on their own machines, side by side; with one thread here, the server's writers finished a
+ * line while the one reader still had a third of the crowd to read, on one core, the other idle
+ * (docs/performance.md).
  */
 final class RawWatchers implements AutoCloseable {
     private static final byte[] MARK = "bench ".getBytes(StandardCharsets.US_ASCII);
-    private final Selector selector;
-    private final Thread loop;
-    private volatile boolean closed;
+    private final List<Loop> loops = new ArrayList<>();
+    /** The size on the wire (length prefix included) of the last frame read: a console push's, for {@link FanOutFloor}. */
+    static volatile int lastFrameBytes;
+    private int next;
 
     /**
      * One connection: where its delays go, and the start of a frame that a read cut off (rare:
@@ -49,18 +56,113 @@ final class RawWatchers implements AutoCloseable {
         }
     }
 
-    /**
-     * The one buffer every connection is read into, in turn, on the selector thread: a buffer per
-     * connection (64 KiB each, 63 MB for 990) cost a copy from a temporary direct buffer and a
-     * cache miss per read, and swelled the heap the benchmark reports.
-     */
-    private ByteBuffer scratch = ByteBuffer.allocateDirect(64 * 1024);
+    /** One selector thread and the buffer its connections are read into, in turn. */
+    private static final class Loop implements Runnable {
+        final Selector selector;
+        final Thread thread;
+        volatile boolean closed;
+        /**
+         * One buffer for all this loop's connections: a buffer per connection (64 KiB each, 63 MB
+         * for 990) cost a copy from a temporary direct buffer and a cache miss per read, and swelled
+         * the heap the benchmark reports.
+         */
+        ByteBuffer scratch = ByteBuffer.allocateDirect(64 * 1024);
+        /** A frame's bytes for the scan: a loop over an array beats {@code ByteBuffer.get(i)} per byte. */
+        byte[] frame = new byte[4096];
 
-    RawWatchers() throws IOException {
-        selector = Selector.open();
-        loop = new Thread(this::run, "bench-raw-watchers");
-        loop.setDaemon(true);
-        loop.start();
+        Loop(int i) throws IOException {
+            selector = Selector.open();
+            thread = new Thread(this, "bench-raw-watchers-" + i);
+            thread.setDaemon(true);
+            thread.start();
+        }
+
+        void register(Conn c) throws IOException {
+            synchronized (this) {
+                selector.wakeup();
+                c.ch.register(selector, SelectionKey.OP_READ, c);
+            }
+        }
+
+        @Override
+        public void run() {
+            while (!closed) {
+                try {
+                    selector.select();
+                    synchronized (this) {
+                        // lets register() run between selects
+                    }
+                    for (SelectionKey k : selector.selectedKeys()) {
+                        if (!k.isValid() || !read((Conn) k.attachment())) {
+                            k.cancel();
+                        }
+                    }
+                    selector.selectedKeys().clear();
+                } catch (IOException | java.nio.channels.ClosedSelectorException e) {
+                    if (!closed) {
+                        continue;
+                    }
+                }
+            }
+        }
+
+        /** Reads what the connection has and takes the delays out of its whole frames; false at its end. */
+        private boolean read(Conn c) throws IOException {
+            ByteBuffer b = scratch;
+            b.clear();
+            if (c.partial != null) {
+                b.put(c.partial);
+                c.partial = null;
+            }
+            if (c.ch.read(b) < 0) {
+                return false;
+            }
+            // The time of this read, not of the select: a read late in a long batch also takes
+            // lines that arrived after the select returned (once timed before they were sent).
+            long now = System.nanoTime();
+            b.flip();
+            while (b.remaining() >= 4) {
+                int len = b.getInt(b.position());
+                if (len < 0 || b.remaining() < 4 + len) {
+                    break;
+                }
+                if (frame.length < len) {
+                    frame = new byte[len];
+                }
+                b.position(b.position() + 4);
+                b.get(frame, 0, len);
+                lastFrameBytes = 4 + len;
+                scan(frame, len, now, c.delays);
+            }
+            if (b.hasRemaining()) {
+                c.partial = new byte[b.remaining()];
+                b.get(c.partial);
+                int len = c.partial.length >= 4 ? ByteBuffer.wrap(c.partial).getInt() : 0;
+                if (4 + len > scratch.capacity()) {
+                    scratch = ByteBuffer.allocateDirect(4 + len); // a frame larger than the buffer: grow it once
+                }
+            }
+            return true;
+        }
+
+        void close() throws IOException {
+            closed = true;
+            for (SelectionKey k : selector.keys()) {
+                k.channel().close();
+            }
+            selector.close();
+        }
+    }
+
+    RawWatchers(int threads) throws IOException {
+        for (int i = 0; i < Math.max(1, threads); i++) {
+            loops.add(new Loop(i));
+        }
+    }
+
+    /** How many selector threads read the watchers. */
+    int threads() {
+        return loops.size();
     }
 
     /** Connects, logs in and watches; the watcher's delays (nanoseconds) go to {@code delays}. */
@@ -78,11 +180,13 @@ final class RawWatchers implements AutoCloseable {
         expectOk(codec, in, 1);
         codec.write(out, new IncomingServerMessage(Header.request(2, "", "?watch " + mailbox, Priority.NORMAL)));
         expectOk(codec, in, 2);
+        watch(ch, delays);
+    }
+
+    /** Reads an already connected channel's frames from now on; its delays (nanoseconds) go to {@code delays}. */
+    void watch(SocketChannel ch, LongConsumer delays) throws IOException {
         ch.configureBlocking(false);
-        synchronized (this) {
-            selector.wakeup();
-            ch.register(selector, SelectionKey.OP_READ, new Conn(ch, delays));
-        }
+        loops.get(next++ % loops.size()).register(new Conn(ch, delays));
     }
 
     private static void expectOk(FrameCodec codec, DataInputStream in, long id) throws IOException {
@@ -97,76 +201,26 @@ final class RawWatchers implements AutoCloseable {
         }
     }
 
-    private void run() {
-        while (!closed) {
-            try {
-                selector.select();
-                synchronized (this) {
-                    // lets add() register between selects
-                }
-                long now = System.nanoTime();
-                for (SelectionKey k : selector.selectedKeys()) {
-                    if (!k.isValid() || !read((Conn) k.attachment(), now)) {
-                        k.cancel();
-                    }
-                }
-                selector.selectedKeys().clear();
-            } catch (IOException e) {
-                if (!closed) {
-                    continue;
-                }
-            }
-        }
-    }
-
-    /** Reads what the connection has and takes the delays out of its whole frames; false at its end. */
-    private boolean read(Conn c, long now) throws IOException {
-        ByteBuffer b = scratch;
-        b.clear();
-        if (c.partial != null) {
-            b.put(c.partial);
-            c.partial = null;
-        }
-        if (c.ch.read(b) < 0) {
-            return false;
-        }
-        b.flip();
-        while (b.remaining() >= 4) {
-            int len = b.getInt(b.position());
-            if (b.remaining() < 4 + len) {
-                break;
-            }
-            scan(b, b.position() + 4, b.position() + 4 + len, now, c.delays);
-            b.position(b.position() + 4 + len);
-        }
-        if (b.hasRemaining()) {
-            c.partial = new byte[b.remaining()];
-            b.get(c.partial);
-            int len = c.partial.length >= 4 ? ByteBuffer.wrap(c.partial).getInt() : 0;
-            if (4 + len > scratch.capacity()) {
-                scratch = ByteBuffer.allocateDirect(4 + len); // a frame larger than the buffer: grow it once
-            }
-        }
-        return true;
-    }
-
-    /** Finds every "bench I NANOS" in the frame and reports now - NANOS. */
-    private static void scan(ByteBuffer b, int from, int to, long now, LongConsumer delay) {
+    /** Finds every "bench I NANOS" in the frame's first {@code to} bytes and reports now - NANOS. */
+    static void scan(byte[] f, int to, long now, LongConsumer delay) {
         outer:
-        for (int i = from; i + MARK.length < to; i++) {
-            for (int k = 0; k < MARK.length; k++) {
-                if (b.get(i + k) != MARK[k]) {
+        for (int i = 0; i + MARK.length < to; i++) {
+            if (f[i] != 'b') {
+                continue;
+            }
+            for (int k = 1; k < MARK.length; k++) {
+                if (f[i + k] != MARK[k]) {
                     continue outer;
                 }
             }
             int j = i + MARK.length;
-            while (j < to && b.get(j) != ' ') {
+            while (j < to && f[j] != ' ') {
                 j++;
             }
             long sent = 0;
             int digits = 0;
-            for (j++; j < to && b.get(j) >= '0' && b.get(j) <= '9' && digits < 19; j++, digits++) {
-                sent = sent * 10 + (b.get(j) - '0');
+            for (j++; j < to && f[j] >= '0' && f[j] <= '9' && digits < 19; j++, digits++) {
+                sent = sent * 10 + (f[j] - '0');
             }
             if (digits > 0) {
                 delay.accept(now - sent);
@@ -177,10 +231,8 @@ final class RawWatchers implements AutoCloseable {
 
     @Override
     public void close() throws IOException {
-        closed = true;
-        for (SelectionKey k : selector.keys()) {
-            k.channel().close();
+        for (Loop l : loops) {
+            l.close();
         }
-        selector.close();
     }
 }

@@ -17,7 +17,7 @@ class ConsoleBenchOptionsTest {
     void impossibleOptionsAreAUsageErrorThatNamesTheOption() {
         for (String[] args : List.of(new String[] {"--baseline-seconds", "-5"}, new String[] {"--watchers", "0"},
                 new String[] {"--rate", "1000000"}, new String[] {"--seconds", "0"}, new String[] {"--warmup", "-1"},
-                new String[] {"--full-clients", "-2"})) {
+                new String[] {"--full-clients", "-2"}, new String[] {"--raw-threads", "0"})) {
             ByteArrayOutputStream out = new ByteArrayOutputStream();
             StringWriter err = new StringWriter();
             CommandLine cl = new CommandLine(new ConsoleBench(new PrintStream(out, true, StandardCharsets.UTF_8)));
