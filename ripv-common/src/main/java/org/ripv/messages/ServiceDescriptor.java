@@ -19,9 +19,13 @@ import java.util.Objects;
  * @param registration     when the service began this registration attempt (epoch milliseconds,
  *                         strictly increasing per service; 0: not given). A registration that
  *                         arrives after a newer one of the same service is refused, never replaces it.
+ * @param started          when this instance of the service started (epoch milliseconds; 0: not
+ *                         given). A vehicle the server last heard on a call before then cannot
+ *                         still be on that call through this instance: it restarted meanwhile.
  */
 public record ServiceDescriptor(String name, String sid, String description, String panel,
-                                List<String> attachPrefixes, List<String> downloadPrefixes, long registration)
+                                List<String> attachPrefixes, List<String> downloadPrefixes, long registration,
+                                long started)
         implements java.io.Serializable {
     public ServiceDescriptor {
         Objects.requireNonNull(name, "name");
@@ -30,6 +34,12 @@ public record ServiceDescriptor(String name, String sid, String description, Str
         panel = panel == null ? "" : panel;
         attachPrefixes = attachPrefixes == null ? List.of() : List.copyOf(attachPrefixes);
         downloadPrefixes = downloadPrefixes == null ? List.of() : List.copyOf(downloadPrefixes);
+    }
+
+    /** Start time not given. */
+    public ServiceDescriptor(String name, String sid, String description, String panel, List<String> attachPrefixes,
+                             List<String> downloadPrefixes, long registration) {
+        this(name, sid, description, panel, attachPrefixes, downloadPrefixes, registration, 0);
     }
 
     /** A service that takes no files from the download directory, registration not stamped. */
@@ -51,6 +61,11 @@ public record ServiceDescriptor(String name, String sid, String description, Str
 
     /** The same service, stamped for one registration attempt. */
     public ServiceDescriptor withRegistration(long stamp) {
-        return new ServiceDescriptor(name, sid, description, panel, attachPrefixes, downloadPrefixes, stamp);
+        return new ServiceDescriptor(name, sid, description, panel, attachPrefixes, downloadPrefixes, stamp, started);
+    }
+
+    /** The same service, with the time its instance started. */
+    public ServiceDescriptor withStarted(long millis) {
+        return new ServiceDescriptor(name, sid, description, panel, attachPrefixes, downloadPrefixes, registration, millis);
     }
 }

@@ -54,6 +54,8 @@ public abstract class RIPVService {
 
     private final ServiceName name;
     private final String sid;
+    /** When this instance was made: a call the server saw before then is not this instance's (ServiceDescriptor.started). */
+    private final long created = System.currentTimeMillis();
     private final PostOffice<IncomingServiceMessage, OutgoingServiceMessage> postOffice = new PostOffice<>(100_000);
     private final Map<String, CommandHandler> handlers = new ConcurrentHashMap<>();
     private final Map<String, ServiceTaskManager> managers = new ConcurrentHashMap<>();
@@ -115,7 +117,8 @@ public abstract class RIPVService {
     }
 
     public final ServiceDescriptor descriptor() {
-        return new ServiceDescriptor(name.toString(), sid, description(), panel(), attachPrefixes(), downloadPrefixes());
+        return new ServiceDescriptor(name.toString(), sid, description(), panel(), attachPrefixes(), downloadPrefixes())
+                .withStarted(created);
     }
 
     /** Opens a MailBox for a resource; its commands go to {@code handler}, one at a time. */

@@ -72,7 +72,27 @@ final class ServiceAdmission {
         }
         server.liveness().registered(d.name());
         log.info("{} registered from {} ({})", ref, ref.address(), d.description());
+        endCallsOfEarlierInstances(server, ref, d.started());
         return ref.token();
+    }
+
+    /**
+     * A new instance of a service cannot carry on a call the server still has open from before
+     * it started (the service and the server restarted together, say): those calls are lost. Asked
+     * in the background: the registration does not wait for the service's MailBox list.
+     */
+    private static void endCallsOfEarlierInstances(RIPVServer server, ServiceReference ref, long started) {
+        if (started <= 0) {
+            return;
+        }
+        String name = ref.descriptor().name();
+        ref.mailboxes(server.checkers(), CALLBACK_DEADLINE).thenAccept(list -> server.workflows().onConsole(name,
+                server.sessions().console().serviceStarted(name, started,
+                        list.stream().map(org.ripv.messages.MailboxStatus::address).toList())))
+                .exceptionally(e -> {
+                    log.debug("could not list the MailBoxes of {} to end calls from before it started: {}", name, e.toString());
+                    return null;
+                });
     }
 
     /**

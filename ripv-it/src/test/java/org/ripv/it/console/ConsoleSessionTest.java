@@ -381,5 +381,16 @@ class ConsoleSessionTest {
         try (var files = Files.walk(sys.dataDir().resolve("transcripts"))) {
             assertThat(files.filter(p -> p.toString().endsWith(".jsonl")).count()).isEqualTo(1);
         }
+
+        // The service comes back as a new instance (it restarted with the server): nobody saw that
+        // call end, and this instance cannot be on it, so the call is lost — not "on call" forever.
+        Pushes o = Pushes.on(c);
+        call(c, "?watch " + box);
+        VehicleConsoleService restarted = new VehicleConsoleService("localhost", "ru29");
+        sys.register(restarted);
+        assertThat(o.await(e -> e.event() == VehicleEvent.LINK_LOST, T)).isTrue();
+        assertThat(o.entries.stream().filter(e -> e.event() == VehicleEvent.LINK_LOST).findFirst().orElseThrow().text())
+                .isEqualTo("the service restarted during the call");
+        assertThat(sys.server().console().state(box).state()).isEqualTo(SessionState.State.LOST);
     }
 }

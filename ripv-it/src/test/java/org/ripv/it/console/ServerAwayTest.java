@@ -38,6 +38,7 @@ class ServerAwayTest {
             sys.user("alice", "operators");
             connector = ServiceConnector.connect(vehicle, sys.serviceOptions()); // outlives the server
             assertThat(connector.awaitRegistered(Duration.ofSeconds(20))).isTrue();
+            vehicle.event(org.ripv.messages.VehicleEvent.SURFACED, "", 41.5, -70.5);
             vehicle.line("before the server went away");
             sys.close();
 
@@ -61,6 +62,10 @@ class ServerAwayTest {
                 assertThat(next).as("line %d, in order", i).isGreaterThan(at);
                 at = next;
             }
+            // The service kept running through it, so its call did too: still on call, not lost.
+            Thread.sleep(1000);
+            assertThat(sys.server().console().state(vehicle.mailbox()).state())
+                    .isEqualTo(org.ripv.messages.SessionState.State.ON_CALL);
         } finally {
             if (connector != null) {
                 connector.close();

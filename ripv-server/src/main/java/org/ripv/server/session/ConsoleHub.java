@@ -135,10 +135,34 @@ public final class ConsoleHub implements AutoCloseable {
      * @return the LINK_LOST events it published, for the others who follow calls (the workflows)
      */
     public List<ConsoleEntry> serviceGone(String servicePrefix, String why) {
+        synchronized (order) {
+            return lose(states.onCall(servicePrefix), "the service " + why + " during the call");
+        }
+    }
+
+    /**
+     * An instance of a service that started at {@code started} (epoch ms) registered, with these
+     * MailBoxes: those still on a call last heard from before then are lost — the service
+     * restarted during the call, perhaps together with the server, so nobody saw the call end. A
+     * standby that takes over from a service that kept running keeps its calls.
+     *
+     * @return the LINK_LOST events it published
+     */
+    public List<ConsoleEntry> serviceStarted(String servicePrefix, long started, List<String> mailboxes) {
+        if (started <= 0) {
+            return List.of();
+        }
+        synchronized (order) {
+            return lose(mailboxes.stream().filter(m -> m.startsWith(servicePrefix) && states.onCallBefore(m, started))
+                    .distinct().toList(), "the service restarted during the call");
+        }
+    }
+
+    private List<ConsoleEntry> lose(List<String> mailboxes, String why) {
         List<ConsoleEntry> lost = new ArrayList<>();
-        for (String mailbox : states.onCall(servicePrefix)) {
-            lost.add(new ConsoleEntry(System.currentTimeMillis(), mailbox, ConsoleEntry.Kind.EVENT, "",
-                    "the service " + why + " during the call", VehicleEvent.LINK_LOST, null, null));
+        for (String mailbox : mailboxes) {
+            lost.add(new ConsoleEntry(System.currentTimeMillis(), mailbox, ConsoleEntry.Kind.EVENT, "", why,
+                    VehicleEvent.LINK_LOST, null, null));
         }
         take(lost);
         return lost;

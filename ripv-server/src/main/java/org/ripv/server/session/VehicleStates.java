@@ -138,6 +138,12 @@ final class VehicleStates {
                 .map(Map.Entry::getKey).sorted().toList();
     }
 
+    /** True when the MailBox is on a call last heard from before {@code millis} (epoch ms), here or before a restart. */
+    boolean onCallBefore(String mailbox, long millis) {
+        SessionState s = state(mailbox);
+        return s != null && s.state() == State.ON_CALL && s.lastContact() < millis;
+    }
+
     /** The state, or null when the MailBox never published an event or line (here or before a restart). */
     SessionState state(String mailbox) {
         Vehicle v = vehicles.get(mailbox);
