@@ -260,7 +260,7 @@ public final class ServiceConnector implements AutoCloseable {
                         + " it is an impostor, or this service's --secret-file is not that server's DATA/service.secret");
             }
         }
-        String t;
+        String t = null;
         synchronized (tokenLock) {
             registering = true;
         }
@@ -279,13 +279,15 @@ public final class ServiceConnector implements AutoCloseable {
             }
         } finally {
             synchronized (tokenLock) {
+                // With the token, in one step: a server call waiting in check() must never see the
+                // registration over and the token not yet set (it was refused as "unknown").
+                if (t != null) {
+                    server = s;
+                    token = t;
+                }
                 registering = false;
                 tokenLock.notifyAll();
             }
-        }
-        server = s;
-        synchronized (tokenLock) {
-            token = t;
         }
         warnedAway = false;
         warnedImpostor = false;

@@ -5,6 +5,7 @@ import java.rmi.ServerError;
 import java.rmi.ServerException;
 import java.security.SecureRandom;
 import java.util.HexFormat;
+import java.util.List;
 import org.ripv.messages.ServiceDescriptor;
 import org.ripv.naming.ServiceName;
 import org.ripv.rmi.GenericRMIInterface;
@@ -72,27 +73,28 @@ final class ServiceAdmission {
         }
         server.liveness().registered(d.name());
         log.info("{} registered from {} ({})", ref, ref.address(), d.description());
-        endCallsOfEarlierInstances(server, ref, d.started());
+        reconcileCalls(server, ref, d.started());
         return ref.token();
     }
 
     /**
-     * A new instance of a service cannot carry on a call the server still has open from before
-     * it started (the service and the server restarted together, say): those calls are lost. Asked
-     * in the background: the registration does not wait for the service's MailBox list.
+     * Squares the calls the server has open with the service that just registered, in the
+     * background (the registration does not wait for the service's MailBox list): a new instance
+     * cannot carry on a call from before it started (the service and the server restarted
+     * together, say), so those calls are lost; the queued workflows of calls still open (a
+     * server started again, or a standby that took over, while the service kept running) run now.
      */
-    private static void endCallsOfEarlierInstances(RIPVServer server, ServiceReference ref, long started) {
-        if (started <= 0) {
-            return;
-        }
+    private static void reconcileCalls(RIPVServer server, ServiceReference ref, long started) {
         String name = ref.descriptor().name();
-        ref.mailboxes(server.checkers(), CALLBACK_DEADLINE).thenAccept(list -> server.workflows().onConsole(name,
-                server.sessions().console().serviceStarted(name, started,
-                        list.stream().map(org.ripv.messages.MailboxStatus::address).toList())))
-                .exceptionally(e -> {
-                    log.debug("could not list the MailBoxes of {} to end calls from before it started: {}", name, e.toString());
-                    return null;
-                });
+        ref.mailboxes(server.checkers(), CALLBACK_DEADLINE).thenAccept(list -> {
+            List<String> boxes = list.stream().map(org.ripv.messages.MailboxStatus::address)
+                    .filter(a -> a.startsWith(name)).toList();
+            server.workflows().onConsole(name, server.sessions().console().serviceStarted(name, started, boxes));
+            server.workflows().serviceOnline(boxes);
+        }).exceptionally(e -> {
+            log.info("could not list the MailBoxes of {} to square its calls with it: {}", name, e.toString());
+            return null;
+        });
     }
 
     /**

@@ -21,6 +21,12 @@ final class WorkflowBridge implements WorkflowHost {
     }
 
     @Override
+    public boolean onCall(String mailbox) {
+        org.ripv.messages.SessionState s = server.sessions().console().state(mailbox);
+        return s != null && s.state() == org.ripv.messages.SessionState.State.ON_CALL;
+    }
+
+    @Override
     public PermitFile permits() {
         return server.permits();
     }

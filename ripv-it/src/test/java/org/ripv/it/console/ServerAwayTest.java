@@ -22,15 +22,62 @@ class ServerAwayTest {
     @TempDir
     Path dir;
 
-    @Test
-    void linesSaidWhileTheServerIsAwayAreInItsTranscriptWhenItIsBack() throws Exception {
+    /** A server config on fixed free ports, so a service that outlives the server finds it again. */
+    private ServerConfig fixedPorts() throws java.io.IOException {
         int[] ports = new int[2];
         for (int i = 0; i < 2; i++) {
             try (ServerSocket s = new ServerSocket(0)) {
                 ports[i] = s.getLocalPort();
             }
         }
-        ServerConfig config = ServerConfig.forTests(dir.resolve("server")).withPorts(ports[0], ports[1], -1);
+        return ServerConfig.forTests(dir.resolve("server")).withPorts(ports[0], ports[1], -1);
+    }
+
+    @Test
+    void aWorkflowRunningWhenTheServerStoppedResumesWhenItIsBackWhileTheCallGoesOn() throws Exception {
+        ServerConfig config = fixedPorts();
+        VehicleConsoleService vehicle = new VehicleConsoleService("localhost", "ru29");
+        ServiceConnector connector = null;
+        TestSystem sys = TestSystem.start(config);
+        try {
+            sys.user("alice", "operators");
+            connector = ServiceConnector.connect(vehicle, sys.serviceOptions()); // outlives the server
+            assertThat(connector.awaitRegistered(Duration.ofSeconds(20))).isTrue();
+            String box = vehicle.mailbox();
+            var alice = sys.login("alice");
+            Path wf = dir.resolve("wait.wf");
+            java.nio.file.Files.writeString(wf, "send say first\nwait-for 'go on' timeout=5m\nsend say last\n");
+            alice.upload(wf, "wait.wf", null);
+            ConsoleSessionTest.call(alice, "?queue add " + box + " wait.wf");
+            vehicle.event(org.ripv.messages.VehicleEvent.SURFACED, "", 41.5, -70.5);
+            ConsoleSessionTest.awaitQueue(alice, box, "running step 2/3", Duration.ofSeconds(20));
+            sys.close();
+
+            // The server comes back (or a standby takes over) while the vehicle is still on the
+            // call: the workflow carries on at its cut step now, not on the vehicle's next call.
+            sys = TestSystem.start(config);
+            var back = sys.login("alice");
+            ConsoleSessionTest.awaitQueue(back, box, "running step 2/3", Duration.ofSeconds(30));
+            vehicle.line("go on");
+            long end = System.nanoTime() + Duration.ofSeconds(20).toNanos();
+            String receipts = "";
+            while (System.nanoTime() < end && !receipts.contains("result: DONE")) {
+                receipts = ConsoleSessionTest.call(back, "?receipts " + box).footer().replyText();
+                Thread.sleep(100);
+            }
+            assertThat(receipts).contains("(resumed at step 2)").contains("result: DONE");
+        } finally {
+            if (connector != null) {
+                connector.close();
+            }
+            vehicle.stop();
+            sys.close();
+        }
+    }
+
+    @Test
+    void linesSaidWhileTheServerIsAwayAreInItsTranscriptWhenItIsBack() throws Exception {
+        ServerConfig config = fixedPorts();
         VehicleConsoleService vehicle = new VehicleConsoleService("localhost", "ru29");
         ServiceConnector connector = null;
         TestSystem sys = TestSystem.start(config);

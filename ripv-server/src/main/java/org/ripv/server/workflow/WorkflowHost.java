@@ -49,6 +49,13 @@ public interface WorkflowHost {
     void cancel(String clientId, long messageId, String byUser);
 
     /**
+     * True while the vehicle behind the MailBox is on a call, as the live console's call state
+     * has it (SURFACED, no DIVED or LINK_LOST since). That state is kept in the state store, so
+     * a server started again, or a standby that took over, knows it too.
+     */
+    boolean onCall(String mailbox);
+
+    /**
      * Publishes a server-originated console entry for a MailBox: the workflow's progress lines
      * and its WORKFLOW_DONE / WORKFLOW_FAILED events, for watchers, the transcript and notifications.
      */

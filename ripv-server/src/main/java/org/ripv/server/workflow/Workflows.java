@@ -43,8 +43,6 @@ public final class Workflows implements AutoCloseable {
     private final ExecutorService threads;
     private final Map<String, Runner> runners = new ConcurrentHashMap<>();
     private final Map<String, Runner> byClient = new ConcurrentHashMap<>();
-    /** MailBoxes whose vehicle is on a call (SURFACED seen, no DIVED or LINK_LOST since). */
-    private final java.util.Set<String> onCall = ConcurrentHashMap.newKeySet();
     private final List<LineWaiter> waiters = new CopyOnWriteArrayList<>();
     private final AtomicInteger nextClient = new AtomicInteger();
     private final WorkflowCommands commands;
@@ -108,10 +106,8 @@ public final class Workflows implements AutoCloseable {
             }
             if (e.kind() == ConsoleEntry.Kind.EVENT) {
                 if (e.event() == VehicleEvent.SURFACED) {
-                    onCall.add(e.mailbox());
                     surfaced(e.mailbox());
                 } else if (e.event() == VehicleEvent.DIVED || e.event() == VehicleEvent.LINK_LOST) {
-                    onCall.remove(e.mailbox());
                     callEnded(e.mailbox(), e.event());
                 }
             } else if (e.kind() == ConsoleEntry.Kind.LINE && !waiters.isEmpty()) {
@@ -120,6 +116,19 @@ public final class Workflows implements AutoCloseable {
                         w.seen().complete(e.text());
                     }
                 }
+            }
+        }
+    }
+
+    /**
+     * A service registered (again, or with a server started again or a standby that took over)
+     * with these MailBoxes: the queues of those whose vehicle is still on a call run now — a run
+     * the server stopped in the middle resumes at its cut step — rather than on the next call.
+     */
+    public void serviceOnline(List<String> mailboxes) {
+        for (String m : mailboxes) {
+            if (host.onCall(m)) {
+                surfaced(m);
             }
         }
     }
@@ -223,9 +232,9 @@ public final class Workflows implements AutoCloseable {
         return commands.receipts(request);
     }
 
-    /** True while the MailBox's vehicle is on a call (SURFACED seen, no DIVED or LINK_LOST since). */
+    /** True while the MailBox's vehicle is on a call (the live console's call state: {@link WorkflowHost#onCall}). */
     boolean onCall(String mailbox) {
-        return onCall.contains(mailbox);
+        return host.onCall(mailbox);
     }
 
     /** The run in progress for a MailBox, or null. */
