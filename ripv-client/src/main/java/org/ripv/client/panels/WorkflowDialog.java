@@ -220,18 +220,24 @@ public final class WorkflowDialog extends JDialog {
         split.setBorder(null);
         JButton refresh = button("Refresh", KeyEvent.VK_H, "receiptsRefresh", "Ask the server again (?receipts --last N)");
         refresh.addActionListener(e -> refresh());
-        JLabel lastLabel = new JLabel("Last:");
-        lastLabel.setDisplayedMnemonic(KeyEvent.VK_T);
-        lastLabel.setLabelFor(last);
-        JPanel buttons = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 0));
-        buttons.add(lastLabel);
-        buttons.add(last);
-        buttons.add(refresh);
+        JPanel buttons = row("Last:", KeyEvent.VK_T, last, refresh);
         JPanel p = new JPanel(new BorderLayout(4, 4));
         p.setBorder(BorderFactory.createEmptyBorder(4, 4, 4, 4));
         p.add(split, BorderLayout.CENTER);
         p.add(buttons, BorderLayout.SOUTH);
         return p;
+    }
+
+    /** A row: a label with its mnemonic, the field it names, and a button. */
+    static JPanel row(String label, int mnemonic, javax.swing.JComponent field, JButton button) {
+        JLabel l = new JLabel(label);
+        l.setDisplayedMnemonic(mnemonic);
+        l.setLabelFor(field);
+        JPanel row = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 0));
+        row.add(l);
+        row.add(field);
+        row.add(button);
+        return row;
     }
 
     static JButton button(String text, int mnemonic, String name, String tip) {

@@ -2,12 +2,10 @@ package org.ripv.client.panels;
 
 import java.awt.BorderLayout;
 import java.awt.Color;
-import java.awt.FlowLayout;
 import java.awt.Font;
 import java.awt.event.KeyEvent;
 import javax.swing.BorderFactory;
 import javax.swing.JButton;
-import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JScrollPane;
 import javax.swing.JTextArea;
@@ -66,13 +64,7 @@ final class WorkflowEditor extends JPanel {
         JButton button = WorkflowDialog.button("Upload and queue", KeyEvent.VK_U, "queueText",
                 "Upload the text as NAME and queue it for this MailBox (?upload, then ?queue add)");
         button.addActionListener(e -> queue.run());
-        JLabel nameLabel = new JLabel("Name:");
-        nameLabel.setDisplayedMnemonic(KeyEvent.VK_N);
-        nameLabel.setLabelFor(name);
-        JPanel top = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 0));
-        top.add(nameLabel);
-        top.add(name);
-        top.add(button);
+        JPanel top = WorkflowDialog.row("Name:", KeyEvent.VK_N, name, button);
         setBorder(BorderFactory.createEmptyBorder(4, 4, 4, 4));
         add(top, BorderLayout.NORTH);
         add(scroll, BorderLayout.CENTER);
