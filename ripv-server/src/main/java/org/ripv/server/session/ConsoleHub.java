@@ -99,15 +99,22 @@ public final class ConsoleHub implements AutoCloseable {
         take(mine);
     }
 
+    private static boolean wellFormed(String mailbox) {
+        try {
+            org.ripv.naming.MailboxAddress.parse(mailbox);
+            return true;
+        } catch (IllegalArgumentException e) {
+            return false;
+        }
+    }
+
     /** True when the MailBox is well formed and one the service may still add (or has already). */
     private boolean known(String servicePrefix, String mailbox) {
         Set<String> seen = mailboxesOf.computeIfAbsent(servicePrefix, k -> ConcurrentHashMap.newKeySet());
         if (seen.contains(mailbox)) {
             return true;
         }
-        try {
-            org.ripv.naming.MailboxAddress.parse(mailbox);
-        } catch (IllegalArgumentException e) {
+        if (!wellFormed(mailbox)) {
             return false;
         }
         if (seen.size() >= MAX_MAILBOXES_PER_SERVICE) {
@@ -152,9 +159,12 @@ public final class ConsoleHub implements AutoCloseable {
         if (started <= 0) {
             return List.of();
         }
+        // The list is the service's word: only its own well-formed MailBoxes, as many as it may publish for.
+        List<String> mine = mailboxes.stream().filter(m -> m != null && m.startsWith(servicePrefix) && wellFormed(m))
+                .distinct().limit(MAX_MAILBOXES_PER_SERVICE).toList();
         synchronized (order) {
-            return lose(mailboxes.stream().filter(m -> m.startsWith(servicePrefix) && states.onCallBefore(m, started))
-                    .distinct().toList(), "the service restarted during the call");
+            return lose(mine.stream().filter(m -> states.onCallBefore(m, started)).toList(),
+                    "the service restarted during the call");
         }
     }
 

@@ -1,0 +1,55 @@
+package org.ripv.server.session;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.ripv.messages.ConsoleEntry;
+import org.ripv.messages.SessionState;
+import org.ripv.messages.VehicleEvent;
+import org.ripv.server.store.EmbeddedStateStore;
+
+/**
+ * A new instance of a service ends the calls the server still has open from before it started,
+ * and only those: its own, well-formed MailBoxes, from the list it gave (which is its word only).
+ */
+class ServiceStartedTest {
+    static final String SERVICE = "<SerialPortServer>::<shore>";
+    static final String RU29 = SERVICE + "ru29";
+    static final String RU30 = SERVICE + "ru30";
+    static final String OTHER = "<SerialPortServer>::<elsewhere>ru31";
+
+    @TempDir
+    Path data;
+
+    @Test
+    void callsFromBeforeTheInstanceStartedAreLostAndNoOthers() throws Exception {
+        try (EmbeddedStateStore store = new EmbeddedStateStore(data, 1 << 20)) {
+            ConsoleHub hub = new ConsoleHub(data.resolve("transcripts"), store, 90, m -> new byte[0]);
+            hub.publish(SERVICE, List.of(ConsoleEntry.event(RU29, VehicleEvent.SURFACED, "", null, null),
+                    ConsoleEntry.event(RU30, VehicleEvent.SURFACED, "", null, null)));
+            hub.publish("<SerialPortServer>::<elsewhere>", List.of(ConsoleEntry.event(OTHER, VehicleEvent.SURFACED, "", null, null)));
+            long started = System.currentTimeMillis() + 1;
+            Thread.sleep(5);
+            hub.publish(SERVICE, List.of(ConsoleEntry.line(RU30, "heard after the new instance started")));
+
+            List<String> claimed = new ArrayList<>(List.of(RU29, RU30, OTHER, SERVICE + "../../etc", "not an address", RU29));
+            for (int i = 0; i < 5_000; i++) {
+                claimed.add(SERVICE + "junk" + i); // more than a service may have: the rest is not looked up
+            }
+            claimed.add(null);
+            List<ConsoleEntry> lost = hub.serviceStarted(SERVICE, started, claimed);
+
+            assertThat(lost).extracting(ConsoleEntry::mailbox).containsExactly(RU29);
+            assertThat(lost.get(0).event()).isEqualTo(VehicleEvent.LINK_LOST);
+            assertThat(hub.state(RU29).state()).isEqualTo(SessionState.State.LOST);
+            assertThat(hub.state(RU30).state()).isEqualTo(SessionState.State.ON_CALL); // heard since
+            assertThat(hub.state(OTHER).state()).isEqualTo(SessionState.State.ON_CALL); // not this service's
+            assertThat(hub.serviceStarted(SERVICE, 0, List.of(RU30))).isEmpty(); // an older service: not given
+            hub.close();
+        }
+    }
+}
