@@ -40,6 +40,13 @@ class ServiceLifecycleTest {
             assertThat(p.waitFor(20, TimeUnit.SECONDS)).isTrue();
             assertThat(p.exitValue()).isEqualTo(143);
             assertThat(Files.readString(log)).doesNotContain("Error:");
+            // The server notices at its liveness checks (two failed, 0.5 s apart) that it is gone;
+            // only then does "no service registered" below say anything about the next one.
+            long gone = System.nanoTime() + TimeUnit.SECONDS.toNanos(15);
+            while (sys.server().serviceCount() != 0) {
+                assertThat(System.nanoTime()).as("the stopped service removed").isLessThan(gone);
+                Thread.sleep(100);
+            }
 
             Path wrong = dir.resolve("wrong.secret");
             Files.writeString(wrong, "not-the-secret-at-all");
