@@ -205,7 +205,7 @@ public final class ConsoleBench implements Callable<Integer> {
             out.printf("  p99 with it / p99 without it: %.2f× (target: unchanged)%n", withStall.p99Ms() / many.p99Ms());
             close(crowd);
             raws.close();
-            floor(many);
+            floor(many, raws.lastFrameBytes());
             // Then a flood the never-reading one cannot absorb in socket buffers: its backlog must stay bounded.
             String pad = "x".repeat(200);
             for (int i = 0; i < 50_000; i++) {
@@ -283,8 +283,8 @@ public final class ConsoleBench implements Callable<Integer> {
      * The same fan-out with no RIPV in it ({@link FanOutFloor}): what this machine's kernel costs
      * for it, against which the crowd's p99 is set.
      */
-    private void floor(Figures crowd) throws Exception {
-        int frame = RawWatchers.lastFrameBytes > 0 ? RawWatchers.lastFrameBytes : 480;
+    private void floor(Figures crowd, int lastFrame) throws Exception {
+        int frame = lastFrame > 0 ? lastFrame : 480;
         int writers = Math.max(2, Runtime.getRuntime().availableProcessors()); // as the server's WriterPool
         List<Watch> ws = new ArrayList<>();
         for (int i = 0; i < watchers; i++) {

@@ -38,7 +38,7 @@ final class RawWatchers implements AutoCloseable {
     private static final byte[] MARK = "bench ".getBytes(StandardCharsets.US_ASCII);
     private final List<Loop> loops = new ArrayList<>();
     /** The size on the wire (length prefix included) of the last frame read: a console push's, for {@link FanOutFloor}. */
-    static volatile int lastFrameBytes;
+    private volatile int lastFrameBytes;
     private int next;
 
     /**
@@ -57,7 +57,7 @@ final class RawWatchers implements AutoCloseable {
     }
 
     /** One selector thread and the buffer its connections are read into, in turn. */
-    private static final class Loop implements Runnable {
+    private final class Loop implements Runnable {
         final Selector selector;
         final Thread thread;
         volatile boolean closed;
@@ -160,9 +160,9 @@ final class RawWatchers implements AutoCloseable {
         }
     }
 
-    /** How many selector threads read the watchers. */
-    int threads() {
-        return loops.size();
+    /** The size of the last frame read, length prefix included, or 0 before the first. */
+    int lastFrameBytes() {
+        return lastFrameBytes;
     }
 
     /** Connects, logs in and watches; the watcher's delays (nanoseconds) go to {@code delays}. */
