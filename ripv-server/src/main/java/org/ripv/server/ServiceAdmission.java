@@ -87,8 +87,8 @@ final class ServiceAdmission {
     private static void reconcileCalls(RIPVServer server, ServiceReference ref, long started) {
         String name = ref.descriptor().name();
         ref.mailboxes(server.checkers(), CALLBACK_DEADLINE).thenAccept(list -> {
-            List<String> boxes = list.stream().map(org.ripv.messages.MailboxStatus::address)
-                    .filter(a -> a.startsWith(name)).toList();
+            List<String> boxes = org.ripv.server.session.ConsoleHub.claimed(name,
+                    list.stream().map(org.ripv.messages.MailboxStatus::address).toList());
             server.workflows().onConsole(name, server.sessions().console().serviceStarted(name, started, boxes));
             server.workflows().serviceOnline(boxes);
         }).exceptionally(e -> {

@@ -159,13 +159,20 @@ public final class ConsoleHub implements AutoCloseable {
         if (started <= 0) {
             return List.of();
         }
-        // The list is the service's word: only its own well-formed MailBoxes, as many as it may publish for.
-        List<String> mine = mailboxes.stream().filter(m -> m != null && m.startsWith(servicePrefix) && wellFormed(m))
-                .distinct().limit(MAX_MAILBOXES_PER_SERVICE).toList();
+        List<String> mine = claimed(servicePrefix, mailboxes);
         synchronized (order) {
             return lose(mine.stream().filter(m -> states.onCallBefore(m, started)).toList(),
                     "the service restarted during the call");
         }
+    }
+
+    /**
+     * The MailBoxes a service says it has, taken as its word only: its own (under its prefix),
+     * well formed, no more than it may publish for.
+     */
+    public static List<String> claimed(String servicePrefix, List<String> mailboxes) {
+        return mailboxes.stream().filter(m -> m != null && m.startsWith(servicePrefix) && wellFormed(m))
+                .distinct().limit(MAX_MAILBOXES_PER_SERVICE).toList();
     }
 
     private List<ConsoleEntry> lose(List<String> mailboxes, String why) {

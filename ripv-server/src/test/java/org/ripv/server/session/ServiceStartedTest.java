@@ -41,6 +41,8 @@ class ServiceStartedTest {
                 claimed.add(SERVICE + "junk" + i); // more than a service may have: the rest is not looked up
             }
             claimed.add(null);
+            assertThat(ConsoleHub.claimed(SERVICE, claimed)).hasSize(ConsoleHub.MAX_MAILBOXES_PER_SERVICE)
+                    .contains(RU29, RU30).doesNotContain(OTHER, "not an address").doesNotHaveDuplicates();
             List<ConsoleEntry> lost = hub.serviceStarted(SERVICE, started, claimed);
 
             assertThat(lost).extracting(ConsoleEntry::mailbox).containsExactly(RU29);
