@@ -17,8 +17,8 @@ import org.ripv.messages.Status;
 public final class IngestVerdict {
     private static final Pattern SUMMARY = Pattern.compile("(?m)^fetched (\\d+), ingested (\\d+)\\b");
 
-    /** A download's counts as its reply states them. */
-    public record Counts(int fetched, int ingested) {}
+    /** A download's counts as its reply states them, and why files were not ingested (empty if all were). */
+    public record Counts(int fetched, int ingested, String why) {}
 
     private IngestVerdict() {
     }
@@ -52,7 +52,9 @@ public final class IngestVerdict {
         Matcher m = SUMMARY.matcher(replyText);
         Counts last = null;
         while (m.find()) { // the data loop's line comes last, after the service's own text
-            last = new Counts(Integer.parseInt(m.group(1)), Integer.parseInt(m.group(2)));
+            String rest = replyText.substring(m.end());
+            last = new Counts(Integer.parseInt(m.group(1)), Integer.parseInt(m.group(2)),
+                    rest.startsWith(": ") ? rest.substring(2).strip() : "");
         }
         return Optional.ofNullable(last);
     }

@@ -87,7 +87,7 @@ final class FetchStep {
                 tally.ingested(counts.get().ingested());
             }
             if (!o.ok()) {
-                notIngested.add(name + ": " + o.error());
+                notIngested.add(name + ": " + (counts.get().why().isEmpty() ? o.error() : counts.get().why()));
             }
         }
         if (!notIngested.isEmpty()) {

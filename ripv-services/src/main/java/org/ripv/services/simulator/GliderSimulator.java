@@ -280,6 +280,7 @@ public final class GliderSimulator implements AutoCloseable {
         try {
             while (running) {
                 Duration away = diveTime;
+                boolean dives = true;
                 Link link = null;
                 try (Socket socket = new Socket()) {
                     socket.connect(new InetSocketAddress(host, callPort), 10_000);
@@ -290,21 +291,26 @@ public final class GliderSimulator implements AutoCloseable {
                     if (gliderDos == null) {
                         say(shell, dialog.text(calls, java.time.Instant.now()) + PROMPT);
                         converse(shell, System.nanoTime() + surfaceTime.toNanos(), dialog::chatter, 0);
+                        submerged = true;
                         say(shell, "\r\nHanging up: diving for " + diveTime.toSeconds() + " s\r\n");
                     } else {
                         away = surfacing(shell, dialog, diveTime);
+                        dives = !(pendingEnd instanceof GliderDos.CallBack);
                     }
-                    submerged = away == diveTime;
                     link.close();
                 } catch (IOException e) {
                     log.info("call {} to {}:{} ended: {}", calls, host, callPort, e.getMessage());
                     if (link instanceof IridiumLine l && l.dropped()) {
                         away = REDIAL; // still at the surface: the glider dials again
+                        dives = false;
                     }
                 } finally {
                     current = null;
+                    if (link instanceof IridiumLine l) {
+                        l.cut(); // its threads end with the call, however it ended
+                    }
                 }
-                submerged = away == diveTime;
+                submerged = dives;
                 dive(away);
             }
         } catch (InterruptedException e) {
@@ -335,6 +341,7 @@ public final class GliderSimulator implements AutoCloseable {
         if (pendingEnd instanceof GliderDos.CallBack cb) {
             return cb.after();
         }
+        submerged = true;
         say(shell, "Hanging up: diving for " + diveTime.toSeconds() + " s\r\n");
         return diveTime;
     }
