@@ -30,7 +30,6 @@ import org.junit.jupiter.api.io.TempDir;
  * The second test calls over the Iridium-like line: paced, and dropped, then dialled again.
  */
 class GliderDosEndToEndTest {
-    static final Path ROOT = Path.of("..").toAbsolutePath().normalize();
     static final String PROMPT = "GliderDOS I -3 >";
 
     @TempDir
@@ -40,12 +39,7 @@ class GliderDosEndToEndTest {
 
     @AfterEach
     void stop() throws Exception {
-        if (simulator != null) {
-            simulator.destroy();
-            if (!simulator.waitFor(20, TimeUnit.SECONDS)) {
-                simulator.destroyForcibly();
-            }
-        }
+        SimulatorProcess.stop(simulator);
         if (shore != null) {
             shore.close();
         }
@@ -53,15 +47,10 @@ class GliderDosEndToEndTest {
 
     private void launch(String... options) throws IOException {
         shore = new ServerSocket(0, 1, java.net.InetAddress.getLoopbackAddress());
-        String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
-        Path jar = ROOT.resolve("ripv-services/target/ripv-services.jar");
-        List<String> cmd = new ArrayList<>(Files.isRegularFile(jar) ? List.of(java, "-jar", jar.toString())
-                : List.of(java, "-cp", System.getProperty("java.class.path"), "org.ripv.services.ServicesMain"));
-        cmd.addAll(List.of("simulator", "--call", "127.0.0.1:" + shore.getLocalPort(), "--name", "ru29",
+        List<String> all = new ArrayList<>(List.of("--call", "127.0.0.1:" + shore.getLocalPort(), "--name", "ru29",
                 "--dir", dir.resolve("glider").toString()));
-        cmd.addAll(List.of(options));
-        simulator = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(dir.resolve("simulator.log").toFile())
-                .start();
+        all.addAll(List.of(options));
+        simulator = SimulatorProcess.start(dir.resolve("simulator.log"), all);
     }
 
     /** One call: the socket the glider dialled and what it has said so far. */

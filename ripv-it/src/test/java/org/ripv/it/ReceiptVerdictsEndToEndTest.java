@@ -6,9 +6,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
-import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.TimeUnit;
 import java.util.function.Predicate;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
@@ -42,12 +40,7 @@ class ReceiptVerdictsEndToEndTest {
 
     @AfterEach
     void stop() throws Exception {
-        if (simulator != null) {
-            simulator.destroy();
-            if (!simulator.waitFor(20, TimeUnit.SECONDS)) {
-                simulator.destroyForcibly();
-            }
-        }
+        SimulatorProcess.stop(simulator);
         if (sys != null) {
             sys.close();
         }
@@ -104,14 +97,9 @@ class ReceiptVerdictsEndToEndTest {
         Path glider = Files.createDirectories(dir.resolve("glider"));
         Files.copy(SLOCUM.resolve("short_header.mrg"), glider.resolve("short_header.mrg"));
         Files.copy(SLOCUM.resolve("cp_388_2016_012_0_0.mrg"), glider.resolve("cp_388_2016_012_0_0.mrg"));
-        String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
-        Path jar = GliderDosEndToEndTest.ROOT.resolve("ripv-services/target/ripv-services.jar");
-        List<String> cmd = new ArrayList<>(Files.isRegularFile(jar) ? List.of(java, "-jar", jar.toString())
-                : List.of(java, "-cp", System.getProperty("java.class.path"), "org.ripv.services.ServicesMain"));
-        cmd.addAll(List.of("simulator", "--call", "127.0.0.1:" + serial.listenPort("ru29"), "--name", "ru29",
-                "--surface-seconds", "120", "--dive-seconds", "5", "--dir", glider.toString()));
-        simulator = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(dir.resolve("simulator.log").toFile())
-                .start();
+        simulator = SimulatorProcess.start(dir.resolve("simulator.log"), List.of("--call", "127.0.0.1:"
+                + serial.listenPort("ru29"), "--name", "ru29", "--surface-seconds", "120", "--dive-seconds", "5",
+                "--dir", glider.toString()));
 
         String receipts = await(alice, "?receipts " + mb, r -> r.contains("'strict.wf'") && r.contains("result: FAILED"));
         String night = receipts.substring(receipts.indexOf("receipt: workflow 1"), receipts.indexOf("receipt: workflow 2"));
