@@ -171,6 +171,14 @@ public final class GliderSimulator implements AutoCloseable {
         return this;
     }
 
+    /**
+     * Makes every TCP call Iridium-like: {@code baud} each way (0: unpaced), {@code latency} each
+     * way, dropped after {@code dropAfter} ({@code 60s}, {@code 40000b}; null: never).
+     */
+    public GliderSimulator overLine(int baud, Duration latency, String dropAfter) {
+        return overLine(IridiumLine.Settings.withDrop(baud, latency, dropAfter));
+    }
+
     private Link wrap(Link link) {
         IridiumLine.Settings s = line;
         return s.any() ? new IridiumLine(link, s) : link;
