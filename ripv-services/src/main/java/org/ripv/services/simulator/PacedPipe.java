@@ -29,8 +29,12 @@ final class PacedPipe {
         }
     }
 
-    /** Pieces small enough that pacing is smooth at 2,400 baud (64 bytes are 0.27 s there). */
-    private static final int PIECE = 64;
+    /**
+     * Bytes a piece: about 20 ms of the line, at most 64. A real line has no gaps between bytes;
+     * bigger pieces would make pauses a reader takes for the end of a partial line (the
+     * SerialPortServer's console publishes one after 300 ms).
+     */
+    private final int piece;
 
     private final DelayQueue<Piece> queue = new DelayQueue<>();
     private final Semaphore room;
@@ -50,12 +54,13 @@ final class PacedPipe {
         double bytesPerSecond = baud <= 0 ? 1e6 : baud / 10.0;
         this.capacity = (int) Math.min(1 << 20, 1024 + bytesPerSecond * latency / 1e9);
         this.room = new Semaphore(capacity);
+        this.piece = (int) Math.max(1, Math.min(64, bytesPerSecond / 50));
     }
 
     /** Queues bytes; waits while the line's buffer is full. */
     void put(byte[] b, int off, int len) throws InterruptedIOException {
-        for (int i = 0; i < len; i += PIECE) {
-            int n = Math.min(PIECE, len - i);
+        for (int i = 0; i < len; i += piece) {
+            int n = Math.min(piece, len - i);
             try {
                 room.acquire(n);
             } catch (InterruptedException e) {
