@@ -42,7 +42,10 @@ import org.slf4j.LoggerFactory;
  *
  * <p>It serves one connection at a time, on a TCP port ({@link #listen}) or on a serial device
  * or pseudo-terminal ({@link #attach}), or calls a shore station again and again ({@link #call})
- * with a {@link SurfaceDialog} on each call. Its files live in one directory.
+ * with a {@link SurfaceDialog} on each call. Its files live in one directory. {@code zs} and
+ * {@code zr} run lrzsz ({@link Lrzsz}). {@link #speakGliderDos} makes each call a Slocum's
+ * surfacing ({@link SurfaceCountdown}, {@link GliderDos}); {@link #overLine} makes TCP calls
+ * Iridium-like ({@link IridiumLine}).
  */
 public final class GliderSimulator implements AutoCloseable {
     private static final Logger log = LoggerFactory.getLogger(GliderSimulator.class);
