@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertInstanceOf;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
@@ -137,5 +138,44 @@ class SimulatorOverPtyTest {
             glider.close();
             socat.close();
         }
+    }
+
+    /** Issue 24: the GliderDOS dialog on a pty, raw bytes through jSerialComm on the other end. */
+    @Test
+    @SuppressWarnings("try") // socat only has to live as long as the block
+    void theGliderDosDialogOverAPseudoTerminal() throws Exception {
+        Path shore = tmp.resolve("ttyG0");
+        Path vehicle = tmp.resolve("ttyG1");
+        try (Socat socat = ptyPair(shore, vehicle);
+             GliderSimulator glider = new GliderSimulator(tmp.resolve("glider"), Duration.ofSeconds(1),
+                     SimulatorOverTcpTest.YMODEM).named("ru29").speakGliderDos(Duration.ofSeconds(30), Duration.ofSeconds(1));
+             SerialLink link = SerialLink.open(LinkSettings.defaults(shore.toString()))) {
+            glider.attach(vehicle.toString());
+            StringBuilder said = new StringBuilder();
+            until(link, said, "seconds to abort the mission...");
+            assertTrue(said.toString().contains("Glider ru29 at surface."), said.toString());
+            link.write(new byte[] {0x03}, 0, 1);
+            link.flush();
+            until(link, said, "GliderDOS I -3 >");
+            link.write("put c_dive_target_depth 30\r".getBytes(StandardCharsets.US_ASCII), 0, 27);
+            link.flush();
+            assertTrue(until(link, said, "GliderDOS I -3 >").contains("sensor:c_dive_target_depth=30"), said.toString());
+            link.write("go\r".getBytes(StandardCharsets.US_ASCII), 0, 3);
+            link.flush();
+            // resumed: on a tty the glider dives (1 s) and surfaces with its dialog again
+            until(link, said, "MissionNum:ru29-2");
+        }
+    }
+
+    private static String until(SerialLink link, StringBuilder said, String text) throws java.io.IOException {
+        int from = said.length();
+        long end = System.nanoTime() + T.toNanos();
+        byte[] buf = new byte[1024];
+        while (said.indexOf(text, from) < 0) {
+            assertTrue(System.nanoTime() < end, "never said '" + text + "': " + said.substring(from));
+            int n = link.read(buf, 0, buf.length, 500);
+            said.append(new String(buf, 0, n, StandardCharsets.ISO_8859_1));
+        }
+        return said.substring(from);
     }
 }
