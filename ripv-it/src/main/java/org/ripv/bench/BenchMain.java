@@ -43,6 +43,11 @@ public final class BenchMain {
             "             [--baud N] [--runs N] [--files N] [--get-bytes N] [--put-bytes N]",
             "See docs/performance.md for what each measures and the figures.");
 
+    /** What {@code ripv bench --help} prints: the one list of benchmarks the docs' lists must equal. */
+    public static String usage() {
+        return USAGE;
+    }
+
     public static void main(String[] args) throws Exception {
         if (args.length == 0 || args[0].equals("--help") || args[0].equals("-h")) {
             System.out.println(USAGE);

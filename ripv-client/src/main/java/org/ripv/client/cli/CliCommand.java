@@ -93,7 +93,13 @@ public final class CliCommand implements Callable<Integer> {
             return 2;
         }
         String host = servers.first().host();
-        char[] pw = password(host);
+        char[] pw;
+        try {
+            pw = password(host);
+        } catch (PasswordFile.Unusable e) {
+            err.println("Error: " + e.getMessage());
+            return 2;
+        }
         if (pw == null) {
             err.println("Error: no password: give --password-file, set RIPV_PASSWORD, or run on a terminal to be asked");
             return 2;
@@ -197,8 +203,7 @@ public final class CliCommand implements Callable<Integer> {
             return password.toCharArray();
         }
         if (passwordFile != null) {
-            List<String> lines = Files.readAllLines(passwordFile, StandardCharsets.UTF_8);
-            return lines.isEmpty() ? null : lines.get(0).toCharArray();
+            return PasswordFile.read(passwordFile);
         }
         String env = System.getenv("RIPV_PASSWORD");
         if (env != null) {
