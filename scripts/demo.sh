@@ -164,7 +164,7 @@ echo "demo: starting the RIPVServer (logs in $DEMO/logs)" >&2
 pids+=($!)
 wait_port "$PORT"
 secret="$DEMO/server/service.secret"
-for s in "$ROOT"/docs/samples/*.dat; do
+for s in "$ROOT"/docs/samples/*.dat "$ROOT"/docs/samples/*.wf "$ROOT"/docs/samples/*.ma; do
   [ -f "$s" ] && [ ! -f "$DEMO/server/upload/$(basename "$s")" ] && cp "$s" "$DEMO/server/upload/"
 done
 
