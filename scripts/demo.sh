@@ -25,6 +25,7 @@ Environment:
   RIPV_REGISTRY_PORT   RMI registry port (default 1099)
   RIPV_HTTP_PORT       landing page port (default 8080)
   RIPV_GLIDER_PORT     the simulated glider's TCP port (default 5555)
+  RIPV_OUTBOUND_PORT   where services behind NAT connect out (default 4446; -1: none)
   RIPV_DEMO_HEADLESS=1 no GUI even with a display
 USAGE
 }
@@ -51,6 +52,7 @@ PORT="${RIPV_PORT:-4444}"
 REGISTRY="${RIPV_REGISTRY_PORT:-1099}"
 HTTP="${RIPV_HTTP_PORT:-8080}"
 GLIDER="${RIPV_GLIDER_PORT:-5555}"
+OUTBOUND="${RIPV_OUTBOUND_PORT:-4446}"
 GLIDER_NAME="${RIPV_GLIDER_NAME:-sim01}"
 DIVE="${RIPV_DIVE_SECONDS:-30}"
 SURFACE="${RIPV_SURFACE_SECONDS:-60}"
@@ -160,7 +162,7 @@ export RIPV_KNOWN_HOSTS="$KNOWN"
 
 echo "demo: starting the RIPVServer (logs in $DEMO/logs)" >&2
 "$JAVA" "${USER_HOME[@]}" -jar "$(jar ripv-server)" server --data "$DEMO/server" --port "$PORT" --registry-port "$REGISTRY" \
-  --http-port "$HTTP" --bind "$BIND" >"$DEMO/logs/server.log" 2>&1 &
+  --http-port "$HTTP" --outbound-port "$OUTBOUND" --bind "$BIND" >"$DEMO/logs/server.log" 2>&1 &
 pids+=($!)
 wait_port "$PORT"
 secret="$DEMO/server/service.secret"
@@ -188,6 +190,25 @@ pids+=($!)
 "$JAVA" "${USER_HOME[@]}" -Dripv.host=localhost -jar "$(jar ripv-services)" datavis --server "$HERE:$REGISTRY" --secret-file "$secret" \
   --workdir "$DEMO/datavis" >"$DEMO/logs/datavis.log" 2>&1 &
 pids+=($!)
+
+# "Running" only once the three services have registered: a service that died (its log says why)
+# stops the demo instead.
+for i in $(seq 1 600); do
+  missing=()
+  for s in SerialPortServer DatabaseServer DataVisServer; do
+    grep -q "<$s>::<localhost> (SID [0-9]*) registered" "$DEMO/logs/server.log" || missing+=("$s")
+  done
+  [ ${#missing[@]} -eq 0 ] && break
+  for p in "${pids[@]}"; do
+    if ! kill -0 "$p" 2>/dev/null; then
+      echo "demo: a process of the demo ended before ${missing[*]} registered; see $DEMO/logs/ (serial.log, database.log, datavis.log):" >&2
+      tail -n 5 "$DEMO"/logs/*.log >&2
+      exit 1
+    fi
+  done
+  [ "$i" = 600 ] && { echo "demo: ${missing[*]} did not register within 120 s; see $DEMO/logs/" >&2; exit 1; }
+  sleep 0.2
+done
 
 cli_hint() {
   cat <<HINT

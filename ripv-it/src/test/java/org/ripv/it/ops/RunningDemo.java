@@ -28,6 +28,7 @@ final class RunningDemo implements AutoCloseable {
     final int registryPort;
     final int httpPort;
     final int gliderPort;
+    final int outboundPort;
     final ProcessWatch watch = new ProcessWatch();
     final Process process;
 
@@ -40,6 +41,7 @@ final class RunningDemo implements AutoCloseable {
         this.registryPort = ports[1];
         this.httpPort = ports[2];
         this.gliderPort = ports[3];
+        this.outboundPort = ports[4];
         ProcessBuilder pb = new ProcessBuilder("bash", root.resolve("ripv").toString(), "demo").directory(root.toFile())
                 .redirectErrorStream(true).redirectOutput(log.toFile())
                 .redirectInput(ProcessBuilder.Redirect.from(new File("/dev/null")));
@@ -60,12 +62,13 @@ final class RunningDemo implements AutoCloseable {
         env.put("RIPV_REGISTRY_PORT", "" + registryPort);
         env.put("RIPV_HTTP_PORT", "" + httpPort);
         env.put("RIPV_GLIDER_PORT", "" + gliderPort);
+        env.put("RIPV_OUTBOUND_PORT", "" + outboundPort);
         env.put("RIPV_DEMO_HEADLESS", "1");
         env.put("HOME", home.toString());
         return env;
     }
 
-    /** Four ports free a moment ago (the demo refuses to start if one was taken since). */
+    /** Ports free a moment ago (the demo refuses to start if one was taken since). */
     static int[] freePorts(int n) throws IOException {
         int[] ports = new int[n];
         ServerSocket[] held = new ServerSocket[n];
@@ -91,7 +94,7 @@ final class RunningDemo implements AutoCloseable {
     static RunningDemo start(Path root, Path dir, Path home, Duration max, Map<String, String> extra) throws Exception {
         Files.createDirectories(home);
         Path log = Files.createTempFile(home.getParent(), "demo", ".log");
-        RunningDemo demo = new RunningDemo(root, dir, home, log, freePorts(4), extra);
+        RunningDemo demo = new RunningDemo(root, dir, home, log, freePorts(5), extra);
         long end = System.nanoTime() + max.toNanos();
         while (!demo.output().contains(RUNNING)) {
             if (!demo.process.isAlive() || System.nanoTime() > end) {
