@@ -104,18 +104,21 @@ final class ServerCommands {
         int at = MailboxArgument.position(w);
         // A vehicle name stands for its MailBox; ?watch of an address no service has is refused at once.
         if (at > 0 && (!VehicleNames.isFullAddress(w[at]) || word.equals("?watch"))) {
-            queries.known().whenComplete((known, e) -> {
-                VehicleNames.Resolution r = VehicleNames.resolve(w[at], known.addresses(), known.notAnswering());
-                String why = !r.resolved() ? r.error() : word.equals("?watch") ? unheardOf(r.address(), known) : null;
-                if (why != null) {
-                    server.reply(ServerTaskManager.error(request, c.fid(), ErrorCode.UNKNOWN_MAILBOX, why));
-                    return;
-                }
-                if (r.address().equals(w[at])) {
-                    dispatch(request, c, w, word);
-                } else {
-                    String named = MailboxArgument.replaced(w, at, r.address());
-                    dispatch(withBody(request, named), c, named.split(" "), word);
+            queries.known().thenAccept(known -> {
+                try {
+                    VehicleNames.Resolution r = VehicleNames.resolve(w[at], known.addresses(), known.notAnswering());
+                    String why = !r.resolved() ? r.error() : word.equals("?watch") ? unheardOf(r.address(), known) : null;
+                    if (why != null) {
+                        server.reply(ServerTaskManager.error(request, c.fid(), ErrorCode.UNKNOWN_MAILBOX, why));
+                    } else if (r.address().equals(w[at])) {
+                        dispatch(request, c, w, word);
+                    } else {
+                        String named = MailboxArgument.replaced(w, at, r.address());
+                        dispatch(withBody(request, named), c, named.split(" "), word);
+                    }
+                } catch (RuntimeException x) {
+                    // off the Post Office's thread nothing else would answer: the client must not wait for ever
+                    server.reply(ServerTaskManager.error(request, c.fid(), ErrorCode.INTERNAL, c.usage() + " failed: " + x));
                 }
             });
             return;

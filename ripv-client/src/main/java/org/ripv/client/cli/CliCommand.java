@@ -61,7 +61,8 @@ public final class CliCommand implements Callable<Integer> {
     @Option(names = "--history", paramLabel = "FILE", description = "The interactive CLI's history (default ~/.ripv/history).")
     Path history;
 
-    @Option(names = "--follow", paramLabel = "MAILBOX", description = "Print the MailBox's live console (lines, commands, events) until Ctrl-C; after any --exec lines.")
+    @Option(names = "--follow", paramLabel = "MAILBOX", description = "Print the MailBox's live console (lines, commands, events) until Ctrl-C, after any --exec lines;"
+            + " MAILBOX is a full address or a vehicle's name (sim01).")
     String follow;
     @Option(names = "--no-reconnect", description = "With --follow or on a terminal: end (exit 3) when the connection is lost, instead"
             + " of logging in again to the server (or the first of --server's list that answers) and going on.")

@@ -33,7 +33,7 @@ class FirstHourEndToEndTest {
     static final String SIM = "<SerialPortServer>::<localhost>sim01";
 
     @TempDir
-    Path dir;
+    static Path dir;
     final List<Process> processes = new ArrayList<>();
     int port;
     int registry;
@@ -136,7 +136,7 @@ class FirstHourEndToEndTest {
     record Result(int code, String out, String err, Duration took) {}
 
     /** The CLI jar, as {@code ripv cli} runs it, with standard input from /dev/null. */
-    Result cli(String serverPort, String... args) throws Exception {
+    Result cliAt(String serverPort, String... args) throws Exception {
         List<String> cmd = new ArrayList<>(List.of(java(), "-jar", jar("ripv-client"), "cli", "--server", serverPort,
                 "--user", "alice", "--password-file", pw.toString(), "--known-hosts", knownHosts.toString()));
         cmd.addAll(List.of(args));
@@ -153,7 +153,7 @@ class FirstHourEndToEndTest {
     }
 
     Result cli(String... args) throws Exception {
-        return cli("localhost:" + port, args);
+        return cliAt("localhost:" + port, args);
     }
 
     @Test
@@ -210,23 +210,23 @@ class FirstHourEndToEndTest {
 
     @Test
     void theCliAtTheWrongPortSaysWhichPortItReached() throws Exception {
-        Result r = cli("localhost:" + registry, "--exec", "?ping");
+        Result r = cliAt("localhost:" + registry, "--exec", "?ping");
         assertThat(r.code()).isEqualTo(3);
         assertThat(r.err()).contains("localhost:" + registry + " is the server's Java RMI registry", "not its client port")
                 .doesNotContain("is the server started with --plain");
         assertThat(r.took()).isLessThan(Duration.ofSeconds(90));
 
-        r = cli("localhost:" + http, "--exec", "?ping");
+        r = cliAt("localhost:" + http, "--exec", "?ping");
         assertThat(r.code()).isEqualTo(3);
         assertThat(r.err()).contains("localhost:" + http + " is the server's web/landing page port");
         assertThat(r.took()).as("bounded, not forever").isLessThan(Duration.ofSeconds(90));
 
         int nothing = freePort();
-        r = cli("localhost:" + nothing, "--exec", "?ping");
+        r = cliAt("localhost:" + nothing, "--exec", "?ping");
         assertThat(r.code()).isEqualTo(3);
         assertThat(r.err()).contains("nothing listens on localhost:" + nothing);
 
-        r = cli("localhost:" + port, "--plain", "--exec", "?ping");
+        r = cliAt("localhost:" + port, "--plain", "--exec", "?ping");
         assertThat(r.code()).isEqualTo(3);
         assertThat(r.err()).contains("is a RIPV client port with TLS: leave out --plain");
     }
