@@ -104,7 +104,7 @@ final class ServerTaskManager extends TaskManager<IncomingServerMessage, Outgoin
         } catch (FileTooLargeException e) {
             return error(request, sid, ErrorCode.TOO_LARGE, e.getMessage());
         } catch (NoSuchFileException e) {
-            return error(request, sid, ErrorCode.BAD_FILE_NAME, e.getMessage());
+            return error(request, sid, ErrorCode.BAD_FILE_NAME, org.ripv.server.dataloop.DataLoop.noSuchFile(sid, h.body(), e.getMessage()));
         } catch (IllegalArgumentException e) {
             return error(request, sid, ErrorCode.BAD_FILE_NAME, e.getMessage());
         } catch (IOException e) {

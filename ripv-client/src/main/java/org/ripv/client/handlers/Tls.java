@@ -47,6 +47,15 @@ public final class Tls {
         }
     }
 
+    /** The same refusal as a connection failure: the server is the right one, its certificate is not. */
+    static final class ChangedCertificateIOException extends java.io.IOException {
+        private static final long serialVersionUID = 1L;
+
+        ChangedCertificateIOException(String message, Throwable cause) {
+            super(message, cause);
+        }
+    }
+
     /**
      * A TLS factory that trusts the certificates in {@code truststore} (PKCS12 or JKS), or the
      * JVM's default trust store when it is null.

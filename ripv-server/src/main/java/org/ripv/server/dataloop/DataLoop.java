@@ -59,6 +59,20 @@ public final class DataLoop {
     }
 
     /**
+     * The error for a command whose file is not in the upload directory: for {@code vis:WORD} to a
+     * DataVisServer (not {@code vis:file}, whose file is a download), the plot commands are listed,
+     * since a mistyped one is the likelier mistake; otherwise {@code noFile} as it is.
+     */
+    public static String noSuchFile(String sid, String body, String noFile) {
+        String b = body.strip();
+        if (!sid.equals(Ids.SID_DATAVIS) || !b.regionMatches(true, 0, "vis:", 0, 4)) {
+            return noFile;
+        }
+        String word = b.substring(4).split("\\s+", 2)[0];
+        return word.isEmpty() || word.equalsIgnoreCase("file") ? noFile : PlotRequests.notAPlot(word, noFile);
+    }
+
+    /**
      * Looks at a reply whose files the server has just stored.
      *
      * @param reply the reply as it would go to the client
