@@ -17,9 +17,10 @@ import org.slf4j.LoggerFactory;
  * unchanged over its {@link PostOfficeLink}, so the server's own rules decide; every reply and
  * console push goes back as JSON ({@link WebReplies}). A browser that stops reading fills Jetty's
  * bounded outgoing queue and is disconnected; the link's own reply queue in the server is bounded
- * the same way, so a stalled page slows nobody.
+ * the same way, so a stalled page slows nobody. (Public only because Jetty calls its listener methods
+ * reflectively; nothing outside this package makes one.)
  */
-final class ConsoleSocket implements Session.Listener.AutoDemanding, AutoCloseable {
+public final class ConsoleSocket implements Session.Listener.AutoDemanding, AutoCloseable {
     private static final Logger log = LoggerFactory.getLogger(ConsoleSocket.class);
     private static final ObjectMapper JSON = new ObjectMapper();
 

@@ -30,6 +30,9 @@ final class HeaderDeadline extends Handler.Wrapper implements Connection.Listene
 
     @Override
     public void onOpened(Connection connection) {
+        if (!(connection instanceof org.eclipse.jetty.server.internal.HttpConnection)) {
+            return; // the TLS layer beneath: closing the HTTP connection's end point closes it too
+        }
         waiting.put(connection, timer.schedule(() -> {
             if (waiting.remove(connection) != null) {
                 connection.getEndPoint().close(new java.util.concurrent.TimeoutException("no request headers within " + millis + " ms"));

@@ -28,8 +28,12 @@ final class LandingHandler extends Handler.Abstract {
     private final boolean tls;
     private final WebSessions sessions;
     private final boolean logins;
+    private final long maxUploadBytes;
 
-    LandingHandler(Supplier<String> status, Path clientJar, int clientPort, boolean tls, WebSessions sessions, boolean logins) {
+    /** @param maxUploadBytes the upload form's limit, or 0 when the page takes no uploads */
+    LandingHandler(Supplier<String> status, Path clientJar, int clientPort, boolean tls, WebSessions sessions, boolean logins,
+                   long maxUploadBytes) {
+        this.maxUploadBytes = maxUploadBytes;
         this.status = status;
         this.clientJar = clientJar;
         this.clientPort = clientPort;
@@ -68,7 +72,7 @@ final class LandingHandler extends Handler.Abstract {
         } else if (s != null) {
             console = "<p>Logged in as <strong id=\"who\">" + html(s.user) + "</strong>. <a id=\"fleet\" href=\"/fleet.html\">Open the fleet</a></p>\n"
                     + "<form method=\"post\" action=\"/logout\"><input type=\"hidden\" name=\"csrf\" value=\"" + s.csrf
-                    + "\"><button type=\"submit\">Log out</button></form>\n";
+                    + "\"><button type=\"submit\">Log out</button></form>\n" + uploadForm(s);
         } else {
             console = "<form id=\"login\" class=\"card\" method=\"post\" action=\"/login\">\n"
                     + "<p><label for=\"user\">User</label><input id=\"user\" name=\"user\" autocomplete=\"username\" required></p>\n"
@@ -90,6 +94,20 @@ final class LandingHandler extends Handler.Abstract {
                 + "<code>mvn -DskipTests package</code>; it is <code>ripv-client/target/ripv-client.jar</code>.</p>\n")
                 + "<p>Without a display, use the command-line client: <code>ripv cli --server " + html(connect)
                 + " --user USER --password-file FILE</code>.</p>\n</main></body></html>\n";
+    }
+
+    /** The thesis's upload form (appendix D), for a logged-in user when the operator turned uploads on. */
+    private String uploadForm(WebSessions.Session s) {
+        if (maxUploadBytes <= 0) {
+            return "";
+        }
+        return "<h2>Upload files to the server</h2>\n<p>Files go to the server's upload directory, where services can use them"
+                + " (for example <code>ymodem:put NAME</code>). Plain file names only: no slashes or backslashes, no leading dot;"
+                + " an existing file is never replaced. At most " + maxUploadBytes + " bytes per upload, all files together."
+                + " If any file breaks a rule, none is saved.</p>\n"
+                + "<form id=\"upload\" class=\"card\" method=\"post\" action=\"/upload?csrf=" + s.csrf + "\" enctype=\"multipart/form-data\">\n"
+                + "<p><label for=\"file-1\">File</label><input id=\"file-1\" type=\"file\" name=\"file-to-upload-1\" multiple></p>\n"
+                + "<p><button type=\"submit\">Upload</button></p></form>\n";
     }
 
     private void jar(Request request, Response response, Callback callback) throws Exception {

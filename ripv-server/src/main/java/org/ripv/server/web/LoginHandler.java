@@ -5,13 +5,13 @@ import java.nio.charset.StandardCharsets;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import org.eclipse.jetty.http.HttpHeader;
-import org.eclipse.jetty.http.MimeTypes;
-import org.eclipse.jetty.server.FormFields;
+import org.eclipse.jetty.io.Content;
 import org.eclipse.jetty.server.Handler;
 import org.eclipse.jetty.server.Request;
 import org.eclipse.jetty.server.Response;
 import org.eclipse.jetty.util.Callback;
 import org.eclipse.jetty.util.Fields;
+import org.eclipse.jetty.util.UrlEncoded;
 import org.ripv.server.web.WebSessions.Session;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -22,7 +22,7 @@ import org.slf4j.LoggerFactory;
  * issue 23 item 10), checked by {@link WebAccess} with the socket port's throttle and audit, and
  * always starts a new session — whatever session id the browser brought is ended, not kept.
  */
-final class LoginHandler extends Handler.Abstract.NonBlocking {
+final class LoginHandler extends Handler.Abstract {
     private static final Logger log = LoggerFactory.getLogger(LoginHandler.class);
     static final int MAX_FORM_BYTES = 4096;
 
@@ -36,7 +36,7 @@ final class LoginHandler extends Handler.Abstract.NonBlocking {
         this.access = access;
         this.sessions = sessions;
         this.secure = secure;
-        this.pageSettings = Map.copyOf(pageSettings);
+        this.pageSettings = java.util.Collections.unmodifiableMap(new LinkedHashMap<>(pageSettings));
     }
 
     @Override
@@ -59,7 +59,8 @@ final class LoginHandler extends Handler.Abstract.NonBlocking {
             return;
         }
         String type = request.getHeaders().get(HttpHeader.CONTENT_TYPE);
-        if (type == null || !MimeTypes.getContentTypeWithoutCharset(type).trim().equalsIgnoreCase("application/x-www-form-urlencoded")) {
+        if (type == null || !type.split(";")[0].trim().equalsIgnoreCase("application/x-www-form-urlencoded")) {
+            response.getHeaders().put(HttpHeader.CONNECTION, "close"); // its body is not read
             Pages.fail(response, callback, 415, "Not a log-in form", "A log-in must come from the form on this server's"
                     + " page (application/x-www-form-urlencoded), not '" + (type == null ? "no content type" : type) + "'.");
             return;
@@ -67,12 +68,13 @@ final class LoginHandler extends Handler.Abstract.NonBlocking {
         String cross = Pages.crossOrigin(request);
         if (cross != null) {
             log.info("web log-in refused from {}: {}", Request.getRemoteAddr(request), cross);
+            response.getHeaders().put(HttpHeader.CONNECTION, "close");
             Pages.fail(response, callback, 403, "Log-in refused", "Log in on this server's own page: " + cross + ".");
             return;
         }
         String address = Request.getRemoteAddr(request);
         Session before = sessions.find(request);
-        FormFields.from(request, StandardCharsets.UTF_8, 8, MAX_FORM_BYTES).whenComplete((fields, failure) -> {
+        form(request).whenComplete((fields, failure) -> {
             if (failure != null) {
                 Pages.fail(response, callback, 400, "Bad log-in form", "The form could not be read: " + failure.getMessage());
                 return;
@@ -106,7 +108,7 @@ final class LoginHandler extends Handler.Abstract.NonBlocking {
         }
         Session s = sessions.find(request);
         String cross = Pages.crossOrigin(request);
-        FormFields.from(request, StandardCharsets.UTF_8, 8, MAX_FORM_BYTES).whenComplete((fields, failure) -> {
+        form(request).whenComplete((fields, failure) -> {
             if (s == null) {
                 response.getHeaders().add(HttpHeader.SET_COOKIE, WebSessions.expiredCookie(secure));
                 Pages.redirect(response, callback, "/");
@@ -119,6 +121,23 @@ final class LoginHandler extends Handler.Abstract.NonBlocking {
                 response.getHeaders().add(HttpHeader.SET_COOKIE, WebSessions.expiredCookie(secure));
                 Pages.redirect(response, callback, "/");
             }
+        });
+    }
+
+    /** The form's fields, read without holding a thread while a slow body arrives; at most {@link #MAX_FORM_BYTES}. */
+    private static java.util.concurrent.CompletableFuture<Fields> form(Request request) {
+        long length = request.getLength();
+        if (length < 0 || length > MAX_FORM_BYTES) {
+            return java.util.concurrent.CompletableFuture.failedFuture(
+                    new IllegalArgumentException("a form of " + (length < 0 ? "unknown length" : length + " bytes") + "; at most " + MAX_FORM_BYTES + " are read"));
+        }
+        return Content.Source.asStringAsync(request, StandardCharsets.UTF_8).thenApply(body -> {
+            if (body.length() > MAX_FORM_BYTES) {
+                throw new IllegalArgumentException("a form over " + MAX_FORM_BYTES + " bytes");
+            }
+            Fields fields = new Fields();
+            UrlEncoded.decodeUtf8To(body, fields);
+            return fields;
         });
     }
 

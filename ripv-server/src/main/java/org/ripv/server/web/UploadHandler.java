@@ -12,7 +12,6 @@ import java.util.List;
 import java.util.Set;
 import java.util.UUID;
 import org.eclipse.jetty.http.HttpHeader;
-import org.eclipse.jetty.http.MimeTypes;
 import org.eclipse.jetty.http.MultiPart;
 import org.eclipse.jetty.http.MultiPartConfig;
 import org.eclipse.jetty.http.MultiPartFormData;
@@ -32,7 +31,7 @@ import org.slf4j.LoggerFactory;
  * per log-in. Jetty's {@link MultiPartFormData} parses the form into a hidden folder; if any
  * file breaks a rule, <em>none</em> is moved into place.
  */
-final class UploadHandler extends Handler.Abstract.NonBlocking {
+final class UploadHandler extends Handler.Abstract {
     private static final Logger log = LoggerFactory.getLogger(UploadHandler.class);
     /** Multipart boundaries and headers on top of the files themselves. */
     static final long FORM_OVERHEAD = 64 * 1024;
@@ -72,7 +71,7 @@ final class UploadHandler extends Handler.Abstract.NonBlocking {
         Session s = sessions.find(request);
         String type = request.getHeaders().get(HttpHeader.CONTENT_TYPE);
         String boundary = MultiPart.extractBoundary(type);
-        if (type == null || !MimeTypes.getContentTypeWithoutCharset(type).trim().equalsIgnoreCase("multipart/form-data") || boundary == null) {
+        if (type == null || !type.split(";")[0].trim().equalsIgnoreCase("multipart/form-data") || boundary == null) {
             response.getHeaders().put(HttpHeader.CONNECTION, "close");
             Pages.fail(response, callback, 400, "Not a form upload", "The upload must be sent as multipart/form-data"
                     + " (use the upload form). Nothing was saved.");

@@ -175,7 +175,8 @@ public final class WebConsole implements AutoCloseable {
         webjars.setDirAllowed(false);
         ContextHandler webjarContext = new ContextHandler(webjars, "/webjars");
         java.util.List<Handler> chain = new java.util.ArrayList<>();
-        chain.add(new LandingHandler(options.status(), options.clientJar(), options.clientPort(), tls, sessions, options.access() != null));
+        chain.add(new LandingHandler(options.status(), options.clientJar(), options.clientPort(), tls, sessions, options.access() != null,
+                options.uploads() && options.access() != null ? options.maxUploadBytes() : 0));
         if (options.access() != null) {
             chain.add(new LoginHandler(options.access(), sessions, tls, settings));
         }
