@@ -226,7 +226,7 @@ RIPV demo is running. Connect with the CLI, e.g.:
 
   Database:  --exec 'use <DatabaseServer>::<localhost>TTY1' --exec 'SELECT * FROM mission'
   Plot:      --exec 'use <DataVisServer>::<localhost>TTY1' --exec 'vis:glider-temperature.dat'
-  Landing page: https://localhost:$HTTP/ (the server's own certificate: your browser asks first)
+  Web console: https://localhost:$HTTP/ (log in as $USER_NAME, password in $DEMO/password; the server's own certificate: your browser asks first)
   Server certificate: $(grep -o 'SHA256:[0-9A-F:]*' "$DEMO/logs/server.log" | head -1)
   Logs: $DEMO/logs/
 
