@@ -201,6 +201,9 @@ public final class DatabaseBench {
             try (Statement st = c.createStatement()) {
                 st.execute("CREATE TABLE bench_readings (leg_id INTEGER NOT NULL, sensor_id INTEGER NOT NULL,"
                         + " t TIMESTAMP NOT NULL, value DOUBLE PRECISION NOT NULL, raw_value DOUBLE PRECISION NOT NULL)");
+                // The in-process path asks with no roles, so it reads as the reader (DatabaseHandler.readsOnly),
+                // which holds SELECT only on what it is granted, like the six seeded tables.
+                st.execute("GRANT SELECT ON bench_readings TO " + db.readerUser());
             }
             LocalDateTime start = LocalDateTime.of(2002, 4, 2, 13, 0);
             try (PreparedStatement ps = c.prepareStatement("INSERT INTO bench_readings VALUES (?, ?, ?, ?, ?)")) {
