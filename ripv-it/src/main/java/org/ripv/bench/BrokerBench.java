@@ -18,6 +18,7 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.atomic.AtomicBoolean;
@@ -72,7 +73,7 @@ public final class BrokerBench implements Callable<Integer> {
     }
 
     /** Wall percentiles and the whole process's CPU per operation, over the same operations. */
-    record Latency(double p50Micros, double p99Micros, long count, double cpuMicros) {}
+    record Latency(double p50Micros, double p99Micros, long count, double cpuMicros, Map<String, Double> byThread) {}
 
     @Override
     public Integer call() throws Exception {
@@ -131,6 +132,10 @@ public final class BrokerBench implements Callable<Integer> {
                     + " against the plain floor: wall %.2f×, CPU %.2f×%n",
                     full.p50Micros() / tlsFloor, full.cpuMicros() / tlsFloorCpu, full.p50Micros() / floor, full.cpuMicros() / floorCpu);
             out.println(CpuClock.ratioLine("full path", full.cpuMicros(), tlsFloorCpu, full.p50Micros() / tlsFloor));
+            out.print("  the full path's CPU per round trip by thread:");
+            full.byThread().entrySet().stream().filter(e -> e.getValue() >= 0.5)
+                    .forEach(e -> out.printf(" %s %.1f us;", e.getKey(), e.getValue()));
+            out.println();
             for (int n : clients) {
                 long[] done = new long[2];
                 double rate = throughput(pool.subList(0, n), mailbox, payload, done);
@@ -224,8 +229,9 @@ public final class BrokerBench implements Callable<Integer> {
             samples[n++] = System.nanoTime() - t0;
         }
         double cpuMicros = cpu.cpuMicrosPer(n);
+        Map<String, Double> byThread = cpu.microsPerThreadKind(n);
         Arrays.sort(samples, 0, n);
-        return new Latency(samples[n / 2] / 1000.0, samples[(int) (n * 0.99)] / 1000.0, n, cpuMicros);
+        return new Latency(samples[n / 2] / 1000.0, samples[(int) (n * 0.99)] / 1000.0, n, cpuMicros, byThread);
     }
 
     /** Round trips a second of {@code cs} calling at once; {@code counted} gets how many were counted and the CPU nanoseconds they took. */

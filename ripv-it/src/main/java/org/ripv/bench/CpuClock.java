@@ -2,10 +2,15 @@ package org.ripv.bench;
 
 import java.io.IOException;
 import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
 import java.util.Locale;
+import java.util.Map;
+import java.util.TreeMap;
 
 /**
  * The CPU time of this whole process (every thread: the benchmark's client, the server and the
@@ -22,6 +27,8 @@ public final class CpuClock {
 
     private final long wall0 = System.nanoTime();
     private final long cpu0 = processCpuNanos();
+    private final Map<Long, Long> threads0 = threadCpu();
+    private final Map<Long, String> names0 = threadNames();
 
     private CpuClock() {}
 
@@ -43,6 +50,59 @@ public final class CpuClock {
     /** CPU microseconds per operation since {@link #start()}. */
     public double cpuMicrosPer(long operations) {
         return cpuNanos() / 1e3 / Math.max(1, operations);
+    }
+
+    /**
+     * Where the CPU went since {@link #start()}, per operation: microseconds per kind of thread
+     * (names with their numbers and client ids taken off), largest first, and what no Java thread
+     * accounts for (the JIT compilers, the garbage collector) as "JVM: JIT and GC".
+     */
+    public Map<String, Double> microsPerThreadKind(long operations) {
+        Map<Long, Long> now = threadCpu();
+        Map<Long, String> names = threadNames();
+        names.putAll(names0);
+        Map<String, Double> kinds = new TreeMap<>();
+        double javaThreads = 0;
+        for (Map.Entry<Long, Long> e : now.entrySet()) {
+            long spent = e.getValue() - threads0.getOrDefault(e.getKey(), 0L);
+            String kind = kind(names.getOrDefault(e.getKey(), "?"));
+            double micros = spent / 1e3 / Math.max(1, operations);
+            kinds.merge(kind, micros, Double::sum);
+            javaThreads += micros;
+        }
+        kinds.put("JVM: JIT and GC (no Java thread)", Math.max(0, cpuMicrosPer(operations) - javaThreads));
+        Map<String, Double> sorted = new LinkedHashMap<>();
+        kinds.entrySet().stream().sorted(Map.Entry.<String, Double>comparingByValue().reversed())
+                .forEach(e -> sorted.put(e.getKey(), e.getValue()));
+        return sorted;
+    }
+
+    /** "ripv-socket-handler-123456" and "RMI TCP Connection(12)-127.0.0.1" become one kind each. */
+    static String kind(String threadName) {
+        return threadName.replaceAll("\\(\\d+\\)", "(n)").replaceAll("[-#:]?[0-9][0-9.:]*$", "").replaceAll("-\\d{6,}", "");
+    }
+
+    private static Map<Long, Long> threadCpu() {
+        ThreadMXBean mx = ManagementFactory.getThreadMXBean();
+        Map<Long, Long> m = new HashMap<>();
+        if (!mx.isThreadCpuTimeSupported()) {
+            return m;
+        }
+        for (long id : mx.getAllThreadIds()) {
+            long t = mx.getThreadCpuTime(id);
+            if (t >= 0) {
+                m.put(id, t);
+            }
+        }
+        return m;
+    }
+
+    private static Map<Long, String> threadNames() {
+        Map<Long, String> m = new HashMap<>();
+        for (Thread t : Thread.getAllStackTraces().keySet()) {
+            m.put(t.getId(), t.getName());
+        }
+        return m;
     }
 
     /** All threads' CPU time of this JVM, from the operating system (Linux: /proc/self/stat's utime + stime). */
