@@ -212,13 +212,14 @@ public final class ZmodemReceiver {
         ResumeStore.Start start = store.offer(file);
         long pos = start.offset();
         listener.started(file);
-        boolean keep = true;
+        if (pos > 0) {
+            listener.resumed(file, pos);
+        }
         long from = pos;
         try (OutputStream o = store.open(file, pos)) {
             pos = data(file, pos, o);
         } catch (ZmodemException e) {
-            keep = e.kind() == ZmodemException.Kind.LINE;
-            throw finish(store, file, from, keep, e);
+            throw finish(store, file, from, e.kind() == ZmodemException.Kind.LINE, e);
         } catch (IOException e) {
             throw finish(store, file, from, true, e);
         }

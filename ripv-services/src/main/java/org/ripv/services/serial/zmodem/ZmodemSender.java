@@ -75,6 +75,9 @@ public final class ZmodemSender {
                     + " (ZSKIP: it may have it already, or may not write it)");
         }
         listener.started(header);
+        if (start > 0) {
+            listener.resumed(header, start);
+        }
         long pos = start;
         int rounds = 0;
         while (true) {
