@@ -151,7 +151,7 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
         lock.lockInterruptibly();
         try {
             Connection l = usableLink();
-            console.command(request.user(), command);
+            console.command(request.user(), key != null ? KeyCommands.WORD + " " + key.name() : command);
             running.start(command, request.user());
             try {
                 if (command.startsWith("ymodem:get")) {

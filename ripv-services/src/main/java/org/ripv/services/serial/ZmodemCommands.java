@@ -90,8 +90,13 @@ final class ZmodemCommands {
         Reply run() throws IOException, ServiceException;
     }
 
-    /** Binary mode for the exchange; a clean line after it, a TRANSFER_DONE or TRANSFER_FAILED event. */
-    private Reply transfer(Connection c, Request request, Exchange exchange) throws IOException, ServiceException {
+    /**
+     * Binary mode for the exchange; a clean line after it, a TRANSFER_DONE or TRANSFER_FAILED
+     * event. A ZMODEM failure or a dropped call is a TRANSFER_FAILED error ending with {@code after}
+     * (which parts wait for the next call).
+     */
+    private Reply transfer(Connection c, Request request, Exchange exchange, java.util.function.Supplier<String> after)
+            throws IOException, ServiceException {
         c.listen();
         c.binary(true);
         cancelRequested = false;
@@ -102,10 +107,15 @@ final class ZmodemCommands {
             return r;
         } catch (ZmodemException e) {
             lineSync.resync(c);
-            throw failed(request, e.kind() == ZmodemException.Kind.REFUSED
-                    ? "the vehicle did not start ZMODEM; it said: " + e.getMessage() : e.getMessage(), e);
+            String why = switch (e.kind()) {
+                case REFUSED -> "the vehicle did not start ZMODEM; it said: " + e.getMessage();
+                case ABORTED -> e.getMessage() + (request.command().startsWith("zmodem:get")
+                        ? "; sz does this when it cannot open the files it was asked for: check their names with dir" : "");
+                default -> e.getMessage();
+            };
+            throw failed(request, why, after);
         } catch (EOFException e) {
-            throw failed(request, e.getMessage(), e); // the call is gone: nothing to resync
+            throw failed(request, "the call dropped (" + e.getMessage() + ")", after); // nothing to resync
         } catch (IOException | ServiceException e) {
             lineSync.resync(c);
             throw e;
@@ -116,10 +126,10 @@ final class ZmodemCommands {
         }
     }
 
-    private <E extends Exception> E failed(Request request, String why, E e) {
+    private ServiceException failed(Request request, String why, java.util.function.Supplier<String> after) {
         console.transfer(request.user(), "transfer failed: " + why);
         console.event(VehicleEvent.TRANSFER_FAILED, "'" + request.command() + "' for " + request.user() + ": " + why);
-        return e;
+        return new ServiceException(ErrorCode.TRANSFER_FAILED, "ZMODEM transfer failed: " + why + after.get());
     }
 
     Reply get(Connection c, Request request) throws IOException, ServiceException {
@@ -136,10 +146,8 @@ final class ZmodemCommands {
         ResumeStore store = resumeStore();
         Path dir = PrivateFiles.createDirectories(workDir).resolve("get-z" + TRANSFERS.incrementAndGet());
         try {
-            return transfer(c, request, () -> receive(c, request, names, vehicleCommand, store, dir));
-        } catch (ZmodemException | EOFException e) {
-            throw new ServiceException(ErrorCode.TRANSFER_FAILED, "ZMODEM transfer failed: " + e.getMessage()
-                    + kept(store, names));
+            return transfer(c, request, () -> receive(c, request, names, vehicleCommand, store, dir),
+                    () -> kept(store, names));
         } finally {
             deleteTree(dir);
         }
@@ -216,11 +224,7 @@ final class ZmodemCommands {
         } catch (IllegalArgumentException e) {
             throw new ServiceException(ErrorCode.BAD_FILE_NAME, e.getMessage());
         }
-        try {
-            return transfer(c, request, () -> send(c, request, file));
-        } catch (ZmodemException | EOFException e) {
-            throw new ServiceException(ErrorCode.TRANSFER_FAILED, "ZMODEM transfer failed: " + e.getMessage());
-        }
+        return transfer(c, request, () -> send(c, request, file), () -> "");
     }
 
     /** Sends one file to the vehicle's {@code zr}; used by zmodem:put and the to-vehicle folder. */

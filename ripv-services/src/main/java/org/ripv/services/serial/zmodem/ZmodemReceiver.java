@@ -117,10 +117,13 @@ public final class ZmodemReceiver {
         out.hex(ZHeader.flags(Zmodem.ZRINIT, Zmodem.CANFDX | Zmodem.CANOVIO | Zmodem.CANFC32, 0, 0, 0));
     }
 
-    /** The sender's first header: ZRINIT is sent at once and again on each silence (sz waits for it). */
+    /**
+     * The sender's first header. ZRINIT goes out only after a silence: sz announces itself with
+     * ZRQINIT, and a ZRINIT sent before the vehicle's shell has started sz would be read by the
+     * shell as the next command line.
+     */
     private ZHeader first() throws IOException {
         long deadline = System.nanoTime() + startTimeoutMillis * 1_000_000L;
-        zrinit();
         while (true) {
             checkCancel();
             try {
