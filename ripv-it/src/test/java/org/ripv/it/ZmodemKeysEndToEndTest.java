@@ -49,6 +49,8 @@ class ZmodemKeysEndToEndTest {
         ProcessBuilder pb = new ProcessBuilder(cmd).directory(dir.toFile()).redirectErrorStream(true)
                 .redirectOutput(log.toFile());
         pb.environment().put("HOME", dir.resolve("home").toString());
+        // Java takes its home from the password file, not $HOME: the CLI's known_hosts must be the test's own
+        pb.environment().put("JAVA_TOOL_OPTIONS", "-Duser.home=" + dir.resolve("home"));
         pb.environment().remove("DISPLAY");
         Process p = pb.start();
         started.add(p);
