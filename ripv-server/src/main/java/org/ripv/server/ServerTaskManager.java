@@ -36,7 +36,7 @@ final class ServerTaskManager extends TaskManager<IncomingServerMessage, Outgoin
 
     ServerTaskManager(RIPVServer server) {
         this.server = server;
-        this.commands = new ServerCommands(server);
+        this.commands = new ServerCommands(server, this::route);
     }
 
     @Override

@@ -174,7 +174,7 @@ final class Runner implements Runnable {
                     if (!workflows.uploadExists(step.names().get(0))) {
                         yield Outcome.failed("", "no file '" + step.names().get(0) + "' in the upload store any more");
                     }
-                    yield Outcome.judged(step, requests.send(e, clientId, mailbox, "ymodem:put " + step.names().get(0), step.timeout()));
+                    yield Outcome.judged(step, requests.send(e, clientId, mailbox, step.transferWord() + " " + step.names().get(0), step.timeout()));
                 }
                 case GET -> fetch.run(e, clientId, step, fetchedNow);
                 case WAIT_FOR -> requests.waitFor(step, waiter);
