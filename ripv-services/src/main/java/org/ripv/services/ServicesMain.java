@@ -57,6 +57,8 @@ public final class ServicesMain {
     }
 
     public static void main(String[] args) {
+        // Before anything makes an object stream: the JVM takes a filter factory only until then.
+        org.ripv.rmi.RmiSupport.filterProcess();
         System.exit(run(System.err, args));
     }
 }
