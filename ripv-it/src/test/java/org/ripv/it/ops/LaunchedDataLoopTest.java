@@ -26,7 +26,11 @@ import picocli.CommandLine;
  * The data loop as the README starts it: {@code ripv-server.jar}, and {@code ripv-services.jar}
  * as the serial, database and datavis services and as the glider simulator, each a process of its
  * own with the launchers' RMI filter factory. A {@code ymodem:get} of a DBA file is ingested on
- * its own, {@code positions} answers, and {@code vis:track} draws a JPEG.
+ * its own, {@code positions} answers, and {@code vis:track} draws a JPEG. Then a vehicle whose
+ * YMODEM is lrzsz ({@code sb}, on a socat pseudo-terminal) sends the glider's own binary files
+ * (issue 22): a {@code .sbd} whose sensor-list cache the shore lacks waits, and is ingested by
+ * itself when {@code ymodem:get} brings the {@code .cac}; the {@code .tbd} and its cache come
+ * together; the positions and a track plot follow.
  *
  * <p>Issue 22: the in-process tests (TestSystem) never install the process-wide filter the
  * launchers do, so they did not see it judge Derby's own object streams and refuse the Slocum
@@ -35,6 +39,7 @@ import picocli.CommandLine;
 class LaunchedDataLoopTest {
     static final Path ROOT = RipvScriptHelpTest.ROOT;
     static final Path SLOCUM = ROOT.resolve("ripv-services/src/test/resources/slocum");
+    static final Path SLOCUM_BINARY = ROOT.resolve("../shared/data/slocum-binary").normalize();
 
     @TempDir
     Path tmp;
@@ -131,6 +136,29 @@ class LaunchedDataLoopTest {
         return MAILBOX.matcher(mailboxes).results().filter(r -> r.group(1).equals(service)).findFirst().orElseThrow().group();
     }
 
+    /** A PicoDOS-like shell whose ys/yr are lrzsz's sb/rb, behind a socat pseudo-terminal at {@code pty}. */
+    Path lrzszVehicle(Path pty) throws Exception {
+        org.ripv.testing.Tools.require("socat", "sb", "rb");
+        Path dir = Files.createDirectories(tmp.resolve("lrzsz-vehicle"));
+        Path shared = SLOCUM_BINARY;
+        assumeTrue(Files.isDirectory(shared.resolve("realtime_raw")), "needs ../shared/data/slocum-binary beside the repository");
+        for (String f : List.of("rosie_713-2019-166-0-157.sbd", "rosie_713-2019-166-0-157.tbd")) {
+            Files.copy(shared.resolve("realtime_raw").resolve(f), dir.resolve(f));
+        }
+        Files.copy(shared.resolve("cac/6b016a2e.cac"), dir.resolve("6b016a2e.cac"));
+        Files.copy(shared.resolve("cac/426bd56d.cac"), dir.resolve("426bd56d.cac"));
+        Path script = ROOT.resolve("ripv-services/src/test/resources/org/ripv/services/serial/lrzsz-vehicle.sh");
+        Process socat = new ProcessBuilder("socat", "pty,raw,echo=0,link=" + pty, "SYSTEM:'exec bash " + script + " " + dir + "'")
+                .redirectErrorStream(true).redirectOutput(tmp.resolve("socat.log").toFile()).start();
+        started.add(socat);
+        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
+        while (!Files.exists(pty)) {
+            assertThat(System.nanoTime()).as("socat made " + pty).isLessThan(end);
+            Thread.sleep(50);
+        }
+        return dir;
+    }
+
     @Test
     void aFetchedDbaFileReachesPositionsAndATrackPlotWithEveryPieceLaunched() throws Exception {
         for (String m : List.of("ripv-server", "ripv-services")) {
@@ -156,13 +184,18 @@ class LaunchedDataLoopTest {
         PermitFile.setUser(data.resolve("permit.txt"), "alice", TestSystem.PASSWORD.toCharArray(), List.of("operators"), 1000);
         String secret = data.resolve("service.secret").toString();
         String server = "localhost:" + p[1];
+        Path pty = tmp.resolve("lrzsz-pty");
+        Path vehicle = lrzszVehicle(pty);
         launch("serial", "ripv-services", "serial", "--server", server, "--secret-file", secret,
-                "--link", "tcp://127.0.0.1:" + p[3]);
+                "--link", "tcp://127.0.0.1:" + p[3], "--link", pty.toString());
         launch("database", "ripv-services", "database", "--server", server, "--secret-file", secret);
         launch("datavis", "ripv-services", "datavis", "--server", server, "--secret-file", secret);
 
         String services = awaitServices("SerialPortServer", "DatabaseServer", "DataVisServer");
-        String serial = mailbox(services, "SerialPortServer");
+        String serial = MAILBOX.matcher(services).results().map(r -> r.group())
+                .filter(m -> m.startsWith("<SerialPortServer>") && !m.contains("lrzsz")).findFirst().orElseThrow();
+        String lrzsz = MAILBOX.matcher(services).results().map(r -> r.group())
+                .filter(m -> m.startsWith("<SerialPortServer>") && m.contains("lrzsz")).findFirst().orElseThrow();
         String db = mailbox(services, "DatabaseServer");
         String vis = mailbox(services, "DataVisServer");
 
@@ -180,6 +213,29 @@ class LaunchedDataLoopTest {
             assertThat(b[1] & 0xff).isEqualTo(0xD8);
             assertThat(javax.imageio.ImageIO.read(jpeg.toFile())).as("a decodable JPEG").isNotNull();
         }
+
+        // The glider's own files from an lrzsz vehicle: the .sbd first, without its cache.
+        String sbd = "rosie_713-2019-166-0-157.sbd";
+        assertThat(cli("use " + lrzsz, "ymodem:get " + sbd)).as(out()).isZero();
+        assertThat(out()).as(out()).contains("received " + sbd).contains(sbd + ": kept, waiting for the sensor list 6b016a2e.cac");
+        assertThat(cli("use " + lrzsz, "ymodem:get 6b016a2e.cac rosie_713-2019-166-0-157.tbd 426bd56d.cac")).as(out()).isZero();
+        assertThat(out()).as(out()).contains("6b016a2e.cac: sensor list 6b016a2e kept in the cache")
+                .contains(sbd + " (waited for 6b016a2e.cac): rosie_713-2019-166-0-157: 365 rows, 27 sensors")
+                .contains("rosie_713-2019-166-0-157: 642 rows, 9 sensors");
+        // the same file again is stored once
+        assertThat(cli("use " + lrzsz, "ymodem:get " + sbd)).as(out()).isZero();
+        assertThat(out()).as(out()).contains("rosie_713-2019-166-0-157: stored already");
+        assertThat(cli("use " + db, "SELECT lat, lon, source FROM positions WHERE vehicle = 'rosie_713' ORDER BY time_utc"
+                + " FETCH FIRST 1 ROWS ONLY")).as(out()).isZero();
+        assertThat(out()).containsPattern("51\\.58\\d*\\s*\\|\\s*-128\\.31\\d*");
+        assertThat(cli("use " + vis, "vis:track rosie_713")).as(out()).isZero();
+        assertThat(out()).contains("track-rosie_713.jpg");
+        try (var found = Files.walk(data)) {
+            Path jpeg = found.filter(f -> f.getFileName().toString().equals("track-rosie_713.jpg")).findFirst().orElseThrow();
+            assertThat(javax.imageio.ImageIO.read(jpeg.toFile())).as("a decodable JPEG").isNotNull();
+        }
+        assertThat(Files.list(vehicle).count()).isPositive();
+
         assertThat(log("database")).doesNotContain("REJECTED").doesNotContain("Warning: RMI replies");
         assertThat(log("serial") + log("datavis")).doesNotContain("Warning: RMI replies");
     }

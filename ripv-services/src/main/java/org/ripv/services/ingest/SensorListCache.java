@@ -36,8 +36,13 @@ public final class SensorListCache {
 
     /** True for a name such as {@code 6b016a2e.cac} or {@code 00CDA96E.CAC}. */
     public static boolean isCacheName(String name) {
-        String n = name.toLowerCase(Locale.ROOT);
+        String n = baseName(name).toLowerCase(Locale.ROOT);
         return n.endsWith(".cac") && CRC.matcher(n.substring(0, n.length() - 4)).matches();
+    }
+
+    /** The name without a folder ({@code TTY1/6B016A2E.CAC} as the server stores fetched files). */
+    static String baseName(String name) {
+        return name.substring(Math.max(name.lastIndexOf('/'), name.lastIndexOf('\\')) + 1);
     }
 
     /** The lines of the list with this CRC, if the cache holds it. */
@@ -84,7 +89,8 @@ public final class SensorListCache {
      *
      * @throws IllegalArgumentException quoting the bad name or line
      */
-    public String accept(String name, byte[] data) throws IOException {
+    public String accept(String path, byte[] data) throws IOException {
+        String name = baseName(path);
         if (!isCacheName(name)) {
             throw new IllegalArgumentException("'" + name + "' is not a cache file name (8 hex digits of the CRC, then .cac)");
         }
