@@ -108,7 +108,7 @@ class DeadlineSocketFactoryTest {
     }
 
     /** Answers heartbeats only. */
-    static final class Probe implements GenericRMIInterface {
+    static class Probe implements GenericRMIInterface {
         @Override public String challenge(String n) { throw new UnsupportedOperationException(); }
         @Override public String register(org.ripv.messages.ServiceDescriptor d, GenericRMIInterface s, String secret) { throw new UnsupportedOperationException(); }
         @Override public void serviceReply(String t, org.ripv.messages.OutgoingServiceMessage r) { throw new UnsupportedOperationException(); }

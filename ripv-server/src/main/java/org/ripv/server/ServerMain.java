@@ -334,6 +334,8 @@ public final class ServerMain implements Callable<Integer> {
     }
 
     public static void main(String[] args) {
+        // Before anything makes an object stream: the JVM takes a filter factory only until then.
+        org.ripv.rmi.RmiSupport.filterProcess();
         System.exit(run(args));
     }
 }
