@@ -258,6 +258,11 @@ public final class Workflows implements AutoCloseable {
         return host.onCall(mailbox);
     }
 
+    /** True for a MailBox that exists or has existed ({@link WorkflowHost#knownMailbox}). */
+    boolean knownMailbox(String mailbox) {
+        return host.knownMailbox(mailbox);
+    }
+
     /** The run in progress for a MailBox, or null. */
     Runner running(String mailbox) {
         return runners.get(mailbox);
