@@ -269,6 +269,7 @@ final class ServerCommands {
                 if (w.length != 4) {
                     throw new IllegalArgumentException("usage: " + c.usage());
                 }
+                DownloadRights.check(files, server.permits(), user, w[1]);
                 long offset = number(w[2], "OFFSET");
                 int length = (int) Math.min(MAX_DOWNLOAD_CHUNK, number(w[3], "LENGTH"));
                 Object[] chunk = files.readDownload(w[1], offset, length);
@@ -337,6 +338,9 @@ final class ServerCommands {
     }
 
     static String describe(MailboxStatus s) {
+        if (ServiceQueries.HIDDEN.equals(s.detail())) {
+            return s.address() + ": " + s.detail();
+        }
         String what = !s.running().isEmpty() ? "busy: " + s.running()
                 : (s.available() ? "available" : "not available") + (s.busy() ? ", busy" : "");
         return s.address() + ": " + what

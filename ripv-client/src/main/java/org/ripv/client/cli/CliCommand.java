@@ -184,11 +184,11 @@ public final class CliCommand implements Callable<Integer> {
         }
     }
 
-    /** Connects to the first server of the list that answers; each is its own host to trust (a standby has its own certificate). */
+    /** Connects to the first server of the list that answers; a standby is trusted only as Tls#trustOnFirstUse says for lists. */
     private ClientSocketHandler connect(org.ripv.failover.ServerList servers, javax.net.SocketFactory trusted) throws IOException {
         return new org.ripv.client.handlers.Failover(servers, err::println).connect((h, p) -> ClientSocketHandler.connect(h, p,
                 plain ? javax.net.SocketFactory.getDefault() : trusted != null ? trusted
-                        : Tls.trustOnFirstUse(h, p, knownHosts != null ? knownHosts : Tls.defaultKnownHosts(), err::println),
+                        : Tls.trustOnFirstUse(h, p, knownHosts != null ? knownHosts : Tls.defaultKnownHosts(), err::println, servers),
                 servers.size() > 1 ? org.ripv.client.handlers.Failover.CONNECT : Duration.ofSeconds(10)));
     }
 

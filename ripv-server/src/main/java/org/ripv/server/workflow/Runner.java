@@ -6,7 +6,6 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Optional;
 import java.util.Set;
-import java.util.regex.Pattern;
 import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.VehicleEvent;
 import org.slf4j.Logger;
@@ -126,7 +125,7 @@ final class Runner implements Runnable {
                 }
                 // A wait-for listens from before the step is shown as running, so no line slips past it.
                 Workflows.LineWaiter waiter = step.kind() == Step.Kind.WAIT_FOR
-                        ? workflows.waitFor(mailbox, Pattern.compile(step.text())) : null;
+                        ? workflows.waitFor(mailbox, org.ripv.patterns.UserPattern.compile("wait-for", step.text()).pattern()) : null;
                 long t0;
                 Outcome o;
                 try {
