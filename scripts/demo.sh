@@ -26,6 +26,8 @@ Environment:
   RIPV_HTTP_PORT       landing page port (default 8080)
   RIPV_GLIDER_PORT     the simulated glider's TCP port (default 5555)
   RIPV_OUTBOUND_PORT   where services behind NAT connect out (default 4446; -1: none)
+  RIPV_GLIDER_DIALOG   picodos (default) or gliderdos: a Slocum's surface dialog, control keys and GliderDOS
+  RIPV_GLIDER_LINE     unset, or iridium: the glider's calls at 2,400 baud, 1 s latency, dropped after 60 s
   RIPV_DEMO_HEADLESS=1 no GUI even with a display
 USAGE
 }
@@ -56,6 +58,17 @@ OUTBOUND="${RIPV_OUTBOUND_PORT:-4446}"
 GLIDER_NAME="${RIPV_GLIDER_NAME:-sim01}"
 DIVE="${RIPV_DIVE_SECONDS:-30}"
 SURFACE="${RIPV_SURFACE_SECONDS:-60}"
+GLIDER_DIALOG="${RIPV_GLIDER_DIALOG:-picodos}"
+case "$GLIDER_DIALOG" in
+  picodos) LINK_PROMPT="" ;;
+  gliderdos) LINK_PROMPT=",prompt-regex=GliderDOS[^>]*>|C:\\\\>" ;;
+  *) echo "demo: RIPV_GLIDER_DIALOG '$GLIDER_DIALOG' is neither picodos nor gliderdos" >&2; exit 2 ;;
+esac
+case "${RIPV_GLIDER_LINE:-}" in
+  "") GLIDER_LINE=() ;;
+  iridium) GLIDER_LINE=(--baud 2400 --latency 1s --drop-after 60s) ;;
+  *) echo "demo: RIPV_GLIDER_LINE '$RIPV_GLIDER_LINE' is not iridium (or unset)" >&2; exit 2 ;;
+esac
 # Per-user files (the clients' known_hosts and preferences) go under $HOME, as with ./ripv.
 USER_HOME=()
 [ -n "${HOME:-}" ] && USER_HOME=(-Duser.home="$HOME")
@@ -173,7 +186,7 @@ done
 
 echo "demo: starting the SerialPortServer (glider $GLIDER_NAME calls in on port $GLIDER), DatabaseServer and DataVisServer" >&2
 "$JAVA" "${USER_HOME[@]}" -Dripv.host=localhost -jar "$(jar ripv-services)" serial --server "$HERE:$REGISTRY" --secret-file "$secret" \
-  --link "listen://$BIND:$GLIDER,name=$GLIDER_NAME" --carrier ignore --no-enumerate >"$DEMO/logs/serial.log" 2>&1 &
+  --link "listen://$BIND:$GLIDER,name=$GLIDER_NAME$LINK_PROMPT" --carrier ignore --no-enumerate >"$DEMO/logs/serial.log" 2>&1 &
 pids+=($!)
 # not wait_port: a connection to the glider's port would be taken for a call
 for i in $(seq 1 150); do
@@ -183,7 +196,8 @@ done
 
 echo "demo: the simulated glider $GLIDER_NAME calls in for $SURFACE s, dives for $DIVE s, and calls again" >&2
 "$JAVA" "${USER_HOME[@]}" -jar "$(jar ripv-services)" simulator --call "$HERE:$GLIDER" --name "$GLIDER_NAME" \
-  --dive-seconds "$DIVE" --surface-seconds "$SURFACE" --dir "$DEMO/glider" >"$DEMO/logs/simulator.log" 2>&1 &
+  --dive-seconds "$DIVE" --surface-seconds "$SURFACE" --dir "$DEMO/glider" --dialog "$GLIDER_DIALOG" \
+  ${GLIDER_LINE[@]+"${GLIDER_LINE[@]}"} >"$DEMO/logs/simulator.log" 2>&1 &
 pids+=($!)
 "$JAVA" "${USER_HOME[@]}" -Dripv.host=localhost -jar "$(jar ripv-services)" database --server "$HERE:$REGISTRY" --secret-file "$secret" \
   --data "$DEMO/database" >"$DEMO/logs/database.log" 2>&1 &
