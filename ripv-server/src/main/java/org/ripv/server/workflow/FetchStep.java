@@ -67,7 +67,7 @@ final class FetchStep {
             } catch (IOException x) {
                 throw new StepStop.Failed("could not read the list of fetched files: " + x.getMessage(), out.toString());
             }
-            OutgoingServerMessage r = requests.send(e, clientId, mailbox, "ymodem:get " + name, step.timeout());
+            OutgoingServerMessage r = requests.send(e, clientId, mailbox, step.transferWord() + " " + name, step.timeout());
             Outcome o = Outcome.judged(step, r);
             out.append(r.footer().replyText().strip()).append('\n');
             // A file that arrived but was not ingested is stored and recorded; the step fails once

@@ -6,7 +6,6 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Optional;
 import java.util.Set;
-import java.util.regex.Pattern;
 import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.VehicleEvent;
 import org.slf4j.Logger;
@@ -128,7 +127,7 @@ final class Runner implements Runnable {
                 }
                 // A wait-for listens from before the step is shown as running, so no line slips past it.
                 Workflows.LineWaiter waiter = step.kind() == Step.Kind.WAIT_FOR
-                        ? workflows.waitFor(mailbox, Pattern.compile(step.text())) : null;
+                        ? workflows.waitFor(mailbox, org.ripv.patterns.UserPattern.compile("wait-for", step.text()).pattern()) : null;
                 long t0;
                 Outcome o;
                 try {
@@ -182,7 +181,7 @@ final class Runner implements Runnable {
                     if (!workflows.uploadExists(step.names().get(0))) {
                         yield Outcome.failed("", "no file '" + step.names().get(0) + "' in the upload store any more");
                     }
-                    yield Outcome.judged(step, requests.send(e, clientId, mailbox, "ymodem:put " + step.names().get(0), step.timeout()));
+                    yield Outcome.judged(step, requests.send(e, clientId, mailbox, step.transferWord() + " " + step.names().get(0), step.timeout()));
                 }
                 case GET -> fetch.run(e, clientId, step, fetchedNow, tally);
                 case WAIT_FOR -> requests.waitFor(step, waiter);
