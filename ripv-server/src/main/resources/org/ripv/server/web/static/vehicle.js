@@ -21,9 +21,12 @@ function line(text, cls, time) {
   return div;
 }
 
+// Events that say something did not happen as asked, in the error colour (a run DONE_WITH_ERRORS is not DONE).
+const BAD_EVENTS = new Set(['ALERT', 'LINK_LOST', 'TRANSFER_FAILED', 'WORKFLOW_FAILED', 'WORKFLOW_DONE_WITH_ERRORS']);
+
 function entryLine(e) {
   const text = e.kind === 'COMMAND' ? `${e.user}> ${e.text}` : e.kind === 'EVENT' ? `[${e.event}] ${e.text}` : e.text;
-  return line(text, e.kind, e.time);
+  return line(text, e.kind === 'EVENT' && BAD_EVENTS.has(e.event) ? 'EVENT error' : e.kind, e.time);
 }
 
 function append(nodes) {
