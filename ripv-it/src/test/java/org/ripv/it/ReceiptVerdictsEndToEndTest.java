@@ -106,8 +106,8 @@ class ReceiptVerdictsEndToEndTest {
         String strict = receipts.substring(receipts.indexOf("receipt: workflow 2"));
         assertThat(night).as(night)
                 .contains("step 1/3 (line 1) ymodem:get short_header.mrg: FAILED (continue-on-error)")
-                .contains("error: fetched 1, ingested 0 of 1: short_header.mrg: not ingested (BAD_REQUEST): "
-                        + "ru29/short_header.mrg: refused, nothing stored: line 11")
+                .contains("error: fetched 1, ingested 0 of 1: short_header.mrg: not ingested (BAD_REQUEST): ")
+                .contains("short_header.mrg: refused, nothing stored: line 11")
                 .contains("step 2/3 (line 2) ymodem:get cp_388_2016_012_0_0.mrg: OK")
                 .contains("step 3/3 (line 3) notify ru29: {fetched} fetched, {ingested} ingested, {failed} step(s) failed: OK")
                 .contains("output: ru29: 2 fetched, 1 ingested, 1 step(s) failed")
@@ -115,7 +115,7 @@ class ReceiptVerdictsEndToEndTest {
                 .contains("result: DONE_WITH_ERRORS")
                 .contains("error: 1 step(s) failed (continue-on-error)")
                 .doesNotContain("result: DONE at");
-        assertThat(night).containsPattern("file ru29/short_header.mrg \\d+ bytes sha256"); // fetched, kept, recorded
+        assertThat(night).containsPattern("file ru29\\S*/short_header.mrg \\d+ bytes sha256"); // fetched, kept, recorded
         assertThat(strict).as(strict)
                 .contains("step 1/2 (line 1) ymodem:get short_header.mrg all: FAILED")
                 .contains("fetched 1, ingested 0 of 1")

@@ -152,6 +152,12 @@ public record LinkSettings(String device, int baud, int dataBits, Parity parity,
                 commandTimeout, carrier, sendCommand, receiveCommand, every, ymodem, maxCommand, interrupt);
     }
 
+    /** With another prompt, e.g. GliderDOS's and PicoDOS's for a Slocum (prompt-regex= on the command line). */
+    public LinkSettings withPrompt(Pattern newPrompt) {
+        return new LinkSettings(device, baud, dataBits, parity, stopBits, lineEnding, newPrompt, idleTimeout,
+                commandTimeout, carrier, sendCommand, receiveCommand, reconnectEvery, ymodem, maxCommand, interrupt);
+    }
+
     public LinkSettings withYmodem(YmodemConfig config) {
         return new LinkSettings(device, baud, dataBits, parity, stopBits, lineEnding, prompt, idleTimeout,
                 commandTimeout, carrier, sendCommand, receiveCommand, reconnectEvery, config, maxCommand, interrupt);
