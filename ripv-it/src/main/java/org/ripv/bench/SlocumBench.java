@@ -105,9 +105,8 @@ public final class SlocumBench {
         int ingestRows = option(args, "--ingest-rows", 20_000);
         Path dir = Files.createTempDirectory("ripv-slocumbench");
         try {
-            System.out.printf(Locale.ROOT, "SlocumBench: %s %s, %d cores, load average %.2f (the machine may be shared)%n",
-                    System.getProperty("java.vm.name"), System.getProperty("java.version"),
-                    Runtime.getRuntime().availableProcessors(), ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage());
+            System.out.printf(Locale.ROOT, "SlocumBench: %s %s (the machine may be shared)%n%s%n",
+                    System.getProperty("java.vm.name"), System.getProperty("java.version"), CpuClock.machineLine());
             byte[] plain = generate((long) mb << 20, 0, 1);
             byte[] packed = Lz4Blocks.compress(plain, 16_384);
             Path sbd = Files.write(dir.resolve("bench.sbd"), plain);
@@ -117,6 +116,7 @@ public final class SlocumBench {
             decodeSpeed("plain .sbd", sbd, runs);
             decodeSpeed("LZ4 .scd (16 KiB blocks)", scd, runs);
             ingest(dir, ingestRows, runs);
+            System.out.println(CpuClock.machineLine());
         } finally {
             try (var s = Files.walk(dir)) {
                 for (Path p : s.sorted(java.util.Comparator.reverseOrder()).toList()) {

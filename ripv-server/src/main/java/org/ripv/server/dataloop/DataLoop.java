@@ -59,6 +59,20 @@ public final class DataLoop {
     }
 
     /**
+     * The error for a command whose file is not in the upload directory: for {@code vis:WORD} to a
+     * DataVisServer (not {@code vis:file}, whose file is a download), the plot commands are listed,
+     * since a mistyped one is the likelier mistake; otherwise {@code noFile} as it is.
+     */
+    public static String noSuchFile(String sid, String body, String noFile) {
+        String b = body.strip();
+        if (!sid.equals(Ids.SID_DATAVIS) || !b.regionMatches(true, 0, "vis:", 0, 4)) {
+            return noFile;
+        }
+        String word = b.substring(4).split("\\s+", 2)[0];
+        return word.isEmpty() || word.equalsIgnoreCase("file") ? noFile : PlotRequests.notAPlot(word, noFile);
+    }
+
+    /**
      * Looks at a reply whose files the server has just stored.
      *
      * @param reply the reply as it would go to the client
@@ -89,25 +103,27 @@ public final class DataLoop {
         }
         String database = database();
         String user = reply.header().origin().user();
+        int fetched = files.size();
         if (database == null) {
             log.warn("not ingesting {} for {}: no DatabaseServer is registered", names, user);
-            send.accept(append(reply, "not ingested: no DatabaseServer is registered"));
+            send.accept(IngestVerdict.failed(reply, fetched, 0, "not ingested: no DatabaseServer is registered"));
             return true;
         }
         String what = names.size() == 1 ? names.get(0) : names.size() + " Slocum files";
         send.accept(progress(reply, "ingesting " + what + " into " + database));
         calls.call(database, "ingest " + String.join(" ", names), user, List.of(INGEST_ROLE), null, f -> { })
                 .whenComplete((f, e) -> {
-                    String text;
+                    OutgoingServerMessage verdict;
                     if (e != null) {
-                        text = "not ingested: " + e;
+                        verdict = IngestVerdict.failed(reply, fetched, 0, "not ingested: " + e);
                     } else if (f.status() == Status.OK) {
-                        text = "ingested into " + database + ":\n" + f.replyText();
+                        verdict = IngestVerdict.ingested(reply, fetched, names.size(), database, f.replyText());
                     } else {
-                        text = "not ingested (" + f.errorCode() + "): " + f.replyText();
+                        verdict = IngestVerdict.failed(reply, fetched, names.size() - IngestVerdict.refused(f.replyText()),
+                                "not ingested (" + f.errorCode() + "): " + f.replyText());
                     }
-                    log.info("automatic ingest of {} for {}: {}", names, user, text.replace('\n', ' '));
-                    send.accept(append(reply, text));
+                    log.info("automatic ingest of {} for {}: {}", names, user, verdict.footer().replyText().replace('\n', ' '));
+                    send.accept(verdict);
                 });
         return true;
     }
@@ -132,11 +148,6 @@ public final class DataLoop {
     private static OutgoingServerMessage progress(OutgoingServerMessage reply, String text) {
         Footer f = reply.footer();
         return new OutgoingServerMessage(reply.header(), new Footer(f.serviceId(), Status.PROGRESS, null, f.route(), text, null));
-    }
-
-    private static OutgoingServerMessage append(OutgoingServerMessage reply, String text) {
-        Footer f = reply.footer();
-        return new OutgoingServerMessage(reply.header(), f.withText(f.replyText().isEmpty() ? text : f.replyText() + "\n" + text));
     }
 
     /** True when a file starts with the DBA label line. */
