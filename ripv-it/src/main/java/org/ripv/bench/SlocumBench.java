@@ -105,8 +105,8 @@ public final class SlocumBench {
         int ingestRows = option(args, "--ingest-rows", 20_000);
         Path dir = Files.createTempDirectory("ripv-slocumbench");
         try {
-            System.out.printf(Locale.ROOT, "SlocumBench: %s %s (the machine may be shared)%n%s%n",
-                    System.getProperty("java.vm.name"), System.getProperty("java.version"), CpuClock.machineLine());
+            System.out.printf(Locale.ROOT, "SlocumBench: %s %s (the machine may be shared; its load is on the machine: lines)%n",
+                    System.getProperty("java.vm.name"), System.getProperty("java.version"));
             byte[] plain = generate((long) mb << 20, 0, 1);
             byte[] packed = Lz4Blocks.compress(plain, 16_384);
             Path sbd = Files.write(dir.resolve("bench.sbd"), plain);
