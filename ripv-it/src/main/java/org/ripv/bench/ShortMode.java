@@ -34,6 +34,7 @@ final class ShortMode {
             Map.entry("calls", List.of("--vehicles", "4", "--spread", "2", "--surface", "3")),
             Map.entry("hosts", List.of("--requests", "30", "--takeovers", "1")),
             Map.entry("store", List.of("--entries", "2000")),
+            Map.entry("slocum", List.of("--mb", "1", "--runs", "1", "--ingest-rows", "300")),
             Map.entry("workflow", List.of("--files", "2", "--get-bytes", "8192", "--put-bytes", "4096", "--report-only")));
 
     private ShortMode() {}
