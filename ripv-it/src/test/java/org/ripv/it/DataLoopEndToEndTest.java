@@ -204,12 +204,12 @@ class DataLoopEndToEndTest {
                 "vis:sql SELECT time_utc, depth FROM depths WHERE vehicle = 'unit_363' ORDER BY time_utc")).as(out()).isZero();
         assertThat(out()).contains("depth-unit_363.jpg").contains("profile-unit_363-sci_water_temp.jpg")
                 .contains("sql-plot.jpg");
-        jpeg(sys.downloadDir().resolve("TTY1/depth-unit_363.jpg"));
+        jpeg(stored("depth-unit_363.jpg"));
 
         // a downloaded DBA file plotted directly
         assertThat(cli("use " + VIS, "vis:file unit_363_2013_245_6_6.mrg x=m_present_time y=m_depth")).as(out()).isZero();
         assertThat(out()).contains("unit_363_2013_245_6_6-m_depth.jpg");
-        jpeg(sys.downloadDir().resolve("TTY1/unit_363_2013_245_6_6-m_depth.jpg"));
+        jpeg(stored("unit_363_2013_245_6_6-m_depth.jpg"));
         assertThat(cli("use " + VIS, "vis:file short_header.mrg x=m_present_time y=m_depth")).isNotZero();
         assertThat(out()).contains("not a usable DBA file: line 11");
 
