@@ -176,13 +176,14 @@ class DataLoopEndToEndTest {
     }
 
     static final String VIS = "<DataVisServer>::<localhost>TTY1";
+    static final String VIS_FOLDER = org.ripv.server.files.FileStore.folderFor(VIS);
 
     @Test
     @Order(6)
     void plotsFromTheDatabase() throws Exception {
         assertThat(cli("use " + VIS, "vis:track cp_388", "?dlfiles")).as(out()).isZero();
         assertThat(out()).contains("plotted 2 rows").contains("track-cp_388.jpg");
-        assertThat(jpeg(sys.downloadDir().resolve("TTY1/track-cp_388.jpg")).getWidth()).isEqualTo(800);
+        assertThat(jpeg(sys.downloadDir().resolve(VIS_FOLDER + "/track-cp_388.jpg")).getWidth()).isEqualTo(800);
 
         assertThat(cli("use " + VIS, "vis:track unit_363 since=2013-09-05T03:00:00Z")).as(out()).isZero();
         assertThat(out()).contains("track-unit_363.jpg");
@@ -190,12 +191,12 @@ class DataLoopEndToEndTest {
                 "vis:sql SELECT time_utc, depth FROM depths WHERE vehicle = 'unit_363' ORDER BY time_utc")).as(out()).isZero();
         assertThat(out()).contains("depth-unit_363.jpg").contains("profile-unit_363-sci_water_temp.jpg")
                 .contains("sql-plot.jpg");
-        jpeg(sys.downloadDir().resolve("TTY1/depth-unit_363.jpg"));
+        jpeg(sys.downloadDir().resolve(VIS_FOLDER + "/depth-unit_363.jpg"));
 
         // a downloaded DBA file plotted directly
         assertThat(cli("use " + VIS, "vis:file unit_363_2013_245_6_6.mrg x=m_present_time y=m_depth")).as(out()).isZero();
         assertThat(out()).contains("unit_363_2013_245_6_6-m_depth.jpg");
-        jpeg(sys.downloadDir().resolve("TTY1/unit_363_2013_245_6_6-m_depth.jpg"));
+        jpeg(sys.downloadDir().resolve(VIS_FOLDER + "/unit_363_2013_245_6_6-m_depth.jpg"));
         assertThat(cli("use " + VIS, "vis:file short_header.mrg x=m_present_time y=m_depth")).isNotZero();
         assertThat(out()).contains("not a usable DBA file: line 11");
 
