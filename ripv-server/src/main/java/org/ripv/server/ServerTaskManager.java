@@ -36,7 +36,7 @@ final class ServerTaskManager extends TaskManager<IncomingServerMessage, Outgoin
 
     ServerTaskManager(RIPVServer server) {
         this.server = server;
-        this.commands = new ServerCommands(server);
+        this.commands = new ServerCommands(server, this::route);
     }
 
     @Override
@@ -106,7 +106,7 @@ final class ServerTaskManager extends TaskManager<IncomingServerMessage, Outgoin
         } catch (FileTooLargeException e) {
             return error(request, sid, ErrorCode.TOO_LARGE, e.getMessage());
         } catch (NoSuchFileException e) {
-            return error(request, sid, ErrorCode.BAD_FILE_NAME, e.getMessage());
+            return error(request, sid, ErrorCode.BAD_FILE_NAME, org.ripv.server.dataloop.DataLoop.noSuchFile(sid, h.body(), e.getMessage()));
         } catch (IllegalArgumentException e) {
             return error(request, sid, ErrorCode.BAD_FILE_NAME, e.getMessage());
         } catch (IOException e) {

@@ -42,12 +42,39 @@ final class ServiceQueries {
     /** One service's answer: its MailBoxes, or why there are none. */
     private record Answer(ServiceReference ref, List<MailboxStatus> boxes, String failure) {}
 
-    void mailboxes(IncomingServerMessage request) {
+    /** Asks every registered service for its MailBoxes, each with the deadline; completes when all have answered or failed. */
+    private List<CompletableFuture<Answer>> askAll() {
         List<CompletableFuture<Answer>> asks = new ArrayList<>();
         for (ServiceReference ref : server.services()) {
             asks.add(ref.mailboxes(server.checkers(), deadline)
                     .handle((boxes, e) -> new Answer(ref, boxes, e == null ? null : failure(ref, e))));
         }
+        return asks;
+    }
+
+    /** The MailBoxes the services list now, and the services that did not answer in time. */
+    record Known(List<String> addresses, List<String> notAnswering) {}
+
+    /** {@link Known}, to resolve vehicle names ({@link org.ripv.server.vehicles.VehicleNames}); never fails. */
+    CompletableFuture<Known> known() {
+        List<CompletableFuture<Answer>> asks = askAll();
+        return CompletableFuture.allOf(asks.toArray(CompletableFuture[]::new)).handle((v, e) -> {
+            List<String> addresses = new ArrayList<>();
+            List<String> silent = new ArrayList<>();
+            for (CompletableFuture<Answer> f : asks) {
+                Answer a = f.join();
+                if (a.failure() != null) {
+                    silent.add(a.ref().descriptor().name());
+                } else {
+                    a.boxes().forEach(s -> addresses.add(s.address()));
+                }
+            }
+            return new Known(addresses, silent);
+        });
+    }
+
+    void mailboxes(IncomingServerMessage request) {
+        List<CompletableFuture<Answer>> asks = askAll();
         CompletableFuture.allOf(asks.toArray(CompletableFuture[]::new)).whenComplete((v, e) -> {
             List<MailboxStatus> all = new ArrayList<>();
             StringBuilder text = new StringBuilder();

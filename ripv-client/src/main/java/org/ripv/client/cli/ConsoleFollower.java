@@ -171,8 +171,11 @@ public final class ConsoleFollower implements ClientSocketHandler.Listener {
     @Override
     public void onReply(OutgoingServerMessage reply) {
         String fid = reply.footer().serviceId();
-        boolean mine = fid.equals(Ids.FID_CONSOLE)
-                || fid.equals(Ids.FID_WATCH) && reply.status() == Status.OK && reply.header().body().trim().endsWith(mailbox);
+        boolean watched = fid.equals(Ids.FID_WATCH) && reply.status() == Status.OK;
+        if (watched && reply.footer().result() instanceof ConsoleBatch b && reply.header().body().trim().endsWith(" " + b.mailbox())) {
+            mailbox = b.mailbox(); // the server's full address for the name given (?watch sim01)
+        }
+        boolean mine = fid.equals(Ids.FID_CONSOLE) || watched && reply.header().body().trim().endsWith(mailbox);
         if (mine && reply.footer().result() instanceof ConsoleBatch b && b.mailbox().equals(mailbox)) {
             synchronized (out) {
                 for (ConsoleEntry e : b.entries()) {

@@ -85,7 +85,8 @@ public final class ClientSocketHandler implements AutoCloseable {
         this.out = new DataOutputStream(new BufferedOutputStream(socket.getOutputStream(), 64 * 1024));
         this.in = new DataInputStream(new BufferedInputStream(socket.getInputStream(), 64 * 1024));
         FrameCodec.writeGreeting(out);
-        FrameCodec.readGreeting(in);
+        FrameCodec.readGreeting(in); // within the connect's deadline: a web server never answers it
+        socket.setSoTimeout(0);
         this.reader = new Thread(this::readLoop, "ripv-client-reader-" + server);
         reader.setDaemon(true);
         reader.start();
@@ -136,14 +137,28 @@ public final class ClientSocketHandler implements AutoCloseable {
         try {
             s.setTcpNoDelay(true);
             s.connect(new InetSocketAddress(host, port), (int) timeout.toMillis());
+        } catch (java.net.ConnectException e) {
+            s.close();
+            throw new IOException("nothing listens on " + host + ":" + port + " (" + e.getMessage()
+                    + "): is the server running, and is " + port + " its client port (4444 unless started with --port)?", e);
+        } catch (IOException | RuntimeException e) {
+            s.close();
+            throw e;
+        }
+        try {
+            // A short connect deadline (a server list) must not cut a slow first handshake or greeting short.
+            s.setSoTimeout((int) Math.max(timeout.toMillis(), 10_000));
             if (s instanceof javax.net.ssl.SSLSocket tls) {
-                // A short connect deadline (a server list) must not cut a slow first handshake short.
-                s.setSoTimeout((int) Math.max(timeout.toMillis(), 10_000));
                 handshake(tls);
             }
-            s.setSoTimeout(0);
             return new ClientSocketHandler(s, host + ":" + port, FrameCodec.DEFAULT_MAX_FRAME);
-        } catch (IOException | RuntimeException e) {
+        } catch (Tls.RefusedCertificate e) {
+            s.close();
+            throw e;
+        } catch (IOException e) {
+            s.close();
+            throw WrongPort.explain(host, port, s instanceof javax.net.ssl.SSLSocket, e);
+        } catch (RuntimeException e) {
             s.close();
             throw e;
         }
@@ -162,8 +177,7 @@ public final class ClientSocketHandler implements AutoCloseable {
                     throw new IOException(unpinned.getMessage(), e);
                 }
             }
-            throw new IOException("TLS handshake failed: " + e.getMessage()
-                    + " (is the server started with --plain? then connect with --plain too)", e);
+            throw new IOException("TLS handshake failed: " + e.getMessage(), e);
         }
     }
 

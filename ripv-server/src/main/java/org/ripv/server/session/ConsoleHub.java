@@ -167,8 +167,10 @@ public final class ConsoleHub implements AutoCloseable {
         }
         List<String> mine = claimed(servicePrefix, mailboxes);
         synchronized (order) {
-            return lose(mine.stream().filter(m -> states.onCallBefore(m, started)).toList(),
+            List<ConsoleEntry> lost = lose(mine.stream().filter(m -> states.onCallBefore(m, started)).toList(),
                     "the service restarted during the call");
+            mine.forEach(m -> states.runStarted(m, started)); // calls are counted per run of the service, as it counts them
+            return lost;
         }
     }
 
