@@ -148,7 +148,7 @@ class DataLoopEndToEndTest {
         assertThat(cli("use " + serial, "ymodem:get short_header.mrg")).as(out()).isNotZero();
         assertThat(out()).contains("received short_header.mrg").contains("fetched 1, ingested 0: not ingested")
                 .contains("DATABASE_ERROR");
-        assertThat(sys.downloadDir().resolve(serial.substring(serial.lastIndexOf('>') + 1)).resolve("short_header.mrg"))
+        assertThat(sys.downloadDir().resolve(org.ripv.server.files.FileStore.folderFor(serial)).resolve("short_header.mrg"))
                 .exists();
         assertThat(out()).contains("not ingested").contains("short_header.mrg: refused, nothing stored: line 11: the file"
                 + " ends in the header after 10 of 14 tag lines");
