@@ -12,12 +12,10 @@ import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
-import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
-import org.ripv.it.Netns;
-import org.ripv.it.Postgres;
+import org.ripv.it.NetnsAssume;
 import org.ripv.testing.Tools;
 
 /**
@@ -87,14 +85,9 @@ class EveryBenchmarkRunsTest {
     private static void needs(String name) {
         switch (name) {
             case "hosts" -> {
-                String why = Netns.unusable();
-                if (why == null) {
-                    why = Postgres.unusable();
-                }
-                if (why == null && !Netns.onPath("ss")) {
-                    why = "needs ss (iproute2)";
-                }
-                skipOrFail(why);
+                NetnsAssume.usable();
+                NetnsAssume.postgres();
+                Tools.require("ss");
             }
             // These run without the tool (their lrzsz, Octave or PostgreSQL rows say "skipped"); CI wants those rows.
             case "ymodem" -> requiredInCi(Tools.onPath("sb") && Tools.onPath("rb") && Tools.onPath("socat"), "lrzsz and socat");
@@ -108,15 +101,5 @@ class EveryBenchmarkRunsTest {
         if (!present && System.getenv("RIPV_REQUIRE_TOOLS") != null) {
             throw new AssertionError("RIPV_REQUIRE_TOOLS is set but " + what + " is missing, so ripv bench would skip its rows");
         }
-    }
-
-    private static void skipOrFail(String why) {
-        if (why == null) {
-            return;
-        }
-        if (System.getenv("RIPV_REQUIRE_TOOLS") != null) {
-            throw new AssertionError("RIPV_REQUIRE_TOOLS is set but ripv bench " + why);
-        }
-        Assumptions.abort(why);
     }
 }
