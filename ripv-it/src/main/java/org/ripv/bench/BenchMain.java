@@ -22,6 +22,7 @@ public final class BenchMain {
             "  database   a 100,000-row query end to end against direct JDBC   [--rows N] [--runs N] [--warmup N]",
             "  ymodem     YMODEM over a baud-paced relay as a share of the line rate, and against lrzsz",
             "             [BAUD:BYTES ...], e.g. 9600:65536 115200:1048576",
+            String.join("\n", ZmodemBench.USAGE),
             "  console    the live console: 1,000 watchers of a vehicle printing 50 lines/s against one watcher,",
             "             with one more that never reads, and the same fan-out with no RIPV (the machine's floor)",
             "             [--watchers N] [--rate N] [--seconds S] [--baseline-seconds S] [--warmup S] [--raw-threads N]",
@@ -44,6 +45,11 @@ public final class BenchMain {
             "             [--baud N] [--runs N] [--files N] [--get-bytes N] [--put-bytes N] [--report-only]",
             "Every benchmark takes --short: counts and times shrunk to seconds, to check that it still runs (CI does);",
             "its figures mean little. See docs/performance.md for what each measures and the figures.");
+
+    /** What {@code ripv bench --help} prints: the one list of benchmarks the docs' lists must equal. */
+    public static String usage() {
+        return USAGE;
+    }
 
     public static void main(String[] args) throws Exception {
         if (args.length == 0 || args[0].equals("--help") || args[0].equals("-h")) {
@@ -72,6 +78,7 @@ public final class BenchMain {
             case "connections" -> System.exit(Launchers.commandLine(new ConnectionCostBench()).execute(rest));
             case "console" -> System.exit(Launchers.commandLine(new ConsoleBench()).execute(rest));
             case "ymodem" -> YmodemBenchmark.main(rest);
+            case "zmodem" -> ZmodemBench.main(rest);
             case "datavis" -> DataVisBenchmark.main(rest);
             case "firststart" -> FirstStartBench.main(rest);
             case "calls" -> System.exit(Launchers.commandLine(new CallsBench(), "ripv bench calls").execute(rest));

@@ -156,6 +156,14 @@ public final class ServerMain implements Callable<Integer> {
                 System.err.println("Error: " + e.getMessage());
                 return 2;
             }
+            // Held until this JVM ends (the OS lets go of it however the process ends).
+            org.ripv.server.lock.DataDirLock dirLock;
+            try {
+                dirLock = org.ripv.server.lock.DataDirLock.acquire(dataDir);
+            } catch (org.ripv.server.lock.DataDirLock.HeldException e) {
+                System.err.println("Error: " + e.getMessage());
+                return 1;
+            }
             org.ripv.rmi.RmiSupport.filterProcess();
             ServerConfig cfg = config;
             SessionOptions opts = sessions;
@@ -176,11 +184,20 @@ public final class ServerMain implements Callable<Integer> {
             CountDownLatch stopped = new CountDownLatch(1);
             Runtime.getRuntime().addShutdownHook(new Thread(() -> {
                 server.stop();
+                closeQuietly(dirLock);
                 stopped.countDown();
             }, "ripv-server-shutdown"));
             ready.accept(server);
             stopped.await();
             return 0;
+        }
+
+        private static void closeQuietly(org.ripv.server.lock.DataDirLock lock) {
+            try {
+                lock.close();
+            } catch (IOException e) {
+                // the process is ending: the OS lets go of the lock anyway
+            }
         }
 
         /** Starts a server and its outbound port (a busy one only warns). */
@@ -317,6 +334,8 @@ public final class ServerMain implements Callable<Integer> {
     }
 
     public static void main(String[] args) {
+        // Before anything makes an object stream: the JVM takes a filter factory only until then.
+        org.ripv.rmi.RmiSupport.filterProcess();
         System.exit(run(args));
     }
 }
