@@ -90,6 +90,7 @@ class EveryBenchmarkRunsTest {
                 Tools.require("ss");
             }
             // These run without the tool (their lrzsz, Octave or PostgreSQL rows say "skipped"); CI wants those rows.
+            case "zmodem" -> requiredInCi(Tools.onPath("sz") && Tools.onPath("rz"), "lrzsz");
             case "ymodem" -> requiredInCi(Tools.onPath("sb") && Tools.onPath("rb") && Tools.onPath("socat"), "lrzsz and socat");
             case "datavis" -> requiredInCi(Tools.onPath("octave-cli"), "octave-cli");
             case "store" -> requiredInCi(System.getenv("RIPV_PG_URL") != null, "PostgreSQL (RIPV_PG_URL)");
