@@ -279,6 +279,8 @@ public final class ZmodemSender {
                 }
             } catch (ZFrameReader.Timeout e) {
                 // ZFIN lost: again
+            } catch (java.io.EOFException e) {
+                return; // the receiver has the file (its ZRINIT said so) and hung up before its ZFIN arrived
             }
         }
         // the file is there (ZRINIT said so); an rz that never answers ZFIN times out on its own
