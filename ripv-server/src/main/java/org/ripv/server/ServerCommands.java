@@ -23,6 +23,8 @@ import org.ripv.server.files.UploadMode;
 import org.ripv.server.files.FileTooLargeException;
 import org.ripv.server.permit.PermitFile;
 import org.ripv.server.security.SecurityCommands;
+import org.ripv.server.vehicles.MailboxArgument;
+import org.ripv.server.vehicles.VehicleNames;
 
 /**
  * The server's own {@code ?} commands (Appendix B and docs/protocol.md). Each reply carries the
@@ -103,11 +105,58 @@ final class ServerCommands {
                     "unknown server command '" + w[0] + "'; ?help lists them"));
             return;
         }
+        int at = MailboxArgument.position(w);
+        // A vehicle name stands for its MailBox; ?watch of an address no service has is refused at once.
+        if (at > 0 && (!VehicleNames.isFullAddress(w[at]) || word.equals("?watch"))) {
+            queries.known().thenAccept(known -> {
+                try {
+                    VehicleNames.Resolution r = VehicleNames.resolve(w[at], known.addresses(), known.notAnswering());
+                    String why = !r.resolved() ? r.error() : word.equals("?watch") ? unheardOf(r.address(), known) : null;
+                    if (why != null) {
+                        server.reply(ServerTaskManager.error(request, c.fid(), ErrorCode.UNKNOWN_MAILBOX, why));
+                    } else if (r.address().equals(w[at])) {
+                        dispatch(request, c, w, word);
+                    } else {
+                        String named = MailboxArgument.replaced(w, at, r.address());
+                        dispatch(withBody(request, named), c, named.split(" "), word);
+                    }
+                } catch (RuntimeException x) {
+                    // off the Post Office's thread nothing else would answer: the client must not wait for ever
+                    server.reply(ServerTaskManager.error(request, c.fid(), ErrorCode.INTERNAL, c.usage() + " failed: " + x));
+                }
+            });
+            return;
+        }
+        dispatch(request, c, w, word);
+    }
+
+    private void dispatch(IncomingServerMessage request, Command c, String[] w, String word) {
         if (FILE_WORK.contains(word)) {
             server.fileWork().execute(() -> runNow(request, c, w));
         } else {
             runNow(request, c, w);
         }
+    }
+
+    /**
+     * Why a full address cannot be watched, or null: no answering service lists it and the server
+     * has never heard from it (a MailBox of a service that is down now can still be watched).
+     */
+    private String unheardOf(String address, ServiceQueries.Known known) {
+        if (known.addresses().contains(address) || server.console().state(address) != null) {
+            return null;
+        }
+        String service = MailboxAddress.parse(address).service().toString();
+        return "no MailBox " + address + (server.service(service).isPresent() ? ": " + service + " does not list it"
+                : ": no service " + service + " is registered") + " and nothing was ever heard from it; "
+                + VehicleNames.whatThereIs(known.addresses(), known.notAnswering());
+    }
+
+    /** The request with its command line rewritten (a vehicle name replaced by its MailBox's full address). */
+    private static IncomingServerMessage withBody(IncomingServerMessage request, String body) {
+        org.ripv.messages.Header h = request.header();
+        return new IncomingServerMessage(new org.ripv.messages.Header(h.messageId(), h.origin(), h.roles(), h.serviceDestination(),
+                h.mailboxAddress(), body, h.priority(), h.attachment()));
     }
 
     private void runNow(IncomingServerMessage request, Command c, String[] w) {
@@ -220,6 +269,7 @@ final class ServerCommands {
                 if (w.length != 4) {
                     throw new IllegalArgumentException("usage: " + c.usage());
                 }
+                DownloadRights.check(files, server.permits(), user, w[1]);
                 long offset = number(w[2], "OFFSET");
                 int length = (int) Math.min(MAX_DOWNLOAD_CHUNK, number(w[3], "LENGTH"));
                 Object[] chunk = files.readDownload(w[1], offset, length);
@@ -288,6 +338,9 @@ final class ServerCommands {
     }
 
     static String describe(MailboxStatus s) {
+        if (ServiceQueries.HIDDEN.equals(s.detail())) {
+            return s.address() + ": " + s.detail();
+        }
         String what = !s.running().isEmpty() ? "busy: " + s.running()
                 : (s.available() ? "available" : "not available") + (s.busy() ? ", busy" : "");
         return s.address() + ": " + what

@@ -3,7 +3,7 @@ package org.ripv.server.workflow;
 import java.time.Duration;
 import java.util.List;
 import java.util.Objects;
-import java.util.regex.Pattern;
+import com.google.re2j.Pattern;
 
 /**
  * One line of a workflow file, parsed (docs/workflows.md).

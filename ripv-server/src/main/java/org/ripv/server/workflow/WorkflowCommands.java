@@ -70,6 +70,10 @@ final class WorkflowCommands {
                 String mailbox = address(w[2]);
                 mayRead(user, mailbox);
                 PermitFile.User u = permitted(request);
+                if (!workflows.queues.has(mailbox) && !workflows.knownMailbox(mailbox)) {
+                    throw new IllegalArgumentException("no MailBox " + mailbox + " exists or has existed; queues are for"
+                            + " MailBoxes a service has (?mailboxes lists them)");
+                }
                 Workflow wf = read(w[3]);
                 checkSteps(u, mailbox, wf);
                 QueuedWorkflow e = workflows.queues.add(mailbox, user, sourceOf(w[3]), wf);

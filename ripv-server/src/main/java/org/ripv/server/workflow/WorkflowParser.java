@@ -5,8 +5,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.function.Predicate;
-import java.util.regex.Pattern;
-import java.util.regex.PatternSyntaxException;
+import com.google.re2j.Pattern;
 import org.ripv.server.files.FileNames;
 
 /**
@@ -240,10 +239,10 @@ public final class WorkflowParser {
             throw new WorkflowException(file, n, what + " needs a regex");
         }
         try {
-            return Pattern.compile(re);
-        } catch (PatternSyntaxException e) {
-            throw new WorkflowException(file, n, "bad " + what + " regex '" + re + "': " + e.getDescription()
-                    + " near index " + e.getIndex());
+            // RE2/J: linear time, so no user's pattern stalls a thread (issue 23, item 3).
+            return org.ripv.patterns.UserPattern.compile("bad " + what + " regex", re).pattern();
+        } catch (IllegalArgumentException e) {
+            throw new WorkflowException(file, n, e.getMessage());
         }
     }
 

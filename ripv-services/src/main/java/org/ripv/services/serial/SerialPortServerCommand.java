@@ -228,12 +228,9 @@ public final class SerialPortServerCommand implements Callable<Integer> {
         }
     }
 
-    private static Pattern regex(String re, String what) {
-        try {
-            return Pattern.compile(re);
-        } catch (java.util.regex.PatternSyntaxException e) {
-            throw new IllegalArgumentException(what + " '" + re + "' is not a regular expression: " + e.getDescription());
-        }
+    /** surface= and alert= run on every vehicle line: linear time (RE2/J), issue 23 item 3. */
+    private static com.google.re2j.Pattern regex(String re, String what) {
+        return org.ripv.patterns.UserPattern.compile(what, re).pattern();
     }
 
     private static int number(java.util.Map<String, String> o, String key, long fallback) {
