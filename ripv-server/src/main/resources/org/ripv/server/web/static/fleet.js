@@ -41,13 +41,13 @@ function takeStatus(m) {
   vehicles.set(m.address, v);
 }
 
-function takeEntry(e) {
+function takeEntry(e, live = true) {
   const v = vehicles.get(e.mailbox);
   if (!v) return;
   v.lastContact = e.time;
   if (e.kind === 'EVENT') {
     v.latest = `${e.event} ${e.text}`.trim();
-    if (e.event === 'SURFACED') { v.state = 'ON_CALL'; v.calls = (v.calls || 0) + 1; }
+    if (e.event === 'SURFACED') { v.state = 'ON_CALL'; if (live) v.calls = (v.calls || 0) + 1; }
     if (e.event === 'DIVED') v.state = 'DIVED';
     if (e.event === 'LINK_LOST') v.state = 'LOST';
   }
@@ -68,7 +68,7 @@ if (list.status === 'ERROR') {
   render();
   for (const address of vehicles.keys()) {
     const w = await po.send('', `?watch ${address}`);
-    if (w.result && w.result.kind === 'ConsoleBatch') w.result.entries.forEach(takeEntry);
+    if (w.result && w.result.kind === 'ConsoleBatch') w.result.entries.forEach((e) => takeEntry(e, false)); // counted in the status already
   }
   render();
 }
