@@ -14,6 +14,7 @@ import org.ripv.messages.IncomingServiceMessage;
 import org.ripv.messages.MailboxStatus;
 import org.ripv.messages.OutgoingServiceMessage;
 import org.ripv.messages.ServiceDescriptor;
+import org.ripv.probe.PortProbe;
 import org.ripv.rmi.GenericRMIInterface;
 import org.ripv.rmi.RmiSupport;
 import org.ripv.security.ServiceProof;
@@ -49,6 +50,8 @@ public final class ServiceConnector implements AutoCloseable {
     private final Object tokenLock = new Object();
     private boolean registering;
     private final java.util.concurrent.CompletableFuture<String> fatal = new java.util.concurrent.CompletableFuture<>();
+    /** Registrations in a row that a retry cannot mend (only the timer thread counts them). */
+    private int unmendable;
     /** Which of {@code options.servers()} this service uses (or tries) now. */
     private volatile int current;
 
@@ -127,6 +130,8 @@ public final class ServiceConnector implements AutoCloseable {
                         where(), e.getClass().getSimpleName(), options.servers().size() > 1 ? " or another of " + options.servers() : "");
                 lost();
                 failOver();
+            } else if (notARegistry(e)) {
+                unmendable(wrongPort());
             } else if (!warnedAway) {
                 warnedAway = true;
                 log.warn("{}: no RIPVServer at {} yet ({}); retrying every {} ms", service.name(),
@@ -134,7 +139,11 @@ public final class ServiceConnector implements AutoCloseable {
                         options.heartbeat().toMillis());
             }
         } catch (Impostor e) {
-            // Someone else holds the name: say so loudly, and keep trying until the real server is back.
+            // Someone else holds the name, or the secret is not the server's: say so loudly, and keep
+            // trying until the real server is back, or give up when the launcher says so.
+            if (unmendable(e.getMessage())) {
+                return;
+            }
             if (!warnedImpostor) {
                 warnedImpostor = true;
                 log.error("{}: POSSIBLE IMPOSTOR: {}; sent it no secret and nothing derived from it; retrying every {} ms",
@@ -145,6 +154,13 @@ public final class ServiceConnector implements AutoCloseable {
             // Refused but fixable (the server cannot call back, or a newer attempt won): say so, keep trying.
             notice(e.getMessage());
         } catch (SecurityException e) {
+            if (ServiceProof.saysRetry(e.getMessage())) {
+                // "register again", "retry": the server is there and will take us; a refusal of this
+                // kind never ends the service (issue 23, item 1: a challenge flood made it exit).
+                notice(e.getMessage());
+                lost();
+                return;
+            }
             // Retrying cannot fix a wrong secret: stop and let the launcher say so.
             log.error("{}: the server refused registration: {}", service.name(), e.getMessage());
             fatal.complete("the server at " + where() + " refused the registration: " + e.getMessage());
@@ -152,6 +168,47 @@ public final class ServiceConnector implements AutoCloseable {
         } catch (RuntimeException e) {
             log.error("{}: heartbeat failed", service.name(), e);
         }
+    }
+
+    /**
+     * Counts a registration a retry cannot mend; true when that was the last try ({@link
+     * ServiceOptions#giveUpAfter}): the connector has given up with {@code why}.
+     */
+    private boolean unmendable(String why) {
+        int n = ++unmendable;
+        int max = options.giveUpAfter();
+        if (max > 0 && n >= max) {
+            log.error("{}: {}; giving up after {} tries", service.name(), why, n);
+            fatal.complete(why + " (gave up after " + n + " tries; --retry-forever keeps trying)");
+            timer.shutdown();
+            return true;
+        }
+        notice(why + (max > 0 ? " (try " + n + " of " + max + ")" : ""));
+        return false;
+    }
+
+    /** True when what answered at the registry's address does not speak RMI at all (JRMP). */
+    private static boolean notARegistry(Exception e) {
+        for (Throwable t = e; t != null; t = t.getCause()) {
+            if (t instanceof java.rmi.ConnectIOException && String.valueOf(t.getMessage()).contains("non-JRMP")) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** What --server's port is, when it is not an RMI registry, and which port to give instead. */
+    private String wrongPort() {
+        String where = host() + ":" + registryPort();
+        PortProbe.Finding f = PortProbe.identify(host(), registryPort(), Duration.ofSeconds(3));
+        String is = switch (f) {
+            case RIPV_CLIENT_PORT, RIPV_CLIENT_PORT_PLAIN -> "RIPV's client port (where the CLI and the GUI log in)";
+            case HTTP -> "the server's web/landing page port";
+            default -> "not an RMI registry: " + f.what();
+        };
+        return where + " is " + is + ", not the server's RMI registry: give --server " + host()
+                + ":REGPORT with its registry port (1099 unless the server was started with --registry-port;"
+                + " it prints 'services register at HOST:PORT')";
     }
 
     /** After losing the server: try the others at once rather than a heartbeat later (a standby taking over). */
@@ -255,9 +312,9 @@ public final class ServiceConnector implements AutoCloseable {
             // The server proves it holds the secret before anything derived from it goes out.
             answer = answer(s.challenge(mine));
             if (answer == null || !ServiceProof.same(answer[1], ServiceProof.serverProof(secret, mine, answer[0]))) {
-                throw new Impostor("the object bound as '" + GenericRMIInterface.BINDING + "' in the registry at "
-                        + host() + ":" + registryPort() + " cannot prove it holds the service secret:"
-                        + " it is an impostor, or this service's --secret-file is not that server's DATA/service.secret");
+                throw new Impostor("the server at " + host() + ":" + registryPort() + " cannot prove it holds the service secret:"
+                        + " this service's secret is wrong (--secret-file must be that server's DATA/service.secret),"
+                        + " or the object bound as '" + GenericRMIInterface.BINDING + "' in its registry is an impostor");
             }
         }
         String t = null;
@@ -270,7 +327,7 @@ public final class ServiceConnector implements AutoCloseable {
                 t = s.register(d, stub, "");
             } else {
                 String confirmation = s.register(d, stub,
-                        answer[0] + " " + ServiceProof.serviceProof(secret, mine, answer[0], d.name(), stub));
+                        answer[0] + " " + mine + " " + ServiceProof.serviceProof(secret, mine, answer[0], d.name(), stub));
                 if (!ServiceProof.same(confirmation, ServiceProof.serverProof(secret, answer[0], mine))) {
                     throw new Impostor("the server at " + host() + ":" + registryPort()
                             + " accepted the registration without proving it holds the service secret");
@@ -291,6 +348,7 @@ public final class ServiceConnector implements AutoCloseable {
         }
         warnedAway = false;
         warnedImpostor = false;
+        unmendable = 0;
         lastNotice = null;
         registered.countDown();
         log.info("{} registered with the RIPVServer at {}{}{}", d.name(), where(), options.servers().position(current),

@@ -7,7 +7,7 @@ import picocli.CommandLine.Option;
 
 /**
  * The command-line options every service launcher shares (picocli mixin):
- * {@code --server HOST[:REGPORT] [--secret-file F] [--host NAME] [--export-port N]}.
+ * {@code --server HOST[:REGPORT] [--secret-file F] [--host NAME] [--export-port N] [--retry-forever]}.
  */
 public final class ServiceLaunchOptions {
     @Option(names = "--server", required = true, paramLabel = "HOST[:REGPORT][,HOST2[:REGPORT]]",
@@ -27,6 +27,14 @@ public final class ServiceLaunchOptions {
             description = "The address this service's RMI object listens on. Default: the address this host uses to reach"
                     + " the server (127.0.0.1 for a server on this machine); with --host, every interface. * for every interface.")
     String bind;
+
+    @Option(names = "--retry-forever", description = "Keep trying to register when the server does not accept the secret or"
+            + " --server names a port that is not its RMI registry (default: give up with an error after "
+            + ServiceLaunchOptions.TRIES + " tries). A server that is not up yet is waited for in any case.")
+    boolean retryForever;
+
+    /** Registrations in a row that a retry cannot mend before a launched service gives up. */
+    static final int TRIES = 5;
 
     /** Where launch messages go (standard error; injectable for tests). */
     java.io.PrintStream err = System.err;
@@ -90,7 +98,10 @@ public final class ServiceLaunchOptions {
      * refuses it for good. What every service launcher's {@code call()} returns.
      */
     public int serve(RIPVService service) throws Exception {
-        org.ripv.rmi.RmiSupport.filterProcess();
+        if (!org.ripv.rmi.RmiSupport.filterProcess()) {
+            err.println("Warning: RMI replies in this process are not filtered: an object stream was made before the"
+                    + " launcher could install RIPV's filter factory (call RmiSupport.filterProcess() first in main)");
+        }
         applyBind();
         ServiceConnector connector = ServiceConnector.connect(service, toOptions());
         connector.onNotice(err::println);
@@ -159,6 +170,6 @@ public final class ServiceLaunchOptions {
         System.setProperty(org.ripv.rmi.DeadlineSocketFactory.CONNECT_PROPERTY, Integer.toString(rmiConnectTimeout));
         System.setProperty(org.ripv.rmi.DeadlineSocketFactory.READ_PROPERTY, Integer.toString(rmiReadTimeout));
         return new ServiceOptions(servers.first().host(), servers.first().port(), ServiceOptions.resolveSecret(secretFile),
-                exportPort, Duration.ofSeconds(3), outboundPort).withServers(servers);
+                exportPort, Duration.ofSeconds(3), outboundPort).withServers(servers).givingUpAfter(retryForever ? 0 : TRIES);
     }
 }

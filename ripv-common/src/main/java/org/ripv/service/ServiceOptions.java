@@ -19,9 +19,12 @@ import java.util.Objects;
  *                     (NAT, firewalls: {@code --outbound-only}), or -1 for plain RMI both ways
  * @param servers      every server to try, the first being {@code serverHost:registryPort}: an
  *                     active server and its standbys ({@code --server host1,host2}); null for that one only
+ * @param giveUpAfter  how many registrations in a row a retry cannot mend (a server that does not
+ *                     accept the secret, a port that is not an RMI registry) end the service's tries;
+ *                     0: it keeps trying (the launchers give up after 5 unless {@code --retry-forever})
  */
 public record ServiceOptions(String serverHost, int registryPort, String secret, int exportPort, Duration heartbeat,
-                             int outboundPort, org.ripv.failover.ServerList servers) {
+                             int outboundPort, org.ripv.failover.ServerList servers, int giveUpAfter) {
     public static final int DEFAULT_REGISTRY_PORT = 1099;
     /** The server's port for services in outbound-only mode. */
     public static final int DEFAULT_OUTBOUND_PORT = 4446;
@@ -34,17 +37,23 @@ public record ServiceOptions(String serverHost, int registryPort, String secret,
     /** One server, outbound-only when {@code outboundPort} is positive. */
     public ServiceOptions(String serverHost, int registryPort, String secret, int exportPort, Duration heartbeat,
                           int outboundPort) {
-        this(serverHost, registryPort, secret, exportPort, heartbeat, outboundPort, null);
+        this(serverHost, registryPort, secret, exportPort, heartbeat, outboundPort, null, 0);
     }
 
     /** The same, connecting out only, to the server's outbound port. */
     public ServiceOptions outboundOnly(int port) {
-        return new ServiceOptions(serverHost, registryPort, secret, exportPort, heartbeat, port, servers);
+        return new ServiceOptions(serverHost, registryPort, secret, exportPort, heartbeat, port, servers, giveUpAfter);
     }
 
     /** The same with a list of servers to try in turn (an active server and its standbys); the first becomes serverHost. */
     public ServiceOptions withServers(org.ripv.failover.ServerList list) {
-        return new ServiceOptions(list.first().host(), list.first().port(), secret, exportPort, heartbeat, outboundPort, list);
+        return new ServiceOptions(list.first().host(), list.first().port(), secret, exportPort, heartbeat, outboundPort, list,
+                giveUpAfter);
+    }
+
+    /** The same, giving up after {@code tries} registrations in a row that a retry cannot mend (0: never). */
+    public ServiceOptions givingUpAfter(int tries) {
+        return new ServiceOptions(serverHost, registryPort, secret, exportPort, heartbeat, outboundPort, servers, tries);
     }
 
     /** True in outbound-only mode. */
@@ -58,6 +67,9 @@ public record ServiceOptions(String serverHost, int registryPort, String secret,
         Objects.requireNonNull(serverHost, "serverHost");
         Objects.requireNonNull(secret, "secret");
         heartbeat = heartbeat == null ? Duration.ofSeconds(3) : heartbeat;
+        if (giveUpAfter < 0) {
+            throw new IllegalArgumentException("giveUpAfter is a number of tries, 0 for never, not " + giveUpAfter);
+        }
         servers = servers == null ? org.ripv.failover.ServerList.of(serverHost, registryPort) : servers;
     }
 

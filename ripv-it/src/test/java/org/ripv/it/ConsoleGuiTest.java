@@ -182,4 +182,52 @@ class ConsoleGuiTest {
             prefs.removeNode();
         }
     }
+
+    /**
+     * Issue 25: the window opens on the vehicle, not on the service listed first (here a
+     * ClockService, which sorts before it), and its SS line and its badge say the same state as
+     * the vehicle dives and calls again.
+     */
+    @Test
+    void windowOpensOnTheFirstVehicleAndItsStatusLineAgreesWithTheBadge() throws Exception {
+        ClientGuiTest.requireDisplay();
+        sys.register(new org.ripv.examples.ClockService("localhost"));
+        vehicle.event(VehicleEvent.SURFACED, "Glider ru29 at surface", 41.63323, -70.53647);
+        Preferences prefs = Preferences.userRoot().node("org/ripv/test/" + UUID.randomUUID());
+        Robot robot = BasicRobot.robotWithNewAwtHierarchy();
+        GuiManager gm = GuiActionRunner.execute(() -> new GuiManager(new ClientModel()));
+        RIPVClient client = GuiActionRunner.execute(() -> {
+            FlatLightLaf.setup();
+            return new RIPVClient(gm, prefs);
+        });
+        FrameFixture window = new FrameFixture(robot, client.frame());
+        try {
+            window.show();
+            gm.logIn("localhost", sys.server().port(), "alice", TestSystem.PASSWORD.toCharArray()).get(20, TimeUnit.SECONDS);
+            ClientGuiTest.waitFor("both tabs", () -> client.panel(SERVICE) != null && client.panel("<ClockService>::<localhost>") != null);
+            assertThat(GuiActionRunner.execute(() -> client.tabs().getTitleAt(0))).as("the clock is listed first").startsWith("ClockService");
+            ClientGuiTest.waitFor("the vehicle's tab in front", () -> GuiActionRunner.execute(
+                    () -> client.tabs().getSelectedComponent() == client.panel(SERVICE)));
+            ServiceLayoutPanel tab = GuiActionRunner.execute(() -> client.panel(SERVICE));
+            assertThat(GuiActionRunner.execute(() -> gm.model().service(SERVICE).target())).isEqualTo(vehicle.mailbox());
+            ClientGuiTest.waitFor("SS and the badge: on call", () -> GuiActionRunner.execute(
+                    () -> tab.com().serviceStatusText().equals("available (on call, 1 call this run)")
+                            && tab.console().badgeText().contains("on call")));
+            vehicle.event(VehicleEvent.DIVED, "the caller hung up", null, null);
+            ClientGuiTest.waitFor("SS and the badge: dived, together", () -> GuiActionRunner.execute(
+                    () -> tab.com().serviceStatusText().equals("not available (dived, 1 call this run)")
+                            && tab.console().badgeText().contains("dived")));
+            vehicle.event(VehicleEvent.SURFACED, "Glider ru29 at surface", 41.63323, -70.53647);
+            ClientGuiTest.waitFor("SS and the badge: on call again, the second call", () -> GuiActionRunner.execute(
+                    () -> tab.com().serviceStatusText().equals("available (on call, 2 calls this run)")
+                            && tab.console().badgeText().contains("on call")));
+        } catch (Throwable t) {
+            ClientGuiTest.screenshot("ConsoleGuiTest-opening-failure.png");
+            throw t;
+        } finally {
+            window.cleanUp();
+            gm.close();
+            prefs.removeNode();
+        }
+    }
 }

@@ -144,7 +144,12 @@ public final class RIPVServer implements AutoCloseable {
         workflows = new org.ripv.server.workflow.Workflows(state.store(), new WorkflowBridge(this));
         endings = new RequestEndings(this, pending, withdrawals, config.requestTimeout());
         box = postOffice.open(POST_OFFICE, new ServerTaskManager(this));
-        security = new ServerSecurity(config.security(), config.maxClients(), timers, permits::current, () -> secret);
+        // A log-in looks at the file first (one stat): a user just added with ripv passwd can log in
+        // at once, not only after the next periodic check.
+        security = new ServerSecurity(config.security(), config.maxClients(), timers, () -> {
+            permits.reloadIfChanged();
+            return permits.current();
+        }, () -> secret);
         sessions = new ServerSessions(config.dataDir(), state.store(), sessionOptions, this::permits, this::client, codec);
         sessions.expireLocks(timers, locks, mailbox -> workflows.lockReleased(mailbox));
         permits.onChange(sessions::permitsChanged);

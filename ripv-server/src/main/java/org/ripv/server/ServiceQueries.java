@@ -42,12 +42,39 @@ final class ServiceQueries {
     /** One service's answer: its MailBoxes, or why there are none. */
     private record Answer(ServiceReference ref, List<MailboxStatus> boxes, String failure) {}
 
-    void mailboxes(IncomingServerMessage request) {
+    /** Asks every registered service for its MailBoxes, each with the deadline; completes when all have answered or failed. */
+    private List<CompletableFuture<Answer>> askAll() {
         List<CompletableFuture<Answer>> asks = new ArrayList<>();
         for (ServiceReference ref : server.services()) {
             asks.add(ref.mailboxes(server.checkers(), deadline)
                     .handle((boxes, e) -> new Answer(ref, boxes, e == null ? null : failure(ref, e))));
         }
+        return asks;
+    }
+
+    /** The MailBoxes the services list now, and the services that did not answer in time. */
+    record Known(List<String> addresses, List<String> notAnswering) {}
+
+    /** {@link Known}, to resolve vehicle names ({@link org.ripv.server.vehicles.VehicleNames}); never fails. */
+    CompletableFuture<Known> known() {
+        List<CompletableFuture<Answer>> asks = askAll();
+        return CompletableFuture.allOf(asks.toArray(CompletableFuture[]::new)).handle((v, e) -> {
+            List<String> addresses = new ArrayList<>();
+            List<String> silent = new ArrayList<>();
+            for (CompletableFuture<Answer> f : asks) {
+                Answer a = f.join();
+                if (a.failure() != null) {
+                    silent.add(a.ref().descriptor().name());
+                } else {
+                    a.boxes().forEach(s -> addresses.add(s.address()));
+                }
+            }
+            return new Known(addresses, silent);
+        });
+    }
+
+    void mailboxes(IncomingServerMessage request) {
+        List<CompletableFuture<Answer>> asks = askAll();
         CompletableFuture.allOf(asks.toArray(CompletableFuture[]::new)).whenComplete((v, e) -> {
             List<MailboxStatus> all = new ArrayList<>();
             StringBuilder text = new StringBuilder();
@@ -58,7 +85,7 @@ final class ServiceQueries {
                     continue;
                 }
                 for (MailboxStatus s : a.boxes()) {
-                    MailboxStatus withLock = server.withLock(s);
+                    MailboxStatus withLock = readable(request, server.withLock(s));
                     all.add(withLock);
                     text.append(ServerCommands.describe(withLock)).append('\n');
                 }
@@ -68,7 +95,27 @@ final class ServiceQueries {
         });
     }
 
+    /**
+     * What a user sees of a MailBox: everything with the read right ({@code ?read}), else its
+     * address only — a vehicle's state, last position, lock and running workflow are as private as
+     * its console (issue 23, item 11).
+     */
+    private MailboxStatus readable(IncomingServerMessage request, MailboxStatus s) {
+        if (org.ripv.server.session.Rights.mayRead(server.permits(), request.header().origin().user(), s.address())) {
+            return s;
+        }
+        return new MailboxStatus(s.address(), false, HIDDEN, false, "", null, "");
+    }
+
+    /** The detail shown instead of a MailBox's state to a user without the read right. */
+    static final String HIDDEN = "state hidden: reading this MailBox needs the ?read right (docs/permit.md)";
+
     void status(IncomingServerMessage request, MailboxAddress address) {
+        String why = org.ripv.server.session.Rights.whyNotRead(server.permits(), request.header().origin().user(), address.toString());
+        if (why != null) {
+            server.reply(ServerTaskManager.error(request, Ids.FID_STATUS, ErrorCode.FORBIDDEN, why));
+            return;
+        }
         ServiceReference ref = server.service(address.service().toString()).orElse(null);
         if (ref == null) {
             server.reply(ServerTaskManager.error(request, Ids.FID_STATUS, ErrorCode.UNKNOWN_SERVICE,

@@ -20,7 +20,7 @@ import picocli.CommandLine.Option;
 
 /**
  * {@code ripv cli}: the headless client, for people at a terminal and for scripts. On a terminal
- * without {@code --exec} it is interactive ({@link Shell}); otherwise it runs the {@code --exec}
+ * without {@code --exec} or {@code --follow} it is interactive ({@link Shell}); otherwise it runs the {@code --exec}
  * lines or standard input's. Exit codes: 0 every reply OK (interactive: the user ended it),
  * 1 some reply was an ERROR, 2 bad command line, 3 could not connect or log in, or lost the connection.
  */
@@ -61,7 +61,8 @@ public final class CliCommand implements Callable<Integer> {
     @Option(names = "--history", paramLabel = "FILE", description = "The interactive CLI's history (default ~/.ripv/history).")
     Path history;
 
-    @Option(names = "--follow", paramLabel = "MAILBOX", description = "Print the MailBox's live console (lines, commands, events) until Ctrl-C; after any --exec lines.")
+    @Option(names = "--follow", paramLabel = "MAILBOX", description = "Print the MailBox's live console (lines, commands, events) until Ctrl-C, after any --exec lines;"
+            + " MAILBOX is a full address or a vehicle's name (sim01).")
     String follow;
     @Option(names = "--no-reconnect", description = "With --follow or on a terminal: end (exit 3) when the connection is lost, instead"
             + " of logging in again to the server (or the first of --server's list that answers) and going on.")
@@ -93,7 +94,13 @@ public final class CliCommand implements Callable<Integer> {
             return 2;
         }
         String host = servers.first().host();
-        char[] pw = password(host);
+        char[] pw;
+        try {
+            pw = password(host);
+        } catch (PasswordFile.Unusable e) {
+            err.println("Error: " + e.getMessage());
+            return 2;
+        }
         if (pw == null) {
             err.println("Error: no password: give --password-file, set RIPV_PASSWORD, or run on a terminal to be asked");
             return 2;
@@ -177,17 +184,17 @@ public final class CliCommand implements Callable<Integer> {
         }
     }
 
-    /** Connects to the first server of the list that answers; each is its own host to trust (a standby has its own certificate). */
+    /** Connects to the first server of the list that answers; a standby is trusted only as Tls#trustOnFirstUse says for lists. */
     private ClientSocketHandler connect(org.ripv.failover.ServerList servers, javax.net.SocketFactory trusted) throws IOException {
         return new org.ripv.client.handlers.Failover(servers, err::println).connect((h, p) -> ClientSocketHandler.connect(h, p,
                 plain ? javax.net.SocketFactory.getDefault() : trusted != null ? trusted
-                        : Tls.trustOnFirstUse(h, p, knownHosts != null ? knownHosts : Tls.defaultKnownHosts(), err::println),
+                        : Tls.trustOnFirstUse(h, p, knownHosts != null ? knownHosts : Tls.defaultKnownHosts(), err::println, servers),
                 servers.size() > 1 ? org.ripv.client.handlers.Failover.CONNECT : Duration.ofSeconds(10)));
     }
 
-    /** A person at a terminal, with no --exec lines: the interactive CLI. */
+    /** A person at a terminal, with no --exec lines and nothing to --follow: the interactive CLI. */
     private boolean interactive() {
-        return in == System.in && System.console() != null && (exec == null || exec.isEmpty());
+        return in == System.in && System.console() != null && (exec == null || exec.isEmpty()) && follow == null;
     }
 
     private char[] password(String host) throws IOException {
@@ -197,8 +204,7 @@ public final class CliCommand implements Callable<Integer> {
             return password.toCharArray();
         }
         if (passwordFile != null) {
-            List<String> lines = Files.readAllLines(passwordFile, StandardCharsets.UTF_8);
-            return lines.isEmpty() ? null : lines.get(0).toCharArray();
+            return PasswordFile.read(passwordFile);
         }
         String env = System.getenv("RIPV_PASSWORD");
         if (env != null) {

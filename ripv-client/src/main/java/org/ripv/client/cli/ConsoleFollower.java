@@ -119,7 +119,7 @@ public final class ConsoleFollower implements ClientSocketHandler.Listener {
                 return ExitCodes.ERROR_REPLY;
             }
             if (!json) {
-                err.println(r.footer().replyText() + "; Ctrl-C stops");
+                err.println(org.ripv.text.Printable.escape(r.footer().replyText()) + "; Ctrl-C stops");
             }
             ended.await();
             if (stopped.getCount() == 0) {
@@ -171,15 +171,19 @@ public final class ConsoleFollower implements ClientSocketHandler.Listener {
     @Override
     public void onReply(OutgoingServerMessage reply) {
         String fid = reply.footer().serviceId();
-        boolean mine = fid.equals(Ids.FID_CONSOLE)
-                || fid.equals(Ids.FID_WATCH) && reply.status() == Status.OK && reply.header().body().trim().endsWith(mailbox);
+        boolean watched = fid.equals(Ids.FID_WATCH) && reply.status() == Status.OK;
+        if (watched && reply.footer().result() instanceof ConsoleBatch b && reply.header().body().trim().endsWith(" " + b.mailbox())) {
+            mailbox = b.mailbox(); // the server's full address for the name given (?watch sim01)
+        }
+        boolean mine = fid.equals(Ids.FID_CONSOLE) || watched && reply.header().body().trim().endsWith(mailbox);
         if (mine && reply.footer().result() instanceof ConsoleBatch b && b.mailbox().equals(mailbox)) {
             synchronized (out) {
                 for (ConsoleEntry e : b.entries()) {
                     if (seen(e)) {
                         continue;
                     }
-                    out.println(json ? JsonWriter.write(toMap(e)) : toText(e));
+                    // a vehicle's bytes and others' text are data: escaped, never terminal controls (issue 23, item 8)
+                    out.println(json ? JsonWriter.write(toMap(e)) : org.ripv.text.Printable.oneLine(toText(e)));
                 }
                 out.flush();
             }

@@ -65,6 +65,8 @@ public final class RIPVClient {
     private final JSplitPane split;
     private final WindowLayout saved;
     private boolean syncing;
+    /** Whether the window has shown the service the model chose to open on (the first vehicle's). */
+    private boolean opened;
     private org.ripv.client.fleet.FleetView fleetView;
     private long lastFocusRefresh;
 
@@ -349,6 +351,10 @@ public final class RIPVClient {
                 }
             }
             serviceTree.update(model);
+            if (!opened && !model.opening().isEmpty() && panels.containsKey(model.opening())) {
+                opened = true; // once: after that, the tab is the user's choice
+                tabs.setSelectedComponent(panels.get(model.opening()));
+            }
             if (tabs.getSelectedComponent() instanceof ServiceLayoutPanel p) {
                 serviceTree.select(p.service());
             }

@@ -85,7 +85,8 @@ public final class ClientSocketHandler implements AutoCloseable {
         this.out = new DataOutputStream(new BufferedOutputStream(socket.getOutputStream(), 64 * 1024));
         this.in = new DataInputStream(new BufferedInputStream(socket.getInputStream(), 64 * 1024));
         FrameCodec.writeGreeting(out);
-        FrameCodec.readGreeting(in);
+        FrameCodec.readGreeting(in); // within the connect's deadline: a web server never answers it
+        socket.setSoTimeout(0);
         this.reader = new Thread(this::readLoop, "ripv-client-reader-" + server);
         reader.setDaemon(true);
         reader.start();
@@ -99,8 +100,9 @@ public final class ClientSocketHandler implements AutoCloseable {
      */
     public static ClientSocketHandler connect(String host, int port) throws IOException {
         if (host.indexOf(',') >= 0) {
-            return failover(host, port).connect((h, p) -> connect(h, p,
-                    Tls.trustOnFirstUse(h, p, Tls.defaultKnownHosts(), n -> log.warn("{}", n)), Failover.CONNECT));
+            Failover f = failover(host, port);
+            return f.connect((h, p) -> connect(h, p,
+                    Tls.trustOnFirstUse(h, p, Tls.defaultKnownHosts(), n -> log.warn("{}", n), f.servers()), Failover.CONNECT));
         }
         return connect(host, port, Tls.trustOnFirstUse(host, port, Tls.defaultKnownHosts(), n -> log.warn("{}", n)),
                 Duration.ofSeconds(10));
@@ -135,14 +137,28 @@ public final class ClientSocketHandler implements AutoCloseable {
         try {
             s.setTcpNoDelay(true);
             s.connect(new InetSocketAddress(host, port), (int) timeout.toMillis());
+        } catch (java.net.ConnectException e) {
+            s.close();
+            throw new IOException("nothing listens on " + host + ":" + port + " (" + e.getMessage()
+                    + "): is the server running, and is " + port + " its client port (4444 unless started with --port)?", e);
+        } catch (IOException | RuntimeException e) {
+            s.close();
+            throw e;
+        }
+        try {
+            // A short connect deadline (a server list) must not cut a slow first handshake or greeting short.
+            s.setSoTimeout((int) Math.max(timeout.toMillis(), 10_000));
             if (s instanceof javax.net.ssl.SSLSocket tls) {
-                // A short connect deadline (a server list) must not cut a slow first handshake short.
-                s.setSoTimeout((int) Math.max(timeout.toMillis(), 10_000));
                 handshake(tls);
             }
-            s.setSoTimeout(0);
             return new ClientSocketHandler(s, host + ":" + port, FrameCodec.DEFAULT_MAX_FRAME);
-        } catch (IOException | RuntimeException e) {
+        } catch (Tls.RefusedCertificate e) {
+            s.close();
+            throw e;
+        } catch (IOException e) {
+            s.close();
+            throw WrongPort.explain(host, port, s instanceof javax.net.ssl.SSLSocket, e);
+        } catch (RuntimeException e) {
             s.close();
             throw e;
         }
@@ -155,11 +171,13 @@ public final class ClientSocketHandler implements AutoCloseable {
         } catch (javax.net.ssl.SSLException e) {
             for (Throwable t = e; t != null; t = t.getCause()) {
                 if (t instanceof Tls.ChangedCertificateException changed) {
-                    throw new IOException(changed.getMessage(), e);
+                    throw new Tls.RefusedCertificate(changed.getMessage(), e);
+                }
+                if (t instanceof Tls.UnpinnedStandbyException unpinned) {
+                    throw new IOException(unpinned.getMessage(), e);
                 }
             }
-            throw new IOException("TLS handshake failed: " + e.getMessage()
-                    + " (is the server started with --plain? then connect with --plain too)", e);
+            throw new IOException("TLS handshake failed: " + e.getMessage(), e);
         }
     }
 

@@ -74,6 +74,26 @@ public final class ClientModel {
     private final ConsoleModel console = new ConsoleModel();
     private final WorkflowModel workflows = new WorkflowModel();
 
+    private String opening = "";
+
+    /**
+     * The service the window opens on: the first with a vehicle MailBox (a SerialPortServer, or
+     * any MailBox with a call state), chosen once when the MailBoxes are first known; empty before.
+     * The window shows it once and leaves the choice to the user after that.
+     */
+    public String opening() {
+        return opening;
+    }
+
+    /** Chooses the service to open on, once; true when this call chose it. */
+    boolean openOn(String service) {
+        if (!opening.isEmpty() || service == null || service.isEmpty()) {
+            return false;
+        }
+        opening = service;
+        return true;
+    }
+
     /** The workflow queues and receipts looked at. */
     public WorkflowModel workflows() {
         return workflows;

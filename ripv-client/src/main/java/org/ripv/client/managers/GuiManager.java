@@ -323,11 +323,46 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
                     model.fire(ClientModel.Kind.COM, s.name());
                 }
                 if (pickFirst) {
-                    // One obvious target saves a click; the MAM tree still shows the choice.
-                    selectMailbox(s.name(), mine.get(0).address());
+                    // One obvious target saves a click (a vehicle before a plain port); the MAM tree still shows the choice.
+                    selectMailbox(s.name(), mine.stream().filter(GuiManager::isVehicle).findFirst().orElse(mine.get(0)).address());
                 }
             }
+            openOnFirstVehicle();
         });
+    }
+
+    /** A MailBox the operator calls a vehicle: one with a call state (it has published call events). */
+    static boolean isVehicle(MailboxStatus m) {
+        return m.session() != null;
+    }
+
+    /**
+     * The window opens on the first vehicle: the first service with a vehicle MailBox, else the first
+     * SerialPortServer, with that MailBox its target. Decided once, when the first MailBoxes come.
+     */
+    private void openOnFirstVehicle() {
+        if (!model.opening().isEmpty()) {
+            return;
+        }
+        ServiceModel chosen = null;
+        for (ServiceModel s : model.services()) {
+            if (s.mailboxes().stream().anyMatch(GuiManager::isVehicle)) {
+                chosen = s;
+                break;
+            }
+            if (chosen == null && s.descriptor() != null && org.ripv.messages.Ids.SID_SERIAL.equals(s.descriptor().sid())
+                    && !s.mailboxes().isEmpty()) {
+                chosen = s;
+            }
+        }
+        if (chosen != null && model.openOn(chosen.name())) {
+            MailboxStatus first = chosen.mailboxes().stream().filter(GuiManager::isVehicle).findFirst()
+                    .orElse(chosen.mailboxes().get(0));
+            if (!first.address().equals(chosen.target())) {
+                selectMailbox(chosen.name(), first.address());
+            }
+            model.fire(ClientModel.Kind.SERVICES, null);
+        }
     }
 
     @Override
@@ -505,16 +540,18 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
             for (ServiceModel s : model.services()) {
                 if (belongsTo(batch.mailbox(), s.name()) && s.console(batch.mailbox(), batch.entries())) {
                     model.fire(ClientModel.Kind.MAILBOXES, s.name()); // the badges in SEL and MAM
+                    model.fire(ClientModel.Kind.COM, s.name()); // and SS, from the same state
                 }
             }
             if (live) {
                 for (org.ripv.messages.ConsoleEntry e : batch.entries()) {
                     if (e.kind() == org.ripv.messages.ConsoleEntry.Kind.EVENT
                             && (e.event() == org.ripv.messages.VehicleEvent.WORKFLOW_DONE
+                            || e.event() == org.ripv.messages.VehicleEvent.WORKFLOW_DONE_WITH_ERRORS
                             || e.event() == org.ripv.messages.VehicleEvent.WORKFLOW_FAILED)) {
                         String vehicle = e.mailbox().substring(e.mailbox().lastIndexOf('>') + 1);
                         model.notice(vehicle + " " + e.event() + (e.text().isEmpty() ? "" : ": " + e.text()),
-                                e.event() == org.ripv.messages.VehicleEvent.WORKFLOW_FAILED);
+                                e.event() != org.ripv.messages.VehicleEvent.WORKFLOW_DONE);
                     }
                     if (ConsoleModel.notifies(e)) {
                         String vehicle = e.mailbox().substring(e.mailbox().lastIndexOf('>') + 1);

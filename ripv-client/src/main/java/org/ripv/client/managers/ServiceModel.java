@@ -217,6 +217,9 @@ public final class ServiceModel {
                     return false;
                 }
                 mailboxes.set(i, m.withSession(st));
+                if (mailbox.equals(target)) {
+                    serviceStatus = describe(mailboxes.get(i)); // SS and the badge say the same state
+                }
                 return true;
             }
         }
@@ -312,11 +315,24 @@ public final class ServiceModel {
         this.picture = p;
     }
 
-    /** How the SS label words a mailbox's status. */
+    /**
+     * How the SS label words a mailbox's status. A vehicle's is its call state, the one its badge
+     * shows (updated by the console's events between two {@code ?mailboxes}), with the calls of
+     * this run of its service counted once; the service's own words on the call (its detail) would
+     * lag behind the events and count the calls again.
+     */
     static String describe(MailboxStatus s) {
-        StringBuilder b = new StringBuilder(s.available() ? "available" : "not available");
-        if (!s.detail().isBlank()) {
-            b.append(" (").append(s.detail()).append(')');
+        org.ripv.messages.SessionState v = s.session();
+        StringBuilder b;
+        if (v != null && v.state() != org.ripv.messages.SessionState.State.UNKNOWN) {
+            b = new StringBuilder(v.state() == org.ripv.messages.SessionState.State.ON_CALL ? "available" : "not available");
+            b.append(" (").append(v.state().words()).append(", ").append(v.calls()).append(v.calls() == 1 ? " call" : " calls")
+                    .append(" this run)");
+        } else {
+            b = new StringBuilder(s.available() ? "available" : "not available");
+            if (!s.detail().isBlank()) {
+                b.append(" (").append(s.detail()).append(')');
+            }
         }
         if (s.busy()) {
             b.append(", busy");

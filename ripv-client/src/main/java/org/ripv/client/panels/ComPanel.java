@@ -251,4 +251,9 @@ public final class ComPanel extends JPanel {
     public String replyText() {
         return replies.getText();
     }
+
+    /** What the SS label shows (for tests). */
+    public String serviceStatusText() {
+        return serviceStatus.getText();
+    }
 }

@@ -107,7 +107,7 @@ public final class MailboxTree extends JTree {
         throw new IllegalArgumentException("no mailbox '" + handle + "' under " + service);
     }
 
-    /** "on call, last contact 2026-…Z, at 41.63323, -70.53647, 3 calls": a vehicle node's tooltip. */
+    /** "on call, last contact 2026-…Z, at 41.63323, -70.53647, 3 calls this run": a vehicle node's tooltip. */
     public static String sessionTip(MailboxStatus s) {
         org.ripv.messages.SessionState st = s.session();
         if (st == null) {
@@ -120,7 +120,7 @@ public final class MailboxTree extends JTree {
         if (st.hasPosition()) {
             b.append(String.format(java.util.Locale.ROOT, ", at %.5f, %.5f", st.lat(), st.lon()));
         }
-        return b.append(", ").append(st.calls()).append(st.calls() == 1 ? " call" : " calls").toString();
+        return b.append(", ").append(st.calls()).append(st.calls() == 1 ? " call" : " calls").append(" this run").toString();
     }
 
     /** Re-words every node, so times since last contact stay current. */
@@ -153,8 +153,9 @@ public final class MailboxTree extends JTree {
         TreePath p = getPathForLocation(e.getX(), e.getY());
         if (p != null && p.getLastPathComponent() instanceof DefaultMutableTreeNode n && n.getUserObject() instanceof Item i) {
             MailboxStatus s = i.status();
-            return s.address() + ": " + (s.available() ? "available" : "not available")
-                    + (s.detail().isBlank() ? "" : " — " + s.detail()) + (s.session() == null ? "" : "; " + sessionTip(s));
+            // A vehicle's line is its call state (as SS and the badge say it), the service's word on the call left out.
+            return s.address() + ": " + (s.session() == null ? (s.available() ? "available" : "not available")
+                    + (s.detail().isBlank() ? "" : " — " + s.detail()) : sessionTip(s));
         }
         return "Pick a MailBox to talk to (it becomes Talking To, TT)";
     }

@@ -106,6 +106,8 @@ final class PlotRequests {
             try {
                 if (e != null) {
                     send.accept(error(request, ErrorCode.INTERNAL, "the query failed: " + e));
+                } else if (f.status() == Status.ERROR && !plan.kind().equals("sql") && noSchemaYet(f.replyText())) {
+                    send.accept(error(request, ErrorCode.BAD_REQUEST, noDataYet(plan)));
                 } else if (f.status() != Status.OK || !(f.result() instanceof TableResult t)) {
                     send.accept(error(request, f.status() == Status.ERROR ? f.errorCode() : ErrorCode.BAD_REQUEST,
                             "the query for " + plan.kind() + " failed: " + (f.status() == Status.OK
@@ -124,8 +126,9 @@ final class PlotRequests {
         if (t.rows().isEmpty()) {
             send.accept(error(request, ErrorCode.BAD_REQUEST, switch (plan.kind()) {
                 case "sql" -> "the query returned no rows: nothing to plot";
-                default -> "no " + (plan.kind().equals("track") ? "positions" : "depths") + " of vehicle '" + plan.vehicle()
-                        + "' in " + plan.database() + " (ingest its DBA files first; SELECT DISTINCT vehicle FROM data_file)";
+                case "profile" -> "no readings of that sensor with depths for vehicle '" + plan.vehicle() + "' in " + plan.database()
+                        + " (SELECT DISTINCT name FROM sensor_def lists the sensors; " + NO_DATA_HELP + ")";
+                default -> noDataYet(plan);
             }));
             return;
         }
@@ -170,6 +173,42 @@ final class PlotRequests {
                         send.accept(request.reply(f.withText(f.replyText() + note)));
                     }
                 });
+    }
+
+    /** What to do when a vehicle has no Slocum data: the same words before the first ingest and after others'. */
+    private static final String NO_DATA_HELP = "fetch its DBA files with ymodem:get NAME... on its SerialPortServer MailBox"
+            + " (they are ingested automatically) or ingest NAME... on the DatabaseServer for files already downloaded;"
+            + " SELECT DISTINCT vehicle FROM data_file lists the vehicles that have data";
+
+    private static String noDataYet(Plan plan) {
+        return "no Slocum data for '" + plan.vehicle() + "' yet in " + plan.database() + ": " + NO_DATA_HELP;
+    }
+
+    /**
+     * True when the query failed because the Slocum tables are not there: they are made by the
+     * first ingest (Derby's SQLState 42X05, PostgreSQL's 42P01: no such table or view).
+     */
+    static boolean noSchemaYet(String replyText) {
+        return replyText.contains("SQLState 42X05") || replyText.contains("SQLState 42P01");
+    }
+
+    /** The plot commands, for a {@code vis:} word that is neither one of them nor an uploaded file. */
+    static final List<String> COMMANDS = List.of("vis:track VEHICLE", "vis:depth VEHICLE", "vis:profile VEHICLE SENSOR",
+            "vis:sql SELECT x, y FROM ...", "vis:file NAME x=COLUMN y=COLUMN", "vis:NAME (a data file in the upload directory)");
+
+    /**
+     * The error for {@code vis:WORD} when there is no uploaded file WORD: a typo of a plot command
+     * is the likelier mistake, so the plot commands come first (and the nearest, if one is near).
+     */
+    static String notAPlot(String word, String noFile) {
+        String near = null;
+        for (String k : List.of("track", "depth", "profile", "sql", "file")) {
+            if (Typos.near(word.toLowerCase(Locale.ROOT), k)) {
+                near = k;
+            }
+        }
+        return "'vis:" + word + "' is not a plot command" + (near == null ? "" : " (did you mean vis:" + near + "?)")
+                + " and " + noFile.replaceFirst("^no file", "there is no file") + "; the plot commands are: " + String.join(", ", COMMANDS);
     }
 
     Plan parse(String body) {

@@ -34,6 +34,8 @@ final class VehicleStates {
 
     private record Saved(String mailbox, String json) {}
     private final Map<String, Vehicle> vehicles = new ConcurrentHashMap<>();
+    /** The run of MailBoxes a service listed before they published anything (at most as many as services may list). */
+    private final Map<String, Long> runs = new ConcurrentHashMap<>();
 
     /** One MailBox's state; guarded by the hub's lock. */
     static final class Vehicle {
@@ -42,6 +44,8 @@ final class VehicleStates {
         Double lat;
         Double lon;
         int calls;
+        /** When the instance of the service whose calls {@link #calls} counts started (epoch ms; 0: unknown). */
+        long run;
         VehicleEvent lastEvent;
         final ArrayDeque<ConsoleEntry> recent = new ArrayDeque<>();
 
@@ -81,6 +85,30 @@ final class VehicleStates {
     /** Saves what waits, then stops. */
     void close() {
         saves.close();
+    }
+
+    /**
+     * A new run of the MailBox's service (an instance that started at {@code started}, epoch ms):
+     * calls count from 0 again, as the service's own "call N" does, so that no line says two
+     * counts. The same instance registering again (a server restart) keeps its count.
+     */
+    void runStarted(String mailbox, long started) {
+        Vehicle v = vehicles.get(mailbox);
+        if (v == null) {
+            v = load(mailbox);
+        }
+        if (v == null) {
+            runs.merge(mailbox, started, Math::max); // nothing heard from it yet: its first entry takes the run
+            return;
+        }
+        synchronized (v) {
+            if (started <= v.run) {
+                return;
+            }
+            v.run = started;
+            v.calls = 0;
+        }
+        save(mailbox, v);
     }
 
     /** Takes one entry into its MailBox's state; true when the state changed in a way worth saving. */
@@ -167,7 +195,12 @@ final class VehicleStates {
             return v;
         }
         Vehicle loaded = load(mailbox);
-        return loaded != null ? loaded : vehicles.computeIfAbsent(mailbox, k -> new Vehicle());
+        return loaded != null ? loaded : vehicles.computeIfAbsent(mailbox, k -> {
+            Vehicle fresh = new Vehicle();
+            Long run = runs.remove(k);
+            fresh.run = run == null ? 0 : run;
+            return fresh;
+        });
     }
 
     /** Reads the saved state of a MailBox not seen since the server started. */
@@ -184,6 +217,7 @@ final class VehicleStates {
             v.lat = m.get("lat") instanceof Number n ? n.doubleValue() : null;
             v.lon = m.get("lon") instanceof Number n ? n.doubleValue() : null;
             v.calls = m.get("calls") instanceof Number n ? (int) Math.min(Integer.MAX_VALUE, n.longValue()) : 0;
+            v.run = m.get("run") instanceof Number n ? n.longValue() : 0;
             v.lastEvent = m.get("lastEvent") instanceof String s ? VehicleEvent.valueOf(s) : null;
             Vehicle raced = vehicles.putIfAbsent(mailbox, v);
             return raced != null ? raced : v;
@@ -202,6 +236,9 @@ final class VehicleStates {
         m.put("lat", s.lat());
         m.put("lon", s.lon());
         m.put("calls", s.calls());
+        synchronized (v) {
+            m.put("run", v.run);
+        }
         m.put("lastEvent", s.lastEvent() == null ? null : s.lastEvent().name());
         saves.offer(new Saved(mailbox, Json.write(m) + "\n"));
     }

@@ -54,4 +54,29 @@ class ServiceStartedTest {
             hub.close();
         }
     }
+
+    @Test
+    void callsAreCountedPerRunOfTheServiceAndARegistrationOfTheSameRunKeepsTheCount() throws Exception {
+        try (EmbeddedStateStore store = new EmbeddedStateStore(data, 1 << 20)) {
+            ConsoleHub hub = new ConsoleHub(data.resolve("transcripts"), store, 90, m -> new byte[0]);
+            long first = System.currentTimeMillis() - 10_000;
+            hub.serviceStarted(SERVICE, first, List.of(RU29));
+            assertThat(hub.state(RU29)).as("nothing heard yet").isNull();
+            for (int i = 0; i < 3; i++) {
+                hub.publish(SERVICE, List.of(ConsoleEntry.event(RU29, VehicleEvent.SURFACED, "", null, null)));
+                Thread.sleep(2);
+                hub.publish(SERVICE, List.of(ConsoleEntry.event(RU29, VehicleEvent.DIVED, "", null, null)));
+                Thread.sleep(2);
+            }
+            assertThat(hub.state(RU29).calls()).isEqualTo(3);
+            hub.serviceStarted(SERVICE, first, List.of(RU29)); // the same instance again (the server restarted)
+            assertThat(hub.state(RU29).calls()).isEqualTo(3);
+            hub.serviceStarted(SERVICE, System.currentTimeMillis(), List.of(RU29)); // a new run of the service
+            assertThat(hub.state(RU29).calls()).isZero();
+            assertThat(hub.state(RU29).state()).isEqualTo(SessionState.State.DIVED);
+            hub.publish(SERVICE, List.of(ConsoleEntry.event(RU29, VehicleEvent.SURFACED, "", null, null)));
+            assertThat(hub.state(RU29).calls()).as("call 1 of this run, as the service says").isEqualTo(1);
+            hub.close();
+        }
+    }
 }

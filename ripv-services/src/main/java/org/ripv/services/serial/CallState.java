@@ -114,13 +114,17 @@ final class CallState {
                 p == null ? null : p.lon()));
     }
 
-    /** For ?status: "on call since 14:02:11 UTC (call 3, caller 10.0.0.7:40112)". */
+    /**
+     * For ?status: "on call since 14:02:11 UTC (caller 10.0.0.7:40112)". No count of calls: the
+     * server's vehicle state beside it counts them (per run of this service, as SURFACED's "call N"
+     * does), and one line should not say it twice.
+     */
     String describe() {
         String at = TIME.format(Instant.ofEpochMilli(since));
         return switch (state) {
             case NEVER -> "no call yet";
-            case ON_CALL -> "on call since " + at + " (call " + calls + ", " + how + ")";
-            case DIVED -> "dived at " + at + " (" + why + "; " + calls + " call" + (calls == 1 ? "" : "s") + ")";
+            case ON_CALL -> "on call since " + at + " (" + how + ")";
+            case DIVED -> "dived at " + at + " (" + why + ")";
             case LOST -> "lost at " + at + " (" + why + ")";
         };
     }
