@@ -155,6 +155,18 @@ class WebConsoleBrowserTest {
         }
     }
 
+    /** A fresh browser of the user's own, logged in, on the fleet page. */
+    static ChromeDriver loggedIn(String user) throws IOException {
+        ChromeDriver b = Chromium.start(Files.createDirectories(dir.resolve(user + "-browser")));
+        try {
+            logIn(b, user);
+            return b;
+        } catch (RuntimeException | Error e) {
+            b.quit();
+            throw e;
+        }
+    }
+
     static void shot(ChromeDriver b, String name) throws IOException {
         Files.write(shots.resolve(name + ".png"), b.getScreenshotAs(OutputType.BYTES));
     }
@@ -165,12 +177,10 @@ class WebConsoleBrowserTest {
 
     @Test
     void anOperatorWatchesTheGliderCallInSendsDirWithTheLockAndSeesHtmlAsText() throws Exception {
-        ChromeDriver b = Chromium.start(Files.createDirectories(dir.resolve("alice-browser")));
+        ChromeDriver b = loggedIn("alice");
         try {
-            logIn(b, "alice");
             WebDriverWait wait = new WebDriverWait(b, T);
-            WebElement row = wait.until(d -> d.findElements(By.cssSelector("tr[data-address]")).stream()
-                    .filter(r -> r.getText().contains("glider1")).findFirst().orElse(null));
+            wait.until(d -> d.findElements(By.cssSelector("tr[data-address]")).stream().anyMatch(r -> r.getText().contains("glider1")));
             wait.until(d -> d.findElement(By.cssSelector("tr[data-address] .badge")).getText().equals("on call"));
             wait.until(d -> !"0".equals(d.findElement(By.id("map")).getAttribute("data-points")));
             shot(b, "fleet-desktop");
@@ -216,9 +226,8 @@ class WebConsoleBrowserTest {
 
     @Test
     void anObserverSeesTheConsoleWithNoWayToSend() throws Exception {
-        ChromeDriver b = Chromium.start(Files.createDirectories(dir.resolve("olga-browser")));
+        ChromeDriver b = loggedIn("olga");
         try {
-            logIn(b, "olga");
             WebDriverWait wait = new WebDriverWait(b, T);
             b.get("https://127.0.0.1:" + http + "/vehicle.html?m=" + java.net.URLEncoder.encode(glider, StandardCharsets.UTF_8));
             wait.until(d -> console(d).contains("GPS Location"));

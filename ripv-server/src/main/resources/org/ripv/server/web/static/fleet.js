@@ -22,6 +22,8 @@ function row(address, v) {
   state.append(badge);
   const cells = [ago(v.lastContact), v.lat == null ? '—' : `${v.lat.toFixed(4)}, ${v.lon.toFixed(4)}`, String(v.calls ?? 0), v.latest || ''];
   tr.append(name, state, ...cells.map((t) => { const td = document.createElement('td'); td.textContent = t; return td; }));
+  tr.children[2].className = 'ago';
+  tr.children[2].dataset.time = String(v.lastContact || 0);
   tr.dataset.address = address;
   return tr;
 }
@@ -72,4 +74,7 @@ if (list.status === 'ERROR') {
   }
   render();
 }
-setInterval(render, 1000); // "12 min ago" keeps ticking
+// "12 min ago" keeps ticking; only that text changes, so a row never moves under the user's pointer.
+setInterval(() => {
+  for (const td of document.querySelectorAll('td.ago')) td.textContent = ago(Number(td.dataset.time));
+}, 1000);
