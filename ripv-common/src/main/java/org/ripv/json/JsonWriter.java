@@ -70,7 +70,7 @@ public final class JsonWriter {
                 case '\r' -> b.append("\\r");
                 case '\t' -> b.append("\\t");
                 default -> {
-                    if (c < 0x20 || c == 0x2028 || c == 0x2029) {
+                    if (c < 0x20 || c >= 0x7f && c <= 0x9f || c == 0x2028 || c == 0x2029) { // DEL and C1 too: JSON lines reach terminals
                         b.append(String.format("\\u%04x", (int) c));
                     } else {
                         b.append(c);

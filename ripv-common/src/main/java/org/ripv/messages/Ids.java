@@ -53,6 +53,8 @@ public final class Ids {
     public static final String FID_QUEUE = "555800";
     public static final String FID_RECEIPTS = "555801";
     public static final String FID_CANCEL = "555802";
+    /** {@code ?key MAILBOX KEY}: one control key to a vehicle (docs/serial.md#control-keys). */
+    public static final String FID_KEY = "555720";
     /** Replies to a message the server could not attribute to any command or service. */
     public static final String FID_NONE = "000000";
 

@@ -19,5 +19,7 @@ public enum VehicleEvent {
     LOCK_TAKEN,
     LOCK_RELEASED,
     WORKFLOW_DONE,
-    WORKFLOW_FAILED
+    WORKFLOW_FAILED,
+    /** A workflow reached its end, but steps marked {@code continue-on-error} failed on the way. */
+    WORKFLOW_DONE_WITH_ERRORS
 }

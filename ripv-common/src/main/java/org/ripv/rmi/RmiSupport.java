@@ -33,17 +33,20 @@ public final class RmiSupport {
     }
 
     /**
-     * Filters every object stream of this process that has no filter of its own — above all the
-     * return values of RMI calls to other RIPV processes — with {@link WireFilter#forProcess}.
-     * For the launchers of servers and services, which own their JVM; a library user keeps
-     * control of theirs. Idempotent; false when another filter was installed first.
+     * Filters the object streams RMI and RIPV make in this process — above all the return values
+     * of RMI calls to other RIPV processes — with {@link WireFilter#forProcess}, through a filter
+     * factory ({@link RmiStreamFilters}) that leaves the streams of libraries such as Derby to
+     * the JVM's own settings. For the launchers of servers and services, which own their JVM; a
+     * library user keeps control of theirs. Idempotent; false when another factory was installed
+     * first or an object stream was made before (the JVM then allows no factory).
      */
     public static synchronized boolean filterProcess() {
-        if (java.io.ObjectInputFilter.Config.getSerialFilter() instanceof WireFilter) {
+        if (java.io.ObjectInputFilter.Config.getSerialFilterFactory() instanceof RmiStreamFilters) {
             return true;
         }
         try {
-            java.io.ObjectInputFilter.Config.setSerialFilter(WireFilter.forProcess(MAX_RMI_BYTES));
+            java.io.ObjectInputFilter.Config.setSerialFilterFactory(new RmiStreamFilters(
+                    java.io.ObjectInputFilter.Config.getSerialFilterFactory(), WireFilter.forProcess(MAX_RMI_BYTES)));
             return true;
         } catch (IllegalStateException e) {
             return false;

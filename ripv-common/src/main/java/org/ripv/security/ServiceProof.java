@@ -61,6 +61,16 @@ public final class ServiceProof {
                 && MessageDigest.isEqual(a.getBytes(StandardCharsets.UTF_8), b.getBytes(StandardCharsets.UTF_8));
     }
 
+    /**
+     * True when a refusal asks to be tried again ("register again", "retry", "try again"): such a
+     * refusal comes from a live server that will take the service later, so a service keeps trying.
+     */
+    public static boolean saysRetry(String refusal) {
+        return refusal != null && RETRY.matcher(refusal).find();
+    }
+
+    private static final Pattern RETRY = Pattern.compile("\\b(?:register again|retry|try again)\\b", Pattern.CASE_INSENSITIVE);
+
     /** True when the text is a nonce as {@link #nonce} makes them (so that no one feeds a long string to the HMAC). */
     public static boolean isNonce(String s) {
         return s != null && s.matches("[0-9a-f]{32}");

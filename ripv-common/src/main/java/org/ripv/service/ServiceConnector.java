@@ -154,6 +154,13 @@ public final class ServiceConnector implements AutoCloseable {
             // Refused but fixable (the server cannot call back, or a newer attempt won): say so, keep trying.
             notice(e.getMessage());
         } catch (SecurityException e) {
+            if (ServiceProof.saysRetry(e.getMessage())) {
+                // "register again", "retry": the server is there and will take us; a refusal of this
+                // kind never ends the service (issue 23, item 1: a challenge flood made it exit).
+                notice(e.getMessage());
+                lost();
+                return;
+            }
             // Retrying cannot fix a wrong secret: stop and let the launcher say so.
             log.error("{}: the server refused registration: {}", service.name(), e.getMessage());
             fatal.complete("the server at " + where() + " refused the registration: " + e.getMessage());
@@ -320,7 +327,7 @@ public final class ServiceConnector implements AutoCloseable {
                 t = s.register(d, stub, "");
             } else {
                 String confirmation = s.register(d, stub,
-                        answer[0] + " " + ServiceProof.serviceProof(secret, mine, answer[0], d.name(), stub));
+                        answer[0] + " " + mine + " " + ServiceProof.serviceProof(secret, mine, answer[0], d.name(), stub));
                 if (!ServiceProof.same(confirmation, ServiceProof.serverProof(secret, answer[0], mine))) {
                     throw new Impostor("the server at " + host() + ":" + registryPort()
                             + " accepted the registration without proving it holds the service secret");

@@ -98,7 +98,10 @@ public final class ServiceLaunchOptions {
      * refuses it for good. What every service launcher's {@code call()} returns.
      */
     public int serve(RIPVService service) throws Exception {
-        org.ripv.rmi.RmiSupport.filterProcess();
+        if (!org.ripv.rmi.RmiSupport.filterProcess()) {
+            err.println("Warning: RMI replies in this process are not filtered: an object stream was made before the"
+                    + " launcher could install RIPV's filter factory (call RmiSupport.filterProcess() first in main)");
+        }
         applyBind();
         ServiceConnector connector = ServiceConnector.connect(service, toOptions());
         connector.onNotice(err::println);

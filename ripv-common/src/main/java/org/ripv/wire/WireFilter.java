@@ -83,6 +83,12 @@ public final class WireFilter implements ObjectInputFilter {
     }
 
     private boolean allowed(Class<?> c) {
+        // In a whole process, an embedded database reads its own stored descriptors back (Derby's
+        // boolean[] when the DatabaseServer creates the Slocum tables): arrays of primitives are data
+        // only, their length bounded by maxArray.
+        if (allowRmiRuntime && c.isArray() && c.getComponentType().isPrimitive()) {
+            return true;
+        }
         while (c.isArray()) {
             if (c == byte[].class || c == double[].class || c == String[].class || c == Object[].class
                     || allowRmiRuntime && c == StackTraceElement[].class) {

@@ -47,7 +47,8 @@ class DeadlineSocketFactoryTest {
                     fill.add(f.createSocket("127.0.0.1", full.getLocalPort()));
                 } catch (SocketTimeoutException e) {
                     long ms = (System.nanoTime() - t0) / 1_000_000;
-                    assertThat(ms).isBetween(300L, 3_000L);
+                    // At least the deadline; the upper bound only tells it from the kernel's own ~2 min.
+                    assertThat(ms).isBetween(300L, 30_000L);
                     assertThat(e.getMessage()).contains("could not reach 127.0.0.1:" + full.getLocalPort()).contains("timed out");
                     hung = true;
                 }
@@ -68,7 +69,8 @@ class DeadlineSocketFactoryTest {
             InputStream in = s.getInputStream();
             long t0 = System.nanoTime();
             assertThatThrownBy(in::read).isInstanceOf(SocketTimeoutException.class);
-            assertThat((System.nanoTime() - t0) / 1_000_000).isBetween(200L, 3_000L);
+            assertThat((System.nanoTime() - t0) / 1_000_000).as("at least the deadline; without one the read never ends")
+                    .isBetween(200L, 30_000L);
             assertThat(peer.isConnected()).isTrue();
         }
     }
@@ -106,7 +108,7 @@ class DeadlineSocketFactoryTest {
     }
 
     /** Answers heartbeats only. */
-    static final class Probe implements GenericRMIInterface {
+    static class Probe implements GenericRMIInterface {
         @Override public String challenge(String n) { throw new UnsupportedOperationException(); }
         @Override public String register(org.ripv.messages.ServiceDescriptor d, GenericRMIInterface s, String secret) { throw new UnsupportedOperationException(); }
         @Override public void serviceReply(String t, org.ripv.messages.OutgoingServiceMessage r) { throw new UnsupportedOperationException(); }

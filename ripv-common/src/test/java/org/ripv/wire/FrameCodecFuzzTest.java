@@ -53,9 +53,9 @@ class FrameCodecFuzzTest {
         }
     }
 
-    /** Decodes, allowing only a message or ProtocolException, within a second. */
+    /** Decodes, allowing only a message or ProtocolException; the time limit only catches a hang (a loaded machine is slow, not stuck). */
     private static void decodesCleanly(byte[] body) {
-        Assertions.assertTimeoutPreemptively(Duration.ofSeconds(5), () -> {
+        Assertions.assertTimeoutPreemptively(Duration.ofSeconds(30), () -> {
             try {
                 Message m = CODEC.decode(body);
                 assertThat(m).isNotNull();
@@ -82,7 +82,7 @@ class FrameCodecFuzzTest {
 
     @Property(tries = 200)
     void framesOnAStreamReadCleanly(@ForAll("lengthPrefixed") byte[] stream) {
-        Assertions.assertTimeoutPreemptively(Duration.ofSeconds(5), () -> {
+        Assertions.assertTimeoutPreemptively(Duration.ofSeconds(30), () -> {
             DataInputStream in = new DataInputStream(new ByteArrayInputStream(stream));
             try {
                 while (true) {

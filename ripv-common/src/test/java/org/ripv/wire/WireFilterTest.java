@@ -36,6 +36,10 @@ class WireFilterTest {
                 .isInstanceOf(java.rmi.RemoteException.class);
         assertThat(roundTrip(List.of(new MailboxStatus("<S>::<h>TTY1", true, "", false, "")), process)).isInstanceOf(List.class);
         assertThatThrownBy(() -> roundTrip(new HashMap<>(java.util.Map.of("a", 1)), process)).isInstanceOf(InvalidClassException.class);
+        // Derby, embedded in the DatabaseServer, reads boolean[] back when it creates tables.
+        assertThat(roundTrip(new boolean[] {true, false}, process)).isEqualTo(new boolean[] {true, false});
+        assertThat(roundTrip(new int[] {1, 2}, process)).isEqualTo(new int[] {1, 2});
+        assertThatThrownBy(() -> roundTrip(new boolean[] {true}, WireFilter.forFrames(1 << 20))).isInstanceOf(InvalidClassException.class);
         assertThatThrownBy(() -> roundTrip(new javax.swing.JLabel("gadget"), process)).isInstanceOf(InvalidClassException.class);
     }
 

@@ -22,13 +22,15 @@ public final class BenchMain {
             "  database   a 100,000-row query end to end against direct JDBC   [--rows N] [--runs N] [--warmup N]",
             "  ymodem     YMODEM over a baud-paced relay as a share of the line rate, and against lrzsz",
             "             [BAUD:BYTES ...], e.g. 9600:65536 115200:1048576",
+            String.join("\n", ZmodemBench.USAGE),
             "  console    the live console: 1,000 watchers of a vehicle printing 50 lines/s against one watcher,",
             "             with one more that never reads, and the same fan-out with no RIPV (the machine's floor)",
             "             [--watchers N] [--rate N] [--seconds S] [--baseline-seconds S] [--warmup S] [--raw-threads N]",
             "  ingest     Slocum DBA ingest (2,136 sensors; 100,000 rows) against a direct JDBC batch insert, and",
             "             vis:track of 100,000 positions end to end",
-            "             [--runs N] [--wide-runs N] [--track-runs N] [--only wide|long|track]",
+            "             [--runs N] [--wide-runs N] [--track-runs N] [--rows N] [--only wide|long|track]",
             "  datavis    vis: to JPEG for 10,000 and 1,000,000 points, built-in worker and Octave   [--no-octave]",
+            "             [--points 10000,1000000] [--runs N]",
             "  firststart the DatabaseServer's first start (Derby created and seeded) in a fresh JVM, against",
             "             loading the scripts statement by statement   [--runs N]",
             "  calls      100 vehicles calling 100 listen:// links within a minute: accepted, streamed, delay",
@@ -40,8 +42,14 @@ public final class BenchMain {
             "             PostgreSQL (RIPV_PG_URL) against direct JDBC batch inserts   [--entries N]",
             "  workflow   the simulator calls in with a queued workflow (dir, ymodem:get of 5 files, 500 KB, ymodem:put",
             "             of 100 KB) at 115200 baud: call → WORKFLOW_DONE against the transfers alone, same run",
-            "             [--baud N] [--runs N] [--files N] [--get-bytes N] [--put-bytes N]",
-            "See docs/performance.md for what each measures and the figures.");
+            "             [--baud N] [--runs N] [--files N] [--get-bytes N] [--put-bytes N] [--report-only]",
+            "Every benchmark takes --short: counts and times shrunk to seconds, to check that it still runs (CI does);",
+            "its figures mean little. See docs/performance.md for what each measures and the figures.");
+
+    /** What {@code ripv bench --help} prints: the one list of benchmarks the docs' lists must equal. */
+    public static String usage() {
+        return USAGE;
+    }
 
     public static void main(String[] args) throws Exception {
         if (args.length == 0 || args[0].equals("--help") || args[0].equals("-h")) {
@@ -52,7 +60,7 @@ public final class BenchMain {
             System.out.println(org.ripv.launch.Version.line());
             System.exit(0);
         }
-        String[] rest = Arrays.copyOfRange(args, 1, args.length);
+        String[] rest = ShortMode.apply(args[0], Arrays.copyOfRange(args, 1, args.length));
         if (!List.of("broker", "calls", "workflow").contains(args[0]) && (Arrays.asList(rest).contains("--help") || Arrays.asList(rest).contains("-h"))) {
             System.out.println(USAGE); // the benchmarks without a picocli command of their own
             System.exit(0);
@@ -61,12 +69,16 @@ public final class BenchMain {
         java.nio.file.Path known = java.nio.file.Files.createTempFile("ripv-bench-known-hosts", "");
         known.toFile().deleteOnExit();
         System.setProperty(org.ripv.client.handlers.Tls.KNOWN_HOSTS_PROPERTY, known.toString());
+        if (ShortMode.names().contains(args[0])) {
+            System.out.println(CpuClock.machineLine()); // how loaded the machine was, beside every benchmark's figures
+        }
         switch (args[0]) {
             case "broker" -> System.exit(Launchers.commandLine(new BrokerBench(), "ripv bench broker").execute(rest));
             case "database" -> DatabaseBench.main(rest);
             case "connections" -> System.exit(Launchers.commandLine(new ConnectionCostBench()).execute(rest));
             case "console" -> System.exit(Launchers.commandLine(new ConsoleBench()).execute(rest));
             case "ymodem" -> YmodemBenchmark.main(rest);
+            case "zmodem" -> ZmodemBench.main(rest);
             case "datavis" -> DataVisBenchmark.main(rest);
             case "firststart" -> FirstStartBench.main(rest);
             case "calls" -> System.exit(Launchers.commandLine(new CallsBench(), "ripv bench calls").execute(rest));

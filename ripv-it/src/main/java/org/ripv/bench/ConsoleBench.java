@@ -127,7 +127,12 @@ public final class ConsoleBench implements Callable<Integer> {
      *               has no skip marker to count, so a short one shows here)
      * @param shortOnes how many watchers saw fewer lines than the one that saw most, less one
      */
-    record Figures(double p50Ms, double p99Ms, double maxMs, long samples, long skipped, int fewest, int shortOnes) {}
+    /** The delays, and the whole process's CPU per line delivered to one watcher while they were recorded ({@link CpuClock}). */
+    record Figures(double p50Ms, double p99Ms, double maxMs, long samples, long skipped, int fewest, int shortOnes, double cpuMicros) {
+        Figures withCpu(double micros) {
+            return new Figures(p50Ms, p99Ms, maxMs, samples, skipped, fewest, shortOnes, micros);
+        }
+    }
 
     /** Refuses counts and times the benchmark cannot run with, naming the option. */
     private void check() {
@@ -219,7 +224,7 @@ public final class ConsoleBench implements Callable<Integer> {
                     server.console().backlogTotal(), usedHeapAfterGc() >> 20);
             stall.countDown();
             close(stalled);
-            out.printf("load average at the end %.1f%n", ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage());
+            out.println(CpuClock.machineLine());
         } finally {
             connector.close();
             vehicle.stop();
@@ -263,9 +268,11 @@ public final class ConsoleBench implements Callable<Integer> {
         long period = 1_000_000_000L / rate;
         long start = System.nanoTime();
         long total = (long) (warmup + seconds) * rate;
+        CpuClock cpu = CpuClock.start();
         for (long i = 0; i < total; i++) {
             if (i == (long) warmup * rate) {
                 ws.forEach(w -> w.recording = true);
+                cpu = CpuClock.start();
             }
             long due = start + i * period;
             long wait = due - System.nanoTime();
@@ -276,7 +283,8 @@ public final class ConsoleBench implements Callable<Integer> {
         }
         Thread.sleep(1000); // let the last lines arrive
         ws.forEach(w -> w.recording = false);
-        return figures(ws);
+        Figures f = figures(ws);
+        return f.withCpu(cpu.cpuMicrosPer(f.samples()));
     }
 
     /**
@@ -292,11 +300,13 @@ public final class ConsoleBench implements Callable<Integer> {
         }
         try (FanOutFloor f = new FanOutFloor(ws, writers, rawThreads, frame)) {
             Figures bare = run(f::line, ws, seconds);
-            out.printf("%-26s p50 %7.2f ms   p99 %7.2f ms   max %8.2f ms   %8d samples   (%d-byte frames, %d writer threads,"
-                            + " no RIPV: the machine's own cost)%n", "bare fan-out to " + watchers, bare.p50Ms(), bare.p99Ms(),
-                    bare.maxMs(), bare.samples(), frame, writers);
+            out.printf("%-26s p50 %7.2f ms   p99 %7.2f ms   max %8.2f ms   %8d samples   cpu %.1f us/line   (%d-byte frames,"
+                            + " %d writer threads, no RIPV: the machine's own cost)%n", "bare fan-out to " + watchers, bare.p50Ms(),
+                    bare.p99Ms(), bare.maxMs(), bare.samples(), bare.cpuMicros(), frame, writers);
             out.printf("  %d watchers p99 / bare fan-out p99: %.2f× (what RIPV adds on top of the kernel's fan-out)%n",
                     watchers, crowd.p99Ms() / bare.p99Ms());
+            out.println(CpuClock.ratioLine("line to each of " + watchers + " watchers", crowd.cpuMicros(), bare.cpuMicros(),
+                    crowd.p99Ms() / bare.p99Ms()));
         }
     }
 
@@ -320,15 +330,15 @@ public final class ConsoleBench implements Callable<Integer> {
         int fewest = ws.stream().mapToInt(w -> Math.min(w.n.get(), w.delays.length)).min().orElse(0);
         int shortOnes = (int) ws.stream().filter(w -> Math.min(w.n.get(), w.delays.length) < most - 1).count(); // the line at the warm-up's end counts for some, not others
         if (all.length == 0) {
-            return new Figures(Double.NaN, Double.NaN, Double.NaN, 0, skipped, 0, 0);
+            return new Figures(Double.NaN, Double.NaN, Double.NaN, 0, skipped, 0, 0, Double.NaN);
         }
         return new Figures(all[all.length / 2] / 1000.0, all[(int) Math.min(all.length - 1, all.length * 0.99)] / 1000.0,
-                all[all.length - 1] / 1000.0, all.length, skipped, fewest, shortOnes);
+                all[all.length - 1] / 1000.0, all.length, skipped, fewest, shortOnes, Double.NaN);
     }
 
     private void report(String what, Figures f, Figures base) {
-        out.printf("%-26s p50 %7.2f ms   p99 %7.2f ms   max %8.2f ms   %8d samples   %d skipped   p99 %.2f× one watcher%s%n",
-                what, f.p50Ms(), f.p99Ms(), f.maxMs(), f.samples(), f.skipped(), f.p99Ms() / base.p99Ms(),
+        out.printf("%-26s p50 %7.2f ms   p99 %7.2f ms   max %8.2f ms   %8d samples   %d skipped   cpu %.1f us/line   p99 %.2f× one watcher%s%n",
+                what, f.p50Ms(), f.p99Ms(), f.maxMs(), f.samples(), f.skipped(), f.cpuMicros(), f.p99Ms() / base.p99Ms(),
                 f == base ? "" : "   (targets: p99 ≤ 100 ms and ≤ 3×)");
         if (f.shortOnes() > 0) {
             out.printf("  %d watcher(s) saw fewer lines than the others (the fewest: %d)%n", f.shortOnes(), f.fewest());

@@ -55,7 +55,7 @@ import org.ripv.services.database.QueryLimits;
  *   <li><b>end to end</b>: a real client over a socket → RIPVServer → RMI → DatabaseServer →
  *       Derby → RMI → server → socket → client, until the client holds the table.</li>
  * </ol>
- * Prints the medians, the ratio to direct JDBC, the table's serialized size (it must fit one
+ * Prints the medians, the ratio to direct JDBC, the whole process's mean CPU per query and its ratio ({@link CpuClock}), the table's serialized size (it must fit one
  * 16 MiB socket frame) and the heap's peak. Run:
  * <pre>
  * mvn -q -B -DskipTests package -pl ripv-it -am
@@ -93,6 +93,7 @@ public final class DatabaseBench {
         double[] direct = new double[runs];
         double[] inProcess = new double[runs];
         double[] endToEnd = new double[runs];
+        long[] cpu = new long[3]; // CPU nanoseconds of the whole process per path, over the measured runs
         long serialized = 0;
 
         // 2. a service of its own, not connected to a server, for the in-process path
@@ -121,15 +122,19 @@ public final class DatabaseBench {
             client.login("bench", "bench-password".toCharArray());
             String mailbox = service.name().mailbox(MAILBOX).toString();
             for (int i = -warmups; i < runs; i++) {
+                long c0 = CpuClock.processCpuNanos();
                 long t0 = System.nanoTime();
                 check(directQuery(c, sql), rows);
                 long t1 = System.nanoTime();
+                long c1 = CpuClock.processCpuNanos();
                 TableResult t = inProcess(local, localMailbox, sql, replies);
                 long t2 = System.nanoTime();
+                long c2 = CpuClock.processCpuNanos();
                 check(t.rows().size(), rows);
                 t = null;
                 OutgoingServerMessage r = client.call(mailbox, sql, Priority.NORMAL, Duration.ofMinutes(5), null);
                 long t3 = System.nanoTime();
+                long c3 = CpuClock.processCpuNanos();
                 if (r.status() != Status.OK) {
                     throw new IllegalStateException("end to end failed: " + r.footer().replyText());
                 }
@@ -139,6 +144,9 @@ public final class DatabaseBench {
                     direct[i] = (t1 - t0) / 1e6;
                     inProcess[i] = (t2 - t1) / 1e6;
                     endToEnd[i] = (t3 - t2) / 1e6;
+                    cpu[0] += c1 - c0;
+                    cpu[1] += c2 - c1;
+                    cpu[2] += c3 - c2;
                 } else {
                     serialized = serializedSize(e);
                 }
@@ -154,10 +162,13 @@ public final class DatabaseBench {
         double d = median(direct);
         double s = median(inProcess);
         double e = median(endToEnd);
-        System.out.printf(Locale.ROOT, "%-40s %10s %14s %8s%n", "path", "median ms", "rows/s", "ratio");
-        line("direct JDBC (read every cell as text)", d, rows, d);
-        line("service in-process (accept -> TableResult)", s, rows, d);
-        line("end to end (client -> server -> RMI -> service)", e, rows, d);
+        double[] cpuMs = {cpu[0] / 1e6 / runs, cpu[1] / 1e6 / runs, cpu[2] / 1e6 / runs};
+        System.out.println(CpuClock.machineLine());
+        System.out.printf(Locale.ROOT, "%-40s %10s %14s %8s %12s %9s%n", "path", "median ms", "rows/s", "ratio", "cpu ms/query", "cpu ratio");
+        line("direct JDBC (read every cell as text)", d, rows, d, cpuMs[0], cpuMs[0]);
+        line("service in-process (accept -> TableResult)", s, rows, d, cpuMs[1], cpuMs[0]);
+        line("end to end (client -> server -> RMI -> service)", e, rows, d, cpuMs[2], cpuMs[0]);
+        System.out.println(CpuClock.ratioLine("end to end", cpuMs[2] * 1e3, cpuMs[0] * 1e3, e / d));
         System.out.printf(Locale.ROOT, "TableResult serialized: %,d bytes (%.1f MiB; one socket frame holds %d MiB)%n",
                 serialized, serialized / 1048576.0, 16);
         System.out.printf(Locale.ROOT, "peak heap during service and end-to-end runs (server, service and client in one JVM): %,d MiB of %,d MiB%n",
@@ -201,6 +212,9 @@ public final class DatabaseBench {
             try (Statement st = c.createStatement()) {
                 st.execute("CREATE TABLE bench_readings (leg_id INTEGER NOT NULL, sensor_id INTEGER NOT NULL,"
                         + " t TIMESTAMP NOT NULL, value DOUBLE PRECISION NOT NULL, raw_value DOUBLE PRECISION NOT NULL)");
+                // The in-process path asks with no roles, so it reads as the reader (DatabaseHandler.readsOnly),
+                // which holds SELECT only on what it is granted, like the six seeded tables.
+                st.execute("GRANT SELECT ON bench_readings TO " + db.readerUser());
             }
             LocalDateTime start = LocalDateTime.of(2002, 4, 2, 13, 0);
             try (PreparedStatement ps = c.prepareStatement("INSERT INTO bench_readings VALUES (?, ?, ?, ?, ?)")) {
@@ -249,8 +263,9 @@ public final class DatabaseBench {
         return sum;
     }
 
-    private static void line(String what, double ms, int rows, double base) {
-        System.out.printf(Locale.ROOT, "%-40s %10.1f %,14.0f %7.2fx%n", what, ms, rows / (ms / 1000), ms / base);
+    private static void line(String what, double ms, int rows, double base, double cpuMs, double cpuBase) {
+        System.out.printf(Locale.ROOT, "%-40s %10.1f %,14.0f %7.2fx %12.1f %8.2fx%n", what, ms, rows / (ms / 1000), ms / base,
+                cpuMs, cpuMs / cpuBase);
     }
 
     private static double median(double[] v) {

@@ -61,7 +61,8 @@ import org.ripv.services.ingest.DbaReader;
  * </ol>
  * Options: {@code --runs N} (default 2, of the 100,000-row file), {@code --wide-runs N} (default 7: a run of the
  * 2,136-sensor file takes about a second, and a median of two is at the mercy of a shared machine),
- * {@code --track-runs N} (default 3), {@code --only wide|long|track}
+ * {@code --track-runs N} (default 3), {@code --rows N} (rows of the long file and positions of the track, default
+ * 100,000), {@code --only wide|long|track}
  * (one part; {@code --track-only} is {@code --only track}).
  */
 public final class IngestBench {
@@ -73,6 +74,7 @@ public final class IngestBench {
         int runs = intOption(args, "--runs", 2);
         int wideRuns = intOption(args, "--wide-runs", Math.max(runs, 7));
         int trackRuns = intOption(args, "--track-runs", 3);
+        int rows = intOption(args, "--rows", 100_000);
         String only = Arrays.asList(args).contains("--track-only") ? "track" : stringOption(args, "--only", "all");
         if (!List.of("all", "wide", "long", "track").contains(only)) {
             throw new IllegalArgumentException("--only wide, long or track, not " + only);
@@ -81,9 +83,9 @@ public final class IngestBench {
         try {
             if (only.equals("track")) {
                 DatabaseTarget db = EmbeddedDatabase.prepare(dir.resolve("database"), "TTY1");
-                track(dir, db, new QueryLimits(200_000, 600, 64L * 1024 * 1024), trackRuns);
+                track(dir, db, new QueryLimits(200_000, 600, 64L * 1024 * 1024), trackRuns, rows);
             } else {
-                run(dir, runs, wideRuns, trackRuns, only);
+                run(dir, runs, wideRuns, trackRuns, only, rows);
             }
         } finally {
             deleteTree(dir);
@@ -91,7 +93,7 @@ public final class IngestBench {
         System.exit(0);
     }
 
-    private static void run(Path dir, int runs, int wideRuns, int trackRuns, String only) throws Exception {
+    private static void run(Path dir, int runs, int wideRuns, int trackRuns, String only, int rows) throws Exception {
         DatabaseTarget db = EmbeddedDatabase.prepare(dir.resolve("database"), "TTY1");
         QueryLimits limits = new QueryLimits(200_000, 600, 64L * 1024 * 1024);
         DatabaseServer local = new DatabaseServer("localhost", List.of(db), limits);
@@ -102,7 +104,7 @@ public final class IngestBench {
                 wideRuns, runs,
                 System.getProperty("java.vm.name") + " " + System.getProperty("java.version"));
         byte[] wide = only.equals("long") ? null : generate("wide", 2136, 140, 0.03, false, 1);
-        byte[] long30 = only.equals("wide") ? null : generate("long", 30, 100_000, 0.5, false, 2);
+        byte[] long30 = only.equals("wide") ? null : generate("long", 30, rows, 0.5, false, 2);
         System.out.printf(Locale.ROOT, "%-34s %9s %10s %10s %12s %7s%n", "file", "values", "ingest ms", "direct ms",
                 "ingest v/s", "ratio");
         try (Connection c = DriverManager.getConnection(db.url(), db.user(), db.password())) {
@@ -112,13 +114,13 @@ public final class IngestBench {
                 measure(c, local, replies, "2,136 sensors, 1.2 MB", wide, wideRuns);
             }
             if (long30 != null) {
-                measure(c, local, replies, "30 sensors, 100,000 rows", long30, runs);
+                measure(c, local, replies, String.format(Locale.ROOT, "30 sensors, %,d rows", rows), long30, runs);
             }
         } finally {
             local.stop();
         }
         if (only.equals("all")) {
-            track(dir, db, limits, trackRuns);
+            track(dir, db, limits, trackRuns, rows);
         }
     }
 
@@ -283,7 +285,7 @@ public final class IngestBench {
     }
 
     /** vis:track of 100,000 positions through the whole system. */
-    private static void track(Path dir, DatabaseTarget db, QueryLimits limits, int runs) throws Exception {
+    private static void track(Path dir, DatabaseTarget db, QueryLimits limits, int runs, int rows) throws Exception {
         ServerConfig config = ServerConfig.forTests(dir.resolve("server"));
         RIPVServer server = new RIPVServer(config);
         server.start();
@@ -303,7 +305,7 @@ public final class IngestBench {
             client.login("bench", "bench-password".toCharArray());
             String dbBox = dbService.name().mailbox("TTY1").toString();
             String visBox = vis.name().mailbox("TTY1").toString();
-            byte[] file = generate("track", 4, 100_000, 1.0, true, 4);
+            byte[] file = generate("track", 4, rows, 1.0, true, 4);
             Path dl = config.dataDir().resolve("download");
             Files.createDirectories(dl);
             Files.write(dl.resolve("track.mrg"), file);
@@ -329,9 +331,9 @@ public final class IngestBench {
                     cpu[i] = (cpu1 - cpu0) / 1e6;
                 }
             }
-            System.out.printf(Locale.ROOT, "vis:track of 100,000 positions end to end: median %.0f ms (target < 1000 ms;"
+            System.out.printf(Locale.ROOT, "vis:track of %,d positions end to end: median %.0f ms (target < 1000 ms;"
                     + " raw %s); CPU of client, server and both services: median %.0f ms %s%n",
-                    median(ms), rounded(ms), median(cpu), rounded(cpu));
+                    rows, median(ms), rounded(ms), median(cpu), rounded(cpu));
             System.out.println("  last reply: " + text);
         } finally {
             c1.close();

@@ -68,6 +68,10 @@ public final class WorkflowBench implements Callable<Integer> {
     @Option(names = "--runs", defaultValue = "1", description = "Calls measured, each with a fresh vehicle (default ${DEFAULT-VALUE}).")
     int runs;
 
+    @Option(names = "--report-only", description = "Exit 0 when the ratio misses the target (what --short passes: a shrunk"
+            + " transfer is all overhead, so its ratio says nothing).")
+    boolean reportOnly;
+
     private final PrintStream out = System.out;
 
     /** The files' contents: deterministic, incompressible. */
@@ -117,7 +121,7 @@ public final class WorkflowBench implements Callable<Integer> {
                 server.stop();
             }
         }
-        return worst <= 1150 ? 0 : 1;
+        return worst <= 1150 || reportOnly ? 0 : 1;
     }
 
     /** One call with the workflow queued: seconds from the vehicle's connect to WORKFLOW_DONE. */

@@ -36,6 +36,14 @@ public final class Postgres implements AutoCloseable {
         } catch (IOException e) {
             return "needs a postgres system user (the postgresql package makes it)";
         }
+        String tmp = System.getProperty("java.io.tmpdir");
+        try {
+            // The cluster lives in a temporary directory the postgres user must reach (a /tmp of mode 700 bars it).
+            Netns.sh("runuser", "-u", "postgres", "--", "test", "-x", tmp);
+        } catch (IOException e) {
+            return "needs a temporary directory the postgres user can enter: " + tmp + " is closed to it"
+                    + " (chmod 1777 " + tmp + ", or run with -Djava.io.tmpdir=DIR)";
+        }
         return null;
     }
 

@@ -112,6 +112,7 @@ class DataLoopEndToEndTest {
     void aFetchedDbaFileIsIngestedAndItsPositionsAreQueryable() {
         assertThat(cli("use " + serial, "ymodem:get cp_388_2016_012_0_0.mrg")).as(out()).isZero();
         assertThat(out()).contains("received cp_388_2016_012_0_0.mrg").contains("cp_388_2016_012_0_0.mrg into " + DB)
+                .contains("fetched 1, ingested 1 into " + DB)
                 .contains("cp_388-2016-012-0-0: 23 rows, 52 sensors, 292 values, 2 positions (4 no-fix values left out)");
         assertThat(cli("use " + DB, "SELECT vehicle, lat, lon, source FROM positions ORDER BY time_utc")).as(out()).isZero();
         assertThat(out()).contains("cp_388").contains("39.8477").contains("-70.7722").contains("dead-reckoned")
@@ -143,7 +144,12 @@ class DataLoopEndToEndTest {
     @Test
     @Order(3)
     void theBrokenFileIsRefusedWithNothingStored() {
-        assertThat(cli("use " + serial, "ymodem:get short_header.mrg")).as(out()).isZero(); // the download itself worked
+        // the download worked, the ingest did not: the reply says both and is an ERROR, the file is stored
+        assertThat(cli("use " + serial, "ymodem:get short_header.mrg")).as(out()).isNotZero();
+        assertThat(out()).contains("received short_header.mrg").contains("fetched 1, ingested 0: not ingested")
+                .contains("DATABASE_ERROR");
+        assertThat(sys.downloadDir().resolve(serial.substring(serial.lastIndexOf('>') + 1)).resolve("short_header.mrg"))
+                .exists();
         assertThat(out()).contains("not ingested").contains("short_header.mrg: refused, nothing stored: line 11: the file"
                 + " ends in the header after 10 of 14 tag lines");
         assertThat(cli("use " + DB, "SELECT COUNT(*) FROM data_file")).isZero();

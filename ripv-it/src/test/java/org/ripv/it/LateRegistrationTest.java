@@ -56,7 +56,7 @@ class LateRegistrationTest {
             throws java.rmi.RemoteException {
         String mine = org.ripv.security.ServiceProof.nonce();
         String[] answer = server.challenge(mine).split(" ");
-        server.register(d, stub, answer[0] + " " + org.ripv.security.ServiceProof.serviceProof(secret, mine, answer[0], d.name(), stub));
+        server.register(d, stub, answer[0] + " " + mine + " " + org.ripv.security.ServiceProof.serviceProof(secret, mine, answer[0], d.name(), stub));
         return org.ripv.security.ServiceProof.token(secret, mine, answer[0]);
     }
 

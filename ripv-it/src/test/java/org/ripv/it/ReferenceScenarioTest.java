@@ -116,9 +116,12 @@ class ReferenceScenarioTest {
         assertThat(jpeg[0] & 0xff).isEqualTo(0xff);
         assertThat(jpeg[1] & 0xff).isEqualTo(0xd8);
 
-        // Meanwhile the observers list and offload the same files...
-        assertThat(cli("olga", "use " + glider, "dir", "ymodem:get MISSION2.LOG", "?dlfiles")).as(err()).isZero();
+        // Meanwhile the observers see the same files the operators offloaded (the template lets them
+        // send nothing to the vehicle: issue 23, item 12)...
+        assertThat(cli("olga", "?dlfiles")).as(err()).isZero();
         assertThat(out()).contains("MISSION2.LOG");
+        assertThat(cli("olga", "use " + glider, "dir")).isEqualTo(1);
+        assertThat(err()).contains("FORBIDDEN").contains("'dir'");
         // ...and may read the database, but not write it, nor upload to the glider, nor send GO.
         assertThat(cli("olga", "use <DatabaseServer>::<localhost>TTY1", "DELETE FROM sensor_data")).isEqualTo(1);
         assertThat(cli("olga", "use " + glider, "ymodem:put GLIDER.BIN")).isEqualTo(1);

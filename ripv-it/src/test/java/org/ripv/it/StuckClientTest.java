@@ -78,7 +78,7 @@ class StuckClientTest {
                 OutgoingServerMessage r = alice.call("", "?whoami", Priority.NORMAL, T, null);
                 long ms = (System.nanoTime() - start) / 1_000_000;
                 assertThat(r.status()).isEqualTo(Status.OK);
-                assertThat(ms).as("a reply to a client that reads, while " + STUCK + " never read").isLessThan(2_000);
+                assertThat(ms).as("a reply to a client that reads, while " + STUCK + " never read").isLessThan(10_000);
             }
             ClientSocketHandler late = sys.login("alice"); // a new client is served too
             assertThat(late.call("", "?whoami", Priority.NORMAL, T, null).status()).isEqualTo(Status.OK);

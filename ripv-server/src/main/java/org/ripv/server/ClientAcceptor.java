@@ -93,6 +93,28 @@ final class ClientAcceptor {
         }
     }
 
+    /**
+     * A client the server connected to itself for a web console page (org.ripv.server.web): given
+     * an id, admitted by the gate like any connection, marked logged in as the user the web log-in
+     * checked, and started — from here on it is a client like any other.
+     */
+    SocketHandler adopt(Socket s, String user, java.util.List<String> roles) throws IOException {
+        String id = newClientId();
+        SocketHandler h = new SocketHandler(s, id, codec, writers, dispatch);
+        if (!running || !gate.admit(id, s.getInetAddress(), h::close)) {
+            closeQuietly(s);
+            throw new IOException("the server takes no more connections now");
+        }
+        if (!gate.loggedIn(id)) {
+            h.close();
+            throw new IOException("the server has " + gate.limits().maxLoggedIn() + " clients logged in, the most it takes");
+        }
+        h.loggedIn(user, roles);
+        clients.put(id, h);
+        h.start();
+        return h;
+    }
+
     private String newClientId() {
         while (true) {
             int n = nextClientId.incrementAndGet();

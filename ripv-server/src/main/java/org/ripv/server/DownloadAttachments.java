@@ -22,8 +22,14 @@ final class DownloadAttachments {
 
     private DownloadAttachments() {}
 
+    /** The requester's right to one file ({@link DownloadRights}). */
+    @FunctionalInterface
+    interface Check {
+        void check(String name) throws IOException;
+    }
+
     /** The bundle for {@code body}, or null when its first word is no download prefix of the service. */
-    static Attachment forCommand(FileStore files, ServiceDescriptor d, String body) throws IOException {
+    static Attachment forCommand(FileStore files, ServiceDescriptor d, String body, Check rights) throws IOException {
         String[] words = body.trim().split("\\s+");
         String first = words[0].toLowerCase(Locale.ROOT);
         if (d.downloadPrefixes().stream().noneMatch(p -> p.toLowerCase(Locale.ROOT).equals(first))) {
@@ -41,6 +47,7 @@ final class DownloadAttachments {
             if (words[i].indexOf('=') > 0) {
                 break; // options follow the names
             }
+            rights.check(words[i]); // before a byte is read: the requester's right to this file
             long size = (Long) files.readDownload(words[i], 0, 0)[0];
             total += size;
             if (total > MAX_TOTAL) {

@@ -72,7 +72,11 @@ final class InternalCalls implements ServiceCalls {
         Attachment a = attachment;
         if (a == null) {
             try {
-                a = DownloadAttachments.forCommand(server.files(), ref.get().descriptor(), body);
+                a = DownloadAttachments.forCommand(server.files(), ref.get().descriptor(), body,
+                        name -> DownloadRights.check(server.files(), server.permits(), user, name));
+            } catch (ServerCommands.SecurityRefusal e) {
+                done.complete(Footer.error(ref.get().descriptor().sid(), ErrorCode.FORBIDDEN, e.getMessage()));
+                return done;
             } catch (IOException | IllegalArgumentException e) {
                 done.complete(Footer.error(ref.get().descriptor().sid(), ErrorCode.BAD_FILE_NAME, e.getMessage()));
                 return done;

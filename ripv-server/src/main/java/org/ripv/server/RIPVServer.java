@@ -28,7 +28,7 @@ import org.ripv.rmi.GenericRMIInterface;
 import org.ripv.rmi.RmiSupport;
 import org.ripv.server.files.FileStore;
 import org.ripv.server.handlers.SocketHandler;
-import org.ripv.server.http.LandingPage;
+import org.ripv.server.web.WebConsole;
 import org.ripv.server.permit.PermitFile;
 import org.ripv.server.permit.PermitWatcher;
 import org.ripv.server.security.RegistryGuard;
@@ -89,7 +89,7 @@ public final class RIPVServer implements AutoCloseable {
     private volatile ClientAcceptor acceptor;
     private Registry registry;
     private int registryPort;
-    private LandingPage landingPage;
+    private WebConsole landingPage;
     private ServerSecurity security;
     private RegistryGuard registryGuard;
     private ServerTls tls;
@@ -144,7 +144,12 @@ public final class RIPVServer implements AutoCloseable {
         workflows = new org.ripv.server.workflow.Workflows(state.store(), new WorkflowBridge(this));
         endings = new RequestEndings(this, pending, withdrawals, config.requestTimeout());
         box = postOffice.open(POST_OFFICE, new ServerTaskManager(this));
-        security = new ServerSecurity(config.security(), config.maxClients(), timers, permits::current, () -> secret);
+        // A log-in looks at the file first (one stat): a user just added with ripv passwd can log in
+        // at once, not only after the next periodic check.
+        security = new ServerSecurity(config.security(), config.maxClients(), timers, () -> {
+            permits.reloadIfChanged();
+            return permits.current();
+        }, () -> secret);
         sessions = new ServerSessions(config.dataDir(), state.store(), sessionOptions, this::permits, this::client, codec);
         sessions.expireLocks(timers, locks, mailbox -> workflows.lockReleased(mailbox));
         permits.onChange(sessions::permitsChanged);
@@ -277,9 +282,10 @@ public final class RIPVServer implements AutoCloseable {
         if (config.httpPort() < 0) {
             return;
         }
-        LandingPage page = new LandingPage(new LandingPage.Options(new InetSocketAddress(bind, config.httpPort()),
-                files.uploadDir(), config.maxUpload(), config.clientJar(), this::describe, port(),
-                config.security().httpUpload() ? security.webAccess() : null, tls.context()));
+        // The web console (org.ripv.server.web): its pages are Post Office clients through WebClients.
+        WebConsole page = new WebConsole(new WebConsole.Options(new InetSocketAddress(bind, config.httpPort()),
+                files.uploadDir(), config.maxUpload(), config.clientJar(), this::describe, port(), security.webAccess(),
+                config.security().httpUpload(), tls.context(), new WebClients(() -> acceptor), codec, null));
         try {
             page.start();
         } catch (IOException e) {

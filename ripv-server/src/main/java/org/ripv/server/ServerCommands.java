@@ -63,6 +63,7 @@ final class ServerCommands {
                 "the workflows queued for a vehicle's next call (docs/workflows.md)"));
         COMMANDS.put("?receipts", new Command(Ids.FID_RECEIPTS, "?receipts MAILBOX [--last N]", "what the last workflow runs did"));
         COMMANDS.put("?cancel", new Command(Ids.FID_CANCEL, "?cancel MESSAGE-ID [CLIENT-ID]", "stop a request that is queued or running"));
+        COMMANDS.put("?key", new Command(Ids.FID_KEY, "?key MAILBOX KEY", "press a control key on a vehicle (ctrl-c, ctrl-r, …)"));
         COMMANDS.put("?watch", new Command(Ids.FID_WATCH, "?watch MAILBOX", "follow a MailBox's console: lines, commands, events"));
         COMMANDS.put("?unwatch", new Command(Ids.FID_UNWATCH, "?unwatch MAILBOX", "stop following it"));
         COMMANDS.put("?history", new Command(Ids.FID_HISTORY, "?history MAILBOX [--last N] [--since ISO-TIME]", "its transcript"));
@@ -74,9 +75,12 @@ final class ServerCommands {
     private final RIPVServer server;
 
     private final ServiceQueries queries;
+    /** Sends a request on to its MailBox's service as a client's command goes (checks included); a refusal, or null. */
+    private final java.util.function.Function<IncomingServerMessage, OutgoingServerMessage> route;
 
-    ServerCommands(RIPVServer server) {
+    ServerCommands(RIPVServer server, java.util.function.Function<IncomingServerMessage, OutgoingServerMessage> route) {
         this.server = server;
+        this.route = route;
         this.queries = new ServiceQueries(server);
     }
 
@@ -265,6 +269,7 @@ final class ServerCommands {
                 if (w.length != 4) {
                     throw new IllegalArgumentException("usage: " + c.usage());
                 }
+                DownloadRights.check(files, server.permits(), user, w[1]);
                 long offset = number(w[2], "OFFSET");
                 int length = (int) Math.min(MAX_DOWNLOAD_CHUNK, number(w[3], "LENGTH"));
                 Object[] chunk = files.readDownload(w[1], offset, length);
@@ -277,6 +282,8 @@ final class ServerCommands {
                 return server.workflows().queueCommand(request);
             case "?receipts":
                 return server.workflows().receiptsCommand(request);
+            case "?key":
+                return key(request, w);
             case "?cancel":
                 server.checkers().execute(() -> server.reply(server.cancels().command(request)));
                 return null;
@@ -331,6 +338,9 @@ final class ServerCommands {
     }
 
     static String describe(MailboxStatus s) {
+        if (ServiceQueries.HIDDEN.equals(s.detail())) {
+            return s.address() + ": " + s.detail();
+        }
         String what = !s.running().isEmpty() ? "busy: " + s.running()
                 : (s.available() ? "available" : "not available") + (s.busy() ? ", busy" : "");
         return s.address() + ": " + what
@@ -398,4 +408,18 @@ final class ServerCommands {
     }
 
 
+
+    /**
+     * {@code ?key MAILBOX KEY}: goes to the MailBox as the command {@code ?key KEY}, through the
+     * same checks as any command (the permit file decides on {@code ?key KEY}, so each key is a
+     * right of its own; the operator lock holds), and the link's own list of keys decides last.
+     */
+    private OutgoingServerMessage key(IncomingServerMessage request, String[] w) {
+        if (w.length != 3) {
+            throw new IllegalArgumentException("usage: ?key MAILBOX KEY, e.g. ?key <SerialPortServer>::<host>ru29 ctrl-c");
+        }
+        org.ripv.messages.Header h = request.header();
+        return route.apply(new IncomingServerMessage(new org.ripv.messages.Header(h.messageId(), h.origin(), h.roles(),
+                h.serviceDestination(), w[1], "?key " + w[2].toLowerCase(java.util.Locale.ROOT), h.priority(), null)));
+    }
 }

@@ -67,6 +67,10 @@ public final class ServerMain implements Callable<Integer> {
         @Option(names = "--http-upload", description = "Let users who log in on the landing page upload files (off by default;"
                 + " the permit file's ?upload rules apply).")
         boolean httpUpload;
+        @Option(names = "--max-clients", defaultValue = "1000", paramLabel = "N",
+                description = "Clients that may be logged in at once (default ${DEFAULT-VALUE}; each idle one costs the server a thread"
+                        + " and its buffers: docs/performance.md, Connections).")
+        int maxClients;
         @Option(names = "--login-deadline", defaultValue = "10", description = "Seconds a connection may take to log in (default ${DEFAULT-VALUE}).")
         long loginDeadline;
         @Option(names = "--tls-password-file", description = "File holding the key store's password.")
@@ -112,6 +116,10 @@ public final class ServerMain implements Callable<Integer> {
             if (rmiConnectTimeout < 1 || rmiReadTimeout < 1) {
                 throw new CommandLine.ParameterException(new CommandLine(this), "RMI timeouts must be at least 1 ms");
             }
+            if (maxClients < 1) {
+                throw new CommandLine.ParameterException(new CommandLine(this),
+                        "--max-clients must be at least 1, got " + maxClients);
+            }
             System.setProperty(org.ripv.rmi.DeadlineSocketFactory.CONNECT_PROPERTY, Integer.toString(rmiConnectTimeout));
             System.setProperty(org.ripv.rmi.DeadlineSocketFactory.READ_PROPERTY, Integer.toString(rmiReadTimeout));
             Path dataDir = data != null ? data : ServiceOptions.defaultDataDir();
@@ -121,6 +129,7 @@ public final class ServerMain implements Callable<Integer> {
                     .withMaxUpload(maxUpload)
                     .withPermitFile(permit)
                     .withBindAddress(bind)
+                    .withMaxClients(maxClients)
                     .withClientJar(clientJar != null ? clientJar : defaultClientJar());
             config = config.withSecurity(config.security().withPlain(plain).withHttpUpload(httpUpload)
                     .withLoginDeadline(Duration.ofSeconds(loginDeadline)));
@@ -147,6 +156,14 @@ public final class ServerMain implements Callable<Integer> {
                 System.err.println("Error: " + e.getMessage());
                 return 2;
             }
+            // Held until this JVM ends (the OS lets go of it however the process ends).
+            org.ripv.server.lock.DataDirLock dirLock;
+            try {
+                dirLock = org.ripv.server.lock.DataDirLock.acquire(dataDir);
+            } catch (org.ripv.server.lock.DataDirLock.HeldException e) {
+                System.err.println("Error: " + e.getMessage());
+                return 1;
+            }
             org.ripv.rmi.RmiSupport.filterProcess();
             ServerConfig cfg = config;
             SessionOptions opts = sessions;
@@ -167,11 +184,20 @@ public final class ServerMain implements Callable<Integer> {
             CountDownLatch stopped = new CountDownLatch(1);
             Runtime.getRuntime().addShutdownHook(new Thread(() -> {
                 server.stop();
+                closeQuietly(dirLock);
                 stopped.countDown();
             }, "ripv-server-shutdown"));
             ready.accept(server);
             stopped.await();
             return 0;
+        }
+
+        private static void closeQuietly(org.ripv.server.lock.DataDirLock lock) {
+            try {
+                lock.close();
+            } catch (IOException e) {
+                // the process is ending: the OS lets go of the lock anyway
+            }
         }
 
         /** Starts a server and its outbound port (a busy one only warns). */
@@ -308,6 +334,8 @@ public final class ServerMain implements Callable<Integer> {
     }
 
     public static void main(String[] args) {
+        // Before anything makes an object stream: the JVM takes a filter factory only until then.
+        org.ripv.rmi.RmiSupport.filterProcess();
         System.exit(run(args));
     }
 }

@@ -22,6 +22,8 @@ import org.ripv.wire.FrameCodec;
  * transcripts, the notifier, and the commands that reach them; RIPVServer only calls in here.
  */
 final class ServerSessions implements AutoCloseable {
+    /** A MailBox's transcript keeps at most this many files' worth of entries a day (docs/security.md). */
+    static final int TRANSCRIPT_FILES_A_DAY = 4;
     private final ConsoleHub console;
     private final Notifier notifier;
     private final ConsoleCommands consoleCommands;
@@ -30,7 +32,9 @@ final class ServerSessions implements AutoCloseable {
 
     ServerSessions(Path dataDir, org.ripv.server.store.StateStore store, SessionOptions options, Supplier<PermitFile> permits,
                    Function<String, Optional<SocketHandler>> clients, FrameCodec codec) throws IOException {
-        console = new ConsoleHub(dataDir.resolve("transcripts"), store, options.keepDays(), codec::encode);
+        // A MailBox's transcript keeps at most four files' worth a day (256 MiB by default).
+        console = new ConsoleHub(dataDir.resolve("transcripts"), store, options.keepDays(),
+                options.transcriptFileBytes() * TRANSCRIPT_FILES_A_DAY, codec::encode);
         notifier = new Notifier(store, permits, options.smtp(),
                 options.notifyBackoff(), options.notifyTimeout(), options.webhooks());
         console.onEvent(notifier::accept);

@@ -36,7 +36,7 @@ final class ServerTaskManager extends TaskManager<IncomingServerMessage, Outgoin
 
     ServerTaskManager(RIPVServer server) {
         this.server = server;
-        this.commands = new ServerCommands(server);
+        this.commands = new ServerCommands(server, this::route);
     }
 
     @Override
@@ -100,7 +100,9 @@ final class ServerTaskManager extends TaskManager<IncomingServerMessage, Outgoin
         }
         Attachment attachment;
         try {
-            attachment = attachmentFor(ref, h.body());
+            attachment = attachmentFor(ref, h.body(), h.origin().user());
+        } catch (ServerCommands.SecurityRefusal e) {
+            return error(request, sid, ErrorCode.FORBIDDEN, e.getMessage());
         } catch (FileTooLargeException e) {
             return error(request, sid, ErrorCode.TOO_LARGE, e.getMessage());
         } catch (NoSuchFileException e) {
@@ -116,8 +118,9 @@ final class ServerTaskManager extends TaskManager<IncomingServerMessage, Outgoin
     }
 
     /** The upload-directory file a command names after one of the service's attach prefixes. */
-    private Attachment attachmentFor(ServiceReference ref, String body) throws IOException {
-        Attachment downloads = DownloadAttachments.forCommand(server.files(), ref.descriptor(), body);
+    private Attachment attachmentFor(ServiceReference ref, String body, String user) throws IOException {
+        Attachment downloads = DownloadAttachments.forCommand(server.files(), ref.descriptor(), body,
+                name -> DownloadRights.check(server.files(), server.permits(), user, name));
         if (downloads != null) {
             return downloads;
         }

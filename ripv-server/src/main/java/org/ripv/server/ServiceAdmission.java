@@ -84,6 +84,17 @@ final class ServiceAdmission {
      * together, say), so those calls are lost; the queued workflows of calls still open (a
      * server started again, or a standby that took over, while the service kept running) run now.
      */
+    /** Moves download folders from before they were per address to each MailBox's own (FileStore#adopt). */
+    private static void adoptFolders(RIPVServer server, List<String> boxes) {
+        for (String mb : boxes) {
+            try {
+                server.files().adopt(mb);
+            } catch (java.io.IOException | RuntimeException e) {
+                log.warn("could not make the download folder of {}: {}", mb, e.toString());
+            }
+        }
+    }
+
     private static void reconcileCalls(RIPVServer server, ServiceReference ref, long started) {
         String name = ref.descriptor().name();
         ref.mailboxes(server.checkers(), CALLBACK_DEADLINE).thenAccept(list -> {
@@ -91,6 +102,7 @@ final class ServiceAdmission {
                     list.stream().map(org.ripv.messages.MailboxStatus::address).toList());
             server.workflows().onConsole(name, server.sessions().console().serviceStarted(name, started, boxes));
             server.workflows().serviceOnline(boxes);
+            adoptFolders(server, boxes);
         }).exceptionally(e -> {
             log.info("could not list the MailBoxes of {} to square its calls with it: {}", name, e.toString());
             return null;

@@ -85,7 +85,7 @@ final class ServiceQueries {
                     continue;
                 }
                 for (MailboxStatus s : a.boxes()) {
-                    MailboxStatus withLock = server.withLock(s);
+                    MailboxStatus withLock = readable(request, server.withLock(s));
                     all.add(withLock);
                     text.append(ServerCommands.describe(withLock)).append('\n');
                 }
@@ -95,7 +95,27 @@ final class ServiceQueries {
         });
     }
 
+    /**
+     * What a user sees of a MailBox: everything with the read right ({@code ?read}), else its
+     * address only — a vehicle's state, last position, lock and running workflow are as private as
+     * its console (issue 23, item 11).
+     */
+    private MailboxStatus readable(IncomingServerMessage request, MailboxStatus s) {
+        if (org.ripv.server.session.Rights.mayRead(server.permits(), request.header().origin().user(), s.address())) {
+            return s;
+        }
+        return new MailboxStatus(s.address(), false, HIDDEN, false, "", null, "");
+    }
+
+    /** The detail shown instead of a MailBox's state to a user without the read right. */
+    static final String HIDDEN = "state hidden: reading this MailBox needs the ?read right (docs/permit.md)";
+
     void status(IncomingServerMessage request, MailboxAddress address) {
+        String why = org.ripv.server.session.Rights.whyNotRead(server.permits(), request.header().origin().user(), address.toString());
+        if (why != null) {
+            server.reply(ServerTaskManager.error(request, Ids.FID_STATUS, ErrorCode.FORBIDDEN, why));
+            return;
+        }
         ServiceReference ref = server.service(address.service().toString()).orElse(null);
         if (ref == null) {
             server.reply(ServerTaskManager.error(request, Ids.FID_STATUS, ErrorCode.UNKNOWN_SERVICE,

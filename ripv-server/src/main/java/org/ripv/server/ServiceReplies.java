@@ -13,7 +13,6 @@ import org.ripv.messages.IncomingServerMessage;
 import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.OutgoingServiceMessage;
 import org.ripv.messages.Result;
-import org.ripv.naming.MailboxAddress;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -50,13 +49,9 @@ final class ServiceReplies {
         }
     }
 
-    /** The MailBox's handle: each MailBox's files live in a folder of their own. */
+    /** The MailBox's whole address: each MailBox's files live in a folder of their own (FileStore#folderFor). */
     private static String folderOf(String mailboxAddress) {
-        try {
-            return MailboxAddress.parse(mailboxAddress).handle();
-        } catch (RuntimeException e) {
-            return "service";
-        }
+        return mailboxAddress;
     }
 
     /**

@@ -27,6 +27,33 @@ final class WorkflowBridge implements WorkflowHost {
     }
 
     @Override
+    public boolean knownMailbox(String mailbox) {
+        if (server.sessions().console().state(mailbox) != null
+                || java.nio.file.Files.isDirectory(server.files().downloadDir().resolve(FileStore.folderFor(mailbox)))) {
+            return true;
+        }
+        org.ripv.naming.MailboxAddress address;
+        try {
+            address = org.ripv.naming.MailboxAddress.parse(mailbox);
+        } catch (RuntimeException e) {
+            return false;
+        }
+        ServiceReference ref = server.service(address.service().toString()).orElse(null);
+        if (ref == null) {
+            return false;
+        }
+        try {
+            return ref.mailboxes(server.checkers(), java.time.Duration.ofSeconds(5)).get(10, java.util.concurrent.TimeUnit.SECONDS)
+                    .stream().anyMatch(s -> s.address().equals(address.toString()));
+        } catch (java.util.concurrent.ExecutionException | java.util.concurrent.TimeoutException e) {
+            return false;
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return false;
+        }
+    }
+
+    @Override
     public PermitFile permits() {
         return server.permits();
     }

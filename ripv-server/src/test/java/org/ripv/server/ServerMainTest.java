@@ -44,4 +44,20 @@ class ServerMainTest {
         assertThat(withStdin("", "passwd", "--permit", permit.toString(), "bob")).isEqualTo(1);
         assertThat(ServerMain.run("passwd", "--permit", permit.toString())).isEqualTo(2);
     }
+
+    @Test
+    void maxClientsBelowOneIsAUsageErrorQuotingTheValue() {
+        java.io.PrintStream old = System.err;
+        java.io.ByteArrayOutputStream err = new java.io.ByteArrayOutputStream();
+        System.setErr(new java.io.PrintStream(err, true, StandardCharsets.UTF_8));
+        int exit;
+        try {
+            exit = ServerMain.run("server", "--max-clients", "0", "--port", "0", "--registry-port", "0", "--http-port", "0",
+                    "--data", dir.resolve("data").toString());
+        } finally {
+            System.setErr(old);
+        }
+        assertThat(exit).isEqualTo(2);
+        assertThat(err.toString(StandardCharsets.UTF_8)).contains("--max-clients must be at least 1, got 0");
+    }
 }

@@ -23,7 +23,8 @@ public final class ServicesMain {
             "  serial    | SerialPortServer   talk to vehicles on serial ports, ptys and TCP links; YMODEM",
             "  database  | DatabaseServer     SQL on embedded Derby, or any JDBC database",
             "  datavis   | DataVisServer      plots from data files through a plotting worker",
-            "  simulator                      a simulated glider (PicoDOS-like) on TCP or a pty");
+            "  simulator                      a simulated glider (PicoDOS-like) on TCP or a pty",
+            "  slocum decode FILE...          Slocum binary files as DBA text, as dbd2asc prints them");
 
     public static int run(PrintStream err, String... args) {
         if (args.length == 0 || args[0].equals("--help") || args[0].equals("-h")) {
@@ -44,6 +45,8 @@ public final class ServicesMain {
                 return execute(new DataVisServerCommand(), "ripv service datavis", ServiceLaunchOptions.thesisForm(rest));
             case "simulator":
                 return execute(new SimulatorCommand(), "ripv simulator", rest);
+            case "slocum":
+                return execute(new org.ripv.services.slocum.SlocumCommand(), "ripv slocum", rest);
             default:
                 err.println("Error: unknown service '" + args[0] + "'");
                 err.println(USAGE);
@@ -57,6 +60,8 @@ public final class ServicesMain {
     }
 
     public static void main(String[] args) {
+        // Before anything makes an object stream: the JVM takes a filter factory only until then.
+        org.ripv.rmi.RmiSupport.filterProcess();
         System.exit(run(System.err, args));
     }
 }

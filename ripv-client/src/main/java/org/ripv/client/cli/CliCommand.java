@@ -94,7 +94,13 @@ public final class CliCommand implements Callable<Integer> {
             return 2;
         }
         String host = servers.first().host();
-        char[] pw = password(host);
+        char[] pw;
+        try {
+            pw = password(host);
+        } catch (PasswordFile.Unusable e) {
+            err.println("Error: " + e.getMessage());
+            return 2;
+        }
         if (pw == null) {
             err.println("Error: no password: give --password-file, set RIPV_PASSWORD, or run on a terminal to be asked");
             return 2;
@@ -178,11 +184,11 @@ public final class CliCommand implements Callable<Integer> {
         }
     }
 
-    /** Connects to the first server of the list that answers; each is its own host to trust (a standby has its own certificate). */
+    /** Connects to the first server of the list that answers; a standby is trusted only as Tls#trustOnFirstUse says for lists. */
     private ClientSocketHandler connect(org.ripv.failover.ServerList servers, javax.net.SocketFactory trusted) throws IOException {
         return new org.ripv.client.handlers.Failover(servers, err::println).connect((h, p) -> ClientSocketHandler.connect(h, p,
                 plain ? javax.net.SocketFactory.getDefault() : trusted != null ? trusted
-                        : Tls.trustOnFirstUse(h, p, knownHosts != null ? knownHosts : Tls.defaultKnownHosts(), err::println),
+                        : Tls.trustOnFirstUse(h, p, knownHosts != null ? knownHosts : Tls.defaultKnownHosts(), err::println, servers),
                 servers.size() > 1 ? org.ripv.client.handlers.Failover.CONNECT : Duration.ofSeconds(10)));
     }
 
@@ -198,8 +204,7 @@ public final class CliCommand implements Callable<Integer> {
             return password.toCharArray();
         }
         if (passwordFile != null) {
-            List<String> lines = Files.readAllLines(passwordFile, StandardCharsets.UTF_8);
-            return lines.isEmpty() ? null : lines.get(0).toCharArray();
+            return PasswordFile.read(passwordFile);
         }
         String env = System.getenv("RIPV_PASSWORD");
         if (env != null) {

@@ -77,6 +77,7 @@ public final class CliSession {
             "  get NAME [LOCALDIR]              download from the server's download directory (default: the current directory)",
             "  export csv|json LOCALFILE        write the last query result to a local file (numbers as numbers, NULL as null)",
             "  export svg LOCALFILE             write the last plot (a vis: reply with data) as an SVG picture",
+            "  key KEY                          press a control key on the current MailBox's vehicle (ctrl-c, ctrl-r, …): ?key MAILBOX KEY",
             "  help                             this, and the current service's help",
             "  quit                             end the session (Ctrl-D too)",
             "  anything else                    a command for the current MailBox");
@@ -119,6 +120,16 @@ public final class CliSession {
             case "put" -> put(rest);
             case "get" -> get(rest);
             case "export" -> export(rest);
+            case "key" -> {
+                // Ctrl-C at the terminal cancels the CLI's wait; a key for the vehicle is typed by name
+                if (mailbox.isEmpty()) {
+                    localError(ErrorCode.BAD_REQUEST, "no MailBox chosen for 'key " + rest + "': use MAILBOX first");
+                } else if (rest.isEmpty() || rest.contains(" ")) {
+                    localError(ErrorCode.BAD_REQUEST, "key takes one key name, e.g. key ctrl-c; got '" + rest + "'");
+                } else {
+                    send("", "?key " + mailbox + " " + rest);
+                }
+            }
             default -> {
                 if (!line.startsWith("?") && mailbox.isEmpty()) {
                     localError(ErrorCode.BAD_REQUEST, "no MailBox chosen for '" + line + "': use MAILBOX first (?mailboxes lists them)");

@@ -119,7 +119,7 @@ public final class ConsoleFollower implements ClientSocketHandler.Listener {
                 return ExitCodes.ERROR_REPLY;
             }
             if (!json) {
-                err.println(r.footer().replyText() + "; Ctrl-C stops");
+                err.println(org.ripv.text.Printable.escape(r.footer().replyText()) + "; Ctrl-C stops");
             }
             ended.await();
             if (stopped.getCount() == 0) {
@@ -182,7 +182,8 @@ public final class ConsoleFollower implements ClientSocketHandler.Listener {
                     if (seen(e)) {
                         continue;
                     }
-                    out.println(json ? JsonWriter.write(toMap(e)) : toText(e));
+                    // a vehicle's bytes and others' text are data: escaped, never terminal controls (issue 23, item 8)
+                    out.println(json ? JsonWriter.write(toMap(e)) : org.ripv.text.Printable.oneLine(toText(e)));
                 }
                 out.flush();
             }

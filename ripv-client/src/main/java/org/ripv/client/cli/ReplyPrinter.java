@@ -42,29 +42,32 @@ final class ReplyPrinter {
             return;
         }
         var f = reply.footer();
+        // Text from vehicles and users (?history, workflow names, notify text) is data: printed
+        // escaped, so no ESC, BEL or C1 control in it reaches this terminal (issue 23, item 8).
+        String text = org.ripv.text.Printable.escape(f.replyText());
         if (f.status() == Status.ERROR) {
-            err.println("Error: " + f.replyText() + " [" + f.errorCode() + ", " + f.serviceId() + "]");
+            err.println("Error: " + text + " [" + f.errorCode() + ", " + f.serviceId() + "]");
             return;
         }
         if (f.status() == Status.PROGRESS) {
             if (f.result() instanceof Progress p) {
-                err.println("  ... " + progressLine(p));
+                err.println("  ... " + org.ripv.text.Printable.escape(progressLine(p)));
             } else {
-                err.println("  ... " + f.replyText());
+                err.println("  ... " + text);
             }
             return;
         }
         if (f.result() instanceof TableResult t) {
-            if (!f.replyText().isEmpty()) {
-                out.println(f.replyText());
+            if (!text.isEmpty()) {
+                out.println(text);
             }
-            out.print(table(t));
+            out.print(org.ripv.text.Printable.escape(table(t)));
         } else if (f.result() instanceof ImageResult img) {
-            out.println(f.replyText().isEmpty() ? "image " + img.name() + " (" + img.jpeg().length + " bytes)" : f.replyText());
-        } else if (!f.replyText().isEmpty()) {
-            out.println(f.replyText());
+            out.println(text.isEmpty() ? "image " + org.ripv.text.Printable.escape(img.name()) + " (" + img.jpeg().length + " bytes)" : text);
+        } else if (!text.isEmpty()) {
+            out.println(text);
         } else if (f.result() != null) {
-            out.println(f.result());
+            out.println(org.ripv.text.Printable.escape(String.valueOf(f.result())));
         }
     }
 

@@ -85,9 +85,9 @@ public final class ClientCommand implements Callable<Integer> {
         char[] pw = null;
         if (passwordFile != null) {
             try {
-                pw = readPassword(passwordFile);
+                pw = org.ripv.client.cli.PasswordFile.read(passwordFile);
             } catch (IOException e) {
-                err.println("Error: cannot read the password file " + passwordFile + ": " + e.getMessage());
+                err.println("Error: " + e.getMessage());
                 return 1;
             }
         } else if (password != null) {
@@ -154,13 +154,7 @@ public final class ClientCommand implements Callable<Integer> {
 
     /** The first line of the file, without its line end. */
     static char[] readPassword(Path file) throws IOException {
-        String text = Files.readString(file, StandardCharsets.UTF_8);
-        int nl = text.indexOf('\n');
-        String line = nl < 0 ? text : text.substring(0, nl);
-        if (line.endsWith("\r")) {
-            line = line.substring(0, line.length() - 1);
-        }
-        return line.toCharArray();
+        return org.ripv.client.cli.PasswordFile.read(file);
     }
 
     public static void main(String[] args) {

@@ -100,8 +100,9 @@ public final class ClientSocketHandler implements AutoCloseable {
      */
     public static ClientSocketHandler connect(String host, int port) throws IOException {
         if (host.indexOf(',') >= 0) {
-            return failover(host, port).connect((h, p) -> connect(h, p,
-                    Tls.trustOnFirstUse(h, p, Tls.defaultKnownHosts(), n -> log.warn("{}", n)), Failover.CONNECT));
+            Failover f = failover(host, port);
+            return f.connect((h, p) -> connect(h, p,
+                    Tls.trustOnFirstUse(h, p, Tls.defaultKnownHosts(), n -> log.warn("{}", n), f.servers()), Failover.CONNECT));
         }
         return connect(host, port, Tls.trustOnFirstUse(host, port, Tls.defaultKnownHosts(), n -> log.warn("{}", n)),
                 Duration.ofSeconds(10));
@@ -151,7 +152,7 @@ public final class ClientSocketHandler implements AutoCloseable {
                 handshake(tls);
             }
             return new ClientSocketHandler(s, host + ":" + port, FrameCodec.DEFAULT_MAX_FRAME);
-        } catch (Tls.ChangedCertificateIOException e) {
+        } catch (Tls.RefusedCertificate e) {
             s.close();
             throw e;
         } catch (IOException e) {
@@ -170,7 +171,10 @@ public final class ClientSocketHandler implements AutoCloseable {
         } catch (javax.net.ssl.SSLException e) {
             for (Throwable t = e; t != null; t = t.getCause()) {
                 if (t instanceof Tls.ChangedCertificateException changed) {
-                    throw new Tls.ChangedCertificateIOException(changed.getMessage(), e);
+                    throw new Tls.RefusedCertificate(changed.getMessage(), e);
+                }
+                if (t instanceof Tls.UnpinnedStandbyException unpinned) {
+                    throw new IOException(unpinned.getMessage(), e);
                 }
             }
             throw new IOException("TLS handshake failed: " + e.getMessage(), e);

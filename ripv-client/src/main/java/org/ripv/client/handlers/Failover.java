@@ -50,7 +50,8 @@ public final class Failover {
     }
 
     /**
-     * Tries each server once, the last one that answered first.
+     * Tries each server once, the last one that answered first. A server whose certificate has
+     * changed ends the attempt at once ({@link Tls.RefusedCertificate}).
      *
      * @throws IOException naming every server tried and why each failed
      */
@@ -82,6 +83,11 @@ public final class Failover {
                     say.accept(line);
                 }
                 return h;
+            } catch (Tls.RefusedCertificate ex) {
+                // A changed certificate is the man-in-the-middle signal, not "did not answer":
+                // stop here, as ssh does, rather than hand the password to the next server.
+                log.warn("{}: certificate refused; not trying the other servers of {}", e, servers);
+                throw ex;
             } catch (IOException ex) {
                 synchronized (failedIn) {
                     failedIn[at] = Math.max(1, (System.nanoTime() - t0) / 1_000_000);

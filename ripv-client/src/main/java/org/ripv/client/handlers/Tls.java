@@ -47,11 +47,27 @@ public final class Tls {
         }
     }
 
-    /** The same refusal as a connection failure: the server is the right one, its certificate is not. */
-    static final class ChangedCertificateIOException extends java.io.IOException {
+    /**
+     * A standby's certificate is not known while another server of its list is pinned: trusting
+     * it on first use would hand the password to whoever answers there (issue 23, item 2).
+     */
+    public static final class UnpinnedStandbyException extends CertificateException {
         private static final long serialVersionUID = 1L;
 
-        ChangedCertificateIOException(String message, Throwable cause) {
+        UnpinnedStandbyException(String message) {
+            super(message);
+        }
+    }
+
+    /**
+     * A server's certificate was refused because it differs from the one remembered: the
+     * man-in-the-middle signal. A connection to a list of servers stops at the first of these
+     * rather than trying the next server (as ssh does), so the password goes to none of them.
+     */
+    public static final class RefusedCertificate extends IOException {
+        private static final long serialVersionUID = 1L;
+
+        RefusedCertificate(String message, Throwable cause) {
             super(message, cause);
         }
     }
@@ -95,13 +111,41 @@ public final class Tls {
      * @param notices told, once, when a new server's fingerprint is remembered
      */
     public static SocketFactory trustOnFirstUse(String host, int port, Path knownHosts, Consumer<String> notices) throws IOException {
+        return trustOnFirstUse(host, port, knownHosts, notices, null);
+    }
+
+    /**
+     * As {@link #trustOnFirstUse(String, int, Path, Consumer)} for one server of a list ({@code
+     * --server A,B}): while another server of the list is pinned, this one is trusted only with a
+     * certificate already trusted for one of them (the same {@code --tls-keystore}: learned from a
+     * server already trusted) or with its own line in the known-hosts file (pinned by the
+     * operator) — never on first use.
+     *
+     * @param servers the whole list, or null for a single server
+     */
+    public static SocketFactory trustOnFirstUse(String host, int port, Path knownHosts, Consumer<String> notices,
+                                                org.ripv.failover.ServerList servers) throws IOException {
+        List<String> group = new java.util.ArrayList<>();
+        String self = key(host, port);
+        if (servers != null) {
+            for (int i = 0; i < servers.size(); i++) {
+                String k = key(servers.get(i).host(), servers.get(i).port());
+                if (!k.equals(self)) {
+                    group.add(k);
+                }
+            }
+        }
         try {
             SSLContext ctx = SSLContext.getInstance("TLS");
-            ctx.init(null, new TrustManager[] {new FirstUse(host.toLowerCase(Locale.ROOT) + ":" + port, knownHosts, notices)}, null);
+            ctx.init(null, new TrustManager[] {new FirstUse(self, knownHosts, notices, group)}, null);
             return ctx.getSocketFactory();
         } catch (GeneralSecurityException e) {
             throw new IOException("TLS is not available: " + e.getMessage(), e);
         }
+    }
+
+    private static String key(String host, int port) {
+        return host.toLowerCase(Locale.ROOT) + ":" + port;
     }
 
     /** Pins the first certificate seen; ignores host names (the pin is the identity, as in ssh). */
@@ -109,11 +153,14 @@ public final class Tls {
         private final String server;
         private final Path file;
         private final Consumer<String> notices;
+        /** The other servers of this one's list ({@code --server A,B}); empty for a single server. */
+        private final List<String> group;
 
-        FirstUse(String server, Path file, Consumer<String> notices) {
+        FirstUse(String server, Path file, Consumer<String> notices, List<String> group) {
             this.server = server;
             this.file = file;
             this.notices = notices == null ? s -> { } : notices;
+            this.group = group;
         }
 
         @Override
@@ -137,6 +184,22 @@ public final class Tls {
                         }
                         throw new ChangedCertificateException(changed(i + 1, w[1], offered));
                     }
+                }
+                java.util.Set<String> pinnedPeers = new java.util.LinkedHashSet<>();
+                java.util.Set<String> peerNames = new java.util.LinkedHashSet<>();
+                for (String line : lines) {
+                    String[] w = line.trim().split("\\s+");
+                    if (w.length >= 2 && group.contains(w[0])) {
+                        pinnedPeers.add(w[1]);
+                        peerNames.add(w[0]);
+                    }
+                }
+                if (!pinnedPeers.isEmpty() && !pinnedPeers.contains(offered)) {
+                    throw new UnpinnedStandbyException("The server " + server + " presents " + offered + ", a certificate not"
+                            + " seen before, while " + String.join(", ", peerNames) + " of the same list is pinned in " + file
+                            + ". Not trusting it on first use (someone could pose as the standby). Ask the server's operator"
+                            + " for the fingerprint it prints at start and, if it is " + offered + ", add the line '" + server
+                            + " " + offered + "' to " + file + "; or give both servers the same --tls-keystore.");
                 }
                 remember(offered);
             }

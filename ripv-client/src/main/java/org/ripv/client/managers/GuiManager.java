@@ -547,10 +547,11 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
                 for (org.ripv.messages.ConsoleEntry e : batch.entries()) {
                     if (e.kind() == org.ripv.messages.ConsoleEntry.Kind.EVENT
                             && (e.event() == org.ripv.messages.VehicleEvent.WORKFLOW_DONE
+                            || e.event() == org.ripv.messages.VehicleEvent.WORKFLOW_DONE_WITH_ERRORS
                             || e.event() == org.ripv.messages.VehicleEvent.WORKFLOW_FAILED)) {
                         String vehicle = e.mailbox().substring(e.mailbox().lastIndexOf('>') + 1);
                         model.notice(vehicle + " " + e.event() + (e.text().isEmpty() ? "" : ": " + e.text()),
-                                e.event() == org.ripv.messages.VehicleEvent.WORKFLOW_FAILED);
+                                e.event() != org.ripv.messages.VehicleEvent.WORKFLOW_DONE);
                     }
                     if (ConsoleModel.notifies(e)) {
                         String vehicle = e.mailbox().substring(e.mailbox().lastIndexOf('>') + 1);

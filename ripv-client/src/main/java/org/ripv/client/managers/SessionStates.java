@@ -37,7 +37,7 @@ public final class SessionStates {
                     st = SessionState.State.LOST;
                     fromVehicle = false;
                 }
-                case LOCK_TAKEN, LOCK_RELEASED, WORKFLOW_DONE, WORKFLOW_FAILED -> fromVehicle = false;
+                case LOCK_TAKEN, LOCK_RELEASED, WORKFLOW_DONE, WORKFLOW_FAILED, WORKFLOW_DONE_WITH_ERRORS -> fromVehicle = false;
                 default -> { }
             }
         }

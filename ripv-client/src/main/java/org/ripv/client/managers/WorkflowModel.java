@@ -31,10 +31,23 @@ public final class WorkflowModel {
     public record Receipt(String title, String result, String text) {
         private static final Pattern TITLE = Pattern.compile("^receipt: (workflow \\d+ '.*') of (\\S+) on .*, (run \\d+)$");
 
+        /** The run's result word: RUNNING, DONE, DONE_WITH_ERRORS, FAILED, CUT or REMOVED. */
+        public String verdict() {
+            return result.isEmpty() ? "RUNNING" : result.replaceFirst("^result: (\\S+).*$", "$1");
+        }
+
+        /** True when the run did not do all it was asked: failed, cut, or done past failed steps. */
+        public boolean hadErrors() {
+            return switch (verdict()) {
+                case "FAILED", "CUT", "DONE_WITH_ERRORS" -> true;
+                default -> false;
+            };
+        }
+
         /** "DONE  workflow 1 'fetch.wf' (alice), run 2": the receipt list's words. */
         @Override
         public String toString() {
-            String verdict = result.isEmpty() ? "RUNNING" : result.replaceFirst("^result: (\\S+).*$", "$1");
+            String verdict = verdict();
             Matcher m = TITLE.matcher(title);
             return verdict + "  " + (m.matches() ? m.group(1) + " (" + m.group(2) + "), " + m.group(3) : title.replaceFirst("^receipt: ", ""));
         }

@@ -84,6 +84,7 @@ public final class ConsolePanel extends JPanel {
         top.add(tools, BorderLayout.EAST);
         add(top, BorderLayout.NORTH);
         add(new JScrollPane(text), BorderLayout.CENTER);
+        add(keyBar(manager), BorderLayout.SOUTH);
         model.console().addListener(changed -> {
             if (changed.equals(mailbox)) {
                 repaintConsole();
@@ -92,6 +93,28 @@ public final class ConsolePanel extends JPanel {
         // "last contact N min ago" moves on by itself.
         clock = new Timer(30_000, e -> showBadge());
         clock.start();
+    }
+
+    /** The keys a Slocum pilot presses at surfacing; the link decides which it allows (docs/serial.md#control-keys). */
+    static final java.util.List<String> KEYS = java.util.List.of("ctrl-c", "ctrl-r", "ctrl-e", "ctrl-f");
+
+    /** A button per key: each sends {@code ?key MAILBOX KEY}, whose reply (the vehicle's answer) shows in the COM panel. */
+    private JPanel keyBar(GuiManager manager) {
+        JPanel bar = new JPanel(new java.awt.FlowLayout(java.awt.FlowLayout.LEFT, 4, 0));
+        bar.setName("consoleKeys");
+        bar.add(new JLabel("Send key:"));
+        for (String key : KEYS) {
+            JButton b = new JButton("Ctrl-" + key.substring(5).toUpperCase(java.util.Locale.ROOT));
+            b.setName("key-" + key);
+            b.setToolTipText("Press " + b.getText() + " on the vehicle (?key MAILBOX " + key + ")");
+            b.addActionListener(e -> {
+                if (!mailbox.isEmpty()) {
+                    manager.sendCommand(service, "?key " + mailbox + " " + key);
+                }
+            });
+            bar.add(b);
+        }
+        return bar;
     }
 
     /** Follows the service's target and its status; on the event thread. */

@@ -207,6 +207,17 @@ public final class WorkflowDialog extends JDialog {
     private JPanel receiptsTab() {
         receiptList.setName("receiptList");
         receiptList.setSelectionMode(ListSelectionModel.SINGLE_SELECTION);
+        receiptList.setCellRenderer(new javax.swing.DefaultListCellRenderer() {
+            @Override
+            public java.awt.Component getListCellRendererComponent(javax.swing.JList<?> list, Object value, int index,
+                                                                   boolean selected, boolean focus) {
+                java.awt.Component c = super.getListCellRendererComponent(list, value, index, selected, focus);
+                if (!selected && value instanceof WorkflowModel.Receipt r && r.hadErrors()) {
+                    c.setForeground(Colors.error()); // DONE_WITH_ERRORS must not read like DONE
+                }
+                return c;
+            }
+        });
         receiptList.addListSelectionListener(e -> {
             WorkflowModel.Receipt r = receiptList.getSelectedValue();
             receiptText.setText(r == null ? "" : r.text());
@@ -384,10 +395,11 @@ public final class WorkflowDialog extends JDialog {
         }
     }
 
-    /** A workflow's progress line ("workflow 1 'x.wf': step 2/4 …") or a WORKFLOW_DONE / WORKFLOW_FAILED event. */
+    /** A workflow's progress line ("workflow 1 'x.wf': step 2/4 …") or a WORKFLOW_DONE / _DONE_WITH_ERRORS / _FAILED event. */
     static boolean isWorkflow(ConsoleEntry e) {
         return e.kind() == ConsoleEntry.Kind.EVENT
                 ? e.event() == VehicleEvent.WORKFLOW_DONE || e.event() == VehicleEvent.WORKFLOW_FAILED
+                        || e.event() == VehicleEvent.WORKFLOW_DONE_WITH_ERRORS
                 : e.kind() == ConsoleEntry.Kind.COMMAND && e.text().startsWith("workflow ");
     }
 

@@ -52,6 +52,6 @@ class ClientCommandTest {
         assertThat(new String(ClientCommand.readPassword(f))).isEqualTo("s3cret pass");
         ByteArrayOutputStream err = new ByteArrayOutputStream();
         assertThat(run(err, "--password-file", dir.resolve("missing").toString())).isEqualTo(1);
-        assertThat(err.toString(StandardCharsets.UTF_8)).contains("cannot read the password file");
+        assertThat(err.toString(StandardCharsets.UTF_8)).contains("does not exist").contains("install -m 600 /dev/null");
     }
 }

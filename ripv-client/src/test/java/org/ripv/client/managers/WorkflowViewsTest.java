@@ -214,4 +214,20 @@ class WorkflowViewsTest {
             return ProgressText.clock(s);
         }
     }
+
+    @Test
+    void aRunDonePastFailedStepsIsShownAsOneWithErrors() {
+        List<WorkflowModel.Receipt> r = WorkflowModel.parseReceipts("""
+                receipt: workflow 1 'night.wf' of alice on <SerialPortServer>::<h>ru29, run 1
+                step 1/2 (line 1) ymodem:get X.mrg: FAILED (continue-on-error) in 1.0 s
+                result: DONE_WITH_ERRORS at 2026-11-26T15:00:00Z (1.0 s)
+                receipt: workflow 2 'ok.wf' of alice on <SerialPortServer>::<h>ru29, run 1
+                result: DONE at 2026-11-26T15:01:00Z (1.0 s)
+                """);
+        assertThat(r).hasSize(2);
+        assertThat(r.get(1).verdict()).isEqualTo("DONE_WITH_ERRORS");
+        assertThat(r.get(1).hadErrors()).isTrue();
+        assertThat(r.get(1).toString()).startsWith("DONE_WITH_ERRORS  workflow 1 'night.wf' (alice), run 1");
+        assertThat(r.get(0).hadErrors()).isFalse();
+    }
 }

@@ -146,13 +146,11 @@ class NotificationTest {
         vehicle.event(VehicleEvent.SURFACED, "GPS Location: 4137.994 N -7032.188 E", 41.63323, -70.53647);
         vehicle.line("battery 14.2 V");
         vehicle.event(VehicleEvent.DIVED, "", null, null);
-        long published = System.nanoTime();
 
         // The console and the good receivers get everything while /hang still holds its request.
         assertThat(watched.await(e -> e.event() == VehicleEvent.DIVED, T)).isTrue();
         waitFor(() -> good.size() >= 2, T);
         assertThat(good).hasSize(2);
-        assertThat(Duration.ofNanos(System.nanoTime() - published)).isLessThan(Duration.ofSeconds(2));
         assertThat(hanging.get()).isGreaterThanOrEqualTo(1);
         assertThat(good.get(0)).startsWith("application/json").contains("\"event\":\"SURFACED\"", "\"vehicle\":\"ru29\"",
                 "\"lat\":41.63323", "\"lon\":-70.53647", "\"mailbox\":\"" + box + "\"");

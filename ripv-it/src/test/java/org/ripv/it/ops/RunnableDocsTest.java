@@ -4,50 +4,56 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.io.File;
+import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.MethodOrderer;
+import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestInstance;
+import org.junit.jupiter.api.TestMethodOrder;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
-import org.ripv.examples.ClockService;
-import org.ripv.it.TestSystem;
-import org.ripv.server.ServerConfig;
-import org.ripv.services.database.DatabaseServer;
-import org.ripv.services.database.DatabaseTarget;
-import org.ripv.services.database.EmbeddedDatabase;
-import org.ripv.services.database.QueryLimits;
-import org.ripv.services.datavis.DataVisServer;
 
 /**
- * Every command in the docs' blocks marked runnable ({@code ```sh runnable}, see docs/README.md)
- * works: run through the real {@code ./ripv} with bash, offline, against a server this test starts
- * (user alice, HOME a temporary directory holding {@code ~/.ripv/pw} and {@code ~/ripv-data}, the
- * DatabaseServer, DataVisServer and ClockService on host {@code localhost}). Every {@code ripv cli}
- * is pointed at that server; programs that run until stopped ({@code ripv server}, {@code service},
- * {@code simulator}, {@code client}, {@code demo}) and {@code ripv passwd} without piped input run
- * with {@code RIPV_PARSE_ONLY=1}: their command line is checked (an unknown option fails) and
- * nothing starts.
+ * Every command in the docs' blocks marked runnable ({@code ```sh runnable}, see docs/README.md),
+ * README.md's first, works as printed against a running {@code ./ripv demo} (headless, on free
+ * ports, in a folder of its own): run through the real {@code ./ripv} with bash, with HOME a test
+ * folder in which {@code ~/ripv-data} is the demo server's data directory. The users and files the
+ * docs use are those the docs create: the README makes {@code ~/.ripv/pw} and adds alice with
+ * {@code ripv passwd}. Every {@code ripv cli} is pointed at the demo's port; programs that run until
+ * stopped ({@code ripv server}, {@code service}, {@code simulator}, {@code client}, {@code demo}) and
+ * {@code ripv passwd} without input run with {@code RIPV_PARSE_ONLY=1} (their command line is
+ * checked, nothing starts); {@code --follow} runs for a while and must still be following then.
+ * Then the sample workflows run on the demo's glider, a second demo on the same folder is refused,
+ * a launched CLI keeps its known_hosts under HOME, and {@code ./ripv demo --stop} stops it all.
  */
 @TestInstance(TestInstance.Lifecycle.PER_CLASS)
+@TestMethodOrder(MethodOrderer.OrderAnnotation.class)
 class RunnableDocsTest {
     static final Path ROOT = RipvScriptHelpTest.ROOT;
     static final Pattern RIPV = Pattern.compile("(^|[|;&]\\s*)(\\./)?ripv(?=\\s|$)");
-    static final Pattern LONG_RUNNING = Pattern.compile("(\\./)?ripv\\s+(server|service|simulator|client|demo)\\b|--follow\\b");
+    static final Pattern LONG_RUNNING = Pattern.compile("(\\./)?ripv\\s+(server|service|simulator|client|demo)\\b");
+    static final Pattern FOLLOW = Pattern.compile("--follow\\b");
+    static final Duration FOLLOW_FOR = Duration.ofSeconds(20);
+    static final String GLIDER = "<SerialPortServer>::<localhost>sim01";
 
     @TempDir
     static Path tmp;
-    TestSystem sys;
+    RunningDemo demo;
+    Process clock;
     Path home;
     Path work;
 
@@ -65,27 +71,43 @@ class RunnableDocsTest {
             assumeTrue(Files.isRegularFile(ROOT.resolve(m + "/target/" + m + ".jar")),
                     "needs the jars (mvn package; mvn verify builds them before this module's tests)");
         }
+        assumeTrue(ProcessWatch.supported(), "needs Linux /proc to find the processes a command starts");
         home = Files.createDirectories(tmp.resolve("home"));
         work = Files.createDirectories(tmp.resolve("work"));
         Files.createSymbolicLink(work.resolve("docs"), ROOT.resolve("docs")); // docs/samples/... as in the source tree
-        Files.createDirectories(home.resolve(".ripv"));
-        Files.writeString(home.resolve(".ripv/pw"), TestSystem.PASSWORD + "\n");
-        sys = TestSystem.start(ServerConfig.forTests(home.resolve("ripv-data")));
-        sys.user("alice", "operators");
-        sys.register(new ClockService("localhost"));
-        DatabaseTarget db = EmbeddedDatabase.prepare(tmp.resolve("database"), "TTY1");
-        sys.register(new DatabaseServer("localhost", List.of(db), new QueryLimits(1000, 30, QueryLimits.DEFAULT_MAX_RESULT_CHARS)));
-        sys.register(new DataVisServer("localhost", DataVisServer.Config.of(tmp.resolve("vis"))));
+        Path demoDir = tmp.resolve("demo");
+        Files.createSymbolicLink(home.resolve("ripv-data"), demoDir.resolve("server"));
+        // A short call cycle, so that the sample workflows run within the test.
+        demo = RunningDemo.start(ROOT, demoDir, home, Duration.ofMinutes(10),
+                Map.of("RIPV_SURFACE_SECONDS", "40", "RIPV_DIVE_SECONDS", "5"));
+        // extending.md's example service, as its page starts it (with the demo's secret and registry)
+        Path clockLog = tmp.resolve("clock.log");
+        ProcessBuilder pb = new ProcessBuilder("bash", ROOT.resolve("ripv").toString(), "service", "clock", "--server",
+                "localhost:" + demo.registryPort, "--host", "localhost", "--secret-file", demoDir.resolve("server/service.secret").toString())
+                .redirectErrorStream(true).redirectOutput(clockLog.toFile());
+        pb.environment().put("HOME", home.toString());
+        pb.environment().put(ProcessWatch.VARIABLE, demo.watch.mark); // stopped with the demo's processes at the end
+        clock = pb.start();
+        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(120);
+        while (!Files.readString(clockLog, StandardCharsets.UTF_8).contains("registered with the RIPVServer")) {
+            assertThat(clock.isAlive()).as(Files.readString(clockLog, StandardCharsets.UTF_8)).isTrue();
+            assertThat(System.nanoTime()).as("the ClockService registers").isLessThan(end);
+            clock.waitFor(200, TimeUnit.MILLISECONDS);
+        }
     }
 
     @AfterAll
-    void stop() {
-        if (sys != null) {
-            sys.close();
+    void stop() throws Exception {
+        if (clock != null) {
+            clock.destroy();
+        }
+        if (demo != null) {
+            demo.close();
         }
     }
 
     @Test
+    @Order(0)
     void aTrailingCommentIsNoPartOfTheCommand() {
         assertThat(RunnableDocs.withoutComment("./ripv server --data ~/d   # clients on 4444")).isEqualTo("./ripv server --data ~/d   ");
         assertThat(RunnableDocs.withoutComment("./ripv cli --exec 'SELECT 1 # not a comment'")).endsWith("comment'");
@@ -93,20 +115,32 @@ class RunnableDocsTest {
     }
 
     @Test
+    @Order(0)
     void theDocsMarkARepresentativeSetOfCommandsRunnable() throws Exception {
         List<String> texts = commands().map(RunnableDocs.Command::text).toList();
         assertThat(texts).hasSizeGreaterThanOrEqualTo(15);
-        for (String c : List.of(" cli ", " server", " passwd", " service ", " bench", "--json", "put ", "get ", "vis:", "SELECT")) {
+        for (String c : List.of(" cli ", " server", " passwd", " service ", " bench", "--json", "put ", "get ", "vis:", "SELECT",
+                "--follow", "install -m 600")) {
             assertThat(texts).as("a runnable command with '" + c + "'").anyMatch(t -> t.contains(c));
         }
+        assertThat(commands().findFirst().orElseThrow().file().getFileName().toString()).as("the README's first").isEqualTo("README.md");
+    }
+
+    /** A command that reads its password (ripv passwd) from a pipe or a file it is given. */
+    static boolean hasInput(String text) {
+        int passwd = text.indexOf("passwd");
+        int pipe = text.indexOf('|');
+        return pipe >= 0 && pipe < passwd || text.indexOf('<', passwd) > passwd;
     }
 
     @ParameterizedTest(name = "{0}")
     @MethodSource("commands")
+    @Order(1)
     void everyRunnableCommandInTheDocsWorks(RunnableDocs.Command command) throws Exception {
         String line = rewrite(command.text());
-        boolean dryRun = LONG_RUNNING.matcher(command.text()).find() || (command.text().matches(".*\\bripv\\s+passwd\\b.*")
-                && !(command.text().contains("|") && command.text().indexOf('|') < command.text().indexOf("passwd")));
+        boolean follow = FOLLOW.matcher(command.text()).find();
+        boolean dryRun = !follow && (LONG_RUNNING.matcher(command.text()).find()
+                || command.text().matches(".*\\bripv\\s+passwd\\b.*") && !hasInput(command.text()));
         Path log = Files.createTempFile(tmp, "command", ".log");
         ProcessBuilder pb = new ProcessBuilder("bash", "-o", "pipefail", "-c", line).directory(work.toFile())
                 .redirectErrorStream(true).redirectOutput(log.toFile())
@@ -115,38 +149,176 @@ class RunnableDocsTest {
         pb.environment().put(ProcessWatch.VARIABLE, watch.mark);
         pb.environment().put("HOME", home.toString());
         pb.environment().remove("RIPV_PASSWORD");
+        pb.environment().remove("RIPV_KNOWN_HOSTS");
         pb.environment().remove("DISPLAY");
         if (dryRun) {
             pb.environment().put("RIPV_PARSE_ONLY", "1");
         }
         Process p = pb.start();
-        boolean ended = p.waitFor(120, TimeUnit.SECONDS);
+        boolean ended = p.waitFor(follow ? FOLLOW_FOR.toSeconds() : 120, TimeUnit.SECONDS);
         var left = watch.processes();
         for (String s : left) { // nothing a documented command started may outlive it
             ProcessHandle.of(Long.parseLong(s.substring(0, s.indexOf(' ')))).ifPresent(ProcessHandle::destroyForcibly);
         }
         p.destroyForcibly();
         String out = Files.readString(log, StandardCharsets.UTF_8);
+        assertThat(out).as(command + "\nran as: " + line).doesNotContain("Exception").doesNotContain("Error:");
+        if (follow) {
+            // Following runs until Ctrl-C: it must still be at it, not have ended with an error.
+            assertThat(ended).as(command + " ended within " + FOLLOW_FOR.toSeconds() + " s instead of following:\n" + out).isFalse();
+            return;
+        }
         assertThat(ended).as(command + " still running after 120 s:\n" + out).isTrue();
         assertThat(left).as(command + " left processes").isEmpty();
         assertThat(p.exitValue()).as(command + "\nran as: " + line + "\n" + out).isZero();
-        assertThat(out).as(command.toString()).doesNotContain("Exception").doesNotContain("Error:");
     }
 
-    /** Points the command at this test's script and server. */
+    /** Points the command at this test's script and the demo. */
     String rewrite(String text) {
         String line = RIPV.matcher(text).replaceAll(m -> Matcher.quoteReplacement(m.group(1) + ROOT.resolve("ripv")));
         if (text.matches(".*\\bripv\\s+cli\\b.*")) {
-            line = line.replaceAll("--server\\s+\\S+", "--server localhost:" + sys.server().port());
+            line = line.replaceAll("--server\\s+\\S+", "--server localhost:" + demo.port);
+        } else if (text.matches(".*\\bripv\\s+service\\b.*")) {
+            line = line.replaceAll("--server\\s+\\S+", "--server localhost:" + demo.registryPort);
         }
         return line;
     }
 
+    /** {@code ./ripv cli} as the demo's operator, with these lines. */
+    String cli(String... lines) throws Exception {
+        List<String> cmd = new ArrayList<>(List.of("bash", ROOT.resolve("ripv").toString(), "cli", "--server", "localhost:" + demo.port,
+                "--user", "demo", "--password-file", demo.dir.resolve("password").toString()));
+        for (String l : lines) {
+            cmd.addAll(List.of("--exec", l));
+        }
+        ProcessBuilder pb = new ProcessBuilder(cmd).directory(work.toFile()).redirectErrorStream(true)
+                .redirectInput(ProcessBuilder.Redirect.from(new File("/dev/null")));
+        pb.environment().put("HOME", home.toString());
+        Process p = pb.start();
+        String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        assertThat(p.waitFor(120, TimeUnit.SECONDS)).isTrue();
+        assertThat(p.exitValue()).as(String.join(" ; ", lines) + ":\n" + out).isZero();
+        return out;
+    }
+
+    /** The receipt of the last run of the named workflow file, once it has a result. */
+    static String lastReceipt(String receipts, String file) {
+        String found = null;
+        for (String r : receipts.split("(?m)^(?=receipt: )")) {
+            if (r.startsWith("receipt: ") && r.contains("'" + file + "'") && r.contains("\nresult: ") && !r.contains("result: RUNNING")) {
+                found = r;
+            }
+        }
+        return found;
+    }
+
     @Test
+    @Order(2)
+    void theSampleWorkflowsRunOnTheDemosGlider() throws Exception {
+        // As the samples' comments say; the demo has them (and goto_l10.ma) in its upload store.
+        cli("put docs/samples/goto_l10.ma --replace", "put docs/samples/ru29-new-mission.wf --replace",
+                "put docs/samples/ru29-every-call.wf --replace",
+                "?queue add " + GLIDER + " ru29-new-mission.wf", "?queue add " + GLIDER + " ru29-every-call.wf");
+        long end = System.nanoTime() + TimeUnit.MINUTES.toNanos(5);
+        String receipts = "";
+        while (lastReceipt(receipts, "ru29-new-mission.wf") == null || lastReceipt(receipts, "ru29-every-call.wf") == null) {
+            assertThat(System.nanoTime()).as("both samples ran on a call of the demo's glider:\n" + receipts).isLessThan(end);
+            Thread.sleep(3_000);
+            receipts = cli("?receipts " + GLIDER + " --last 10");
+        }
+        String mission = lastReceipt(receipts, "ru29-new-mission.wf");
+        assertThat(mission).as(mission).contains("result: DONE").doesNotContain("FAILED")
+                .contains("step 1/4 (line 8) ymodem:put goto_l10.ma: OK")
+                .contains("step 3/4").contains("step 4/4");
+        String everyCall = lastReceipt(receipts, "ru29-every-call.wf");
+        assertThat(everyCall).as(everyCall).contains("result: DONE").contains("ymodem:get *.LOG: OK")
+                .doesNotContain("REJECTED").doesNotContain("SQLState");
+        // Only the steps the demo cannot satisfy may fail, as the sample allows: the simulator's mission
+        // logs are not Slocum DBA files (ingest says so), and its glider is sim01, not ru29.
+        for (String l : everyCall.lines().filter(l -> l.startsWith("step ")).toList()) {
+            assertThat(l).as(everyCall).matches(".*: OK in .*|.*(ingest|vis:track ru29).*FAILED \\(continue-on-error\\).*");
+        }
+        if (everyCall.contains("ingest to=<DatabaseServer>::<localhost>TTY1: FAILED")) {
+            assertThat(everyCall).as(everyCall).contains("not a DBA file");
+        }
+    }
+
+    @Test
+    @Order(3)
+    void aSecondDemoOnTheSameFolderSaysWhichProcessHoldsItAndTouchesNothing() throws Exception {
+        String serverLog = demo.logOf("server");
+        String[] names = {"RIPV_PORT", "RIPV_REGISTRY_PORT", "RIPV_HTTP_PORT", "RIPV_GLIDER_PORT"};
+        int[] other = RunningDemo.freePorts(4);
+        Map<String, String> otherPorts = new java.util.HashMap<>();
+        for (int i = 0; i < 4; i++) {
+            otherPorts.put(names[i], "" + other[i]);
+        }
+        for (Map<String, String> env : List.of(otherPorts, Map.<String, String>of())) {
+            RunningDemo.Result second = demo.run(env);
+            assertThat(second.exit()).as(second.output()).isEqualTo(1);
+            assertThat(second.output()).contains("ripv demo: " + demo.dir + " is in use by the demo running as process " + demo.process.pid())
+                    .contains("ripv demo --stop").doesNotContain("starting");
+            assertThat(demo.logOf("server")).as("the running demo's log is not truncated").startsWith(serverLog);
+            assertThat(demo.process.isAlive()).isTrue();
+        }
+    }
+
+    @Test
+    @Order(3)
+    void aLaunchedCliKeepsItsFilesUnderHome() throws Exception {
+        Path otherHome = Files.createDirectories(tmp.resolve("other-home"));
+        List<String> base = List.of("bash", ROOT.resolve("ripv").toString(), "cli", "--server", "localhost:" + demo.port, "--user", "demo");
+        List<String> ok = new ArrayList<>(base);
+        ok.addAll(List.of("--password-file", demo.dir.resolve("password").toString(), "--exec", "?whoami"));
+        RunningDemo.Result r = run(ok, otherHome);
+        assertThat(r.exit()).as(r.output()).isZero();
+        assertThat(otherHome.resolve(".ripv/known_hosts")).as(r.output()).exists();
+        assertThat(Files.readString(otherHome.resolve(".ripv/known_hosts"), StandardCharsets.UTF_8)).contains("localhost:" + demo.port);
+
+        List<String> missing = new ArrayList<>(base);
+        Path pw = otherHome.resolve(".ripv/pw");
+        missing.addAll(List.of("--password-file", pw.toString(), "--exec", "?whoami"));
+        RunningDemo.Result m = run(missing, otherHome);
+        assertThat(m.exit()).as(m.output()).isEqualTo(2);
+        assertThat(m.output()).contains("Error: the password file " + pw + " does not exist")
+                .contains("install -m 600 /dev/null " + pw).doesNotContain("Exception");
+    }
+
+    RunningDemo.Result run(List<String> cmd, Path withHome) throws IOException, InterruptedException {
+        ProcessBuilder pb = new ProcessBuilder(cmd).directory(work.toFile()).redirectErrorStream(true)
+                .redirectInput(ProcessBuilder.Redirect.from(new File("/dev/null")));
+        pb.environment().put("HOME", withHome.toString());
+        pb.environment().remove("RIPV_KNOWN_HOSTS");
+        pb.environment().remove("RIPV_PASSWORD");
+        Process p = pb.start();
+        String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        assertThat(p.waitFor(120, TimeUnit.SECONDS)).isTrue();
+        return new RunningDemo.Result(p.exitValue(), out);
+    }
+
+    @Test
+    @Order(4)
+    void demoStopStopsTheDemoOfThatFolder() throws Exception {
+        clock.destroy();
+        clock.waitFor(30, TimeUnit.SECONDS);
+        RunningDemo.Result stop = demo.run(Map.of(), "--stop");
+        assertThat(stop.exit()).as(stop.output()).isZero();
+        assertThat(stop.output()).contains("stopping the demo (process " + demo.process.pid() + ")");
+        assertThat(demo.process.waitFor(60, TimeUnit.SECONDS)).as("the demo ends").isTrue();
+        assertThat(demo.watch.processes()).as("every process of the demo ends with it").isEmpty();
+        assertThat(demo.dir.resolve("demo.pid")).doesNotExist();
+        RunningDemo.Result again = demo.run(Map.of(), "--stop");
+        assertThat(again.exit()).isZero();
+        assertThat(again.output()).contains("no demo is running from " + demo.dir);
+    }
+
+    @Test
+    @Order(0)
     void aDryRunStillRefusesAnOptionThatDoesNotExist() throws Exception {
         for (String c : List.of("./ripv server --data ~/d --no-such-option", "./ripv service serial --server localhost --no-such-option",
                 "./ripv demo --no-such-option")) {
-            ProcessBuilder pb = new ProcessBuilder("bash", "-c", rewrite(c)).directory(work.toFile()).redirectErrorStream(true);
+            ProcessBuilder pb = new ProcessBuilder("bash", "-c", RIPV.matcher(c).replaceAll(m -> Matcher.quoteReplacement(m.group(1)
+                    + ROOT.resolve("ripv")))).directory(work.toFile()).redirectErrorStream(true);
             pb.environment().put("RIPV_PARSE_ONLY", "1");
             Process p = pb.start();
             String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);

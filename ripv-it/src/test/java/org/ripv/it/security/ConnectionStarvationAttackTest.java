@@ -90,7 +90,8 @@ class ConnectionStarvationAttackTest {
         ClientSocketHandler alice = ClientSocketHandler.connectPlain("127.0.0.1", sys.server().port());
         alice.login("alice", TestSystem.PASSWORD.toCharArray());
         long millis = (System.nanoTime() - t0) / 1_000_000;
-        assertThat(millis).as("a user logs in while 1,000+ connections hold on without logging in").isLessThan(2_000);
+        assertThat(millis).as("a user logs in while 1,000+ connections hold on without logging in"
+                + " (starved, it would wait for the 8 s log-in deadline to free a slot)").isLessThan(6_000);
         alice.close();
 
         // The log-in deadline (8 s here) closes every connection that did not log in.

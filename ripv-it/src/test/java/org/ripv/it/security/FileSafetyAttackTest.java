@@ -160,11 +160,12 @@ class FileSafetyAttackTest {
             OutgoingServerMessage got = otto.call("<SerialPortServer>::<localhost>" + handle, "ymodem:get MISSION1.LOG",
                     Priority.NORMAL, T, null);
             assertThat(got.status()).as(got.footer().replyText()).isEqualTo(Status.OK);
-            for (Path p : List.of(sys.dataDir(), sys.uploadDir(), sys.downloadDir(), sys.downloadDir().resolve(handle),
+            String folder = org.ripv.server.files.FileStore.folderFor("<SerialPortServer>::<localhost>" + handle);
+            for (Path p : List.of(sys.dataDir(), sys.uploadDir(), sys.downloadDir(), sys.downloadDir().resolve(folder),
                     work.resolve(handle))) {
                 assertThat(mode(p)).as(p.toString()).isEqualTo("rwx------");
             }
-            for (Path p : List.of(sys.uploadDir().resolve("up.bin"), sys.downloadDir().resolve(handle).resolve("MISSION1.LOG"),
+            for (Path p : List.of(sys.uploadDir().resolve("up.bin"), sys.downloadDir().resolve(folder).resolve("MISSION1.LOG"),
                     sys.dataDir().resolve("permit.txt"), sys.dataDir().resolve("service.secret"))) {
                 assertThat(mode(p)).as(p.toString()).isEqualTo("rw-------");
             }

@@ -44,6 +44,8 @@ class HostileVehicleAttackTest {
     String hostileBox;
     String honestHandle;
     String hostileHandle;
+    String honestFolder;
+    String hostileFolder;
 
     @BeforeEach
     void start() throws Exception {
@@ -59,6 +61,8 @@ class HostileVehicleAttackTest {
         hostileHandle = Handles.forLink(hostile.device());
         honestBox = "<SerialPortServer>::<localhost>" + honestHandle;
         hostileBox = "<SerialPortServer>::<localhost>" + hostileHandle;
+        honestFolder = org.ripv.server.files.FileStore.folderFor(honestBox);
+        hostileFolder = org.ripv.server.files.FileStore.folderFor(hostileBox);
     }
 
     private static LinkSettings link(String device) {
@@ -81,8 +85,8 @@ class HostileVehicleAttackTest {
         byte[] real = Files.readAllBytes(honest.directory().resolve("MISSION1.LOG"));
         OutgoingServerMessage got = otto.call(honestBox, "ymodem:get MISSION1.LOG", Priority.NORMAL, T, null);
         assertThat(got.status()).as(got.footer().replyText()).isEqualTo(Status.OK);
-        assertThat(got.footer().replyText()).contains("stored in the download directory as " + honestHandle + "/MISSION1.LOG");
-        Path stored = sys.downloadDir().resolve(honestHandle).resolve("MISSION1.LOG");
+        assertThat(got.footer().replyText()).contains("stored in the download directory as " + honestFolder + "/MISSION1.LOG");
+        Path stored = sys.downloadDir().resolve(honestFolder).resolve("MISSION1.LOG");
         assertThat(Files.readAllBytes(stored)).isEqualTo(real);
 
         // asked for OVER, the hostile vehicle sends MISSION1.LOG (and a traversal attempt)
@@ -94,15 +98,15 @@ class HostileVehicleAttackTest {
         assertThat(r.footer().replyText()).contains("'MISSION1.LOG', which was not asked for; refused");
         assertThat(Files.readAllBytes(stored)).as("the honest glider's file is untouched").isEqualTo(real);
         assertThat(Files.exists(sys.downloadDir().resolve("MISSION1.LOG"))).isFalse();
-        assertThat(Files.exists(sys.downloadDir().resolve(hostileHandle).resolve("MISSION1.LOG"))).isFalse();
+        assertThat(Files.exists(sys.downloadDir().resolve(hostileFolder).resolve("MISSION1.LOG"))).isFalse();
 
         // a batch with the asked file and an extra: the asked one is stored in the vehicle's own folder, with a warning
         hostile.batch = () -> List.of(SendFile.of("over", "over".getBytes()), SendFile.of("MISSION1.LOG", evil));
         r = otto.call(hostileBox, "ymodem:get OVER", Priority.NORMAL, T, null);
         assertThat(r.status()).as(r.footer().replyText()).isEqualTo(Status.OK);
         assertThat(r.footer().replyText()).contains("warning: the vehicle sent 'MISSION1.LOG'")
-                .contains(hostileHandle + "/OVER");
-        assertThat(Files.readString(sys.downloadDir().resolve(hostileHandle).resolve("OVER"))).isEqualTo("over");
+                .contains(hostileFolder + "/OVER");
+        assertThat(Files.readString(sys.downloadDir().resolve(hostileFolder).resolve("OVER"))).isEqualTo("over");
         assertThat(Files.readAllBytes(stored)).isEqualTo(real);
 
         // the same name from two vehicles: both kept apart; ?dlfiles lists FOLDER/NAME, and get fetches each
@@ -112,13 +116,13 @@ class HostileVehicleAttackTest {
         assertThat(Files.readAllBytes(stored)).isEqualTo(real);
         FileListing dl = (FileListing) otto.call("", "?dlfiles", Priority.NORMAL, T, null).footer().result();
         assertThat(dl.files()).extracting(FileListing.Entry::name)
-                .contains(honestHandle + "/MISSION1.LOG", hostileHandle + "/MISSION1.LOG", hostileHandle + "/OVER");
-        Path mine = otto.download(honestHandle + "/MISSION1.LOG", dir.resolve("here"), null);
+                .contains(honestFolder + "/MISSION1.LOG", hostileFolder + "/MISSION1.LOG", hostileFolder + "/OVER");
+        Path mine = otto.download(honestFolder + "/MISSION1.LOG", dir.resolve("here"), null);
         assertThat(mine.getFileName().toString()).isEqualTo("MISSION1.LOG");
         assertThat(Files.readAllBytes(mine)).isEqualTo(real);
         OutgoingServerMessage ambiguous = otto.call("", "?download MISSION1.LOG 0 100", Priority.NORMAL, T, null);
         assertThat(ambiguous.footer().replyText()).contains("several MailBoxes");
-        for (String traversal : List.of("../permit.txt", honestHandle + "/../../permit.txt", "../../etc/passwd")) {
+        for (String traversal : List.of("../permit.txt", honestFolder + "/../../permit.txt", "../../etc/passwd")) {
             OutgoingServerMessage t = otto.call("", "?download " + traversal + " 0 100", Priority.NORMAL, T, null);
             assertThat(t.status()).as(traversal).isEqualTo(Status.ERROR);
         }

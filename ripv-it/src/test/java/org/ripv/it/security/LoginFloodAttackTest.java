@@ -38,8 +38,8 @@ class LoginFloodAttackTest {
     static final String CLOCK = "<ClockService>::<localhost>TTY1";
     static final Duration T = Duration.ofSeconds(20);
 
-    /** The least a quiet p99 counts as (ms): the scheduling latency of a 2-core machine with one more thread busy. */
-    static final double QUIET_FLOOR_MS = 2.0;
+    /** The least a quiet median counts as (ms): the scheduling latency of a loaded 2-core machine. */
+    static final double QUIET_FLOOR_MS = 5.0;
 
     @TempDir
     Path dir;
@@ -54,39 +54,31 @@ class LoginFloodAttackTest {
             sys.user("bob", "operators");
             ClientSocketHandler bob = sys.login("bob");
 
-            // The measurement is repeated (up to 3 times) only because colleagues' builds share this
-            // machine's 2 cores; every attempt measures quiet and flood back to back.
-            String last = "";
-            int tooMany = 0;
-            for (int attempt = 1; attempt <= 3; attempt++) {
-                double quiet = p99(bob, 300);
-                Flood flood = new Flood(sys, attempt);
-                flood.start();
-                long until = System.nanoTime() + Duration.ofSeconds(60).toNanos();
-                while (flood.answers.get() < 20) {
-                    assertThat(System.nanoTime()).as("the flood gets going").isLessThan(until);
-                    Thread.sleep(50);
-                }
-                int before = flood.answers.get();
-                double loaded = p99(bob, 300);
-                int during = flood.answers.get() - before;
-                flood.stop();
-                tooMany += flood.tooMany.get();
-                last = String.format("attempt %d: ?status p99 quiet %.2f ms, under a 50-connection log-in flood %.2f ms"
-                        + " (%d guesses answered meanwhile, %d 'too many' replies)", attempt, quiet, loaded, during,
-                        flood.tooMany.get());
-                System.out.println(last);
-                assertThat(during).as("the flood ran while ?status was measured").isPositive();
-                assertThat(flood.errors).as("no attacker saw anything but refusals").isEmpty();
-                // Since the shared writer pool, a quiet ?status p99 can be 0.3 ms: below the few
-                // milliseconds any second runnable thread costs on 2 cores, so 3x of it would measure the
-                // scheduler, not the server. The quiet value counts as at least QUIET_FLOOR_MS.
-                if (loaded < 3 * Math.max(quiet, QUIET_FLOOR_MS)) {
-                    assertThat(tooMany).as("attackers are told they are blocked before the close").isPositive();
-                    return;
-                }
+            // One measurement, quiet then flooded, back to back. The bound is the median (scheduling
+            // spikes on a shared 2-core machine move a p99, not a median) at 10x the quiet one, which
+            // counts as at least QUIET_FLOOR_MS: the regression this guards against, PBKDF2 on the
+            // readers' threads, took the median from 2.4 ms to 91 ms. The p99s are printed for the record.
+            double[] quiet = latencies(bob, 300);
+            Flood flood = new Flood(sys, 1);
+            flood.start();
+            long until = System.nanoTime() + Duration.ofSeconds(60).toNanos();
+            while (flood.answers.get() < 20) {
+                assertThat(System.nanoTime()).as("the flood gets going").isLessThan(until);
+                Thread.sleep(50);
             }
-            throw new AssertionError("?status p99 rose above 3x its quiet value (at least " + QUIET_FLOOR_MS + " ms) under a log-in flood: " + last);
+            int before = flood.answers.get();
+            double[] loaded = latencies(bob, 300);
+            int during = flood.answers.get() - before;
+            flood.stop();
+            String figures = String.format("?status median/p99 quiet %.2f/%.2f ms, under a 50-connection log-in flood %.2f/%.2f ms"
+                    + " (%d guesses answered meanwhile, %d 'too many' replies)", quiet[0], quiet[1], loaded[0], loaded[1], during,
+                    flood.tooMany.get());
+            System.out.println(figures);
+            assertThat(during).as("the flood ran while ?status was measured").isPositive();
+            assertThat(flood.errors).as("no attacker saw anything but refusals").isEmpty();
+            assertThat(loaded[0]).as("a log-in flood leaves a logged-in user's ?status fast: " + figures)
+                    .isLessThan(10 * Math.max(quiet[0], QUIET_FLOOR_MS));
+            assertThat(flood.tooMany.get()).as("attackers are told they are blocked before the close").isPositive();
         }
     }
 
@@ -168,7 +160,8 @@ class LoginFloodAttackTest {
                 new FromAddress(Tls.trustOnFirstUse("localhost", port, Tls.defaultKnownHosts(), n -> { }), source), T);
     }
 
-    private static double p99(ClientSocketHandler c, int n) throws IOException {
+    /** The median and the p99 of n {@code ?status} round trips, in ms. */
+    private static double[] latencies(ClientSocketHandler c, int n) throws IOException {
         for (int i = 0; i < 30; i++) {
             c.call("", "?status " + CLOCK, Priority.NORMAL, T, null);
         }
@@ -180,7 +173,7 @@ class LoginFloodAttackTest {
             assertThat(r.status()).isEqualTo(Status.OK);
         }
         Arrays.sort(t);
-        return t[(int) Math.ceil(n * 0.99) - 1] / 1e6;
+        return new double[] {t[n / 2] / 1e6, t[(int) Math.ceil(n * 0.99) - 1] / 1e6};
     }
 
     /** 50 connections from 50 addresses, each guessing passwords as fast as the server answers, reconnecting when cut off. */

@@ -94,7 +94,7 @@ public final class DataLoop {
         List<String> names = new ArrayList<>();
         for (int i = 0; i < files.size(); i++) {
             FileData f = files.get(i);
-            if (isDba(f.data()) && settings.enabled(vehicle(f.data()), handle)) {
+            if ((isDba(f.data()) || isSlocumBinary(f.name(), f.data())) && settings.enabled(vehicle(f.data()), handle)) {
                 names.add(stored.get(i).name());
             }
         }
@@ -103,25 +103,27 @@ public final class DataLoop {
         }
         String database = database();
         String user = reply.header().origin().user();
+        int fetched = files.size();
         if (database == null) {
             log.warn("not ingesting {} for {}: no DatabaseServer is registered", names, user);
-            send.accept(append(reply, "not ingested: no DatabaseServer is registered"));
+            send.accept(IngestVerdict.failed(reply, fetched, 0, "not ingested: no DatabaseServer is registered"));
             return true;
         }
-        String what = names.size() == 1 ? names.get(0) : names.size() + " DBA files";
+        String what = names.size() == 1 ? names.get(0) : names.size() + " Slocum files";
         send.accept(progress(reply, "ingesting " + what + " into " + database));
         calls.call(database, "ingest " + String.join(" ", names), user, List.of(INGEST_ROLE), null, f -> { })
                 .whenComplete((f, e) -> {
-                    String text;
+                    OutgoingServerMessage verdict;
                     if (e != null) {
-                        text = "not ingested: " + e;
+                        verdict = IngestVerdict.failed(reply, fetched, 0, "not ingested: " + e);
                     } else if (f.status() == Status.OK) {
-                        text = "ingested into " + database + ":\n" + f.replyText();
+                        verdict = IngestVerdict.ingested(reply, fetched, names.size(), database, f.replyText());
                     } else {
-                        text = "not ingested (" + f.errorCode() + "): " + f.replyText();
+                        verdict = IngestVerdict.failed(reply, fetched, names.size() - IngestVerdict.refused(f.replyText()),
+                                "not ingested (" + f.errorCode() + "): " + f.replyText());
                     }
-                    log.info("automatic ingest of {} for {}: {}", names, user, text.replace('\n', ' '));
-                    send.accept(append(reply, text));
+                    log.info("automatic ingest of {} for {}: {}", names, user, verdict.footer().replyText().replace('\n', ' '));
+                    send.accept(verdict);
                 });
         return true;
     }
@@ -148,11 +150,6 @@ public final class DataLoop {
         return new OutgoingServerMessage(reply.header(), new Footer(f.serviceId(), Status.PROGRESS, null, f.route(), text, null));
     }
 
-    private static OutgoingServerMessage append(OutgoingServerMessage reply, String text) {
-        Footer f = reply.footer();
-        return new OutgoingServerMessage(reply.header(), f.withText(f.replyText().isEmpty() ? text : f.replyText() + "\n" + text));
-    }
-
     /** True when a file starts with the DBA label line. */
     static boolean isDba(byte[] data) {
         if (data.length <= DBA_LABEL.length) {
@@ -167,12 +164,26 @@ public final class DataLoop {
         return next == '\n' || next == '\r' || next == ' ';
     }
 
+    /**
+     * True for what the DatabaseServer's {@code ingest} decodes besides DBA text: Slocum binary
+     * files (the first line is the binary label, or the name a compressed one such as
+     * {@code .scd}) and sensor-list cache files ({@code CRC.cac}), docs/slocum.md.
+     */
+    static boolean isSlocumBinary(String name, byte[] data) {
+        String n = name.substring(Math.max(name.lastIndexOf('/'), name.lastIndexOf('\\')) + 1).toLowerCase(java.util.Locale.ROOT);
+        if (n.matches("[0-9a-f]{8}\\.cac") || n.matches(".*\\.[a-z]cd") && data.length > 0) {
+            return true;
+        }
+        String head = new String(data, 0, Math.min(data.length, 80), StandardCharsets.ISO_8859_1);
+        return head.startsWith("dbd_label:") && head.lines().findFirst().orElse("").contains("DBD(dinkum_binary_data)file");
+    }
+
     /** The glider's name from the header's {@code filename:} tag (before the first '-'), or null. */
     static String vehicle(byte[] data) {
         String head = new String(data, 0, Math.min(data.length, 4096), StandardCharsets.ISO_8859_1);
         for (String line : head.split("\r?\n")) {
-            if (line.startsWith("filename:")) {
-                String f = line.substring(9).strip();
+            if (line.startsWith("filename:") || line.startsWith("full_filename:")) {
+                String f = line.substring(line.indexOf(':') + 1).strip();
                 int dash = f.indexOf('-');
                 return dash > 0 ? f.substring(0, dash) : f;
             }

@@ -15,6 +15,7 @@ import java.nio.file.StandardOpenOption;
 import java.nio.file.attribute.BasicFileAttributes;
 import java.util.ArrayList;
 import java.util.Comparator;
+import java.util.HexFormat;
 import java.util.List;
 import java.util.Map;
 import java.util.Properties;
@@ -312,13 +313,14 @@ public final class FileStore {
      * Stores a file that came from a service's MailBox in that MailBox's own folder of the
      * download directory, replacing an earlier file of the same name from the same MailBox only.
      *
-     * @param folder the MailBox's handle ({@code ttyV0}); unusable characters become '_'
+     * @param mailbox the MailBox's whole address ({@code <SerialPortServer>::<glider-pc>ttyV0}): its
+     *                folder is {@link #folderFor} it, so two services with the same handle never share one
      * @return the name the file is listed and fetched by: {@code FOLDER/NAME}
      */
-    public String storeDownload(String folder, String name, byte[] data) throws IOException {
+    public String storeDownload(String mailbox, String name, byte[] data) throws IOException {
         FileNames.check(name);
-        String f = folderName(folder);
-        Path dir = PrivateFiles.createDirectories(downloadDir.resolve(f));
+        String f = folderFor(mailbox);
+        Path dir = adopt(mailbox);
         Path tmp = PrivateFiles.createTempFile(downloadDir.resolve(PARTIAL), "dl-", ".part");
         try {
             Files.write(tmp, data);
@@ -326,6 +328,104 @@ public final class FileStore {
             return f + "/" + name;
         } finally {
             Files.deleteIfExists(tmp);
+        }
+    }
+
+    /** The file in each MailBox's folder that names the MailBox (hidden from listings). */
+    static final String OWNER_FILE = ".mailbox";
+
+    /**
+     * A MailBox's folder of the download directory: {@code HANDLE@HOST@SERVICE}
+     * ({@code ttyUSB0@glider-pc1@SerialPortServer}), unique to the whole address (issue 23, item 4:
+     * folders named by the handle alone were shared by two glider PCs' {@code ttyUSB0}). A name
+     * that had to be changed to be a file name (a character replaced, cut to length) ends in a
+     * hash of the whole address, so it stays unique.
+     */
+    public static String folderFor(String mailbox) {
+        org.ripv.naming.MailboxAddress a;
+        try {
+            a = org.ripv.naming.MailboxAddress.parse(mailbox);
+        } catch (RuntimeException e) {
+            return folderName(mailbox);
+        }
+        String raw = a.handle() + "@" + a.service().host() + "@" + a.service().service();
+        String clean = (part(a.handle()) + "@" + part(a.service().host()) + "@" + part(a.service().service()));
+        if (clean.equals(raw) && clean.length() <= 64 && !clean.startsWith(".")) {
+            return FileNames.check(clean);
+        }
+        String hash = HexFormat.of().formatHex(sha256(mailbox)).substring(0, 8);
+        String head = clean.startsWith(".") ? "_" + clean.substring(1) : clean;
+        return FileNames.check((head.length() > 55 ? head.substring(0, 55) : head) + "-" + hash);
+    }
+
+    private static String part(String s) {
+        return s.replaceAll("[^A-Za-z0-9._+-]", "_");
+    }
+
+    private static byte[] sha256(String s) {
+        try {
+            return java.security.MessageDigest.getInstance("SHA-256").digest(s.getBytes(java.nio.charset.StandardCharsets.UTF_8));
+        } catch (java.security.NoSuchAlgorithmException e) {
+            throw new IllegalStateException("SHA-256 is part of every JDK", e);
+        }
+    }
+
+    /**
+     * The MailBox's folder, made if need be and marked with its address. A folder from before
+     * folders were per address ({@code download/HANDLE/}, no mark) is moved here the first time
+     * its MailBox is seen — at the service's registration or its first download.
+     */
+    public synchronized Path adopt(String mailbox) throws IOException {
+        Path dir = downloadDir.resolve(folderFor(mailbox));
+        if (!Files.isDirectory(dir)) {
+            String handle;
+            try {
+                handle = org.ripv.naming.MailboxAddress.parse(mailbox).handle();
+            } catch (RuntimeException e) {
+                handle = null;
+            }
+            Path old = handle == null ? null : downloadDir.resolve(folderName(handle));
+            if (old != null && !old.equals(dir) && Files.isDirectory(old) && !Files.exists(old.resolve(OWNER_FILE))) {
+                Files.move(old, dir, StandardCopyOption.ATOMIC_MOVE);
+                org.slf4j.LoggerFactory.getLogger(FileStore.class).warn("moved download/{}/ (from before each MailBox's folder"
+                        + " was unique to its address) to download/{}/ for {}; if two services had a MailBox {}, their files"
+                        + " were mixed there before this version", old.getFileName(), dir.getFileName(), mailbox, handle);
+            }
+        }
+        PrivateFiles.createDirectories(dir);
+        Path mark = dir.resolve(OWNER_FILE);
+        if (!Files.exists(mark)) {
+            Path tmp = PrivateFiles.createTempFile(downloadDir.resolve(PARTIAL), "mb-", ".part");
+            try {
+                Files.writeString(tmp, mailbox + "\n", java.nio.charset.StandardCharsets.UTF_8);
+                Files.move(tmp, mark, StandardCopyOption.ATOMIC_MOVE);
+            } finally {
+                Files.deleteIfExists(tmp);
+            }
+        }
+        return dir;
+    }
+
+    /**
+     * The MailBox whose folder holds a download ({@code FOLDER/NAME}, or a plain name only one
+     * folder holds), or empty for a loose file or a folder from before folders were per address:
+     * rights on a download follow this MailBox (issue 23, item 5).
+     */
+    public java.util.Optional<String> mailboxOf(String downloadName) throws IOException {
+        Path p = downloadPath(downloadName);
+        Path folder = p.getParent();
+        if (folder == null || folder.equals(downloadDir)) {
+            return java.util.Optional.empty();
+        }
+        Path mark = folder.resolve(OWNER_FILE);
+        if (!Files.isRegularFile(mark)) {
+            return java.util.Optional.empty();
+        }
+        String m = Files.readString(mark, java.nio.charset.StandardCharsets.UTF_8).strip();
+        try {
+            return java.util.Optional.of(org.ripv.naming.MailboxAddress.parse(m).toString());
+        } catch (RuntimeException e) {
+            return java.util.Optional.empty();
         }
     }
 

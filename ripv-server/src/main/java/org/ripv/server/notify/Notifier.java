@@ -115,6 +115,29 @@ public final class Notifier implements AutoCloseable {
 
     // ---- subscriptions ----
 
+    /**
+     * The one mailbox an e-mail subscription goes to: {@code local@domain} and nothing else. A
+     * group ({@code g:a@x.org,c@y.org;}), a list, a display name or angle brackets are refused:
+     * one subscription mails one person, within the per-user cap (issue 23, item 9: a group was
+     * taken as one address and mailed every member). Checked when subscribing and again at every
+     * delivery, for subscriptions stored before.
+     */
+    static InternetAddress oneMailbox(String target) {
+        String t = target == null ? "" : target.strip();
+        try {
+            InternetAddress[] all = InternetAddress.parse(t, true);
+            if (all.length == 1 && !all[0].isGroup() && all[0].getPersonal() == null && t.equals(all[0].getAddress())
+                    && t.indexOf(',') < 0 && t.indexOf(';') < 0 && t.indexOf(':') < 0 && t.indexOf('<') < 0) {
+                all[0].validate();
+                return all[0];
+            }
+        } catch (AddressException e) {
+            throw new IllegalArgumentException("'" + target + "' is not an e-mail address: " + e.getMessage());
+        }
+        throw new IllegalArgumentException("'" + target + "' is not one e-mail address: a subscription mails one mailbox"
+                + " (name@example.org), not a group or a list; add one subscription per person");
+    }
+
     /** Adds a subscription; returns it. Throws IllegalArgumentException for a bad target, event list or glob. */
     Subscription add(String user, Subscription.Channel channel, String target, String events, String glob)
             throws IOException {
@@ -128,11 +151,7 @@ public final class Notifier implements AutoCloseable {
             if (smtp == null) {
                 throw new IllegalArgumentException("this server sends no e-mail: it was started without --smtp HOST:PORT");
             }
-            try {
-                new InternetAddress(target, true).validate();
-            } catch (AddressException e) {
-                throw new IllegalArgumentException("'" + target + "' is not an e-mail address: " + e.getMessage());
-            }
+            oneMailbox(target);
         }
         if (glob.length() > 300 || glob.isBlank()) {
             throw new IllegalArgumentException("a MailBox glob is 1-300 characters");
@@ -366,7 +385,7 @@ public final class Notifier implements AutoCloseable {
             Session session = Session.getInstance(props);
             MimeMessage m = new MimeMessage(session);
             m.setFrom(new InternetAddress(smtp.from()));
-            m.setRecipient(Message.RecipientType.TO, new InternetAddress(s.target, true));
+            m.setRecipient(Message.RecipientType.TO, oneMailbox(s.target));
             m.setSubject("[RIPV] " + vehicle(n.event().mailbox()) + " " + n.event().event(), "UTF-8");
             m.setText(mailBody(n), "UTF-8");
             m.setSentDate(new java.util.Date());

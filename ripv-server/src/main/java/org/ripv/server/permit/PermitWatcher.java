@@ -37,7 +37,7 @@ public final class PermitWatcher {
     }
 
     /** Reads the file now. */
-    public void reload() throws IOException {
+    public synchronized void reload() throws IOException {
         PermitFile loaded = PermitFile.load(file);
         current = loaded;
         stamp = stamp(file);
@@ -51,7 +51,7 @@ public final class PermitWatcher {
     }
 
     /** Reads the file again if it changed since the last read; the server calls it now and then. */
-    public void reloadIfChanged() {
+    public synchronized void reloadIfChanged() {
         long now = stamp(file);
         if (now == -1) {
             if (stamp != -1) {

@@ -9,11 +9,15 @@ import java.util.Map;
 import java.util.function.LongSupplier;
 
 /**
- * Failed log-ins counted per user name and per source address, across connections. After a few
- * free failures each further one blocks the name (or the address) for twice as long as the last,
- * from {@code firstDelay} up to {@code lock}; a block that reached {@code lock} is the temporary
- * lock an admin lifts with {@code ?unlock-login}. While blocked, a log-in is refused at once,
- * without hashing the password, so a flood costs the server almost nothing.
+ * Failed log-ins counted per source address, per user name from each address, and per user name,
+ * across connections. After a few free failures each further one blocks for twice as long as the
+ * last, from {@code firstDelay}: the guessing source — an address, or a user name from one address
+ * — up to {@code lock}, the temporary lock an admin lifts with {@code ?unlock-login}; the user
+ * name from everywhere up to {@code userMax} only (seconds), and never from an address it logged
+ * in from before. So guesses spread over many addresses are slowed, yet they cannot lock the real
+ * user out (issue 23, item 15: twelve wrong passwords from twelve addresses locked the user
+ * everywhere for minutes). While blocked, a log-in is refused at once, without hashing the
+ * password, so a flood costs the server almost nothing.
  */
 public final class LoginThrottle {
 
@@ -21,11 +25,19 @@ public final class LoginThrottle {
      * @param freePerUser    failures a user name may have before back-off starts (default 5)
      * @param freePerAddress failures a source address may have before back-off starts (default 10)
      * @param firstDelay     the first block (default 1 s); each further failure doubles it
-     * @param lock           the longest block: the temporary lock (default 15 min)
+     * @param lock           the longest block of a source: the temporary lock (default 15 min)
+     * @param userMax        the longest block of a user name from addresses it has not logged in
+     *                       from (default 8 s): it slows guessing, and never locks the user out
      */
-    public record Policy(int freePerUser, int freePerAddress, Duration firstDelay, Duration lock) {
+    public record Policy(int freePerUser, int freePerAddress, Duration firstDelay, Duration lock, Duration userMax) {
+        public static final Duration USER_MAX = Duration.ofSeconds(8);
+
+        public Policy(int freePerUser, int freePerAddress, Duration firstDelay, Duration lock) {
+            this(freePerUser, freePerAddress, firstDelay, lock, lock.compareTo(USER_MAX) < 0 ? lock : USER_MAX);
+        }
+
         public static Policy defaults() {
-            return new Policy(5, 10, Duration.ofSeconds(1), Duration.ofMinutes(15));
+            return new Policy(5, 10, Duration.ofSeconds(1), Duration.ofMinutes(15), USER_MAX);
         }
     }
 
@@ -36,13 +48,25 @@ public final class LoginThrottle {
         int failures;
         long blockedUntil;
         long last;
+        /** False for a user name from everywhere: its blocks stop at userMax and are never a lock. */
+        boolean lockable = true;
     }
 
     private static final int MAX_ENTRIES = 100_000;
+    /** Addresses remembered per user as "logged in from here before", newest last. */
+    private static final int KNOWN_PER_USER = 16;
 
     private final Policy policy;
     private final LongSupplier clock;
     private final Map<String, State> states = new HashMap<>();
+    private final Map<String, java.util.LinkedHashSet<String>> known = new java.util.LinkedHashMap<>(16, 0.75f, true) {
+        private static final long serialVersionUID = 1L;
+
+        @Override
+        protected boolean removeEldestEntry(Map.Entry<String, java.util.LinkedHashSet<String>> eldest) {
+            return size() > MAX_ENTRIES;
+        }
+    };
 
     public LoginThrottle(Policy policy) {
         this(policy, System::currentTimeMillis);
@@ -57,11 +81,21 @@ public final class LoginThrottle {
     public synchronized Block blocked(String user, String address) {
         long now = clock.getAsLong();
         Block a = block("address " + address, states.get(addressKey(address)), now);
-        Block u = block("user " + user, states.get(userKey(user)), now);
+        Block p = block("user " + user + " from " + address, states.get(pairKey(user, address)), now);
+        Block u = isKnown(user, address) ? null : block("user " + user, states.get(userKey(user)), now);
+        return longest(longest(a, p), u);
+    }
+
+    private static Block longest(Block a, Block b) {
         if (a == null) {
-            return u;
+            return b;
         }
-        return u == null || a.left().compareTo(u.left()) >= 0 ? a : u;
+        return b == null || a.left().compareTo(b.left()) >= 0 ? a : b;
+    }
+
+    private boolean isKnown(String user, String address) {
+        java.util.Set<String> k = known.get(user);
+        return k != null && k.contains(address);
     }
 
     /** The block in force for this address alone, or null: checked at accept, before any TLS handshake. */
@@ -78,7 +112,7 @@ public final class LoginThrottle {
     }
 
     private boolean isLock(State s) {
-        return s.blockedUntil - s.last >= policy.lock().toMillis();
+        return s.lockable && s.blockedUntil - s.last >= policy.lock().toMillis();
     }
 
     /** Counts a failure for both; returns the block it caused, or null. */
@@ -87,7 +121,10 @@ public final class LoginThrottle {
         if (states.size() > MAX_ENTRIES) {
             prune(now);
         }
-        fail(states.computeIfAbsent(userKey(user), k -> new State()), policy.freePerUser(), now);
+        State u = states.computeIfAbsent(userKey(user), k -> new State());
+        u.lockable = false;
+        fail(u, policy.freePerUser(), now);
+        fail(states.computeIfAbsent(pairKey(user, address), k -> new State()), policy.freePerUser(), now);
         fail(states.computeIfAbsent(addressKey(address), k -> new State()), policy.freePerAddress(), now);
         return blocked(user, address);
     }
@@ -116,20 +153,33 @@ public final class LoginThrottle {
         int over = s.failures - free;
         if (over > 0) {
             long delay = policy.firstDelay().toMillis() << Math.min(over - 1, 30);
-            s.blockedUntil = now + Math.min(delay, policy.lock().toMillis());
+            long max = s.lockable ? policy.lock().toMillis() : policy.userMax().toMillis();
+            s.blockedUntil = now + Math.min(delay, max);
         }
     }
 
-    /** A good log-in clears the user's failures (not the address's: one valid account must not reset it). */
-    public synchronized void success(String user) {
+    /**
+     * A good log-in clears the user's failures (not the address's: one valid account must not
+     * reset it) and remembers the address as one the user logs in from: blocks of the user name
+     * alone do not apply there.
+     */
+    public synchronized void success(String user, String address) {
         states.remove(userKey(user));
+        states.remove(pairKey(user, address));
+        java.util.LinkedHashSet<String> k = known.computeIfAbsent(user, x -> new java.util.LinkedHashSet<>());
+        k.remove(address);
+        k.add(address);
+        if (k.size() > KNOWN_PER_USER) {
+            k.remove(k.iterator().next());
+        }
     }
 
     /** Lifts the block of a user name or an address; true when there was anything to lift. */
     public synchronized boolean lift(String who) {
         boolean u = states.remove(userKey(who)) != null;
         boolean a = states.remove(addressKey(who)) != null;
-        return u || a;
+        boolean p = states.keySet().removeIf(k -> k.startsWith("pair ") && (k.startsWith(pairKey(who, "")) || k.endsWith(" from " + who)));
+        return u || a || p;
     }
 
     /** One line per user or address with failures: what {@code ?logins} shows. */
@@ -153,6 +203,10 @@ public final class LoginThrottle {
 
     private static String userKey(String user) {
         return "user " + user;
+    }
+
+    private static String pairKey(String user, String address) {
+        return "pair " + user + " from " + address;
     }
 
     private static String addressKey(String address) {

@@ -131,7 +131,7 @@ public final class Logins {
                 return new Check(null, false, null, "interrupted");
             }
             if (u.isPresent()) {
-                throttle.success(user);
+                throttle.success(user, address);
                 return new Check(u.get(), false, null, null);
             }
             LoginThrottle.Block caused = throttle.failure(user, address);

@@ -1,11 +1,11 @@
 package org.ripv.server.security;
 
 import java.util.function.Supplier;
-import org.ripv.server.http.WebAccess;
+import org.ripv.server.web.WebAccess;
 import org.ripv.server.permit.PermitFile;
 
 /**
- * The landing page's log-in ({@code --http-upload}): the client port's users, limits, pool and
+ * The web console's log-in (and its upload form with {@code --http-upload}): the client port's users, limits, pool and
  * audit, and the permit file's rule for {@code ?upload NAME} on {@code RIPVServer}.
  */
 public final class WebLogins implements WebAccess {
@@ -32,7 +32,7 @@ public final class WebLogins implements WebAccess {
                     : "wrong user name or password");
         }
         Audit.log(false, "login", "user", user, "from", address, "via", "web");
-        return Result.ok(user);
+        return Result.ok(user, c.user().roles());
     }
 
     @Override

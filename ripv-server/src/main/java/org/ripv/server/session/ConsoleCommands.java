@@ -135,6 +135,10 @@ public final class ConsoleCommands {
         if (page.unreadable() > 0) {
             b.append(" (").append(page.unreadable()).append(" unreadable transcript lines skipped)");
         }
+        String trouble = hub.transcriptTrouble();
+        if (trouble != null) {
+            b.append("\nwarning: ").append(trouble);
+        }
         for (ConsoleEntry e : page.entries()) {
             b.append('\n').append(Entries.toText(e));
         }

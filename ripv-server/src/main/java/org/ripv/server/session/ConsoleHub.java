@@ -58,8 +58,14 @@ public final class ConsoleHub implements AutoCloseable {
      * @param encoder      encodes a push once for all the watchers that are up to date
      */
     public ConsoleHub(Path transcripts, org.ripv.server.store.StateStore store, int keepDays, Encoder encoder) throws IOException {
+        this(transcripts, store, keepDays, 0, encoder);
+    }
+
+    /** As above, keeping at most {@code dayCap} bytes of one MailBox's transcript a day (0: no cap). */
+    public ConsoleHub(Path transcripts, org.ripv.server.store.StateStore store, int keepDays, long dayCap, Encoder encoder)
+            throws IOException {
         this.encoder = encoder;
-        this.transcript = new Transcript(transcripts, store, keepDays);
+        this.transcript = new Transcript(transcripts, store, keepDays, dayCap);
         this.states = new VehicleStates(store);
     }
 
@@ -346,6 +352,11 @@ public final class ConsoleHub implements AutoCloseable {
     /** Reads the transcript ({@code ?history}); runs on the caller's thread, so not on the Post Office's. */
     public Transcript.Page history(String mailbox, Instant since, int last) throws IOException {
         return transcript.history(mailbox, since, last);
+    }
+
+    /** Why transcript entries are not being kept now, or null. */
+    public String transcriptTrouble() {
+        return transcript.trouble();
     }
 
     /** Waits (briefly) until every entry taken so far is in the transcript and every state change saved. */

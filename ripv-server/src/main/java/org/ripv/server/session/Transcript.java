@@ -38,6 +38,17 @@ public final class Transcript implements AutoCloseable {
     private final BatchWriter<ConsoleEntry> writer;
     private volatile String droppedMailbox;
     private long lastPrune;
+    /** The most bytes one MailBox's transcript takes in one UTC day; 0: no cap. */
+    private final long dayCap;
+    /** What each MailBox wrote today, and what was cut: the writer thread's alone. */
+    private final java.util.Map<String, DayUse> today = new java.util.HashMap<>();
+
+    private static final class DayUse {
+        LocalDate day;
+        long bytes;
+        long cutLines;
+        long cutBytes;
+    }
 
     /**
      * A transcript in files of its own under {@code root} (the embedded store's layout).
@@ -58,11 +69,26 @@ public final class Transcript implements AutoCloseable {
      * @param keepDays entries of days older than this are deleted
      */
     public Transcript(Path root, StateStore store, int keepDays) throws IOException {
-        this(root, store, false, keepDays);
+        this(root, store, false, keepDays, 0);
+    }
+
+    /**
+     * As {@link #Transcript(Path, StateStore, int)}, keeping at most {@code dayCap} bytes of one
+     * MailBox's entries a day: a link printing at its rate limit for a day wrote ~5 GB (issue 23,
+     * item 14). The first entry over the cap is replaced by a marker line saying so; the next day
+     * starts with a line saying how much was cut.
+     */
+    public Transcript(Path root, StateStore store, int keepDays, long dayCap) throws IOException {
+        this(root, store, false, keepDays, dayCap);
     }
 
     private Transcript(Path root, StateStore store, boolean ownsStore, int keepDays) throws IOException {
+        this(root, store, ownsStore, keepDays, 0);
+    }
+
+    private Transcript(Path root, StateStore store, boolean ownsStore, int keepDays, long dayCap) throws IOException {
         this.root = root;
+        this.dayCap = dayCap;
         this.store = store;
         this.ownsStore = ownsStore;
         this.keepDays = Math.max(1, keepDays);
@@ -116,12 +142,54 @@ public final class Transcript implements AutoCloseable {
         }
         for (ConsoleEntry e : batch) {
             try {
-                lines.add(line(e));
+                StateStore.TranscriptLine l = line(e);
+                if (withinCap(e, l, lines)) {
+                    lines.add(l);
+                }
             } catch (RuntimeException x) {
                 log.warn("transcript of {}: could not write: {}", e.mailbox(), x.toString());
             }
         }
         return lines;
+    }
+
+    /** Counts an entry against its MailBox's day; false when it is over the cap (and a marker was added if it is the first). */
+    private boolean withinCap(ConsoleEntry e, StateStore.TranscriptLine l, List<StateStore.TranscriptLine> lines) {
+        if (dayCap <= 0) {
+            return true;
+        }
+        LocalDate day = LocalDate.ofInstant(Instant.ofEpochMilli(e.time()), ZoneOffset.UTC);
+        DayUse u = today.computeIfAbsent(e.mailbox(), k -> new DayUse());
+        if (!day.equals(u.day)) {
+            if (u.cutLines > 0) {
+                lines.add(line(ConsoleEntry.line(e.mailbox(), "[transcript: " + u.cutLines + " entries (" + u.cutBytes
+                        + " bytes) of " + u.day + " were not kept: over the cap of " + dayCap + " bytes a day]")));
+            }
+            if (today.size() > 10_000) {
+                today.values().removeIf(x -> x.day != null && x.day.isBefore(day.minusDays(1)));
+            }
+            u.day = day;
+            u.bytes = 0;
+            u.cutLines = 0;
+            u.cutBytes = 0;
+        }
+        long bytes = l.json().length() + 1L;
+        if (u.bytes + bytes <= dayCap) {
+            u.bytes += bytes;
+            return true;
+        }
+        if (u.cutLines == 0) {
+            lines.add(line(ConsoleEntry.line(e.mailbox(), "[transcript: " + e.mailbox() + " reached the cap of " + dayCap
+                    + " bytes for " + day + "; its further entries of the day are not kept (the live console still shows them)]")));
+        }
+        u.cutLines++;
+        u.cutBytes += bytes;
+        return false;
+    }
+
+    /** Why entries are not being kept now (the disk is full), or null. */
+    public String trouble() {
+        return store.transcriptTrouble();
     }
 
     private static StateStore.TranscriptLine line(ConsoleEntry e) {

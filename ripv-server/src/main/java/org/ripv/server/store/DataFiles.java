@@ -21,10 +21,29 @@ import java.util.Locale;
 public final class DataFiles {
     private DataFiles() {}
 
+    /** An owner-only directory, and every directory made on the way owner-only too (workflows/ of workflows/queues). */
     public static Path directory(Path dir) throws IOException {
-        Files.createDirectories(dir);
+        org.ripv.files.PrivateFiles.createDirectories(dir);
         ownerOnly(dir, "rwx------");
         return dir;
+    }
+
+    /**
+     * Makes a tree RIPV kept before files were owner-only whatever the umask owner-only: every
+     * directory 0700 and file 0600 (issue 23, item 13: transcripts were 0644 in 0755 folders, the
+     * audit log 0644, workflows/ 0755). Symbolic links are left alone.
+     */
+    public static void tighten(Path root) throws IOException {
+        if (!Files.isDirectory(root, java.nio.file.LinkOption.NOFOLLOW_LINKS)) {
+            return;
+        }
+        try (var all = Files.walk(root)) {
+            for (Path p : (Iterable<Path>) all::iterator) {
+                if (!Files.isSymbolicLink(p)) {
+                    ownerOnly(p, Files.isDirectory(p) ? "rwx------" : "rw-------");
+                }
+            }
+        }
     }
 
     public static void write(Path file, String text) throws IOException {

@@ -69,6 +69,15 @@ public final class EmbeddedStateStore implements StateStore {
     public EmbeddedStateStore(Layout layout, long transcriptFileBytes) {
         this.layout = layout;
         this.transcripts = new FileTranscripts(layout.transcripts(), transcriptFileBytes);
+        // What an older version left readable by others: owner-only from this start on.
+        for (Path p : new Path[] {layout.transcripts(), layout.queues().getParent(), layout.queues(), layout.fetched(),
+                layout.receipts(), layout.subscriptions().getParent(), layout.audit()}) {
+            try {
+                DataFiles.tighten(p);
+            } catch (IOException | RuntimeException e) {
+                log.warn("could not make {} owner-only: {}", p, e.toString());
+            }
+        }
     }
 
     /** The standard layout of a data directory. */
@@ -91,6 +100,11 @@ public final class EmbeddedStateStore implements StateStore {
     }
 
     // ---- transcripts ----
+
+    @Override
+    public String transcriptTrouble() {
+        return transcripts.trouble();
+    }
 
     @Override
     public void appendTranscript(List<TranscriptLine> lines) throws IOException {
@@ -238,8 +252,9 @@ public final class EmbeddedStateStore implements StateStore {
                             out.close();
                         }
                         day = d;
-                        out = Files.newBufferedWriter(dir.resolve(d + ".log"), StandardCharsets.UTF_8, StandardOpenOption.CREATE,
-                                StandardOpenOption.APPEND, StandardOpenOption.WRITE);
+                        out = new java.io.BufferedWriter(new java.io.OutputStreamWriter(org.ripv.files.PrivateFiles.newOutputStream(
+                                dir.resolve(d + ".log"), StandardOpenOption.CREATE, StandardOpenOption.APPEND, StandardOpenOption.WRITE),
+                                StandardCharsets.UTF_8));
                     }
                     out.write(Instant.ofEpochMilli(r.time()) + (r.warn() ? " WARN " : " INFO ") + oneLine(r.line()) + "\n");
                 }

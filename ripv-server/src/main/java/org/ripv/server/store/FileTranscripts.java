@@ -66,13 +66,39 @@ final class FileTranscripts {
         this.maxFileBytes = Math.max(4096, maxFileBytes);
     }
 
-    /** Writes and flushes a batch; a line the disk refuses is logged and skipped (retrying would repeat the others). */
+    /** Why lines are not being written now (the disk is full), with since when and how many; null when they are. */
+    private volatile String trouble;
+    private long lostSince;
+    private long lost;
+
+    String trouble() {
+        return trouble;
+    }
+
+    /**
+     * Writes and flushes a batch; a line the disk refuses is skipped (retrying would repeat the
+     * others). A refusing disk is a state, said once when it starts and once when it ends, and
+     * shown by {@link #trouble} — not a warning per line (issue 23, item 14).
+     */
     synchronized void append(List<TranscriptLine> lines) {
         for (TranscriptLine l : lines) {
             try {
                 write(l);
+                if (trouble != null) {
+                    log.warn("transcripts are kept again; {} lines since {} were not", lost, Instant.ofEpochMilli(lostSince));
+                    trouble = null;
+                }
             } catch (IOException | RuntimeException x) {
-                log.warn("transcript of {}: could not write: {}", l.mailbox(), x.toString());
+                if (trouble == null) {
+                    lostSince = System.currentTimeMillis();
+                    lost = 0;
+                    log.error("transcripts cannot be written ({}): console lines are not kept until there is room;"
+                            + " the live console goes on", x.toString());
+                }
+                lost++;
+                trouble = "transcripts are not being kept since " + Instant.ofEpochMilli(lostSince) + " (" + lost
+                        + " lines lost): " + (x.getMessage() != null && x.getMessage().contains("No space left")
+                        ? "the disk is full" : x.toString());
             }
         }
         for (Open o : open.values()) {
@@ -103,7 +129,7 @@ final class FileTranscripts {
             open.remove(mailbox);
         }
         Path dir = dirOf(root, mailbox);
-        Files.createDirectories(dir);
+        org.ripv.files.PrivateFiles.createDirectories(dir); // owner-only whatever the umask (issue 23, item 13)
         Path file = dir.resolve(day + ".jsonl");
         int n = 0;
         while (Files.exists(file) && Files.size(file) + need > maxFileBytes) {
@@ -111,7 +137,7 @@ final class FileTranscripts {
             file = dir.resolve(day + "." + n + ".jsonl");
         }
         long size = Files.exists(file) ? Files.size(file) : 0;
-        BufferedWriter w = new BufferedWriter(new OutputStreamWriter(Files.newOutputStream(file, StandardOpenOption.CREATE,
+        BufferedWriter w = new BufferedWriter(new OutputStreamWriter(org.ripv.files.PrivateFiles.newOutputStream(file, StandardOpenOption.CREATE,
                 StandardOpenOption.APPEND, StandardOpenOption.WRITE), StandardCharsets.UTF_8), 16 * 1024);
         Open fresh = new Open(file, w, day, size);
         open.put(mailbox, fresh);

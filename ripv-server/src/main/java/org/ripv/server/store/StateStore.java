@@ -45,6 +45,14 @@ public interface StateStore extends AutoCloseable {
     void appendTranscript(List<TranscriptLine> lines) throws IOException;
 
     /**
+     * Why transcript lines are not being kept now (the disk is full, say), or null when they are:
+     * a state people see ({@code ?history}) rather than a warning per line.
+     */
+    default String transcriptTrouble() {
+        return null;
+    }
+
+    /**
      * A MailBox's entries at or after {@code sinceMillis}, in the order appended: the first
      * {@code limit} of them, or with {@code newest} the last {@code limit}.
      */

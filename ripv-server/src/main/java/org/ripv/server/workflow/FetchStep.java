@@ -12,17 +12,21 @@ import java.util.HexFormat;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.regex.Pattern;
 import org.ripv.messages.FileListing;
 import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.Status;
+import org.ripv.server.dataloop.IngestVerdict;
 import org.ripv.server.files.FileNames;
 
 /**
  * {@code ymodem:get}: lists the vehicle's files unless every name is literal and {@code all} is
  * given, picks the names and glob matches not fetched before with the same size, and fetches
  * them one file per request, so a cut call costs only the file it cut. Each file fetched is read
- * back from the download store for its size and SHA-256.
+ * back from the download store for its size and SHA-256. When the server's automatic ingest
+ * refused a file, the file is still recorded and fetching goes on, but the step fails:
+ * "fetched 3, ingested 0 of 3: …".
  */
 final class FetchStep {
     private final Workflows workflows;
@@ -35,7 +39,7 @@ final class FetchStep {
         this.requests = requests;
     }
 
-    Outcome run(QueuedWorkflow e, String clientId, Step step, List<String> fetchedNow) throws StepStop {
+    Outcome run(QueuedWorkflow e, String clientId, Step step, List<String> fetchedNow, RunTally tally) throws StepStop {
         boolean globs = step.names().stream().anyMatch(DirListing::isGlob);
         Map<String, Long> listing = new LinkedHashMap<>();
         if (globs || !step.all()) {
@@ -50,6 +54,9 @@ final class FetchStep {
         StringBuilder out = new StringBuilder();
         List<Receipt.FileRecord> files = new ArrayList<>();
         int skipped = 0;
+        int dbaFiles = 0;
+        int ingested = 0;
+        List<String> notIngested = new ArrayList<>();
         for (String name : wanted) {
             Long size = listing.get(name);
             try {
@@ -60,16 +67,32 @@ final class FetchStep {
             } catch (IOException x) {
                 throw new StepStop.Failed("could not read the list of fetched files: " + x.getMessage(), out.toString());
             }
-            OutgoingServerMessage r = requests.send(e, clientId, mailbox, "ymodem:get " + name, step.timeout());
+            OutgoingServerMessage r = requests.send(e, clientId, mailbox, step.transferWord() + " " + name, step.timeout());
             Outcome o = Outcome.judged(step, r);
             out.append(r.footer().replyText().strip()).append('\n');
-            if (!o.ok()) {
+            // A file that arrived but was not ingested is stored and recorded; the step fails once
+            // every file is fetched (the call's time is best spent fetching), not at the first.
+            Optional<IngestVerdict.Counts> counts = r.footer().result() instanceof FileListing
+                    ? IngestVerdict.counts(r.footer().replyText()) : Optional.empty();
+            if (!o.ok() && counts.isEmpty()) {
                 return new Outcome(false, false, false, out.toString(), name + ": " + o.error(), files);
             }
             String failed = record(r, name, size, files, fetchedNow);
             if (failed != null) {
                 return new Outcome(false, false, false, out.toString(), failed, files);
             }
+            if (counts.isPresent()) {
+                dbaFiles += counts.get().fetched();
+                ingested += counts.get().ingested();
+                tally.ingested(counts.get().ingested());
+            }
+            if (!o.ok()) {
+                notIngested.add(name + ": " + (counts.get().why().isEmpty() ? o.error() : counts.get().why()));
+            }
+        }
+        if (!notIngested.isEmpty()) {
+            return new Outcome(false, false, false, out.toString(), "fetched " + files.size() + ", ingested " + ingested
+                    + " of " + dbaFiles + ": " + String.join("\n", notIngested), files);
         }
         if (wanted.isEmpty() || files.isEmpty()) {
             out.append(wanted.isEmpty() ? "no file on the vehicle matches " + String.join(" ", step.names())

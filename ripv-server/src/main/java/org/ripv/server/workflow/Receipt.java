@@ -30,6 +30,8 @@ final class Receipt {
     final List<StepRecord> steps = new ArrayList<>();
     long ended;
     String result = "RUNNING";
+    /** What the run has done so far (null in receipts of runs that had none, e.g. before it started). */
+    RunTally tally;
     String error = "";
 
     Receipt(String mailbox, long queueId, String file, String owner, int run, int firstStep) {
@@ -76,6 +78,9 @@ final class Receipt {
             if (outputs && !s.output().isEmpty()) {
                 b.append("  output: ").append(s.output().replace("\n", "\n          ")).append('\n');
             }
+        }
+        if (tally != null) {
+            b.append("done: ").append(tally.describe()).append('\n');
         }
         b.append("result: ").append(result);
         if (ended > 0) {

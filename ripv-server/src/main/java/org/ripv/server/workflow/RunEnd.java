@@ -8,9 +8,11 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * How a run ends, in the queue, the receipt and the events: DONE takes a {@code once} workflow
- * off the queue (an {@code every-call} one starts again next call), FAILED and CUT keep it at its
- * step for the next call; WORKFLOW_DONE or WORKFLOW_FAILED is published.
+ * How a run ends, in the queue, the receipt and the events: DONE (every step succeeded) and
+ * DONE_WITH_ERRORS (it reached the end past {@code continue-on-error} failures) take a {@code once}
+ * workflow off the queue (an {@code every-call} one starts again next call), FAILED and CUT keep
+ * it at its step for the next call; WORKFLOW_DONE, WORKFLOW_DONE_WITH_ERRORS or WORKFLOW_FAILED
+ * is published.
  */
 final class RunEnd {
     private static final Logger log = LoggerFactory.getLogger(RunEnd.class);
@@ -23,14 +25,14 @@ final class RunEnd {
         this.mailbox = mailbox;
     }
 
-    /** Ends the run with {@code result} (DONE, FAILED, CUT or REMOVED) at {@code step}; returns the result. */
+    /** Ends the run with {@code result} (DONE, DONE_WITH_ERRORS, FAILED, CUT or REMOVED) at {@code step}; returns the result. */
     String finish(Receipt receipt, QueuedWorkflow e, int step, String result, String error) throws IOException {
         String name = "workflow " + e.id() + " '" + e.file() + "'";
         receipt.result = result;
         receipt.error = error;
         receipt.ended = System.currentTimeMillis();
         switch (result) {
-            case "DONE" -> {
+            case "DONE", "DONE_WITH_ERRORS" -> {
                 if (e.workflow().mode() == Workflow.Mode.ONCE) {
                     workflows.queues.remove(mailbox, e.id());
                 } else {
@@ -50,6 +52,8 @@ final class RunEnd {
         String summary = name + ": " + result.toLowerCase(Locale.ROOT) + (error.isEmpty() ? "" : ": " + error);
         if (result.equals("DONE")) {
             workflows.event(mailbox, VehicleEvent.WORKFLOW_DONE, summary);
+        } else if (result.equals("DONE_WITH_ERRORS")) {
+            workflows.event(mailbox, VehicleEvent.WORKFLOW_DONE_WITH_ERRORS, summary);
         } else if (result.equals("FAILED")) {
             workflows.event(mailbox, VehicleEvent.WORKFLOW_FAILED, summary);
         } else {

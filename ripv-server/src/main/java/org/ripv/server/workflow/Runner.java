@@ -6,7 +6,6 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Optional;
 import java.util.Set;
-import java.util.regex.Pattern;
 import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.VehicleEvent;
 import org.slf4j.Logger;
@@ -87,7 +86,7 @@ final class Runner implements Runnable {
                 }
                 ran.add(next.get().id());
                 String result = runOne(next.get());
-                if (!result.equals("DONE") && !result.equals("REMOVED")) {
+                if (!result.equals("DONE") && !result.equals("DONE_WITH_ERRORS") && !result.equals("REMOVED")) {
                     break; // a failed workflow holds the head of the queue; a cut call stops everything
                 }
             }
@@ -114,6 +113,8 @@ final class Runner implements Runnable {
         String name = "workflow " + e.id() + " '" + e.file() + "'";
         Receipt receipt = new Receipt(mailbox, e.id(), e.file(), e.owner(), e.runs(), e.nextStep());
         List<String> fetchedNow = new ArrayList<>(e.fetched());
+        RunTally tally = new RunTally(fetchedNow);
+        receipt.tally = tally;
         try {
             workflows.announce(mailbox, e.owner(), name + ": " + (e.nextStep() == 0 ? "starting" : "resuming at step "
                     + (e.nextStep() + 1) + "/" + total) + " (run " + e.runs() + ")");
@@ -126,7 +127,7 @@ final class Runner implements Runnable {
                 }
                 // A wait-for listens from before the step is shown as running, so no line slips past it.
                 Workflows.LineWaiter waiter = step.kind() == Step.Kind.WAIT_FOR
-                        ? workflows.waitFor(mailbox, Pattern.compile(step.text())) : null;
+                        ? workflows.waitFor(mailbox, org.ripv.patterns.UserPattern.compile("wait-for", step.text()).pattern()) : null;
                 long t0;
                 Outcome o;
                 try {
@@ -134,7 +135,7 @@ final class Runner implements Runnable {
                     workflows.queues.update(mailbox, e.id(), q -> q.with(QueuedWorkflow.State.RUNNING, index, ""));
                     workflows.announce(mailbox, e.owner(), name + ": step " + (i + 1) + "/" + total + " " + step.describe());
                     t0 = System.currentTimeMillis();
-                    o = runStep(e, clientId, step, fetchedNow, waiter);
+                    o = runStep(e, clientId, step, fetchedNow, waiter, tally);
                 } finally {
                     if (waiter != null) {
                         workflows.stopWaiting(waiter);
@@ -146,6 +147,9 @@ final class Runner implements Runnable {
                 receipt.steps.add(new Receipt.StepRecord(i, total, step.line(), step.describe(), t0, System.currentTimeMillis(),
                         o.ok() ? "OK" : o.cut() ? "CUT" : step.continueOnError() ? "FAILED (continue-on-error)" : "FAILED",
                         Receipt.cut(o.output()), o.files(), o.error()));
+                if (!o.ok() && !o.cut()) {
+                    tally.stepFailed();
+                }
                 List<String> keep = List.copyOf(fetchedNow);
                 workflows.queues.update(mailbox, e.id(), q -> q.withFetched(keep));
                 end.write(receipt);
@@ -158,7 +162,9 @@ final class Runner implements Runnable {
                 }
                 i++;
             }
-            return end.finish(receipt, e, total, "DONE", "");
+            // continue-on-error lets a run go on past a failure, but not end as if nothing failed
+            return tally.failedSteps() == 0 ? end.finish(receipt, e, total, "DONE", "")
+                    : end.finish(receipt, e, total, "DONE_WITH_ERRORS", tally.failedSteps() + " step(s) failed (continue-on-error)");
         } finally {
             workflows.host.unlockWorkflow(mailbox, clientId);
             workflows.unbind(clientId);
@@ -166,7 +172,8 @@ final class Runner implements Runnable {
         }
     }
 
-    private Outcome runStep(QueuedWorkflow e, String clientId, Step step, List<String> fetchedNow, Workflows.LineWaiter waiter) {
+    private Outcome runStep(QueuedWorkflow e, String clientId, Step step, List<String> fetchedNow, Workflows.LineWaiter waiter,
+                            RunTally tally) {
         try {
             return switch (step.kind()) {
                 case SEND -> Outcome.judged(step, requests.send(e, clientId, mailbox, step.text(), step.timeout()));
@@ -174,9 +181,9 @@ final class Runner implements Runnable {
                     if (!workflows.uploadExists(step.names().get(0))) {
                         yield Outcome.failed("", "no file '" + step.names().get(0) + "' in the upload store any more");
                     }
-                    yield Outcome.judged(step, requests.send(e, clientId, mailbox, "ymodem:put " + step.names().get(0), step.timeout()));
+                    yield Outcome.judged(step, requests.send(e, clientId, mailbox, step.transferWord() + " " + step.names().get(0), step.timeout()));
                 }
-                case GET -> fetch.run(e, clientId, step, fetchedNow);
+                case GET -> fetch.run(e, clientId, step, fetchedNow, tally);
                 case WAIT_FOR -> requests.waitFor(step, waiter);
                 case INGEST -> {
                     if (fetchedNow.isEmpty()) {
@@ -189,13 +196,15 @@ final class Runner implements Runnable {
                         if (!o.ok()) {
                             yield new Outcome(false, o.cut(), o.preempted(), out.toString(), o.error(), List.of());
                         }
+                        tally.ingested(1);
                     }
                     yield Outcome.ok(out.toString(), List.of());
                 }
                 case VIS -> Outcome.judged(step, requests.send(e, clientId, step.to(), step.text(), step.timeout()));
                 case NOTIFY -> {
-                    workflows.announce(mailbox, e.owner(), "workflow " + e.id() + " '" + e.file() + "': " + step.text());
-                    yield Outcome.ok(step.text(), List.of());
+                    String text = tally.fill(step.text());
+                    workflows.announce(mailbox, e.owner(), "workflow " + e.id() + " '" + e.file() + "': " + text);
+                    yield Outcome.ok(text, List.of());
                 }
             };
         } catch (StepStop stop) {

@@ -3,7 +3,7 @@ package org.ripv.server.workflow;
 import java.time.Duration;
 import java.util.List;
 import java.util.Objects;
-import java.util.regex.Pattern;
+import com.google.re2j.Pattern;
 
 /**
  * One line of a workflow file, parsed (docs/workflows.md).
@@ -11,7 +11,9 @@ import java.util.regex.Pattern;
  * @param line            the line number in the file, for messages and receipts
  * @param kind            what the step does
  * @param text            the vehicle command ({@link Kind#SEND}), the regex ({@link Kind#WAIT_FOR}), the
- *                        command for the plotting service ({@link Kind#VIS}) or the message ({@link Kind#NOTIFY})
+ *                        command for the plotting service ({@link Kind#VIS}) or the message ({@link Kind#NOTIFY});
+ *                        for {@link Kind#GET} and {@link Kind#PUT} the transfer's command word when it is
+ *                        ZMODEM's ({@code zmodem:get}, {@code zmodem:put}), empty for YMODEM's
  * @param names           file names or globs ({@link Kind#GET}), the upload's name ({@link Kind#PUT})
  * @param expect          the reply must contain a match for success, or null
  * @param fail            a match in the reply fails the step, or null
@@ -60,11 +62,16 @@ public record Step(int line, Kind kind, String text, List<String> names, Pattern
         Objects.requireNonNull(timeout, "timeout");
     }
 
+    /** {@code ymodem:get}, {@code zmodem:get}, {@code ymodem:put} or {@code zmodem:put}: the command a GET or PUT sends. */
+    public String transferWord() {
+        return text.isEmpty() ? kind.word() : text;
+    }
+
     /** The step as watchers and receipts show it, e.g. {@code ymodem:get *.DBD}. */
     public String describe() {
         return switch (kind) {
             case SEND -> text;
-            case GET, PUT -> kind.word() + " " + String.join(" ", names) + (all ? " all" : "");
+            case GET, PUT -> transferWord() + " " + String.join(" ", names) + (all ? " all" : "");
             case WAIT_FOR -> "wait-for " + text;
             case INGEST -> "ingest" + (to.isEmpty() ? "" : " to=" + to);
             case VIS -> "vis " + text + (to.isEmpty() ? "" : " to=" + to);

@@ -70,6 +70,10 @@ final class WorkflowCommands {
                 String mailbox = address(w[2]);
                 mayRead(user, mailbox);
                 PermitFile.User u = permitted(request);
+                if (!workflows.queues.has(mailbox) && !workflows.knownMailbox(mailbox)) {
+                    throw new IllegalArgumentException("no MailBox " + mailbox + " exists or has existed; queues are for"
+                            + " MailBoxes a service has (?mailboxes lists them)");
+                }
                 Workflow wf = read(w[3]);
                 checkSteps(u, mailbox, wf);
                 QueuedWorkflow e = workflows.queues.add(mailbox, user, sourceOf(w[3]), wf);
@@ -236,7 +240,7 @@ final class WorkflowCommands {
             String target = s.to().isEmpty() ? mailbox : address(s.to());
             String command = switch (s.kind()) {
                 case SEND, VIS -> s.text();
-                case GET, PUT -> s.kind().word() + " " + String.join(" ", s.names());
+                case GET, PUT -> s.transferWord() + " " + String.join(" ", s.names());
                 case INGEST -> "ingest";
                 case WAIT_FOR, NOTIFY -> null;
             };
@@ -250,7 +254,7 @@ final class WorkflowCommands {
                         + target + " (" + d.because() + "), so the workflow could never run");
             }
             if (s.kind() == Step.Kind.GET && !s.all() && !p.decide(u, a.service().service(), a.handle(), "dir").allowed()) {
-                throw new Workflows.Refused(wf.name() + ":" + s.line() + ": ymodem:get lists the vehicle's files with 'dir', which user '"
+                throw new Workflows.Refused(wf.name() + ":" + s.line() + ": " + s.transferWord() + " lists the vehicle's files with 'dir', which user '"
                         + u.name() + "' may not send to " + target);
             }
         }

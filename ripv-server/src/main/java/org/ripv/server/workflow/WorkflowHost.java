@@ -56,6 +56,13 @@ public interface WorkflowHost {
     boolean onCall(String mailbox);
 
     /**
+     * True for a MailBox that exists or has existed: a registered service has it now, or the
+     * server has seen its console or kept its download folder. Queues are only for those
+     * (issue 23, item 7: queues for invented MailBoxes filled the disk).
+     */
+    boolean knownMailbox(String mailbox);
+
+    /**
      * Publishes a server-originated console entry for a MailBox: the workflow's progress lines
      * and its WORKFLOW_DONE / WORKFLOW_FAILED events, for watchers, the transcript and notifications.
      */

@@ -5,8 +5,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.function.Predicate;
-import java.util.regex.Pattern;
-import java.util.regex.PatternSyntaxException;
+import com.google.re2j.Pattern;
 import org.ripv.server.files.FileNames;
 
 /**
@@ -107,8 +106,14 @@ public final class WorkflowParser {
                 kind = k;
             }
         }
+        // ZMODEM's transfers are GET and PUT steps that send zmodem:get / zmodem:put (Step.transferWord)
+        String zmodem = first.equals("zmodem:get") || first.equals("zmodem:put") ? first : "";
+        if (!zmodem.isEmpty()) {
+            kind = first.endsWith("get") ? Step.Kind.GET : Step.Kind.PUT;
+        }
         if (kind == null) {
             throw new WorkflowException(file, n, "unknown step '" + words.get(0) + "': steps are send, ymodem:get, ymodem:put, "
+                    + "zmodem:get, zmodem:put, "
                     + "wait-for, ingest, vis and notify (a vehicle command is written 'send COMMAND')");
         }
         // Positional words come first; options (key=value, flags) after them.
@@ -167,9 +172,10 @@ public final class WorkflowParser {
                             ? "vis vis:track to=<DataVisServer>::<host>TTY1" : "notify \"logs fetched\""));
                 }
                 text = String.join(" ", args);
-                if (kind == Step.Kind.SEND && (text.startsWith("?") || text.regionMatches(true, 0, "ymodem:", 0, 7))) {
+                if (kind == Step.Kind.SEND && (text.startsWith("?") || text.regionMatches(true, 0, "ymodem:", 0, 7)
+                        || text.regionMatches(true, 0, "zmodem:", 0, 7))) {
                     throw new WorkflowException(file, n, "send writes a command to the vehicle; use the ymodem:get and "
-                            + "ymodem:put steps for transfers, and the server's ? commands are not steps");
+                            + "ymodem:put steps (or zmodem:get and zmodem:put steps) for transfers, and the server's ? commands are not steps");
                 }
                 if (kind == Step.Kind.VIS && to.isEmpty()) {
                     throw new WorkflowException(file, n, "vis needs to=MAILBOX: the DataVisServer MailBox that plots");
@@ -180,23 +186,25 @@ public final class WorkflowParser {
             }
             case GET -> {
                 if (args.isEmpty()) {
-                    throw new WorkflowException(file, n, "ymodem:get needs file names or globs, e.g. ymodem:get *.DBD");
+                    throw new WorkflowException(file, n, first + " needs file names or globs, e.g. " + first + " *.DBD");
                 }
                 for (String a : args) {
                     checkName(file, n, a.replace('*', 'x').replace('?', 'x'), a);
                 }
                 names = args;
+                text = zmodem;
             }
             case PUT -> {
                 if (args.size() != 1) {
-                    throw new WorkflowException(file, n, "ymodem:put takes one uploaded file's name (one step per file)");
+                    throw new WorkflowException(file, n, first + " takes one uploaded file's name (one step per file)");
                 }
                 checkName(file, n, args.get(0), args.get(0));
                 if (!uploadExists.test(args.get(0))) {
-                    throw new WorkflowException(file, n, "ymodem:put " + args.get(0) + ": no such file in the upload store; "
+                    throw new WorkflowException(file, n, first + " " + args.get(0) + ": no such file in the upload store; "
                             + "upload it first (put FILE in the CLI)");
                 }
                 names = args;
+                text = zmodem;
             }
             case WAIT_FOR -> {
                 if (args.size() != 1) {
@@ -231,10 +239,10 @@ public final class WorkflowParser {
             throw new WorkflowException(file, n, what + " needs a regex");
         }
         try {
-            return Pattern.compile(re);
-        } catch (PatternSyntaxException e) {
-            throw new WorkflowException(file, n, "bad " + what + " regex '" + re + "': " + e.getDescription()
-                    + " near index " + e.getIndex());
+            // RE2/J: linear time, so no user's pattern stalls a thread (issue 23, item 3).
+            return org.ripv.patterns.UserPattern.compile("bad " + what + " regex", re).pattern();
+        } catch (IllegalArgumentException e) {
+            throw new WorkflowException(file, n, e.getMessage());
         }
     }
 

@@ -27,6 +27,12 @@ public final class WorkflowQueues {
 
     /** The most workflows one MailBox's queue may hold. */
     public static final int MAX_PER_MAILBOX = 100;
+    /** The most workflows one user may have queued, over all MailBoxes, and their size in characters. */
+    public static final int MAX_PER_USER = 200;
+    public static final long MAX_CHARS_PER_USER = 8L << 20;
+    /** The most workflows all queues together may hold, and their size in characters. */
+    public static final int MAX_TOTAL = 10_000;
+    public static final long MAX_CHARS_TOTAL = 128L << 20;
 
     private final StateStore store;
     private final Map<String, Queue> queues = new LinkedHashMap<>();
@@ -116,11 +122,13 @@ public final class WorkflowQueues {
 
     /** Adds a parsed workflow at the end of a MailBox's queue. */
     public synchronized QueuedWorkflow add(String mailbox, String owner, String source, Workflow workflow) throws IOException {
-        Queue q = queues.computeIfAbsent(mailbox, k -> new Queue());
-        if (q.entries.size() >= MAX_PER_MAILBOX) {
-            throw new IllegalArgumentException(mailbox + " has " + q.entries.size() + " workflows queued already, the most "
+        Queue existing = queues.get(mailbox);
+        if (existing != null && existing.entries.size() >= MAX_PER_MAILBOX) {
+            throw new IllegalArgumentException(mailbox + " has " + existing.entries.size() + " workflows queued already, the most "
                     + "one MailBox may have; remove some first");
         }
+        capped(owner, source.length());
+        Queue q = queues.computeIfAbsent(mailbox, k -> new Queue());
         QueuedWorkflow e = new QueuedWorkflow(q.nextId, owner, workflow.name(), System.currentTimeMillis(), source,
                 QueuedWorkflow.State.QUEUED, 0, 0, "", List.of(), workflow);
         q.nextId++;
@@ -133,6 +141,37 @@ public final class WorkflowQueues {
             throw ex;
         }
         return e;
+    }
+
+    /** True when the MailBox has a queue (it has existed: someone queued for it when it did). */
+    public synchronized boolean has(String mailbox) {
+        return queues.containsKey(mailbox);
+    }
+
+    /** Refuses a workflow past the per-user or total caps on count and size (issue 23, item 7). */
+    private void capped(String owner, long chars) {
+        int mine = 0;
+        int all = 0;
+        long mineChars = 0;
+        long allChars = 0;
+        for (Queue q : queues.values()) {
+            for (QueuedWorkflow e : q.entries) {
+                all++;
+                allChars += e.source().length();
+                if (e.owner().equals(owner)) {
+                    mine++;
+                    mineChars += e.source().length();
+                }
+            }
+        }
+        if (mine + 1 > MAX_PER_USER || mineChars + chars > MAX_CHARS_PER_USER) {
+            throw new IllegalArgumentException(owner + " has " + mine + " workflows (" + mineChars + " characters) queued already;"
+                    + " one user may have at most " + MAX_PER_USER + " (" + MAX_CHARS_PER_USER + " characters): remove some first");
+        }
+        if (all + 1 > MAX_TOTAL || allChars + chars > MAX_CHARS_TOTAL) {
+            throw new IllegalArgumentException("the server holds " + all + " queued workflows (" + allChars + " characters), the"
+                    + " most it keeps (" + MAX_TOTAL + ", " + MAX_CHARS_TOTAL + " characters); ask the operators to clear old ones");
+        }
     }
 
     /** A MailBox's queue, in order. */

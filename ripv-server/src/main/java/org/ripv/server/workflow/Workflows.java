@@ -9,7 +9,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.atomic.AtomicInteger;
-import java.util.regex.Pattern;
+import com.google.re2j.Pattern;
 import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.Footer;
@@ -41,6 +41,17 @@ public final class Workflows implements AutoCloseable {
     final Receipts receipts;
     final FetchedFiles fetched;
     private final ExecutorService threads;
+    /**
+     * Matches vehicle lines against {@code wait-for} patterns, off the service's console call: that
+     * RMI thread carries every MailBox of the service, and no user's pattern may hold it (issue 23,
+     * item 3). One thread, a bounded queue; lines beyond it are not matched and the drop is logged.
+     */
+    private final java.util.concurrent.ThreadPoolExecutor lineMatcher = new java.util.concurrent.ThreadPoolExecutor(1, 1,
+            0, java.util.concurrent.TimeUnit.MILLISECONDS, new java.util.concurrent.ArrayBlockingQueue<>(4_096), r -> {
+                Thread t = new Thread(r, "ripv-wait-for");
+                t.setDaemon(true);
+                return t;
+            }, (r, pool) -> log.warn("wait-for: {} line batches waiting to be matched; this one is dropped", pool.getQueue().size()));
     private final Map<String, Runner> runners = new ConcurrentHashMap<>();
     private final Map<String, Runner> byClient = new ConcurrentHashMap<>();
     private final List<LineWaiter> waiters = new CopyOnWriteArrayList<>();
@@ -110,11 +121,21 @@ public final class Workflows implements AutoCloseable {
                 } else if (e.event() == VehicleEvent.DIVED || e.event() == VehicleEvent.LINK_LOST) {
                     callEnded(e.mailbox(), e.event());
                 }
-            } else if (e.kind() == ConsoleEntry.Kind.LINE && !waiters.isEmpty()) {
-                for (LineWaiter w : waiters) {
-                    if (w.mailbox().equals(e.mailbox()) && w.regex().matcher(e.text()).find()) {
-                        w.seen().complete(e.text());
-                    }
+            }
+        }
+        if (!waiters.isEmpty() && !lineMatcher.isShutdown()) {
+            lineMatcher.execute(() -> matchLines(servicePrefix, entries));
+        }
+    }
+
+    private void matchLines(String servicePrefix, List<ConsoleEntry> entries) {
+        for (ConsoleEntry e : entries) {
+            if (e == null || e.kind() != ConsoleEntry.Kind.LINE || !e.mailbox().startsWith(servicePrefix)) {
+                continue;
+            }
+            for (LineWaiter w : waiters) {
+                if (w.mailbox().equals(e.mailbox()) && !w.seen().isDone() && w.regex().matcher(e.text()).find()) {
+                    w.seen().complete(e.text());
                 }
             }
         }
@@ -237,6 +258,11 @@ public final class Workflows implements AutoCloseable {
         return host.onCall(mailbox);
     }
 
+    /** True for a MailBox that exists or has existed ({@link WorkflowHost#knownMailbox}). */
+    boolean knownMailbox(String mailbox) {
+        return host.knownMailbox(mailbox);
+    }
+
     /** The run in progress for a MailBox, or null. */
     Runner running(String mailbox) {
         return runners.get(mailbox);
@@ -279,6 +305,7 @@ public final class Workflows implements AutoCloseable {
         runners.values().forEach(r -> r.callEnded(null));
         // Let the runners write their state (they stop at once once the call is cut); an
         // interrupt could cut a queue write short.
+        lineMatcher.shutdownNow();
         threads.shutdown();
         try {
             if (!threads.awaitTermination(2, java.util.concurrent.TimeUnit.SECONDS)) {

@@ -130,4 +130,32 @@ class FileStoreTest {
                     .isEqualTo("rw-------");
         }
     }
+
+    @Test
+    void aFolderIsUniqueToTheWholeAddressAndAnOldHandleFolderIsMovedToItsMailBox() throws Exception {
+        // Issue 23, item 4: download/veh1/ was shared by <SerialPortServer>::<gpc1>veh1 and ::<gpc2>veh1.
+        String a = "<SerialPortServer>::<gpc1>veh1";
+        String b = "<SerialPortServer>::<gpc2>veh1";
+        assertThat(FileStore.folderFor(a)).isEqualTo("veh1@gpc1@SerialPortServer");
+        assertThat(FileStore.folderFor(b)).isNotEqualTo(FileStore.folderFor(a));
+        assertThat(FileStore.folderFor("<DataVisServer>::<gpc1>veh1")).isNotEqualTo(FileStore.folderFor(a));
+        // Names that had to be changed carry a hash of the address, so they stay apart.
+        assertThat(FileStore.folderFor("<SerialPortServer>::<h>a b")).isNotEqualTo(FileStore.folderFor("<SerialPortServer>::<h>a_b"));
+        assertThat(FileStore.folderFor("<SerialPortServer>::<" + "h".repeat(80) + ">x")).hasSizeLessThanOrEqualTo(64);
+
+        Path down = dir.resolve("down");
+        Files.createDirectories(down.resolve("veh1"));
+        Files.writeString(down.resolve("veh1/OLD.LOG"), "from before");
+        FileStore s = new FileStore(dir.resolve("up"), down, 100);
+        s.adopt(a);
+        assertThat(down.resolve("veh1")).doesNotExist();
+        String old = FileStore.folderFor(a) + "/OLD.LOG";
+        assertThat(Files.readString(down.resolve(old))).isEqualTo("from before");
+        assertThat(s.mailboxOf(old)).contains(a);
+        assertThat(s.mailboxOf("OLD.LOG")).contains(a);
+        assertThat(s.storeDownload(b, "OLD.LOG", "second".getBytes())).isEqualTo(FileStore.folderFor(b) + "/OLD.LOG");
+        assertThat(Files.readString(down.resolve(old))).as("the other vehicle's file is untouched").isEqualTo("from before");
+        assertThat(s.mailboxOf(FileStore.folderFor(b) + "/OLD.LOG")).contains(b);
+        assertThat(s.listDownloads().files()).extracting(e -> e.name()).noneMatch(n -> n.contains(".mailbox"));
+    }
 }

@@ -12,14 +12,12 @@ class LoginThrottleTest {
     final LoginThrottle t = new LoginThrottle(new LoginThrottle.Policy(3, 5, Duration.ofSeconds(1), Duration.ofSeconds(8)), now::get);
 
     @Test
-    void afterTheFreeFailuresEachFailureDoublesTheBlockUpToTheLock() {
+    void aSourceGuessingOneUserIsBlockedLongerEachTimeUpToTheLock() {
         for (int i = 0; i < 3; i++) {
-            assertThat(t.failure("alice", "10.0.0." + i)).isNull();
+            assertThat(t.failure("alice", "10.0.0.9")).isNull();
         }
         assertThat(t.failure("alice", "10.0.0.9").left()).isEqualTo(Duration.ofSeconds(1));
-        assertThat(t.blocked("alice", "10.0.0.77")).as("a block follows the user to any address").isNotNull();
         now.addAndGet(1_000);
-        assertThat(t.blocked("alice", "10.0.0.77")).isNull();
         assertThat(t.failure("alice", "10.0.0.9").left()).isEqualTo(Duration.ofSeconds(2));
         now.addAndGet(2_000);
         assertThat(t.failure("alice", "10.0.0.9").left()).isEqualTo(Duration.ofSeconds(4));
@@ -27,11 +25,36 @@ class LoginThrottleTest {
         LoginThrottle.Block lock = t.failure("alice", "10.0.0.9");
         assertThat(lock.left()).isEqualTo(Duration.ofSeconds(8));
         assertThat(lock.locked()).isTrue();
+        assertThat(lock.who()).isEqualTo("user alice from 10.0.0.9");
         now.addAndGet(8_000);
         assertThat(t.failure("alice", "10.0.0.9").left()).as("capped at the lock").isEqualTo(Duration.ofSeconds(8));
-        assertThat(t.describe()).anyMatch(l -> l.startsWith("user alice") && l.contains("LOCKED"));
+        assertThat(t.describe()).anyMatch(l -> l.startsWith("pair alice from 10.0.0.9") && l.contains("LOCKED"));
         assertThat(t.lift("alice")).isTrue();
-        assertThat(t.blocked("alice", "10.0.0.5")).isNull();
+        assertThat(t.describe()).noneMatch(l -> l.contains("alice"));
+        assertThat(t.blocked("alice", "10.0.0.9").who()).as("the address's own block stays").isEqualTo("address 10.0.0.9");
+        assertThat(t.lift("10.0.0.9")).isTrue();
+        assertThat(t.blocked("alice", "10.0.0.9")).isNull();
+    }
+
+    @Test
+    void guessesFromManyAddressesSlowTheUserBySecondsAndNeverLockItOutOfItsOwnAddress() {
+        // Issue 23, item 15: twelve wrong passwords from twelve addresses locked the user everywhere.
+        LoginThrottle slow = new LoginThrottle(new LoginThrottle.Policy(3, 5, Duration.ofSeconds(1), Duration.ofSeconds(60),
+                Duration.ofSeconds(4)), now::get);
+        slow.success("alice", "192.0.2.1");
+        LoginThrottle.Block last = null;
+        for (int i = 0; i < 12; i++) {
+            last = slow.failure("alice", "10.0.0." + i);
+            now.addAndGet(last == null ? 0 : last.left().toMillis());
+        }
+        now.addAndGet(-last.left().toMillis());
+        assertThat(last.who()).isEqualTo("user alice");
+        assertThat(last.left()).as("seconds, not minutes").isEqualTo(Duration.ofSeconds(4));
+        assertThat(last.locked()).isFalse();
+        assertThat(slow.blocked("alice", "10.0.0.77")).as("a new address waits a few seconds").isNotNull();
+        assertThat(slow.blocked("alice", "192.0.2.1")).as("the real user's own address").isNull();
+        now.addAndGet(4_000);
+        assertThat(slow.blocked("alice", "10.0.0.77")).isNull();
     }
 
     @Test
@@ -57,7 +80,7 @@ class LoginThrottleTest {
         }
         LoginThrottle.Block b = t.failure("user9", "192.0.2.7");
         assertThat(b.who()).isEqualTo("address 192.0.2.7");
-        t.success("user9");
+        t.success("user9", "192.0.2.7");
         assertThat(t.blocked("someone", "192.0.2.7")).isNotNull();
         assertThat(t.blocked("someone", "192.0.2.8")).isNull();
         assertThat(t.lift("192.0.2.7")).isTrue();

@@ -19,6 +19,22 @@ class WorkflowParserTest {
     }
 
     @Test
+    void zmodemStepsAreTransfersThatSendZmodemCommands() {
+        Workflow w = parse("""
+                zmodem:get *.DBD 01230000.SBD all
+                zmodem:put goto_l10.ma continue-on-error
+                ymodem:get A.LOG
+                """);
+        assertThat(w.steps()).extracting(Step::kind).containsExactly(Step.Kind.GET, Step.Kind.PUT, Step.Kind.GET);
+        assertThat(w.steps()).extracting(Step::transferWord).containsExactly("zmodem:get", "zmodem:put", "ymodem:get");
+        assertThat(w.steps().get(0).describe()).isEqualTo("zmodem:get *.DBD 01230000.SBD all");
+        assertThat(w.steps().get(0).timeout()).isEqualTo(w.steps().get(2).timeout());
+        assertThatThrownBy(() -> parse("zmodem:put nosuch.ma")).hasMessageContaining("zmodem:put nosuch.ma: no such file");
+        assertThatThrownBy(() -> parse("zmodem:get")).hasMessageContaining("zmodem:get needs file names");
+        assertThatThrownBy(() -> parse("send zmodem:get A")).hasMessageContaining("zmodem:get and zmodem:put steps");
+    }
+
+    @Test
     void everyKindOfStepWithOptions() {
         Workflow w = parse("""
                 # morning call

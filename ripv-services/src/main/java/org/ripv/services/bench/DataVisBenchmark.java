@@ -31,7 +31,8 @@ import org.ripv.services.datavis.WorkerMode;
  * does ({@code accept}) and the clock stops at the final reply; each size runs a few times and
  * the median is reported (the first built-in run includes JIT warm-up and is reported apart).
  *
- * <pre>java -cp ripv-services/target/ripv-services.jar org.ripv.services.bench.DataVisBenchmark [--no-octave] [--keep DIR]</pre>
+ * <pre>java -cp ripv-services/target/ripv-services.jar org.ripv.services.bench.DataVisBenchmark [--no-octave] [--keep DIR]
+ *     [--points 10000,1000000] [--runs N]</pre>
  */
 public final class DataVisBenchmark {
     private DataVisBenchmark() {}
@@ -48,6 +49,14 @@ public final class DataVisBenchmark {
             }
         }
         int[] sizes = {10_000, 1_000_000};
+        int fixedRuns = 0; // 0: 7 runs of the small sizes and 3 of a million points
+        for (int i = 0; i < args.length - 1; i++) {
+            if (args[i].equals("--points")) {
+                sizes = Arrays.stream(args[i + 1].split(",")).mapToInt(Integer::parseInt).toArray();
+            } else if (args[i].equals("--runs")) {
+                fixedRuns = Integer.parseInt(args[i + 1]);
+            }
+        }
         System.out.printf("DataVisServer benchmark: vis: request -> JPEG reply (in-process, %d cores, max heap %d MB)%n",
                 Runtime.getRuntime().availableProcessors(), Runtime.getRuntime().maxMemory() >> 20);
         System.out.printf("%-8s %10s %9s %10s %10s %10s %9s%n", "worker", "points", "file MB", "first ms", "median ms",
@@ -68,7 +77,7 @@ public final class DataVisBenchmark {
             try {
                 for (int n : sizes) {
                     byte[] data = dataFile(n);
-                    int runs = n >= 1_000_000 ? 3 : 7;
+                    int runs = fixedRuns > 0 ? Math.max(2, fixedRuns) : n >= 1_000_000 ? 3 : 7;
                     long[] ms = new long[runs];
                     int jpegBytes = 0;
                     for (int r = 0; r < runs; r++) {

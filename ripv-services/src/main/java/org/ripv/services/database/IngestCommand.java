@@ -50,10 +50,12 @@ final class IngestCommand {
     static final int MAX_FILES = 1000;
 
     private final DatabaseTarget target;
+    private final SlocumArrivals slocum;
     private boolean schemaChecked;
 
     IngestCommand(DatabaseTarget target) {
         this.target = target;
+        this.slocum = SlocumArrivals.of(target);
     }
 
     /** True when a command line is {@code ingest ...}. */
@@ -90,16 +92,32 @@ final class IngestCommand {
         int refused = 0;
         long values = 0;
         DbaIngest ingest = new DbaIngest(c);
-        for (int i = 0; i < files.size(); i++) {
-            Attachment f = files.get(i);
+        // Cache files first: a bundle of ymodem:get *.sbd *.cac decodes whatever its order.
+        List<Attachment> ordered = new ArrayList<>(files.stream().filter(f -> SlocumArrivals.isCache(f.name())).toList());
+        files.stream().filter(f -> !SlocumArrivals.isCache(f.name())).forEach(ordered::add);
+        for (int i = 0; i < ordered.size(); i++) {
+            Attachment f = ordered.get(i);
             long t0 = System.nanoTime();
             try {
-                DbaIngest.Outcome o = ingest.ingest(f.name(), f.data(), request.user());
+                if (SlocumArrivals.isCache(f.name())) {
+                    String crc = slocum.acceptCache(f);
+                    lines.add(f.name() + ": sensor list " + crc + " kept in the cache");
+                    List<Attachment> released = slocum.released(crc);
+                    for (Attachment w : released) {
+                        lines.add(w.name() + " (waited for " + crc + ".cac): " + store(ingest, w, request.user()).describe());
+                    }
+                    continue;
+                }
+                DbaIngest.Outcome o = store(ingest, f, request.user());
                 lines.add(o.describe());
                 values += o.duplicate() ? 0 : o.values();
                 log.info("{} ingest {} for {}: {} in {} ms", target.handle(), f.name(), request.user(), o.describe(),
                         (System.nanoTime() - t0) / 1_000_000);
-            } catch (DbaFormatException e) {
+            } catch (org.ripv.services.ingest.MissingSensorListException e) {
+                lines.add(f.name() + ": kept, waiting for the sensor list " + e.crc() + ".cac (ymodem:get " + e.crc()
+                        + ".cac, or upload it and ingest it); it is ingested by itself when that arrives");
+                log.info("{} ingest {} for {}: waits for {}.cac", target.handle(), f.name(), request.user(), e.crc());
+            } catch (DbaFormatException | org.ripv.services.ingest.SlocumFormatException | IllegalArgumentException e) {
                 refused++;
                 lines.add(f.name() + ": refused, nothing stored: " + e.getMessage());
                 log.info("{} ingest {} for {} refused: {}", target.handle(), f.name(), request.user(), e.getMessage());
@@ -112,8 +130,8 @@ final class IngestCommand {
                 lines.add(f.name() + ": could not be read, nothing stored: " + e);
                 log.warn("{} ingest {} failed", target.handle(), f.name(), e);
             }
-            if (files.size() > 1) {
-                request.progress(lines.get(lines.size() - 1), new Progress("files ingested", i + 1, files.size(), 0));
+            if (ordered.size() > 1) {
+                request.progress(lines.get(lines.size() - 1), new Progress("files ingested", i + 1, ordered.size(), 0));
             }
         }
         String text = String.join("\n", lines);
@@ -121,6 +139,13 @@ final class IngestCommand {
             return Reply.error(ErrorCode.BAD_REQUEST, text);
         }
         return Reply.ok(text, new org.ripv.messages.UpdateCount((int) Math.min(Integer.MAX_VALUE, values)));
+    }
+
+    /** Stores a DBA file, or a Slocum binary file as the rows dbd2asc gives for it. */
+    private DbaIngest.Outcome store(DbaIngest ingest, Attachment f, String user)
+            throws IOException, SQLException, DbaFormatException, org.ripv.services.ingest.SlocumFormatException {
+        byte[] data = SlocumArrivals.isBinary(f) ? slocum.decode(f) : f.data();
+        return ingest.ingest(f.name(), data, user);
     }
 
     /**

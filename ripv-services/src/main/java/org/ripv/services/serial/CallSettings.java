@@ -2,7 +2,7 @@ package org.ripv.services.serial;
 
 import java.time.Duration;
 import java.util.Objects;
-import java.util.regex.Pattern;
+import com.google.re2j.Pattern;
 import org.ripv.security.AddressRanges;
 
 /**

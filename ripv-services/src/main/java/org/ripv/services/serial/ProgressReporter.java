@@ -11,6 +11,7 @@ final class ProgressReporter implements TransferListener {
     private final String verb;
     private final long start = System.nanoTime();
     private long fileStart;
+    private long base;
     private long lastSent;
 
     ProgressReporter(Request request, String verb) {
@@ -21,6 +22,7 @@ final class ProgressReporter implements TransferListener {
     @Override
     public void started(FileHeader file) {
         fileStart = System.nanoTime();
+        base = 0;
         send(file, 0);
     }
 
@@ -37,10 +39,16 @@ final class ProgressReporter implements TransferListener {
         send(file, Math.max(0, file.length()));
     }
 
+    @Override
+    public void resumed(FileHeader file, long offset) {
+        base = offset;
+        send(file, offset);
+    }
+
     private void send(FileHeader file, long done) {
         lastSent = System.nanoTime();
         double seconds = Math.max(1e-3, (lastSent - fileStart) / 1e9);
-        request.progress(verb + " " + file.name(), new Progress(file.name(), done, file.length(), done / seconds));
+        request.progress(verb + " " + file.name(), new Progress(file.name(), done, file.length(), Math.max(0, done - base) / seconds));
     }
 
     String summary(long bytes) {

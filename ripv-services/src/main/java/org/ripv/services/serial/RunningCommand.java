@@ -37,11 +37,13 @@ final class RunningCommand {
     TransferListener transfer(String verb, int files) {
         return new TransferListener() {
             private long fileStart;
+            private long base;
             private int index;
 
             @Override
             public void started(FileHeader file) {
                 fileStart = System.nanoTime();
+                base = 0;
                 index++;
                 transfer = new Transfer(verb, files, index, new Progress(file.name(), 0, file.length(), 0));
             }
@@ -50,7 +52,12 @@ final class RunningCommand {
             public void progress(FileHeader file, long done) {
                 double seconds = (System.nanoTime() - fileStart) / 1e9;
                 transfer = new Transfer(verb, files, index, new Progress(file.name(), done, file.length(),
-                        seconds > 0.2 ? done / seconds : 0));
+                        seconds > 0.2 ? (done - base) / seconds : 0));
+            }
+
+            @Override
+            public void resumed(FileHeader file, long offset) {
+                base = offset;
             }
 
             @Override
@@ -71,7 +78,7 @@ final class RunningCommand {
         Transfer t = transfer;
         if (t == null) {
             long s = (System.nanoTime() - since) / 1_000_000_000L;
-            return (c.startsWith("ymodem:") ? c + " starting" : "running '" + c + "'") + " for " + user + ", " + s + " s";
+            return (c.startsWith("ymodem:") || c.startsWith("zmodem:") ? c + " starting" : "running '" + c + "'") + " for " + user + ", " + s + " s";
         }
         Progress p = t.progress();
         String pct = p.shortText();

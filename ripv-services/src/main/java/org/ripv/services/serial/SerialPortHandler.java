@@ -22,6 +22,8 @@ import org.ripv.services.serial.ymodem.YmodemException;
  * <ul>
  *   <li>A plain command: {@link PlainCommands}.</li>
  *   <li>{@code ymodem:get NAME…} and {@code ymodem:put NAME}: {@link YmodemCommands}.</li>
+ *   <li>{@code zmodem:get NAME…} and {@code zmodem:put NAME}: {@link ZmodemCommands}.</li>
+ *   <li>{@code ?key KEY}, one control key (the server's {@code ?key MAILBOX KEY}): {@link KeyCommands}.</li>
  * </ul>
  *
  * <p>The link is read all the time by its {@link Connection}'s reader, which feeds the
@@ -47,6 +49,8 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
     private final ReplyReader replies;
     private final VehicleConsole console;
     private final YmodemCommands ymodem;
+    private final ZmodemCommands zmodem;
+    private final KeyCommands keys;
     private final ReentrantLock lock = new ReentrantLock();
     private final LinkState state;
     private final PlainCommands plain;
@@ -77,6 +81,8 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
                 : VehicleConsole.Calls.DIALOG;
         this.console = new VehicleConsole(mailbox, vehicle.call(), settings.prompt(), how, publish);
         this.ymodem = new YmodemCommands(handle, settings, vehicleText, console, workDir, running);
+        this.zmodem = new ZmodemCommands(handle, settings, vehicle.pilot(), vehicleText, console, workDir, running);
+        this.keys = new KeyCommands(handle, vehicle.pilot(), settings, replies);
         this.state = new LinkState(vehicle, console, opener, lock);
         this.plain = new PlainCommands(settings, vehicleText, replies, console, state);
     }
@@ -128,7 +134,7 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
      */
     @Override
     public boolean cancel(Request running) {
-        return ymodem.cancel() || plain.cancel();
+        return ymodem.cancel() || zmodem.cancel() || plain.cancel();
     }
 
     @Override
@@ -139,11 +145,13 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
         } catch (IllegalArgumentException e) {
             throw new ServiceException(ErrorCode.BAD_REQUEST, e.getMessage() + " (link " + handle + ")");
         }
+        String command = request.command().trim();
+        // a key the link does not allow is refused before the lock: nothing reaches the vehicle
+        ControlKey key = KeyCommands.isKey(command) ? keys.allowed(request.arguments()) : null;
         lock.lockInterruptibly();
         try {
             Connection l = usableLink();
-            String command = request.command().trim();
-            console.command(request.user(), command);
+            console.command(request.user(), key != null ? KeyCommands.WORD + " " + key.name() : command);
             running.start(command, request.user());
             try {
                 if (command.startsWith("ymodem:get")) {
@@ -155,6 +163,23 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
                 if (command.startsWith("ymodem:")) {
                     throw new ServiceException(ErrorCode.UNKNOWN_COMMAND,
                             "unknown '" + command.split("\\s+")[0] + "'; use ymodem:get NAME… or ymodem:put NAME");
+                }
+                if (command.startsWith("zmodem:get")) {
+                    return zmodem.get(l, request);
+                }
+                if (command.startsWith("zmodem:put")) {
+                    return zmodem.put(l, request);
+                }
+                if (command.startsWith("zmodem:")) {
+                    throw new ServiceException(ErrorCode.UNKNOWN_COMMAND,
+                            "unknown '" + command.split("\\s+")[0] + "'; use zmodem:get NAME… or zmodem:put NAME");
+                }
+                if (key != null) {
+                    return keys.press(l, key);
+                }
+                if (command.startsWith("?")) {
+                    throw new ServiceException(ErrorCode.UNKNOWN_COMMAND, "'" + command.split("\\s+")[0]
+                            + "' is not a vehicle command; the only ? command a link takes is ?key KEY");
                 }
                 return plain.run(l, command, request.user());
             } catch (EOFException e) {

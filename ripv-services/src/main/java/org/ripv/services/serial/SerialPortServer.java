@@ -134,7 +134,7 @@ public final class SerialPortServer extends RIPVService {
 
     @Override
     protected String description() {
-        return "Vehicles on serial and TCP links: plain commands (dir, type NAME, …), ymodem:get NAME…, ymodem:put NAME";
+        return "Vehicles on serial and TCP links: plain commands (dir, type NAME, …), ymodem:get NAME…, ymodem:put NAME, zmodem:get NAME…, zmodem:put NAME, ?key KEY";
     }
 
     @Override
@@ -144,7 +144,7 @@ public final class SerialPortServer extends RIPVService {
 
     @Override
     protected List<String> attachPrefixes() {
-        return List.of("ymodem:put ");
+        return List.of("ymodem:put ", "zmodem:put ");
     }
 
     /** The port a listen link's MailBox waits for calls on, or -1 for other links. */

@@ -42,7 +42,7 @@ public final class SerialPortServerCommand implements Callable<Integer> {
                     + "optionally followed by its own settings, e.g. /dev/ttyUSB0,baud=9600,carrier=require,name=ru29 "
                     + "(keys: baud, data-bits, parity, stop-bits, carrier, line-ending, prompt, prompt-regex, idle-timeout, "
                     + "command-timeout, send-command, receive-command, maxcommand, interrupt; name, surface, quiet, alert, line-length, "
-                    + "rate, callers). Repeatable.")
+                    + "rate, callers; keys, zmodem-send, zmodem-receive, to-vehicle). Repeatable.")
     List<String> links = new ArrayList<>();
 
     @Option(names = "--no-enumerate", description = "Do not open MailBoxes for the serial ports jSerialComm finds; only the --link ones.")
@@ -122,6 +122,24 @@ public final class SerialPortServerCommand implements Callable<Integer> {
                     + " (per link: interrupt=; default ${DEFAULT-VALUE}).")
     String interrupt;
 
+    @Option(names = "--keys", defaultValue = ControlKey.DEFAULT_KEYS, paramLabel = "KEY[,KEY...]",
+            description = "The control keys ?key may press on a vehicle, ctrl-a … ctrl-z, or none"
+                    + " (per link: keys=; default ${DEFAULT-VALUE}).")
+    String keys;
+
+    @Option(names = "--zmodem-send", defaultValue = "zs", paramLabel = "COMMAND",
+            description = "The vehicle's ZMODEM send command, given the names (per link: zmodem-send=; default ${DEFAULT-VALUE}).")
+    String zmodemSend;
+
+    @Option(names = "--zmodem-receive", defaultValue = "zr", paramLabel = "COMMAND",
+            description = "The vehicle's ZMODEM receive command (per link: zmodem-receive=; default ${DEFAULT-VALUE}).")
+    String zmodemReceive;
+
+    @Option(names = "--to-vehicle", defaultValue = "off", paramLabel = "off|zmodem|ymodem",
+            description = "Send the files in each MailBox's to-vehicle/ upload folder on every call, by this protocol"
+                    + " (per link: to-vehicle=; default ${DEFAULT-VALUE}).")
+    String toVehicle;
+
     @Option(names = "--callers", paramLabel = "CIDR[,CIDR...]",
             description = "On listen:// links: take calls only from these addresses, e.g. the RUDICS gateway's "
                     + "(per link: callers=...; default: anyone who can reach the port).")
@@ -145,9 +163,10 @@ public final class SerialPortServerCommand implements Callable<Integer> {
         java.util.Map<String, String> o = new java.util.HashMap<>();
         for (int i = 1; i < parts.length; i++) {
             String key = parts[i].substring(0, parts[i].indexOf('='));
-            if (!LINK_KEYS.contains(key) && !CALL_KEYS.contains(key)) {
+            if (!LINK_KEYS.contains(key) && !CALL_KEYS.contains(key) && !PILOT_KEYS.contains(key)) {
                 java.util.Set<String> all = new java.util.TreeSet<>(LINK_KEYS);
                 all.addAll(CALL_KEYS);
+                all.addAll(PILOT_KEYS);
                 throw new IllegalArgumentException("--link '" + spec + "': unknown setting '" + key + "'; a link may set "
                         + all);
             }
@@ -182,6 +201,9 @@ public final class SerialPortServerCommand implements Callable<Integer> {
     static final java.util.Set<String> CALL_KEYS = java.util.Set.of("name", "surface", "quiet", "alert", "line-length",
             "rate", "callers");
 
+    /** The keys of a link's {@link PilotSettings}: control keys, ZMODEM commands, the to-vehicle folder. */
+    static final java.util.Set<String> PILOT_KEYS = java.util.Set.of("keys", "zmodem-send", "zmodem-receive", "to-vehicle");
+
     /** A link's settings and its call settings ({@code name=ru29,surface=...,quiet=600,alert=...}). */
     VehicleLink link(String spec) {
         LinkSettings link = settings(spec);
@@ -195,7 +217,10 @@ public final class SerialPortServerCommand implements Callable<Integer> {
             return new VehicleLink(link, new CallSettings(o.get("name"), regex(o.getOrDefault("surface", surface), "surface"),
                     Duration.ofSeconds(number(o, "quiet", quietSeconds)), regex(o.getOrDefault("alert", alert), "alert"),
                     number(o, "line-length", lineLength), number(o, "rate", rate),
-                    callers(o.getOrDefault("callers", callers))));
+                    callers(o.getOrDefault("callers", callers))),
+                    new PilotSettings(ControlKey.parseList(o.getOrDefault("keys", keys)),
+                            o.getOrDefault("zmodem-send", zmodemSend), o.getOrDefault("zmodem-receive", zmodemReceive),
+                            o.getOrDefault("to-vehicle", toVehicle)));
         } catch (IllegalArgumentException e) {
             throw new IllegalArgumentException("--link '" + spec + "': " + e.getMessage(), e);
         }
@@ -209,12 +234,9 @@ public final class SerialPortServerCommand implements Callable<Integer> {
         }
     }
 
-    private static Pattern regex(String re, String what) {
-        try {
-            return Pattern.compile(re);
-        } catch (java.util.regex.PatternSyntaxException e) {
-            throw new IllegalArgumentException(what + " '" + re + "' is not a regular expression: " + e.getDescription());
-        }
+    /** surface= and alert= run on every vehicle line: linear time (RE2/J), issue 23 item 3. */
+    private static com.google.re2j.Pattern regex(String re, String what) {
+        return org.ripv.patterns.UserPattern.compile(what, re).pattern();
     }
 
     private static int number(java.util.Map<String, String> o, String key, long fallback) {

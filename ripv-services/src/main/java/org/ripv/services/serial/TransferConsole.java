@@ -47,6 +47,11 @@ final class TransferConsole implements TransferListener {
         console.transfer(user, doneVerb + " " + file.name() + " (" + Math.max(0, file.length()) + " bytes)");
     }
 
+    @Override
+    public void resumed(FileHeader file, long offset) {
+        console.transfer(user, verb + " " + file.name() + " from byte " + offset + " (the rest of a dropped call's part)");
+    }
+
     /** Both listeners, in order. */
     static TransferListener both(TransferListener a, TransferListener b) {
         return new TransferListener() {
@@ -66,6 +71,12 @@ final class TransferConsole implements TransferListener {
             public void finished(FileHeader file) {
                 a.finished(file);
                 b.finished(file);
+            }
+
+            @Override
+            public void resumed(FileHeader file, long offset) {
+                a.resumed(file, offset);
+                b.resumed(file, offset);
             }
         };
     }

@@ -5,17 +5,24 @@ import java.util.Objects;
 import org.ripv.naming.Handles;
 
 /**
- * One link as the SerialPortServer opens it: how to talk to it ({@link LinkSettings}) and how to
- * read its calls and console ({@link CallSettings}).
+ * One link as the SerialPortServer opens it: how to talk to it ({@link LinkSettings}), how to
+ * read its calls and console ({@link CallSettings}), and a pilot's keys, ZMODEM and to-vehicle
+ * folder ({@link PilotSettings}).
  */
-public record VehicleLink(LinkSettings settings, CallSettings call) {
+public record VehicleLink(LinkSettings settings, CallSettings call, PilotSettings pilot) {
 
     public VehicleLink {
         Objects.requireNonNull(settings, "settings");
         Objects.requireNonNull(call, "call");
+        Objects.requireNonNull(pilot, "pilot");
         if (isListen(settings.device())) {
             listenUri(settings.device()); // validates
         }
+    }
+
+    /** A link with the default pilot settings. */
+    public VehicleLink(LinkSettings settings, CallSettings call) {
+        this(settings, call, PilotSettings.defaults());
     }
 
     /** A link with the default call settings. */

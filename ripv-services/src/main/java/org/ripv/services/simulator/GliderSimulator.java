@@ -61,6 +61,15 @@ public final class GliderSimulator implements AutoCloseable {
     private volatile int calls;
     private Thread thread;
     private java.net.InetAddress bindAddress = java.net.InetAddress.getLoopbackAddress();
+    /** Null: the PicoDOS prompt at once (the default); else the Slocum surface dialog and GliderDOS. */
+    private volatile GliderDos gliderDos;
+    private volatile Duration surfaceWait = Duration.ofSeconds(60);
+    private volatile IridiumLine.Settings line = IridiumLine.Settings.NONE;
+    private volatile String name = "sim01";
+    /** What the last GliderDOS command asked of the call (dive, call back); the conversation's thread only. */
+    private GliderDos.End pendingEnd;
+    /** A dropped Iridium-like call is dialled again after this long, without a dive. */
+    static final Duration REDIAL = Duration.ofSeconds(2);
 
     /**
      * @param dir      the vehicle's file system; seeded with mission logs and a config file if empty
@@ -138,6 +147,48 @@ public final class GliderSimulator implements AutoCloseable {
         return this;
     }
 
+    /**
+     * Speaks GliderDOS: on every call or connection the surface dialog, then the keys and a
+     * countdown of {@code wait} that resumes the mission (a dive) unless a key comes; Ctrl-C gives
+     * the GliderDOS prompt, where {@code wait} without input resumes it too. {@code minute} is how
+     * long a {@code callback} minute lasts. Call before {@code listen}, {@code attach} or {@code call}.
+     */
+    public synchronized GliderSimulator speakGliderDos(Duration wait, Duration minute) {
+        this.surfaceWait = wait;
+        this.gliderDos = new GliderDos(dir, minute);
+        return this;
+    }
+
+    /** The vehicle's name in its surface dialog on {@code listen} and {@code attach} ({@code call} names its own). */
+    public synchronized GliderSimulator named(String vehicleName) {
+        this.name = vehicleName;
+        return this;
+    }
+
+    /** Makes every TCP call Iridium-like (pace, latency, drops). Call before {@code listen} or {@code call}. */
+    synchronized GliderSimulator overLine(IridiumLine.Settings settings) {
+        this.line = settings;
+        return this;
+    }
+
+    /**
+     * Makes every TCP call Iridium-like: {@code baud} each way (0: unpaced), {@code latency} each
+     * way, dropped after {@code dropAfter} ({@code 60s}, {@code 40000b}; null: never).
+     */
+    public GliderSimulator overLine(int baud, Duration latency, String dropAfter) {
+        return overLine(IridiumLine.Settings.withDrop(baud, latency, dropAfter));
+    }
+
+    private Link wrap(Link link) {
+        IridiumLine.Settings s = line;
+        return s.any() ? new IridiumLine(link, s) : link;
+    }
+
+    private String prompt() {
+        GliderDos g = gliderDos;
+        return g == null ? PROMPT : g.prompt();
+    }
+
     private void serveTcp() {
         try {
             while (running) {
@@ -151,18 +202,19 @@ public final class GliderSimulator implements AutoCloseable {
                     throw e;
                 }
                 try {
-                    boolean dive;
-                    Link link = new TcpLink(socket);
+                    Duration away;
+                    Link link = wrap(new TcpLink(socket));
                     current = link;
                     try {
-                        dive = session(link);
+                        away = session(link);
                     } finally {
                         current = null;
                         link.close();
                     }
-                    if (dive) {
+                    if (away != null) {
                         serverSocket.close(); // under water nobody can connect
-                        dive();
+                        submerged = true;
+                        dive(away);
                         if (running) {
                             serverSocket = bind(port);
                             log.info("surfaced; listening on port {} again", port);
@@ -186,8 +238,10 @@ public final class GliderSimulator implements AutoCloseable {
     private void serveTty(Link link) {
         try {
             while (running) {
-                if (session(link)) {
-                    dive();
+                Duration away = session(link);
+                if (away != null) {
+                    submerged = true;
+                    dive(away);
                     // under water the modem hears nothing: drop what arrived meanwhile
                     byte[] junk = new byte[4096];
                     while (link.read(junk, 0, junk.length, 1) > 0) {
@@ -203,10 +257,6 @@ public final class GliderSimulator implements AutoCloseable {
             link.close();
             stopped.countDown();
         }
-    }
-
-    private void dive() throws InterruptedException {
-        dive(submerge);
     }
 
     private void dive(Duration time) throws InterruptedException {
@@ -237,31 +287,71 @@ public final class GliderSimulator implements AutoCloseable {
     private void callLoop(String host, int callPort, SurfaceDialog dialog, Duration diveTime, Duration surfaceTime) {
         try {
             while (running) {
+                Duration away = diveTime;
+                boolean dives = true;
+                Link link = null;
                 try (Socket socket = new Socket()) {
                     socket.connect(new InetSocketAddress(host, callPort), 10_000);
-                    Link link = new TcpLink(socket);
+                    link = wrap(new TcpLink(socket));
                     current = link;
                     calls++;
                     ShellLink shell = new ShellLink(link);
-                    say(shell, dialog.text(calls, java.time.Instant.now()) + PROMPT);
-                    converse(shell, System.nanoTime() + surfaceTime.toNanos(), dialog::chatter);
-                    submerged = true;
-                    say(shell, "\r\nHanging up: diving for " + diveTime.toSeconds()
-                            + " s\r\n");
+                    if (gliderDos == null) {
+                        say(shell, dialog.text(calls, java.time.Instant.now()) + PROMPT);
+                        converse(shell, System.nanoTime() + surfaceTime.toNanos(), dialog::chatter, 0);
+                        submerged = true;
+                        say(shell, "\r\nHanging up: diving for " + diveTime.toSeconds() + " s\r\n");
+                    } else {
+                        away = surfacing(shell, dialog, diveTime);
+                        dives = !(pendingEnd instanceof GliderDos.CallBack);
+                    }
                     link.close();
                 } catch (IOException e) {
                     log.info("call {} to {}:{} ended: {}", calls, host, callPort, e.getMessage());
+                    if (link instanceof IridiumLine l && l.dropped()) {
+                        away = REDIAL; // still at the surface: the glider dials again
+                        dives = false;
+                    }
                 } finally {
                     current = null;
+                    if (link instanceof IridiumLine l) {
+                        l.cut(); // its threads end with the call, however it ended
+                    }
                 }
-                submerged = true;
-                dive(diveTime);
+                submerged = dives;
+                dive(away);
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         } finally {
             stopped.countDown();
         }
+    }
+
+    /**
+     * One GliderDOS surfacing: the dialog, the keys and the countdown, GliderDOS if the pilot
+     * took control; says how it ends and returns how long the glider is away: {@code diveTime}
+     * for a dive, a {@code callback}'s time (at the surface) for a call back.
+     */
+    private Duration surfacing(ShellLink shell, SurfaceDialog dialog, Duration diveTime) throws IOException {
+        GliderDos g = gliderDos;
+        g.surfaced();
+        pendingEnd = null;
+        say(shell, dialog.text(calls, java.time.Instant.now(), g.mission(), g.reportLines()));
+        SurfaceCountdown.Answer a = SurfaceCountdown.run(shell, surfaceWait, surfaceWait, dir);
+        if (a == SurfaceCountdown.Answer.CONTROL_C) {
+            say(shell, g.prompt());
+            converse(shell, System.nanoTime() + surfaceWait.toNanos(), null, surfaceWait.toNanos());
+            if (pendingEnd == null && running) {
+                say(shell, "\r\nNo input for " + surfaceWait.toSeconds() + " s: resuming the mission.\r\n");
+            }
+        }
+        if (pendingEnd instanceof GliderDos.CallBack cb) {
+            return cb.after();
+        }
+        submerged = true;
+        say(shell, "Hanging up: diving for " + diveTime.toSeconds() + " s\r\n");
+        return diveTime;
     }
 
     /** How many calls it has made ({@link #call}). */
@@ -273,19 +363,24 @@ public final class GliderSimulator implements AutoCloseable {
         return submerged;
     }
 
-    /** Runs one conversation; returns true when the operator sent GO. */
-    private boolean session(Link link) throws IOException {
+    /** Runs one conversation; returns how long it is then away (GO, a resumed mission, a callback), or null. */
+    private Duration session(Link link) throws IOException {
         ShellLink shell = new ShellLink(link);
+        if (gliderDos != null) {
+            calls++;
+            return surfacing(shell, new SurfaceDialog(name), submerge);
+        }
         say(shell, "\r\nPicoDOS (RIPV glider simulator)\r\n" + PROMPT);
-        return converse(shell, 0, null);
+        return converse(shell, 0, null, 0) ? submerge : null;
     }
 
     /**
      * Answers commands until GO (true), or, when {@code until} is not 0, until that time has come
      * between two commands (true: the surface time is over). {@code chatter} is printed when the
-     * line has been idle a while, as a vehicle's own output.
+     * line has been idle a while, as a vehicle's own output. With {@code renew} (nanoseconds), each
+     * command moves {@code until} to that long after it: a time without input, as GliderDOS has.
      */
-    private boolean converse(ShellLink shell, long until, java.util.function.LongFunction<String> chatter)
+    private boolean converse(ShellLink shell, long until, java.util.function.LongFunction<String> chatter, long renew)
             throws IOException {
         StringBuilder line = new StringBuilder();
         byte[] buf = new byte[1024];
@@ -298,7 +393,7 @@ public final class GliderSimulator implements AutoCloseable {
             int n = shell.read(buf, 0, buf.length, 1000);
             if (n == 0 && chatter != null && line.isEmpty() && System.nanoTime() - lastChatter > 10_000_000_000L) {
                 lastChatter = System.nanoTime();
-                say(shell, chatter.apply(until == 0 ? 0 : (until - lastChatter) / 1_000_000_000L) + "\r\n" + PROMPT);
+                say(shell, chatter.apply(until == 0 ? 0 : (until - lastChatter) / 1_000_000_000L) + "\r\n" + prompt());
             }
             for (int i = 0; i < n; i++) {
                 int c = buf[i] & 0xFF;
@@ -315,13 +410,19 @@ public final class GliderSimulator implements AutoCloseable {
                     if (execute(shell, command)) {
                         return true;
                     }
-                    say(shell, PROMPT);
+                    if (renew > 0) {
+                        until = System.nanoTime() + renew;
+                    }
+                    say(shell, prompt());
                     break;
                 } else if (c == 8 || c == 0x7F) {
                     if (!line.isEmpty()) {
                         line.setLength(line.length() - 1);
                         say(shell, "\b \b");
                     }
+                } else if (c == SurfaceCountdown.CTRL_C && gliderDos != null) {
+                    line.setLength(0); // GliderDOS drops the line typed so far and prompts again
+                    say(shell, "^C\r\n" + prompt());
                 } else if (c >= 0x20 && c < 0x7F) {
                     line.append((char) c);
                     shell.write(new byte[] {(byte) c}, 0, 1); // echo, like the real vehicle
@@ -339,6 +440,13 @@ public final class GliderSimulator implements AutoCloseable {
         }
         String[] words = command.split("\\s+");
         String verb = words[0].toUpperCase(Locale.ROOT);
+        GliderDos g = gliderDos;
+        GliderDos.Answer answer = g == null ? null : g.execute(verb, words);
+        if (answer != null) {
+            say(shell, answer.text());
+            pendingEnd = answer.end();
+            return answer.end() != null;
+        }
         switch (verb) {
             case "DIR" -> say(shell, dir());
             case "TYPE" -> {
@@ -356,13 +464,16 @@ public final class GliderSimulator implements AutoCloseable {
             }
             case "YS" -> send(shell, words);
             case "YR" -> receive(shell);
+            case "ZS" -> zsend(shell, words);
+            case "ZR" -> say(shell, "\r\n" + Lrzsz.receive(shell, dir) + "\r\n");
             case "GO" -> {
                 submerged = true; // from now on, before the link drops
                 say(shell, "Mission started; submerging for " + submerge.toSeconds() + " s\r\n");
+                pendingEnd = new GliderDos.Resume("GO");
                 return true;
             }
             case "MONITOR" -> monitor(shell, words);
-            case "HELP", "?" -> say(shell, "dir, type NAME, del NAME, ys NAME..., yr, monitor [SECONDS], go\r\n");
+            case "HELP", "?" -> say(shell, "dir, type NAME, del NAME, ys NAME..., yr, zs NAME..., zr, monitor [SECONDS], go\r\n");
             default -> say(shell, "Bad command or file name\r\n");
         }
         return false;
@@ -469,6 +580,24 @@ public final class GliderSimulator implements AutoCloseable {
         }
     }
 
+    /** {@code zs NAME...}: lrzsz's sz sends the files (names matched without regard to case). */
+    private void zsend(ShellLink shell, String[] words) throws IOException {
+        if (words.length < 2) {
+            say(shell, "usage: zs NAME...\r\n");
+            return;
+        }
+        List<String> names = new ArrayList<>();
+        for (int i = 1; i < words.length; i++) {
+            Path p = resolve(words[i]);
+            if (p == null) {
+                say(shell, "File not found - " + words[i] + "\r\n");
+                return;
+            }
+            names.add(p.getFileName().toString());
+        }
+        say(shell, "\r\n" + Lrzsz.send(shell, dir, names) + "\r\n");
+    }
+
     private void receive(ShellLink shell) throws IOException {
         try {
             List<FileHeader> got = new YmodemReceiver(shell, ymodem, null).receiveBatch(new DirectorySink(dir));
@@ -478,7 +607,7 @@ public final class GliderSimulator implements AutoCloseable {
         }
     }
 
-    private static void say(ShellLink shell, String text) throws IOException {
+    static void say(ShellLink shell, String text) throws IOException {
         byte[] bytes = text.getBytes(StandardCharsets.ISO_8859_1);
         shell.write(bytes, 0, bytes.length);
         shell.flush();
@@ -507,7 +636,9 @@ public final class GliderSimulator implements AutoCloseable {
             }
         }
         Link l = current;
-        if (l != null) {
+        if (l instanceof IridiumLine il) {
+            il.cut(); // stopping: no waiting for the line to drain
+        } else if (l != null) {
             l.close();
         }
     }

@@ -20,12 +20,15 @@ import picocli.CommandLine.Option;
  * ripv simulator --tty /tmp/ttyV1        # and the SerialPortServer opens --link /tmp/ttyV0
  * ripv simulator --call localhost:2323 --dive-seconds 30 --surface-seconds 45 --name ru29
  *                                        # calls --link listen://2323,name=ru29
+ * ripv simulator --call localhost:2323 --dialog gliderdos --baud 2400 --latency 1s --drop-after 60s
+ *                                        # a Slocum's surface dialog and GliderDOS over an Iridium-like call
  * </pre>
  *
  * Exit codes: 0 stopped, 1 could not start, 2 bad options.
  */
 @Command(name = "simulator", mixinStandardHelpOptions = true,
-        description = "A PicoDOS-like glider: dir, type, del, ys, yr, GO (submerge); on a port, a tty, or calling in.")
+        description = "A PicoDOS-like glider: dir, type, del, ys, yr, zs, zr, GO (submerge); on a port, a tty, or calling in;"
+                + " with --dialog gliderdos a Slocum's surface dialog, control keys and GliderDOS.")
 public final class SimulatorCommand implements Callable<Integer> {
 
     static final class Where {
@@ -68,6 +71,42 @@ public final class SimulatorCommand implements Callable<Integer> {
             description = "The vehicle's name in its surface dialog (default ${DEFAULT-VALUE}).")
     String name;
 
+    /** What the glider says when a call begins. */
+    enum Dialog { picodos, gliderdos }
+
+    @Option(names = "--dialog", defaultValue = "picodos", paramLabel = "picodos|gliderdos",
+            description = "picodos (default): the C:\\> prompt at once. gliderdos: a Slocum's surface dialog, the keys"
+                    + " (Ctrl-C GliderDOS, Ctrl-R resume, Ctrl-E extend, Ctrl-F re-read) and a countdown of"
+                    + " --surface-seconds that resumes the mission if nobody answers.")
+    Dialog dialog;
+
+    @Option(names = "--minute-seconds", defaultValue = "60", paramLabel = "S",
+            description = "With --dialog gliderdos: how long a 'callback' minute lasts (default ${DEFAULT-VALUE}; less to rehearse quickly).")
+    long minuteSeconds;
+
+    @Option(names = "--baud", defaultValue = "0", paramLabel = "BAUD",
+            description = "On TCP: pace the call to BAUD each way, 10 bits a byte (e.g. 2400, Iridium's rate; default: unpaced).")
+    int baud;
+
+    @Option(names = "--latency", paramLabel = "TIME", description = "On TCP: delay every byte each way by TIME (e.g. 1s, 500ms).")
+    String latency;
+
+    @Option(names = "--drop-after", paramLabel = "TIME|BYTESb",
+            description = "On TCP: drop each call after TIME (60s, 2m) or after BYTES crossed both ways (40000b); a caller dials again 2 s later.")
+    String dropAfter;
+
+    /** The Iridium-like line the options ask for; throws with the bad value quoted. */
+    IridiumLine.Settings line() {
+        if (baud < 0 || baud > 10_000_000) {
+            throw new IllegalArgumentException("--baud " + baud + " must be between 1 and 10000000 (0: unpaced)");
+        }
+        Duration l = latency == null ? Duration.ZERO : IridiumLine.Settings.duration("--latency", latency);
+        if (l.compareTo(Duration.ofMinutes(1)) > 0) {
+            throw new IllegalArgumentException("--latency '" + latency + "' is over a minute");
+        }
+        return IridiumLine.Settings.withDrop(baud, l, dropAfter);
+    }
+
     @Override
     public Integer call() throws Exception {
         if (diveSeconds < 1 || surfaceSeconds < 1) {
@@ -76,6 +115,21 @@ public final class SimulatorCommand implements Callable<Integer> {
         }
         if (!name.matches("[A-Za-z0-9._-]{1,64}")) {
             System.err.println("Error: --name '" + name + "' must be 1-64 letters, digits, '.', '_' or '-'");
+            return 2;
+        }
+        IridiumLine.Settings line;
+        try {
+            line = line();
+        } catch (IllegalArgumentException e) {
+            System.err.println("Error: " + e.getMessage());
+            return 2;
+        }
+        if (minuteSeconds < 1) {
+            System.err.println("Error: --minute-seconds " + minuteSeconds + " must be at least 1");
+            return 2;
+        }
+        if (line.any() && where != null && where.tty != null) {
+            System.err.println("Error: --baud, --latency and --drop-after are for TCP (--listen, --call); a tty has its own line");
             return 2;
         }
         String[] target = null;
@@ -90,6 +144,10 @@ public final class SimulatorCommand implements Callable<Integer> {
         }
         Path files = dir != null ? dir : Files.createTempDirectory("ripv-glider");
         try (GliderSimulator sim = new GliderSimulator(files, Duration.ofSeconds(submergeSeconds), YmodemConfig.lrzsz())) {
+            sim.overLine(line).named(name);
+            if (dialog == Dialog.gliderdos) {
+                sim.speakGliderDos(Duration.ofSeconds(surfaceSeconds), Duration.ofSeconds(minuteSeconds));
+            }
             if (seedFiles != null) {
                 try (var list = Files.list(seedFiles)) {
                     for (Path f : list.filter(Files::isRegularFile).toList()) {

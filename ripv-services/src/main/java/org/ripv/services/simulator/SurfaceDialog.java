@@ -43,6 +43,11 @@ final class SurfaceDialog {
     }
 
     String text(int call, Instant now) {
+        return text(call, now, "SIM.MI", "");
+    }
+
+    /** The dialog of call {@code call} running {@code mission}, with the report list's lines under the sensors. */
+    String text(int call, Instant now, String mission, String reportLines) {
         double[] p = position(call);
         long missionTime = (System.nanoTime() - start) / 1_000_000_000L;
         String gps = degreesMinutes(p[0]) + " N " + degreesMinutes(p[1]) + " E";
@@ -51,7 +56,7 @@ final class SurfaceDialog {
                 "",
                 "Glider " + name + " at surface.",
                 "Because:Surface interval [1]",
-                String.format(Locale.ROOT, "MissionName:SIM.MI MissionNum:%s-%d (%04d.0000)", name, call, call),
+                String.format(Locale.ROOT, "MissionName:%s MissionNum:%s-%d (%04d.0000)", mission, name, call, call),
                 "Vehicle Name: " + name,
                 "Curr Time: " + CTIME.format(now) + " MT: " + missionTime,
                 "DR  Location:  " + dr + " measured     30.0 secs ago",
@@ -60,7 +65,21 @@ final class SurfaceDialog {
                 "   sensor:m_vacuum(inHg)=7.21",
                 "   sensor:m_depth(m)=0.32",
                 "",
-                "");
+                "").replace("   sensor:m_depth(m)=0.32\r\n", "   sensor:m_depth(m)=0.32\r\n" + reportLines);
+    }
+
+    /**
+     * What a Slocum prints after its dialog: the keys it listens for. (Worded after the real
+     * glider's; not its exact text.)
+     */
+    static String keys(long extendSeconds) {
+        return "Hit Control-R to RESUME the mission, or Control-C to abort it and go to GliderDOS.\r\n"
+                + "Hit Control-E to extend the surface time by " + extendSeconds + " s, Control-F to re-read the mafiles.\r\n";
+    }
+
+    /** The countdown line, printed at first and every 10 s until a key comes or the time is up. */
+    static String countdown(long secondsLeft) {
+        return "Hit Control-C within " + Math.max(0, secondsLeft) + " seconds to abort the mission...\r\n";
     }
 
     /** A line the glider prints on its own now and then while it waits at the surface. */

@@ -28,12 +28,12 @@ class PlotCancelTest {
         try (VisHarness h = new VisHarness(DataVisServer.Config.of(tmp))) {
             long id = h.send("vis:big.dat", "big.dat", big.toString());
             h.awaitProgress(id, 60); // handed to the worker, which takes seconds for a million points
-            long t0 = System.nanoTime();
             assertThat(h.cancel(id)).as("the plot is waiting for its worker: the cancel is taken").isTrue();
-            OutgoingServiceMessage r = h.finalReply(id, 10);
+            // No figure in ms here (it measured the machine's load): a plot that ran to its end would
+            // reply OK with a JPEG, so CANCELLED is the proof; 60 s only bounds a hang.
+            OutgoingServiceMessage r = h.finalReply(id, 60);
             assertThat(r.footer().errorCode()).as(r.footer().replyText()).isEqualTo(ErrorCode.CANCELLED);
             assertThat(r.footer().replyText()).contains("plot of big.dat cancelled");
-            assertThat((System.nanoTime() - t0) / 1_000_000).as("ms to the reply").isLessThan(2_000);
             assertThat(h.cancel(id)).as("nothing left to cancel").isFalse();
 
             OutgoingServiceMessage next = h.run("vis:small.dat out=small", "small.dat", "0 1\n1 2\n2 4\n");

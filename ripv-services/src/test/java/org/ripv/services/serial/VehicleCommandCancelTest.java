@@ -83,7 +83,7 @@ class VehicleCommandCancelTest {
         assertEquals(ErrorCode.CANCELLED, a.last().footer().errorCode(), a.text());
         assertTrue(a.text().startsWith("interrupted 'monitor 60' with ^C; the vehicle is back at its prompt"), a.text());
         assertTrue(a.text().contains("m_depth"), "what it printed comes with the reply: " + a.text());
-        assertTrue(System.nanoTime() - t0 < TimeUnit.SECONDS.toNanos(10), "stopped long before the command would have");
+        assertTrue(System.nanoTime() - t0 < TimeUnit.SECONDS.toNanos(30), "stopped long before the command (60 s) would have");
         assertEquals("", probe.status(h).running(), "nothing runs now");
 
         ServiceProbe.Answer dir = probe.send(h, "dir", T);

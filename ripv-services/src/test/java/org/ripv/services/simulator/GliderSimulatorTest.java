@@ -127,6 +127,58 @@ class GliderSimulatorTest {
     }
 
     @Test
+    void launcherRejectsABadDialogAndABadLine() {
+        for (String[] args : new String[][] {{"--dialog", "cpm"}, {"--latency", "1 s"}, {"--latency", "2h"},
+                {"--latency", "2m"}, {"--drop-after", "60"}, {"--drop-after", "0s"}, {"--drop-after", "0b"},
+                {"--baud", "-1"}, {"--minute-seconds", "0"}, {"--tty", "/dev/null", "--baud", "2400"}}) {
+            int code = new CommandLine(new SimulatorCommand()).setErr(new java.io.PrintWriter(java.io.Writer.nullWriter()))
+                    .execute(args);
+            assertEquals(2, code, String.join(" ", args));
+        }
+    }
+
+    @Test
+    void theLineSettingsReadTimesAndBytes() {
+        assertEquals(Duration.ofMillis(500), IridiumLine.Settings.duration("--latency", "500ms"));
+        IridiumLine.Settings s = IridiumLine.Settings.withDrop(2400, Duration.ofSeconds(1), "60s");
+        assertEquals(Duration.ofSeconds(60), s.dropAfterTime());
+        assertEquals(40_000, IridiumLine.Settings.withDrop(2400, Duration.ZERO, "40000b").dropAfterBytes());
+        assertFalse(IridiumLine.Settings.NONE.any());
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> IridiumLine.Settings.withDrop(0, Duration.ZERO, "soon"));
+        assertTrue(e.getMessage().contains("'soon'"), e.getMessage());
+    }
+
+    @Test
+    void overAPacedLineBytesTakeTheirTimeAndTheCallDropsAfterItsBytes() throws Exception {
+        link.close();
+        glider.close();
+        // 2,400 baud: 240 bytes a second; 200 ms each way
+        glider = new GliderSimulator(tmp.resolve("paced"), Duration.ofSeconds(1), YmodemConfig.lrzsz())
+                .overLine(IridiumLine.Settings.withDrop(2400, Duration.ofMillis(200), "2000b"));
+        link = TcpLink.connect("tcp://127.0.0.1:" + glider.listen(0), 2000);
+        long t0 = System.nanoTime();
+        String banner = untilPrompt();
+        double seconds = (System.nanoTime() - t0) / 1e9;
+        // the banner's bytes at 240 a second, plus the latency; never faster (slower only under load)
+        assertTrue(seconds >= banner.length() / 240.0 * 0.9 + 0.2, banner.length() + " bytes in " + seconds + " s");
+        link.write("type MISSION1.LOG\r\n".getBytes(StandardCharsets.US_ASCII));
+        StringBuilder got = new StringBuilder();
+        byte[] buf = new byte[4096];
+        assertThrows(java.io.EOFException.class, () -> {
+            while (true) {
+                int n = link.read(buf, 0, buf.length, 10_000);
+                if (n == 0) {
+                    throw new AssertionError("neither bytes nor a drop in 10 s");
+                }
+                got.append(new String(buf, 0, n, StandardCharsets.ISO_8859_1));
+            }
+        });
+        // dropped after 2000 bytes both ways: a 10 KB file never arrived whole
+        assertTrue(banner.length() + got.length() <= 2100, banner.length() + got.length() + " bytes");
+    }
+
+    @Test
     void theSurfaceDialogCarriesTheNameAndTheFixAsGlidersPrintIt() {
         String dialog = new SurfaceDialog("ru29").text(1, java.time.Instant.parse("2026-11-23T14:55:02Z"));
         assertTrue(dialog.contains("\r\nGlider ru29 at surface.\r\n"), dialog);

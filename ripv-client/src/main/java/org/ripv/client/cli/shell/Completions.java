@@ -14,7 +14,7 @@ import java.util.Set;
  * ({@code vis:NAME}). Local files after {@code put} are the terminal's business ({@link Shell}).
  */
 final class Completions {
-    static final List<String> LOCAL = List.of("use", "priority", "put", "get", "help", "quit", "exit");
+    static final List<String> LOCAL = List.of("use", "priority", "put", "get", "key", "help", "quit", "exit");
     static final List<String> PRIORITIES = List.of("normal", "priority", "urgent");
     private static final Set<String> TAKES_MAILBOX = Set.of("use", "?status", "?lock", "?unlock");
 

@@ -13,4 +13,11 @@ public interface TransferListener {
 
     default void finished(FileHeader file) {
     }
+
+    /**
+     * The file continues from byte {@code offset} a dropped call left (ZMODEM crash recovery):
+     * the bytes before it did not cross the line now, so rates count from here.
+     */
+    default void resumed(FileHeader file, long offset) {
+    }
 }

@@ -87,7 +87,7 @@ class YmodemReceiverFuzzTest {
     }
 
     private static void receivesCleanly(byte[] script) {
-        Assertions.assertTimeoutPreemptively(Duration.ofSeconds(10), () -> {
+        Assertions.assertTimeoutPreemptively(Duration.ofSeconds(30), () -> {
             CountingSink sink = new CountingSink();
             try {
                 List<FileHeader> files = new YmodemReceiver(new ScriptedLink(script), FAST, null).receiveBatch(sink);

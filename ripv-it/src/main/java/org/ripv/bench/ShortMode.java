@@ -1,0 +1,75 @@
+package org.ripv.bench;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * {@code ripv bench NAME --short}: the same benchmark with its counts and times shrunk so that
+ * every benchmark runs in seconds. Its figures mean little; it exists so that CI runs each
+ * benchmark once and a benchmark that throws is caught the day it breaks, not the day someone
+ * wants its figures (issue 26: {@code bench database} had rotted unnoticed).
+ *
+ * <p>The shrunk options are added only where the user gave none of the same name, so
+ * {@code --short --clients 2,4} still measures 2 and 4 clients.
+ */
+final class ShortMode {
+    static final String FLAG = "--short";
+
+    /**
+     * Per benchmark: options, each followed by its value unless it is a flag; a list that starts
+     * with a value is the positional arguments, used when the user gave none.
+     */
+    private static final Map<String, List<String>> SHRUNK = Map.ofEntries(
+            Map.entry("broker", List.of("--seconds", "0.5", "--warmup", "0.5", "--clients", "1,4")),
+            Map.entry("connections", List.of("--clients", "20")),
+            Map.entry("database", List.of("--rows", "2000", "--runs", "2", "--warmup", "1")),
+            Map.entry("ymodem", List.of("115200:8192")),
+            Map.entry("console", List.of("--watchers", "20", "--rate", "20", "--seconds", "2", "--baseline-seconds", "2",
+                    "--warmup", "1", "--full-clients", "2")),
+            Map.entry("ingest", List.of("--runs", "1", "--wide-runs", "1", "--track-runs", "1", "--rows", "500")),
+            Map.entry("datavis", List.of("--points", "2000", "--runs", "2")),
+            Map.entry("firststart", List.of("--runs", "1")),
+            Map.entry("calls", List.of("--vehicles", "4", "--spread", "2", "--surface", "3")),
+            Map.entry("hosts", List.of("--requests", "30", "--takeovers", "1")),
+            Map.entry("store", List.of("--entries", "2000")),
+            Map.entry("workflow", List.of("--files", "2", "--get-bytes", "8192", "--put-bytes", "4096", "--report-only")));
+
+    private ShortMode() {}
+
+    /** The benchmarks {@code ripv bench} knows, each with a short mode. */
+    static List<String> names() {
+        return SHRUNK.keySet().stream().sorted().toList();
+    }
+
+    /** The arguments without {@value #FLAG}, and with the shrunk options the user did not give when it was there. */
+    static String[] apply(String name, String[] args) {
+        List<String> given = new ArrayList<>(Arrays.asList(args));
+        if (!given.remove(FLAG)) {
+            return args;
+        }
+        List<String> shrunk = SHRUNK.get(name);
+        if (shrunk == null) {
+            return given.toArray(String[]::new);
+        }
+        List<String> out = new ArrayList<>(given);
+        if (!shrunk.get(0).startsWith("--")) {
+            return given.isEmpty() ? shrunk.toArray(String[]::new) : given.toArray(String[]::new);
+        }
+        for (int i = 0; i < shrunk.size(); i++) {
+            String option = shrunk.get(i);
+            boolean hasValue = i + 1 < shrunk.size() && !shrunk.get(i + 1).startsWith("--");
+            if (!given.contains(option)) {
+                out.add(option);
+                if (hasValue) {
+                    out.add(shrunk.get(i + 1));
+                }
+            }
+            if (hasValue) {
+                i++;
+            }
+        }
+        return out.toArray(String[]::new);
+    }
+}

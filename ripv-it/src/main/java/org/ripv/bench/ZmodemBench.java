@@ -1,0 +1,333 @@
+package org.ripv.bench;
+
+import java.io.File;
+import java.io.IOException;
+import java.lang.management.ManagementFactory;
+import java.net.InetSocketAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Locale;
+import java.util.Random;
+import java.util.concurrent.Callable;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicLong;
+import org.ripv.services.bench.YmodemBaudRelay;
+import org.ripv.services.serial.TcpLink;
+import org.ripv.services.serial.ymodem.DirectorySink;
+import org.ripv.services.serial.ymodem.FileHeader;
+import org.ripv.services.serial.ymodem.SendFile;
+import org.ripv.services.serial.ymodem.TransferListener;
+import org.ripv.services.serial.ymodem.YmodemConfig;
+import org.ripv.services.serial.ymodem.YmodemReceiver;
+import org.ripv.services.serial.zmodem.ResumeStore;
+import org.ripv.services.serial.zmodem.ZmodemReceiver;
+import org.ripv.services.serial.zmodem.ZmodemSender;
+
+/**
+ * {@code ./ripv bench zmodem}: ZMODEM over a baud-paced relay as a share of the line rate,
+ * against lrzsz's {@code sz}/{@code rz} on the same relay in the same run; and over an
+ * Iridium-like link (2,400 baud, 1 s latency, a drop every 60 s) the calls needed to move
+ * 100 KB with ZMODEM's resume against YMODEM, which restarts a cut file from zero. Beside wall
+ * time, the CPU time of this JVM for each operation and the load average (the machine may be
+ * shared: read the figures with it).
+ *
+ * <pre>
+ * ripv bench zmodem [--baud N] [--bytes N] [--iridium-baud N] [--latency MS] [--drop-every S]
+ *                   [--iridium-bytes N] [--max-calls N] [--ymodem-calls N] [--skip-iridium]
+ * </pre>
+ */
+public final class ZmodemBench {
+    private final ExecutorService pool = Executors.newCachedThreadPool(r -> {
+        Thread t = new Thread(r, "zmodem-bench");
+        t.setDaemon(true);
+        return t;
+    });
+    private final Path dir;
+
+    private ZmodemBench(Path dir) {
+        this.dir = dir;
+    }
+
+    private static long cpuNanos() {
+        return ((com.sun.management.OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean()).getProcessCpuTime();
+    }
+
+    private static double load() {
+        return ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage();
+    }
+
+    record Row(String pair, int baud, long bytes, double seconds, double cpuSeconds, double load, boolean identical) {
+        String markdown() {
+            return String.format(Locale.ROOT, "| %s | %d | %d | %.2f | %.0f | %.1f %% | %.2f | %.2f | %s |", pair, baud,
+                    bytes, seconds, bytes / seconds, 100 * bytes / seconds / (baud / 10.0), cpuSeconds, load,
+                    identical ? "yes" : "NO");
+        }
+    }
+
+    public static void main(String[] args) throws Exception {
+        int baud = 115200;
+        int bytes = 1 << 20;
+        int iBaud = 2400;
+        long latency = 1000;
+        long dropEvery = 60;
+        int iBytes = 100 * 1024;
+        int maxCalls = 30;
+        int ymodemCalls = 3;
+        boolean iridium = true;
+        for (int i = 0; i < args.length; i++) {
+            String a = args[i];
+            if (a.equals("--skip-iridium")) {
+                iridium = false;
+                continue;
+            }
+            if (i + 1 >= args.length) {
+                System.err.println("Error: '" + a + "' needs a value (ripv bench --help)");
+                System.exit(2);
+            }
+            long v;
+            try {
+                v = Long.parseLong(args[++i]);
+            } catch (NumberFormatException e) {
+                System.err.println("Error: " + a + " takes a whole number, got '" + args[i] + "'");
+                System.exit(2);
+                return;
+            }
+            switch (a) {
+                case "--baud" -> baud = (int) v;
+                case "--bytes" -> bytes = (int) v;
+                case "--iridium-baud" -> iBaud = (int) v;
+                case "--latency" -> latency = v;
+                case "--drop-every" -> dropEvery = v;
+                case "--iridium-bytes" -> iBytes = (int) v;
+                case "--max-calls" -> maxCalls = (int) v;
+                case "--ymodem-calls" -> ymodemCalls = (int) v;
+                default -> {
+                    System.err.println("Error: unknown option '" + a + "' (ripv bench --help)");
+                    System.exit(2);
+                }
+            }
+        }
+        if (!installed("sz") || !installed("rz") || !installed("sb") || !installed("socat")) {
+            System.err.println("Error: the ZMODEM benchmark compares with lrzsz: install lrzsz and socat");
+            System.exit(1);
+        }
+        Path dir = Files.createTempDirectory("zmodem-bench");
+        ZmodemBench bench = new ZmodemBench(dir);
+        System.out.printf(Locale.ROOT, "%d cores; load average %.2f at start%n%n", Runtime.getRuntime().availableProcessors(), load());
+        byte[] data = new byte[bytes];
+        new Random(24).nextBytes(data);
+        Path file = dir.resolve("bench.bin");
+        Files.write(file, data);
+        System.out.println("| pair (sender → receiver) | baud | bytes | seconds | bytes/s | of line rate | RIPV JVM CPU s | load | identical |");
+        System.out.println("| --- | --- | --- | --- | --- | --- | --- | --- | --- |");
+        System.out.println(bench.ours(baud, file).markdown());
+        System.out.println(bench.szToOurs(baud, file).markdown());
+        System.out.println(bench.oursToRz(baud, file).markdown());
+        System.out.println(bench.szToRz(baud, file).markdown());
+        if (iridium) {
+            byte[] log = new byte[iBytes];
+            new Random(25).nextBytes(log);
+            Path small = Files.createDirectories(dir.resolve("vehicle")).resolve("01230000.DBD");
+            Files.write(small, log);
+            System.out.printf(Locale.ROOT, "%nIridium-like link: %d baud, %d ms latency, the call drops every %d s; %d bytes%n%n",
+                    iBaud, latency, dropEvery, iBytes);
+            System.out.println("| protocol | calls | done | bytes moved per call | wall s | RIPV JVM CPU s | load |");
+            System.out.println("| --- | --- | --- | --- | --- | --- | --- |");
+            System.out.println(bench.iridiumZmodem(iBaud, latency, dropEvery, small, maxCalls));
+            System.out.println(bench.iridiumYmodem(iBaud, latency, dropEvery, small, ymodemCalls));
+        }
+        System.exit(0);
+    }
+
+    private Row ours(int baud, Path file) throws Exception {
+        Path out = Files.createDirectories(dir.resolve("ours"));
+        try (ServerSocket receiverSide = new ServerSocket(0);
+             YmodemBaudRelay relay = new YmodemBaudRelay(baud, local(receiverSide.getLocalPort()))) {
+            double load = load();
+            long cpu = cpuNanos();
+            Future<?> receiving = pool.submit((Callable<Object>) () -> {
+                try (Socket s = receiverSide.accept(); TcpLink link = new TcpLink(s)) {
+                    return new ZmodemReceiver(link, 10_000, null).receive(new ResumeStore(dir.resolve("parts-ours")), out);
+                }
+            });
+            long start = System.nanoTime();
+            try (TcpLink link = TcpLink.connect("tcp://127.0.0.1:" + relay.port(), 5000)) {
+                new ZmodemSender(link, 10_000, null).send(SendFile.of(file));
+            }
+            receiving.get(1, TimeUnit.HOURS);
+            return new Row("RIPV → RIPV", baud, Files.size(file), (System.nanoTime() - start) / 1e9,
+                    (cpuNanos() - cpu) / 1e9, load, same(file, out.resolve(file.getFileName())));
+        }
+    }
+
+    private Row szToOurs(int baud, Path file) throws Exception {
+        Path out = Files.createDirectories(dir.resolve("sz"));
+        int port = freePort();
+        Process socat = socat(file.getParent(), "TCP-LISTEN:" + port + ",bind=127.0.0.1,reuseaddr",
+                "SYSTEM:'exec sz -q " + file.getFileName() + "'");
+        try (YmodemBaudRelay relay = new YmodemBaudRelay(baud, local(port))) {
+            double load = load();
+            long cpu = cpuNanos();
+            long start = System.nanoTime();
+            try (TcpLink link = TcpLink.connect("tcp://127.0.0.1:" + relay.port(), 5000)) {
+                new ZmodemReceiver(link, 10_000, null).receive(new ResumeStore(dir.resolve("parts-sz")), out);
+            }
+            double seconds = (System.nanoTime() - start) / 1e9;
+            socat.waitFor(30, TimeUnit.SECONDS);
+            return new Row("lrzsz sz → RIPV", baud, Files.size(file), seconds, (cpuNanos() - cpu) / 1e9, load,
+                    same(file, out.resolve(file.getFileName())));
+        } finally {
+            socat.destroy();
+        }
+    }
+
+    private Row oursToRz(int baud, Path file) throws Exception {
+        Path out = Files.createDirectories(dir.resolve("rz"));
+        int port = freePort();
+        Process socat = socat(out, "TCP-LISTEN:" + port + ",bind=127.0.0.1,reuseaddr", "SYSTEM:'exec rz -q -y'");
+        try (YmodemBaudRelay relay = new YmodemBaudRelay(baud, local(port))) {
+            double load = load();
+            long cpu = cpuNanos();
+            long start = System.nanoTime();
+            try (TcpLink link = TcpLink.connect("tcp://127.0.0.1:" + relay.port(), 5000)) {
+                new ZmodemSender(link, 10_000, null).send(SendFile.of(file));
+            }
+            double seconds = (System.nanoTime() - start) / 1e9;
+            socat.waitFor(30, TimeUnit.SECONDS);
+            return new Row("RIPV → lrzsz rz", baud, Files.size(file), seconds, (cpuNanos() - cpu) / 1e9, load,
+                    same(file, out.resolve(file.getFileName())));
+        } finally {
+            socat.destroy();
+        }
+    }
+
+    private Row szToRz(int baud, Path file) throws Exception {
+        Path out = Files.createDirectories(dir.resolve("szrz"));
+        int port = freePort();
+        Process rz = socat(out, "TCP-LISTEN:" + port + ",bind=127.0.0.1,reuseaddr", "SYSTEM:'exec rz -q -y'");
+        try (YmodemBaudRelay relay = new YmodemBaudRelay(baud, local(port))) {
+            double load = load();
+            long start = System.nanoTime();
+            Process sz = socat(file.getParent(), "TCP:127.0.0.1:" + relay.port(), "SYSTEM:'exec sz -q " + file.getFileName() + "'");
+            rz.waitFor(1, TimeUnit.HOURS);
+            double seconds = (System.nanoTime() - start) / 1e9;
+            sz.waitFor(30, TimeUnit.SECONDS);
+            return new Row("lrzsz sz → lrzsz rz", baud, Files.size(file), seconds, 0, load,
+                    same(file, out.resolve(file.getFileName())));
+        } finally {
+            rz.destroy();
+        }
+    }
+
+    /** Calls until the file is whole: each call a fresh sz, our receiver continuing from the part. */
+    private String iridiumZmodem(int baud, long latency, long dropEvery, Path file, int maxCalls) throws Exception {
+        Path out = Files.createDirectories(dir.resolve("iridium-z"));
+        ResumeStore store = new ResumeStore(dir.resolve("parts-iridium"));
+        StringBuilder perCall = new StringBuilder();
+        double load = load();
+        long cpu = cpuNanos();
+        long start = System.nanoTime();
+        int calls = 0;
+        boolean done = false;
+        while (!done && calls < maxCalls) {
+            calls++;
+            long before = Math.max(0, store.partLength(file.getFileName().toString()));
+            int port = freePort();
+            Process sz = socat(file.getParent(), "TCP-LISTEN:" + port + ",bind=127.0.0.1,reuseaddr",
+                    "SYSTEM:'exec sz -q " + file.getFileName() + "'");
+            try (IridiumRelay relay = new IridiumRelay(baud, latency, dropEvery * 1000, local(port));
+                 TcpLink link = TcpLink.connect("tcp://127.0.0.1:" + relay.port(), 5000)) {
+                new ZmodemReceiver(link, 10_000, null).startTimeout(30_000).receive(store, out);
+                done = same(file, out.resolve(file.getFileName()));
+            } catch (IOException e) {
+                // the call dropped: the part waits for the next one
+            } finally {
+                sz.destroy();
+                sz.waitFor(10, TimeUnit.SECONDS);
+            }
+            long after = done ? Files.size(file) : Math.max(0, store.partLength(file.getFileName().toString()));
+            perCall.append(perCall.isEmpty() ? "" : ", ").append(after - before);
+        }
+        return String.format(Locale.ROOT, "| ZMODEM, resuming | %d | %s | %s | %.0f | %.2f | %.2f |", calls,
+                done ? "yes" : "no", perCall, (System.nanoTime() - start) / 1e9, (cpuNanos() - cpu) / 1e9, load);
+    }
+
+    /** YMODEM over the same calls: a cut file starts again from zero on the next. */
+    private String iridiumYmodem(int baud, long latency, long dropEvery, Path file, int maxCalls) throws Exception {
+        Path out = Files.createDirectories(dir.resolve("iridium-y"));
+        StringBuilder perCall = new StringBuilder();
+        double load = load();
+        long cpu = cpuNanos();
+        long start = System.nanoTime();
+        int calls = 0;
+        boolean done = false;
+        YmodemConfig config = YmodemConfig.lrzsz();
+        while (!done && calls < maxCalls) {
+            calls++;
+            AtomicLong moved = new AtomicLong();
+            int port = freePort();
+            Process sb = socat(file.getParent(), "TCP-LISTEN:" + port + ",bind=127.0.0.1,reuseaddr",
+                    "SYSTEM:'exec sb --ymodem -k -q " + file.getFileName() + "'");
+            try (IridiumRelay relay = new IridiumRelay(baud, latency, dropEvery * 1000, local(port));
+                 TcpLink link = TcpLink.connect("tcp://127.0.0.1:" + relay.port(), 5000)) {
+                new YmodemReceiver(link, config, new TransferListener() {
+                    @Override
+                    public void progress(FileHeader f, long d) {
+                        moved.set(d);
+                    }
+                }).receiveBatch(new DirectorySink(out));
+                done = same(file, out.resolve(file.getFileName()));
+            } catch (IOException e) {
+                // dropped: YMODEM has nothing to resume from
+            } finally {
+                sb.destroy();
+                sb.waitFor(10, TimeUnit.SECONDS);
+            }
+            perCall.append(perCall.isEmpty() ? "" : ", ").append(done ? Files.size(file) : moved.get());
+        }
+        return String.format(Locale.ROOT, "| YMODEM, from zero each call | %d%s | %s | %s (kept: 0) | %.0f | %.2f | %.2f |",
+                calls, done ? "" : " (stopped)", done ? "yes" : "no", perCall, (System.nanoTime() - start) / 1e9,
+                (cpuNanos() - cpu) / 1e9, load);
+    }
+
+    private static InetSocketAddress local(int port) {
+        return new InetSocketAddress("127.0.0.1", port);
+    }
+
+    private static int freePort() throws IOException {
+        try (ServerSocket s = new ServerSocket(0)) {
+            return s.getLocalPort();
+        }
+    }
+
+    private static Process socat(Path cwd, String a, String b) throws IOException {
+        return new ProcessBuilder("socat", a, b).directory(cwd.toFile()).redirectErrorStream(true)
+                .redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
+    }
+
+    private static boolean same(Path a, Path b) throws IOException {
+        return Files.exists(b) && Arrays.equals(Files.readAllBytes(a), Files.readAllBytes(b));
+    }
+
+    private static boolean installed(String tool) {
+        for (String d : System.getenv().getOrDefault("PATH", "").split(File.pathSeparator)) {
+            if (Files.isExecutable(Path.of(d, tool))) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    static final List<String> USAGE = List.of(
+            "  zmodem     ZMODEM over the paced relay against lrzsz sz/rz (share of the line rate, CPU, load), and",
+            "             over an Iridium-like link the calls to move 100 KB resuming against YMODEM from zero",
+            "             [--baud N] [--bytes N] [--iridium-baud N] [--latency MS] [--drop-every S] [--iridium-bytes N]",
+            "             [--max-calls N] [--ymodem-calls N] [--skip-iridium]");
+}

@@ -1,0 +1,70 @@
+package org.ripv.it.ops;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.Map;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.ripv.testing.Tools;
+
+/**
+ * The README's first command as a new user types it: {@code git clone} of this repository into an
+ * empty folder, nothing built, then {@code ./ripv demo} (headless, free ports, a folder of its own),
+ * which builds the jars and starts; then the CLI on a real terminal (tmux), as the demo's hint
+ * says: {@code ?history sim01} at the interactive prompt, and {@code --follow sim01}, which follows
+ * the glider's console (its calls and dives) instead of opening a prompt.
+ */
+class FreshCloneDemoTest {
+    @TempDir
+    Path tmp;
+
+    @Test
+    void aFreshCloneRunsTheDemoAsTheReadmeSaysAndTheCliDrivesIt() throws Exception {
+        Tools.require("git", "mvn", "tmux");
+        assumeTrue(ProcessWatch.supported(), "needs Linux /proc to find the demo's processes");
+        Path clone = tmp.resolve("ripv");
+        Process git = new ProcessBuilder("git", "clone", "--quiet", RipvScriptHelpTest.ROOT.toString(), clone.toString())
+                .redirectErrorStream(true).start();
+        String gitOut = new String(git.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        assertThat(git.waitFor(300, TimeUnit.SECONDS)).isTrue();
+        assertThat(git.exitValue()).as(gitOut).isZero();
+        assertThat(clone.resolve("ripv-server/target")).as("nothing built in a fresh clone").doesNotExist();
+
+        Path home = Files.createDirectories(tmp.resolve("home"));
+        // The first run builds every jar (minutes on a busy 2-core machine); short calls and dives after.
+        try (RunningDemo demo = RunningDemo.start(clone, tmp.resolve("demo"), home, Duration.ofMinutes(25),
+                Map.of("RIPV_SURFACE_SECONDS", "20", "RIPV_DIVE_SECONDS", "5"))) {
+            assertThat(demo.output()).contains("ripv: building the jars").contains("./ripv cli --server localhost:" + demo.port);
+            assertThat(clone.resolve("ripv-server/target/ripv-server.jar")).exists();
+
+            String cli = "cd '" + clone + "' && export HOME='" + home + "' && unset RIPV_KNOWN_HOSTS RIPV_PASSWORD && ./ripv cli --server localhost:"
+                    + demo.port + " --known-hosts '" + demo.dir.resolve("known_hosts") + "' --user demo --password-file '"
+                    + demo.dir.resolve("password") + "'";
+            try (Tmux t = new Tmux(200, 50, "bash", "-c", cli + "; echo CLI-EXIT=$?; sleep 600")) {
+                t.await("the interactive prompt", Duration.ofSeconds(120), s -> Tmux.lastLine(s).startsWith("demo@localhost"));
+                t.type("?history sim01");
+                t.keys("Enter");
+                String s = t.await("the glider's transcript", Duration.ofSeconds(60),
+                        x -> x.contains("entries of <SerialPortServer>::<localhost>sim01") || x.contains("Error"));
+                assertThat(s).contains("entries of <SerialPortServer>::<localhost>sim01").contains("Glider sim01 at surface")
+                        .doesNotContain("Error");
+                t.keys("C-d");
+                t.await("the CLI ends", Duration.ofSeconds(30), x -> x.contains("CLI-EXIT=0"));
+            }
+            try (Tmux t = new Tmux(200, 50, "bash", "-c", cli + " --follow sim01; echo CLI-EXIT=$?; sleep 600")) {
+                // A whole cycle is 25 s: within it the glider dives or surfaces, and follow shows it.
+                String s = t.await("the glider's console, live", Duration.ofSeconds(120),
+                        x -> x.contains("DIVED") || x.contains("SURFACED") || x.contains("CLI-EXIT") || x.contains("Error"));
+                assertThat(s).doesNotContain("CLI-EXIT").doesNotContain("Error").doesNotContain("demo@localhost");
+                t.keys("C-c");
+                t.await("Ctrl-C ends following", Duration.ofSeconds(30), x -> x.contains("CLI-EXIT="));
+            }
+        }
+    }
+}

@@ -1,0 +1,77 @@
+// The page's one WebSocket to the Post Office: requests out, replies and console pushes in.
+// Every request carries the session's CSRF token; the server decides everything.
+export async function session() {
+  const r = await fetch('/api/session', { credentials: 'same-origin' });
+  if (r.status === 401) { location.href = '/'; throw new Error('not logged in'); }
+  return r.json();
+}
+
+export class PostOffice {
+  constructor(csrf) {
+    this.csrf = csrf;
+    this.nextId = 1;
+    this.waiting = new Map();
+    this.onPush = () => {};
+    this.onClose = () => {};
+    const scheme = location.protocol === 'https:' ? 'wss:' : 'ws:';
+    this.socket = new WebSocket(`${scheme}//${location.host}/ws`);
+    this.ready = new Promise((resolve, reject) => {
+      this.socket.addEventListener('open', resolve, { once: true });
+      this.socket.addEventListener('error', reject, { once: true });
+    });
+    this.socket.addEventListener('message', (e) => this.received(JSON.parse(e.data)));
+    this.socket.addEventListener('close', (e) => this.onClose(e.reason || 'the connection closed'));
+  }
+
+  received(m) {
+    if (m.type === 'push') { this.onPush(m); return; }
+    const w = this.waiting.get(m.id);
+    if (!w) { this.onPush(m); return; }
+    if (m.status === 'PROGRESS') { w.progress(m); return; }
+    this.waiting.delete(m.id);
+    w.done(m);
+  }
+
+  /** Sends a request; resolves with its final reply; progress replies go to onProgress. */
+  async send(mailbox, body, priority = 'normal', onProgress = () => {}) {
+    await this.ready;
+    const id = this.nextId++;
+    const reply = new Promise((done) => this.waiting.set(id, { done, progress: onProgress }));
+    this.socket.send(JSON.stringify({ id, mailbox, body, priority, csrf: this.csrf }));
+    this.lastId = id;
+    return reply;
+  }
+}
+
+/** A header bar with the user's name and a Log out button (a form with the CSRF token). */
+export function bar(s) {
+  const header = document.createElement('header');
+  header.className = 'bar';
+  const nav = document.createElement('nav');
+  const fleet = document.createElement('a');
+  fleet.href = '/fleet.html';
+  fleet.textContent = 'Fleet';
+  nav.append(fleet);
+  const who = document.createElement('span');
+  who.id = 'who';
+  who.textContent = `${s.user} (${s.roles.join(', ')})`;
+  const form = document.createElement('form');
+  form.method = 'post';
+  form.action = '/logout';
+  const token = document.createElement('input');
+  token.type = 'hidden'; token.name = 'csrf'; token.value = s.csrf;
+  const out = document.createElement('button');
+  out.type = 'submit'; out.className = 'secondary'; out.textContent = 'Log out';
+  form.append(token, out);
+  header.append(nav, who, form);
+  document.body.prepend(header);
+}
+
+export function ago(ms) {
+  if (!ms) return 'never';
+  const s = Math.max(0, Math.round((Date.now() - ms) / 1000));
+  if (s < 60) return `${s} s ago`;
+  if (s < 3600) return `${Math.round(s / 60)} min ago`;
+  if (s < 86400) return `${Math.round(s / 3600)} h ago`;
+  return `${Math.round(s / 86400)} days ago`;
+}

@@ -1,0 +1,59 @@
+package org.ripv.services.ingest;
+
+import java.io.ByteArrayInputStream;
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.OutputStreamWriter;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
+
+/** Binary files on their way into {@link DbaIngest}: recognised by content or name, decoded to the rows dbd2asc gives. */
+public final class SlocumBinaryFiles {
+    private static final byte[] LABEL = "dbd_label:".getBytes(StandardCharsets.US_ASCII);
+
+    private SlocumBinaryFiles() {}
+
+    /** True for a plain binary file (its first line is the binary label) or a compressed one by its name. */
+    public static boolean isBinary(String name, byte[] data) {
+        if (Lz4BlockInputStream.isCompressedName(name)) {
+            return true;
+        }
+        if (data.length < 64) {
+            return SlocumBinaryReader.isBinaryName(name);
+        }
+        for (int i = 0; i < LABEL.length; i++) {
+            if (data[i] != LABEL[i]) {
+                return SlocumBinaryReader.isBinaryName(name);
+            }
+        }
+        int end = 0;
+        while (end < Math.min(data.length, 128) && data[end] != '\n') {
+            end++;
+        }
+        return new String(data, 0, end, StandardCharsets.ISO_8859_1).contains(SlocumBinaryReader.LABEL)
+                || SlocumBinaryReader.isBinaryName(name);
+    }
+
+    /**
+     * The DBA text of a binary file, for {@link DbaIngest}: the same rows, so that a file is stored
+     * once whether it came as text, plain binary or compressed (the SHA-256 is of this text).
+     *
+     * @throws MissingSensorListException when its sensor list is in a cache file the cache lacks
+     * @throws SlocumFormatException      when it cannot be decoded; nothing is returned
+     */
+    public static byte[] dba(String name, byte[] data, SensorListCache cache) throws IOException, SlocumFormatException {
+        if (data.length == 0) {
+            throw new SlocumFormatException(name, 0, "the file is empty (0 bytes)");
+        }
+        ByteArrayOutputStream out = new ByteArrayOutputStream(data.length * 4);
+        try (SlocumBinaryReader r = SlocumBinaryReader.open(new ByteArrayInputStream(data), name, cache);
+             Writer w = new OutputStreamWriter(out, StandardCharsets.US_ASCII)) {
+            DbaText text = DbaText.start(w, r.tags(), r.sensors());
+            double[] row = new double[r.sensors().size()];
+            while (r.next(row)) {
+                text.row(row);
+            }
+        }
+        return out.toByteArray();
+    }
+}

@@ -1,0 +1,93 @@
+package org.ripv.services.ingest;
+
+import java.io.DataOutputStream;
+import java.io.IOException;
+import java.io.OutputStream;
+import java.nio.charset.StandardCharsets;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * Writes the plain binary format {@link SlocumBinaryReader} reads (big-endian, the sensor list in
+ * the file, encoding version 5): for tests and benchmarks that need files of a given size. Each
+ * cycle's states are chosen as the glider does: 0 for NaN, 1 for the value before, 2 otherwise.
+ * The first cycle written is the one readers skip; {@link #start} writes an empty one.
+ */
+public final class SlocumEncoder {
+    private final DataOutputStream out;
+    private final byte[] sizes;
+    private final double[] last;
+    private final byte[] states;
+
+    private SlocumEncoder(OutputStream out, List<SlocumSensor> sensors) {
+        this.out = new DataOutputStream(out);
+        this.sizes = new byte[sensors.size()];
+        for (int i = 0; i < sizes.length; i++) {
+            sizes[i] = (byte) sensors.get(i).bytes();
+        }
+        this.last = new double[sizes.length];
+        java.util.Arrays.fill(last, Double.NaN);
+        this.states = new byte[(sizes.length + 3) / 4];
+    }
+
+    /** Writes the header (with {@code tags} such as full_filename, the8x3_filename, filename_extension), list and known bytes. */
+    public static SlocumEncoder start(OutputStream out, Map<String, String> tags, List<SlocumSensor> sensors) throws IOException {
+        StringBuilder h = new StringBuilder();
+        h.append("dbd_label:    ").append(SlocumBinaryReader.LABEL).append('\n')
+                .append("encoding_ver:    ").append(SlocumBinaryReader.ENCODING).append('\n')
+                .append("num_ascii_tags:    ").append(9 + tags.size()).append('\n')
+                .append("all_sensors:    F\n");
+        tags.forEach((k, v) -> h.append(k).append(":    ").append(v).append('\n'));
+        h.append("total_num_sensors:    ").append(sensors.size()).append('\n')
+                .append("sensors_per_cycle:    ").append(sensors.size()).append('\n')
+                .append("state_bytes_per_cycle:    ").append((sensors.size() + 3) / 4).append('\n')
+                .append("sensor_list_crc:    ").append(String.format("%08x", sensors.hashCode())).append('\n')
+                .append("sensor_list_factored:    0\n");
+        for (int i = 0; i < sensors.size(); i++) {
+            SlocumSensor s = sensors.get(i);
+            h.append(String.format("s: T %4d %4d %d %s %s%n", i, i, s.bytes(), s.name(), s.units()));
+        }
+        out.write(h.toString().getBytes(StandardCharsets.US_ASCII));
+        SlocumEncoder e = new SlocumEncoder(out, sensors);
+        e.out.writeByte('s');
+        e.out.writeByte('a');
+        e.out.writeShort(0x1234);
+        e.out.writeFloat(123.456f);
+        e.out.writeDouble(123456789.12345);
+        double[] none = new double[sensors.size()];
+        java.util.Arrays.fill(none, Double.NaN);
+        e.cycle(none);
+        return e;
+    }
+
+    /** One cycle. */
+    public void cycle(double[] values) throws IOException {
+        java.util.Arrays.fill(states, (byte) 0);
+        for (int i = 0; i < sizes.length; i++) {
+            double v = values[i];
+            int state = Double.isNaN(v) ? 0 : Double.compare(v, last[i]) == 0 ? 1 : 2;
+            states[i >> 2] |= (byte) (state << (6 - ((i & 3) << 1)));
+        }
+        out.writeByte('d');
+        out.write(states);
+        for (int i = 0; i < sizes.length; i++) {
+            double v = values[i];
+            if (Double.isNaN(v) || Double.compare(v, last[i]) == 0) {
+                continue;
+            }
+            last[i] = v;
+            switch (sizes[i]) {
+                case 1 -> out.writeByte((int) v);
+                case 2 -> out.writeShort((int) v);
+                case 4 -> out.writeFloat((float) v);
+                default -> out.writeDouble(v);
+            }
+        }
+    }
+
+    /** The end tag. */
+    public void end() throws IOException {
+        out.writeByte('X');
+        out.flush();
+    }
+}
