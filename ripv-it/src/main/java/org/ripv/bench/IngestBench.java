@@ -126,9 +126,18 @@ public final class IngestBench {
 
     private static void measure(Connection c, DatabaseServer local, BlockingQueue<OutgoingServiceMessage> replies,
                                 String what, byte[] file, int runs) throws Exception {
-        ingest(local, replies, "warm-up-" + what.length() + ".mrg", file); // its sensors are known, the JIT is warm
+        measure(c, local, replies, what, file, ".mrg", file, runs);
+    }
+
+    /**
+     * As above for a file of any kind the ingest takes ({@code ext}: {@code .mrg}, {@code .sbd},
+     * {@code .scd}); the baseline inserts the values of {@code dba}, the same rows as DBA text.
+     */
+    static void measure(Connection c, DatabaseServer local, BlockingQueue<OutgoingServiceMessage> replies,
+                        String what, byte[] file, String ext, byte[] dba, int runs) throws Exception {
+        ingest(local, replies, "warm-up-" + what.length() + ext, file); // its sensors are known, the JIT is warm
         clear(c);
-        Parsed p = parse(c, file);
+        Parsed p = parse(c, dba);
         double[] viaService = new double[runs];
         double[] direct = new double[runs];
         double[] viaServiceCpu = new double[runs];
@@ -140,7 +149,7 @@ public final class IngestBench {
                 long t0 = System.nanoTime();
                 long cpu0 = cpuNanos();
                 if (service) {
-                    String text = ingest(local, replies, "bench-" + i + ".mrg", file);
+                    String text = ingest(local, replies, "bench-" + i + ext, file);
                     viaService[i] = (System.nanoTime() - t0) / 1e6;
                     viaServiceCpu[i] = (cpuNanos() - cpu0) / 1e6;
                     if (!text.contains(p.values.length + " values")) {
@@ -258,14 +267,14 @@ public final class IngestBench {
         c.setAutoCommit(true);
     }
 
-    private static void clear(Connection c) throws Exception {
+    static void clear(Connection c) throws Exception {
         try (Statement st = c.createStatement()) {
             st.execute("TRUNCATE TABLE reading");
             st.execute("DELETE FROM data_file");
         }
     }
 
-    private static String ingest(DatabaseServer service, BlockingQueue<OutgoingServiceMessage> replies, String name,
+    static String ingest(DatabaseServer service, BlockingQueue<OutgoingServiceMessage> replies, String name,
                                  byte[] file) throws Exception {
         service.accept(new IncomingServiceMessage(new Header(1, new IdBadge("123456", "bench"), List.of("operators"),
                 service.name().toString(), service.name().mailbox("TTY1").toString(), "ingest " + name, Priority.NORMAL,
