@@ -208,7 +208,7 @@ class DataLoopEndToEndTest {
 
         // bad requests get clear errors, and nothing else breaks
         assertThat(cli("use " + VIS, "vis:track nobody")).isNotZero();
-        assertThat(out()).contains("no positions of vehicle 'nobody'");
+        assertThat(out()).contains("no Slocum data for 'nobody' yet");
         assertThat(cli("use " + VIS, "vis:track x';DROP")).isNotZero();
         assertThat(out()).contains("is not a vehicle name");
         assertThat(cli("use " + VIS, "vis:sql SELECT vehicle, lat FROM positions")).isNotZero();
