@@ -48,12 +48,29 @@ public final class PrivateFiles {
         return dir;
     }
 
-    /** Makes an existing directory or file owner-only (directories 0700, files 0600). */
+    /**
+     * Makes an existing directory or file owner-only (directories 0700, files 0600). A shared
+     * directory (sticky bit, as {@code /tmp}) is refused, not changed: pointed at one by mistake
+     * ({@code --data /tmp}, a work folder) RIPV would lock every other user and service out of it.
+     */
     public static void restrict(Path p) throws IOException {
         if (!posix(p)) {
             return;
         }
+        if (isShared(p)) {
+            throw new IOException(p.toAbsolutePath() + " is a shared directory (sticky bit, like /tmp): RIPV keeps its"
+                    + " files owner-only and will not change it; give it a folder of its own, e.g. " + p.resolve("ripv"));
+        }
         Files.setPosixFilePermissions(p, Files.isDirectory(p) ? DIR : FILE);
+    }
+
+    /** A directory with the sticky bit: many users' files side by side, never RIPV's alone. */
+    public static boolean isShared(Path p) {
+        try {
+            return Files.isDirectory(p) && (((Integer) Files.getAttribute(p, "unix:mode")) & 01000) != 0;
+        } catch (IOException | UnsupportedOperationException | IllegalArgumentException e) {
+            return false; // no unix view: nothing to protect this way
+        }
     }
 
     /** Creates a new empty owner-only file; fails if it exists. */

@@ -26,6 +26,7 @@ final class ShortMode {
             Map.entry("connections", List.of("--clients", "20")),
             Map.entry("database", List.of("--rows", "2000", "--runs", "2", "--warmup", "1")),
             Map.entry("ymodem", List.of("115200:8192")),
+            Map.entry("zmodem", List.of("--bytes", "8192", "--skip-iridium")),
             Map.entry("console", List.of("--watchers", "20", "--rate", "20", "--seconds", "2", "--baseline-seconds", "2",
                     "--warmup", "1", "--full-clients", "2")),
             Map.entry("ingest", List.of("--runs", "1", "--wide-runs", "1", "--track-runs", "1", "--rows", "500")),

@@ -12,12 +12,10 @@ import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
-import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
-import org.ripv.it.Netns;
-import org.ripv.it.Postgres;
+import org.ripv.it.NetnsAssume;
 import org.ripv.testing.Tools;
 
 /**
@@ -74,7 +72,7 @@ class EveryBenchmarkRunsTest {
         assertThat(p.exitValue()).as("ripv bench " + name + " --short exit status; its output:\n" + out).isZero();
         assertThat(out).as("no exception in the output").doesNotContain("Exception in thread").doesNotContain("\tat org.ripv.");
         assertThat(out).as("the machine's load is reported").contains(CpuClock.LOAD_PREFIX);
-        if (List.of("broker", "database").contains(name)) {
+        if (List.of("broker", "database", "console", "workflow").contains(name)) {
             assertThat(out).as("CPU per operation against the floor's").containsPattern(
                     "cpu per op: .* [0-9.]+ us, floor [0-9.]+ us \\(CPU [0-9.]+×; wall [0-9.]+×\\)");
         }
@@ -87,16 +85,12 @@ class EveryBenchmarkRunsTest {
     private static void needs(String name) {
         switch (name) {
             case "hosts" -> {
-                String why = Netns.unusable();
-                if (why == null) {
-                    why = Postgres.unusable();
-                }
-                if (why == null && !Netns.onPath("ss")) {
-                    why = "needs ss (iproute2)";
-                }
-                skipOrFail(why);
+                NetnsAssume.usable();
+                NetnsAssume.postgres();
+                Tools.require("ss");
             }
             // These run without the tool (their lrzsz, Octave or PostgreSQL rows say "skipped"); CI wants those rows.
+            case "zmodem" -> requiredInCi(Tools.onPath("sz") && Tools.onPath("rz"), "lrzsz");
             case "ymodem" -> requiredInCi(Tools.onPath("sb") && Tools.onPath("rb") && Tools.onPath("socat"), "lrzsz and socat");
             case "datavis" -> requiredInCi(Tools.onPath("octave-cli"), "octave-cli");
             case "store" -> requiredInCi(System.getenv("RIPV_PG_URL") != null, "PostgreSQL (RIPV_PG_URL)");
@@ -108,15 +102,5 @@ class EveryBenchmarkRunsTest {
         if (!present && System.getenv("RIPV_REQUIRE_TOOLS") != null) {
             throw new AssertionError("RIPV_REQUIRE_TOOLS is set but " + what + " is missing, so ripv bench would skip its rows");
         }
-    }
-
-    private static void skipOrFail(String why) {
-        if (why == null) {
-            return;
-        }
-        if (System.getenv("RIPV_REQUIRE_TOOLS") != null) {
-            throw new AssertionError("RIPV_REQUIRE_TOOLS is set but ripv bench " + why);
-        }
-        Assumptions.abort(why);
     }
 }

@@ -103,15 +103,6 @@ class DataLoopEndToEndTest {
         return new CommandLine(cmd).execute(all.toArray(String[]::new));
     }
 
-    /** A file in the download store, in whichever MailBox's folder it was filed; null if none. */
-    static Path stored(String name) {
-        try (var files = Files.walk(sys.downloadDir())) {
-            return files.filter(p -> p.getFileName().toString().equals(name)).findFirst().orElse(null);
-        } catch (java.io.IOException e) {
-            throw new java.io.UncheckedIOException(e);
-        }
-    }
-
     String out() {
         return out.toString(StandardCharsets.UTF_8) + err.toString(StandardCharsets.UTF_8);
     }
@@ -157,7 +148,8 @@ class DataLoopEndToEndTest {
         assertThat(cli("use " + serial, "ymodem:get short_header.mrg")).as(out()).isNotZero();
         assertThat(out()).contains("received short_header.mrg").contains("fetched 1, ingested 0: not ingested")
                 .contains("DATABASE_ERROR");
-        assertThat(stored("short_header.mrg")).as("stored in the MailBox's download folder").isNotNull();
+        assertThat(sys.downloadDir().resolve(org.ripv.server.files.FileStore.folderFor(serial)).resolve("short_header.mrg"))
+                .exists();
         assertThat(out()).contains("not ingested").contains("short_header.mrg: refused, nothing stored: line 11: the file"
                 + " ends in the header after 10 of 14 tag lines");
         assertThat(cli("use " + DB, "SELECT COUNT(*) FROM data_file")).isZero();
@@ -190,13 +182,14 @@ class DataLoopEndToEndTest {
     }
 
     static final String VIS = "<DataVisServer>::<localhost>TTY1";
+    static final String VIS_FOLDER = org.ripv.server.files.FileStore.folderFor(VIS);
 
     @Test
     @Order(6)
     void plotsFromTheDatabase() throws Exception {
         assertThat(cli("use " + VIS, "vis:track cp_388", "?dlfiles")).as(out()).isZero();
         assertThat(out()).contains("plotted 2 rows").contains("track-cp_388.jpg");
-        assertThat(jpeg(stored("track-cp_388.jpg")).getWidth()).isEqualTo(800);
+        assertThat(jpeg(sys.downloadDir().resolve(VIS_FOLDER + "/track-cp_388.jpg")).getWidth()).isEqualTo(800);
 
         assertThat(cli("use " + VIS, "vis:track unit_363 since=2013-09-05T03:00:00Z")).as(out()).isZero();
         assertThat(out()).contains("track-unit_363.jpg");
@@ -204,18 +197,18 @@ class DataLoopEndToEndTest {
                 "vis:sql SELECT time_utc, depth FROM depths WHERE vehicle = 'unit_363' ORDER BY time_utc")).as(out()).isZero();
         assertThat(out()).contains("depth-unit_363.jpg").contains("profile-unit_363-sci_water_temp.jpg")
                 .contains("sql-plot.jpg");
-        jpeg(stored("depth-unit_363.jpg"));
+        jpeg(sys.downloadDir().resolve(VIS_FOLDER + "/depth-unit_363.jpg"));
 
         // a downloaded DBA file plotted directly
         assertThat(cli("use " + VIS, "vis:file unit_363_2013_245_6_6.mrg x=m_present_time y=m_depth")).as(out()).isZero();
         assertThat(out()).contains("unit_363_2013_245_6_6-m_depth.jpg");
-        jpeg(stored("unit_363_2013_245_6_6-m_depth.jpg"));
+        jpeg(sys.downloadDir().resolve(VIS_FOLDER + "/unit_363_2013_245_6_6-m_depth.jpg"));
         assertThat(cli("use " + VIS, "vis:file short_header.mrg x=m_present_time y=m_depth")).isNotZero();
         assertThat(out()).contains("not a usable DBA file: line 11");
 
         // bad requests get clear errors, and nothing else breaks
         assertThat(cli("use " + VIS, "vis:track nobody")).isNotZero();
-        assertThat(out()).contains("no positions of vehicle 'nobody'");
+        assertThat(out()).contains("no Slocum data for 'nobody' yet");
         assertThat(cli("use " + VIS, "vis:track x';DROP")).isNotZero();
         assertThat(out()).contains("is not a vehicle name");
         assertThat(cli("use " + VIS, "vis:sql SELECT vehicle, lat FROM positions")).isNotZero();

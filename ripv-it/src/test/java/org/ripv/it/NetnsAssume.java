@@ -3,15 +3,15 @@ package org.ripv.it;
 import org.junit.jupiter.api.Assumptions;
 
 /** The multi-host tests' guard: skip (or under RIPV_REQUIRE_TOOLS fail) where network namespaces cannot be made. */
-final class NetnsAssume {
+public final class NetnsAssume {
     private NetnsAssume() {}
 
-    static void usable() {
+    public static void usable() {
         check(Netns.unusable());
     }
 
     /** The same for a PostgreSQL cluster in a namespace ({@link Postgres}). */
-    static void postgres() {
+    public static void postgres() {
         check(Postgres.unusable());
     }
 

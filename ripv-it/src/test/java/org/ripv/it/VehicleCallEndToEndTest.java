@@ -131,6 +131,8 @@ class VehicleCallEndToEndTest {
         assertThat(h.entries()).extracting(org.ripv.messages.ConsoleEntry::text).contains("Glider ru29 at surface.", "dir");
         assertThat(cli("use " + mailbox, "dir")).isNotZero();
         assertThat(out() + err).contains("not on a call");
-        awaitStatus(mailbox, "call 2");
+        // The next call is taken: SURFACED says which call of this run it is (the status counts them once, as "N calls").
+        assertThat(a.await(e -> e.event() == org.ripv.messages.VehicleEvent.SURFACED && e.text().startsWith("call 2 "), t)).isTrue();
+        awaitStatus(mailbox, "on call since");
     }
 }

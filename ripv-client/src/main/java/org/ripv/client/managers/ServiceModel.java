@@ -216,7 +216,11 @@ public final class ServiceModel {
                 if (java.util.Objects.equals(st, m.session())) {
                     return false;
                 }
-                mailboxes.set(i, m.withSession(st));
+                boolean moved = m.session() == null || st.state() != m.session().state();
+                // A call event supersedes the service's last words on availability until it is asked again:
+                // on a call the vehicle takes commands, dived or lost it does not.
+                mailboxes.set(i, moved ? new MailboxStatus(m.address(), st.state() == org.ripv.messages.SessionState.State.ON_CALL,
+                        "", m.busy(), m.lockedBy(), st, m.running()) : m.withSession(st));
                 if (mailbox.equals(target)) {
                     serviceStatus = describe(mailboxes.get(i)); // SS and the badge say the same state
                 }
@@ -319,15 +323,21 @@ public final class ServiceModel {
      * How the SS label words a mailbox's status. A vehicle's is its call state, the one its badge
      * shows (updated by the console's events between two {@code ?mailboxes}), with the calls of
      * this run of its service counted once; the service's own words on the call (its detail) would
-     * lag behind the events and count the calls again.
+     * lag behind the events and count the calls again. Only on a call that takes no commands does
+     * the service's detail say why.
      */
     static String describe(MailboxStatus s) {
         org.ripv.messages.SessionState v = s.session();
         StringBuilder b;
         if (v != null && v.state() != org.ripv.messages.SessionState.State.UNKNOWN) {
-            b = new StringBuilder(v.state() == org.ripv.messages.SessionState.State.ON_CALL ? "available" : "not available");
+            boolean onCall = v.state() == org.ripv.messages.SessionState.State.ON_CALL;
+            b = new StringBuilder(onCall && s.available() ? "available" : "not available");
             b.append(" (").append(v.state().words()).append(", ").append(v.calls()).append(v.calls() == 1 ? " call" : " calls")
-                    .append(" this run)");
+                    .append(" this run");
+            if (onCall && !s.available() && !s.detail().isBlank()) {
+                b.append("; ").append(s.detail()); // on a call yet not taking commands: the service says why
+            }
+            b.append(')');
         } else {
             b = new StringBuilder(s.available() ? "available" : "not available");
             if (!s.detail().isBlank()) {

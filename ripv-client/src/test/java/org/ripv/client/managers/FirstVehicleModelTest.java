@@ -117,4 +117,11 @@ class FirstVehicleModelTest {
         assertThat(ss).isEqualTo("not available (dived, 3 calls this run)");
         assertThat(ss.split("call", -1)).as("one count in one line").hasSize(2);
     }
+
+    @Test
+    void onACallButNotTakingCommandsTheServiceSaysWhy() {
+        mailboxes(new MailboxStatus(SIM, false, "submerged", false, "",
+                new SessionState(SessionState.State.ON_CALL, System.currentTimeMillis() - 1000, null, null, 1, null)));
+        assertThat(model.service(SERIAL).serviceStatus()).isEqualTo("not available (on call, 1 call this run; submerged)");
+    }
 }

@@ -33,8 +33,11 @@ class BenchListsTest {
     }
 
     @Test
-    void theSourceListsEveryBenchmark() {
+    void theSourceListsEveryBenchmark() throws Exception {
         assertThat(source()).contains("broker", "connections", "workflow", "hosts").hasSizeGreaterThanOrEqualTo(12);
+        String main = Files.readString(ROOT.resolve("ripv-it/src/main/java/org/ripv/bench/BenchMain.java"), StandardCharsets.UTF_8);
+        assertThat(all(Pattern.compile("case \"([a-z]+)\" ->"), main)).as("every benchmark BenchMain runs is in its usage")
+                .isEqualTo(source());
     }
 
     @Test

@@ -50,8 +50,10 @@ class FreshCloneDemoTest {
                 t.await("the interactive prompt", Duration.ofSeconds(120), s -> Tmux.lastLine(s).startsWith("demo@localhost"));
                 t.type("?history sim01");
                 t.keys("Enter");
+                // The whole transcript, then the prompt again (Ctrl-D only ends the CLI at the prompt).
                 String s = t.await("the glider's transcript", Duration.ofSeconds(60),
-                        x -> x.contains("entries of <SerialPortServer>::<localhost>sim01") || x.contains("Error"));
+                        x -> x.contains("entries of <SerialPortServer>::<localhost>sim01") && Tmux.lastLine(x).startsWith("demo@localhost")
+                                || x.contains("Error"));
                 assertThat(s).contains("entries of <SerialPortServer>::<localhost>sim01").contains("Glider sim01 at surface")
                         .doesNotContain("Error");
                 t.keys("C-d");

@@ -28,10 +28,15 @@ class CertificateChangeAttackTest {
     record Run(int code, String out, String err) {}
 
     static Run cli(int port, Path knownHosts) {
+        return cli("localhost:" + port, knownHosts);
+    }
+
+    /** {@code ?whoami} as alice through the CLI, to one server or a list ({@code --server A,B}). */
+    static Run cli(String servers, Path knownHosts) {
         ByteArrayOutputStream out = new ByteArrayOutputStream();
         ByteArrayOutputStream err = new ByteArrayOutputStream();
         int code = new CommandLine(new CliCommand(new ByteArrayInputStream(new byte[0]), new PrintStream(out), new PrintStream(err)))
-                .execute("--server", "localhost:" + port, "--known-hosts", knownHosts.toString(), "--user", "alice",
+                .execute("--server", servers, "--known-hosts", knownHosts.toString(), "--user", "alice",
                         "--password", TestSystem.PASSWORD, "--exec", "?whoami");
         return new Run(code, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8));
     }

@@ -10,7 +10,6 @@ import java.rmi.registry.LocateRegistry;
 import java.rmi.registry.Registry;
 import java.rmi.server.UnicastRemoteObject;
 import java.time.Duration;
-import java.util.List;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.TimeUnit;
@@ -21,10 +20,6 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.ripv.examples.ClockService;
 import org.ripv.it.TestSystem;
-import org.ripv.messages.ConsoleEntry;
-import org.ripv.messages.IncomingServiceMessage;
-import org.ripv.messages.MailboxStatus;
-import org.ripv.messages.OutgoingServiceMessage;
 import org.ripv.messages.ServiceDescriptor;
 import org.ripv.rmi.GenericRMIInterface;
 import org.ripv.security.ServiceProof;
@@ -116,7 +111,7 @@ class ChallengeFloodAttackTest {
         ServiceConnector c = ServiceConnector.connect(clock, new ServiceOptions("localhost", port, secret, 0, Duration.ofMillis(300)));
         try {
             assertThat(c.awaitRegistered(Duration.ofSeconds(20))).as("registered after being told to register again").isTrue();
-            assertThat(server.registrations.get()).isEqualTo(2);
+            assertThat(server.tries.get()).isEqualTo(2);
         } finally {
             c.close();
             clock.stop();
@@ -126,9 +121,9 @@ class ChallengeFloodAttackTest {
     }
 
     /** A server that holds the secret and, the first time, refuses as a flooded server did. */
-    static final class Refusing implements GenericRMIInterface {
+    static final class Refusing extends RegistryTakeoverAttackTest.Impostor {
         final String secret;
-        final AtomicInteger registrations = new AtomicInteger();
+        final AtomicInteger tries = new AtomicInteger();
 
         Refusing(String secret) {
             this.secret = secret;
@@ -142,46 +137,11 @@ class ChallengeFloodAttackTest {
 
         @Override
         public String register(ServiceDescriptor d, GenericRMIInterface s, String proof) {
-            if (registrations.incrementAndGet() == 1) {
+            if (tries.incrementAndGet() == 1) {
                 throw new SecurityException("the registration's challenge is unknown, used or expired; register again");
             }
             String[] w = proof.split(" ");
             return ServiceProof.serverProof(secret, w[0], w[1]);
-        }
-
-        @Override
-        public void serviceReply(String token, OutgoingServiceMessage reply) {
-        }
-
-        @Override
-        public void serviceReplies(String token, List<OutgoingServiceMessage> replies) {
-        }
-
-        @Override
-        public void console(String token, List<ConsoleEntry> entries) {
-        }
-
-        @Override
-        public boolean heartbeat(String token) {
-            return true;
-        }
-
-        @Override
-        public void serviceRequest(String token, IncomingServiceMessage request) {
-        }
-
-        @Override
-        public void serviceRequests(String token, List<IncomingServiceMessage> requests) {
-        }
-
-        @Override
-        public boolean withdraw(String token, String mailbox, String clientId, long messageId) {
-            return false;
-        }
-
-        @Override
-        public List<MailboxStatus> mailboxes(String token) {
-            return List.of();
         }
     }
 }

@@ -2,9 +2,6 @@ package org.ripv.it.security;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import java.io.ByteArrayInputStream;
-import java.io.ByteArrayOutputStream;
-import java.io.PrintStream;
 import java.net.ServerSocket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -16,7 +13,6 @@ import org.ripv.client.cli.CliCommand;
 import org.ripv.it.TestSystem;
 import org.ripv.server.ServerConfig;
 import org.ripv.server.security.SelfSignedTls;
-import picocli.CommandLine;
 
 /**
  * Issue 23, item 2: with {@code --server A,B}, a changed certificate on A (the man-in-the-middle
@@ -28,15 +24,8 @@ class FailoverPinningAttackTest {
     @TempDir
     Path dir;
 
-    record Run(int code, String out, String err) {}
-
-    static Run cli(String servers, Path knownHosts) {
-        ByteArrayOutputStream out = new ByteArrayOutputStream();
-        ByteArrayOutputStream err = new ByteArrayOutputStream();
-        int code = new CommandLine(new CliCommand(new ByteArrayInputStream(new byte[0]), new PrintStream(out), new PrintStream(err)))
-                .execute("--server", servers, "--known-hosts", knownHosts.toString(), "--user", "alice",
-                        "--password", TestSystem.PASSWORD, "--exec", "?whoami");
-        return new Run(code, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8));
+    static CertificateChangeAttackTest.Run cli(String servers, Path knownHosts) {
+        return CertificateChangeAttackTest.cli(servers, knownHosts);
     }
 
     /** A server with a certificate of its own (not the tests' shared one). */
@@ -58,14 +47,14 @@ class FailoverPinningAttackTest {
         Path known = dir.resolve("known_hosts");
         int portA = freePort();
         try (TestSystem a = server("a", portA)) {
-            Run first = cli("localhost:" + portA, known);
+            CertificateChangeAttackTest.Run first = cli("localhost:" + portA, known);
             assertThat(first.code()).as(first.err()).isZero();
         }
         try (TestSystem standby = server("b", 0)) {
             String list = "localhost:" + portA + ",localhost:" + standby.server().port();
 
             // A is down; B answers with a certificate nobody pinned, while A is pinned: refused.
-            Run unpinned = cli(list, known);
+            CertificateChangeAttackTest.Run unpinned = cli(list, known);
             assertThat(unpinned.code()).as(unpinned.out()).isEqualTo(CliCommand.EXIT_NO_SESSION);
             assertThat(unpinned.err()).contains("not seen before").contains("is pinned").contains(standby.server().tlsFingerprint());
             assertThat(unpinned.out()).doesNotContain("alice on client");
@@ -73,7 +62,7 @@ class FailoverPinningAttackTest {
 
             // A man in the middle on A's port (another key): the attempt stops there; B never sees the password.
             try (TestSystem mitm = server("mitm", portA)) {
-                Run r = cli(list, known);
+                CertificateChangeAttackTest.Run r = cli(list, known);
                 assertThat(r.code()).isEqualTo(CliCommand.EXIT_NO_SESSION);
                 assertThat(r.err()).contains("THE SERVER'S CERTIFICATE HAS CHANGED").doesNotContain("did not answer");
                 assertThat(r.out()).doesNotContain("alice on client");
@@ -82,7 +71,7 @@ class FailoverPinningAttackTest {
             // The operator pins B (the fingerprint it printed at its start): now B is used when A is down.
             Files.writeString(known, "localhost:" + standby.server().port() + " " + standby.server().tlsFingerprint() + "\n",
                     StandardCharsets.UTF_8, StandardOpenOption.APPEND);
-            Run pinned = cli(list, known);
+            CertificateChangeAttackTest.Run pinned = cli(list, known);
             assertThat(pinned.code()).as(pinned.err()).isZero();
             assertThat(pinned.out()).contains("alice on client");
         }
@@ -99,7 +88,7 @@ class FailoverPinningAttackTest {
         }
         try (TestSystem b = TestSystem.start(ServerConfig.forTests(dir.resolve("b")))) {
             b.user("alice", "operators");
-            Run r = cli("localhost:" + portA + ",localhost:" + b.server().port(), known);
+            CertificateChangeAttackTest.Run r = cli("localhost:" + portA + ",localhost:" + b.server().port(), known);
             assertThat(r.code()).as(r.err()).isZero();
             assertThat(Files.readString(known)).contains("localhost:" + b.server().port() + " " + b.server().tlsFingerprint());
         }

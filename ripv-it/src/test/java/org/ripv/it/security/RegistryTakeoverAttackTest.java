@@ -43,7 +43,7 @@ class RegistryTakeoverAttackTest {
     }
 
     /** Records every argument it is given; proves nothing. */
-    static final class Impostor implements GenericRMIInterface {
+    static class Impostor implements GenericRMIInterface {
         final List<String> seen = new CopyOnWriteArrayList<>();
         volatile int challenges;
         volatile int registrations;

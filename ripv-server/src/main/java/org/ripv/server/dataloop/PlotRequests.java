@@ -176,7 +176,7 @@ final class PlotRequests {
     }
 
     /** What to do when a vehicle has no Slocum data: the same words before the first ingest and after others'. */
-    private static final String NO_DATA_HELP = "fetch its DBA files with ymodem:get NAME... on its SerialPortServer MailBox"
+    private static final String NO_DATA_HELP = "fetch its data files (DBA, or binary .sbd .tbd .scd .tcd with their .cac) with ymodem:get NAME... on its SerialPortServer MailBox"
             + " (they are ingested automatically) or ingest NAME... on the DatabaseServer for files already downloaded;"
             + " SELECT DISTINCT vehicle FROM data_file lists the vehicles that have data";
 

@@ -86,6 +86,25 @@ public final class LoginThrottle {
         return longest(longest(a, p), u);
     }
 
+    /**
+     * As {@link #blocked}, for a log-in about to be tried: a user name past its free failures is
+     * tried from an address it never logged in from at most once per {@code userMax} — this try
+     * takes the turn — so guesses spread over many addresses cost the server one password hash
+     * per user every few seconds, not one per address.
+     */
+    public synchronized Block admit(String user, String address) {
+        Block b = blocked(user, address);
+        if (b != null || isKnown(user, address)) {
+            return b;
+        }
+        State u = states.get(userKey(user));
+        long now = clock.getAsLong();
+        if (u != null && u.failures >= policy.freePerUser() && now - u.last <= policy.lock().toMillis()) {
+            u.blockedUntil = Math.max(u.blockedUntil, now + policy.userMax().toMillis());
+        }
+        return null;
+    }
+
     private static Block longest(Block a, Block b) {
         if (a == null) {
             return b;

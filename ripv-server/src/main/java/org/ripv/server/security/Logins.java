@@ -107,7 +107,7 @@ public final class Logins {
      */
     public Check check(String user, char[] password, String address, String where) {
         try {
-            LoginThrottle.Block block = throttle.blocked(user, address);
+            LoginThrottle.Block block = throttle.admit(user, address);
             if (block != null && throttle.addressBlocked(address) == null) {
                 // Trying a blocked name again counts against the address: a flood that keeps at it
                 // is soon refused at connect, before the TLS handshake that each try costs.

@@ -106,7 +106,8 @@ final class VehicleStates {
                 return;
             }
             v.run = started;
-            v.calls = 0;
+            // The server hears of the new instance in the background: calls it already took count.
+            v.calls = (int) v.recent.stream().filter(e -> e.event() == VehicleEvent.SURFACED && e.time() >= started).count();
         }
         save(mailbox, v);
     }

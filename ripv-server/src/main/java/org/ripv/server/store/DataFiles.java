@@ -72,6 +72,9 @@ public final class DataFiles {
     }
 
     private static void ownerOnly(Path p, String mode) {
+        if (org.ripv.files.PrivateFiles.isShared(p)) {
+            return; // never a shared folder such as /tmp (PrivateFiles.restrict says why)
+        }
         try {
             Files.setPosixFilePermissions(p, PosixFilePermissions.fromString(mode));
         } catch (UnsupportedOperationException | IOException e) {

@@ -8,7 +8,7 @@ import org.eclipse.jetty.util.Callback;
 
 /**
  * The headers every answer carries: a Content-Security-Policy that runs only this server's own
- * script files (no inline script, no eval), never framed; no sniffing; no referrer; and, under
+ * script files (no inline script, no eval), never framed; no sniffing; no referrer to other sites; and, under
  * TLS, HSTS. Map tiles, when the operator gives a tile server, are the one outside source.
  */
 final class SecurityHeaders extends Handler.Wrapper {
@@ -29,7 +29,7 @@ final class SecurityHeaders extends Handler.Wrapper {
         HttpFields.Mutable h = response.getHeaders();
         h.put("Content-Security-Policy", csp);
         h.put("X-Content-Type-Options", "nosniff");
-        h.put("Referrer-Policy", "no-referrer");
+        h.put("Referrer-Policy", "same-origin"); // not no-referrer: Chromium then sends "Origin: null" with our own forms
         h.put("X-Frame-Options", "DENY");
         h.put("Cache-Control", "no-store");
         if (tls) {

@@ -55,6 +55,10 @@ class LoginThrottleTest {
         assertThat(slow.blocked("alice", "192.0.2.1")).as("the real user's own address").isNull();
         now.addAndGet(4_000);
         assertThat(slow.blocked("alice", "10.0.0.77")).isNull();
+        // One try per few seconds from addresses alice never used: the first takes the turn.
+        assertThat(slow.admit("alice", "10.0.0.77")).isNull();
+        assertThat(slow.admit("alice", "10.0.0.78")).as("the turn is taken").isNotNull();
+        assertThat(slow.admit("alice", "192.0.2.1")).as("her own address waits for no turn").isNull();
     }
 
     @Test

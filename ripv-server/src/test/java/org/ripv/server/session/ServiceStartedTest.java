@@ -76,6 +76,13 @@ class ServiceStartedTest {
             assertThat(hub.state(RU29).state()).isEqualTo(SessionState.State.DIVED);
             hub.publish(SERVICE, List.of(ConsoleEntry.event(RU29, VehicleEvent.SURFACED, "", null, null)));
             assertThat(hub.state(RU29).calls()).as("call 1 of this run, as the service says").isEqualTo(1);
+            // The server squares its calls with a new instance in the background: a call taken before that still counts.
+            Thread.sleep(2); // the third instance starts after the last call (in another millisecond)
+            long third = System.currentTimeMillis();
+            Thread.sleep(2);
+            hub.publish(SERVICE, List.of(ConsoleEntry.event(RU29, VehicleEvent.SURFACED, "", null, null)));
+            hub.serviceStarted(SERVICE, third, List.of(RU29));
+            assertThat(hub.state(RU29).calls()).isEqualTo(1);
             hub.close();
         }
     }

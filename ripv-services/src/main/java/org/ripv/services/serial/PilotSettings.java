@@ -1,22 +1,18 @@
 package org.ripv.services.serial;
 
 import java.util.List;
-import java.util.Locale;
 import java.util.Objects;
 import org.ripv.services.serial.ymodem.FileNames;
 
 /**
  * A link's settings for a pilot's work at surfacing (kept apart from {@link LinkSettings} and
- * {@link CallSettings}): the control keys that may be pressed, the vehicle's ZMODEM commands,
- * and whether files in the MailBox's {@code to-vehicle/} folder go out on each call.
+ * {@link CallSettings}): the control keys that may be pressed and the vehicle's ZMODEM commands.
  *
  * @param keys           the keys {@code ?key} may send ({@code keys=}, default {@link ControlKey#DEFAULT_KEYS})
  * @param zmodemSend     the vehicle's command that sends files by ZMODEM, given their names ({@code zs})
  * @param zmodemReceive  the vehicle's command that receives a file by ZMODEM ({@code zr})
- * @param toVehicle      how {@code to-vehicle/} files are sent on each call: {@code off} (default),
- *                       {@code zmodem} or {@code ymodem} ({@code to-vehicle=})
  */
-public record PilotSettings(List<ControlKey> keys, String zmodemSend, String zmodemReceive, String toVehicle) {
+public record PilotSettings(List<ControlKey> keys, String zmodemSend, String zmodemReceive) {
 
     public PilotSettings {
         keys = List.copyOf(keys);
@@ -25,23 +21,15 @@ public record PilotSettings(List<ControlKey> keys, String zmodemSend, String zmo
         if (zmodemSend.isBlank() || zmodemReceive.isBlank()) {
             throw new IllegalArgumentException("the vehicle's ZMODEM commands must not be empty (zmodem-send=, zmodem-receive=)");
         }
-        toVehicle = toVehicle.toLowerCase(Locale.ROOT);
-        if (!List.of("off", "zmodem", "ymodem").contains(toVehicle)) {
-            throw new IllegalArgumentException("to-vehicle '" + toVehicle + "' is not off, zmodem or ymodem");
-        }
     }
 
     public static PilotSettings defaults() {
-        return new PilotSettings(ControlKey.parseList(ControlKey.DEFAULT_KEYS), "zs", "zr", "off");
+        return new PilotSettings(ControlKey.parseList(ControlKey.DEFAULT_KEYS), "zs", "zr");
     }
 
     /** Whether the link allows {@code key}. */
     boolean allows(ControlKey key) {
         return keys.contains(key);
-    }
-
-    boolean sendsToVehicle() {
-        return !toVehicle.equals("off");
     }
 
     /** The vehicle's ZMODEM send command line for these names. */

@@ -42,7 +42,7 @@ public final class SerialPortServerCommand implements Callable<Integer> {
                     + "optionally followed by its own settings, e.g. /dev/ttyUSB0,baud=9600,carrier=require,name=ru29 "
                     + "(keys: baud, data-bits, parity, stop-bits, carrier, line-ending, prompt, prompt-regex, idle-timeout, "
                     + "command-timeout, send-command, receive-command, maxcommand, interrupt; name, surface, quiet, alert, line-length, "
-                    + "rate, callers; keys, zmodem-send, zmodem-receive, to-vehicle). Repeatable.")
+                    + "rate, callers; keys, zmodem-send, zmodem-receive). Repeatable.")
     List<String> links = new ArrayList<>();
 
     @Option(names = "--no-enumerate", description = "Do not open MailBoxes for the serial ports jSerialComm finds; only the --link ones.")
@@ -135,11 +135,6 @@ public final class SerialPortServerCommand implements Callable<Integer> {
             description = "The vehicle's ZMODEM receive command (per link: zmodem-receive=; default ${DEFAULT-VALUE}).")
     String zmodemReceive;
 
-    @Option(names = "--to-vehicle", defaultValue = "off", paramLabel = "off|zmodem|ymodem",
-            description = "Send the files in each MailBox's to-vehicle/ upload folder on every call, by this protocol"
-                    + " (per link: to-vehicle=; default ${DEFAULT-VALUE}).")
-    String toVehicle;
-
     @Option(names = "--callers", paramLabel = "CIDR[,CIDR...]",
             description = "On listen:// links: take calls only from these addresses, e.g. the RUDICS gateway's "
                     + "(per link: callers=...; default: anyone who can reach the port).")
@@ -201,8 +196,8 @@ public final class SerialPortServerCommand implements Callable<Integer> {
     static final java.util.Set<String> CALL_KEYS = java.util.Set.of("name", "surface", "quiet", "alert", "line-length",
             "rate", "callers");
 
-    /** The keys of a link's {@link PilotSettings}: control keys, ZMODEM commands, the to-vehicle folder. */
-    static final java.util.Set<String> PILOT_KEYS = java.util.Set.of("keys", "zmodem-send", "zmodem-receive", "to-vehicle");
+    /** The keys of a link's {@link PilotSettings}: control keys and ZMODEM commands. */
+    static final java.util.Set<String> PILOT_KEYS = java.util.Set.of("keys", "zmodem-send", "zmodem-receive");
 
     /** A link's settings and its call settings ({@code name=ru29,surface=...,quiet=600,alert=...}). */
     VehicleLink link(String spec) {
@@ -219,8 +214,7 @@ public final class SerialPortServerCommand implements Callable<Integer> {
                     number(o, "line-length", lineLength), number(o, "rate", rate),
                     callers(o.getOrDefault("callers", callers))),
                     new PilotSettings(ControlKey.parseList(o.getOrDefault("keys", keys)),
-                            o.getOrDefault("zmodem-send", zmodemSend), o.getOrDefault("zmodem-receive", zmodemReceive),
-                            o.getOrDefault("to-vehicle", toVehicle)));
+                            o.getOrDefault("zmodem-send", zmodemSend), o.getOrDefault("zmodem-receive", zmodemReceive)));
         } catch (IllegalArgumentException e) {
             throw new IllegalArgumentException("--link '" + spec + "': " + e.getMessage(), e);
         }

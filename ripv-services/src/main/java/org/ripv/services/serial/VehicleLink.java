@@ -6,8 +6,8 @@ import org.ripv.naming.Handles;
 
 /**
  * One link as the SerialPortServer opens it: how to talk to it ({@link LinkSettings}), how to
- * read its calls and console ({@link CallSettings}), and a pilot's keys, ZMODEM and to-vehicle
- * folder ({@link PilotSettings}).
+ * read its calls and console ({@link CallSettings}), and a pilot's keys and ZMODEM commands
+ * ({@link PilotSettings}).
  */
 public record VehicleLink(LinkSettings settings, CallSettings call, PilotSettings pilot) {
 

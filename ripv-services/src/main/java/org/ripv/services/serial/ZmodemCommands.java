@@ -227,7 +227,7 @@ final class ZmodemCommands {
         return transfer(c, request, () -> send(c, request, file), () -> "");
     }
 
-    /** Sends one file to the vehicle's {@code zr}; used by zmodem:put and the to-vehicle folder. */
+    /** Sends one file to the vehicle's {@code zr}. */
     Reply send(Connection c, Request request, SendFile file) throws IOException {
         write(c, pilot.zmodemReceive());
         ProgressReporter progress = new ProgressReporter(request, "sending");

@@ -67,6 +67,25 @@ class SerialPortServerCommandTest {
     }
 
     @Test
+    void keysAndZmodemCommandsPerLink() {
+        SerialPortServerCommand c = parse("--server", "h", "--link", "/dev/ttyUSB0",
+                "--link", "/dev/ttyUSB1,keys=ctrl-c,Ctrl-R,zmodem-send=lsz -q,zmodem-receive=lrz -y,name=ru29",
+                "--link", "/dev/ttyUSB2,keys=none");
+        PilotSettings d = c.link(c.links.get(0)).pilot();
+        assertEquals("ctrl-c, ctrl-r, ctrl-e, ctrl-f", ControlKey.describe(d.keys()));
+        assertEquals("zs", d.zmodemSend());
+        assertEquals("zr", d.zmodemReceive());
+        PilotSettings ru29 = c.link(c.links.get(1)).pilot();
+        assertEquals("ctrl-c, ctrl-r", ControlKey.describe(ru29.keys()));
+        assertEquals((byte) 0x12, ru29.keys().get(1).code());
+        assertEquals("lsz -q A.DBD B.DBD", ru29.sendCommand(java.util.List.of("A.DBD", "B.DBD")));
+        assertEquals("lrz -y", ru29.zmodemReceive());
+        assertEquals("none", ControlKey.describe(c.link(c.links.get(2)).pilot().keys()));
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> c.link("/dev/x,keys=ctrl-c,esc"));
+        assertTrue(e.getMessage().contains("'esc' is not a control key"), e.getMessage());
+    }
+
+    @Test
     void theInterruptIsCtrlCUnlessALinkSaysOtherwise() {
         SerialPortServerCommand c = parse("--server", "h", "--link", "/dev/ttyUSB0", "--link", "/dev/ttyUSB1,interrupt=^X^C",
                 "--link", "/dev/ttyUSB2,interrupt=none");

@@ -56,7 +56,7 @@ class ZmodemCommandsTest {
 
     private SerialPortServer serial(Path pty, String keys) throws Exception {
         VehicleLink link = new VehicleLink(gliderLink(pty.toString()), CallSettings.defaults().withName("ru29"),
-                new PilotSettings(ControlKey.parseList(keys), "zs", "zr", "off"));
+                new PilotSettings(ControlKey.parseList(keys), "zs", "zr"));
         SerialPortServer serial = SerialPortServer.withCalls("testhost", List.of(link), null, false, tmp.resolve("work"));
         serial.start();
         return serial;
@@ -105,7 +105,7 @@ class ZmodemCommandsTest {
         Path pty = tmp.resolve("ttyR");
         try (Socat socat = vehicle(tmp, dir, pty)) {
             VehicleLink link = new VehicleLink(gliderLink(pty.toString()), CallSettings.defaults().withName("ru30"),
-                    new PilotSettings(ControlKey.parseList("ctrl-c"), "send-by-z", "zr", "off"));
+                    new PilotSettings(ControlKey.parseList("ctrl-c"), "send-by-z", "zr"));
             SerialPortServer serial = SerialPortServer.withCalls("testhost", List.of(link), null, false, tmp.resolve("work"));
             serial.start();
             try {

@@ -22,6 +22,8 @@ function row(address, v) {
   state.append(badge);
   const cells = [ago(v.lastContact), v.lat == null ? '—' : `${v.lat.toFixed(4)}, ${v.lon.toFixed(4)}`, String(v.calls ?? 0), v.latest || ''];
   tr.append(name, state, ...cells.map((t) => { const td = document.createElement('td'); td.textContent = t; return td; }));
+  tr.children[2].className = 'ago';
+  tr.children[2].dataset.time = String(v.lastContact || 0);
   tr.dataset.address = address;
   return tr;
 }
@@ -41,13 +43,13 @@ function takeStatus(m) {
   vehicles.set(m.address, v);
 }
 
-function takeEntry(e) {
+function takeEntry(e, live = true) {
   const v = vehicles.get(e.mailbox);
   if (!v) return;
   v.lastContact = e.time;
   if (e.kind === 'EVENT') {
     v.latest = `${e.event} ${e.text}`.trim();
-    if (e.event === 'SURFACED') { v.state = 'ON_CALL'; v.calls = (v.calls || 0) + 1; }
+    if (e.event === 'SURFACED') { v.state = 'ON_CALL'; if (live) v.calls = (v.calls || 0) + 1; }
     if (e.event === 'DIVED') v.state = 'DIVED';
     if (e.event === 'LINK_LOST') v.state = 'LOST';
   }
@@ -68,8 +70,11 @@ if (list.status === 'ERROR') {
   render();
   for (const address of vehicles.keys()) {
     const w = await po.send('', `?watch ${address}`);
-    if (w.result && w.result.kind === 'ConsoleBatch') w.result.entries.forEach(takeEntry);
+    if (w.result && w.result.kind === 'ConsoleBatch') w.result.entries.forEach((e) => takeEntry(e, false)); // counted in the status already
   }
   render();
 }
-setInterval(render, 1000); // "12 min ago" keeps ticking
+// "12 min ago" keeps ticking; only that text changes, so a row never moves under the user's pointer.
+setInterval(() => {
+  for (const td of document.querySelectorAll('td.ago')) td.textContent = ago(Number(td.dataset.time));
+}, 1000);

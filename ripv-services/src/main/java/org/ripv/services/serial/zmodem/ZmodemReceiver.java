@@ -31,6 +31,8 @@ public final class ZmodemReceiver {
     static final int MAX_ERRORS = 20;
     /** Lies about positions (a ZDATA or ZEOF elsewhere than asked) a peer is allowed before it is not believed. */
     static final int MAX_OUT_OF_STEP = 10;
+    /** Bytes that are no frame tolerated outside a file's data (a shell's echo, a banner). */
+    static final int BETWEEN_FILES_GARBAGE = 8192;
 
     private final ZFrameReader in;
     private final ZFrameWriter out;
@@ -219,6 +221,10 @@ public final class ZmodemReceiver {
             listener.resumed(file, pos);
         }
         long from = pos;
+        // After a ZRPOS, what the sender had already streamed into the link's buffers (a TCP
+        // link holds hundreds of KB) arrives before its new ZDATA and is skipped: during a file
+        // that is expected, up to the file's size and some, as lrzsz allows about a second's worth
+        in.garbageLimit((int) Math.min(Integer.MAX_VALUE, Math.max(BETWEEN_FILES_GARBAGE, file.length() + 65_536)));
         try (OutputStream o = store.open(file, pos)) {
             pos = data(file, pos, o);
         } catch (ZmodemException e) {
@@ -226,6 +232,7 @@ public final class ZmodemReceiver {
         } catch (IOException e) {
             throw finish(store, file, from, true, e);
         }
+        in.garbageLimit(BETWEEN_FILES_GARBAGE);
         Path target = into.resolve(file.name());
         store.complete(file.name(), target);
         listener.finished(file);

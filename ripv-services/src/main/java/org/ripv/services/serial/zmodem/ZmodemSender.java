@@ -23,6 +23,14 @@ public final class ZmodemSender {
     static final int SUBPACKET = 1024;
     /** How long a header on the back channel may take to complete once its first byte is here. */
     static final long BACK_CHANNEL_MILLIS = 200;
+    /**
+     * How often the stream stops to look for a ZRPOS. Each look waits a moment for a byte, and on
+     * a loaded machine that moment stretches: looking after every subpacket left the line idle
+     * one time in ten at 115,200 baud.
+     */
+    static final long LOOK_EVERY_NANOS = 200_000_000L;
+    /** How long a header that may follow a repeated ZRINIT is waited for before the ZFILE goes again (sz: 5 s). */
+    static final long OFFER_DRAIN_MILLIS = 5000;
     /** How long a receiver's repeated ZFIN is waited for after "OO". */
     static final long OO_REPEAT_MILLIS = 500;
 
@@ -135,15 +143,30 @@ public final class ZmodemSender {
         String info = file.name() + "\0" + file.length() + " " + Long.toOctalString(file.mtimeSeconds()) + " "
                 + Integer.toOctalString(file.mode()) + " 0 1 " + file.length() + "\0";
         byte[] b = info.getBytes(StandardCharsets.ISO_8859_1);
+        ZHeader pending = null;
         for (int tries = 0; tries < ZmodemReceiver.MAX_ERRORS; tries++) {
             checkCancel();
-            out.binary(ZHeader.flags(Zmodem.ZFILE, Zmodem.ZCBIN, 0, 0, 0).as32(crc32));
-            out.data(b, 0, b.length, Zmodem.ZCRCW, crc32);
             ZHeader h;
-            try {
-                h = in.header(timeoutMillis, null);
-            } catch (ZFrameReader.Timeout e) {
-                continue;
+            if (pending != null) {
+                h = pending;
+                pending = null;
+            } else {
+                out.binary(ZHeader.flags(Zmodem.ZFILE, Zmodem.ZCBIN, 0, 0, 0).as32(crc32));
+                out.data(b, 0, b.length, Zmodem.ZCRCW, crc32);
+                try {
+                    h = in.header(timeoutMillis, null);
+                } catch (ZFrameReader.Timeout e) {
+                    continue;
+                }
+            }
+            if (h.type() == Zmodem.ZRINIT) {
+                // a receiver that repeated its ZRINIT before our ZFILE reached it: its answer to
+                // the ZFILE may be on its way, and a second ZFILE would get a second ZRPOS that
+                // sends the stream back mid-file (sz waits for it too)
+                pending = backChannel(OFFER_DRAIN_MILLIS);
+                if (pending != null) {
+                    continue;
+                }
             }
             switch (h.type()) {
                 case Zmodem.ZRPOS -> {
@@ -204,6 +227,7 @@ public final class ZmodemSender {
             out.binary(ZHeader.position(Zmodem.ZDATA, pos).as32(crc32));
             long p = pos;
             long sinceAck = 0;
+            long lastLook = System.nanoTime();
             while (p < file.length()) {
                 checkCancel();
                 int n = s.readNBytes(buf, 0, (int) Math.min(SUBPACKET, file.length() - p));
@@ -224,7 +248,8 @@ public final class ZmodemSender {
                     }
                     sinceAck = 0;
                     out.binary(ZHeader.position(Zmodem.ZDATA, p).as32(crc32));
-                } else if (in.ready()) {
+                } else if (System.nanoTime() - lastLook > LOOK_EVERY_NANOS && in.ready()) {
+                    lastLook = System.nanoTime();
                     ZHeader h = backChannel();
                     if (h != null && h.type() == Zmodem.ZRPOS) {
                         return h;
@@ -279,6 +304,8 @@ public final class ZmodemSender {
                 }
             } catch (ZFrameReader.Timeout e) {
                 // ZFIN lost: again
+            } catch (java.io.EOFException e) {
+                return; // the receiver has the file (its ZRINIT said so) and hung up before its ZFIN arrived
             }
         }
         // the file is there (ZRINIT said so); an rz that never answers ZFIN times out on its own
@@ -291,11 +318,14 @@ public final class ZmodemSender {
      */
     private void overAndOut() throws IOException {
         for (int i = 0; i < 3; i++) {
-            out.raw("OO".getBytes(StandardCharsets.ISO_8859_1));
             ZHeader again;
             try {
+                out.raw("OO".getBytes(StandardCharsets.ISO_8859_1));
                 again = backChannel(OO_REPEAT_MILLIS);
-            } catch (java.io.EOFException e) {
+            } catch (IOException e) {
+                if (i == 0 && !(e instanceof java.io.EOFException)) {
+                    throw e;
+                }
                 return; // rz took the "OO" and ended, and with it a link that was only rz
             }
             if (again == null || again.type() != Zmodem.ZFIN) {
