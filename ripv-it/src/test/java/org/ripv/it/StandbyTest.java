@@ -74,7 +74,9 @@ class StandbyTest {
             String secret = d1.resolve("service.secret").toString();
             List<Process> services = new ArrayList<>();
             services.add(net.java("svc", logs.resolve("serial.log"), "org.ripv.services.ServicesMain", "serial", "--server",
-                    REGISTRIES, "--secret-file", secret, "--host", SVC, "--link", "tcp://" + VEH + ":2323", "--carrier", "ignore",
+                    REGISTRIES, "--secret-file", secret, "--host", SVC, "--link", "tcp://" + VEH + ":2323",
+                    // ru99: a vehicle that never calls in this test, so work queued for it stays queued
+                    "--link", "listen://" + SVC + ":2424,name=ru99", "--carrier", "ignore",
                     "--no-enumerate", "--idle-timeout", "1000", "--reconnect", "1", "--work", dir.resolve("work").toString()));
             services.add(net.java("svc", logs.resolve("clock.log"), "org.ripv.examples.ClockService", "--server", REGISTRIES,
                     "--secret-file", secret, "--host", SVC));
@@ -84,7 +86,8 @@ class StandbyTest {
             // State on the first server: a queued workflow, and the vehicle's lines in the transcript.
             Path wf = dir.resolve("later.wf");
             Files.writeString(wf, "workflow once\nsend dir\nnotify after the takeover\n", StandardCharsets.UTF_8);
-            // Queued for a vehicle that has not called yet, so it stays queued through the takeover.
+            // Queued for a vehicle that has not called yet (queues are only for MailBoxes a service has),
+            // so it stays queued through the takeover.
             String ru99 = SERIAL + "ru99";
             Cli setUp = cli(net, logs, "put " + wf, "?queue add " + ru99 + " later.wf", "use " + glider, "dir");
             assertThat(setUp.exit).as(setUp.out).isZero();
