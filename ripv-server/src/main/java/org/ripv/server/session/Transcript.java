@@ -92,7 +92,7 @@ public final class Transcript implements AutoCloseable {
         this.store = store;
         this.ownsStore = ownsStore;
         this.keepDays = Math.max(1, keepDays);
-        Files.createDirectories(root);
+        org.ripv.files.PrivateFiles.createDirectories(root); // owner-only whatever the umask (issue 23, item 13)
         this.writer = new BatchWriter<>("ripv-transcript-writer", QUEUE, 4096, new BatchWriter.Sink<>() {
             @Override
             public void started() {

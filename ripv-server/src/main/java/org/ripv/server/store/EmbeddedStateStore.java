@@ -158,7 +158,7 @@ public final class EmbeddedStateStore implements StateStore {
     @Override
     public void saveVehicleState(String mailbox, String json) throws IOException {
         Path f = vehicleStateFile(mailbox);
-        Files.createDirectories(f.getParent());
+        DataFiles.directory(f.getParent()); // owner-only whatever the umask (issue 23, item 13), as the transcript writer makes it
         DataFiles.write(f, json);
     }
 
