@@ -87,6 +87,11 @@ final class HostsBench {
             Files.createDirectories(data[1]);
             Files.copy(data[0].resolve("service.secret"), data[1].resolve("service.secret"));
             Files.copy(data[0].resolve("permit.txt"), data[1].resolve("permit.txt"));
+            // the same TLS identity: a client that pinned the first refuses a standby with another certificate
+            Files.createDirectories(data[1].resolve("tls"));
+            for (String f : new String[] {"server.p12", "server.pass"}) {
+                Files.copy(data[0].resolve("tls").resolve(f), data[1].resolve("tls").resolve(f));
+            }
             servers[1] = server(net, 1, addr, data, logs, pg.url(), "0");
             await(logs.resolve("s2-0.log"), "standing by", 60);
             String clients = S1 + ":4444," + S2 + ":4444";

@@ -64,6 +64,8 @@ class StandbyTest {
             Files.createDirectories(d2);
             Files.copy(d1.resolve("service.secret"), d2.resolve("service.secret"));
             Files.copy(d1.resolve("permit.txt"), d2.resolve("permit.txt"));
+            // ... and the TLS identity: clients that pinned the first trust no other certificate for the list
+            copyTls(d1, d2);
             startServer(net, "s2", S2, d2, logs.resolve("s2.log"), pg.url());
             awaitLog(logs.resolve("s2.log"), "standing by", 60);
             assertThat(listening(net, "s2")).as("a standby listens on nothing").isEmpty();
@@ -257,6 +259,14 @@ class StandbyTest {
             }
         } catch (IOException e) {
             System.err.println("could not keep the logs: " + e);
+        }
+    }
+
+    /** Gives the standby the first server's certificate (docs/operations.md "A hot standby"). */
+    static void copyTls(Path from, Path to) throws java.io.IOException {
+        Files.createDirectories(to.resolve("tls"));
+        for (String f : new String[] {"server.p12", "server.pass"}) {
+            Files.copy(from.resolve("tls").resolve(f), to.resolve("tls").resolve(f));
         }
     }
 }
