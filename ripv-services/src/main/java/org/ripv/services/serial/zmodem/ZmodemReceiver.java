@@ -6,9 +6,6 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Objects;
-import java.util.function.BooleanSupplier;
-import java.util.function.Predicate;
 import org.ripv.services.serial.ymodem.ByteLink;
 import org.ripv.services.serial.ymodem.FileHeader;
 import org.ripv.services.serial.ymodem.FileNames;
@@ -22,7 +19,7 @@ import org.ripv.services.serial.ymodem.TransferListener;
  * <p>What arrived is written to the part as it is checked; a call that drops keeps it. A peer
  * that sends beyond the size it announced, or whose ZEOF disagrees with it, loses the part.
  */
-public final class ZmodemReceiver {
+public final class ZmodemReceiver extends ZmodemPeer<ZmodemReceiver> {
     /** One file received whole. */
     public record Received(FileHeader file, Path path, long resumedAt, String note) {
     }
@@ -34,37 +31,12 @@ public final class ZmodemReceiver {
     /** Bytes that are no frame tolerated outside a file's data (a shell's echo, a banner). */
     static final int BETWEEN_FILES_GARBAGE = 8192;
 
-    private final ZFrameReader in;
-    private final ZFrameWriter out;
-    private final TransferListener listener;
-    private final long timeoutMillis;
-    private long startTimeoutMillis;
-    private BooleanSupplier cancel = () -> false;
-    private Predicate<String> refusal;
-    private final byte[] buf = new byte[Zmodem.MAX_SUBPACKET];
-
     public ZmodemReceiver(ByteLink link, long timeoutMillis, TransferListener listener) {
-        this.in = new ZFrameReader(link);
-        this.out = new ZFrameWriter(link);
-        this.listener = listener == null ? TransferListener.NONE : listener;
-        this.timeoutMillis = timeoutMillis;
-        this.startTimeoutMillis = 3 * timeoutMillis;
+        super(link, timeoutMillis, listener);
     }
 
-    /** Stops (with the abort sequence) when this turns true. */
-    public ZmodemReceiver cancelWhen(BooleanSupplier c) {
-        this.cancel = Objects.requireNonNull(c);
-        return this;
-    }
-
-    /** Gives up waiting for the sender when the text before its first frame passes this test (a shell's refusal). */
-    public ZmodemReceiver refusedWhen(Predicate<String> r) {
-        this.refusal = r;
-        return this;
-    }
-
-    public ZmodemReceiver startTimeout(long millis) {
-        this.startTimeoutMillis = millis;
+    @Override
+    ZmodemReceiver self() {
         return this;
     }
 
@@ -359,16 +331,5 @@ public final class ZmodemReceiver {
                 default -> { } // ZCRCG: more follows
             }
         }
-    }
-
-    private void checkCancel() throws IOException {
-        if (cancel.getAsBoolean()) {
-            abort();
-            throw new ZmodemException(ZmodemException.Kind.LINE, "cancelled");
-        }
-    }
-
-    private void abort() throws IOException {
-        out.raw(Zmodem.ABORT);
     }
 }

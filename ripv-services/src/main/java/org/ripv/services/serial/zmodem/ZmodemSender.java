@@ -3,9 +3,6 @@ package org.ripv.services.serial.zmodem;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
-import java.util.Objects;
-import java.util.function.BooleanSupplier;
-import java.util.function.Predicate;
 import java.util.zip.CRC32;
 import org.ripv.services.serial.ymodem.ByteLink;
 import org.ripv.services.serial.ymodem.FileHeader;
@@ -18,7 +15,7 @@ import org.ripv.services.serial.ymodem.TransferListener;
  * from its length), goes back to any position it asks again, and ends with ZEOF, ZFIN and "OO".
  * A receiver asking for a position beyond the file is refused, not humoured.
  */
-public final class ZmodemSender {
+public final class ZmodemSender extends ZmodemPeer<ZmodemSender> {
     /** The data subpacket size: lrzsz's, a good fit for 2,400 baud and 115,200 alike. */
     static final int SUBPACKET = 1024;
     /** How long a header on the back channel may take to complete once its first byte is here. */
@@ -34,38 +31,15 @@ public final class ZmodemSender {
     /** How long a receiver's repeated ZFIN is waited for after "OO". */
     static final long OO_REPEAT_MILLIS = 500;
 
-    private final ZFrameReader in;
-    private final ZFrameWriter out;
-    private final TransferListener listener;
-    private final long timeoutMillis;
-    private long startTimeoutMillis;
-    private BooleanSupplier cancel = () -> false;
-    private Predicate<String> refusal;
     private boolean crc32 = true;
     private int receiverBuffer;
-    private final byte[] buf = new byte[Zmodem.MAX_SUBPACKET];
 
     public ZmodemSender(ByteLink link, long timeoutMillis, TransferListener listener) {
-        this.in = new ZFrameReader(link);
-        this.out = new ZFrameWriter(link);
-        this.listener = listener == null ? TransferListener.NONE : listener;
-        this.timeoutMillis = timeoutMillis;
-        this.startTimeoutMillis = 3 * timeoutMillis;
+        super(link, timeoutMillis, listener);
     }
 
-    public ZmodemSender cancelWhen(BooleanSupplier c) {
-        this.cancel = Objects.requireNonNull(c);
-        return this;
-    }
-
-    /** Gives up waiting for the receiver when the text before its ZRINIT passes this test (a shell's refusal). */
-    public ZmodemSender refusedWhen(Predicate<String> r) {
-        this.refusal = r;
-        return this;
-    }
-
-    public ZmodemSender startTimeout(long millis) {
-        this.startTimeoutMillis = millis;
+    @Override
+    ZmodemSender self() {
         return this;
     }
 
@@ -332,16 +306,5 @@ public final class ZmodemSender {
                 return;
             }
         }
-    }
-
-    private void checkCancel() throws IOException {
-        if (cancel.getAsBoolean()) {
-            abort();
-            throw new ZmodemException(ZmodemException.Kind.LINE, "cancelled");
-        }
-    }
-
-    private void abort() throws IOException {
-        out.raw(Zmodem.ABORT);
     }
 }
