@@ -198,19 +198,7 @@ final class YmodemCommands {
     }
 
     Reply put(Connection c, Request request) throws IOException, ServiceException {
-        List<String> args = request.arguments();
-        if (args.size() != 1) {
-            throw new ServiceException(ErrorCode.BAD_REQUEST, "ymodem:put takes one file name from the server's upload"
-                    + " directory, e.g. ymodem:put glider.bin; got " + args.size());
-        }
-        var attachment = request.attachment().orElseThrow(() -> new ServiceException(ErrorCode.BAD_REQUEST,
-                "no file '" + args.get(0) + "' came with ymodem:put; upload it to the server first (put FILE)"));
-        SendFile file;
-        try {
-            file = SendFile.of(FileNames.requirePlain(args.get(0)), attachment.data());
-        } catch (IllegalArgumentException e) {
-            throw new ServiceException(ErrorCode.BAD_FILE_NAME, e.getMessage());
-        }
+        SendFile file = PutFile.of(request, "ymodem:put");
         return transfer(c, request, () -> {
             for (int attempt = 0; ; attempt++) {
                 write(c, settings.receiveCommand());

@@ -211,19 +211,7 @@ final class ZmodemCommands {
     }
 
     Reply put(Connection c, Request request) throws IOException, ServiceException {
-        List<String> args = request.arguments();
-        if (args.size() != 1) {
-            throw new ServiceException(ErrorCode.BAD_REQUEST, "zmodem:put takes one file name from the server's upload"
-                    + " directory, e.g. zmodem:put glider.bin; got " + args.size());
-        }
-        var attachment = request.attachment().orElseThrow(() -> new ServiceException(ErrorCode.BAD_REQUEST,
-                "no file '" + args.get(0) + "' came with zmodem:put; upload it to the server first (put FILE)"));
-        SendFile file;
-        try {
-            file = SendFile.of(FileNames.requirePlain(args.get(0)), attachment.data());
-        } catch (IllegalArgumentException e) {
-            throw new ServiceException(ErrorCode.BAD_FILE_NAME, e.getMessage());
-        }
+        SendFile file = PutFile.of(request, "zmodem:put");
         return transfer(c, request, () -> send(c, request, file), () -> "");
     }
 
