@@ -14,7 +14,6 @@ import org.ripv.messages.IncomingServiceMessage;
 import org.ripv.messages.MailboxStatus;
 import org.ripv.messages.OutgoingServiceMessage;
 import org.ripv.messages.ServiceDescriptor;
-import org.ripv.probe.PortProbe;
 import org.ripv.rmi.GenericRMIInterface;
 import org.ripv.rmi.RmiSupport;
 import org.ripv.security.ServiceProof;
@@ -130,8 +129,8 @@ public final class ServiceConnector implements AutoCloseable {
                         where(), e.getClass().getSimpleName(), options.servers().size() > 1 ? " or another of " + options.servers() : "");
                 lost();
                 failOver();
-            } else if (notARegistry(e)) {
-                unmendable(wrongPort());
+            } else if (WrongRegistryPort.notARegistry(e)) {
+                unmendable(WrongRegistryPort.explain(host(), registryPort()));
             } else if (!warnedAway) {
                 warnedAway = true;
                 log.warn("{}: no RIPVServer at {} yet ({}); retrying every {} ms", service.name(),
@@ -185,30 +184,6 @@ public final class ServiceConnector implements AutoCloseable {
         }
         notice(why + (max > 0 ? " (try " + n + " of " + max + ")" : ""));
         return false;
-    }
-
-    /** True when what answered at the registry's address does not speak RMI at all (JRMP). */
-    private static boolean notARegistry(Exception e) {
-        for (Throwable t = e; t != null; t = t.getCause()) {
-            if (t instanceof java.rmi.ConnectIOException && String.valueOf(t.getMessage()).contains("non-JRMP")) {
-                return true;
-            }
-        }
-        return false;
-    }
-
-    /** What --server's port is, when it is not an RMI registry, and which port to give instead. */
-    private String wrongPort() {
-        String where = host() + ":" + registryPort();
-        PortProbe.Finding f = PortProbe.identify(host(), registryPort(), Duration.ofSeconds(3));
-        String is = switch (f) {
-            case RIPV_CLIENT_PORT, RIPV_CLIENT_PORT_PLAIN -> "RIPV's client port (where the CLI and the GUI log in)";
-            case HTTP -> "the server's web/landing page port";
-            default -> "not an RMI registry: " + f.what();
-        };
-        return where + " is " + is + ", not the server's RMI registry: give --server " + host()
-                + ":REGPORT with its registry port (1099 unless the server was started with --registry-port;"
-                + " it prints 'services register at HOST:PORT')";
     }
 
     /** After losing the server: try the others at once rather than a heartbeat later (a standby taking over). */
