@@ -34,8 +34,8 @@ public final class DataFiles {
      * audit log 0644, workflows/ 0755). Symbolic links are left alone.
      */
     public static void tighten(Path root) throws IOException {
-        if (!Files.isDirectory(root, java.nio.file.LinkOption.NOFOLLOW_LINKS)) {
-            return;
+        if (!Files.isDirectory(root, java.nio.file.LinkOption.NOFOLLOW_LINKS) || org.ripv.files.PrivateFiles.isShared(root)) {
+            return; // a shared folder (/tmp) holds others' files: never walked
         }
         try (var all = Files.walk(root)) {
             for (Path p : (Iterable<Path>) all::iterator) {

@@ -70,14 +70,22 @@ public final class EmbeddedStateStore implements StateStore {
         this.layout = layout;
         this.transcripts = new FileTranscripts(layout.transcripts(), transcriptFileBytes);
         // What an older version left readable by others: owner-only from this start on.
-        for (Path p : new Path[] {layout.transcripts(), layout.queues().getParent(), layout.queues(), layout.fetched(),
-                layout.receipts(), layout.subscriptions().getParent(), layout.audit()}) {
+        // Only folders this layout owns: a queue or receipt folder given alone (WorkflowQueues(dir)) has a
+        // parent that is not RIPV's, and tightening it walked a whole temp folder owner-only.
+        for (Path p : new Path[] {layout.transcripts(), ownParent(layout.queues(), "workflows"), layout.queues(),
+                layout.fetched(), layout.receipts(), ownParent(layout.subscriptions(), "notify"), layout.audit()}) {
             try {
                 DataFiles.tighten(p);
             } catch (IOException | RuntimeException e) {
                 log.warn("could not make {} owner-only: {}", p, e.toString());
             }
         }
+    }
+
+    /** {@code p}'s parent when it is the data directory's own folder of that name, else {@code p} itself. */
+    private static Path ownParent(Path p, String name) {
+        Path parent = p.toAbsolutePath().getParent();
+        return parent != null && parent.getFileName() != null && parent.getFileName().toString().equals(name) ? parent : p;
     }
 
     /** The standard layout of a data directory. */
