@@ -205,17 +205,21 @@ public final class GliderSimulator implements AutoCloseable {
                     throw e;
                 }
                 try {
-                    Duration away;
+                    Duration away = null;
                     Link link = wrap(new TcpLink(socket));
                     current = link;
                     try {
                         away = session(link);
+                        if (away != null) {
+                            // under water nobody can connect: shut the door before the caller sees the
+                            // link drop, or a caller quick to dial again got in before it closed
+                            serverSocket.close();
+                        }
                     } finally {
                         current = null;
                         link.close();
                     }
                     if (away != null) {
-                        serverSocket.close(); // under water nobody can connect
                         submerged = true;
                         dive(away);
                         if (running) {
