@@ -66,6 +66,12 @@ class FirstVehicleModelTest {
     void push(ConsoleEntry e) {
         dispatch(GuiManagerDispatchTest.reply("", "", "?watch " + e.mailbox(), Ids.FID_CONSOLE, Status.OK, "",
                 new ConsoleBatch(e.mailbox(), List.of(e), 0, false)));
+        // SessionStates takes an entry only when it is newer than the last contact (in milliseconds):
+        // the next event this test makes must not fall in the same millisecond as this one
+        long then = e.time();
+        while (System.currentTimeMillis() <= then) {
+            Thread.onSpinWait();
+        }
     }
 
     static MailboxStatus sim(SessionState.State state, int calls, String detail) {
