@@ -3,6 +3,7 @@ package org.ripv.it;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
+import java.io.ByteArrayOutputStream;
 import java.io.EOFException;
 import java.io.IOException;
 import java.io.InputStream;
@@ -59,6 +60,8 @@ class GliderDosEndToEndTest {
         final InputStream in;
         final OutputStream out;
         final StringBuilder said = new StringBuilder();
+        /** Where the next {@link #until} starts looking, when lrzsz gave back what it was handed after its transfer. */
+        int mark = -1;
 
         Call(Socket socket) throws IOException {
             this.socket = socket;
@@ -68,7 +71,8 @@ class GliderDosEndToEndTest {
 
         /** Reads until {@code text} has been said (since the last mark), within 60 s; returns what came. */
         String until(String text) throws IOException {
-            int from = said.length();
+            int from = mark >= 0 ? mark : said.length();
+            mark = -1;
             long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
             byte[] buf = new byte[4096];
             while (said.indexOf(text, from) < 0) {
@@ -245,6 +249,8 @@ class GliderDosEndToEndTest {
                 }
             }, "test-" + cmd[0] + "-out");
             out.start();
+            c.mark = c.said.length();
+            ByteArrayOutputStream handed = new ByteArrayOutputStream();
             byte[] buf = new byte[8192];
             c.socket.setSoTimeout(200);
             long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
@@ -258,6 +264,7 @@ class GliderDosEndToEndTest {
                     try {
                         toProcess.write(buf, 0, n);
                         toProcess.flush();
+                        handed.write(buf, 0, n);
                     } catch (IOException ended) {
                         c.said.append(new String(buf, 0, n, StandardCharsets.ISO_8859_1)); // after the transfer: the shell's
                     }
@@ -270,7 +277,28 @@ class GliderDosEndToEndTest {
                 return -1;
             }
             out.join(5000);
+            c.said.append(afterTheTransfer(handed.toString(StandardCharsets.ISO_8859_1)));
             return p.exitValue();
+        }
+
+        /**
+         * What the glider said after its last ZFIN (and the sender's "OO"): the process had it in its
+         * pipe when it exited, so it never reached the test though the glider printed it.
+         */
+        static String afterTheTransfer(String handed) {
+            int fin = handed.lastIndexOf("**\u0018B08");
+            if (fin < 0) {
+                return "";
+            }
+            int at = Math.min(handed.length(), fin + 4 + 14); // "**", ZDLE, 'B', then type, flags and CRC in hex
+            int oo = handed.indexOf("OO", at);
+            if (oo >= 0 && oo <= at + 4) {
+                at = oo + 2;
+            }
+            while (at < handed.length() && "\r\n\u008a\u0011".indexOf(handed.charAt(at)) >= 0) {
+                at++;
+            }
+            return handed.substring(at);
         }
     }
 }
