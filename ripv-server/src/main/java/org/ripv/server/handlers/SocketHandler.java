@@ -23,6 +23,10 @@ import org.slf4j.LoggerFactory;
  * queue, which the server's few {@link WriterPool} threads write (an idle client costs one
  * thread, its reader; docs/performance.md). A client that stops reading fills only its own
  * queue — and is then disconnected — while everyone else is served. Anything that breaks the protocol closes this connection and nothing else.
+ *
+ * <p>A web console page is a client of the same kind made with {@link #inProcess}: no socket, reader
+ * or writer, its requests handed in through {@link #received} and its messages given to its
+ * {@link Peer}; everything the server does with a client applies to it unchanged.
  */
 public final class SocketHandler {
     private static final Logger log = LoggerFactory.getLogger(SocketHandler.class);

@@ -5,9 +5,14 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
+import java.nio.ByteBuffer;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicLong;
 import org.eclipse.jetty.websocket.api.Callback;
 import org.eclipse.jetty.websocket.api.Session;
+import org.eclipse.jetty.websocket.common.WebSocketSession;
+import org.eclipse.jetty.websocket.core.Frame;
+import org.eclipse.jetty.websocket.core.OpCode;
 import org.ripv.messages.Header;
 import org.ripv.messages.IncomingServerMessage;
 import org.ripv.messages.OutgoingServerMessage;
@@ -23,7 +28,7 @@ import org.slf4j.LoggerFactory;
  * {@link SocketHandler} as that client's request, so the server's own rules decide; every reply
  * and console push goes back as JSON ({@link WebReplies}) with Jetty's asynchronous send.
  *
- * <p>What waits for a page is bounded: at most {@link #MAX_PUSHES} pushes not yet written (beyond
+ * <p>What waits for a page is bounded: at most {@link #MAX_PUSHES} pushes, {@link #MAX_PUSH_BYTES} bytes of them, not yet written (beyond
  * that the server's watcher holds the lines in its own bounded backlog and later tells the page
  * how many it skipped), and at most {@link WebConsole#MAX_QUEUED_FRAMES} frames in all, after
  * which the page is cut off. A page that stops reading thus costs its own few frames and slows
@@ -35,6 +40,8 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
     private static final ObjectMapper JSON = new ObjectMapper();
     /** Pushes queued on the socket and not yet written, beyond which a push is refused (the watcher keeps it). */
     static final int MAX_PUSHES = 64;
+    /** Bytes of pushes queued for this page, beyond which no more are taken (one is always let through). */
+    static final long MAX_PUSH_BYTES = 64 * 1024;
 
     private final WebSessions sessions;
     private final WebSessions.Session login;
@@ -42,6 +49,7 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
     private final PushJson json;
     private final InetAddress address;
     private final AtomicInteger queued = new AtomicInteger();
+    private final AtomicLong pushBytes = new AtomicLong();
     private volatile Session socket;
     private volatile SocketHandler client;
 
@@ -89,15 +97,20 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
 
     @Override
     public boolean send(OutgoingServerMessage reply) {
-        return sendText(reply.header().messageId() == 0 ? json.of(reply) : json.reply(reply), null);
+        return reply.header().messageId() == 0 ? sendShared(json.of(reply), null) : sendText(json.reply(reply), null);
     }
 
+    /**
+     * A push: refused while {@link #MAX_PUSHES} are queued, or while the pushes waiting add up to
+     * {@link #MAX_PUSH_BYTES} (counted as if each were this page's alone, though a push every
+     * watcher shares is in memory once); one is always let through, however large.
+     */
     @Override
     public boolean push(OutgoingServerMessage message, Runnable written) {
-        if (queued.get() >= MAX_PUSHES) {
+        if (queued.get() >= MAX_PUSHES || queued.get() > 0 && pushBytes.get() >= MAX_PUSH_BYTES) {
             return false;
         }
-        return sendText(json.of(message), written);
+        return sendShared(json.of(message), written);
     }
 
     @Override
@@ -105,36 +118,77 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
         return address;
     }
 
-    /** Queues one frame; false when the socket is closed or the page has too much waiting (it is then cut off). */
+    /** Queues a frame of this page's own (a reply); false when closed or too much waits (the page is then cut off). */
     private boolean sendText(String text, Runnable written) {
         Session s = socket;
-        if (s == null || !s.isOpen()) {
+        if (s == null || !s.isOpen() || !admit()) {
             return false;
         }
+        s.sendText(text, new Callback() {
+            @Override
+            public void succeed() {
+                ConsoleSocket.this.written(0, written);
+            }
+
+            @Override
+            public void fail(Throwable x) {
+                failed(0, x);
+            }
+        });
+        return true;
+    }
+
+    /**
+     * Queues a text frame whose UTF-8 bytes may be shared with other pages ({@link PushJson}):
+     * Jetty's core session (under the API's session Jetty gives us) sends a duplicate of the
+     * buffer, so the bytes are not copied per page.
+     */
+    private boolean sendShared(ByteBuffer utf8, Runnable written) {
+        Session s = socket;
+        if (s == null || !s.isOpen() || !admit()) {
+            return false;
+        }
+        int own = utf8.remaining();
+        pushBytes.addAndGet(own);
+        ((WebSocketSession) s).getCoreSession().sendFrame(new Frame(OpCode.TEXT, utf8.duplicate()), new org.eclipse.jetty.util.Callback() {
+            @Override
+            public void succeeded() {
+                ConsoleSocket.this.written(own, written);
+            }
+
+            @Override
+            public void failed(Throwable x) {
+                ConsoleSocket.this.failed(own, x);
+            }
+        }, false);
+        return true;
+    }
+
+    /** Counts one more frame waiting; false (and the page is cut off) past {@link WebConsole#MAX_QUEUED_FRAMES}. */
+    private boolean admit() {
         if (queued.incrementAndGet() > WebConsole.MAX_QUEUED_FRAMES) {
             queued.decrementAndGet();
             log.info("web console socket of {} from {} is not reading; cutting it off", login.user, address.getHostAddress());
             close();
             return false;
         }
-        s.sendText(text, new Callback() {
-            @Override
-            public void succeed() {
-                queued.decrementAndGet();
-                if (written != null) {
-                    written.run();
-                }
-            }
-
-            @Override
-            public void fail(Throwable x) {
-                queued.decrementAndGet();
-                // The socket broke or Jetty's own queue is full: cut it off.
-                log.info("web console socket of {} closed: {}", login.user, x.toString());
-                close();
-            }
-        });
         return true;
+    }
+
+    private void written(int bytes, Runnable then) {
+        pushBytes.addAndGet(-bytes);
+        queued.decrementAndGet();
+        if (then != null) {
+            then.run();
+        }
+    }
+
+    private void failed(int bytes, Throwable x) {
+        pushBytes.addAndGet(-bytes);
+        queued.decrementAndGet();
+        // The socket broke or Jetty's own queue is full: cut it off.
+        log.info("web console socket of {} closed: {}", login.user, x.toString());
+        close();
     }
 
     @Override
