@@ -7,7 +7,6 @@ import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.nio.ByteBuffer;
 import java.util.concurrent.atomic.AtomicInteger;
-import java.util.concurrent.atomic.AtomicLong;
 import org.eclipse.jetty.websocket.api.Callback;
 import org.eclipse.jetty.websocket.api.Session;
 import org.eclipse.jetty.websocket.common.WebSocketSession;
@@ -28,7 +27,7 @@ import org.slf4j.LoggerFactory;
  * {@link SocketHandler} as that client's request, so the server's own rules decide; every reply
  * and console push goes back as JSON ({@link WebReplies}) with Jetty's asynchronous send.
  *
- * <p>What waits for a page is bounded: at most {@link #MAX_PUSHES} pushes, {@link #MAX_PUSH_BYTES} bytes of them, not yet written (beyond
+ * <p>What waits for a page is bounded: at most {@link #MAX_PUSHES} pushes not yet written (beyond
  * that the server's watcher holds the lines in its own bounded backlog and later tells the page
  * how many it skipped), and at most {@link WebConsole#MAX_QUEUED_FRAMES} frames in all, after
  * which the page is cut off. A page that stops reading thus costs its own few frames and slows
@@ -40,8 +39,6 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
     private static final ObjectMapper JSON = new ObjectMapper();
     /** Pushes queued on the socket and not yet written, beyond which a push is refused (the watcher keeps it). */
     static final int MAX_PUSHES = 64;
-    /** Bytes of pushes queued for this page, beyond which no more are taken (one is always let through). */
-    static final long MAX_PUSH_BYTES = 64 * 1024;
 
     private final WebSessions sessions;
     private final WebSessions.Session login;
@@ -49,7 +46,6 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
     private final PushJson json;
     private final InetAddress address;
     private final AtomicInteger queued = new AtomicInteger();
-    private final AtomicLong pushBytes = new AtomicLong();
     private volatile Session socket;
     private volatile SocketHandler client;
 
@@ -101,13 +97,13 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
     }
 
     /**
-     * A push: refused while {@link #MAX_PUSHES} are queued, or while the pushes waiting add up to
-     * {@link #MAX_PUSH_BYTES} (counted as if each were this page's alone, though a push every
-     * watcher shares is in memory once); one is always let through, however large.
+     * A push: refused while {@link #MAX_PUSHES} frames are queued. The console hub's watcher keeps
+     * fewer than that in flight and holds the rest itself (a refused push would be lost to this
+     * page, so no tighter rule may refuse one here: a cap on bytes did, and lost lines silently).
      */
     @Override
     public boolean push(OutgoingServerMessage message, Runnable written) {
-        if (queued.get() >= MAX_PUSHES || queued.get() > 0 && pushBytes.get() >= MAX_PUSH_BYTES) {
+        if (queued.get() >= MAX_PUSHES) {
             return false;
         }
         return sendShared(json.of(message), written);
@@ -127,12 +123,12 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
         s.sendText(text, new Callback() {
             @Override
             public void succeed() {
-                ConsoleSocket.this.written(0, written);
+                ConsoleSocket.this.written(written);
             }
 
             @Override
             public void fail(Throwable x) {
-                failed(0, x);
+                ConsoleSocket.this.failed(x);
             }
         });
         return true;
@@ -148,17 +144,15 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
         if (s == null || !s.isOpen() || !admit()) {
             return false;
         }
-        int own = utf8.remaining();
-        pushBytes.addAndGet(own);
         ((WebSocketSession) s).getCoreSession().sendFrame(new Frame(OpCode.TEXT, utf8.duplicate()), new org.eclipse.jetty.util.Callback() {
             @Override
             public void succeeded() {
-                ConsoleSocket.this.written(own, written);
+                ConsoleSocket.this.written(written);
             }
 
             @Override
             public void failed(Throwable x) {
-                ConsoleSocket.this.failed(own, x);
+                ConsoleSocket.this.failed(x);
             }
         }, false);
         return true;
@@ -175,16 +169,14 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
         return true;
     }
 
-    private void written(int bytes, Runnable then) {
-        pushBytes.addAndGet(-bytes);
+    private void written(Runnable then) {
         queued.decrementAndGet();
         if (then != null) {
             then.run();
         }
     }
 
-    private void failed(int bytes, Throwable x) {
-        pushBytes.addAndGet(-bytes);
+    private void failed(Throwable x) {
         queued.decrementAndGet();
         // The socket broke or Jetty's own queue is full: cut it off.
         log.info("web console socket of {} closed: {}", login.user, x.toString());
