@@ -5,13 +5,9 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
-import java.nio.ByteBuffer;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.eclipse.jetty.websocket.api.Callback;
 import org.eclipse.jetty.websocket.api.Session;
-import org.eclipse.jetty.websocket.common.WebSocketSession;
-import org.eclipse.jetty.websocket.core.Frame;
-import org.eclipse.jetty.websocket.core.OpCode;
 import org.ripv.messages.Header;
 import org.ripv.messages.IncomingServerMessage;
 import org.ripv.messages.OutgoingServerMessage;
@@ -93,7 +89,7 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
 
     @Override
     public boolean send(OutgoingServerMessage reply) {
-        return reply.header().messageId() == 0 ? sendShared(json.of(reply), null) : sendText(json.reply(reply), null);
+        return sendText(reply.header().messageId() == 0 ? json.of(reply) : json.reply(reply), null);
     }
 
     /**
@@ -106,7 +102,7 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
         if (queued.get() >= MAX_PUSHES) {
             return false;
         }
-        return sendShared(json.of(message), written);
+        return sendText(json.of(message), written);
     }
 
     @Override
@@ -114,7 +110,7 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
         return address;
     }
 
-    /** Queues a frame of this page's own (a reply); false when closed or too much waits (the page is then cut off). */
+    /** Queues one frame; false when the socket is closed or too much waits (the page is then cut off). */
     private boolean sendText(String text, Runnable written) {
         Session s = socket;
         if (s == null || !s.isOpen() || !admit()) {
@@ -131,30 +127,6 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
                 ConsoleSocket.this.failed(x);
             }
         });
-        return true;
-    }
-
-    /**
-     * Queues a text frame whose UTF-8 bytes may be shared with other pages ({@link PushJson}):
-     * Jetty's core session (under the API's session Jetty gives us) sends a duplicate of the
-     * buffer, so the bytes are not copied per page.
-     */
-    private boolean sendShared(ByteBuffer utf8, Runnable written) {
-        Session s = socket;
-        if (s == null || !s.isOpen() || !admit()) {
-            return false;
-        }
-        ((WebSocketSession) s).getCoreSession().sendFrame(new Frame(OpCode.TEXT, utf8.duplicate()), new org.eclipse.jetty.util.Callback() {
-            @Override
-            public void succeeded() {
-                ConsoleSocket.this.written(written);
-            }
-
-            @Override
-            public void failed(Throwable x) {
-                ConsoleSocket.this.failed(x);
-            }
-        }, false);
         return true;
     }
 
