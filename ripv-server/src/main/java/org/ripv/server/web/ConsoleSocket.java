@@ -13,7 +13,8 @@ import org.slf4j.LoggerFactory;
 
 /**
  * One page's WebSocket ({@code /ws}): a Post Office client. The page sends
- * {@code {"id":7,"mailbox":"…","body":"dir","priority":"normal","csrf":"…"}}; this forwards it
+ * {@code {"id":7,"mailbox":"…","body":"dir","priority":"normal","csrf":"…"}} (an upload chunk adds
+ * {@code "file"} and {@code "data"}, see {@link FileChunks}); this forwards it
  * unchanged over its {@link PostOfficeLink}, so the server's own rules decide; every reply and
  * console push goes back as JSON ({@link WebReplies}). A browser that stops reading fills Jetty's
  * bounded outgoing queue and is disconnected; the link's own reply queue in the server is bounded
@@ -68,7 +69,7 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Auto
             PostOfficeLink l = link;
             if (l != null) {
                 l.send(m.path("id").asLong(), m.path("mailbox").asText(""), m.path("body").asText(""),
-                        Priority.parse(m.path("priority").asText("normal")));
+                        Priority.parse(m.path("priority").asText("normal")), FileChunks.attachment(m));
             }
         } catch (IOException | IllegalArgumentException e) {
             sendJson("{\"type\":\"error\",\"text\":" + quote("could not send: " + e.getMessage()) + "}");

@@ -7,6 +7,7 @@ import java.io.DataOutputStream;
 import java.io.IOException;
 import java.net.Socket;
 import java.util.function.Consumer;
+import org.ripv.messages.Attachment;
 import org.ripv.messages.Header;
 import org.ripv.messages.IncomingServerMessage;
 import org.ripv.messages.Message;
@@ -47,9 +48,10 @@ final class PostOfficeLink implements AutoCloseable {
         reader.start();
     }
 
-    /** Sends one request as this client (the server stamps user and roles). */
-    synchronized void send(long messageId, String mailbox, String body, Priority priority) throws IOException {
-        codec.write(out, new IncomingServerMessage(Header.request(messageId, mailbox, body, priority)));
+    /** Sends one request as this client (the server stamps user and roles), with a file chunk or null. */
+    synchronized void send(long messageId, String mailbox, String body, Priority priority, Attachment file) throws IOException {
+        Header h = Header.request(messageId, mailbox, body, priority);
+        codec.write(out, new IncomingServerMessage(file == null ? h : h.withAttachment(file)));
     }
 
     private void read(Consumer<OutgoingServerMessage> replies, Runnable gone) {
