@@ -11,7 +11,6 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.LinkedBlockingQueue;
@@ -44,7 +43,6 @@ class WebFilesBrowserTest {
 
     @TempDir
     static Path dir;
-    static final List<Process> processes = new ArrayList<>();
     static int http;
     static String glider;
     static Path data;
@@ -52,40 +50,24 @@ class WebFilesBrowserTest {
     static HttpServer receiver;
     static final LinkedBlockingQueue<String> hooks = new LinkedBlockingQueue<>();
 
+    static LaunchedProcesses system;
+
     static Process launch(String name, String input, String... args) throws IOException {
-        List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Xmx256m"));
-        cmd.addAll(List.of(args));
-        Process p = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(dir.resolve(name + ".log").toFile()).start();
-        if (input != null) {
-            p.getOutputStream().write(input.getBytes(StandardCharsets.UTF_8));
-        }
-        p.getOutputStream().close();
-        processes.add(p);
-        return p;
+        return system.launch(name, input, args);
     }
 
     static String log(String name) {
-        try {
-            return Files.readString(dir.resolve(name + ".log"));
-        } catch (IOException e) {
-            return "";
-        }
+        return system.log(name);
     }
 
     static void waitFor(String what, java.util.function.BooleanSupplier check) throws InterruptedException {
-        long end = System.nanoTime() + T.toNanos();
-        while (System.nanoTime() < end) {
-            if (check.getAsBoolean()) {
-                return;
-            }
-            Thread.sleep(200); // processes of our own starting: nothing to be told by
-        }
-        throw new AssertionError("waited " + T + " for " + what + "; logs in " + dir);
+        system.waitFor(what, check);
     }
 
     @BeforeAll
     static void startTheSystem() throws Exception {
         Chromium.assume();
+        system = new LaunchedProcesses(dir, T);
         shots = Files.createDirectories(WebConsoleBrowserTest.root().resolve("ripv-it/target/web-screenshots"));
         receiver = HttpServer.create(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0), 16);
         receiver.createContext("/hook", x -> {
@@ -129,15 +111,8 @@ class WebFilesBrowserTest {
         if (receiver != null) {
             receiver.stop(0);
         }
-        processes.forEach(Process::destroy);
-        for (Process p : processes) {
-            try {
-                if (!p.waitFor(10, TimeUnit.SECONDS)) {
-                    p.destroyForcibly();
-                }
-            } catch (InterruptedException e) {
-                p.destroyForcibly();
-            }
+        if (system != null) {
+            system.stopAll();
         }
     }
 
@@ -156,13 +131,16 @@ class WebFilesBrowserTest {
         new WebDriverWait(b, T).until(d -> "true".equals(d.findElement(By.tagName("body")).getAttribute("data-ready")));
     }
 
-    /** Desktop and phone screenshots; on the phone nothing scrolls sideways. */
-    static void shots(ChromeDriver b, String name) throws IOException {
+    /** Desktop and phone screenshots with the element {@code show} in view; on the phone nothing scrolls sideways. */
+    static void shots(ChromeDriver b, String name, String show) throws IOException {
+        String scroll = "document.getElementById(arguments[0]).scrollIntoView({block: 'center'})";
+        b.executeScript(scroll, show);
         Files.write(shots.resolve(name + "-desktop.png"), b.getScreenshotAs(OutputType.BYTES));
         b.manage().window().setSize(new Dimension(390, 844));
         try {
             assertThat((Long) b.executeScript("return document.documentElement.scrollWidth - document.documentElement.clientWidth"))
                     .as("no sideways scrolling on a phone: " + name).isLessThanOrEqualTo(0L);
+            b.executeScript(scroll, show);
             Files.write(shots.resolve(name + "-phone.png"), b.getScreenshotAs(OutputType.BYTES));
         } finally {
             b.manage().window().setSize(new Dimension(1280, 900));
@@ -197,6 +175,7 @@ class WebFilesBrowserTest {
             assertThat(lines.get(2).getText()).startsWith("ymodem:gte MISSION1.LOG").contains("typo.wf:3: unknown step 'ymodem:gte'");
             assertThat(text(b, "add-status")).startsWith("Error: typo.wf:3:");
             assertThat(text(b, "queue-status")).contains("is empty");
+            shots(b, "queue", "wf-lines");
 
             // A workflow file from this computer: uploaded into the store, then queued.
             Path wf = dir.resolve("fetch-log.wf");
@@ -205,7 +184,6 @@ class WebFilesBrowserTest {
             b.findElement(By.id("add-file")).click();
             wait.until(d -> text(d, "add-status").contains("queued workflow"));
             assertThat(b.findElement(By.id("wf-lines")).isDisplayed()).isFalse();
-            shots(b, "queue");
             // It runs on the glider's call (now, or the next one): its receipt appears, open it.
             wait.withMessage(() -> "no receipt of fetch-log.wf DONE; the page says: " + text(b, "receipts-status") + " / "
                     + text(b, "receipts") + " / " + text(b, "queue-status") + " / " + text(b, "queue")).until(d -> {
@@ -259,7 +237,7 @@ class WebFilesBrowserTest {
             b.findElement(By.id("upload-file")).sendKeys(wf.toString());
             b.findElement(By.id("upload")).click();
             wait.until(d -> text(d, "upload-status").startsWith("stored as"));
-            shots(b, "files");
+            shots(b, "files", "name");
         } finally {
             b.quit();
         }
@@ -296,7 +274,7 @@ class WebFilesBrowserTest {
             b.findElement(By.id("add")).click();
             wait.until(d -> text(d, "add-status").startsWith("Error"));
             assertThat(text(b, "add-status")).contains("10.1.2.3");
-            shots(b, "notify");
+            shots(b, "notify", "subscriptions");
             b.findElement(By.cssSelector("#subscriptions li[data-id] button")).click();
             wait.until(d -> text(d, "list-status").startsWith("0 subscription"));
             assertThat(b.findElements(By.cssSelector("#subscriptions li"))).isEmpty();

@@ -47,7 +47,7 @@ function showLines(text, reply, file) {
   const m = reply.status === 'ERROR' ? /^(.+?):(\d+): ([\s\S]*)$/.exec(reply.text) : null;
   if (!m || (file && m[1] !== file)) { box.hidden = true; return; }
   const at = Number(m[2]);
-  box.replaceChildren(...text.split('\n').map((line, i) => {
+  box.replaceChildren(...text.replace(/\n$/, '').split('\n').map((line, i) => {
     const li = el('li', line || ' ');
     if (i + 1 === at) {
       li.className = 'bad';
