@@ -33,7 +33,8 @@ import org.openqa.selenium.support.ui.WebDriverWait;
  * items 4 and 6), as launched: the server, the SerialPortServer and the simulated glider are
  * processes from the jars, and a headless Chromium uploads a workflow and queues it, sees its
  * receipt after the glider's next call, sees a typed workflow's error at its line, downloads
- * the file the glider sent, fetches one with the {@code ymodem:get} button, and adds and removes a
+ * the file the glider sent, fetches one with the {@code ymodem:get} button, removes one queued
+ * workflow and clears the queue, and adds and removes a
  * webhook that a real HTTP receiver on this host gets. Screenshots of each page, desktop and phone,
  * go to {@code target/web-screenshots/}.
  */
@@ -238,6 +239,31 @@ class WebFilesBrowserTest {
             b.findElement(By.id("upload")).click();
             wait.until(d -> text(d, "upload-status").startsWith("stored as"));
             shots(b, "files", "name");
+
+            // Two workflows that wait: the first runs (its wait-for never matches), the second waits behind it.
+            // Remove takes the second out; Clear takes the rest.
+            open(b, "queue.html");
+            for (String name : List.of("hold.wf", "later.wf")) {
+                WebElement steps = b.findElement(By.id("wf-text"));
+                steps.clear();
+                steps.sendKeys("workflow once\nwait-for 'NEVER PRINTED' timeout=20s\n");
+                b.findElement(By.id("wf-name")).clear();
+                b.findElement(By.id("wf-name")).sendKeys(name);
+                b.findElement(By.id("add-typed")).click();
+                wait.until(d -> text(d, "add-status").startsWith("queued workflow") && text(d, "add-status").contains(name));
+            }
+            wait.until(d -> d.findElements(By.cssSelector("#queue li")).size() == 2);
+            WebElement later = b.findElements(By.cssSelector("#queue li")).stream().filter(li -> li.getText().contains("later.wf"))
+                    .findFirst().orElseThrow();
+            later.findElement(By.tagName("button")).click();
+            wait.until(d -> text(d, "queue-reply").startsWith("removed workflow"));
+            assertThat(text(b, "queue-reply")).contains("later.wf");
+            wait.until(d -> d.findElements(By.cssSelector("#queue li")).size() == 1);
+            assertThat(text(b, "queue")).contains("hold.wf");
+            b.findElement(By.id("clear-queue")).click();
+            b.switchTo().alert().accept();
+            wait.until(d -> text(d, "queue-reply").startsWith("removed 1 workflow(s)"));
+            wait.until(d -> text(d, "queue-status").contains("is empty"));
         } finally {
             b.quit();
         }

@@ -27,7 +27,7 @@ async function listQueue() {
     if (!observerOnly(s)) {
       li.append(button('Remove', async () => {
         const x = await po.send('', `?queue remove ${mailbox} ${m[1]}`);
-        say($('queue-status'), x);
+        say($('queue-reply'), { ...x, text: x.text.split('\n')[0] });
         if (x.status !== 'ERROR') listQueue();
       }));
     }
@@ -63,7 +63,7 @@ function showLines(text, reply, file) {
 
 async function queueFile(name, text) {
   const r = await po.send('', `?queue add ${mailbox} ${name}`);
-  say($('add-status'), r);
+  say($('add-status'), r.status === 'ERROR' ? r : { ...r, text: r.text.split('\n')[0] }); // the listing is shown above
   showLines(text ?? '', r, name);
   if (r.status !== 'ERROR') listQueue();
   return r;
@@ -95,7 +95,7 @@ $('typed-form').addEventListener('submit', async (e) => {
 $('refresh-queue').addEventListener('click', listQueue);
 $('clear-queue').addEventListener('click', async () => {
   if (!confirm(`Remove every workflow from the queue of ${handle}?`)) return;
-  say($('queue-status'), await po.send('', `?queue clear ${mailbox}`));
+  say($('queue-reply'), await po.send('', `?queue clear ${mailbox}`));
   listQueue();
 });
 
