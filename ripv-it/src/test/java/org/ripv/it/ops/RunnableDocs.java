@@ -61,8 +61,12 @@ final class RunnableDocs {
             String line = lines.get(i);
             String t = line.strip();
             if (fence == null && (t.startsWith("```") || t.startsWith("~~~"))) {
-                fence = t.substring(0, 3);
-                List<String> info = List.of(t.substring(3).strip().split("\\s+"));
+                int n = 0;
+                while (n < t.length() && t.charAt(n) == t.charAt(0)) {
+                    n++; // a block shown inside a block opens with four backticks
+                }
+                fence = t.substring(0, n);
+                List<String> info = List.of(t.substring(n).strip().split("\\s+"));
                 inRunnable = info.contains(MARKER);
                 continue;
             }
