@@ -19,7 +19,8 @@ import org.junit.jupiter.api.Test;
  * {@code synopsis} block shows a command's form with placeholders and brackets, a {@code markdown}
  * block shows a piece of a page; any other block names its language or {@code text}, and must not
  * hold a {@code ripv}, {@code mvn} or {@code java} command line (that is a shell block wearing
- * another name).
+ * another name). An indented code block cannot say any of this, so one holding a command line fails
+ * too.
  */
 class DocsCodeBlocksTest {
     static final Set<String> SHELLS = Set.of("sh", "bash", "shell", "console");
@@ -44,10 +45,7 @@ class DocsCodeBlocksTest {
         for (int i = 0; i < lines.size(); i++) {
             String t = lines.get(i).strip();
             if (fence == null && (t.startsWith("```") || t.startsWith("~~~"))) {
-                int n = 0;
-                while (n < t.length() && t.charAt(n) == t.charAt(0)) {
-                    n++;
-                }
+                int n = RunnableDocs.fenceLength(t);
                 fence = t.substring(0, n);
                 info = t.substring(n).strip();
                 start = i + 1;
@@ -60,6 +58,33 @@ class DocsCodeBlocksTest {
             }
         }
         assertThat(fence).as(doc.getFileName() + ": the block opened at line " + start + " is never closed").isNull();
+        return out;
+    }
+
+    /** The lines of indented (unfenced) code blocks that hold a command line. */
+    static List<String> indentedCommands(Path doc) throws Exception {
+        List<String> lines = Files.readAllLines(doc, StandardCharsets.UTF_8);
+        List<String> out = new ArrayList<>();
+        String fence = null;
+        boolean inIndented = false;
+        for (int i = 0; i < lines.size(); i++) {
+            String l = lines.get(i);
+            String t = l.strip();
+            if (fence == null && (t.startsWith("```") || t.startsWith("~~~"))) {
+                fence = t.substring(0, RunnableDocs.fenceLength(t));
+                continue;
+            }
+            if (fence != null) {
+                fence = t.equals(fence) ? null : fence;
+                continue;
+            }
+            boolean indented = l.startsWith("    ") && !t.isEmpty();
+            inIndented = indented && (inIndented || i > 0 && lines.get(i - 1).isBlank());
+            if (inIndented && COMMAND.matcher(t).matches()) {
+                out.add(doc.getFileName() + ":" + (i + 1) + " is an indented command (" + t
+                        + "): put it in a fenced sh block that says whether it runs");
+            }
+        }
         return out;
     }
 
@@ -101,6 +126,7 @@ class DocsCodeBlocksTest {
                 }
                 shells += SHELLS.contains(b.info().split("\\s+")[0]) ? 1 : 0;
             }
+            bad.addAll(indentedCommands(doc));
         }
         assertThat(bad).as("docs code blocks (docs/README.md, 'Code blocks')").isEmpty();
         assertThat(shells).as("shell blocks found (the scan works)").isGreaterThan(10);
