@@ -4,7 +4,6 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.io.ByteArrayInputStream;
-import java.io.ByteArrayOutputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.sql.Connection;
@@ -12,10 +11,8 @@ import java.sql.DriverManager;
 import java.sql.ResultSet;
 import java.sql.Statement;
 import java.util.ArrayList;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
-import java.util.Map;
 import java.util.Properties;
 import java.util.concurrent.ThreadLocalRandom;
 import org.junit.jupiter.api.Test;
@@ -131,30 +128,15 @@ class CycleOnceTest {
 
     /** The .dbd of the .sbd: the same cycles, m_depth + 0.5, and a sensor the .sbd does not carry. */
     static byte[] dbd(byte[] sbd, SensorListCache cache) throws Exception {
-        ByteArrayOutputStream out = new ByteArrayOutputStream();
+        int depth;
         try (SlocumBinaryReader r = new SlocumBinaryReader(new ByteArrayInputStream(sbd), "x.sbd", cache)) {
-            List<SlocumSensor> sensors = new ArrayList<>(r.sensors());
-            sensors.add(new SlocumSensor("x_dbd_only", "nodim", 8));
-            Map<String, String> tags = new LinkedHashMap<>();
-            tags.put("the8x3_filename", r.tags().get("the8x3_filename"));
-            tags.put("full_filename", r.tags().get("full_filename"));
-            tags.put("filename_extension", "dbd");
-            tags.put("mission_name", r.tags().get("mission_name"));
-            tags.put("fileopen_time", r.tags().get("fileopen_time"));
-            SlocumEncoder e = SlocumEncoder.start(out, tags, sensors);
-            int depth = indexOf(r.sensors(), "m_depth");
-            double[] row = new double[r.sensors().size()];
-            double[] wide = new double[sensors.size()];
-            int n = 0;
-            while (r.next(row)) {
-                System.arraycopy(row, 0, wide, 0, row.length);
-                wide[depth] = Double.isNaN(row[depth]) ? Double.NaN : (float) (row[depth] + 0.5);
-                wide[row.length] = ++n;
-                e.cycle(wide);
-            }
-            e.end();
+            depth = indexOf(r.sensors(), "m_depth");
+            int extra = r.sensors().size();
+            return SlocumEncoder.recode(sbd, cache, "dbd", List.of(new SlocumSensor("x_dbd_only", "nodim", 8)), (row, n) -> {
+                row[depth] = Double.isNaN(row[depth]) ? Double.NaN : (float) (row[depth] + 0.5);
+                row[extra] = n;
+            });
         }
-        return out.toByteArray();
     }
 
     /** A 4-byte sensor's values plus {@code plus} as the ingest stores them (the float's shortest decimal), NaNs left out. */
