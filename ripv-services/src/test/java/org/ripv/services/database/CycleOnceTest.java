@@ -13,6 +13,7 @@ import java.sql.Statement;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.Properties;
 import java.util.concurrent.ThreadLocalRandom;
 import org.junit.jupiter.api.Test;
@@ -120,6 +121,29 @@ class CycleOnceTest {
         assertThat(tbd.merged()).isEqualTo(tbd.rows()).isEqualTo(dba.rows());
         assertThat(count(c, "SELECT COUNT(*) FROM cycle")).isEqualTo(cycles);
         assertThat(count(c, "SELECT COUNT(*) FROM reading")).isEqualTo(readings);
+    }
+
+    /**
+     * Binary cycles go into the database as decoded, not through DBA text: a double keeps all its
+     * digits (dbd2asc's text has 15), a float is its own shortest decimal (the text has 6).
+     */
+    @Test
+    void binaryValuesAreStoredAsDecodedNotAsTheirDbaText() throws Exception {
+        java.io.ByteArrayOutputStream out = new java.io.ByteArrayOutputStream();
+        Map<String, String> tags = new java.util.LinkedHashMap<>();
+        tags.put("full_filename", "exact_1-2024-001-0-0");
+        tags.put("filename_extension", "sbd");
+        SlocumEncoder e = SlocumEncoder.start(out, tags, List.of(new SlocumSensor("m_present_time", "timestamp", 8),
+                new SlocumSensor("m_depth", "m", 4), new SlocumSensor("x_exact", "nodim", 8)));
+        e.cycle(new double[] {1.7e9, 1234.5678f, 0.12345678901234568});
+        e.end();
+        byte[] file = out.toByteArray();
+        try (Connection c = DriverManager.getConnection("jdbc:derby:" + tmp.resolve("exact") + ";create=true")) {
+            SqlScript.run(c, SqlScript.resource("slocumDB.sql"), "slocumDB.sql");
+            binary(new DbaIngest(c), "exact.sbd", file, null);
+            assertThat(doubles(c, "SELECT value FROM latest WHERE sensor = 'x_exact'")).containsExactly(0.12345678901234568);
+            assertThat(doubles(c, "SELECT value FROM latest WHERE sensor = 'm_depth'")).containsExactly(1234.5677); // the float 1234.5677490234375; the text would say 1234.57
+        }
     }
 
     static DbaIngest.Outcome binary(DbaIngest ingest, String name, byte[] data, SensorListCache cache) throws Exception {
