@@ -165,13 +165,22 @@ public final class Workflows implements AutoCloseable {
             }
             // A runner of the last call may still be winding up: the new one waits at its first
             // step boundary for the old one's lock to go, and resumes where it left off.
-            if (queues.list(mailbox).isEmpty()) {
+            if (queues.list(mailbox).isEmpty() && !toVehicleWaiting(mailbox)) {
                 return null;
             }
             Runner r = new Runner(this, mailbox);
             threads.execute(r);
             return r;
         });
+    }
+
+    private boolean toVehicleWaiting(String mailbox) {
+        try {
+            return !host.files().toVehiclePending(mailbox).isEmpty();
+        } catch (IOException e) {
+            log.warn("{}: cannot read its to-vehicle folder: {}", mailbox, e.toString());
+            return false;
+        }
     }
 
     /** The call ended: the step under way is cut and the run stops; what is left runs on the next call. */
