@@ -325,6 +325,7 @@ public final class FileStore {
      * Moves a to-vehicle file its vehicle now has into {@code sent/} (under a free name if an
      * earlier one of that name is there), with {@code receipt} beside it as {@code NAME.receipt};
      * returns the sent file's name. The receipt is written first: a file in {@code sent/} always has one.
+     * The file no longer counts against its uploader's quota.
      */
     public synchronized String toVehicleSent(String name, String receipt) throws IOException {
         ToVehicleFolder.Name n = ToVehicleFolder.parse(name);
@@ -346,10 +347,8 @@ public final class FileStore {
         }
         Files.move(from, sent.resolve(stored), StandardCopyOption.ATOMIC_MOVE);
         String sentName = ToVehicleFolder.DIR + "/" + n.folder() + "/" + ToVehicleFolder.SENT + "/" + stored;
-        String owner = owners.getProperty(name);
-        if (owner != null) {
-            owners.remove(name);
-            owners.setProperty(sentName, owner);
+        // sent files leave the uploader's quota: ?delete cannot reach sent/, the receipt names who it was
+        if (owners.remove(name) != null) {
             saveOwners();
         }
         return sentName;
