@@ -44,7 +44,7 @@ final class ToVehicleRun {
         for (String name : waiting) {
             String owner = workflows.host.files().owner(name);
             if (owner.isEmpty()) {
-                workflows.announce(mailbox, "", "to-vehicle: " + name + " stays: nobody uploaded it through RIPV (put there"
+                workflows.announce(mailbox, Workflows.SERVER, "to-vehicle: " + name + " stays: nobody uploaded it through RIPV (put there"
                         + " by hand?), so no one's rights can send it; upload it with put");
                 continue;
             }

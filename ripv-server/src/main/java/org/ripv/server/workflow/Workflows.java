@@ -56,6 +56,7 @@ public final class Workflows implements AutoCloseable {
     private final Map<String, Runner> byClient = new ConcurrentHashMap<>();
     private final List<LineWaiter> waiters = new CopyOnWriteArrayList<>();
     private final AtomicInteger nextClient = new AtomicInteger();
+    private final CallArrivals arrivals = new CallArrivals();
     private final WorkflowCommands commands;
     private volatile boolean closed;
 
@@ -117,9 +118,11 @@ public final class Workflows implements AutoCloseable {
             }
             if (e.kind() == ConsoleEntry.Kind.EVENT) {
                 if (e.event() == VehicleEvent.SURFACED) {
+                    arrivals.surfaced(e.mailbox());
                     surfaced(e.mailbox());
                 } else if (e.event() == VehicleEvent.DIVED || e.event() == VehicleEvent.LINK_LOST) {
                     callEnded(e.mailbox(), e.event());
+                    listArrivals(e.mailbox());
                 }
             }
         }
@@ -180,6 +183,27 @@ public final class Workflows implements AutoCloseable {
         } catch (IOException e) {
             log.warn("{}: cannot read its to-vehicle folder: {}", mailbox, e.toString());
             return false;
+        }
+    }
+
+    /** Off the service's console thread: the folder is read on a workflow thread. */
+    private void listArrivals(String mailbox) {
+        if (closed) {
+            return;
+        }
+        try {
+            threads.execute(() -> {
+                try {
+                    String said = arrivals.ended(mailbox, host.files());
+                    if (said != null) {
+                        announce(mailbox, SERVER, said);
+                    }
+                } catch (IOException | RuntimeException x) {
+                    log.warn("{}: cannot list what the call brought: {}", mailbox, x.toString());
+                }
+            });
+        } catch (java.util.concurrent.RejectedExecutionException x) {
+            // stopping
         }
     }
 
