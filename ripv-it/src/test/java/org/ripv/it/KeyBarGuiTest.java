@@ -2,26 +2,16 @@ package org.ripv.it;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import com.formdev.flatlaf.FlatLightLaf;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
-import java.util.ArrayList;
 import java.util.List;
-import java.util.UUID;
 import java.util.concurrent.TimeUnit;
-import java.util.prefs.Preferences;
 import java.util.regex.Pattern;
-import org.assertj.swing.core.BasicRobot;
-import org.assertj.swing.core.Robot;
 import org.assertj.swing.edt.GuiActionRunner;
-import org.assertj.swing.fixture.FrameFixture;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.ripv.client.gui.RIPVClient;
-import org.ripv.client.managers.ClientModel;
-import org.ripv.client.managers.GuiManager;
 import org.ripv.client.panels.ServiceLayoutPanel;
 import org.ripv.services.serial.CallSettings;
 import org.ripv.services.serial.LinkSettings;
@@ -37,24 +27,22 @@ import org.ripv.testing.Tools;
  * COM panel; bob, without the right to {@code ?key ctrl-c}, clicks the same button and is refused.
  */
 class KeyBarGuiTest {
-    static final Path ROOT = Path.of(System.getProperty("user.dir")).toAbsolutePath().getParent();
+    static final Path ROOT = LaunchedJars.ROOT;
     static final String SERIAL = "<SerialPortServer>::<localhost>";
 
     @TempDir
     Path dir;
     TestSystem sys;
     SerialPortServer serial;
-    final List<Process> started = new ArrayList<>();
+    LaunchedJars processes;
 
     @AfterEach
     void stop() throws Exception {
         if (serial != null) {
             serial.stop();
         }
-        for (Process p : started) {
-            p.descendants().forEach(ProcessHandle::destroy);
-            p.destroy();
-            p.waitFor(10, TimeUnit.SECONDS);
+        if (processes != null) {
+            processes.close();
         }
         if (sys != null) {
             sys.close();
@@ -72,7 +60,8 @@ class KeyBarGuiTest {
         Path vehicle = Files.createDirectories(dir.resolve("vehicle"));
         Path pty = dir.resolve("ttyG");
         Path script = ROOT.resolve("ripv-services/src/test/resources/org/ripv/services/serial/zmodem-vehicle.sh");
-        started.add(new ProcessBuilder("socat", "pty,raw,echo=0,link=" + pty, "SYSTEM:'exec bash " + script + " "
+        processes = new LaunchedJars(dir);
+        processes.add(new ProcessBuilder("socat", "pty,raw,echo=0,link=" + pty, "SYSTEM:'exec bash " + script + " "
                 + vehicle + "'").directory(vehicle.toFile()).redirectErrorStream(true)
                 .redirectOutput(dir.resolve("socat.log").toFile()).start());
         ClientGuiTest.waitFor("socat made " + pty, () -> Files.exists(pty));
@@ -92,31 +81,32 @@ class KeyBarGuiTest {
 
     /** Logs {@code user} in in a window of its own, clicks the console's Ctrl-C, and returns the COM panel's reply text. */
     private String clickCtrlC(String user, java.util.function.Predicate<String> done) throws Exception {
-        Preferences prefs = Preferences.userRoot().node("org/ripv/test/" + UUID.randomUUID());
-        Robot robot = BasicRobot.robotWithNewAwtHierarchy();
-        GuiManager gm = GuiActionRunner.execute(() -> new GuiManager(new ClientModel()));
-        RIPVClient client = GuiActionRunner.execute(() -> {
-            FlatLightLaf.setup();
-            return new RIPVClient(gm, prefs);
-        });
-        FrameFixture window = new FrameFixture(robot, client.frame());
-        try {
-            window.show();
-            gm.logIn("localhost", sys.server().port(), user, TestSystem.PASSWORD.toCharArray()).get(20, TimeUnit.SECONDS);
-            ClientGuiTest.waitFor("the serial tab", () -> client.panel(SERIAL) != null);
-            ClientGuiTest.showTab(client, SERIAL);
-            ServiceLayoutPanel tab = GuiActionRunner.execute(() -> client.panel(SERIAL));
-            ClientGuiTest.waitFor("ru29 as the target", () -> gm.model().service(SERIAL).target().equals(SERIAL + "ru29"));
-            window.button("key-ctrl-c").click();
-            ClientGuiTest.waitFor("the reply to Ctrl-C in COM", () -> done.test(tab.com().replyText()));
-            return GuiActionRunner.execute(() -> tab.com().replyText());
-        } catch (Throwable t) {
-            ClientGuiTest.screenshot("KeyBarGuiTest-" + user + "-failure.png");
-            throw t;
-        } finally {
-            window.cleanUp();
-            gm.close();
-            prefs.removeNode();
+        try (ClientWindow w = ClientWindow.open()) {
+            try {
+                w.gm().logIn("localhost", sys.server().port(), user, TestSystem.PASSWORD.toCharArray()).get(20, TimeUnit.SECONDS);
+                ClientGuiTest.waitFor("the serial tab", () -> w.client().panel(SERIAL) != null);
+                ClientGuiTest.showTab(w.client(), SERIAL);
+                ServiceLayoutPanel tab = GuiActionRunner.execute(() -> w.client().panel(SERIAL));
+                ClientGuiTest.waitFor("ru29 as the target", () -> w.gm().model().service(SERIAL).target().equals(SERIAL + "ru29"));
+                // on a loaded machine the console's layout may come after the fixture's own lookup gives up
+                ClientGuiTest.waitFor("the key bar showing", () -> showing(w.client().frame(), "key-ctrl-c"));
+                w.fixture().button("key-ctrl-c").click();
+                ClientGuiTest.waitFor("the reply to Ctrl-C in COM", () -> done.test(tab.com().replyText()));
+                return GuiActionRunner.execute(() -> tab.com().replyText());
+            } catch (Throwable t) {
+                ClientGuiTest.screenshot("KeyBarGuiTest-" + user + "-failure.png");
+                throw t;
+            }
         }
+    }
+
+    private static boolean showing(java.awt.Container in, String name) {
+        for (java.awt.Component c : in.getComponents()) {
+            if (name.equals(c.getName()) && c.isShowing()
+                    || c instanceof java.awt.Container inner && showing(inner, name)) {
+                return true;
+            }
+        }
+        return false;
     }
 }

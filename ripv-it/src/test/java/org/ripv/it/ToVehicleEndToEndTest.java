@@ -9,7 +9,6 @@ import java.net.ServerSocket;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
 import java.util.concurrent.TimeUnit;
@@ -34,36 +33,22 @@ import org.ripv.testing.Tools;
  * folder and a folder no MailBox has are refused at upload.
  */
 class ToVehicleEndToEndTest {
-    static final Path ROOT = Path.of(System.getProperty("user.dir")).toAbsolutePath().getParent();
+    static final Path ROOT = LaunchedJars.ROOT;
     static final Duration T = Duration.ofSeconds(60);
 
     @TempDir
     Path dir;
     TestSystem sys;
-    final List<Process> started = new ArrayList<>();
+    LaunchedJars jars;
 
     @AfterEach
     void stop() throws Exception {
-        for (Process p : started) {
-            p.descendants().forEach(ProcessHandle::destroy);
-            SimulatorProcess.stop(p);
+        if (jars != null) {
+            jars.close();
         }
         if (sys != null) {
             sys.close();
         }
-    }
-
-    private Process launch(Path log, String... args) throws IOException {
-        List<String> cmd = new ArrayList<>(List.of("bash", ROOT.resolve("ripv").toString()));
-        cmd.addAll(List.of(args));
-        ProcessBuilder pb = new ProcessBuilder(cmd).directory(dir.toFile()).redirectErrorStream(true)
-                .redirectOutput(log.toFile());
-        pb.environment().put("HOME", dir.resolve("home").toString());
-        pb.environment().put("JAVA_TOOL_OPTIONS", "-Duser.home=" + dir.resolve("home"));
-        pb.environment().remove("DISPLAY");
-        Process p = pb.start();
-        started.add(p);
-        return p;
     }
 
     private static String text(ClientSocketHandler c, String body) throws Exception {
@@ -84,6 +69,7 @@ class ToVehicleEndToEndTest {
         }
         Tools.require("sz", "rz", "bash");
         Files.createDirectories(dir.resolve("home/.ripv"));
+        jars = new LaunchedJars(dir);
         sys = TestSystem.start(dir.resolve("sys"));
         sys.user("alice", "operators").user("bob", "observers");
         sys.rules("allow @operators * * *", "allow @observers RIPVServer * ?upload*", "allow @observers * * ?read");
@@ -95,7 +81,7 @@ class ToVehicleEndToEndTest {
         Path secret = dir.resolve("service.secret");
         Files.writeString(secret, sys.secret());
         Path serviceLog = dir.resolve("serial.log");
-        launch(serviceLog, "service", "serial", "--server", "localhost:" + sys.server().registryPort(), "--secret-file",
+        jars.launch(serviceLog, "service", "serial", "--server", "localhost:" + sys.server().registryPort(), "--secret-file",
                 secret.toString(), "--no-enumerate", "--work", dir.resolve("work").toString(), "--link",
                 "listen://127.0.0.1:" + port + ",name=ru29,idle-timeout=1000,to-vehicle=zmodem");
         awaitTrue("the SerialPortServer registered; its log: " + serviceLog, () -> sys.server().serviceCount() > 0);
@@ -137,7 +123,7 @@ class ToVehicleEndToEndTest {
         Files.createDirectories(glider.resolve("BLOCKED.MI"));
         Process simulator = SimulatorProcess.start(dir.resolve("simulator.log"), List.of("--call", "127.0.0.1:" + port,
                 "--name", "ru29", "--surface-seconds", "20", "--dive-seconds", "2", "--dir", glider.toString()));
-        started.add(simulator);
+        jars.add(simulator);
 
         Path sent = up.resolve("to-vehicle").resolve(folder).resolve("sent");
         awaitTrue("goto_l10.ma moved to sent/; the service's log: " + serviceLog,
