@@ -24,7 +24,7 @@ final class PackedMessage implements Serializable {
     private final Attachment attachment;
     private final Result result;
 
-    private PackedMessage(byte kind, byte[] fields, Attachment attachment, Result result) {
+    PackedMessage(byte kind, byte[] fields, Attachment attachment, Result result) {
         this.kind = kind;
         this.fields = fields;
         this.attachment = attachment;
@@ -83,7 +83,20 @@ final class PackedMessage implements Serializable {
         return new PackedMessage(kind, out.bytes, h.attachment(), f.result());
     }
 
+    byte kind() {
+        return kind;
+    }
+
+    byte[] fields() {
+        return fields;
+    }
+
     private Object readResolve() throws ObjectStreamException {
+        return resolve();
+    }
+
+    /** The message these fields describe, checked as on reading. */
+    Message resolve() throws InvalidObjectException {
         if (fields == null) {
             throw new InvalidObjectException("a packed message without fields");
         }
