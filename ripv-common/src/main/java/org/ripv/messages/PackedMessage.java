@@ -1,8 +1,12 @@
 package org.ripv.messages;
 
+import java.io.Externalizable;
+import java.io.IOException;
+import java.io.InputStream;
 import java.io.InvalidObjectException;
+import java.io.ObjectInput;
+import java.io.ObjectOutput;
 import java.io.ObjectStreamException;
-import java.io.Serializable;
 import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
@@ -14,21 +18,83 @@ import java.util.List;
  * serialization of the nested records, enums and lists cost most of a round trip's CPU; this
  * costs a fraction, on the client socket and on RMI alike. Reading checks every length against
  * the bytes present and rebuilds the message through its validating constructors.
+ *
+ * <p>Externalizable, so that its class descriptor names no fields: every RMI call and frame
+ * writes and parses the descriptor anew, and the four fields' names and types, with the byte
+ * array's own descriptor, were most of what a call spent on the message.
  */
-final class PackedMessage implements Serializable {
-    private static final long serialVersionUID = 1L;
+final class PackedMessage implements Externalizable {
+    private static final long serialVersionUID = 2L;
     private static final int MAX_LIST = 255;
+    private static final int HAS_ATTACHMENT = 1;
+    private static final int HAS_RESULT = 2;
 
-    private final byte kind;
-    private final byte[] fields;
-    private final Attachment attachment;
-    private final Result result;
+    private byte kind;
+    private byte[] fields;
+    private Attachment attachment;
+    private Result result;
+
+    /** For deserialization only ({@link #readExternal} fills it in). */
+    public PackedMessage() {
+    }
 
     PackedMessage(byte kind, byte[] fields, Attachment attachment, Result result) {
         this.kind = kind;
         this.fields = fields;
         this.attachment = attachment;
         this.result = result;
+    }
+
+    @Override
+    public void writeExternal(ObjectOutput out) throws IOException {
+        out.writeByte(kind);
+        out.writeInt(fields == null ? -1 : fields.length);
+        if (fields != null) {
+            out.write(fields);
+        }
+        out.writeByte((attachment == null ? 0 : HAS_ATTACHMENT) | (result == null ? 0 : HAS_RESULT));
+        if (attachment != null) {
+            out.writeObject(attachment);
+        }
+        if (result != null) {
+            out.writeObject(result);
+        }
+    }
+
+    @Override
+    public void readExternal(ObjectInput in) throws IOException, ClassNotFoundException {
+        kind = in.readByte();
+        int n = in.readInt();
+        if (n < -1) {
+            throw new InvalidObjectException("a packed message of " + n + " bytes");
+        }
+        if (n >= 0) {
+            // Read what is there rather than allocate what the length claims: a lying length
+            // costs the liar its own bytes, not the reader an array of 2 GB.
+            byte[] b = in instanceof InputStream stream ? stream.readNBytes(n) : new byte[0];
+            if (b.length != n) {
+                throw new InvalidObjectException("a packed message cut short: " + b.length + " of " + n + " bytes");
+            }
+            fields = b;
+        }
+        int has = in.readUnsignedByte();
+        if ((has & ~(HAS_ATTACHMENT | HAS_RESULT)) != 0) {
+            throw new InvalidObjectException("unknown flags " + has + " in a packed message");
+        }
+        if ((has & HAS_ATTACHMENT) != 0) {
+            attachment = typed(in.readObject(), Attachment.class);
+        }
+        if ((has & HAS_RESULT) != 0) {
+            result = typed(in.readObject(), Result.class);
+        }
+    }
+
+    private static <T> T typed(Object o, Class<T> type) throws InvalidObjectException {
+        if (!type.isInstance(o)) {
+            throw new InvalidObjectException("a packed message holds " + (o == null ? "null" : o.getClass().getName())
+                    + " where " + type.getSimpleName() + " belongs");
+        }
+        return type.cast(o);
     }
 
     static PackedMessage pack(Message m) {

@@ -26,7 +26,8 @@ import org.ripv.messages.SerializedMessages;
 public final class FrameCodec {
     /** The greeting's first four bytes. */
     public static final byte[] MAGIC = "RIPV".getBytes(StandardCharsets.US_ASCII);
-    public static final int VERSION = 1;
+    /** 2 since PackedMessage became Externalizable (docs/protocol.md): a version-1 peer could not read it. */
+    public static final int VERSION = 2;
     /** The default limit on one frame. */
     public static final int DEFAULT_MAX_FRAME = 16 * 1024 * 1024;
 
