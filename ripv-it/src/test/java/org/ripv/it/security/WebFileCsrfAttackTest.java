@@ -26,8 +26,8 @@ import org.ripv.server.ServerConfig;
  * no file bytes at all; these keep the new door shut.)
  */
 class WebFileCsrfAttackTest {
-    static final String CLOCK = "<ClockService>::<localhost>TTY1";
-    static final Duration T = Duration.ofSeconds(20);
+    static final String CLOCK = WebConsoleAttackTest.CLOCK;
+    static final Duration T = WebConsoleAttackTest.T;
 
     @TempDir
     static Path dir;
@@ -35,11 +35,11 @@ class WebFileCsrfAttackTest {
     static WebVisitor web;
     static String origin;
 
+    /** The server with its upload form on, alice an operator, and the ClockService's MailBox to queue for. */
     @BeforeAll
     static void start() throws Exception {
         ServerConfig config = ServerConfig.forTests(dir.resolve("server")).withPorts(0, 0, 0);
-        sys = TestSystem.start(config.withSecurity(config.security().withHttpUpload(true)));
-        sys.user("alice", "operators");
+        sys = TestSystem.start(config.withSecurity(config.security().withHttpUpload(true))).user("alice", "operators");
         sys.register(new ClockService("localhost"));
         web = new WebVisitor(sys.server().httpPort(), true);
         origin = web.base;
