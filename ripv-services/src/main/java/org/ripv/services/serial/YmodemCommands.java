@@ -182,6 +182,8 @@ final class YmodemCommands {
                 throw new ServiceException(ErrorCode.TRANSFER_FAILED, "the vehicle sent none of '"
                         + String.join(" ", names) + "'" + warnings);
             }
+            ReceivedFiles.checkFits("ymodem:get", verdict.accepted().stream().map(a -> dir.resolve(a.file().name())).toList(),
+                    ReceivedFiles.budget());
             List<FileData> data = new ArrayList<>();
             long bytes = 0;
             for (AskedNames.Accepted a : verdict.accepted()) {
