@@ -43,7 +43,8 @@ public final class SessionStates {
                     st = SessionState.State.LOST;
                     fromVehicle = false;
                 }
-                case LOCK_TAKEN, LOCK_RELEASED, WORKFLOW_DONE, WORKFLOW_FAILED, WORKFLOW_DONE_WITH_ERRORS -> fromVehicle = false;
+                case LOCK_TAKEN, LOCK_RELEASED, WORKFLOW_DONE, WORKFLOW_FAILED, WORKFLOW_DONE_WITH_ERRORS, INGEST_WAITING,
+                        INGEST_RELEASED -> fromVehicle = false;
                 default -> { }
             }
         }

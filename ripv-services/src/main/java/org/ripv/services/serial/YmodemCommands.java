@@ -200,7 +200,11 @@ final class YmodemCommands {
     }
 
     Reply put(Connection c, Request request) throws IOException, ServiceException {
-        SendFile file = PutFile.of(request, "ymodem:put");
+        return put(c, request, PutFile.of(request, "ymodem:put"));
+    }
+
+    /** Sends one file, however it was named (a to-vehicle file comes as {@code to-vehicle/FOLDER/NAME}). */
+    Reply put(Connection c, Request request, SendFile file) throws IOException, ServiceException {
         return transfer(c, request, () -> {
             for (int attempt = 0; ; attempt++) {
                 write(c, settings.receiveCommand());

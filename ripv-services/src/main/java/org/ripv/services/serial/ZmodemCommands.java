@@ -214,7 +214,11 @@ final class ZmodemCommands {
     }
 
     Reply put(Connection c, Request request) throws IOException, ServiceException {
-        SendFile file = PutFile.of(request, "zmodem:put");
+        return put(c, request, PutFile.of(request, "zmodem:put"));
+    }
+
+    /** Sends one file, however it was named (a to-vehicle file comes as {@code to-vehicle/FOLDER/NAME}). */
+    Reply put(Connection c, Request request, SendFile file) throws IOException, ServiceException {
         return transfer(c, request, () -> send(c, request, file), () -> "");
     }
 
