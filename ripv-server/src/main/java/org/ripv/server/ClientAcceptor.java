@@ -1,30 +1,39 @@
 package org.ripv.server;
 
 import java.io.IOException;
-import java.net.ServerSocket;
-import java.net.Socket;
+import java.nio.channels.ClosedChannelException;
+import java.nio.channels.ServerSocketChannel;
+import java.nio.channels.SocketChannel;
 import java.util.Collection;
 import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.ripv.server.handlers.SocketHandler;
 import org.ripv.server.handlers.WriterPool;
 import org.ripv.server.security.ConnectionGate;
+import org.ripv.server.transport.ClientLoops;
+import org.ripv.server.transport.Connection;
 import org.ripv.wire.FrameCodec;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
+import javax.net.ssl.SSLContext;
 
 /**
  * The client port (thesis 5.2.2, the server's accept loop): takes each connection, gives it a
  * six-digit client id, asks the {@link ConnectionGate} before anything else happens on it (so a
- * refused address costs no TLS handshake and no thread), and starts its {@link SocketHandler}.
- * Knows the connected clients by id.
+ * refused address costs no TLS handshake), and starts its {@link SocketHandler} on one of the
+ * server's few selector threads ({@link ClientLoops}): no client has a thread of its own. Knows
+ * the connected clients by id.
  */
 final class ClientAcceptor {
     private static final Logger log = LoggerFactory.getLogger(ClientAcceptor.class);
 
-    private final ServerSocket listener;
+    private final ServerSocketChannel listener;
+    private final SSLContext tls;
+    private final ClientLoops loops;
+    private final ScheduledExecutorService timers;
     private final FrameCodec codec;
     private final WriterPool writers;
     private final SocketHandler.Dispatcher dispatch;
@@ -34,10 +43,17 @@ final class ClientAcceptor {
     private final Thread thread;
     private volatile boolean running = true;
 
-    /** Starts accepting on a bound listener. */
-    ClientAcceptor(ServerSocket listener, FrameCodec codec, WriterPool writers, SocketHandler.Dispatcher dispatch,
-                   ConnectionGate gate) {
+    /**
+     * Starts accepting on a bound listener.
+     *
+     * @param tls the TLS context, or null for plain TCP ({@code --plain})
+     */
+    ClientAcceptor(ServerSocketChannel listener, SSLContext tls, ScheduledExecutorService timers,
+                   FrameCodec codec, WriterPool writers, SocketHandler.Dispatcher dispatch, ConnectionGate gate) throws IOException {
         this.listener = listener;
+        this.tls = tls;
+        this.loops = new ClientLoops();
+        this.timers = timers;
         this.codec = codec;
         this.writers = writers;
         this.dispatch = dispatch;
@@ -48,7 +64,7 @@ final class ClientAcceptor {
     }
 
     int port() {
-        return listener.getLocalPort();
+        return listener.socket().getLocalPort();
     }
 
     Optional<SocketHandler> client(String clientId) {
@@ -66,18 +82,27 @@ final class ClientAcceptor {
 
     private void acceptLoop() {
         while (running) {
-            Socket s;
+            SocketChannel s;
+            SocketHandler h;
+            String id = newClientId();
             try {
                 s = listener.accept();
+            } catch (ClosedChannelException e) {
+                break;
             } catch (IOException e) {
                 if (running) {
                     log.warn("accept failed: {}", e.toString());
                 }
                 continue;
             }
-            String id = newClientId();
-            SocketHandler h = new SocketHandler(s, id, codec, writers, dispatch);
-            if (!gate.admit(id, s.getInetAddress(), h::close)) {
+            try {
+                h = new SocketHandler(loops.connection(s, tls), id, codec, writers, dispatch, timers);
+            } catch (IOException e) {
+                log.debug("client {} gone before it was set up: {}", id, e.toString());
+                closeQuietly(s);
+                continue;
+            }
+            if (!gate.admit(id, h.remoteInetAddress(), h::close)) {
                 closeQuietly(s);
                 continue;
             }
@@ -88,7 +113,7 @@ final class ClientAcceptor {
                 h.close();
                 break;
             }
-            log.debug("client {} connected from {}", id, s.getRemoteSocketAddress());
+            log.debug("client {} connected from {}", id, h.remoteAddress());
             h.start();
         }
     }
@@ -98,10 +123,10 @@ final class ClientAcceptor {
      * an id, admitted by the gate like any connection, marked logged in as the user the web log-in
      * checked, and started — from here on it is a client like any other.
      */
-    SocketHandler adopt(Socket s, String user, java.util.List<String> roles) throws IOException {
+    SocketHandler adopt(SocketChannel s, String user, java.util.List<String> roles) throws IOException {
         String id = newClientId();
-        SocketHandler h = new SocketHandler(s, id, codec, writers, dispatch);
-        if (!running || !gate.admit(id, s.getInetAddress(), h::close)) {
+        SocketHandler h = new SocketHandler(loops.connection(s, null), id, codec, writers, dispatch, timers);
+        if (!running || !gate.admit(id, h.remoteInetAddress(), h::close)) {
             closeQuietly(s);
             throw new IOException("the server takes no more connections now");
         }
@@ -134,6 +159,7 @@ final class ClientAcceptor {
         running = false;
         closeQuietly(listener);
         clients.values().forEach(SocketHandler::close);
+        loops.close();
     }
 
     private static void closeQuietly(java.io.Closeable c) {

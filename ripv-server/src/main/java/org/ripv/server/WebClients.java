@@ -2,8 +2,10 @@ package org.ripv.server;
 
 import java.io.IOException;
 import java.net.InetAddress;
-import java.net.ServerSocket;
+import java.net.InetSocketAddress;
 import java.net.Socket;
+import java.nio.channels.ServerSocketChannel;
+import java.nio.channels.SocketChannel;
 import java.util.List;
 import java.util.function.Supplier;
 import org.ripv.server.handlers.SocketHandler;
@@ -31,15 +33,13 @@ final class WebClients implements PostOfficeDoor {
             throw new IOException("the server is not taking clients yet");
         }
         Socket client = new Socket();
-        try (ServerSocket once = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
-            once.setSoTimeout(5_000);
-            client.connect(once.getLocalSocketAddress(), 5_000);
-            Socket ours = once.accept();
-            if (ours.getPort() != client.getLocalPort()) {
+        try (ServerSocketChannel once = ServerSocketChannel.open().bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0), 1)) {
+            client.connect(once.getLocalAddress(), 5_000);
+            SocketChannel ours = once.accept(); // connected already: returns at once
+            if (((InetSocketAddress) ours.getRemoteAddress()).getPort() != client.getLocalPort()) {
                 ours.close();
                 throw new IOException("another local process connected to the web console's loopback port first");
             }
-            ours.setTcpNoDelay(true);
             client.setTcpNoDelay(true);
             SocketHandler h = a.adopt(ours, user, roles);
             Audit.log(false, "web-client", "user", user, "from", address, "client", h.clientId());
