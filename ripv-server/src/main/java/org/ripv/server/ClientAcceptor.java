@@ -42,6 +42,7 @@ final class ClientAcceptor {
     private final AtomicInteger nextClientId = new AtomicInteger(100_000);
     private final Thread thread;
     private volatile boolean running = true;
+    private final Object closes = new Object();
 
     /**
      * Starts accepting on a bound listener.
@@ -78,6 +79,21 @@ final class ClientAcceptor {
     /** A client closed: it is forgotten (only that handler, not a later one given the same id). */
     void forget(SocketHandler client) {
         clients.remove(client.clientId(), client);
+        synchronized (closes) {
+            closes.notifyAll();
+        }
+    }
+
+    /** Waits until a client closes (freeing its socket), a second at most: other files may be freed too. */
+    private void awaitAClose() {
+        synchronized (closes) {
+            try {
+                closes.wait(1_000);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                running = false;
+            }
+        }
     }
 
     private void acceptLoop() {
@@ -92,6 +108,7 @@ final class ClientAcceptor {
             } catch (IOException e) {
                 if (running) {
                     log.warn("accept failed: {}", e.toString());
+                    awaitAClose(); // out of open files (ulimit -n): accepting again at once would only fail again
                 }
                 continue;
             }
