@@ -90,19 +90,23 @@ public final class ConnectionCostBench implements Callable<Integer> {
                 double openSeconds = (System.nanoTime() - start) / 1e9;
                 Thread.sleep(8_000); // longer than a writer's idle time: the clients are idle now
                 double[] busy = roundTrips(probe, probes);
+                long[] loaded = sample(pid); // before the GC: the heap in use, garbage included
                 gc(pid);
                 long[] after = sample(pid);
                 double threads = (after[0] - before[0]) / (double) clients;
                 double kib = (after[1] - before[1]) / (double) clients;
                 out.printf("%d idle logged-in clients over %s (opened in %.1f s, %.0f/s): server threads %d -> %d (%.3f per client),"
                         + " resident memory %d -> %d KiB (%.1f KiB per client), live heap %d -> %d KiB (%.1f KiB per client)"
-                        + " of -Xmx%s%n", clients, plain ? "plain TCP" : "TLS", openSeconds, clients / openSeconds,
-                        before[0], after[0], threads, before[1], after[1], kib, before[2], after[2],
-                        (after[2] - before[2]) / (double) clients, HEAP);
+                        + " (%d KiB in use before that GC) of -Xmx%s%n", clients, plain ? "plain TCP" : "TLS", openSeconds,
+                        clients / openSeconds, before[0], after[0], threads, before[1], after[1], kib, before[2], after[2],
+                        (after[2] - before[2]) / (double) clients, loaded[2], HEAP);
                 out.printf("?services round trip (%d, wall): with no other client p50 %.2f ms, max %.2f ms; with %d idle clients"
                         + " p50 %.2f ms, p99 %.2f ms, max %.2f ms (target <= 100 ms)%n", probes, quiet[0], quiet[2], clients,
                         busy[0], busy[1], busy[2]);
-                out.printf("10,000 such clients: about %.0f threads and %.0f MiB%n", threads * 10_000, kib * 10_000 / 1024);
+                if (clients < 10_000) {
+                    out.printf("10,000 such clients: about %.0f more threads and %.0f MiB%n", Math.max(0, threads * 10_000),
+                            kib * 10_000 / 1024);
+                }
                 out.println(CpuClock.machineLine());
             } finally {
                 probe.close();
