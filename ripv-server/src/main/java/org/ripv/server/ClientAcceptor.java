@@ -10,15 +10,14 @@ import java.util.Optional;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.atomic.AtomicInteger;
+import javax.net.ssl.SSLContext;
 import org.ripv.server.handlers.SocketHandler;
 import org.ripv.server.handlers.WriterPool;
 import org.ripv.server.security.ConnectionGate;
 import org.ripv.server.transport.ClientLoops;
-import org.ripv.server.transport.Connection;
 import org.ripv.wire.FrameCodec;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
-import javax.net.ssl.SSLContext;
 
 /**
  * The client port (thesis 5.2.2, the server's accept loop): takes each connection, gives it a
