@@ -31,6 +31,10 @@ import org.slf4j.LoggerFactory;
  * client thus costs no thread (docs/performance.md). A client that stops reading fills only its own
  * queue — and is then disconnected — while everyone else is served. Anything that breaks the
  * protocol closes this connection and nothing else.
+ *
+ * <p>A web console page is a client of the same kind made with {@link #inProcess}: no socket, reader
+ * or writer, its requests handed in through {@link #received(IncomingServerMessage)} and its
+ * messages given to its {@link Peer}; everything the server does with a client applies to it unchanged.
  */
 public final class SocketHandler implements Connection.Receiver {
     private static final Logger log = LoggerFactory.getLogger(SocketHandler.class);
@@ -39,6 +43,24 @@ public final class SocketHandler implements Connection.Receiver {
     /** How long a peer may take to send its greeting, or the rest of a frame it began. */
     static final int READ_TIMEOUT_MILLIS = 30_000;
     private static final int GREETING = FrameCodec.MAGIC.length + Integer.BYTES;
+
+    /**
+     * Where an in-process client's messages go instead of a socket: a web console page
+     * (org.ripv.server.web), which writes them with its own asynchronous sends. Never blocks.
+     */
+    public interface Peer {
+        /** Queues a reply; false when the peer is too far behind (it is then disconnected). */
+        boolean send(OutgoingServerMessage reply);
+
+        /** Queues a push; {@code written} runs once it went out. False when busy or closed (see {@link #push}). */
+        boolean push(OutgoingServerMessage message, Runnable written);
+
+        /** The server ends this client: the peer closes its side (after what it has queued, if it can). */
+        void close();
+
+        /** The peer's address, the key of per-address limits. */
+        java.net.InetAddress address();
+    }
 
     /** What the server does with a client's requests. */
     public interface Dispatcher {
@@ -54,6 +76,8 @@ public final class SocketHandler implements Connection.Receiver {
     private final Dispatcher dispatcher;
     private final ReplyWriter writer;
     private final ScheduledExecutorService timers;
+    /** Not null for an in-process client, which has no connection or writer of its own. */
+    private final Peer peer;
     private volatile IdBadge badge;
     private volatile List<String> roles = List.of();
     private volatile boolean closed;
@@ -84,12 +108,54 @@ public final class SocketHandler implements Connection.Receiver {
         this.timers = timers;
         this.badge = new IdBadge(clientId, "");
         this.writer = new ReplyWriter(clientId, codec, MAX_QUEUED_REPLIES, writers, this::close);
+        this.peer = null;
+    }
+
+    private SocketHandler(String clientId, Peer peer, Dispatcher dispatcher) {
+        this.connection = null;
+        this.clientId = clientId;
+        this.codec = null;
+        this.dispatcher = dispatcher;
+        this.timers = null;
+        this.badge = new IdBadge(clientId, "");
+        this.writer = null;
+        this.peer = peer;
+    }
+
+    /**
+     * A client inside the server process (a web console page): no socket and no thread of its own;
+     * its requests come in through {@link #received(IncomingServerMessage)} and its messages go to
+     * {@code peer}. From the Post Office's side it is a client like any other.
+     */
+    public static SocketHandler inProcess(String clientId, Peer peer, Dispatcher dispatcher) {
+        return new SocketHandler(clientId, java.util.Objects.requireNonNull(peer, "peer"), dispatcher);
     }
 
     /** Starts reading (the TLS handshake first); the greeting must come within the read timeout. */
     public void start() {
-        connection.onLoop(this::armTimeout);
-        connection.start(this, writer::drained);
+        if (connection != null) {
+            connection.onLoop(this::armTimeout);
+            connection.start(this, writer::drained);
+        }
+    }
+
+    /**
+     * A request from an in-process client, handed to the server exactly as a socket client's
+     * (the caller's thread runs the dispatch, as a selector thread does).
+     */
+    public void received(IncomingServerMessage request) {
+        if (peer == null) {
+            throw new IllegalStateException("client " + clientId + " reads its requests from its socket");
+        }
+        if (closed) {
+            return;
+        }
+        try {
+            dispatcher.received(this, request);
+        } catch (RuntimeException e) {
+            log.error("client {}: unexpected failure", clientId, e);
+            close();
+        }
     }
 
     public String clientId() {
@@ -123,12 +189,15 @@ public final class SocketHandler implements Connection.Receiver {
     }
 
     public String remoteAddress() {
+        if (peer != null) {
+            return peer.address().getHostAddress() + " (web)";
+        }
         return String.valueOf(connection.remoteAddress());
     }
 
     /** The peer's IP address, the key of per-address limits. */
     public java.net.InetAddress remoteInetAddress() {
-        return connection.remoteInetAddress();
+        return peer != null ? peer.address() : connection.remoteInetAddress();
     }
 
     /**
@@ -137,12 +206,18 @@ public final class SocketHandler implements Connection.Receiver {
      * each client had a reader thread of its own. Call from {@link Dispatcher#received}.
      */
     public void holdReading() {
+        if (connection == null) {
+            return; // an in-process client: its page waits for each answer itself
+        }
         holding = true;
         connection.pauseReading();
     }
 
     /** Reads again after {@link #holdReading()}: first what arrived meanwhile. Any thread. */
     public void resumeReading() {
+        if (connection == null) {
+            return;
+        }
         connection.onLoop(() -> {
             if (closed || !holding) {
                 return;
@@ -161,6 +236,13 @@ public final class SocketHandler implements Connection.Receiver {
 
     /** Sends this last reply, then closes: the client reads why it was cut off. */
     public void sendAndClose(OutgoingServerMessage last) {
+        if (peer != null) {
+            if (!closed) {
+                peer.send(last);
+            }
+            close();
+            return;
+        }
         if (closed || !writer.offerLast(last)) {
             close();
         }
@@ -171,7 +253,7 @@ public final class SocketHandler implements Connection.Receiver {
         if (closed) {
             return;
         }
-        if (!writer.offer(reply)) {
+        if (peer != null ? !peer.send(reply) : !writer.offer(reply)) {
             log.warn("client {} ({}) is not reading its replies; disconnecting it", clientId, remoteAddress());
             close();
         }
@@ -184,7 +266,7 @@ public final class SocketHandler implements Connection.Receiver {
      * client it goes to). Never blocks; false when the connection is closed or too far behind.
      */
     public boolean push(OutgoingServerMessage message, byte[] frame, Runnable written) {
-        return !closed && writer.push(message, frame, written);
+        return !closed && (peer != null ? peer.push(message, written) : writer.push(message, frame, written));
     }
 
     /** Bytes from the client, on its selector thread: whole frames go to the dispatcher. */
@@ -321,6 +403,11 @@ public final class SocketHandler implements Connection.Receiver {
                 return;
             }
             closed = true;
+        }
+        if (peer != null) {
+            peer.close();
+            dispatcher.closed(this);
+            return;
         }
         String why = closedWhy == null ? "was disconnected" : closedWhy;
         log.info("client {} ({}{}) {}", clientId, remoteAddress(), isLoggedIn() ? ", " + badge.user() : "", why);
