@@ -146,6 +146,35 @@ class CycleOnceTest {
         }
     }
 
+    /** A file whose clock stands still or steps back: a cycle of a time it had already is merged, not stored twice. */
+    @Test
+    void aCycleRepeatedInOneFileIsStoredOnce() throws Exception {
+        java.io.ByteArrayOutputStream out = new java.io.ByteArrayOutputStream();
+        Map<String, String> tags = new java.util.LinkedHashMap<>();
+        tags.put("full_filename", "clock_1-2024-001-0-0");
+        tags.put("filename_extension", "sbd");
+        SlocumEncoder e = SlocumEncoder.start(out, tags, List.of(new SlocumSensor("m_present_time", "timestamp", 8),
+                new SlocumSensor("m_depth", "m", 4), new SlocumSensor("m_roll", "rad", 4)));
+        e.cycle(new double[] {1.7e9, 10, Double.NaN});
+        e.cycle(new double[] {1.7e9 + 4, 20, Double.NaN});
+        e.cycle(new double[] {1.7e9 + 4, 21, 0.5}); // the same time again
+        e.cycle(new double[] {1.7e9, 11, Double.NaN}); // and back
+        e.cycle(new double[] {1.7e9 + 8, 30, Double.NaN});
+        e.end();
+        byte[] file = out.toByteArray();
+        try (Connection c = DriverManager.getConnection("jdbc:derby:" + tmp.resolve("clock") + ";create=true")) {
+            SqlScript.run(c, SqlScript.resource("slocumDB.sql"), "slocumDB.sql");
+            DbaIngest.Outcome o = binary(new DbaIngest(c), "clock.sbd", file, null);
+            assertThat(o.rows()).isEqualTo(5);
+            assertThat(o.merged()).isEqualTo(2);
+            assertThat(count(c, "SELECT COUNT(*) FROM cycle")).isEqualTo(3);
+            assertThat(doubles(c, "SELECT r.value FROM reading r JOIN sensor_def s ON s.sensor_id = r.sensor_id"
+                    + " WHERE s.name = 'm_depth' ORDER BY r.t")).containsExactly(11.0, 21.0, 30.0);
+            assertThat(doubles(c, "SELECT r.value FROM reading r JOIN sensor_def s ON s.sensor_id = r.sensor_id"
+                    + " WHERE s.name = 'm_roll'")).containsExactly(0.5);
+        }
+    }
+
     static DbaIngest.Outcome binary(DbaIngest ingest, String name, byte[] data, SensorListCache cache) throws Exception {
         return ingest.ingest(name, DbaIngest.sha256(data), () -> SlocumBinaryFiles.cycles(name, data, cache), "test");
     }
