@@ -17,13 +17,9 @@ import java.util.Map;
 public final class BinaryCycles implements Cycles {
     private final SlocumBinaryReader reader;
     private final DbaHeader header;
-    private final Sensor.Kind[] kinds;
+    private final CycleColumns columns;
     private final byte[] sizes;
-    private final int timeColumn;
-    private final int sciTimeColumn;
     private long rows;
-    private long noFix;
-    private long impossible;
 
     public BinaryCycles(SlocumBinaryReader reader, String file) throws SlocumFormatException {
         this.reader = reader;
@@ -37,15 +33,12 @@ public final class BinaryCycles implements Cycles {
             sensors.add(new Sensor(sensors.size(), s.name(), s.units(), s.bytes(), Sensor.kindOf(s.name(), s.units())));
         }
         this.header = new DbaHeader(tags, sensors);
-        this.kinds = new Sensor.Kind[sensors.size()];
         this.sizes = new byte[sensors.size()];
         for (Sensor s : sensors) {
-            kinds[s.index()] = s.kind();
             sizes[s.index()] = (byte) s.bytes();
         }
-        this.timeColumn = header.column("m_present_time");
-        this.sciTimeColumn = header.column("sci_m_present_time");
-        if (timeColumn < 0 && sciTimeColumn < 0) {
+        this.columns = new CycleColumns(header);
+        if (!columns.timed()) {
             throw new SlocumFormatException(file, reader.offset(),
                     "no m_present_time or sci_m_present_time among the cycle's sensors: the cycles have no time");
         }
@@ -66,17 +59,8 @@ public final class BinaryCycles implements Cycles {
             if (Double.isNaN(v)) {
                 continue;
             }
-            if (kinds[i] != Sensor.Kind.PLAIN) {
-                if (v == Degrees.NO_FIX) {
-                    noFix++;
-                    values[i] = Double.NaN;
-                } else {
-                    double d = Degrees.fromDdmm(v, kinds[i] == Sensor.Kind.LATITUDE ? 90 : 180);
-                    if (Double.isNaN(d)) {
-                        impossible++;
-                    }
-                    values[i] = d;
-                }
+            if (columns.isPosition(i)) {
+                values[i] = columns.degrees(i, v);
             } else if (sizes[i] == 4 && Double.isFinite(v)) {
                 values[i] = Double.parseDouble(Float.toString((float) v));
             }
@@ -87,11 +71,7 @@ public final class BinaryCycles implements Cycles {
 
     @Override
     public double time(double[] values) {
-        double t = timeColumn >= 0 ? values[timeColumn] : Double.NaN;
-        if (Double.isNaN(t) && sciTimeColumn >= 0) {
-            t = values[sciTimeColumn];
-        }
-        return t;
+        return columns.time(values);
     }
 
     @Override
@@ -101,12 +81,12 @@ public final class BinaryCycles implements Cycles {
 
     @Override
     public long noFix() {
-        return noFix;
+        return columns.noFix();
     }
 
     @Override
     public long impossible() {
-        return impossible;
+        return columns.impossible();
     }
 
     @Override

@@ -47,12 +47,8 @@ public final class DbaReader implements Cycles {
     private final DbaHeader header;
     private final int width;
     private final int maxRowLength;
-    private final int timeColumn;
-    private final int sciTimeColumn;
-    private final Sensor.Kind[] kinds;
+    private final CycleColumns columns;
     private long rows;
-    private long noFix;
-    private long impossible;
     private long blankLine;
 
     /**
@@ -68,15 +64,10 @@ public final class DbaReader implements Cycles {
         this.header = new DbaHeader(tags, sensors);
         this.width = sensors.size();
         this.maxRowLength = 64 * width + 1024;
-        this.timeColumn = header.column("m_present_time");
-        this.sciTimeColumn = header.column("sci_m_present_time");
-        if (timeColumn < 0 && sciTimeColumn < 0) {
+        this.columns = new CycleColumns(header);
+        if (!columns.timed()) {
             throw new DbaFormatException(lines.number() - 2,
                     "no m_present_time or sci_m_present_time sensor: the rows have no time");
-        }
-        this.kinds = new Sensor.Kind[width];
-        for (Sensor s : sensors) {
-            kinds[s.index()] = s.kind();
         }
     }
 
@@ -309,19 +300,7 @@ public final class DbaReader implements Cycles {
             throw new DbaFormatException(lines.number(), "value " + (col + 1) + " (" + header.sensors().get(col).name()
                     + ") is too large");
         }
-        Sensor.Kind k = kinds[col];
-        if (k == Sensor.Kind.PLAIN) {
-            return v;
-        }
-        if (v == Degrees.NO_FIX) {
-            noFix++;
-            return Double.NaN;
-        }
-        double d = Degrees.fromDdmm(v, k == Sensor.Kind.LATITUDE ? 90 : 180);
-        if (Double.isNaN(d)) {
-            impossible++;
-        }
-        return d;
+        return columns.isPosition(col) ? columns.degrees(col, v) : v;
     }
 
     /** [-+]digits[.digits][(e|E)[-+]digits], or [-+].digits...: what dbd2asc writes, nothing Java alone accepts. */
@@ -366,11 +345,7 @@ public final class DbaReader implements Cycles {
     /** The time of a row read by {@link #next}: m_present_time, else sci_m_present_time; NaN if neither. */
     @Override
     public double time(double[] values) {
-        double t = timeColumn >= 0 ? values[timeColumn] : Double.NaN;
-        if (Double.isNaN(t) && sciTimeColumn >= 0) {
-            t = values[sciTimeColumn];
-        }
-        return t;
+        return columns.time(values);
     }
 
     /** The line number of the row last read. */
@@ -387,13 +362,13 @@ public final class DbaReader implements Cycles {
     /** Position values that were {@value Degrees#NO_FIX} ("no fix"). */
     @Override
     public long noFix() {
-        return noFix;
+        return columns.noFix();
     }
 
     /** Position values that are not DDMM.MMMM within range. */
     @Override
     public long impossible() {
-        return impossible;
+        return columns.impossible();
     }
 
     private static String quote(String s) {

@@ -129,21 +129,51 @@ class CycleOnceTest {
      */
     @Test
     void binaryValuesAreStoredAsDecodedNotAsTheirDbaText() throws Exception {
-        java.io.ByteArrayOutputStream out = new java.io.ByteArrayOutputStream();
-        Map<String, String> tags = new java.util.LinkedHashMap<>();
-        tags.put("full_filename", "exact_1-2024-001-0-0");
-        tags.put("filename_extension", "sbd");
-        SlocumEncoder e = SlocumEncoder.start(out, tags, List.of(new SlocumSensor("m_present_time", "timestamp", 8),
-                new SlocumSensor("m_depth", "m", 4), new SlocumSensor("x_exact", "nodim", 8)));
-        e.cycle(new double[] {1.7e9, 1234.5678f, 0.12345678901234568});
-        e.end();
-        byte[] file = out.toByteArray();
+        byte[] file = sbd("exact_1-2024-001-0-0", new SlocumSensor("x_exact", "nodim", 8),
+                new double[] {1.7e9, 1234.5678f, 0.12345678901234568});
         try (Connection c = DriverManager.getConnection("jdbc:derby:" + tmp.resolve("exact") + ";create=true")) {
             SqlScript.run(c, SqlScript.resource("slocumDB.sql"), "slocumDB.sql");
             binary(new DbaIngest(c), "exact.sbd", file, null);
             assertThat(doubles(c, "SELECT value FROM latest WHERE sensor = 'x_exact'")).containsExactly(0.12345678901234568);
             assertThat(doubles(c, "SELECT value FROM latest WHERE sensor = 'm_depth'")).containsExactly(1234.5677); // the float 1234.5677490234375; the text would say 1234.57
         }
+    }
+
+    /** A file whose clock stands still or steps back: a cycle of a time it had already is merged, not stored twice. */
+    @Test
+    void aCycleRepeatedInOneFileIsStoredOnce() throws Exception {
+        byte[] file = sbd("clock_1-2024-001-0-0", new SlocumSensor("m_roll", "rad", 4),
+                new double[] {1.7e9, 10, Double.NaN},
+                new double[] {1.7e9 + 4, 20, Double.NaN},
+                new double[] {1.7e9 + 4, 21, 0.5}, // the same time again
+                new double[] {1.7e9, 11, Double.NaN}, // and back
+                new double[] {1.7e9 + 8, 30, Double.NaN});
+        try (Connection c = DriverManager.getConnection("jdbc:derby:" + tmp.resolve("clock") + ";create=true")) {
+            SqlScript.run(c, SqlScript.resource("slocumDB.sql"), "slocumDB.sql");
+            DbaIngest.Outcome o = binary(new DbaIngest(c), "clock.sbd", file, null);
+            assertThat(o.rows()).isEqualTo(5);
+            assertThat(o.merged()).isEqualTo(2);
+            assertThat(count(c, "SELECT COUNT(*) FROM cycle")).isEqualTo(3);
+            assertThat(doubles(c, "SELECT r.value FROM reading r JOIN sensor_def s ON s.sensor_id = r.sensor_id"
+                    + " WHERE s.name = 'm_depth' ORDER BY r.t")).containsExactly(11.0, 21.0, 30.0);
+            assertThat(doubles(c, "SELECT r.value FROM reading r JOIN sensor_def s ON s.sensor_id = r.sensor_id"
+                    + " WHERE s.name = 'm_roll'")).containsExactly(0.5);
+        }
+    }
+
+    /** A .sbd of m_present_time, m_depth and {@code third}, with these cycles. */
+    static byte[] sbd(String name, SlocumSensor third, double[]... cycles) throws Exception {
+        java.io.ByteArrayOutputStream out = new java.io.ByteArrayOutputStream();
+        Map<String, String> tags = new java.util.LinkedHashMap<>();
+        tags.put("full_filename", name);
+        tags.put("filename_extension", "sbd");
+        SlocumEncoder e = SlocumEncoder.start(out, tags, List.of(new SlocumSensor("m_present_time", "timestamp", 8),
+                new SlocumSensor("m_depth", "m", 4), third));
+        for (double[] c : cycles) {
+            e.cycle(c);
+        }
+        e.end();
+        return out.toByteArray();
     }
 
     static DbaIngest.Outcome binary(DbaIngest ingest, String name, byte[] data, SensorListCache cache) throws Exception {
