@@ -86,10 +86,20 @@ public final class WebConsole implements AutoCloseable {
             }
             status = status == null ? () -> "RIPVServer" : status;
             codec = codec == null ? new FrameCodec(FrameCodec.DEFAULT_MAX_FRAME) : codec;
-            if (mapTiles != null && !mapTiles.matches("https://[A-Za-z0-9.\\-]+(:\\d+)?/\\S*\\{z}\\S*")) {
-                throw new IllegalArgumentException("--map-tiles '" + mapTiles + "' is not an https URL with {z}, {x} and {y},"
-                        + " e.g. https://tile.openstreetmap.org/{z}/{x}/{y}.png");
-            }
+            checkMapTiles(mapTiles);
+        }
+    }
+
+    /**
+     * Refuses a tile URL the map cannot use or the Content-Security-Policy could not name as one host.
+     *
+     * @throws IllegalArgumentException quoting the URL and saying what it needs
+     */
+    public static void checkMapTiles(String template) {
+        if (template != null && !template.matches("https://[A-Za-z0-9.\\-]+(:\\d+)?/[^\\s\"'<>;]*\\{z}[^\\s\"'<>;]*")
+                || template != null && !(template.contains("{x}") && template.contains("{y}"))) {
+            throw new IllegalArgumentException("--map-tiles '" + template + "' is not an https URL with {z}, {x} and {y},"
+                    + " e.g. https://tile.openstreetmap.org/{z}/{x}/{y}.png");
         }
     }
 

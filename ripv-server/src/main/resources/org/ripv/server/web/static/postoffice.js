@@ -52,6 +52,12 @@ export function bar(s) {
   fleet.href = '/fleet.html';
   fleet.textContent = 'Fleet';
   nav.append(fleet);
+  for (const [href, text] of [['/data.html', 'Data'], ['/service.html', 'Services']]) {
+    const a = document.createElement('a');
+    a.href = href;
+    a.textContent = text;
+    nav.append(a);
+  }
   const who = document.createElement('span');
   who.id = 'who';
   who.textContent = `${s.user} (${s.roles.join(', ')})`;
