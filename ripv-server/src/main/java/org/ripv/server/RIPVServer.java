@@ -91,6 +91,7 @@ public final class RIPVServer implements AutoCloseable {
     private int registryPort;
     private WebConsole landingPage;
     private volatile String mapTiles;
+    private volatile String publicNames;
     private ServerSecurity security;
     private RegistryGuard registryGuard;
     private ServerTls tls;
@@ -131,6 +132,15 @@ public final class RIPVServer implements AutoCloseable {
     /** The web console's map tiles ({@code --map-tiles URL}, checked by {@link WebConsole.Options}); set before {@link #start()}. */
     public RIPVServer withMapTiles(String template) {
         this.mapTiles = template;
+        return this;
+    }
+
+    /** The web console's public view of the vehicles whose names match ({@code --public GLOB}); null: off. Set before {@link #start()}. */
+    public RIPVServer withPublicView(String glob) {
+        if (glob != null) {
+            PublicVehicles.glob(glob); // a bad glob is refused now, not at the first visitor
+        }
+        this.publicNames = glob;
         return this;
     }
 
@@ -293,6 +303,9 @@ public final class RIPVServer implements AutoCloseable {
         WebConsole page = new WebConsole(new WebConsole.Options(new InetSocketAddress(bind, config.httpPort()),
                 files.uploadDir(), config.maxUpload(), config.clientJar(), this::describe, port(), security.webAccess(),
                 config.security().httpUpload(), tls.context(), new WebClients(() -> acceptor), codec, mapTiles));
+        if (publicNames != null) {
+            page.withPublicView(new PublicVehicles(this, publicNames));
+        }
         try {
             page.start();
         } catch (IOException e) {

@@ -190,7 +190,7 @@ class WebConsoleBrowserTest {
             shot(b, "fleet-phone");
             b.manage().window().setSize(new Dimension(1280, 900));
 
-            b.findElement(By.linkText(glider)).click();
+            b.findElement(By.linkText("glider1")).click(); // the fleet names a vehicle by its handle, not its address
             wait.until(d -> console(d).contains("GPS Location"));
             String before = console(b);
             b.findElement(By.xpath("//button[text()='Take lock']")).click();

@@ -108,9 +108,16 @@ public final class WebConsole implements AutoCloseable {
     private Server server;
     private ServerConnector connector;
     private ScheduledExecutorService timer;
+    private volatile PublicFleet publicFleet;
 
     public WebConsole(Options options) {
         this.options = Objects.requireNonNull(options, "options");
+    }
+
+    /** Turns the public view on ({@code --public GLOB}): anonymous visitors get {@code /api/public}; set before {@link #start()}. */
+    public WebConsole withPublicView(PublicFleet fleet) {
+        this.publicFleet = fleet;
+        return this;
     }
 
     /** Binds and starts serving; returns at once. */
@@ -192,6 +199,7 @@ public final class WebConsole implements AutoCloseable {
         }
         chain.add(new UploadHandler(options.uploadDir(), options.maxUploadBytes(), options.access(),
                 options.uploads() && options.access() != null, sessions));
+        chain.add(new PublicHandler(publicFleet, options.mapTiles()));
         chain.add(webjarContext);
         chain.add(pages);
         chain.add(new NotFound());

@@ -19,17 +19,22 @@ function formatX(chart, v) {
 }
 
 /** Draws the chart into host (emptied first); returns the uPlot. */
+export function chartSize(host) {
+  const width = Math.max(260, Math.min(host.clientWidth || 800, 1100));
+  return { width, height: Math.round(Math.min(520, Math.max(240, width * 0.6))) };
+}
+
 export function drawChart(host, chart, readout) {
   host.replaceChildren();
   const series = chart.series || [];
   const time = chart.kind === 'TIME' || chart.kind === 'DEPTH';
   const down = chart.kind === 'DEPTH' || chart.kind === 'PROFILE';
-  const width = Math.max(280, Math.min(host.clientWidth || 800, 1100));
-  const height = Math.round(Math.min(520, Math.max(240, width * 0.6)));
+  const { width, height } = chartSize(host);
   const scales = { x: { time }, y: { dir: down ? -1 : 1 } };
   const axes = [{ label: chart.xLabel, stroke: '#1b1f24' }, { label: chart.yLabel, stroke: '#1b1f24', size: 70 }];
   const opts = { width, height, ms: 1, scales, axes, title: chart.title, cursor: { drag: { x: true, y: true, uni: 30 } },
     hooks: { setCursor: [(u) => showValue(u, chart, readout)] } };
+  if (time) opts.tzDate = (ms) => uPlot.tzDate(new Date(ms), 'Etc/UTC'); // the axis in UTC, as the data and the CSV are
   let data;
   if (aligned(series)) {
     opts.series = [{ label: chart.xLabel, value: (u, v) => formatX(chart, v) },
@@ -52,6 +57,9 @@ export function drawChart(host, chart, readout) {
   return u;
 }
 
+// On screen a pointer's place needs no more digits than the axes show; the CSV keeps every digit.
+const shown = (chart, v) => (typeof v === 'number' && !(chart.kind === 'TIME' || chart.kind === 'DEPTH') ? String(Number(v.toPrecision(8))) : formatX(chart, v));
+
 // The pointer's place in the chart's own units: works for every kind, time-ordered or not.
 function showValue(u, chart, readout) {
   if (!readout) return;
@@ -64,9 +72,9 @@ function showValue(u, chart, readout) {
   (chart.series || []).forEach((s) => s.x.forEach((sx, i) => {
     const px = u.valToPos(num(sx), 'x'), py = u.valToPos(num(s.y[i]), 'y');
     const d = (px - left) ** 2 + (py - top) ** 2;
-    if (d < best && num(s.y[i]) != null) { best = d; near = `${s.name}: ${formatX(chart, num(sx))}, ${num(s.y[i])}`; }
+    if (d < best && num(s.y[i]) != null) { best = d; near = `${s.name}: ${shown(chart, num(sx))}, ${num(s.y[i])}`; }
   }));
-  readout.textContent = `pointer ${formatX(chart, x)}, ${Number(y.toPrecision(6))}` + (best < 400 ? ` · nearest ${near}` : '');
+  readout.textContent = `pointer ${shown(chart, x)}, ${Number(y.toPrecision(7))}` + (best < 400 ? ` · nearest ${near}` : '');
 }
 
 /** The chart's numbers as CSV: one row per point, series, x and y (time as ISO UTC). */

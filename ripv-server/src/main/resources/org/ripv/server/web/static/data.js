@@ -3,7 +3,7 @@
 // with the user's rights: the page hides what the server would refuse, the server refuses it anyway.
 import { session, PostOffice, bar } from './postoffice.js';
 import { tableElement, csv, download } from './table.js';
-import { drawChart, chartCsv, chartPng } from './chart.js';
+import { drawChart, chartCsv, chartPng, chartSize } from './chart.js';
 
 const s = await session();
 bar(s);
@@ -99,3 +99,5 @@ $('chart-form').addEventListener('submit', async (e) => {
   download($('chart-csv'), `${base}.csv`, new Blob([chartCsv(chart)], { type: 'text/csv' }));
   download($('chart-png'), `${base}.png`, await chartPng(plot, chart.title));
 });
+// A phone turned, a window resized: the chart follows the page's width.
+window.addEventListener('resize', () => { if (plot) plot.setSize(chartSize($('chart'))); });

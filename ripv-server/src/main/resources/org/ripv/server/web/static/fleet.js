@@ -1,7 +1,7 @@
 // The fleet: every MailBox with its call state, live; positions on an offline lat/lon grid.
 import { session, PostOffice, bar, ago } from './postoffice.js';
 import { drawMap } from './map.js';
-import { vehicleName } from './names.js';
+import { labels } from './names.js';
 
 const s = await session();
 bar(s);
@@ -12,12 +12,12 @@ const stateLine = document.getElementById('state');
 const drawTracks = s.mapTiles ? (await import('./tilemap.js')).tileMap(document.getElementById('map'), s.mapTiles)
   : (list) => drawMap(document.getElementById('map'), list);
 
-function row(address, v) {
+function row(address, v, label) {
   const tr = document.createElement('tr');
   const name = document.createElement('td');
   const link = document.createElement('a');
   link.href = `/vehicle.html?m=${encodeURIComponent(address)}`;
-  link.textContent = vehicleName(address);
+  link.textContent = label;
   link.title = address;
   name.append(link);
   const state = document.createElement('td');
@@ -35,7 +35,8 @@ function row(address, v) {
 
 function render() {
   const body = document.getElementById('vehicles');
-  body.replaceChildren(...[...vehicles.entries()].map(([a, v]) => row(a, v)));
+  const names = labels([...vehicles.keys()]);
+  body.replaceChildren(...[...vehicles.entries()].map(([a, v]) => row(a, v, names.get(a))));
   drawTracks([...vehicles.entries()].map(([a, v]) => ({ name: a, track: v.track })));
 }
 

@@ -16,7 +16,9 @@ const services = (await po.send('', '?services')).result?.services || [];
 const statuses = (await po.send('', '?mailboxes')).result?.mailboxes || [];
 const option = (value, text) => { const o = document.createElement('option'); o.value = value; o.textContent = text; return o; };
 $('service').replaceChildren(...services.map((d) => option(d.name, d.name)));
-if (wanted && services.some((d) => d.name === wanted)) $('service').value = wanted;
+// A service's name is its full prefix (<ClockService>::<host>); ?s= may give that or the short name.
+const picked = services.find((d) => d.name === wanted || d.name.startsWith(`<${wanted}>`));
+if (picked) $('service').value = picked.name;
 $('state').textContent = services.length ? `${services.length} service(s) registered.` : 'No service is registered.';
 
 function show() {
@@ -25,7 +27,7 @@ function show() {
   $('name').textContent = name || 'Services';
   document.title = `RIPV ${name}`;
   $('about').textContent = d ? `${d.description} (SID ${d.sid})` : '';
-  const mine = statuses.filter((m) => m.address.startsWith(`<${name}>`));
+  const mine = statuses.filter((m) => m.address.startsWith(name));
   $('mailboxes').replaceChildren(...mine.map((m) => {
     const tr = document.createElement('tr');
     tr.dataset.address = m.address;
@@ -35,7 +37,7 @@ function show() {
     return tr;
   }));
   $('mailbox').replaceChildren(...mine.map((m) => option(m.address, vehicleName(m.address))));
-  history.replaceState(null, '', `?s=${encodeURIComponent(name)}`);
+  history.replaceState(null, '', `?s=${encodeURIComponent(name.replace(/^<([^>]*)>.*$/, '$1'))}`);
 }
 $('service').addEventListener('change', show);
 show();
