@@ -24,11 +24,14 @@ import org.openqa.selenium.support.ui.WebDriverWait;
  * real headless Chromium sends the ClockService a command on a page that knows nothing of it,
  * ingests a Slocum file through the same page, sees its positions in the data page's view and
  * draws {@code vis:track} as a chart whose CSV is the positions; a user whose permit rules allow
- * only the views gets no SQL box, and the server refuses their SQL when the page is bypassed.
+ * only the views gets no SQL box, and the server refuses their SQL when the page is bypassed. With
+ * {@code --map-tiles} the fleet's map is Leaflet (from the WebJar) asking the given tile host.
  */
 class WebDataBrowserTest {
     static final String DB = "<DatabaseServer>::<localhost>TTY1";
     static final String TRACKED = "unit_363";
+    /** A tile server that is not there: the map must still be Leaflet's, asking that host and no other. */
+    static final String TILES = "https://127.0.0.1:9/tiles/{z}/{x}/{y}.png";
 
     @TempDir
     static Path dir;
@@ -40,7 +43,7 @@ class WebDataBrowserTest {
         sys = new LaunchedWeb(dir, List.of("alice:operators", "vera:viewers"), List.of(
                 "allow @viewers DatabaseServer * SELECT * FROM positions ORDER BY*",
                 "allow @viewers DatabaseServer * SELECT * FROM latest ORDER BY*",
-                "allow @viewers DatabaseServer * SELECT * FROM dives ORDER BY*"));
+                "allow @viewers DatabaseServer * SELECT * FROM dives ORDER BY*"), "--map-tiles", TILES);
         sys.service("database", "--data", dir.resolve("database").toString());
         sys.service("datavis", "--workdir", dir.resolve("datavis").toString());
         sys.service("clock");
@@ -82,7 +85,7 @@ class WebDataBrowserTest {
             // The same page talks to the DatabaseServer: the ingest is an ordinary command.
             send(b, "DatabaseServer", "ingest unit_363_2013_245_6_6.mrg");
             wait.until(d -> text(b, "replies").contains("positions"));
-            assertThat(text(b, "replies")).doesNotContain("Error");
+            assertThat(text(b, "replies").substring(text(b, "replies").indexOf("> ingest"))).doesNotContain("Error");
 
             b.get(sys.url("/data.html"));
             wait.until(d -> text(b, "table-state").matches("\\d+ rows.*"));
@@ -124,6 +127,20 @@ class WebDataBrowserTest {
             b.findElement(By.id("draw")).click(); // drawn again at the phone's width
             wait.until(d -> text(b, "chart-state").startsWith("plotted"));
             LaunchedWeb.shot(b, "data-phone");
+        } finally {
+            b.quit();
+        }
+    }
+
+    @Test
+    void withMapTilesTheFleetMapIsLeafletOnThoseTiles() throws Exception {
+        ChromeDriver b = sys.loggedIn("alice");
+        try {
+            WebDriverWait wait = new WebDriverWait(b, WebConsoleBrowserTest.T);
+            wait.until(d -> !d.findElements(By.cssSelector("#map.leaflet-container img.leaflet-tile")).isEmpty());
+            assertThat(b.findElements(By.cssSelector("#map.leaflet-container img.leaflet-tile")))
+                    .allMatch(img -> img.getAttribute("src").startsWith("https://127.0.0.1:9/tiles/"));
+            assertThat(b.findElement(By.cssSelector(".leaflet-control-attribution")).getText()).contains("127.0.0.1:9");
         } finally {
             b.quit();
         }
