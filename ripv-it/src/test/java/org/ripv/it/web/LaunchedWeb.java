@@ -28,6 +28,7 @@ public final class LaunchedWeb implements AutoCloseable {
     public final int registry;
     public final int http;
     private final List<Process> processes = new ArrayList<>();
+    private final java.util.concurrent.atomic.AtomicInteger browsers = new java.util.concurrent.atomic.AtomicInteger();
 
     /** Users as NAME:ROLES (each with {@link WebConsoleBrowserTest#PASSWORD}); extra permit lines appended after them. */
     public LaunchedWeb(Path dir, List<String> users, List<String> permitLines, String... serverOptions) throws Exception {
@@ -136,7 +137,8 @@ public final class LaunchedWeb implements AutoCloseable {
 
     /** A fresh browser of the user's own, logged in, on the fleet page. */
     ChromeDriver loggedIn(String user) throws IOException {
-        ChromeDriver b = Chromium.start(Files.createDirectories(dir.resolve(user + "-browser")), downloads(user));
+        // A profile of its own each time: a second browser of the same user starts logged out, as a new device does.
+        ChromeDriver b = Chromium.start(Files.createDirectories(dir.resolve(user + "-browser-" + browsers.incrementAndGet())), downloads(user));
         try {
             b.get(url("/"));
             b.findElement(By.id("user")).sendKeys(user);
