@@ -46,7 +46,8 @@ export function drawChart(host, chart, readout) {
     opts.scales.x.auto = true;
     opts.scales.y.auto = true;
     opts.series = [{}, ...series.map((s, i) => ({ label: s.unit ? `${s.name} (${s.unit})` : s.name, stroke: COLOURS[i % COLOURS.length],
-      fill: null, points: { show: true, size: 5, fill: COLOURS[i % COLOURS.length] },
+      // every fix as a dot: uPlot's own point filter counts on time-ordered x, so name them all
+      fill: null, points: { show: true, size: 5, fill: COLOURS[i % COLOURS.length], filter: (u, si) => u.data[si][0].map((_, k) => k) },
       facets: [{ scale: 'x', auto: true }, { scale: 'y', auto: true }] }))];
     opts.legend = { live: false };
     data = [null, ...series.map((s) => [s.x.map(num), s.y.map(num)])];
