@@ -61,6 +61,19 @@ CREATE TABLE sensor_latest (
     CONSTRAINT sensor_latest_pk PRIMARY KEY (vehicle, sensor_id)
 );
 
+-- Each cycle once (T: its time to 10 microseconds, as dbd2asc prints it). A segment (the header's filename, e.g. rosie_713-2019-166-0-156) reaches the
+-- shore as .sbd/.tbd on a call and later as .dbd/.ebd (or compressed, or twice); its cycles are the
+-- same cycles. The ingest stores a cycle's values under the (file_id, row_no) of the first file
+-- that had it and merges later files' values into them, a later value replacing the one stored.
+CREATE TABLE cycle (
+    vehicle           VARCHAR(64)      NOT NULL,
+    segment           VARCHAR(255)     NOT NULL,
+    t                 TIMESTAMP        NOT NULL,
+    file_id           INTEGER          NOT NULL,
+    row_no            INTEGER          NOT NULL,
+    CONSTRAINT cycle_pk PRIMARY KEY (vehicle, segment, t)
+);
+
 -- A sensor's values of one vehicle in time order: positions, latest, tracks, depth plots.
 CREATE INDEX reading_sensor_vehicle_t ON reading (sensor_id, vehicle, t);
 
@@ -99,9 +112,12 @@ SELECT r.vehicle, r.t, CASE WHEN s.name = 'm_depth' THEN r.value ELSE r.value * 
   FROM sensor_def s JOIN reading r ON r.sensor_id = s.sensor_id
  WHERE s.name IN ('m_depth', 'sci_water_pressure');
 
--- One row per ingested file (a Slocum segment: a dive, a climb, a surfacing) with its time span
--- and m_depth range, which the ingest keeps in DATA_FILE: no scan of READING.
+-- One row per Slocum segment (a dive, a climb, a surfacing) with its time span and m_depth range,
+-- which the ingest keeps in DATA_FILE: no scan of READING. Of the files of one segment with
+-- depths (.sbd, later its .dbd) the last ingested speaks for it.
 CREATE VIEW dives (vehicle, file_id, name, start_utc, end_utc, max_depth, min_depth, depth_values) AS
-SELECT vehicle, file_id, dba_filename, first_time, last_time, max_depth, min_depth, depth_count
-  FROM data_file
- WHERE depth_count > 0;
+SELECT d.vehicle, d.file_id, d.dba_filename, d.first_time, d.last_time, d.max_depth, d.min_depth, d.depth_count
+  FROM data_file d
+ WHERE d.depth_count > 0
+   AND NOT EXISTS (SELECT 1 FROM data_file n WHERE n.vehicle = d.vehicle AND n.dba_filename = d.dba_filename
+                      AND n.depth_count > 0 AND n.file_id > d.file_id);

@@ -59,13 +59,20 @@ public final class SingleLineCommand {
 
     /** The start of a text for a log or a message: at most 80 characters, controls shown as {@code \r}, {@code ^C}, {@code \x1b}. */
     public static String shown(String s) {
+        if (s.length() <= 77 && firstControl(s) < 0 && s.indexOf('\t') < 0) {
+            return s; // nothing to shorten or make visible: the common case, without a copy
+        }
         StringBuilder b = new StringBuilder();
         for (int i = 0; i < s.length(); i++) {
             if (b.length() >= 77) {
                 return b.append("...").toString();
             }
             char c = s.charAt(i);
-            b.append(isRefused(c) || c == '\t' ? visible(c) : String.valueOf(c));
+            if (isRefused(c) || c == '\t') {
+                b.append(visible(c));
+            } else {
+                b.append(c);
+            }
         }
         return b.toString();
     }

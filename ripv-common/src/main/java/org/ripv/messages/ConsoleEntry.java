@@ -18,9 +18,13 @@ import java.util.Objects;
  * @param event   the event for {@link Kind#EVENT} entries, else null
  * @param lat     a position that came with it (decimal degrees, north positive), or null
  * @param lon     decimal degrees, east positive, or null
+ * @param seq     the entry's place in the server's console, increasing across MailBoxes and server
+ *                restarts (the server stamps it as it takes the entry); 0 when not stamped (a
+ *                service's entry on its way, or one read back from a transcript). Two entries of a
+ *                MailBox made in the same millisecond still have different numbers.
  */
 public record ConsoleEntry(long time, String mailbox, Kind kind, String user, String text, VehicleEvent event,
-                           Double lat, Double lon) implements Serializable {
+                           Double lat, Double lon, long seq) implements Serializable {
 
     /** What a console entry is. */
     public enum Kind { LINE, COMMAND, EVENT, TRANSFER }
@@ -33,6 +37,17 @@ public record ConsoleEntry(long time, String mailbox, Kind kind, String user, St
         if (kind == Kind.EVENT) {
             Objects.requireNonNull(event, "event");
         }
+    }
+
+    /** An entry the server has not stamped yet. */
+    public ConsoleEntry(long time, String mailbox, Kind kind, String user, String text, VehicleEvent event,
+                        Double lat, Double lon) {
+        this(time, mailbox, kind, user, text, event, lat, lon, 0);
+    }
+
+    /** This entry with its place in the server's console. */
+    public ConsoleEntry withSeq(long number) {
+        return new ConsoleEntry(time, mailbox, kind, user, text, event, lat, lon, number);
     }
 
     public static ConsoleEntry line(String mailbox, String text) {

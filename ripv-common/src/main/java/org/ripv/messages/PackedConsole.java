@@ -15,16 +15,18 @@ import java.util.List;
  * half that, and reading it creates no object per field.
  *
  * <p>Layout ({@link PackedBytes}): version, mailbox, skipped, more, entry count; per entry its
- * time, its mailbox (null when it is the batch's), kind, user, text, event (255 for none), and a
- * flag byte followed by the latitude and longitude when it has a position.
+ * time, its sequence number (from version 2), its mailbox (null when it is the batch's), kind,
+ * user, text, event (255 for none), and a flag byte followed by the latitude and longitude when it
+ * has a position. Version 1 (no sequence numbers) is still read.
  */
 final class PackedConsole implements Serializable {
     @Serial
     private static final long serialVersionUID = 1L;
-    private static final int VERSION = 1;
+    private static final int VERSION = 2;
     private static final int NO_EVENT = 255;
     /** The fewest bytes an entry takes: time, mailbox, kind, user, text, event, position flag. */
     private static final int MIN_ENTRY = 8 + 4 + 1 + 4 + 4 + 1 + 1;
+    private static final int SEQ_BYTES = 8;
 
     private final byte[] data;
 
@@ -37,6 +39,7 @@ final class PackedConsole implements Serializable {
         w.writeInt(b.entries().size());
         for (ConsoleEntry e : b.entries()) {
             w.writeLong(e.time());
+            w.writeLong(e.seq());
             w.writeString(e.mailbox().equals(b.mailbox()) ? null : e.mailbox());
             w.writeByte(e.kind().ordinal());
             w.writeString(e.user());
@@ -58,17 +61,19 @@ final class PackedConsole implements Serializable {
             throw new InvalidObjectException("packed console batch without data");
         }
         PackedBytes.Reader r = new PackedBytes.Reader(data, "packed console batch");
-        if (r.readInt() != VERSION) {
-            throw new InvalidObjectException("unknown packed console batch version");
+        int version = r.readInt();
+        if (version != 1 && version != VERSION) {
+            throw new InvalidObjectException("unknown packed console batch version " + version);
         }
         String mailbox = nonNull(r.readString(), "mailbox");
         long skipped = r.readLong();
         boolean more = r.readByte() != 0;
-        int n = r.readCount(MIN_ENTRY);
+        int n = r.readCount(MIN_ENTRY + (version == 1 ? 0 : SEQ_BYTES));
         List<ConsoleEntry> entries = new ArrayList<>(n);
         try {
             for (int i = 0; i < n; i++) {
                 long time = r.readLong();
+                long seq = version == 1 ? 0 : r.readLong();
                 String own = r.readString();
                 ConsoleEntry.Kind kind = ConsoleEntry.Kind.values()[index(r.readByte(), ConsoleEntry.Kind.values().length)];
                 String user = r.readString();
@@ -81,7 +86,7 @@ final class PackedConsole implements Serializable {
                     lat = Double.longBitsToDouble(r.readLong());
                     lon = Double.longBitsToDouble(r.readLong());
                 }
-                entries.add(new ConsoleEntry(time, own == null ? mailbox : own, kind, user, text, ev, lat, lon));
+                entries.add(new ConsoleEntry(time, own == null ? mailbox : own, kind, user, text, ev, lat, lon, seq));
             }
             if (r.remaining() != 0) {
                 throw new InvalidObjectException("packed console batch has " + r.remaining() + " bytes after its last entry");

@@ -1,12 +1,12 @@
 package org.ripv.messages;
 
-import java.io.ByteArrayOutputStream;
-import java.io.DataInputStream;
-import java.io.DataOutputStream;
+import java.io.Externalizable;
 import java.io.IOException;
+import java.io.InputStream;
 import java.io.InvalidObjectException;
+import java.io.ObjectInput;
+import java.io.ObjectOutput;
 import java.io.ObjectStreamException;
-import java.io.Serializable;
 import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
@@ -18,21 +18,83 @@ import java.util.List;
  * serialization of the nested records, enums and lists cost most of a round trip's CPU; this
  * costs a fraction, on the client socket and on RMI alike. Reading checks every length against
  * the bytes present and rebuilds the message through its validating constructors.
+ *
+ * <p>Externalizable, so that its class descriptor names no fields: every RMI call and frame
+ * writes and parses the descriptor anew, and the four fields' names and types, with the byte
+ * array's own descriptor, were most of what a call spent on the message.
  */
-final class PackedMessage implements Serializable {
-    private static final long serialVersionUID = 1L;
+final class PackedMessage implements Externalizable {
+    private static final long serialVersionUID = 2L;
     private static final int MAX_LIST = 255;
+    private static final int HAS_ATTACHMENT = 1;
+    private static final int HAS_RESULT = 2;
 
-    private final byte kind;
-    private final byte[] fields;
-    private final Attachment attachment;
-    private final Result result;
+    private byte kind;
+    private byte[] fields;
+    private Attachment attachment;
+    private Result result;
 
-    private PackedMessage(byte kind, byte[] fields, Attachment attachment, Result result) {
+    /** For deserialization only ({@link #readExternal} fills it in). */
+    public PackedMessage() {
+    }
+
+    PackedMessage(byte kind, byte[] fields, Attachment attachment, Result result) {
         this.kind = kind;
         this.fields = fields;
         this.attachment = attachment;
         this.result = result;
+    }
+
+    @Override
+    public void writeExternal(ObjectOutput out) throws IOException {
+        out.writeByte(kind);
+        out.writeInt(fields == null ? -1 : fields.length);
+        if (fields != null) {
+            out.write(fields);
+        }
+        out.writeByte((attachment == null ? 0 : HAS_ATTACHMENT) | (result == null ? 0 : HAS_RESULT));
+        if (attachment != null) {
+            out.writeObject(attachment);
+        }
+        if (result != null) {
+            out.writeObject(result);
+        }
+    }
+
+    @Override
+    public void readExternal(ObjectInput in) throws IOException, ClassNotFoundException {
+        kind = in.readByte();
+        int n = in.readInt();
+        if (n < -1) {
+            throw new InvalidObjectException("a packed message of " + n + " bytes");
+        }
+        if (n >= 0) {
+            // Read what is there rather than allocate what the length claims: a lying length
+            // costs the liar its own bytes, not the reader an array of 2 GB.
+            byte[] b = in instanceof InputStream stream ? stream.readNBytes(n) : new byte[0];
+            if (b.length != n) {
+                throw new InvalidObjectException("a packed message cut short: " + b.length + " of " + n + " bytes");
+            }
+            fields = b;
+        }
+        int has = in.readUnsignedByte();
+        if ((has & ~(HAS_ATTACHMENT | HAS_RESULT)) != 0) {
+            throw new InvalidObjectException("unknown flags " + has + " in a packed message");
+        }
+        if ((has & HAS_ATTACHMENT) != 0) {
+            attachment = typed(in.readObject(), Attachment.class);
+        }
+        if ((has & HAS_RESULT) != 0) {
+            result = typed(in.readObject(), Result.class);
+        }
+    }
+
+    private static <T> T typed(Object o, Class<T> type) throws InvalidObjectException {
+        if (!type.isInstance(o)) {
+            throw new InvalidObjectException("a packed message holds " + (o == null ? "null" : o.getClass().getName())
+                    + " where " + type.getSimpleName() + " belongs");
+        }
+        return type.cast(o);
     }
 
     static PackedMessage pack(Message m) {
@@ -40,45 +102,85 @@ final class PackedMessage implements Serializable {
                 : m instanceof OutgoingServiceMessage ? (byte) 2 : (byte) 3;
         Header h = m.header();
         Footer f = m.footer();
-        ByteArrayOutputStream bytes = new ByteArrayOutputStream(128 + h.body().length() + f.replyText().length());
-        try (DataOutputStream out = new DataOutputStream(bytes)) {
-            out.writeLong(h.messageId());
-            text(out, h.origin().clientId());
-            text(out, h.origin().user());
-            list(out, h.roles());
-            text(out, h.serviceDestination());
-            text(out, h.mailboxAddress());
-            text(out, h.body());
-            out.writeByte(h.priority().ordinal());
-            text(out, f.serviceId());
-            out.writeByte(f.status().ordinal());
-            text(out, f.errorCode().name());
-            list(out, f.route());
-            text(out, f.replyText());
-        } catch (IOException e) {
-            throw new UncheckedIOException(e); // a byte array does not fail
+        // Straight into one array of the exact size: no stream, no buffer grown and copied.
+        byte[][] texts = new byte[10 + h.roles().size() + f.route().size()][];
+        int n = 0;
+        texts[n++] = utf8(h.origin().clientId());
+        texts[n++] = utf8(h.origin().user());
+        for (String r : h.roles()) {
+            texts[n++] = utf8(r);
         }
-        return new PackedMessage(kind, bytes.toByteArray(), h.attachment(), f.result());
+        texts[n++] = utf8(h.serviceDestination());
+        texts[n++] = utf8(h.mailboxAddress());
+        texts[n++] = utf8(h.body());
+        texts[n++] = utf8(f.serviceId());
+        texts[n++] = utf8(f.errorCode().name());
+        for (String r : f.route()) {
+            texts[n++] = utf8(r);
+        }
+        texts[n++] = utf8(f.replyText());
+        checkListSize(h.roles().size());
+        checkListSize(f.route().size());
+        int size = 8 + 1 + 1 + 1 + 1 + 4 * n;
+        for (int i = 0; i < n; i++) {
+            size += texts[i].length;
+        }
+        Out out = new Out(new byte[size]);
+        int t = 0;
+        out.putLong(h.messageId());
+        out.putText(texts[t++]);
+        out.putText(texts[t++]);
+        out.put(h.roles().size());
+        for (int i = 0; i < h.roles().size(); i++) {
+            out.putText(texts[t++]);
+        }
+        out.putText(texts[t++]);
+        out.putText(texts[t++]);
+        out.putText(texts[t++]);
+        out.put(h.priority().ordinal());
+        out.putText(texts[t++]);
+        out.put(f.status().ordinal());
+        out.putText(texts[t++]);
+        out.put(f.route().size());
+        for (int i = 0; i < f.route().size(); i++) {
+            out.putText(texts[t++]);
+        }
+        out.putText(texts[t]);
+        return new PackedMessage(kind, out.bytes, h.attachment(), f.result());
+    }
+
+    byte kind() {
+        return kind;
+    }
+
+    byte[] fields() {
+        return fields;
     }
 
     private Object readResolve() throws ObjectStreamException {
+        return resolve();
+    }
+
+    /** The message these fields describe, checked as on reading. */
+    Message resolve() throws InvalidObjectException {
         if (fields == null) {
             throw new InvalidObjectException("a packed message without fields");
         }
-        try (DataInputStream in = new DataInputStream(new java.io.ByteArrayInputStream(fields))) {
-            long id = in.readLong();
-            IdBadge origin = new IdBadge(text(in), text(in));
-            List<String> roles = list(in);
-            String destination = text(in);
-            String mailbox = text(in);
-            String body = text(in);
-            Priority priority = Priority.values()[index(in.readUnsignedByte(), Priority.values().length)];
-            String sid = text(in);
-            Status status = Status.values()[index(in.readUnsignedByte(), Status.values().length)];
-            ErrorCode code = ErrorCode.valueOf(text(in));
-            List<String> route = list(in);
-            String reply = text(in);
-            if (in.available() != 0) {
+        try {
+            In in = new In(fields);
+            long id = in.getLong();
+            IdBadge origin = new IdBadge(in.text(), in.text());
+            List<String> roles = in.list();
+            String destination = in.text();
+            String mailbox = in.text();
+            String body = in.text();
+            Priority priority = PRIORITIES[index(in.get(), PRIORITIES.length)];
+            String sid = in.text();
+            Status status = STATUSES[index(in.get(), STATUSES.length)];
+            ErrorCode code = ErrorCode.valueOf(in.text());
+            List<String> route = in.list();
+            String reply = in.text();
+            if (in.remaining() != 0) {
                 throw new InvalidObjectException("trailing bytes in a packed message");
             }
             Header h = new Header(id, origin, roles, destination, mailbox, body, priority, attachment);
@@ -92,12 +194,16 @@ final class PackedMessage implements Serializable {
             };
         } catch (InvalidObjectException e) {
             throw e;
-        } catch (IOException | RuntimeException e) {
+        } catch (RuntimeException e) {
             InvalidObjectException bad = new InvalidObjectException("malformed packed message: " + e.getMessage());
             bad.initCause(e);
             throw bad;
         }
     }
+
+    /** The enums' values, copied once rather than on every message. */
+    private static final Priority[] PRIORITIES = Priority.values();
+    private static final Status[] STATUSES = Status.values();
 
     private static int index(int i, int size) throws InvalidObjectException {
         if (i >= size) {
@@ -106,39 +212,102 @@ final class PackedMessage implements Serializable {
         return i;
     }
 
-    private static void text(DataOutputStream out, String s) throws IOException {
-        byte[] b = s.getBytes(StandardCharsets.UTF_8);
-        out.writeInt(b.length);
-        out.write(b);
+    private static byte[] utf8(String s) {
+        return s.getBytes(StandardCharsets.UTF_8);
     }
 
-    private static String text(DataInputStream in) throws IOException {
-        int n = in.readInt();
-        if (n < 0 || n > in.available()) {
-            throw new InvalidObjectException("a text of " + n + " bytes where " + in.available() + " remain");
-        }
-        return new String(in.readNBytes(n), StandardCharsets.UTF_8);
-    }
-
-    private static void list(DataOutputStream out, List<String> l) throws IOException {
-        if (l.size() > MAX_LIST) {
-            throw new IOException("a list of " + l.size() + " is longer than a message may carry (" + MAX_LIST + ")");
-        }
-        out.writeByte(l.size());
-        for (String s : l) {
-            text(out, s);
-        }
-    }
-
-    private static List<String> list(DataInputStream in) throws IOException {
-        int n = in.readUnsignedByte();
+    private static void checkListSize(int n) {
         if (n > MAX_LIST) {
-            throw new InvalidObjectException("a list of " + n + " where at most " + MAX_LIST + " are allowed");
+            throw new UncheckedIOException(new java.io.IOException(
+                    "a list of " + n + " is longer than a message may carry (" + MAX_LIST + ")"));
         }
-        List<String> l = new ArrayList<>(n);
-        for (int i = 0; i < n; i++) {
-            l.add(text(in));
+    }
+
+    /** Big-endian writes into an array sized beforehand. */
+    private static final class Out {
+        final byte[] bytes;
+        int pos;
+
+        Out(byte[] bytes) {
+            this.bytes = bytes;
         }
-        return l;
+
+        void put(int b) {
+            bytes[pos++] = (byte) b;
+        }
+
+        void putInt(int v) {
+            bytes[pos++] = (byte) (v >>> 24);
+            bytes[pos++] = (byte) (v >>> 16);
+            bytes[pos++] = (byte) (v >>> 8);
+            bytes[pos++] = (byte) v;
+        }
+
+        void putLong(long v) {
+            putInt((int) (v >>> 32));
+            putInt((int) v);
+        }
+
+        void putText(byte[] b) {
+            putInt(b.length);
+            System.arraycopy(b, 0, bytes, pos, b.length);
+            pos += b.length;
+        }
+    }
+
+    /** Reads the fields in place, every length checked against the bytes left. */
+    private static final class In {
+        private final byte[] bytes;
+        private int pos;
+
+        In(byte[] bytes) {
+            this.bytes = bytes;
+        }
+
+        int remaining() {
+            return bytes.length - pos;
+        }
+
+        private void need(int n) throws InvalidObjectException {
+            if (remaining() < n) {
+                throw new InvalidObjectException("a packed message cut short");
+            }
+        }
+
+        int get() throws InvalidObjectException {
+            need(1);
+            return bytes[pos++] & 0xff;
+        }
+
+        int getInt() throws InvalidObjectException {
+            need(4);
+            int v = (bytes[pos] & 0xff) << 24 | (bytes[pos + 1] & 0xff) << 16 | (bytes[pos + 2] & 0xff) << 8 | bytes[pos + 3] & 0xff;
+            pos += 4;
+            return v;
+        }
+
+        long getLong() throws InvalidObjectException {
+            long high = getInt();
+            return high << 32 | getInt() & 0xffffffffL;
+        }
+
+        String text() throws InvalidObjectException {
+            int n = getInt();
+            if (n < 0 || n > remaining()) {
+                throw new InvalidObjectException("a text of " + n + " bytes where " + remaining() + " remain");
+            }
+            String s = new String(bytes, pos, n, StandardCharsets.UTF_8);
+            pos += n;
+            return s;
+        }
+
+        List<String> list() throws InvalidObjectException {
+            int n = get();
+            List<String> l = new ArrayList<>(n);
+            for (int i = 0; i < n; i++) {
+                l.add(text());
+            }
+            return l;
+        }
     }
 }

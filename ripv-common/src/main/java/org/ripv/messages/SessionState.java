@@ -12,9 +12,12 @@ import java.io.Serializable;
  * @param lon         the last position's longitude, or null
  * @param calls       how many calls (SURFACED events) the server has seen
  * @param lastEvent   the last event, or null
+ * @param lastSeq     the {@link ConsoleEntry#seq()} of the last console entry this state counts, or 0
+ *                    when unknown: an entry with a higher number is news, one with a lower or equal
+ *                    number is already counted, whatever the millisecond it was made in
  */
-public record SessionState(State state, long lastContact, Double lat, Double lon, int calls, VehicleEvent lastEvent)
-        implements Serializable {
+public record SessionState(State state, long lastContact, Double lat, Double lon, int calls, VehicleEvent lastEvent,
+                           long lastSeq) implements Serializable {
 
     /** A vehicle MailBox's call state. */
     public enum State {
@@ -28,6 +31,11 @@ public record SessionState(State state, long lastContact, Double lat, Double lon
 
     public SessionState {
         state = state == null ? State.UNKNOWN : state;
+    }
+
+    /** A state that does not say which console entries it counts. */
+    public SessionState(State state, long lastContact, Double lat, Double lon, int calls, VehicleEvent lastEvent) {
+        this(state, lastContact, lat, lon, calls, lastEvent, 0);
     }
 
     /** True when a position is known. */

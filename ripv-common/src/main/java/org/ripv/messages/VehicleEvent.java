@@ -21,5 +21,12 @@ public enum VehicleEvent {
     WORKFLOW_DONE,
     WORKFLOW_FAILED,
     /** A workflow reached its end, but steps marked {@code continue-on-error} failed on the way. */
-    WORKFLOW_DONE_WITH_ERRORS
+    WORKFLOW_DONE_WITH_ERRORS,
+    /**
+     * A DatabaseServer keeps a Slocum binary file it cannot decode yet: its sensor list is in a
+     * cache file ({@code CRC.cac}) the server does not hold. The text names the file and the CRC.
+     */
+    INGEST_WAITING,
+    /** A file that waited for its sensor-list cache was ingested once the cache arrived. */
+    INGEST_RELEASED
 }

@@ -12,10 +12,11 @@ public record MailboxAddress(ServiceName service, String handle) {
     static final String HANDLE = "[A-Za-z0-9][A-Za-z0-9._\\-]{0,127}";
     private static final Pattern FULL = Pattern.compile(
             "<(" + ServiceName.SERVICE + ")>::<(" + ServiceName.HOST + ")>(" + HANDLE + ")");
+    private static final Pattern HANDLE_ONLY = Pattern.compile(HANDLE);
 
     public MailboxAddress {
         Objects.requireNonNull(service, "service");
-        if (handle == null || !handle.matches(HANDLE)) {
+        if (handle == null || !HANDLE_ONLY.matcher(handle).matches()) {
             throw new MalformedNameException("a mailbox handle is letters, digits, '.', '_' or '-', got '" + handle + "'");
         }
     }

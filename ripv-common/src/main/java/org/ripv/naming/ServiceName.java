@@ -12,14 +12,17 @@ public record ServiceName(String service, String host) {
     static final String SERVICE = "[A-Za-z][A-Za-z0-9_]{0,63}";
     static final String HOST = "[A-Za-z0-9._:%\\-]{1,253}";
     private static final Pattern FULL = Pattern.compile("<(" + SERVICE + ")>::<(" + HOST + ")>");
+    /** Compiled once: every request's address is checked against them. */
+    private static final Pattern SERVICE_NAME = Pattern.compile(SERVICE);
+    private static final Pattern HOST_NAME = Pattern.compile(HOST);
 
     public ServiceName {
         Objects.requireNonNull(service, "service");
         Objects.requireNonNull(host, "host");
-        if (!service.matches(SERVICE)) {
+        if (!SERVICE_NAME.matcher(service).matches()) {
             throw new MalformedNameException("a service name is a letter then letters, digits or _, got '" + service + "'");
         }
-        if (!host.matches(HOST)) {
+        if (!HOST_NAME.matcher(host).matches()) {
             throw new MalformedNameException("'" + host + "' is not a host name or address");
         }
     }

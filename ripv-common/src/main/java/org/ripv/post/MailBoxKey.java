@@ -3,6 +3,8 @@ package org.ripv.post;
 import java.time.Instant;
 import java.util.Optional;
 import java.util.concurrent.atomic.AtomicReference;
+import org.ripv.messages.Header;
+import org.ripv.messages.Message;
 
 /**
  * Locks a {@link MailBox} while a command runs in it, so one conversation with a device happens
@@ -13,11 +15,23 @@ public final class MailBoxKey {
     /** Who holds the key and since when. */
     public record Holder(String who, String command, Instant since) {}
 
-    private final AtomicReference<Holder> holder = new AtomicReference<>();
+    /**
+     * The request holding the key and when it took it. Kept as the request itself: who and what
+     * are only put in words when someone asks ({@link #holder}), not for every command run.
+     */
+    private record Taken(Message request, long sinceMillis) {
+        Holder describe() {
+            Header h = request.header();
+            return new Holder(h.origin().user() + "@" + h.origin().clientId(), Header.abbreviate(h.body()),
+                    Instant.ofEpochMilli(sinceMillis));
+        }
+    }
 
-    void take(String who, String command) {
-        if (!holder.compareAndSet(null, new Holder(who, command, Instant.now()))) {
-            throw new IllegalStateException("key already held by " + holder.get());
+    private final AtomicReference<Taken> holder = new AtomicReference<>();
+
+    void take(Message request) {
+        if (!holder.compareAndSet(null, new Taken(request, System.currentTimeMillis()))) {
+            throw new IllegalStateException("key already held by " + holder().orElse(null));
         }
     }
 
@@ -31,6 +45,6 @@ public final class MailBoxKey {
     }
 
     public Optional<Holder> holder() {
-        return Optional.ofNullable(holder.get());
+        return Optional.ofNullable(holder.get()).map(Taken::describe);
     }
 }

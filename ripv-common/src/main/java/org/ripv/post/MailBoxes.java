@@ -7,8 +7,7 @@ public final class MailBoxes {
     private MailBoxes() {}
 
     public static void takeKey(MailBox<?, ?> box, Message request) {
-        box.key().take(request.header().origin().user() + "@" + request.header().origin().clientId(),
-                org.ripv.messages.Header.abbreviate(request.header().body()));
+        box.key().take(request);
     }
 
     public static void giveBackKey(MailBox<?, ?> box) {

@@ -15,17 +15,25 @@ import org.slf4j.LoggerFactory;
  * Carries a service's console entries to the server on a thread of its own, batched, so that a
  * vehicle printing fast never waits on RMI. A batch the server did not take (it is restarting, or
  * a standby is taking over) is offered again until it is, so nothing said in between is lost. The
- * queue is bounded: when the server cannot keep up, or stays away, entries are skipped and one
- * "N lines skipped" line per MailBox says so, in place (after the entries queued before the skip),
- * once there is room.
+ * queue is bounded in entries and in characters (a link may allow lines of a megabyte): when the
+ * server cannot keep up, or stays away, entries are skipped and one "N lines skipped" line per
+ * MailBox says so, in place (after the entries queued before the skip), once there is room. A batch
+ * carries at most {@link #BATCH_CHARS} characters, so one RMI call never needs more than that.
  */
 final class ConsolePublisher {
     private static final Logger log = LoggerFactory.getLogger(ConsolePublisher.class);
     private static final int BATCH = 500;
+    /** What an entry costs besides its text (the record, its strings' headers, the MailBox is shared). */
+    static final int ENTRY_OVERHEAD = 128;
+    /** The most characters (with {@link #ENTRY_OVERHEAD} per entry) waiting at once. */
+    static final long MAX_QUEUED_CHARS = 4L * 1024 * 1024;
+    /** The most characters in one batch (a single bigger entry goes alone). */
+    static final long BATCH_CHARS = 1024 * 1024;
     /** How long one batch is offered to a server that keeps failing before it is counted as skipped. */
     static final long GIVE_UP_MILLIS = 5 * 60_000;
 
     private final BlockingQueue<ConsoleEntry> queue;
+    private final AtomicLong queuedChars = new AtomicLong();
     private final Supplier<ReplySink> sink;
     private final java.util.concurrent.ConcurrentHashMap<String, AtomicLong> skipped =
             new java.util.concurrent.ConcurrentHashMap<>();
@@ -44,7 +52,7 @@ final class ConsolePublisher {
         if (anySkipped) {
             queueSkipMarkers();
         }
-        if (!queue.offer(entry)) {
+        if (!offer(entry)) {
             skipped.computeIfAbsent(entry.mailbox(), m -> new AtomicLong()).incrementAndGet();
             anySkipped = true;
         }
@@ -59,10 +67,46 @@ final class ConsolePublisher {
                 return;
             }
             long n = e.getValue().getAndSet(0);
-            if (n > 0 && !queue.offer(ConsoleEntry.line(e.getKey(), "[" + n + " lines skipped: the server could not keep up]"))) {
+            if (n > 0 && !offer(ConsoleEntry.line(e.getKey(), "[" + n + " lines skipped: the server could not keep up]"))) {
                 e.getValue().addAndGet(n);
                 anySkipped = true;
             }
+        }
+    }
+
+    private static long cost(ConsoleEntry e) {
+        return e.text().length() + e.user().length() + ENTRY_OVERHEAD;
+    }
+
+    /** Queues the entry if both the count and the characters allow it. */
+    private boolean offer(ConsoleEntry e) {
+        long c = cost(e);
+        if (queuedChars.addAndGet(c) > MAX_QUEUED_CHARS) {
+            queuedChars.addAndGet(-c);
+            return false;
+        }
+        if (!queue.offer(e)) {
+            queuedChars.addAndGet(-c);
+            return false;
+        }
+        return true;
+    }
+
+    /** Moves queued entries into the batch, up to {@link #BATCH} entries and {@link #BATCH_CHARS} characters. */
+    private void drain(List<ConsoleEntry> batch) {
+        long chars = 0;
+        for (ConsoleEntry e : batch) {
+            chars += cost(e);
+        }
+        while (batch.size() < BATCH) {
+            ConsoleEntry next = queue.peek();
+            if (next == null || !batch.isEmpty() && chars + cost(next) > BATCH_CHARS) {
+                return;
+            }
+            queue.poll(); // only this thread takes from the queue
+            queuedChars.addAndGet(-cost(next));
+            chars += cost(next);
+            batch.add(next);
         }
     }
 
@@ -87,12 +131,13 @@ final class ConsolePublisher {
                             continue;
                         }
                     }
+                    queuedChars.addAndGet(-cost(first));
                     batch.add(first);
                 }
-                queue.drainTo(batch, BATCH - batch.size());
+                drain(batch);
                 if (anySkipped && queue.isEmpty()) {
                     queueSkipMarkers(); // everything queued before the skip is in this batch
-                    queue.drainTo(batch, BATCH - batch.size());
+                    drain(batch);
                 }
                 try {
                     sink.get().console(List.copyOf(batch));

@@ -12,18 +12,22 @@ import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
 import java.util.Arrays;
 import org.ripv.messages.Message;
+import org.ripv.messages.SerializedMessages;
 
 /**
  * The socket protocol between clients and the server (docs/protocol.md). After a greeting of
  * {@link #MAGIC} and a version number each way, every message is one frame: a four-byte
  * big-endian length, then that many bytes holding one serialized {@link Message}. Each frame is
  * read with its own {@link ObjectInputStream} and {@link WireFilter}, so the filter's limits
- * apply per message and a long-lived connection is never refused for its age.
+ * apply per message and a long-lived connection is never refused for its age. A message without
+ * attachment or result is written and read as the same bytes without the streams
+ * ({@link SerializedMessages}), its classes judged by the same filter.
  */
 public final class FrameCodec {
     /** The greeting's first four bytes. */
     public static final byte[] MAGIC = "RIPV".getBytes(StandardCharsets.US_ASCII);
-    public static final int VERSION = 1;
+    /** 2 since PackedMessage became Externalizable (docs/protocol.md): a version-1 peer could not read it. */
+    public static final int VERSION = 2;
     /** The default limit on one frame. */
     public static final int DEFAULT_MAX_FRAME = 16 * 1024 * 1024;
 
@@ -64,6 +68,13 @@ public final class FrameCodec {
 
     /** Serializes one message into a frame's body. */
     public byte[] encode(Message m) throws IOException {
+        byte[] plain = SerializedMessages.serialize(m); // the same bytes, without a stream for them
+        if (plain != null) {
+            if (plain.length > maxFrame) {
+                throw new ProtocolException("a message of " + plain.length + " bytes is over the frame limit of " + maxFrame);
+            }
+            return plain;
+        }
         ByteArrayOutputStream bytes = new ByteArrayOutputStream(512);
         try (ObjectOutputStream out = new ObjectOutputStream(bytes)) {
             out.writeObject(m);
@@ -109,6 +120,14 @@ public final class FrameCodec {
 
     /** Deserializes a frame's body, turning every failure a hostile stream can cause into one exception. */
     public Message decode(byte[] body) throws ProtocolException {
+        try {
+            Message plain = SerializedMessages.deserialize(body, filter); // the common shape, judged by the same filter
+            if (plain != null) {
+                return plain;
+            }
+        } catch (java.io.InvalidObjectException | RuntimeException e) {
+            throw new ProtocolException("rejected a malformed or disallowed message: " + e, e);
+        }
         try (ObjectInputStream ois = new ObjectInputStream(new ByteArrayInputStream(body))) {
             ois.setObjectInputFilter(filter);
             Object o = ois.readObject();

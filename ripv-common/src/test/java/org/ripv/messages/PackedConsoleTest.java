@@ -22,7 +22,8 @@ class PackedConsoleTest {
                 new ConsoleEntry(2L, BOX, ConsoleEntry.Kind.COMMAND, "alice", "callback 30", null, null, null),
                 new ConsoleEntry(3L, BOX, ConsoleEntry.Kind.EVENT, "", "GPS fix", VehicleEvent.SURFACED, 41.6332, -70.5365),
                 new ConsoleEntry(4L, "other/SerialPortServer/ttyS1", ConsoleEntry.Kind.TRANSFER, "bob", "ymodem:get 40 %", null, null, null),
-                new ConsoleEntry(5L, BOX, ConsoleEntry.Kind.EVENT, "", "", VehicleEvent.WORKFLOW_FAILED, null, null));
+                new ConsoleEntry(5L, BOX, ConsoleEntry.Kind.EVENT, "", "", VehicleEvent.WORKFLOW_FAILED, null, null),
+                new ConsoleEntry(5L, BOX, ConsoleEntry.Kind.EVENT, "", "", VehicleEvent.DIVED, null, null, 1_700_000_000_123_001L));
         ConsoleBatch b = new ConsoleBatch(BOX, entries, 17, true);
         ConsoleBatch back = (ConsoleBatch) roundTrip(b);
         assertThat(back).isEqualTo(b);
@@ -50,7 +51,7 @@ class PackedConsoleTest {
         Field data = PackedConsole.class.getDeclaredField("data");
         data.setAccessible(true);
         byte[] good = (byte[]) data.get(p);
-        int countAt = 4 + 4 + BOX.length() + 8 + 1;
+        int countAt = 4 + 4 + BOX.length() + 8 + 1; // then per entry: time, seq, mailbox, kind, ...
 
         byte[] huge = good.clone();
         huge[countAt] = 0x7f; // an entry count far beyond the bytes sent must not make the reader allocate for it
@@ -58,13 +59,13 @@ class PackedConsoleTest {
         assertThatThrownBy(() -> roundTrip(p)).isInstanceOf(InvalidObjectException.class).hasMessageContaining("count");
 
         byte[] kind = good.clone();
-        kind[countAt + 4 + 8 + 4] = 9; // no such kind
+        kind[countAt + 4 + 8 + 8 + 4] = 9; // no such kind
         data.set(p, kind);
         assertThatThrownBy(() -> roundTrip(p)).isInstanceOf(InvalidObjectException.class).hasMessageContaining("enum index");
 
         byte[] event = good.clone();
         event[good.length - 2] = 0; // an event on a LINE is allowed, but...
-        event[countAt + 4 + 8 + 4] = (byte) ConsoleEntry.Kind.EVENT.ordinal();
+        event[countAt + 4 + 8 + 8 + 4] = (byte) ConsoleEntry.Kind.EVENT.ordinal();
         event[good.length - 2] = (byte) 255; // ...an EVENT entry without its event is not
         data.set(p, event);
         assertThatThrownBy(() -> roundTrip(p)).isInstanceOf(InvalidObjectException.class).hasMessageContaining("event");

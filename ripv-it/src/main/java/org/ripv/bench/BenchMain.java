@@ -28,6 +28,9 @@ public final class BenchMain {
             "  console    the live console: 1,000 watchers of a vehicle printing 50 lines/s against one watcher,",
             "             with one more that never reads, and the same fan-out with no RIPV (the machine's floor)",
             "             [--watchers N] [--rate N] [--seconds S] [--baseline-seconds S] [--warmup S] [--raw-threads N]",
+            "  web        the web console: 10,000 WebSocket watchers of a vehicle printing 50 lines/s against one,",
+            "             server threads and heap, one that never reads, the fan-out floor, and the fleet page with",
+            "             100 vehicles   [--watchers N] [--rate N] [--seconds S] [--baseline-seconds S] [--vehicles N] [--heap SIZE]",
             "  ingest     Slocum DBA ingest (2,136 sensors; 100,000 rows) against a direct JDBC batch insert, and",
             "             vis:track of 100,000 positions end to end",
             "             [--runs N] [--wide-runs N] [--track-runs N] [--rows N] [--only wide|long|track]",
@@ -81,6 +84,7 @@ public final class BenchMain {
             case "database" -> DatabaseBench.main(rest);
             case "connections" -> System.exit(Launchers.commandLine(new ConnectionCostBench()).execute(rest));
             case "console" -> System.exit(Launchers.commandLine(new ConsoleBench()).execute(rest));
+            case "web" -> System.exit(Launchers.commandLine(new WebBench()).execute(rest));
             case "ymodem" -> YmodemBenchmark.main(rest);
             case "zmodem" -> ZmodemBench.main(rest);
             case "datavis" -> DataVisBenchmark.main(rest);

@@ -73,7 +73,8 @@ public final class BrokerBench implements Callable<Integer> {
     }
 
     /** Wall percentiles and the whole process's CPU per operation, over the same operations. */
-    record Latency(double p50Micros, double p99Micros, long count, double cpuMicros, Map<String, Double> byThread) {}
+    record Latency(double p50Micros, double p99Micros, long count, double cpuMicros, Map<String, Double> byThread,
+                   double allocatedBytes) {}
 
     @Override
     public Integer call() throws Exception {
@@ -132,6 +133,8 @@ public final class BrokerBench implements Callable<Integer> {
                     + " against the plain floor: wall %.2f×, CPU %.2f×%n",
                     full.p50Micros() / tlsFloor, full.cpuMicros() / tlsFloorCpu, full.p50Micros() / floor, full.cpuMicros() / floorCpu);
             out.println(CpuClock.ratioLine("full path", full.cpuMicros(), tlsFloorCpu, full.p50Micros() / tlsFloor));
+            out.printf("allocated per round trip (all Java threads): full path %.1f KB; floors: TLS socket %.1f KB, RMI call %.1f KB%n",
+                    full.allocatedBytes() / 1e3, tls.allocatedBytes() / 1e3, rmi.allocatedBytes() / 1e3);
             out.print("  the full path's CPU per round trip by thread:");
             full.byThread().entrySet().stream().filter(e -> e.getValue() >= 0.5)
                     .forEach(e -> out.printf(" %s %.1f us;", e.getKey(), e.getValue()));
@@ -230,8 +233,9 @@ public final class BrokerBench implements Callable<Integer> {
         }
         double cpuMicros = cpu.cpuMicrosPer(n);
         Map<String, Double> byThread = cpu.microsPerThreadKind(n);
+        double allocated = cpu.bytesAllocatedPer(n);
         Arrays.sort(samples, 0, n);
-        return new Latency(samples[n / 2] / 1000.0, samples[(int) (n * 0.99)] / 1000.0, n, cpuMicros, byThread);
+        return new Latency(samples[n / 2] / 1000.0, samples[(int) (n * 0.99)] / 1000.0, n, cpuMicros, byThread, allocated);
     }
 
     /** Round trips a second of {@code cs} calling at once; {@code counted} gets how many were counted and the CPU nanoseconds they took. */

@@ -311,7 +311,7 @@ public final class ConsoleBench implements Callable<Integer> {
     }
 
     /** The delays the watchers recorded, together. */
-    private static Figures figures(List<Watch> ws) {
+    static Figures figures(List<Watch> ws) {
         long count = 0;
         for (Watch w : ws) {
             count += Math.min(w.n.get(), w.delays.length);

@@ -29,6 +29,7 @@ public final class CpuClock {
     private final long cpu0 = processCpuNanos();
     private final Map<Long, Long> threads0 = threadCpu();
     private final Map<Long, String> names0 = threadNames();
+    private final Map<Long, Long> allocated0 = threadAllocated();
 
     private CpuClock() {}
 
@@ -75,6 +76,38 @@ public final class CpuClock {
         kinds.entrySet().stream().sorted(Map.Entry.<String, Double>comparingByValue().reversed())
                 .forEach(e -> sorted.put(e.getKey(), e.getValue()));
         return sorted;
+    }
+
+    /**
+     * Bytes the process's Java threads allocated per operation since {@link #start()} (the JVM's
+     * per-thread allocation counters; a thread that ended meanwhile is not counted), or -1 where
+     * the JVM does not count them. What the collector has to clean up after each operation.
+     */
+    public double bytesAllocatedPer(long operations) {
+        Map<Long, Long> now = threadAllocated();
+        if (now.isEmpty()) {
+            return -1;
+        }
+        long sum = 0;
+        for (Map.Entry<Long, Long> e : now.entrySet()) {
+            sum += e.getValue() - allocated0.getOrDefault(e.getKey(), 0L);
+        }
+        return (double) sum / Math.max(1, operations);
+    }
+
+    private static Map<Long, Long> threadAllocated() {
+        Map<Long, Long> m = new HashMap<>();
+        if (ManagementFactory.getThreadMXBean() instanceof com.sun.management.ThreadMXBean mx && mx.isThreadAllocatedMemorySupported()
+                && mx.isThreadAllocatedMemoryEnabled()) {
+            long[] ids = mx.getAllThreadIds();
+            long[] bytes = mx.getThreadAllocatedBytes(ids);
+            for (int i = 0; i < ids.length; i++) {
+                if (bytes[i] >= 0) {
+                    m.put(ids[i], bytes[i]);
+                }
+            }
+        }
+        return m;
     }
 
     /** "ripv-socket-handler-123456" and "RMI TCP Connection(12)-127.0.0.1" become one kind each. */

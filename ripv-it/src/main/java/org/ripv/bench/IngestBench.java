@@ -170,6 +170,8 @@ public final class IngestBench {
                         + " raw ingest %s, direct %s)%n",
                 what, p.values.length, s, d, p.values.length / (s / 1000), s / d, median(viaServiceCpu), median(directCpu),
                 median(viaServiceCpu) / median(directCpu), file.length / 1e6, rounded(viaService), rounded(direct));
+        System.out.println("  " + CpuClock.ratioLine("ingest per value", median(viaServiceCpu) * 1e3 / p.values.length,
+                median(directCpu) * 1e3 / p.values.length, s / d) + "; " + CpuClock.machineLine());
     }
 
     /** The whole process's CPU time: every thread of the path measured, none of the waiting. */
@@ -270,6 +272,8 @@ public final class IngestBench {
     static void clear(Connection c) throws Exception {
         try (Statement st = c.createStatement()) {
             st.execute("TRUNCATE TABLE reading");
+            st.execute("TRUNCATE TABLE cycle"); // else the next run's cycles are all merges into these
+            st.execute("TRUNCATE TABLE position_fix");
             st.execute("DELETE FROM data_file");
         }
     }

@@ -29,6 +29,8 @@ final class ShortMode {
             Map.entry("zmodem", List.of("--bytes", "8192", "--skip-iridium")),
             Map.entry("console", List.of("--watchers", "20", "--rate", "20", "--seconds", "2", "--baseline-seconds", "2",
                     "--warmup", "1", "--full-clients", "2")),
+            Map.entry("web", List.of("--watchers", "50", "--rate", "20", "--seconds", "2", "--baseline-seconds", "2",
+                    "--warmup", "1", "--vehicles", "10", "--fleet-runs", "1", "--heap", "256m")),
             Map.entry("ingest", List.of("--runs", "1", "--wide-runs", "1", "--track-runs", "1", "--rows", "500")),
             Map.entry("datavis", List.of("--points", "2000", "--runs", "2")),
             Map.entry("firststart", List.of("--runs", "1")),

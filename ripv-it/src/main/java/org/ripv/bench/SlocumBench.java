@@ -166,6 +166,9 @@ public final class SlocumBench {
                         + " wall runs %s)%n", what, mb, mb / median(readWall), mb / median(decodeWall), median(readCpu) * 1e3,
                 median(decodeCpu) * 1e3, cycles, mb / median(decodeCpu), Arrays.toString(Arrays.stream(decodeWall)
                         .map(w -> Math.round(w * 1e4) / 10.0).toArray()));
+        System.out.println("  " + CpuClock.ratioLine("decode per cycle", median(decodeCpu) * 1e6 / cycles,
+                median(readCpu) * 1e6 / cycles, median(decodeWall) / median(readWall)) + " (floor: reading the bytes); "
+                + CpuClock.machineLine());
     }
 
     private static void ingest(Path dir, int rows, int runs) throws Exception {

@@ -50,6 +50,19 @@ public final class ZmodemBench {
         return t;
     });
     private final Path dir;
+    /**
+     * How long RIPV's sender waits for each answer. The relay's sockets take the whole file at
+     * once (loopback buffers run to megabytes) and pace it out at the baud rate, so the answer to
+     * ZEOF comes only when the line has drained: 1 MiB at 115200 baud is 91 s behind. Over a real
+     * serial line the UART's few bytes of buffer keep the sender in step and 10 s is plenty.
+     */
+    private static final int SENDER_TIMEOUT_MILLIS = 60_000;
+    /**
+     * lrzsz's sender, for the same reason without its timeouts ({@code -O}): at 1 MiB it gave up
+     * waiting for the answer to ZEOF (CAN CAN CAN…) while the file was still draining from the
+     * relay's buffers.
+     */
+    private static final String SZ = "sz -q -O ";
 
     private ZmodemBench(Path dir) {
         this.dir = dir;
@@ -162,7 +175,7 @@ public final class ZmodemBench {
             });
             long start = System.nanoTime();
             try (TcpLink link = TcpLink.connect("tcp://127.0.0.1:" + relay.port(), 5000)) {
-                new ZmodemSender(link, 10_000, null).send(SendFile.of(file));
+                new ZmodemSender(link, SENDER_TIMEOUT_MILLIS, null).send(SendFile.of(file));
             }
             long receiverCpu = receiving.get(1, TimeUnit.HOURS);
             return new Row("RIPV → RIPV", baud, Files.size(file), (System.nanoTime() - start) / 1e9,
@@ -174,7 +187,7 @@ public final class ZmodemBench {
         Path out = Files.createDirectories(dir.resolve("sz"));
         int port = freePort();
         Process socat = socat(file.getParent(), "TCP-LISTEN:" + port + ",bind=127.0.0.1,reuseaddr",
-                "SYSTEM:'exec sz -q " + file.getFileName() + "'");
+                "SYSTEM:'exec " + SZ + file.getFileName() + "'");
         try (YmodemBaudRelay relay = new YmodemBaudRelay(baud, local(port))) {
             double load = load();
             long cpu = cpuNanos();
@@ -200,7 +213,7 @@ public final class ZmodemBench {
             long cpu = cpuNanos();
             long start = System.nanoTime();
             try (TcpLink link = TcpLink.connect("tcp://127.0.0.1:" + relay.port(), 5000)) {
-                new ZmodemSender(link, 10_000, null).send(SendFile.of(file));
+                new ZmodemSender(link, SENDER_TIMEOUT_MILLIS, null).send(SendFile.of(file));
             }
             double seconds = (System.nanoTime() - start) / 1e9;
             socat.waitFor(30, TimeUnit.SECONDS);
@@ -218,7 +231,7 @@ public final class ZmodemBench {
         try (YmodemBaudRelay relay = new YmodemBaudRelay(baud, local(port))) {
             double load = load();
             long start = System.nanoTime();
-            Process sz = socat(file.getParent(), "TCP:127.0.0.1:" + relay.port(), "SYSTEM:'exec sz -q " + file.getFileName() + "'");
+            Process sz = socat(file.getParent(), "TCP:127.0.0.1:" + relay.port(), "SYSTEM:'exec " + SZ + file.getFileName() + "'");
             rz.waitFor(1, TimeUnit.HOURS);
             double seconds = (System.nanoTime() - start) / 1e9;
             sz.waitFor(30, TimeUnit.SECONDS);
@@ -244,7 +257,7 @@ public final class ZmodemBench {
             long before = Math.max(0, store.partLength(file.getFileName().toString()));
             int port = freePort();
             Process sz = socat(file.getParent(), "TCP-LISTEN:" + port + ",bind=127.0.0.1,reuseaddr",
-                    "SYSTEM:'exec sz -q " + file.getFileName() + "'");
+                    "SYSTEM:'exec " + SZ + file.getFileName() + "'");
             try (IridiumRelay relay = new IridiumRelay(baud, latency, dropEvery * 1000, local(port));
                  TcpLink link = TcpLink.connect("tcp://127.0.0.1:" + relay.port(), 5000)) {
                 new ZmodemReceiver(link, 10_000, null).startTimeout(30_000).receive(store, out);

@@ -72,7 +72,7 @@ class EveryBenchmarkRunsTest {
         assertThat(p.exitValue()).as("ripv bench " + name + " --short exit status; its output:\n" + out).isZero();
         assertThat(out).as("no exception in the output").doesNotContain("Exception in thread").doesNotContain("\tat org.ripv.");
         assertThat(out).as("the machine's load is reported").contains(CpuClock.LOAD_PREFIX);
-        if (List.of("broker", "database", "console", "workflow").contains(name)) {
+        if (List.of("broker", "database", "console", "workflow", "web").contains(name)) {
             assertThat(out).as("CPU per operation against the floor's").containsPattern(
                     "cpu per op: .* [0-9.]+ us, floor [0-9.]+ us \\(CPU [0-9.]+×; wall [0-9.]+×\\)");
         }

@@ -29,14 +29,12 @@ class ZmodemKeysEndToEndTest {
     @TempDir
     Path dir;
     TestSystem sys;
-    final List<Process> started = new ArrayList<>();
+    LaunchedJars jars;
 
     @AfterEach
     void stop() throws InterruptedException {
-        for (Process p : started) {
-            p.descendants().forEach(ProcessHandle::destroy);
-            p.destroy();
-            p.waitFor(10, TimeUnit.SECONDS);
+        if (jars != null) {
+            jars.close();
         }
         if (sys != null) {
             sys.close();
@@ -44,17 +42,10 @@ class ZmodemKeysEndToEndTest {
     }
 
     private Process launch(Path log, String... args) throws IOException {
-        List<String> cmd = new ArrayList<>(List.of("bash", ROOT.resolve("ripv").toString()));
-        cmd.addAll(List.of(args));
-        ProcessBuilder pb = new ProcessBuilder(cmd).directory(dir.toFile()).redirectErrorStream(true)
-                .redirectOutput(log.toFile());
-        pb.environment().put("HOME", dir.resolve("home").toString());
-        // Java takes its home from the password file, not $HOME: the CLI's known_hosts must be the test's own
-        pb.environment().put("JAVA_TOOL_OPTIONS", "-Duser.home=" + dir.resolve("home"));
-        pb.environment().remove("DISPLAY");
-        Process p = pb.start();
-        started.add(p);
-        return p;
+        if (jars == null) {
+            jars = new LaunchedJars(dir);
+        }
+        return jars.launch(log, args);
     }
 
     /** Runs the CLI from its jar; its exit code and output. */
@@ -96,7 +87,10 @@ class ZmodemKeysEndToEndTest {
         Process socat = new ProcessBuilder("socat", "pty,raw,echo=0,link=" + pty, "SYSTEM:'exec bash " + script + " "
                 + vehicle + "'").directory(vehicle.toFile()).redirectErrorStream(true)
                 .redirectOutput(dir.resolve("socat.log").toFile()).start();
-        started.add(socat);
+        if (jars == null) {
+            jars = new LaunchedJars(dir);
+        }
+        jars.add(socat);
         awaitTrue("socat made " + pty, () -> Files.exists(pty));
 
         Path secret = dir.resolve("service.secret");

@@ -94,15 +94,14 @@ final class ClientAcceptor {
     }
 
     /**
-     * A client the server connected to itself for a web console page (org.ripv.server.web): given
-     * an id, admitted by the gate like any connection, marked logged in as the user the web log-in
-     * checked, and started — from here on it is a client like any other.
+     * A web console page as a client (org.ripv.server.web): in-process, with no socket or thread of
+     * its own, given an id, admitted by the gate like any connection (the browser's address),
+     * marked logged in as the user the web log-in checked — from here on a client like any other.
      */
-    SocketHandler adopt(Socket s, String user, java.util.List<String> roles) throws IOException {
+    SocketHandler adopt(SocketHandler.Peer page, String user, java.util.List<String> roles) throws IOException {
         String id = newClientId();
-        SocketHandler h = new SocketHandler(s, id, codec, writers, dispatch);
-        if (!running || !gate.admit(id, s.getInetAddress(), h::close)) {
-            closeQuietly(s);
+        SocketHandler h = SocketHandler.inProcess(id, page, dispatch);
+        if (!running || !gate.admit(id, page.address(), h::close)) {
             throw new IOException("the server takes no more connections now");
         }
         if (!gate.loggedIn(id)) {
@@ -111,7 +110,10 @@ final class ClientAcceptor {
         }
         h.loggedIn(user, roles);
         clients.put(id, h);
-        h.start();
+        if (!running) {
+            h.close(); // the server stopped meanwhile: close() may have missed this one
+            throw new IOException("the server is stopping");
+        }
         return h;
     }
 

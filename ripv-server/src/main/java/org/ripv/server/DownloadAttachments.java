@@ -30,11 +30,10 @@ final class DownloadAttachments {
 
     /** The bundle for {@code body}, or null when its first word is no download prefix of the service. */
     static Attachment forCommand(FileStore files, ServiceDescriptor d, String body, Check rights) throws IOException {
-        String[] words = body.trim().split("\\s+");
-        String first = words[0].toLowerCase(Locale.ROOT);
-        if (d.downloadPrefixes().stream().noneMatch(p -> p.toLowerCase(Locale.ROOT).equals(first))) {
-            return null;
+        if (d.downloadPrefixes().isEmpty() || !startsWithPrefix(body, d.downloadPrefixes())) {
+            return null; // most commands: decided without splitting the body
         }
+        String[] words = body.trim().split("\\s+");
         if (words.length < 2) {
             throw new IllegalArgumentException("'" + words[0] + "' needs the names of files in the download directory (?dlfiles)");
         }
@@ -56,5 +55,19 @@ final class DownloadAttachments {
             out.add(new Attachment(words[i], (byte[]) files.readDownload(words[i], 0, (int) size)[1]));
         }
         return Attachment.bundle(out);
+    }
+
+    /** True when the body's first word (as {@code trim().split("\\s+")} finds it) is one of the prefixes, ignoring case. */
+    private static boolean startsWithPrefix(String body, List<String> prefixes) {
+        int from = 0;
+        while (from < body.length() && body.charAt(from) <= ' ') {
+            from++;
+        }
+        int to = from;
+        while (to < body.length() && " \t\n\u000B\f\r".indexOf(body.charAt(to)) < 0) {
+            to++;
+        }
+        String first = body.substring(from, to).toLowerCase(Locale.ROOT);
+        return prefixes.stream().anyMatch(p -> p.toLowerCase(Locale.ROOT).equals(first));
     }
 }

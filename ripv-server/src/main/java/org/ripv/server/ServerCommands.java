@@ -245,6 +245,9 @@ final class ServerCommands {
                                 + d.because() + "); upload with 'keep' to store it under a new name");
                     }
                 }
+                if (org.ripv.server.files.ToVehicleFolder.isToVehicle(w[1])) {
+                    toVehicleRight(u, user, w[1]);
+                }
                 FileStore.ChunkResult r = files.uploadChunk(request.header().origin().clientId(), user, w[1], offset, total,
                         request.header().attachment().data(), mode, server.permits().quota(u));
                 String text;
@@ -356,6 +359,23 @@ final class ServerCommands {
     private static String shownPath(IncomingServerMessage request, java.nio.file.Path dir, String area) {
         List<String> roles = request.header().roles();
         return roles.contains("operators") || roles.contains("admin") ? dir.toString() : area;
+    }
+
+    /**
+     * A file for a vehicle ({@code to-vehicle/FOLDER/NAME}) needs the right {@code ?to-vehicle FOLDER}
+     * (service RIPVServer, docs/permit.md), and FOLDER must be a MailBox's.
+     */
+    private void toVehicleRight(PermitFile.User u, String user, String name) {
+        org.ripv.server.files.ToVehicleFolder.Name n = org.ripv.server.files.ToVehicleFolder.parse(name);
+        PermitFile.Decision d = server.permits().decide(u, RIPVServer.SERVER_SERVICE, "", "?to-vehicle " + n.folder());
+        if (!d.allowed()) {
+            throw new SecurityRefusal("user '" + user + "' may not put files for a vehicle in to-vehicle/" + n.folder() + " ("
+                    + d.because() + "); that takes the right '?to-vehicle " + n.folder() + "' for RIPVServer");
+        }
+        if (!server.files().isMailboxFolder(n.folder())) {
+            throw new IllegalArgumentException("no MailBox has the folder '" + n.folder() + "'; give the vehicle's folder"
+                    + " as ?dlfiles names it (HANDLE@HOST@SERVICE)");
+        }
     }
 
     private PermitFile.User permit(IncomingServerMessage request, Command c) {

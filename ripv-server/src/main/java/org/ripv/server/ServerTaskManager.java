@@ -60,7 +60,7 @@ final class ServerTaskManager extends TaskManager<IncomingServerMessage, Outgoin
         }
         MailboxAddress address;
         try {
-            address = MailboxAddress.parse(h.mailboxAddress());
+            address = parsed(h.mailboxAddress());
         } catch (MalformedNameException e) {
             return error(request, Ids.FID_NONE, ErrorCode.UNKNOWN_MAILBOX, e.getMessage());
         }
@@ -115,6 +115,27 @@ final class ServerTaskManager extends TaskManager<IncomingServerMessage, Outgoin
         Header stamped = h.withDestination(ref.descriptor().name()).withAttachment(attachment);
         server.forward(ref, new IncomingServiceMessage(stamped));
         return null;
+    }
+
+    /**
+     * Addresses already parsed: a server talks to a few dozen MailBoxes, and parsing one is three
+     * regular expressions per request. Bounded, so that a client sending made-up addresses cannot
+     * grow it; only well-formed addresses are kept.
+     */
+    private final java.util.Map<String, MailboxAddress> addresses = new java.util.concurrent.ConcurrentHashMap<>();
+    private static final int MAX_ADDRESSES = 4096;
+
+    private MailboxAddress parsed(String text) {
+        MailboxAddress known = addresses.get(text);
+        if (known != null) {
+            return known;
+        }
+        MailboxAddress a = MailboxAddress.parse(text);
+        if (addresses.size() >= MAX_ADDRESSES) {
+            addresses.clear();
+        }
+        addresses.put(text, a);
+        return a;
     }
 
     /** The upload-directory file a command names after one of the service's attach prefixes. */

@@ -1,9 +1,6 @@
 package org.ripv.server;
 
 import java.io.IOException;
-import java.net.InetAddress;
-import java.net.ServerSocket;
-import java.net.Socket;
 import java.util.List;
 import java.util.function.Supplier;
 import org.ripv.server.handlers.SocketHandler;
@@ -11,11 +8,10 @@ import org.ripv.server.security.Audit;
 import org.ripv.server.web.PostOfficeDoor;
 
 /**
- * The web console's way into the Post Office: a loopback connection whose server end the
- * {@link ClientAcceptor} adopts as a client already logged in (the web log-in checked the
- * password with the same limits and audit), so a page's requests meet every rule a socket
- * client's do. The one-shot listener is closed at once, and a connection that is not ours (another
- * local process racing to the port) is refused.
+ * The web console's way into the Post Office: the {@link ClientAcceptor} adopts a page as an
+ * in-process client already logged in (the web log-in checked the password with the same limits
+ * and audit), so a page's requests meet every rule a socket client's do — with no socket and no
+ * thread of its own (docs/web.md).
  */
 final class WebClients implements PostOfficeDoor {
     private final Supplier<ClientAcceptor> acceptor;
@@ -25,28 +21,13 @@ final class WebClients implements PostOfficeDoor {
     }
 
     @Override
-    public Socket open(String user, List<String> roles, String address) throws IOException {
+    public SocketHandler open(SocketHandler.Peer page, String user, List<String> roles) throws IOException {
         ClientAcceptor a = acceptor.get();
         if (a == null) {
             throw new IOException("the server is not taking clients yet");
         }
-        Socket client = new Socket();
-        try (ServerSocket once = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
-            once.setSoTimeout(5_000);
-            client.connect(once.getLocalSocketAddress(), 5_000);
-            Socket ours = once.accept();
-            if (ours.getPort() != client.getLocalPort()) {
-                ours.close();
-                throw new IOException("another local process connected to the web console's loopback port first");
-            }
-            ours.setTcpNoDelay(true);
-            client.setTcpNoDelay(true);
-            SocketHandler h = a.adopt(ours, user, roles);
-            Audit.log(false, "web-client", "user", user, "from", address, "client", h.clientId());
-            return client;
-        } catch (IOException | RuntimeException e) {
-            client.close();
-            throw e;
-        }
+        SocketHandler h = a.adopt(page, user, roles);
+        Audit.log(false, "web-client", "user", user, "from", page.address().getHostAddress(), "client", h.clientId());
+        return h;
     }
 }

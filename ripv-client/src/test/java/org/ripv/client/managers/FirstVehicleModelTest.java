@@ -30,6 +30,9 @@ class FirstVehicleModelTest {
     static final String SERIAL = "<SerialPortServer>::<localhost>";
     static final String SIM = SERIAL + "sim01";
 
+    /** The console's last sequence number (the server's, in a real run). */
+    static long seq = System.currentTimeMillis() * 1000;
+
     UiThread ui;
     ClientModel model;
     GuiManager manager;
@@ -64,19 +67,15 @@ class FirstVehicleModelTest {
     }
 
     void push(ConsoleEntry e) {
+        // numbered as the server numbers what it pushes: events of one millisecond are still two events
+        ConsoleEntry numbered = e.withSeq(++seq);
         dispatch(GuiManagerDispatchTest.reply("", "", "?watch " + e.mailbox(), Ids.FID_CONSOLE, Status.OK, "",
-                new ConsoleBatch(e.mailbox(), List.of(e), 0, false)));
-        // SessionStates takes an entry only when it is newer than the last contact (in milliseconds):
-        // the next event this test makes must not fall in the same millisecond as this one
-        long then = e.time();
-        while (System.currentTimeMillis() <= then) {
-            Thread.onSpinWait();
-        }
+                new ConsoleBatch(e.mailbox(), List.of(numbered), 0, false)));
     }
 
     static MailboxStatus sim(SessionState.State state, int calls, String detail) {
         return new MailboxStatus(SIM, state == SessionState.State.ON_CALL, detail, false, "",
-                new SessionState(state, System.currentTimeMillis() - 1000, 41.6, -70.5, calls, null));
+                new SessionState(state, System.currentTimeMillis() - 1000, 41.6, -70.5, calls, null, seq));
     }
 
     String badge() {

@@ -132,6 +132,27 @@ class LaunchedDataLoopTest {
         }
     }
 
+    /** {@code SELECT COUNT(*) AS n FROM} what follows (named: a count's own column name is "1"). */
+    long count(String db, String from) {
+        assertThat(cli("use " + db, "SELECT COUNT(*) AS n FROM " + from)).as(out()).isZero();
+        java.util.regex.Matcher m = Pattern.compile("(?m)^\\s*\\|?\\s*(\\d+)\\s*\\|?\\s*$").matcher(out());
+        assertThat(m.find()).as("a number in " + out()).isTrue();
+        return Long.parseLong(m.group(1));
+    }
+
+    /** {@code ?history MAILBOX} once it has the event (services publish on a thread of their own). */
+    String awaitHistory(String mailbox, String event) throws Exception {
+        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+        while (true) {
+            cli("?history " + mailbox);
+            if (out().contains(event)) {
+                return out();
+            }
+            assertThat(System.nanoTime()).as("?history " + mailbox + " has " + event + "; last answer: " + out()).isLessThan(end);
+            Thread.sleep(500);
+        }
+    }
+
     static String mailbox(String mailboxes, String service) {
         return MAILBOX.matcher(mailboxes).results().filter(r -> r.group(1).equals(service)).findFirst().orElseThrow().group();
     }
@@ -218,13 +239,37 @@ class LaunchedDataLoopTest {
         String sbd = "rosie_713-2019-166-0-157.sbd";
         assertThat(cli("use " + lrzsz, "ymodem:get " + sbd)).as(out()).isZero();
         assertThat(out()).as(out()).contains("received " + sbd).contains(sbd + ": kept, waiting for the sensor list 6b016a2e.cac");
+        // not only in the reply: the database's ?status and its events say so, with the CRC
+        assertThat(cli("?status " + db)).as(out()).isZero();
+        assertThat(out()).as(out()).contains("waiting for sensor lists: 6b016a2e.cac: " + sbd);
+        assertThat(awaitHistory(db, "INGEST_WAITING")).contains(sbd + " waits for the sensor list 6b016a2e.cac");
         assertThat(cli("use " + lrzsz, "ymodem:get 6b016a2e.cac rosie_713-2019-166-0-157.tbd 426bd56d.cac")).as(out()).isZero();
         assertThat(out()).as(out()).contains("6b016a2e.cac: sensor list 6b016a2e kept in the cache")
                 .contains(sbd + " (waited for 6b016a2e.cac): rosie_713-2019-166-0-157: 365 rows, 27 sensors")
                 .contains("rosie_713-2019-166-0-157: 642 rows, 9 sensors");
+        assertThat(cli("?status " + db)).as(out()).isZero();
+        assertThat(out()).as(out()).doesNotContain("waiting for sensor lists");
+        assertThat(awaitHistory(db, "INGEST_RELEASED")).contains(sbd + " (waited for 6b016a2e.cac): rosie_713-2019-166-0-157: 365 rows");
         // the same file again is stored once
         assertThat(cli("use " + lrzsz, "ymodem:get " + sbd)).as(out()).isZero();
         assertThat(out()).as(out()).contains("rosie_713-2019-166-0-157: stored already");
+        // after recovery, the segment's .dbd: the same cycles with a sensor more; each cycle stays one
+        long cycles = count(db, "cycle WHERE vehicle = 'rosie_713'");
+        long fixes = count(db, "positions WHERE vehicle = 'rosie_713'");
+        long readings = count(db, "reading WHERE vehicle = 'rosie_713'");
+        Path shared = SLOCUM_BINARY;
+        byte[] plain = Files.readAllBytes(shared.resolve("realtime_raw").resolve(sbd));
+        org.ripv.services.ingest.SensorListCache cache = new org.ripv.services.ingest.SensorListCache(shared.resolve("cac"));
+        int extra = new org.ripv.services.ingest.SlocumBinaryReader(new ByteArrayInputStream(plain), sbd, cache).sensors().size();
+        Files.write(vehicle.resolve("rosie_713-2019-166-0-157.dbd"), org.ripv.services.ingest.SlocumEncoder.recode(plain, cache,
+                "dbd", List.of(new org.ripv.services.ingest.SlocumSensor("x_dbd_only", "nodim", 8)), (row, n) -> row[extra] = n));
+        assertThat(cli("use " + lrzsz, "ymodem:get rosie_713-2019-166-0-157.dbd")).as(out()).isZero();
+        assertThat(out()).as(out()).contains("rosie_713-2019-166-0-157: 365 rows, 28 sensors")
+                .contains("365 of the rows' cycles were stored already");
+        assertThat(count(db, "cycle WHERE vehicle = 'rosie_713'")).isEqualTo(cycles);
+        assertThat(count(db, "positions WHERE vehicle = 'rosie_713'")).isEqualTo(fixes);
+        assertThat(count(db, "reading WHERE vehicle = 'rosie_713'")).isEqualTo(readings + 365);
+        assertThat(count(db, "dives WHERE vehicle = 'rosie_713'")).isEqualTo(1);
         assertThat(cli("use " + db, "SELECT lat, lon, source FROM positions WHERE vehicle = 'rosie_713' ORDER BY time_utc"
                 + " FETCH FIRST 1 ROWS ONLY")).as(out()).isZero();
         assertThat(out()).containsPattern("51\\.58\\d*\\s*\\|\\s*-128\\.31\\d*");

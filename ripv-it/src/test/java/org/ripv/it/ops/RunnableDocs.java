@@ -42,6 +42,15 @@ final class RunnableDocs {
         return command;
     }
 
+    /** How many backticks (or tildes) open a fence: a block shown inside a block takes four. */
+    static int fenceLength(String t) {
+        int n = 0;
+        while (n < t.length() && t.charAt(n) == t.charAt(0)) {
+            n++;
+        }
+        return n;
+    }
+
     static List<Path> documents(Path root) throws IOException {
         List<Path> docs = new ArrayList<>(List.of(root.resolve("README.md")));
         try (var s = Files.list(root.resolve("docs"))) {
@@ -61,8 +70,9 @@ final class RunnableDocs {
             String line = lines.get(i);
             String t = line.strip();
             if (fence == null && (t.startsWith("```") || t.startsWith("~~~"))) {
-                fence = t.substring(0, 3);
-                List<String> info = List.of(t.substring(3).strip().split("\\s+"));
+                int n = fenceLength(t);
+                fence = t.substring(0, n);
+                List<String> info = List.of(t.substring(n).strip().split("\\s+"));
                 inRunnable = info.contains(MARKER);
                 continue;
             }

@@ -105,7 +105,7 @@ public final class FileStore {
      */
     public ChunkResult uploadChunk(String clientId, String user, String name, long offset, long total, byte[] data,
                                    UploadMode mode, long quota) throws IOException {
-        FileNames.check(name);
+        uploadPath(name);
         if (total < 0 || offset < 0 || offset + data.length > total) {
             throw new IllegalArgumentException("chunk at " + offset + " of " + data.length + " bytes does not fit a file of " + total);
         }
@@ -114,14 +114,14 @@ public final class FileStore {
             throw new FileTooLargeException("'" + name + "' is " + total + " bytes; the upload limit is " + maxUpload + " bytes");
         }
         String key = clientId + "/" + name;
-        Path part = uploadDir.resolve(PARTIAL).resolve(clientId + "-" + name);
+        Path part = partOf(clientId, name);
         if (offset == 0) {
-            if (mode == UploadMode.REFUSE && Files.exists(uploadDir.resolve(name))) {
+            if (mode == UploadMode.REFUSE && Files.exists(uploadPath(name))) {
                 abort(clientId, name);
                 throw exists(name);
             }
             long used = usedBy(user, key) + (mode == UploadMode.REPLACE && user.equals(owners.getProperty(name))
-                    ? -sizeOrZero(uploadDir.resolve(name)) : 0);
+                    ? -sizeOrZero(uploadPath(name)) : 0);
             if (used + total > quota) {
                 abort(clientId, name);
                 throw new FileTooLargeException("'" + name + "' (" + total + " bytes) would take " + user + " to "
@@ -160,7 +160,7 @@ public final class FileStore {
     private synchronized String place(Path part, String name, UploadMode mode, String user) throws IOException {
         String stored = name;
         switch (mode) {
-            case REPLACE -> Files.move(part, uploadDir.resolve(name), StandardCopyOption.REPLACE_EXISTING,
+            case REPLACE -> Files.move(part, parentMade(uploadPath(name)), StandardCopyOption.REPLACE_EXISTING,
                     StandardCopyOption.ATOMIC_MOVE);
             case REFUSE -> {
                 if (!linkInto(part, name)) {
@@ -189,7 +189,7 @@ public final class FileStore {
 
     /** Puts {@code part} in the upload directory as {@code name} unless that exists; false if it does. */
     private boolean linkInto(Path part, String name) throws IOException {
-        Path target = uploadDir.resolve(FileNames.check(name));
+        Path target = parentMade(uploadPath(name));
         try {
             Files.createLink(target, part); // atomic: fails if the name is taken, never replaces
             return true;
@@ -207,7 +207,8 @@ public final class FileStore {
     /** {@code log.txt} → {@code log(1).txt}; {@code README} → {@code README(1)}. */
     static String numbered(String name, int n) {
         int dot = name.lastIndexOf('.');
-        return dot > 0 ? name.substring(0, dot) + "(" + n + ")" + name.substring(dot) : name + "(" + n + ")";
+        int slash = name.lastIndexOf('/');
+        return dot > slash + 1 ? name.substring(0, dot) + "(" + n + ")" + name.substring(dot) : name + "(" + n + ")";
     }
 
     /** Bytes {@code user} holds in the upload directory plus what their other unfinished uploads will add. */
@@ -215,7 +216,7 @@ public final class FileStore {
         long used = 0;
         for (String name : owners.stringPropertyNames()) {
             if (user.equals(owners.getProperty(name))) {
-                used += sizeOrZero(uploadDir.resolve(name));
+                used += sizeOrZero(uploadPathOrNull(name));
             }
         }
         for (Map.Entry<String, Upload> e : uploads.entrySet()) {
@@ -237,6 +238,9 @@ public final class FileStore {
     }
 
     private static long sizeOrZero(Path p) {
+        if (p == null) {
+            return 0;
+        }
         try {
             return Files.size(p);
         } catch (IOException e) {
@@ -254,9 +258,100 @@ public final class FileStore {
 
     /** Drops an unfinished upload. */
     public void abort(String clientId, String name) throws IOException {
-        FileNames.check(name);
+        uploadPath(name);
         uploads.remove(clientId + "/" + name);
-        Files.deleteIfExists(uploadDir.resolve(PARTIAL).resolve(clientId + "-" + name));
+        Files.deleteIfExists(partOf(clientId, name));
+    }
+
+    /** Whether a download folder belongs to a MailBox (one a service has registered, marked by {@link #adopt}). */
+    public boolean isMailboxFolder(String folder) {
+        return Files.isRegularFile(downloadDir.resolve(FileNames.check(folder)).resolve(OWNER_FILE));
+    }
+
+    /** Where an unfinished upload grows: one flat folder, so a to-vehicle name's slashes become '~'. */
+    private Path partOf(String clientId, String name) {
+        return uploadDir.resolve(PARTIAL).resolve(clientId + "-" + name.replace('/', '~'));
+    }
+
+    /**
+     * Where an upload name points: a plain NAME in the upload directory, or a to-vehicle file
+     * ({@code to-vehicle/FOLDER/NAME}, {@link ToVehicleFolder}); anything else is refused.
+     */
+    public Path uploadPath(String name) {
+        if (ToVehicleFolder.isToVehicle(name)) {
+            return ToVehicleFolder.parse(name).in(uploadDir);
+        }
+        return uploadDir.resolve(FileNames.check(name));
+    }
+
+    private Path uploadPathOrNull(String name) {
+        try {
+            return uploadPath(name);
+        } catch (IllegalArgumentException e) {
+            return null;
+        }
+    }
+
+    private static Path parentMade(Path p) throws IOException {
+        PrivateFiles.createDirectories(p.getParent());
+        return p;
+    }
+
+    /**
+     * The files waiting in a MailBox's to-vehicle folder, oldest first, as {@code to-vehicle/FOLDER/NAME}.
+     */
+    public List<String> toVehiclePending(String mailbox) throws IOException {
+        String folder = folderFor(mailbox);
+        Path dir = uploadDir.resolve(ToVehicleFolder.DIR).resolve(folder);
+        if (!Files.isDirectory(dir)) {
+            return List.of();
+        }
+        List<Path> files = new ArrayList<>();
+        try (DirectoryStream<Path> ds = Files.newDirectoryStream(dir, p -> Files.isRegularFile(p)
+                && !p.getFileName().toString().startsWith("."))) {
+            ds.forEach(files::add);
+        }
+        files.sort(Comparator.comparing((Path p) -> {
+            try {
+                return Files.getLastModifiedTime(p).toMillis();
+            } catch (IOException e) {
+                return 0L;
+            }
+        }).thenComparing(Path::toString));
+        return files.stream().map(p -> ToVehicleFolder.DIR + "/" + folder + "/" + p.getFileName()).toList();
+    }
+
+    /**
+     * Moves a to-vehicle file its vehicle now has into {@code sent/} (under a free name if an
+     * earlier one of that name is there), with {@code receipt} beside it as {@code NAME.receipt};
+     * returns the sent file's name. The receipt is written first: a file in {@code sent/} always has one.
+     * The file no longer counts against its uploader's quota.
+     */
+    public synchronized String toVehicleSent(String name, String receipt) throws IOException {
+        ToVehicleFolder.Name n = ToVehicleFolder.parse(name);
+        Path from = n.in(uploadDir);
+        Path sent = PrivateFiles.createDirectories(from.getParent().resolve(ToVehicleFolder.SENT));
+        String stored = n.file();
+        for (int i = 1; Files.exists(sent.resolve(stored)) || Files.exists(sent.resolve(stored + ".receipt")); i++) {
+            if (i > MAX_KEEP) {
+                throw new FileExistsException("no free name like '" + n.file() + "' in " + sent + " after " + MAX_KEEP + " tries");
+            }
+            stored = numbered(n.file(), i);
+        }
+        Path tmp = PrivateFiles.createTempFile(uploadDir.resolve(PARTIAL), "receipt-", ".tmp");
+        try {
+            Files.writeString(tmp, receipt, StandardCharsets.UTF_8);
+            Files.move(tmp, sent.resolve(stored + ".receipt"), StandardCopyOption.ATOMIC_MOVE);
+        } finally {
+            Files.deleteIfExists(tmp);
+        }
+        Files.move(from, sent.resolve(stored), StandardCopyOption.ATOMIC_MOVE);
+        String sentName = ToVehicleFolder.DIR + "/" + n.folder() + "/" + ToVehicleFolder.SENT + "/" + stored;
+        // sent files leave the uploader's quota: ?delete cannot reach sent/, the receipt names who it was
+        if (owners.remove(name) != null) {
+            saveOwners();
+        }
+        return sentName;
     }
 
     /** Drops every unfinished upload of a client that went away. */
@@ -277,6 +372,16 @@ public final class FileStore {
      * {@code ?dlfiles} lists it) from the download directory. Returns where it was.
      */
     public synchronized String delete(String name) throws IOException {
+        if (ToVehicleFolder.isToVehicle(name)) {
+            Path p = uploadPath(name);
+            if (!Files.deleteIfExists(p)) {
+                throw new NoSuchFileException("no file '" + name + "' waiting in the to-vehicle folder (?ulfiles lists them)");
+            }
+            if (owners.remove(name) != null) {
+                saveOwners();
+            }
+            return "to-vehicle folder";
+        }
         if (name.indexOf('/') >= 0) {
             Path p = downloadPath(name);
             if (!Files.deleteIfExists(p)) {
@@ -297,7 +402,7 @@ public final class FileStore {
 
     /** Reads a whole uploaded file, for attaching to a command. */
     public byte[] readUpload(String name) throws IOException {
-        Path p = uploadDir.resolve(FileNames.check(name));
+        Path p = uploadPath(name);
         try {
             long size = Files.size(p);
             if (size > maxUpload) {
@@ -502,8 +607,19 @@ public final class FileStore {
         return downloadDir.resolve(found.get(0));
     }
 
+    /** The upload directory, and the files waiting in each to-vehicle folder as {@code to-vehicle/FOLDER/NAME}. */
     public FileListing listUploads() throws IOException {
-        return list(uploadDir, false);
+        FileListing plain = list(uploadDir, false);
+        Path tv = uploadDir.resolve(ToVehicleFolder.DIR);
+        if (!Files.isDirectory(tv)) {
+            return plain;
+        }
+        List<FileListing.Entry> entries = new ArrayList<>(plain.files());
+        for (FileListing.Entry e : list(tv, true).files()) {
+            entries.add(new FileListing.Entry(ToVehicleFolder.DIR + "/" + e.name(), e.size(), e.modified()));
+        }
+        entries.sort(Comparator.comparing(FileListing.Entry::name));
+        return new FileListing(plain.directory(), entries);
     }
 
     /** The download directory: files of each MailBox's folder as {@code FOLDER/NAME}, and any loose files. */

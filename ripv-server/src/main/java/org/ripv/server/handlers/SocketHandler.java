@@ -23,6 +23,10 @@ import org.slf4j.LoggerFactory;
  * queue, which the server's few {@link WriterPool} threads write (an idle client costs one
  * thread, its reader; docs/performance.md). A client that stops reading fills only its own
  * queue — and is then disconnected — while everyone else is served. Anything that breaks the protocol closes this connection and nothing else.
+ *
+ * <p>A web console page is a client of the same kind made with {@link #inProcess}: no socket, reader
+ * or writer, its requests handed in through {@link #received} and its messages given to its
+ * {@link Peer}; everything the server does with a client applies to it unchanged.
  */
 public final class SocketHandler {
     private static final Logger log = LoggerFactory.getLogger(SocketHandler.class);
@@ -32,6 +36,24 @@ public final class SocketHandler {
     static final int READ_TIMEOUT_MILLIS = 30_000;
     /** Stream buffers: small, since every idle client keeps two; large frames bypass them anyway. */
     static final int BUFFER = 8 * 1024;
+
+    /**
+     * Where an in-process client's messages go instead of a socket: a web console page
+     * (org.ripv.server.web), which writes them with its own asynchronous sends. Never blocks.
+     */
+    public interface Peer {
+        /** Queues a reply; false when the peer is too far behind (it is then disconnected). */
+        boolean send(OutgoingServerMessage reply);
+
+        /** Queues a push; {@code written} runs once it went out. False when busy or closed (see {@link #push}). */
+        boolean push(OutgoingServerMessage message, Runnable written);
+
+        /** The server ends this client: the peer closes its side (after what it has queued, if it can). */
+        void close();
+
+        /** The peer's address, the key of per-address limits. */
+        java.net.InetAddress address();
+    }
 
     /** What the server does with a client's requests. */
     public interface Dispatcher {
@@ -46,6 +68,8 @@ public final class SocketHandler {
     private final Dispatcher dispatcher;
     private final ReplyWriter writer;
     private final Thread reader;
+    /** Not null for an in-process client, which has no socket, reader or writer of its own. */
+    private final Peer peer;
     private volatile IdBadge badge;
     private volatile List<String> roles = List.of();
     private volatile boolean closed;
@@ -60,10 +84,52 @@ public final class SocketHandler {
         this.writer = new ReplyWriter(clientId, codec, MAX_QUEUED_REPLIES, writers, this::close);
         this.reader = new Thread(this::readLoop, "ripv-socket-handler-" + clientId);
         reader.setDaemon(true);
+        this.peer = null;
+    }
+
+    private SocketHandler(String clientId, Peer peer, Dispatcher dispatcher) {
+        this.socket = null;
+        this.clientId = clientId;
+        this.codec = null;
+        this.dispatcher = dispatcher;
+        this.badge = new IdBadge(clientId, "");
+        this.writer = null;
+        this.reader = null;
+        this.peer = peer;
+    }
+
+    /**
+     * A client inside the server process (a web console page): no socket and no thread of its own;
+     * its requests come in through {@link #received} and its messages go to {@code peer}. From
+     * the Post Office's side it is a client like any other.
+     */
+    public static SocketHandler inProcess(String clientId, Peer peer, Dispatcher dispatcher) {
+        return new SocketHandler(clientId, java.util.Objects.requireNonNull(peer, "peer"), dispatcher);
     }
 
     public void start() {
-        reader.start();
+        if (reader != null) {
+            reader.start();
+        }
+    }
+
+    /**
+     * A request from an in-process client, handed to the server exactly as the reader hands a
+     * socket client's (the caller's thread runs the dispatch, as a reader thread does).
+     */
+    public void received(IncomingServerMessage request) {
+        if (peer == null) {
+            throw new IllegalStateException("client " + clientId + " reads its requests from its socket");
+        }
+        if (closed) {
+            return;
+        }
+        try {
+            dispatcher.received(this, request);
+        } catch (RuntimeException e) {
+            log.error("client {}: unexpected failure", clientId, e);
+            close();
+        }
     }
 
     public String clientId() {
@@ -97,16 +163,26 @@ public final class SocketHandler {
     }
 
     public String remoteAddress() {
+        if (peer != null) {
+            return peer.address().getHostAddress() + " (web)";
+        }
         return String.valueOf(socket.getRemoteSocketAddress());
     }
 
     /** The peer's IP address, the key of per-address limits. */
     public java.net.InetAddress remoteInetAddress() {
-        return socket.getInetAddress();
+        return peer != null ? peer.address() : socket.getInetAddress();
     }
 
     /** Sends this last reply, then closes: the client reads why it was cut off. */
     public void sendAndClose(OutgoingServerMessage last) {
+        if (peer != null) {
+            if (!closed) {
+                peer.send(last);
+            }
+            close();
+            return;
+        }
         if (closed || !writer.offerLast(last)) {
             close();
         }
@@ -117,7 +193,7 @@ public final class SocketHandler {
         if (closed) {
             return;
         }
-        if (!writer.offer(reply)) {
+        if (peer != null ? !peer.send(reply) : !writer.offer(reply)) {
             log.warn("client {} ({}) is not reading its replies; disconnecting it", clientId, remoteAddress());
             close();
         }
@@ -130,7 +206,7 @@ public final class SocketHandler {
      * client it goes to). Never blocks; false when the connection is closed or too far behind.
      */
     public boolean push(OutgoingServerMessage message, byte[] frame, Runnable written) {
-        return !closed && writer.push(message, frame, written);
+        return !closed && (peer != null ? peer.push(message, written) : writer.push(message, frame, written));
     }
 
     private void readLoop() {
@@ -178,6 +254,11 @@ public final class SocketHandler {
                 return;
             }
             closed = true;
+        }
+        if (peer != null) {
+            peer.close();
+            dispatcher.closed(this);
+            return;
         }
         writer.stop();
         try {

@@ -49,6 +49,8 @@ public final class ConsoleHub implements AutoCloseable {
     private final Map<String, CopyOnWriteArrayList<Watcher>> watchers = new ConcurrentHashMap<>();
     private final Map<String, Set<Watcher>> byClient = new ConcurrentHashMap<>();
     private final Object order = new Object();
+    /** The last console sequence number given; guarded by {@code order}. */
+    private long lastSeq;
     private volatile Consumer<Notice> notices = n -> { };
 
     /**
@@ -193,6 +195,16 @@ public final class ConsoleHub implements AutoCloseable {
         return lost;
     }
 
+    /**
+     * The next console sequence number: one more than the last, and never below the clock in
+     * microseconds, so that numbers keep increasing across a restart of the server (a client's
+     * state from before it still orders the entries after it). Called under {@code order}.
+     */
+    private long nextSeq() {
+        lastSeq = Math.max(lastSeq + 1, System.currentTimeMillis() * 1000);
+        return lastSeq;
+    }
+
     private void take(List<ConsoleEntry> entries) {
         if (entries.isEmpty()) {
             return;
@@ -200,7 +212,8 @@ public final class ConsoleHub implements AutoCloseable {
         List<Notice> events = new ArrayList<>();
         synchronized (order) {
             Map<String, List<ConsoleEntry>> byMailbox = new LinkedHashMap<>();
-            for (ConsoleEntry e : entries) {
+            for (ConsoleEntry taken : entries) {
+                ConsoleEntry e = taken.withSeq(nextSeq());
                 states.apply(e);
                 transcript.append(e);
                 byMailbox.computeIfAbsent(e.mailbox(), k -> new ArrayList<>()).add(e);

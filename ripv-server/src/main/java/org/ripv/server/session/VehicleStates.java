@@ -47,10 +47,12 @@ final class VehicleStates {
         /** When the instance of the service whose calls {@link #calls} counts started (epoch ms; 0: unknown). */
         long run;
         VehicleEvent lastEvent;
+        /** The sequence number of the last entry taken (not saved: numbers from before a restart are lower). */
+        long lastSeq;
         final ArrayDeque<ConsoleEntry> recent = new ArrayDeque<>();
 
         synchronized SessionState snapshot() {
-            return new SessionState(state, lastContact, lat, lon, calls, lastEvent);
+            return new SessionState(state, lastContact, lat, lon, calls, lastEvent, lastSeq);
         }
 
         synchronized List<ConsoleEntry> recent(int n) {
@@ -118,6 +120,7 @@ final class VehicleStates {
         boolean save = false;
         synchronized (v) {
             v.recent.addLast(e);
+            v.lastSeq = Math.max(v.lastSeq, e.seq());
             if (v.recent.size() > RECENT) {
                 v.recent.removeFirst();
             }

@@ -1,20 +1,19 @@
 package org.ripv.server.web;
 
 import java.io.IOException;
-import java.net.Socket;
 import java.util.List;
+import org.ripv.server.handlers.SocketHandler;
 
 /**
- * How a browser page becomes a client of the Post Office: the server adopts one end of a
- * loopback connection as a client (its own SocketHandler, client id, bounded reply queue),
- * already logged in as the user the web log-in checked, and hands back the other end, on which
- * the page's requests travel as ordinary frames.
+ * How a browser page becomes a client of the Post Office: the server adopts the page as an
+ * in-process client (its own client id, the gate's admission, already logged in as the user the
+ * web log-in checked). The page hands requests to the returned handler; the server writes replies
+ * and pushes to {@code page}. No socket and no thread is made for it.
  */
 public interface PostOfficeDoor {
     /**
-     * @param address the browser's address, for the server's log lines
-     * @return the client's end, greeting not yet exchanged
+     * @return the page's client; closing it is the page disconnecting
      * @throws IOException when the server takes no more clients (the message says so)
      */
-    Socket open(String user, List<String> roles, String address) throws IOException;
+    SocketHandler open(SocketHandler.Peer page, String user, List<String> roles) throws IOException;
 }

@@ -54,8 +54,11 @@ public final class WebConsole implements AutoCloseable {
     static final Duration IDLE = Duration.ofSeconds(20);
     static final Duration SESSION_IDLE = Duration.ofMinutes(30);
     static final Duration SESSION_ABSOLUTE = Duration.ofHours(12);
-    /** Open connections at most; well above the thousand slow ones a visitor must outlast. */
-    static final int MAX_CONNECTIONS = 4096;
+    /**
+     * Open connections at most: well above the thousand slow ones a visitor must outlast, and room
+     * for the 10,000 pages of a public outreach day (a page costs no thread: docs/web.md).
+     */
+    static final int MAX_CONNECTIONS = 12_288;
     /** Frames queued for a page that does not read before it is cut off. */
     static final int MAX_QUEUED_FRAMES = 2000;
 
@@ -72,7 +75,7 @@ public final class WebConsole implements AutoCloseable {
      * @param uploads        whether the upload form takes files ({@code --http-upload})
      * @param tls            serve HTTPS with this context; null: plain HTTP
      * @param door           how a page becomes a Post Office client; null with {@code access} null
-     * @param codec          the client protocol's frame codec
+     * @param codec          the client protocol's frame codec (pages are in-process clients and need no frames; kept for callers)
      * @param mapTiles       a tile URL template ({@code https://tile.example.org/{z}/{x}/{y}.png}), or null
      */
     public record Options(InetSocketAddress bind, Path uploadDir, long maxUploadBytes, Path clientJar, Supplier<String> status,
@@ -105,6 +108,7 @@ public final class WebConsole implements AutoCloseable {
 
     private final Options options;
     private final WebSessions sessions = new WebSessions(SESSION_IDLE, SESSION_ABSOLUTE, System::currentTimeMillis);
+    private final PushJson pushJson = new PushJson();
     private Server server;
     private ServerConnector connector;
     private ScheduledExecutorService timer;
@@ -224,7 +228,10 @@ public final class WebConsole implements AutoCloseable {
                     Response.writeError(request, response, callback, 403, "log in first");
                     return null;
                 }
-                return new ConsoleSocket(sessions, login, options.door(), options.codec(), Request.getRemoteAddr(request));
+                // The browser's address, for the gate's per-address rules and the log lines.
+                java.net.InetAddress from = request.getConnectionMetaData().getRemoteSocketAddress() instanceof InetSocketAddress a
+                        && a.getAddress() != null ? a.getAddress() : java.net.InetAddress.getLoopbackAddress();
+                return new ConsoleSocket(sessions, login, options.door(), pushJson, from);
             });
         });
         ws.setHandler(all);

@@ -1,8 +1,8 @@
 /**
  * The web console (issue 21): the server's HTTP port on Jetty 12. A browser that logs in becomes
  * a client of the Post Office like a socket client — each page's WebSocket is one
- * {@link org.ripv.server.web.PostOfficeLink}, a real client connection adopted by the server —
- * so permits, MailBox locks, priorities, deadlines, transcript and audit are the socket port's
+ * {@link org.ripv.server.web.ConsoleSocket}, an in-process client the server adopts, with no
+ * thread or socket of its own ({@link org.ripv.server.web.PostOfficeDoor}) — so permits, MailBox locks, priorities, deadlines, transcript and audit are the socket port's
  * own; nothing here decides what a user may do. One {@code Handler} per concern
  * ({@link org.ripv.server.web.LandingHandler}, {@link org.ripv.server.web.LoginHandler},
  * {@link org.ripv.server.web.UploadHandler}, {@link org.ripv.server.web.SecurityHeaders}), the

@@ -78,6 +78,7 @@ final class Runner implements Runnable {
     public void run() {
         Set<Long> ran = new HashSet<>();
         try {
+            sendToVehicle();
             while (gate.ended() == null && !workflows.closed()) {
                 Optional<QueuedWorkflow> next = workflows.queues.list(mailbox).stream().filter(e -> !ran.contains(e.id()))
                         .findFirst();
@@ -95,6 +96,22 @@ final class Runner implements Runnable {
         } finally {
             finished = true;
             workflows.finished(mailbox, this);
+        }
+    }
+
+    /** The MailBox's to-vehicle folder goes out first, from a client id of its own, under the lock like any step. */
+    private void sendToVehicle() throws IOException {
+        if (gate.ended() != null || workflows.closed()) {
+            return;
+        }
+        String clientId = workflows.newClientId();
+        workflows.bind(clientId, this);
+        try {
+            new ToVehicleRun(workflows, mailbox, requests).run(clientId);
+        } finally {
+            workflows.host.unlockWorkflow(mailbox, clientId);
+            workflows.unbind(clientId);
+            workflows.lockReleased(mailbox);
         }
     }
 

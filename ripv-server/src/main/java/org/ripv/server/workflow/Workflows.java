@@ -56,6 +56,7 @@ public final class Workflows implements AutoCloseable {
     private final Map<String, Runner> byClient = new ConcurrentHashMap<>();
     private final List<LineWaiter> waiters = new CopyOnWriteArrayList<>();
     private final AtomicInteger nextClient = new AtomicInteger();
+    private final CallArrivals arrivals = new CallArrivals();
     private final WorkflowCommands commands;
     private volatile boolean closed;
 
@@ -117,9 +118,11 @@ public final class Workflows implements AutoCloseable {
             }
             if (e.kind() == ConsoleEntry.Kind.EVENT) {
                 if (e.event() == VehicleEvent.SURFACED) {
+                    arrivals.surfaced(e.mailbox());
                     surfaced(e.mailbox());
                 } else if (e.event() == VehicleEvent.DIVED || e.event() == VehicleEvent.LINK_LOST) {
                     callEnded(e.mailbox(), e.event());
+                    listArrivals(e.mailbox());
                 }
             }
         }
@@ -165,13 +168,43 @@ public final class Workflows implements AutoCloseable {
             }
             // A runner of the last call may still be winding up: the new one waits at its first
             // step boundary for the old one's lock to go, and resumes where it left off.
-            if (queues.list(mailbox).isEmpty()) {
+            if (queues.list(mailbox).isEmpty() && !toVehicleWaiting(mailbox)) {
                 return null;
             }
             Runner r = new Runner(this, mailbox);
             threads.execute(r);
             return r;
         });
+    }
+
+    private boolean toVehicleWaiting(String mailbox) {
+        try {
+            return !host.files().toVehiclePending(mailbox).isEmpty();
+        } catch (IOException e) {
+            log.warn("{}: cannot read its to-vehicle folder: {}", mailbox, e.toString());
+            return false;
+        }
+    }
+
+    /** Off the service's console thread: the folder is read on a workflow thread. */
+    private void listArrivals(String mailbox) {
+        if (closed) {
+            return;
+        }
+        try {
+            threads.execute(() -> {
+                try {
+                    String said = arrivals.ended(mailbox, host.files());
+                    if (said != null) {
+                        announce(mailbox, SERVER, said);
+                    }
+                } catch (IOException | RuntimeException x) {
+                    log.warn("{}: cannot list what the call brought: {}", mailbox, x.toString());
+                }
+            });
+        } catch (java.util.concurrent.RejectedExecutionException x) {
+            // stopping
+        }
     }
 
     /** The call ended: the step under way is cut and the run stops; what is left runs on the next call. */

@@ -70,9 +70,14 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
     private volatile boolean cancelRequested;
 
     public DatabaseHandler(DatabaseTarget target, QueryLimits limits) {
+        this(target, limits, IngestNotices.NONE);
+    }
+
+    /** As above, telling {@code notices} of files that wait for a sensor-list cache. */
+    DatabaseHandler(DatabaseTarget target, QueryLimits limits, IngestNotices notices) {
         this.target = target;
         this.limits = limits;
-        this.ingest = new IngestCommand(target);
+        this.ingest = new IngestCommand(target, notices);
         this.availability = Availability.available(describe());
     }
 
@@ -392,7 +397,9 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
 
     @Override
     public Availability availability() {
-        return availability;
+        Availability a = availability;
+        String waiting = ingest.waiting();
+        return waiting.isEmpty() ? a : new Availability(a.available(), a.detail() + "; " + waiting, a.running());
     }
 
     public DatabaseTarget target() {

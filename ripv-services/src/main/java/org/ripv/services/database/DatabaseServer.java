@@ -68,7 +68,8 @@ public final class DatabaseServer extends RIPVService {
     @Override
     protected void open() {
         for (DatabaseTarget t : targets) {
-            DatabaseHandler h = new DatabaseHandler(t, limits);
+            DatabaseHandler h = new DatabaseHandler(t, limits,
+                    IngestNotices.publishing(name().mailbox(t.handle()).toString(), this::publish));
             try {
                 h.connect();
             } catch (SQLException e) {

@@ -34,7 +34,17 @@ final class IngestCommand {
     static final String SCRIPT = "slocumDB.sql";
     /** Tables and views of the script, for the reader's GRANT. */
     static final List<String> OBJECTS = List.of("DATA_FILE", "SENSOR_DEF", "READING", "SENSOR_LATEST", "POSITION_FIX",
-            "POSITIONS", "LATEST", "DEPTHS", "DIVES");
+            "CYCLE", "POSITIONS", "LATEST", "DEPTHS", "DIVES");
+    /** The objects an older database (without CYCLE) gets from {@link #addCycles}. */
+    static final List<String> CYCLE_OBJECTS = List.of("CYCLE", "DIVES");
+    /**
+     * How an older database's cycles come into CYCLE: each (vehicle, segment, time) stored, under
+     * the first file and row that has it.
+     */
+    private static final String CYCLE_BACKFILL = "INSERT INTO cycle (vehicle, segment, t, file_id, row_no)"
+            + " SELECT r.vehicle, COALESCE(d.dba_filename, d.name), r.t, MIN(r.file_id), MIN(r.row_no)"
+            + " FROM reading r JOIN data_file d ON d.file_id = r.file_id"
+            + " GROUP BY r.vehicle, COALESCE(d.dba_filename, d.name), r.t";
     /** The objects an older database (without POSITION_FIX) gets from {@link #addPositionFixes}. */
     static final List<String> POSITION_OBJECTS = List.of("POSITION_FIX", "POSITIONS");
     /**
@@ -51,11 +61,37 @@ final class IngestCommand {
 
     private final DatabaseTarget target;
     private final SlocumArrivals slocum;
+    private final IngestNotices notices;
     private boolean schemaChecked;
+    /** The files waiting for a sensor-list cache, as {@code ?status} shows them; empty when none. */
+    private volatile String waiting = "";
 
     IngestCommand(DatabaseTarget target) {
+        this(target, IngestNotices.NONE);
+    }
+
+    IngestCommand(DatabaseTarget target, IngestNotices notices) {
         this.target = target;
         this.slocum = SlocumArrivals.of(target);
+        this.notices = notices;
+        refreshWaiting();
+    }
+
+    /**
+     * What {@code ?status} adds: "waiting for sensor lists: 6b016a2e.cac: a.sbd b.sbd", or empty.
+     * Kept on disk, so files kept before a restart are still reported after it.
+     */
+    String waiting() {
+        return waiting;
+    }
+
+    private void refreshWaiting() {
+        try {
+            List<String> w = slocum.waitingFor();
+            waiting = w.isEmpty() ? "" : "waiting for sensor lists: " + String.join("; ", w);
+        } catch (IOException e) {
+            waiting = "cannot list the files waiting for sensor lists: " + e.getMessage();
+        }
     }
 
     /** True when a command line is {@code ingest ...}. */
@@ -102,9 +138,18 @@ final class IngestCommand {
                 if (SlocumArrivals.isCache(f.name())) {
                     String crc = slocum.acceptCache(f);
                     lines.add(f.name() + ": sensor list " + crc + " kept in the cache");
-                    List<Attachment> released = slocum.released(crc);
-                    for (Attachment w : released) {
-                        lines.add(w.name() + " (waited for " + crc + ".cac): " + store(ingest, w, request.user()).describe());
+                    for (Attachment w : slocum.released(crc)) {
+                        String line = w.name() + " (waited for " + crc + ".cac): ";
+                        try {
+                            line += store(ingest, w, request.user()).describe();
+                            notices.released(w.name(), crc, line, request.user());
+                        } catch (DbaFormatException | org.ripv.services.ingest.SlocumFormatException | SQLException e) {
+                            refused++;
+                            line += "refused, nothing stored: " + (e instanceof SQLException s ? DatabaseHandler.describe(s)
+                                    : e.getMessage());
+                            notices.released(w.name(), crc, line, request.user());
+                        }
+                        lines.add(line);
                     }
                     continue;
                 }
@@ -116,6 +161,7 @@ final class IngestCommand {
             } catch (org.ripv.services.ingest.MissingSensorListException e) {
                 lines.add(f.name() + ": kept, waiting for the sensor list " + e.crc() + ".cac (ymodem:get " + e.crc()
                         + ".cac, or upload it and ingest it); it is ingested by itself when that arrives");
+                notices.waiting(f.name(), e.crc(), request.user());
                 log.info("{} ingest {} for {}: waits for {}.cac", target.handle(), f.name(), request.user(), e.crc());
             } catch (DbaFormatException | org.ripv.services.ingest.SlocumFormatException | IllegalArgumentException e) {
                 refused++;
@@ -134,6 +180,7 @@ final class IngestCommand {
                 request.progress(lines.get(lines.size() - 1), new Progress("files ingested", i + 1, ordered.size(), 0));
             }
         }
+        refreshWaiting();
         String text = String.join("\n", lines);
         if (refused > 0) {
             return Reply.error(ErrorCode.BAD_REQUEST, text);
@@ -141,11 +188,13 @@ final class IngestCommand {
         return Reply.ok(text, new org.ripv.messages.UpdateCount((int) Math.min(Integer.MAX_VALUE, values)));
     }
 
-    /** Stores a DBA file, or a Slocum binary file as the rows dbd2asc gives for it. */
+    /** Stores a DBA file, or a Slocum binary file's cycles as they are decoded (no DBA text in between). */
     private DbaIngest.Outcome store(DbaIngest ingest, Attachment f, String user)
             throws IOException, SQLException, DbaFormatException, org.ripv.services.ingest.SlocumFormatException {
-        byte[] data = SlocumArrivals.isBinary(f) ? slocum.decode(f) : f.data();
-        return ingest.ingest(f.name(), data, user);
+        if (SlocumArrivals.isBinary(f)) {
+            return ingest.ingest(f.name(), DbaIngest.sha256(f.data()), () -> slocum.open(f), user);
+        }
+        return ingest.ingest(f.name(), f.data(), user);
     }
 
     /**
@@ -160,10 +209,17 @@ final class IngestCommand {
             inTransaction(c, () -> SqlScript.run(c, SqlScript.resource(SCRIPT), SCRIPT));
             log.info("{}: created the Slocum tables and views of {}", target.handle(), SCRIPT);
             grantReader(c, OBJECTS);
-        } else if (!exists(c, "POSITION_FIX")) {
-            long fixes = inTransaction(c, () -> addPositionFixes(c));
-            log.info("{}: added POSITION_FIX to the Slocum tables, with the {} fixes stored before", target.handle(), fixes);
-            grantReader(c, POSITION_OBJECTS);
+        } else {
+            if (!exists(c, "POSITION_FIX")) {
+                long fixes = inTransaction(c, () -> addPositionFixes(c));
+                log.info("{}: added POSITION_FIX to the Slocum tables, with the {} fixes stored before", target.handle(), fixes);
+                grantReader(c, POSITION_OBJECTS);
+            }
+            if (!exists(c, "CYCLE")) {
+                long cycles = inTransaction(c, () -> addCycles(c));
+                log.info("{}: added CYCLE to the Slocum tables, with the {} cycles stored before", target.handle(), cycles);
+                grantReader(c, CYCLE_OBJECTS);
+            }
         }
         schemaChecked = true;
     }
@@ -188,6 +244,25 @@ final class IngestCommand {
             copied += st.executeUpdate(String.format(BACKFILL, "dead-reckoned", "m_lon", "m_lat"));
         }
         return copied;
+    }
+
+    /**
+     * Brings a database made before CYCLE existed to today's {@value #SCRIPT}: CYCLE and the dives
+     * view (one row a segment) by the script's own statements, and the cycles already stored
+     * entered under the first file that has each.
+     *
+     * @return the cycles entered
+     */
+    static long addCycles(Connection c) throws SQLException, IOException {
+        try (Statement st = c.createStatement()) {
+            st.execute("DROP VIEW dives");
+            for (String sql : SqlScript.split(SqlScript.resource(SCRIPT))) {
+                if (sql.matches("(?is)CREATE\\s+(TABLE|VIEW)\\s+(cycle|dives)\\b.*")) {
+                    st.execute(sql);
+                }
+            }
+            return st.executeUpdate(CYCLE_BACKFILL);
+        }
     }
 
     private interface Work<T> {

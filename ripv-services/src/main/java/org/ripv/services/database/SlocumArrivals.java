@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.stream.Stream;
 import org.ripv.messages.Attachment;
+import org.ripv.services.ingest.Cycles;
 import org.ripv.services.ingest.MissingSensorListException;
 import org.ripv.services.ingest.SensorListCache;
 import org.ripv.services.ingest.SlocumBinaryFiles;
@@ -56,10 +57,10 @@ final class SlocumArrivals {
         return cache.accept(f.name(), f.data());
     }
 
-    /** The DBA text of a binary file; a file whose cache is missing is kept to wait for it, and the exception thrown. */
-    byte[] decode(Attachment f) throws IOException, SlocumFormatException {
+    /** A binary file's cycles; a file whose cache is missing is kept to wait for it, and the exception thrown. */
+    Cycles open(Attachment f) throws IOException, SlocumFormatException {
         try {
-            return SlocumBinaryFiles.dba(f.name(), f.data(), cache);
+            return SlocumBinaryFiles.cycles(f.name(), f.data(), cache);
         } catch (MissingSensorListException e) {
             Path dir = waiting.resolve(e.crc());
             Files.createDirectories(dir);
@@ -87,7 +88,7 @@ final class SlocumArrivals {
         return out;
     }
 
-    /** The CRCs files wait for, with their names, for the reply. */
+    /** The CRCs files wait for, with their names ("6b016a2e.cac: a.sbd b.sbd"), for the reply and {@code ?status}. */
     List<String> waitingFor() throws IOException {
         if (!Files.isDirectory(waiting)) {
             return List.of();

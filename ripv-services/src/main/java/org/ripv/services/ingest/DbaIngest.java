@@ -19,11 +19,13 @@ import java.util.Map;
 import java.util.TimeZone;
 
 /**
- * Stores one DBA file in the narrow schema of {@code sql/slocumDB.sql}: a DATA_FILE row, the
- * sensors it names in SENSOR_DEF, one READING per non-NaN value and one POSITION_FIX per row with
- * a latitude and longitude pair (GPS or dead-reckoned) — all in one transaction,
- * in JDBC batches, streaming the rows. A file whose SHA-256 is stored already is not stored
- * again; a file the {@link DbaReader} refuses stores nothing.
+ * Stores one Slocum file — DBA text or binary, read as {@link Cycles} — in the narrow schema of
+ * {@code sql/slocumDB.sql}: a DATA_FILE row, the sensors it names in SENSOR_DEF, one CYCLE per
+ * row, one READING per non-NaN value and one POSITION_FIX per row with a latitude and longitude
+ * pair (GPS or dead-reckoned) — all in one transaction, in JDBC batches, streaming the rows
+ * ({@link CycleWriter}). A file whose SHA-256 is stored already is not stored again; a cycle
+ * stored already by another file of the same segment is merged into, not stored twice; a file
+ * the reader refuses stores nothing.
  *
  * <p>Not thread-safe: one instance per connection, used by one thread.
  */
@@ -32,8 +34,6 @@ public final class DbaIngest {
     static final int BATCH = 5_000;
     /** Per instance: JDBC drivers may set a Calendar's fields while they convert, so no two threads share one. */
     private final Calendar utc = Calendar.getInstance(TimeZone.getTimeZone("UTC"));
-    /** POSITION_FIX.SOURCE of the (m_gps_lat, m_gps_lon) and (m_lat, m_lon) pairs. */
-    private static final String[] FIXES = {"gps", "dead-reckoned"};
 
     /**
      * What one file gave.
@@ -44,9 +44,12 @@ public final class DbaIngest {
      * @param duplicate  true when the same bytes were stored already (nothing was added)
      * @param positions  rows with a valid latitude/longitude pair (GPS or dead-reckoned)
      * @param untimed    rows with neither m_present_time nor sci_m_present_time (not stored)
+     * @param merged     rows whose cycle (vehicle, segment, time) was stored already, by an earlier file
+     *                   of the same segment (a {@code .sbd} before its {@code .dbd}) or earlier in this
+     *                   one: their values went into that cycle instead of a new one
      */
     public record Outcome(String name, String dbaName, String vehicle, long fileId, boolean duplicate, long rows,
-                          int sensors, long values, long positions, long noFix, long impossible, long untimed) {
+                          int sensors, long values, long positions, long noFix, long impossible, long untimed, long merged) {
         /** "cp_388-2016-012-0-0: 23 rows, 52 sensors, 296 values, 2 positions", and what else is worth saying. */
         public String describe() {
             if (duplicate) {
@@ -62,6 +65,10 @@ public final class DbaIngest {
             }
             if (untimed > 0) {
                 b.append(" (").append(untimed).append(" rows without a time left out)");
+            }
+            if (merged > 0) {
+                b.append(" (").append(merged).append(" of the rows' cycles were stored already: their values were merged"
+                        + " into them, not stored twice)");
             }
             return b.toString();
         }
@@ -82,8 +89,14 @@ public final class DbaIngest {
         }
     }
 
+    /** Opens a file's cycles; called only when the file is not stored already. */
+    @FunctionalInterface
+    public interface Opener {
+        Cycles open() throws IOException, DbaFormatException, SlocumFormatException;
+    }
+
     /**
-     * Stores a file, or finds it stored already.
+     * Stores a DBA text file, or finds it stored already.
      *
      * @param name the file's name in the store (kept in DATA_FILE.NAME)
      * @param user who asked (DATA_FILE.INGESTED_BY)
@@ -91,15 +104,35 @@ public final class DbaIngest {
      * @throws SQLException       when the database fails; nothing is stored
      */
     public Outcome ingest(String name, byte[] data, String user) throws DbaFormatException, SQLException, IOException {
-        String sha = sha256(data);
+        try {
+            return ingest(name, sha256(data), () -> new DbaReader(new ByteArrayInputStream(data)), user);
+        } catch (SlocumFormatException e) {
+            throw new IllegalStateException("a DBA reader threw a binary format error", e);
+        }
+    }
+
+    /**
+     * Stores a file's cycles (DBA text or binary: {@link Cycles}), or finds the same bytes stored
+     * already. A cycle stored before — same vehicle, segment ({@code filename}) and time, from
+     * another form of the same segment — is not stored again: this file's values go into it, its
+     * own values replacing those stored, so the later, fuller file ({@code .dbd} after
+     * {@code .sbd}) is what stays.
+     *
+     * @param sha  the SHA-256 of the file's bytes ({@link #sha256})
+     * @throws DbaFormatException    when a DBA file is not good; nothing is stored
+     * @throws SlocumFormatException when a binary file is not good (or its cache is missing); nothing is stored
+     * @throws SQLException          when the database fails; nothing is stored
+     */
+    public Outcome ingest(String name, String sha, Opener opener, String user)
+            throws DbaFormatException, SlocumFormatException, SQLException, IOException {
         Outcome earlier = stored(name, sha);
         if (earlier != null) {
             return earlier;
         }
         boolean auto = c.getAutoCommit();
         c.setAutoCommit(false);
-        try {
-            Outcome o = write(name, data, user, sha);
+        try (Cycles r = opener.open()) {
+            Outcome o = write(name, r, user, sha);
             c.commit();
             return o;
         } catch (SQLException e) {
@@ -111,7 +144,7 @@ public final class DbaIngest {
                 }
             }
             throw e;
-        } catch (DbaFormatException | IOException | RuntimeException e) {
+        } catch (DbaFormatException | SlocumFormatException | IOException | RuntimeException e) {
             rollback();
             throw e;
         } finally {
@@ -146,111 +179,59 @@ public final class DbaIngest {
                 }
                 String dba = rs.getString(2);
                 return new Outcome(name, dba == null ? name : dba, rs.getString(3), rs.getLong(1), true, rs.getLong(4),
-                        rs.getInt(5), rs.getLong(6), rs.getLong(7), 0, 0, 0);
+                        rs.getInt(5), rs.getLong(6), rs.getLong(7), 0, 0, 0, 0);
             }
         }
     }
 
-    private Outcome write(String name, byte[] data, String user, String sha) throws DbaFormatException, SQLException, IOException {
-        try (DbaReader r = new DbaReader(new ByteArrayInputStream(data))) {
-            DbaHeader h = r.header();
-            String vehicle = h.vehicle() != null ? h.vehicle() : vehicleFromName(name);
-            String dbaName = h.filename() != null && !h.filename().isBlank() ? h.filename() : name;
-            int[] sensorIds = sensorIds(h.sensors());
-            long fileId = insertFile(h, name, vehicle, sha, user);
-            int latGps = h.column("m_gps_lat");
-            int lonGps = h.column("m_gps_lon");
-            int latDr = h.column("m_lat");
-            int lonDr = h.column("m_lon");
-            int depth = h.column("m_depth");
-            double minDepth = Double.NaN;
-            double maxDepth = Double.NaN;
-            long depths = 0;
-            double[] row = new double[h.sensors().size()];
-            double[] lastT = new double[row.length];
-            double[] lastV = new double[row.length];
-            java.util.Arrays.fill(lastT, Double.NaN);
-            long values = 0;
-            long positions = 0;
-            long untimed = 0;
-            double first = Double.NaN;
-            double last = Double.NaN;
-            int pending = 0;
-            int pendingFixes = 0;
-            try (PreparedStatement ins = c.prepareStatement(
-                    "INSERT INTO reading (file_id, row_no, sensor_id, vehicle, t, value) VALUES (?, ?, ?, ?, ?, ?)");
-                 PreparedStatement fix = c.prepareStatement(
-                         "INSERT INTO position_fix (vehicle, t, lat, lon, source, file_id, row_no) VALUES (?, ?, ?, ?, ?, ?, ?)")) {
-                ins.setLong(1, fileId);
-                ins.setString(4, vehicle);
-                fix.setString(1, vehicle);
-                fix.setLong(6, fileId);
-                while (r.next(row)) {
-                    double t = r.time(row);
-                    if (!Double.isFinite(t) || t < 0 || t > 32_503_680_000d) { // up to year 3000
-                        untimed++;
-                        continue;
-                    }
-                    first = Double.isNaN(first) ? t : Math.min(first, t);
-                    last = Double.isNaN(last) ? t : Math.max(last, t);
-                    if (depth >= 0 && !Double.isNaN(row[depth])) {
-                        minDepth = depths == 0 ? row[depth] : Math.min(minDepth, row[depth]);
-                        maxDepth = depths == 0 ? row[depth] : Math.max(maxDepth, row[depth]);
-                        depths++;
-                    }
-                    Timestamp time = timestamp(t);
-                    for (int p = 0; p < FIXES.length; p++) {
-                        int lat = p == 0 ? latGps : latDr;
-                        int lon = p == 0 ? lonGps : lonDr;
-                        if (pair(row, lat, lon)) {
-                            positions++;
-                            fix.setTimestamp(2, time, utc);
-                            fix.setDouble(3, row[lat]);
-                            fix.setDouble(4, row[lon]);
-                            fix.setString(5, FIXES[p]);
-                            fix.setLong(7, r.rows());
-                            fix.addBatch();
-                            if (++pendingFixes == BATCH) {
-                                fix.executeBatch();
-                                pendingFixes = 0;
-                            }
-                        }
-                    }
-                    ins.setLong(2, r.rows());
-                    ins.setTimestamp(5, time, utc);
-                    for (int i = 0; i < row.length; i++) {
-                        double v = row[i];
-                        if (Double.isNaN(v)) {
-                            continue;
-                        }
-                        if (!(lastT[i] > t)) {
-                            lastT[i] = t;
-                            lastV[i] = v;
-                        }
-                        ins.setInt(3, sensorIds[i]);
-                        ins.setDouble(6, v);
-                        ins.addBatch();
-                        values++;
-                        if (++pending == BATCH) {
-                            ins.executeBatch();
-                            pending = 0;
-                        }
+    private Outcome write(String name, Cycles r, String user, String sha)
+            throws DbaFormatException, SlocumFormatException, SQLException, IOException {
+        DbaHeader h = r.header();
+        String vehicle = h.vehicle() != null ? h.vehicle() : vehicleFromName(name);
+        String dbaName = h.filename() != null && !h.filename().isBlank() ? h.filename() : name;
+        int[] sensorIds = sensorIds(h.sensors());
+        long fileId = insertFile(h, name, vehicle, sha, user);
+        int depth = h.column("m_depth");
+        double minDepth = Double.NaN;
+        double maxDepth = Double.NaN;
+        long depths = 0;
+        double[] row = new double[h.sensors().size()];
+        double[] lastT = new double[row.length];
+        double[] lastV = new double[row.length];
+        java.util.Arrays.fill(lastT, Double.NaN);
+        long untimed = 0;
+        double first = Double.NaN;
+        double last = Double.NaN;
+        try (CycleWriter w = new CycleWriter(c, utc, vehicle, cut(dbaName, 255), fileId, h)) {
+            while (r.next(row)) {
+                double t = r.time(row);
+                if (!Double.isFinite(t) || t < 0 || t > 32_503_680_000d) { // up to year 3000
+                    untimed++;
+                    continue;
+                }
+                first = Double.isNaN(first) ? t : Math.min(first, t);
+                last = Double.isNaN(last) ? t : Math.max(last, t);
+                if (depth >= 0 && !Double.isNaN(row[depth])) {
+                    minDepth = depths == 0 ? row[depth] : Math.min(minDepth, row[depth]);
+                    maxDepth = depths == 0 ? row[depth] : Math.max(maxDepth, row[depth]);
+                    depths++;
+                }
+                for (int i = 0; i < row.length; i++) {
+                    if (!Double.isNaN(row[i]) && !(lastT[i] > t)) {
+                        lastT[i] = t;
+                        lastV[i] = row[i];
                     }
                 }
-                if (pending > 0) {
-                    ins.executeBatch();
-                }
-                if (pendingFixes > 0) {
-                    fix.executeBatch();
-                }
+                w.cycle(r.rows(), t, row, sensorIds);
             }
+            w.finish();
             latest(vehicle, fileId, sensorIds, lastT, lastV);
             try (PreparedStatement up = c.prepareStatement("UPDATE data_file SET row_count = ?, value_count = ?,"
                     + " position_count = ?, first_time = ?, last_time = ?, min_depth = ?, max_depth = ?, depth_count = ?"
                     + " WHERE file_id = ?")) {
                 up.setLong(1, r.rows() - untimed);
-                up.setLong(2, values);
-                up.setLong(3, positions);
+                up.setLong(2, w.values());
+                up.setLong(3, w.positions());
                 up.setTimestamp(4, Double.isNaN(first) ? null : timestamp(first), utc);
                 up.setTimestamp(5, Double.isNaN(last) ? null : timestamp(last), utc);
                 if (depths == 0) {
@@ -264,8 +245,8 @@ public final class DbaIngest {
                 up.setLong(9, fileId);
                 up.executeUpdate();
             }
-            return new Outcome(name, dbaName, vehicle, fileId, false, r.rows() - untimed, h.sensors().size(), values,
-                    positions, r.noFix(), r.impossible(), untimed);
+            return new Outcome(name, dbaName, vehicle, fileId, false, r.rows() - untimed, h.sensors().size(), w.values(),
+                    w.positions(), r.noFix(), r.impossible(), untimed, w.merged());
         }
     }
 
@@ -309,10 +290,6 @@ public final class DbaIngest {
             ins.executeBatch();
             up.executeBatch();
         }
-    }
-
-    private static boolean pair(double[] row, int lat, int lon) {
-        return lat >= 0 && lon >= 0 && !Double.isNaN(row[lat]) && !Double.isNaN(row[lon]);
     }
 
     /** Epoch seconds to a Timestamp, to the microsecond (what the glider's clock resolves, and no float noise). */
@@ -360,7 +337,7 @@ public final class DbaIngest {
         }
     }
 
-    private static String cut(String s, int n) {
+    static String cut(String s, int n) {
         return s == null || s.length() <= n ? s : s.substring(0, n);
     }
 

@@ -33,7 +33,7 @@ import java.util.regex.Pattern;
  * }
  * }</pre>
  */
-public final class DbaReader implements AutoCloseable {
+public final class DbaReader implements Cycles {
     /** The first line of every DBA file. */
     public static final String LABEL = "dbd_label: DBD_ASC(dinkum_binary_data_ascii)file";
     static final int MAX_HEADER_LINE = 4096;
@@ -221,6 +221,7 @@ public final class DbaReader implements AutoCloseable {
         return t.split("[ \t]+");
     }
 
+    @Override
     public DbaHeader header() {
         return header;
     }
@@ -229,6 +230,7 @@ public final class DbaReader implements AutoCloseable {
      * Reads the next row into {@code values} (one per sensor; NaN where there is none, and for
      * no-fix or impossible positions). False at the end of the file.
      */
+    @Override
     public boolean next(double[] values) throws IOException, DbaFormatException {
         if (values.length != width) {
             throw new IllegalArgumentException("a row of this file has " + width + " values, not " + values.length);
@@ -362,6 +364,7 @@ public final class DbaReader implements AutoCloseable {
     }
 
     /** The time of a row read by {@link #next}: m_present_time, else sci_m_present_time; NaN if neither. */
+    @Override
     public double time(double[] values) {
         double t = timeColumn >= 0 ? values[timeColumn] : Double.NaN;
         if (Double.isNaN(t) && sciTimeColumn >= 0) {
@@ -376,16 +379,19 @@ public final class DbaReader implements AutoCloseable {
     }
 
     /** Rows read so far. */
+    @Override
     public long rows() {
         return rows;
     }
 
     /** Position values that were {@value Degrees#NO_FIX} ("no fix"). */
+    @Override
     public long noFix() {
         return noFix;
     }
 
     /** Position values that are not DDMM.MMMM within range. */
+    @Override
     public long impossible() {
         return impossible;
     }

@@ -7,7 +7,7 @@ import java.io.OutputStreamWriter;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 
-/** Binary files on their way into {@link DbaIngest}: recognised by content or name, decoded to the rows dbd2asc gives. */
+/** Binary files on their way into {@link DbaIngest}: recognised by content or name, decoded cycle by cycle. */
 public final class SlocumBinaryFiles {
     private static final byte[] LABEL = "dbd_label:".getBytes(StandardCharsets.US_ASCII);
 
@@ -35,8 +35,22 @@ public final class SlocumBinaryFiles {
     }
 
     /**
-     * The DBA text of a binary file, for {@link DbaIngest}: the same rows, so that a file is stored
-     * once whether it came as text, plain binary or compressed (the SHA-256 is of this text).
+     * A binary file's cycles for {@link DbaIngest}, decoded as they are read (one cycle in memory).
+     *
+     * @throws MissingSensorListException when its sensor list is in a cache file the cache lacks
+     * @throws SlocumFormatException      when its header cannot be decoded
+     */
+    public static Cycles cycles(String name, byte[] data, SensorListCache cache) throws IOException, SlocumFormatException {
+        if (data.length == 0) {
+            throw new SlocumFormatException(name, 0, "the file is empty (0 bytes)");
+        }
+        SlocumBinaryReader r = SlocumBinaryReader.open(new ByteArrayInputStream(data), name, cache);
+        return new BinaryCycles(r, name);
+    }
+
+    /**
+     * The DBA text of a binary file, as {@code ripv slocum decode} prints it (the ingest reads
+     * {@link #cycles} instead, without this text).
      *
      * @throws MissingSensorListException when its sensor list is in a cache file the cache lacks
      * @throws SlocumFormatException      when it cannot be decoded; nothing is returned

@@ -85,6 +85,42 @@ public final class SlocumEncoder {
         }
     }
 
+    /** Changes a cycle of {@link #recode} in place: the row has the file's sensors, then the added ones (NaN). */
+    @FunctionalInterface
+    public interface Edit {
+        void apply(double[] row, long cycle);
+    }
+
+    /**
+     * Another file of the same segment, as a {@code .dbd} is to its {@code .sbd}: the same header
+     * tags but {@code extension}, the same cycles (each changed by {@code edit}), with the sensors
+     * {@code added} after the file's own, the sensor list in the file.
+     */
+    public static byte[] recode(byte[] file, SensorListCache cache, String extension, List<SlocumSensor> added, Edit edit)
+            throws IOException, SlocumFormatException {
+        java.io.ByteArrayOutputStream out = new java.io.ByteArrayOutputStream(file.length * 2);
+        try (SlocumBinaryReader r = new SlocumBinaryReader(new java.io.ByteArrayInputStream(file), "recoded", cache)) {
+            List<SlocumSensor> sensors = new java.util.ArrayList<>(r.sensors());
+            sensors.addAll(added);
+            Map<String, String> tags = new java.util.LinkedHashMap<>();
+            for (String k : List.of("the8x3_filename", "full_filename", "filename_extension", "mission_name", "fileopen_time")) {
+                tags.put(k, k.equals("filename_extension") ? extension : r.tags().getOrDefault(k, ""));
+            }
+            SlocumEncoder e = start(out, tags, sensors);
+            double[] row = new double[r.sensors().size()];
+            double[] wide = new double[sensors.size()];
+            long n = 0;
+            while (r.next(row)) {
+                java.util.Arrays.fill(wide, Double.NaN);
+                System.arraycopy(row, 0, wide, 0, row.length);
+                edit.apply(wide, ++n);
+                e.cycle(wide);
+            }
+            e.end();
+        }
+        return out.toByteArray();
+    }
+
     /** The end tag. */
     public void end() throws IOException {
         out.writeByte('X');

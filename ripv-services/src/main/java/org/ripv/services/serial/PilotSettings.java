@@ -11,8 +11,10 @@ import org.ripv.services.serial.ymodem.FileNames;
  * @param keys           the keys {@code ?key} may send ({@code keys=}, default {@link ControlKey#DEFAULT_KEYS})
  * @param zmodemSend     the vehicle's command that sends files by ZMODEM, given their names ({@code zs})
  * @param zmodemReceive  the vehicle's command that receives a file by ZMODEM ({@code zr})
+ * @param toVehicle      how the server's {@code to-vehicle/} folder for this link is sent on each
+ *                       call ({@code to-vehicle=zmodem|ymodem}); {@link ToVehicleMode#OFF} unless configured
  */
-public record PilotSettings(List<ControlKey> keys, String zmodemSend, String zmodemReceive) {
+public record PilotSettings(List<ControlKey> keys, String zmodemSend, String zmodemReceive, ToVehicleMode toVehicle) {
 
     public PilotSettings {
         keys = List.copyOf(keys);
@@ -21,6 +23,12 @@ public record PilotSettings(List<ControlKey> keys, String zmodemSend, String zmo
         if (zmodemSend.isBlank() || zmodemReceive.isBlank()) {
             throw new IllegalArgumentException("the vehicle's ZMODEM commands must not be empty (zmodem-send=, zmodem-receive=)");
         }
+        Objects.requireNonNull(toVehicle, "toVehicle");
+    }
+
+    /** A link that does not send a to-vehicle folder. */
+    public PilotSettings(List<ControlKey> keys, String zmodemSend, String zmodemReceive) {
+        this(keys, zmodemSend, zmodemReceive, ToVehicleMode.OFF);
     }
 
     public static PilotSettings defaults() {

@@ -6,8 +6,11 @@ import java.nio.charset.StandardCharsets;
 
 /** Reads a vehicle's answer to a command: until its prompt, a pause, or a deadline. */
 final class ReplyReader {
-    /** A reply longer than this is cut (the requester is told); the console saw it all, rate permitting. */
-    static final int MAX_REPLY = 4 * 1024 * 1024;
+    /**
+     * A reply longer than this is cut in the middle, "[... N bytes cut]" (the console saw it all,
+     * rate permitting): a reply that never ends costs a command this much memory and no more.
+     */
+    static final int MAX_REPLY = 1024 * 1024;
 
     private final LinkSettings settings;
     private final VehicleText vehicleText;
@@ -31,11 +34,20 @@ final class ReplyReader {
      * vehicle has {@link #settleMillis} from then to come back to its prompt.
      */
     boolean read(Link l, StringBuilder text, long maxMillis, String command, CommandCancel cancel) throws IOException {
+        Tail tail = new Tail();
+        try {
+            return collect(l, text, tail, maxMillis, command, cancel);
+        } finally {
+            tail.appendTo(text);
+        }
+    }
+
+    private boolean collect(Link l, StringBuilder text, Tail tail, long maxMillis, String command, CommandCancel cancel)
+            throws IOException {
         byte[] buf = new byte[4096];
         long deadline = System.nanoTime() + maxMillis * 1_000_000;
         long idle = settings.idleTimeout().toMillis();
         long wait = idle;
-        boolean cut = false;
         while (System.nanoTime() - deadline < 0) {
             int n;
             try {
@@ -50,13 +62,11 @@ final class ReplyReader {
             if (n == 0) {
                 return false;
             }
-            if (text.length() < MAX_REPLY) {
-                text.append(new String(buf, 0, Math.min(n, MAX_REPLY - text.length()), StandardCharsets.ISO_8859_1));
-            } else if (!cut) {
-                cut = true;
-                text.append("\n[reply cut at ").append(MAX_REPLY).append(" characters]\n");
-            }
-            if (vehicleText.endsWithPrompt(text)) {
+            int kept = Math.max(0, Math.min(n, MAX_REPLY - text.length()));
+            text.append(new String(buf, 0, kept, StandardCharsets.ISO_8859_1));
+            tail.add(buf, kept, n - kept);
+            // past the cap only the tail is looked at: the prompt still ends an endless reply's command
+            if (tail.past > 0 ? vehicleText.endsWithPrompt(tail.text) : vehicleText.endsWithPrompt(text)) {
                 if (command == null || VehicleText.echoEnd(text, command) >= 0) {
                     return false;
                 }
@@ -66,6 +76,39 @@ final class ReplyReader {
             }
         }
         return false;
+    }
+
+    /**
+     * What came after {@link #MAX_REPLY}: only its last {@link #KEEP} characters are kept (where
+     * the prompt is), the rest is counted, and the reply says "[... N bytes cut]" in its place.
+     */
+    private static final class Tail {
+        static final int KEEP = 512;
+        final StringBuilder text = new StringBuilder();
+        long past;
+
+        void add(byte[] bytes, int offset, int length) {
+            if (length <= 0) {
+                return;
+            }
+            past += length;
+            int from = Math.max(offset, offset + length - KEEP);
+            text.append(new String(bytes, from, offset + length - from, StandardCharsets.ISO_8859_1));
+            if (text.length() > KEEP) {
+                text.delete(0, text.length() - KEEP);
+            }
+        }
+
+        long cut() {
+            return past - text.length();
+        }
+
+        void appendTo(StringBuilder reply) {
+            if (cut() > 0) {
+                reply.append("\n[... ").append(cut()).append(" bytes cut]\n");
+            }
+            reply.append(text);
+        }
     }
 
     /** Whether {@code text} ends with the vehicle's prompt. */

@@ -23,6 +23,7 @@ import org.ripv.services.serial.ymodem.YmodemException;
  *   <li>A plain command: {@link PlainCommands}.</li>
  *   <li>{@code ymodem:get NAME…} and {@code ymodem:put NAME}: {@link YmodemCommands}.</li>
  *   <li>{@code zmodem:get NAME…} and {@code zmodem:put NAME}: {@link ZmodemCommands}.</li>
+ *   <li>{@code tovehicle:put to-vehicle/FOLDER/NAME}, a file of the server's to-vehicle folder: {@link ToVehicleCommands}.</li>
  *   <li>{@code ?key KEY}, one control key (the server's {@code ?key MAILBOX KEY}): {@link KeyCommands}.</li>
  * </ul>
  *
@@ -54,6 +55,7 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
     private final ReentrantLock lock = new ReentrantLock();
     private final LinkState state;
     private final PlainCommands plain;
+    private final ToVehicleCommands toVehicle;
     private final RunningCommand running = new RunningCommand();
 
     /**
@@ -85,6 +87,7 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
         this.keys = new KeyCommands(handle, vehicle.pilot(), settings, replies);
         this.state = new LinkState(vehicle, console, opener, lock);
         this.plain = new PlainCommands(settings, vehicleText, replies, console, state);
+        this.toVehicle = new ToVehicleCommands(vehicle.pilot(), zmodem, ymodem, plain);
     }
 
     /**
@@ -148,6 +151,9 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
         String command = request.command().trim();
         // a key the link does not allow is refused before the lock: nothing reaches the vehicle
         ControlKey key = KeyCommands.isKey(command) ? keys.allowed(request.arguments()) : null;
+        if (ToVehicleCommands.isToVehicle(command)) {
+            toVehicle.requireOn(); // a link that does not send to-vehicle files never starts one
+        }
         lock.lockInterruptibly();
         try {
             Connection l = usableLink();
@@ -173,6 +179,9 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
                 if (command.startsWith("zmodem:")) {
                     throw new ServiceException(ErrorCode.UNKNOWN_COMMAND,
                             "unknown '" + command.split("\\s+")[0] + "'; use zmodem:get NAME… or zmodem:put NAME");
+                }
+                if (ToVehicleCommands.isToVehicle(command)) {
+                    return toVehicle.put(l, request);
                 }
                 if (key != null) {
                     return keys.press(l, key);

@@ -144,7 +144,7 @@ public final class SerialPortServer extends RIPVService {
 
     @Override
     protected List<String> attachPrefixes() {
-        return List.of("ymodem:put ", "zmodem:put ");
+        return List.of("ymodem:put ", "zmodem:put ", ToVehicleCommands.WORD + " ");
     }
 
     /** The port a listen link's MailBox waits for calls on, or -1 for other links. */

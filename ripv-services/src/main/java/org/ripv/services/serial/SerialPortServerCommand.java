@@ -42,7 +42,7 @@ public final class SerialPortServerCommand implements Callable<Integer> {
                     + "optionally followed by its own settings, e.g. /dev/ttyUSB0,baud=9600,carrier=require,name=ru29 "
                     + "(keys: baud, data-bits, parity, stop-bits, carrier, line-ending, prompt, prompt-regex, idle-timeout, "
                     + "command-timeout, send-command, receive-command, maxcommand, interrupt; name, surface, quiet, alert, line-length, "
-                    + "rate, callers; keys, zmodem-send, zmodem-receive). Repeatable.")
+                    + "rate, callers; keys, zmodem-send, zmodem-receive, to-vehicle). Repeatable.")
     List<String> links = new ArrayList<>();
 
     @Option(names = "--no-enumerate", description = "Do not open MailBoxes for the serial ports jSerialComm finds; only the --link ones.")
@@ -197,7 +197,8 @@ public final class SerialPortServerCommand implements Callable<Integer> {
             "rate", "callers");
 
     /** The keys of a link's {@link PilotSettings}: control keys and ZMODEM commands. */
-    static final java.util.Set<String> PILOT_KEYS = java.util.Set.of("keys", "zmodem-send", "zmodem-receive");
+    static final java.util.Set<String> PILOT_KEYS = java.util.Set.of("keys", "zmodem-send", "zmodem-receive",
+            "to-vehicle");
 
     /** A link's settings and its call settings ({@code name=ru29,surface=...,quiet=600,alert=...}). */
     VehicleLink link(String spec) {
@@ -214,7 +215,8 @@ public final class SerialPortServerCommand implements Callable<Integer> {
                     number(o, "line-length", lineLength), number(o, "rate", rate),
                     callers(o.getOrDefault("callers", callers))),
                     new PilotSettings(ControlKey.parseList(o.getOrDefault("keys", keys)),
-                            o.getOrDefault("zmodem-send", zmodemSend), o.getOrDefault("zmodem-receive", zmodemReceive)));
+                            o.getOrDefault("zmodem-send", zmodemSend), o.getOrDefault("zmodem-receive", zmodemReceive),
+                            ToVehicleMode.parse(o.getOrDefault("to-vehicle", "off"))));
         } catch (IllegalArgumentException e) {
             throw new IllegalArgumentException("--link '" + spec + "': " + e.getMessage(), e);
         }

@@ -182,6 +182,8 @@ final class YmodemCommands {
                 throw new ServiceException(ErrorCode.TRANSFER_FAILED, "the vehicle sent none of '"
                         + String.join(" ", names) + "'" + warnings);
             }
+            ReceivedFiles.checkFits("ymodem:get", verdict.accepted().stream().map(a -> dir.resolve(a.file().name())).toList(),
+                    ReceivedFiles.budget());
             List<FileData> data = new ArrayList<>();
             long bytes = 0;
             for (AskedNames.Accepted a : verdict.accepted()) {
@@ -198,7 +200,11 @@ final class YmodemCommands {
     }
 
     Reply put(Connection c, Request request) throws IOException, ServiceException {
-        SendFile file = PutFile.of(request, "ymodem:put");
+        return put(c, request, PutFile.of(request, "ymodem:put"));
+    }
+
+    /** Sends one file, however it was named (a to-vehicle file comes as {@code to-vehicle/FOLDER/NAME}). */
+    Reply put(Connection c, Request request, SendFile file) throws IOException, ServiceException {
         return transfer(c, request, () -> {
             for (int attempt = 0; ; attempt++) {
                 write(c, settings.receiveCommand());

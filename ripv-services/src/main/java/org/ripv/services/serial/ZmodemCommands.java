@@ -192,12 +192,15 @@ final class ZmodemCommands {
         if (verdict.accepted().isEmpty()) {
             throw new ServiceException(ErrorCode.TRANSFER_FAILED, "the vehicle sent none of '" + String.join(" ", names) + "'");
         }
+        List<ZmodemReceiver.Received> kept = verdict.accepted().stream().map(a -> got.stream()
+                .filter(x -> x.file().name().equals(a.file().name())).findFirst().orElseThrow()).toList();
+        ReceivedFiles.checkFits("zmodem:get", kept.stream().map(ZmodemReceiver.Received::path).toList(), ReceivedFiles.budget());
         List<FileData> data = new ArrayList<>();
         StringBuilder text = new StringBuilder("received ");
         long bytes = 0;
-        for (AskedNames.Accepted a : verdict.accepted()) {
-            ZmodemReceiver.Received r = got.stream().filter(x -> x.file().name().equals(a.file().name())).findFirst()
-                    .orElseThrow();
+        for (int i = 0; i < kept.size(); i++) {
+            AskedNames.Accepted a = verdict.accepted().get(i);
+            ZmodemReceiver.Received r = kept.get(i);
             byte[] content = Files.readAllBytes(r.path());
             bytes += content.length - r.resumedAt();
             data.add(FileData.whole(a.storedName(), content));
@@ -211,7 +214,11 @@ final class ZmodemCommands {
     }
 
     Reply put(Connection c, Request request) throws IOException, ServiceException {
-        SendFile file = PutFile.of(request, "zmodem:put");
+        return put(c, request, PutFile.of(request, "zmodem:put"));
+    }
+
+    /** Sends one file, however it was named (a to-vehicle file comes as {@code to-vehicle/FOLDER/NAME}). */
+    Reply put(Connection c, Request request, SendFile file) throws IOException, ServiceException {
         return transfer(c, request, () -> send(c, request, file), () -> "");
     }
 

@@ -83,6 +83,37 @@ class SlocumUpgradeTest {
         }
     }
 
+    /** The dives view before CYCLE: one row per file. */
+    private static final String OLD_DIVES = "CREATE VIEW dives (vehicle, file_id, name, start_utc, end_utc, max_depth,"
+            + " min_depth, depth_values) AS SELECT vehicle, file_id, dba_filename, first_time, last_time, max_depth,"
+            + " min_depth, depth_count FROM data_file WHERE depth_count > 0";
+
+    @Test
+    void anOlderDatabaseGetsCyclesAndAFileAgainIsMergedNotStoredTwice() throws Exception {
+        DatabaseTarget target = EmbeddedDatabase.prepare(data, "TTY1");
+        byte[] cp = DbaFiles.read(DbaFiles.shared("cp_388_2016_012_0_0.mrg"));
+        try (Connection c = DriverManager.getConnection(target.url(), target.user(), target.password())) {
+            SqlScript.run(c, SqlScript.resource("slocumDB.sql"), "slocumDB.sql");
+            new DbaIngest(c).ingest("cp.mrg", cp, "test");
+            try (Statement st = c.createStatement()) { // the older database: no CYCLE, a dive per file
+                st.execute("DROP VIEW dives");
+                st.execute("DROP TABLE cycle");
+                st.execute(OLD_DIVES);
+            }
+            List<String> readings = rows(c, "SELECT COUNT(*) FROM reading");
+            new IngestCommand(target).ensureSchema(c);
+            assertThat(rows(c, "SELECT COUNT(*) FROM cycle")).containsExactly("23");
+            // the same rows in other bytes (a line end more): every cycle found, nothing stored twice
+            byte[] again = java.util.Arrays.copyOf(cp, cp.length + 1);
+            again[cp.length] = '\n';
+            DbaIngest.Outcome o = new DbaIngest(c).ingest("cp-again.mrg", again, "test");
+            assertThat(o.duplicate()).isFalse();
+            assertThat(o.merged()).isEqualTo(23);
+            assertThat(rows(c, "SELECT COUNT(*) FROM reading")).isEqualTo(readings);
+            assertThat(rows(c, "SELECT COUNT(*) FROM dives")).containsExactly("1");
+        }
+    }
+
     private static List<String> rows(Connection c, String sql) throws Exception {
         List<String> out = new ArrayList<>();
         try (Statement st = c.createStatement(); ResultSet rs = st.executeQuery(sql)) {

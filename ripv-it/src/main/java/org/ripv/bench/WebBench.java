@@ -1,0 +1,521 @@
+package org.ripv.bench;
+
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.InputStreamReader;
+import java.io.PrintStream;
+import java.io.Writer;
+import java.net.ServerSocket;
+import java.net.URI;
+import java.net.http.HttpClient;
+import java.net.http.HttpRequest;
+import java.net.http.HttpResponse;
+import java.net.http.WebSocket;
+import java.nio.charset.StandardCharsets;
+import java.nio.channels.SocketChannel;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Set;
+import java.util.concurrent.Callable;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CompletionStage;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import org.ripv.server.permit.PermitFile;
+import org.ripv.service.ServiceConnector;
+import org.ripv.service.ServiceOptions;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/**
+ * The web console at scale (issue 21, docs/performance.md): a real server in a JVM of its own
+ * (heap capped), N WebSocket watchers of one vehicle printing at a steady rate, measured at the
+ * watchers' sockets from the vehicle's write to the read, against one watcher in the same run;
+ * the server's threads, heap and CPU per delivered line; one page that never reads; the same
+ * fan-out with no RIPV (the machine's floor); and the fleet page with 100 vehicles, timed as the
+ * page loads it (its files, /api/session, the WebSocket, {@code ?mailboxes}, a {@code ?watch} per vehicle).
+ */
+@Command(name = "web", mixinStandardHelpOptions = true,
+        description = "The web console: N WebSocket watchers of one vehicle against one, and the fleet page with 100 vehicles.")
+public final class WebBench implements Callable<Integer> {
+    @Option(names = "--watchers", defaultValue = "10000", description = "WebSocket watchers in the crowd (default ${DEFAULT-VALUE}).")
+    int watchers;
+    @Option(names = "--rate", defaultValue = "50", description = "Lines per second the vehicle prints (default ${DEFAULT-VALUE}).")
+    int rate;
+    @Option(names = "--seconds", defaultValue = "20", description = "Measuring time per crowd phase (default ${DEFAULT-VALUE}).")
+    int seconds;
+    @Option(names = "--baseline-seconds", defaultValue = "30", description = "Measuring time of the one-watcher phase (default ${DEFAULT-VALUE}).")
+    int baselineSeconds;
+    @Option(names = "--warmup", defaultValue = "3", description = "Warm-up seconds per phase (default ${DEFAULT-VALUE}).")
+    int warmup;
+    @Option(names = "--vehicles", defaultValue = "100", description = "Vehicles on the fleet page (default ${DEFAULT-VALUE}).")
+    int vehicles;
+    @Option(names = "--fleet-runs", defaultValue = "5", description = "Fleet page loads timed (default ${DEFAULT-VALUE}).")
+    int fleetRuns;
+    @Option(names = "--heap", defaultValue = "1g", description = "The server JVM's -Xmx (default ${DEFAULT-VALUE}).")
+    String heap;
+    @Option(names = "--reader-threads", description = "Selector threads reading the watchers (default: one per core).")
+    int readerThreads = Runtime.getRuntime().availableProcessors();
+
+    @picocli.CommandLine.Spec
+    picocli.CommandLine.Model.CommandSpec spec;
+
+    private final PrintStream out;
+
+    public WebBench() {
+        this(System.out);
+    }
+
+    WebBench(PrintStream out) {
+        this.out = out;
+    }
+
+    /** Refuses counts and times the benchmark cannot run with, naming the option. */
+    private void check() {
+        String bad = watchers < 1 || watchers > 15_000 ? "--watchers must be 1 to 15000 (two sockets each must fit under"
+                + " the open-file limit), got " + watchers
+                : rate < 1 || rate > 10_000 ? "--rate must be 1 to 10000 lines a second, got " + rate
+                : seconds < 1 || seconds > 3600 ? "--seconds must be 1 to 3600, got " + seconds
+                : baselineSeconds < 1 || baselineSeconds > 3600 ? "--baseline-seconds must be 1 to 3600, got " + baselineSeconds
+                : warmup < 0 || warmup > 600 ? "--warmup must be 0 to 600, got " + warmup
+                : vehicles < 1 || vehicles > 1000 ? "--vehicles must be 1 to 1000, got " + vehicles
+                : fleetRuns < 1 || fleetRuns > 100 ? "--fleet-runs must be 1 to 100, got " + fleetRuns
+                : !heap.matches("\\d+[kmgKMG]?") ? "--heap must be a size as java's -Xmx takes it (e.g. 1g, 768m), got '" + heap + "'"
+                : readerThreads < 1 || readerThreads > 64 ? "--reader-threads must be 1 to 64, got " + readerThreads : null;
+        if (bad != null) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(), bad);
+        }
+    }
+
+    /** The server process and what its ready line said. */
+    private record Server(Process process, int port, int registryPort, Path secretFile, int httpPort) {
+        long pid() {
+            return process.pid();
+        }
+    }
+
+    @Override
+    public Integer call() throws Exception {
+        check();
+        Path dir = Files.createTempDirectory("ripv-bench-web");
+        out.printf("RIPV web console benchmark — %d cores, Java %s, %d lines/s, %d s per crowd phase after %d s warm-up"
+                        + " (one watcher: %d s); server -Xmx%s; %s%n", Runtime.getRuntime().availableProcessors(),
+                System.getProperty("java.version"), rate, seconds, warmup, baselineSeconds, heap, CpuClock.machineLine());
+        PermitFile.setUser(dir.resolve("permit.txt"), "bench", "bench-password".toCharArray(), List.of("observers"), 1000);
+        Server server = start(dir);
+        ServiceConnector vehicleLink = null;
+        ServiceConnector fleetLink = null;
+        VehicleConsoleService vehicle = new VehicleConsoleService("localhost", "ru29");
+        FleetService fleet = new FleetService("localhost", vehicles);
+        try {
+            String secret = Files.readString(server.secretFile(), StandardCharsets.UTF_8).trim();
+            ServiceOptions options = new ServiceOptions("localhost", server.registryPort(), secret, 0, Duration.ofSeconds(5));
+            vehicleLink = ServiceConnector.connect(vehicle, options);
+            vehicleLink.awaitRegistered(Duration.ofSeconds(30));
+            fleetLink = ServiceConnector.connect(fleet, options);
+            fleetLink.awaitRegistered(Duration.ofSeconds(30));
+            fleet.surfaceAll();
+            WebWatchers.Page page = login(server.httpPort(), "bench", "bench-password");
+            String box = vehicle.mailbox();
+            out.printf("(plain HTTP on the server's web port: TLS would add each socket's own encryption, the same with any"
+                    + " design; the watchers are read raw on %d selector threads: WebWatchers)%n", readerThreads);
+            long[] idle = sample(server.pid());
+            out.printf("server idle: %d threads, live heap %d MiB%n", idle[0], idle[2] >> 10);
+            fleetPage(page, server);
+
+            WebWatchers readers = new WebWatchers(readerThreads);
+            List<ConsoleBench.Watch> one = new ArrayList<>(List.of(new ConsoleBench.Watch(() -> { }, rate * (baselineSeconds + 2), null)));
+            readers.add(page, box, one.get(0)::record);
+            Phase base = run(vehicle, one, baselineSeconds, server);
+            report("1 watcher", base, base);
+            int frame = Math.max(readers.lastFrameBytes(), 64); // one line's push: the one watcher is never behind
+
+            List<ConsoleBench.Watch> crowd = new ArrayList<>();
+            long t0 = System.nanoTime();
+            connect(readers, page, box, crowd, watchers, rate * (seconds + 2));
+            out.printf("%d WebSockets opened and watching in %.1f s%n", watchers, (System.nanoTime() - t0) / 1e9);
+            Phase many = run(vehicle, crowd, seconds, server);
+            report(watchers + " watchers", many, base);
+            long[] full = sample(server.pid());
+            out.printf("server with %d watchers: %d threads (%+d from idle: no thread per watcher), resident %d MiB,"
+                            + " live heap after GC %d MiB (target: under 1 GiB; -Xmx%s)%n", watchers, full[0], full[0] - idle[0],
+                    full[1] >> 10, full[2] >> 10, heap);
+
+            SocketChannel stalled = WebWatchers.stalled(page, box);
+            crowd.forEach(w -> w.n.set(0));
+            Phase withStall = run(vehicle, crowd, seconds, server);
+            report(watchers + " + 1 never reading", withStall, base);
+            out.printf("  p99 with it / p99 without it: %.2f× (target: unchanged)%n", withStall.f().p99Ms() / many.f().p99Ms());
+            readers.close(); // the crowd leaves: the flood below is for the one that never reads
+            flood(vehicle);
+            long[] after = sample(server.pid());
+            try (WebWatchers again = new WebWatchers(1)) {
+                WebWatchers.Conn resumed = again.resume(stalled, n -> { });
+                long until = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
+                while (resumed.markers == 0 && !resumed.closed && System.nanoTime() < until) {
+                    vehicle.line("bench-after-stall");
+                    Thread.sleep(200);
+                }
+                out.printf("  the one that never read, after a flood of %,d lines of 1,000 bytes: %s; server live heap after GC %d MiB,"
+                                + " %d threads%n", FLOOD,
+                        resumed.closed ? "cut off by the server"
+                                : resumed.markers > 0 ? "kept, the lines beyond its bound skipped and marked (\"N lines skipped\")"
+                                : "neither cut off nor marked within 20 s",
+                        after[2] >> 10, after[0]);
+            }
+            floor(many, frame);
+        } finally {
+            if (vehicleLink != null) {
+                vehicleLink.close();
+            }
+            if (fleetLink != null) {
+                fleetLink.close();
+            }
+            vehicle.stop();
+            fleet.stop();
+            server.process().destroy();
+            if (!server.process().waitFor(20, TimeUnit.SECONDS)) {
+                server.process().destroyForcibly();
+            }
+        }
+        out.println(CpuClock.machineLine());
+        return 0;
+    }
+
+    /** Lines in the flood the page that never reads cannot absorb in its socket buffers. */
+    static final int FLOOD = 20_000;
+
+    /** A flood: more than a stalled page's socket buffers hold, at a pace the service's own publishing queue takes. */
+    private static void flood(VehicleConsoleService vehicle) throws InterruptedException {
+        String pad = "x".repeat(1000);
+        for (int i = 0; i < FLOOD; i++) {
+            vehicle.line("flood " + i + " " + pad);
+            if (i % 2_000 == 1_999) {
+                Thread.sleep(100);
+            }
+        }
+        Thread.sleep(2000);
+    }
+
+    /** Opens the crowd's sockets on a few threads (each upgrade and ?watch is a blocking exchange). */
+    private static void connect(WebWatchers readers, WebWatchers.Page page, String box, List<ConsoleBench.Watch> crowd, int count,
+                                int capacity) throws Exception {
+        ExecutorService pool = Executors.newFixedThreadPool(4);
+        try {
+            List<Future<ConsoleBench.Watch>> opened = new ArrayList<>();
+            for (int i = 0; i < count; i++) {
+                opened.add(pool.submit(() -> {
+                    ConsoleBench.Watch w = new ConsoleBench.Watch(() -> { }, capacity, null);
+                    readers.add(page, box, w::record);
+                    return w;
+                }));
+            }
+            for (Future<ConsoleBench.Watch> f : opened) {
+                crowd.add(f.get(120, TimeUnit.SECONDS));
+            }
+        } finally {
+            pool.shutdownNow();
+        }
+    }
+
+    /** The figures of one phase and the CPU both processes spent per line delivered to one watcher. */
+    private record Phase(ConsoleBench.Figures f, double serverCpuMicros, double benchCpuMicros) {
+        double cpuMicros() {
+            return serverCpuMicros + benchCpuMicros;
+        }
+    }
+
+    /** Prints "bench I NANOS" lines at the rate for warm-up plus measuring time; the delays seen while measuring. */
+    private Phase run(VehicleConsoleService vehicle, List<ConsoleBench.Watch> ws, int secs, Server server) throws Exception {
+        long period = 1_000_000_000L / rate;
+        long start = System.nanoTime();
+        long total = (long) (warmup + secs) * rate;
+        long serverCpu = 0;
+        long benchCpu = 0;
+        for (long i = 0; i < total; i++) {
+            if (i == (long) warmup * rate) {
+                ws.forEach(w -> w.recording = true);
+                serverCpu = processCpuNanos(server.pid());
+                benchCpu = CpuClock.processCpuNanos();
+            }
+            long wait = start + i * period - System.nanoTime();
+            if (wait > 0) {
+                Thread.sleep(wait / 1_000_000, (int) (wait % 1_000_000));
+            }
+            vehicle.line("bench " + i + " " + System.nanoTime());
+        }
+        Thread.sleep(1000); // let the last lines arrive
+        ws.forEach(w -> w.recording = false);
+        serverCpu = processCpuNanos(server.pid()) - serverCpu;
+        benchCpu = CpuClock.processCpuNanos() - benchCpu;
+        ConsoleBench.Figures f = ConsoleBench.figures(ws);
+        double n = Math.max(1, f.samples());
+        return new Phase(f.withCpu((serverCpu + benchCpu) / 1000.0 / n), serverCpu / 1000.0 / n, benchCpu / 1000.0 / n);
+    }
+
+    private void report(String what, Phase p, Phase base) {
+        ConsoleBench.Figures f = p.f();
+        out.printf("%-26s p50 %7.2f ms   p99 %7.2f ms   max %8.2f ms   %8d samples   %d skipped   cpu %.1f us/line (server %.1f,"
+                        + " watchers and vehicle %.1f)   p99 %.2f× one watcher%s%n", what, f.p50Ms(), f.p99Ms(), f.maxMs(), f.samples(),
+                f.skipped(), p.cpuMicros(), p.serverCpuMicros(), p.benchCpuMicros(), f.p99Ms() / base.f().p99Ms(),
+                p == base ? "" : "   (targets: p99 ≤ 100 ms and ≤ 3×)");
+        if (f.shortOnes() > 0) {
+            out.printf("  %d watcher(s) saw fewer lines than the others (the fewest: %d)%n", f.shortOnes(), f.fewest());
+        }
+    }
+
+    /** The same fan-out with no RIPV ({@link FanOutFloor}, plain TCP frames of the push's size), both ends in this JVM. */
+    private void floor(Phase crowd, int frame) throws Exception {
+        // Both ends of every socket are in this JVM here: at most 8,000 pairs fit under the open-file limit.
+        int n = Math.min(watchers, 8_000);
+        int writers = Math.max(2, Runtime.getRuntime().availableProcessors());
+        List<ConsoleBench.Watch> ws = new ArrayList<>();
+        for (int i = 0; i < n; i++) {
+            ws.add(new ConsoleBench.Watch(() -> { }, rate * (seconds + 2), null));
+        }
+        try (FanOutFloor f = new FanOutFloor(ws, writers, readerThreads, frame)) {
+            long period = 1_000_000_000L / rate;
+            long start = System.nanoTime();
+            long total = (long) (warmup + seconds) * rate;
+            CpuClock cpu = CpuClock.start();
+            for (long i = 0; i < total; i++) {
+                if (i == (long) warmup * rate) {
+                    ws.forEach(w -> w.recording = true);
+                    cpu = CpuClock.start();
+                }
+                long wait = start + i * period - System.nanoTime();
+                if (wait > 0) {
+                    Thread.sleep(wait / 1_000_000, (int) (wait % 1_000_000));
+                }
+                try {
+                    f.line("bench " + i + " " + System.nanoTime());
+                } catch (IllegalStateException behind) {
+                    // On a machine this loaded the bare fan-out itself cannot keep up: say so, measure what went out.
+                    out.printf("  the floor stopped at line %d of %d: %s%n", i, total, behind.getMessage());
+                    break;
+                }
+            }
+            Thread.sleep(1000);
+            ws.forEach(w -> w.recording = false);
+            ConsoleBench.Figures bare = ConsoleBench.figures(ws);
+            double floorCpu = cpu.cpuMicrosPer(bare.samples());
+            out.printf("%-26s p50 %7.2f ms   p99 %7.2f ms   max %8.2f ms   %8d samples   cpu %.1f us/line   (%d-byte frames,"
+                            + " %d writer threads, no RIPV: the machine's own cost)%n", "bare fan-out to " + n, bare.p50Ms(), bare.p99Ms(),
+                    bare.maxMs(), bare.samples(), floorCpu, frame, writers);
+            out.println(CpuClock.ratioLine("line to each of " + watchers + " web watchers", crowd.cpuMicros(), floorCpu,
+                    crowd.f().p99Ms() / bare.p99Ms()));
+        }
+    }
+
+    /**
+     * The fleet page as a browser loads it, timed: fleet.html and the files it and its modules
+     * name, {@code /api/session}, the WebSocket, {@code ?mailboxes} (the list is drawn: the page is
+     * usable), then a {@code ?watch} for each vehicle one after another, as fleet.js does.
+     */
+    private void fleetPage(WebWatchers.Page page, Server server) throws Exception {
+        HttpClient http = HttpClient.newBuilder().connectTimeout(Duration.ofSeconds(10)).build();
+        String base = "http://localhost:" + server.httpPort();
+        double[] listed = new double[fleetRuns];
+        double[] watched = new double[fleetRuns];
+        int shown = 0;
+        int refused = 0;
+        String whyRefused = "";
+        for (int run = 0; run < fleetRuns; run++) {
+            long t0 = System.nanoTime();
+            Set<String> files = new LinkedHashSet<>(List.of("/fleet.html"));
+            Set<String> fetched = new LinkedHashSet<>();
+            while (fetched.size() < files.size()) {
+                for (String f : List.copyOf(files)) {
+                    if (fetched.add(f)) {
+                        String body = get(http, base + f, page.cookie());
+                        Matcher m = Pattern.compile("(?:src|href)=\"(/?[\\w./-]+\\.(?:js|css))\"|from '\\./([\\w.-]+\\.js)'").matcher(body);
+                        while (m.find()) {
+                            String name = m.group(1) != null ? m.group(1) : m.group(2);
+                            files.add(name.startsWith("/") ? name : "/" + name);
+                        }
+                    }
+                }
+            }
+            get(http, base + "/api/session", page.cookie());
+            Replies replies = new Replies();
+            WebSocket ws = http.newWebSocketBuilder().header("Cookie", page.cookie()).header("Origin", page.origin())
+                    .buildAsync(URI.create("ws://localhost:" + server.httpPort() + "/ws"), replies).get(20, TimeUnit.SECONDS);
+            try {
+                ws.sendText(request(1, "?mailboxes", page.csrf()), true).join();
+                String list = replies.reply(1, true);
+                Matcher boxes = Pattern.compile("\"address\":\"([^\"]+)\"").matcher(list);
+                List<String> mailboxes = new ArrayList<>();
+                while (boxes.find()) {
+                    mailboxes.add(boxes.group(1));
+                }
+                listed[run] = (System.nanoTime() - t0) / 1e6;
+                long id = 2;
+                refused = 0;
+                for (String b : mailboxes) {
+                    ws.sendText(request(id, "?watch " + b, page.csrf()), true).join();
+                    String w = replies.reply(id++, false); // a refusal, as fleet.js takes it: that vehicle is not live
+                    if (!w.contains("\"status\":\"OK\"")) {
+                        refused++;
+                        whyRefused = w.replaceAll(".*\"text\":\"([^\"]*)\".*", "$1");
+                    }
+                }
+                watched[run] = (System.nanoTime() - t0) / 1e6;
+                shown = mailboxes.size();
+            } finally {
+                ws.sendClose(WebSocket.NORMAL_CLOSURE, "done").join();
+            }
+        }
+        Arrays.sort(listed);
+        Arrays.sort(watched);
+        out.printf("fleet page, %d vehicles (%d MailBoxes listed; measured as the page loads it: %s, /api/session, the WebSocket,"
+                        + " ?mailboxes, then one ?watch per MailBox; not in a browser): list drawn median %.0f ms (max %.0f),"
+                        + " every vehicle watched median %.0f ms (max %.0f) over %d loads (target: interactive under 1 s)%n",
+                vehicles, shown, "fleet.html and its files", listed[fleetRuns / 2], listed[fleetRuns - 1], watched[fleetRuns / 2],
+                watched[fleetRuns - 1], fleetRuns);
+        if (refused > 0) {
+            out.printf("  %d of the %d ?watch requests refused (\"%s\"): the page shows those vehicles from ?mailboxes but not live%n",
+                    refused, shown, whyRefused);
+        }
+    }
+
+    private static String request(long id, String body, String csrf) {
+        return "{\"id\":" + id + ",\"mailbox\":\"\",\"body\":\"" + body + "\",\"csrf\":\"" + csrf + "\"}";
+    }
+
+    /** The fleet page's socket: whole text messages as they come. */
+    private static final class Replies implements WebSocket.Listener {
+        final LinkedBlockingQueue<String> messages = new LinkedBlockingQueue<>();
+        private final StringBuilder partial = new StringBuilder();
+
+        @Override
+        public CompletionStage<?> onText(WebSocket webSocket, CharSequence data, boolean last) {
+            partial.append(data);
+            if (last) {
+                messages.add(partial.toString());
+                partial.setLength(0);
+            }
+            webSocket.request(1);
+            return CompletableFuture.completedFuture(null);
+        }
+
+        /** The final reply to request {@code id}; with {@code mustBeOk}, an exception unless it is OK. */
+        String reply(long id, boolean mustBeOk) throws Exception {
+            long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
+            while (System.nanoTime() < end) {
+                String m = messages.poll(1, TimeUnit.SECONDS);
+                if (m != null && m.contains("\"type\":\"reply\"") && m.contains("\"id\":" + id + ",") && !m.contains("\"status\":\"PROGRESS\"")) {
+                    if (mustBeOk && !m.contains("\"status\":\"OK\"")) {
+                        throw new IOException("request " + id + " refused: " + m);
+                    }
+                    return m;
+                }
+            }
+            throw new IOException("no reply to request " + id + " within 30 s");
+        }
+    }
+
+    private static String get(HttpClient http, String url, String cookie) throws Exception {
+        HttpResponse<String> r = http.send(HttpRequest.newBuilder(URI.create(url)).header("Cookie", cookie).timeout(Duration.ofSeconds(30))
+                .build(), HttpResponse.BodyHandlers.ofString());
+        if (r.statusCode() != 200) {
+            throw new IOException("GET " + url + ": " + r.statusCode());
+        }
+        return r.body();
+    }
+
+    /** Logs in with the web form as a browser does: the session cookie and the CSRF token. */
+    static WebWatchers.Page login(int httpPort, String user, String password) throws Exception {
+        HttpClient http = HttpClient.newBuilder().connectTimeout(Duration.ofSeconds(10)).build();
+        String origin = "http://localhost:" + httpPort;
+        HttpResponse<String> r = http.send(HttpRequest.newBuilder(URI.create(origin + "/login")).header("Origin", origin)
+                .header("Content-Type", "application/x-www-form-urlencoded").POST(HttpRequest.BodyPublishers.ofString(
+                        "user=" + user + "&password=" + password)).build(), HttpResponse.BodyHandlers.ofString());
+        if (r.statusCode() != 303) {
+            throw new IOException("the web log-in failed: " + r.statusCode() + " " + r.body());
+        }
+        String cookie = r.headers().firstValue("Set-Cookie").orElseThrow().split(";")[0];
+        Matcher m = Pattern.compile("\"csrf\":\"([0-9a-f]+)\"").matcher(get(http, origin + "/api/session", cookie));
+        if (!m.find()) {
+            throw new IOException("no CSRF token in /api/session");
+        }
+        return new WebWatchers.Page("localhost", httpPort, cookie, origin, m.group(1));
+    }
+
+    /** Starts the server jar's main in a JVM of its own, with the web console on a free port. */
+    private Server start(Path dir) throws IOException {
+        int httpPort;
+        try (ServerSocket s = new ServerSocket(0)) {
+            httpPort = s.getLocalPort();
+        }
+        String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
+        List<String> cmd = List.of(java, "-Xmx" + heap, "-cp", System.getProperty("java.class.path"), "org.ripv.server.ServerMain",
+                "server", "--data", dir.toString(), "--port", "0", "--registry-port", "0", "--http-port", Integer.toString(httpPort),
+                "--plain", "--max-clients", Integer.toString(watchers + 200));
+        Process p = new ProcessBuilder(cmd).redirectErrorStream(true).start();
+        BufferedReader r = new BufferedReader(new InputStreamReader(p.getInputStream(), StandardCharsets.UTF_8));
+        Pattern ready = Pattern.compile("RIPVServer ready: clients on port (\\d+).*register at [^:]+:(\\d+) with --secret-file (\\S+?),");
+        List<String> seen = new ArrayList<>();
+        for (String line = r.readLine(); line != null; line = r.readLine()) {
+            seen.add(line);
+            Matcher m = ready.matcher(line);
+            if (m.find()) {
+                Thread drain = new Thread(() -> {
+                    try {
+                        r.transferTo(Writer.nullWriter());
+                    } catch (IOException ignored) {
+                        // the server ended
+                    }
+                }, "bench-server-output");
+                drain.setDaemon(true);
+                drain.start();
+                return new Server(p, Integer.parseInt(m.group(1)), Integer.parseInt(m.group(2)), Path.of(m.group(3)), httpPort);
+            }
+        }
+        p.destroyForcibly();
+        throw new IOException("the server ended before it was ready:\n" + String.join("\n", seen));
+    }
+
+    /** A process's CPU time (user + system, all threads) from /proc/PID/stat. */
+    static long processCpuNanos(long pid) throws IOException {
+        String stat = Files.readString(Path.of("/proc", Long.toString(pid), "stat"), StandardCharsets.US_ASCII);
+        String[] f = stat.substring(stat.lastIndexOf(')') + 2).split(" ");
+        long ticks = Long.parseLong(f[11]) + Long.parseLong(f[12]); // utime, stime (fields 14 and 15)
+        return ticks * 10_000_000L; // USER_HZ is 100 on Linux
+    }
+
+    /** Threads and VmRSS (KiB) of a process from /proc, and its live heap (KiB) after a full GC from jcmd. */
+    static long[] sample(long pid) throws Exception {
+        jcmd(pid, "GC.run");
+        Thread.sleep(500);
+        Matcher heapUsed = Pattern.compile("used (\\d+)K").matcher(jcmd(pid, "GC.heap_info"));
+        long used = heapUsed.find() ? Long.parseLong(heapUsed.group(1)) : -1;
+        long threads = 0;
+        long rss = 0;
+        for (String line : Files.readAllLines(Path.of("/proc", Long.toString(pid), "status"))) {
+            if (line.startsWith("Threads:")) {
+                threads = Long.parseLong(line.substring(8).trim());
+            } else if (line.startsWith("VmRSS:")) {
+                rss = Long.parseLong(line.substring(6).trim().split("\\s+")[0]);
+            }
+        }
+        return new long[] {threads, rss, used};
+    }
+
+    private static String jcmd(long pid, String what) throws Exception {
+        String jcmd = Path.of(System.getProperty("java.home"), "bin", "jcmd").toString();
+        Process p = new ProcessBuilder(jcmd, Long.toString(pid), what).redirectErrorStream(true).start();
+        String text = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        p.waitFor(60, TimeUnit.SECONDS);
+        return text;
+    }
+}

@@ -1,0 +1,108 @@
+package org.ripv.bench;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.lang.management.ManagementFactory;
+import java.nio.channels.SocketChannel;
+import java.nio.file.Path;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.atomic.AtomicLongArray;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.ripv.it.TestSystem;
+import org.ripv.server.ServerConfig;
+import org.ripv.service.ServiceConnector;
+
+/**
+ * A web console page is a Post Office client with no thread and no loopback socket of its own
+ * (issue 21, speed and scale): 500 WebSocket watchers of one vehicle add a bounded handful of
+ * threads to the server, every one of them gets each line, and a page that never reads is held to
+ * its bound — the server keeps at most the watcher's backlog for it and marks the lines it skipped —
+ * while a page that reads still gets its lines. Before, each page was a loopback connection adopted
+ * as a client, with a reader thread in the server and one in the web package: 1,000 threads here.
+ */
+class WebWatchersThreadsTest {
+    static final int PAGES = 500;
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void fiveHundredPagesCostNoThreadEachAndAPageThatNeverReadsIsBounded() throws Exception {
+        ServerConfig config = ServerConfig.forTests(dir.resolve("server")).plain().withPorts(0, 0, 0).withMaxClients(PAGES + 50);
+        try (TestSystem sys = TestSystem.start(config)) {
+            sys.user("watcher", "observers");
+            VehicleConsoleService vehicle = new VehicleConsoleService("localhost", "ru29");
+            ServiceConnector link = sys.register(vehicle);
+            try (WebWatchers readers = new WebWatchers(2)) {
+                WebWatchers.Page page = WebBench.login(sys.server().httpPort(), "watcher", TestSystem.PASSWORD);
+                String box = vehicle.mailbox();
+                readers.add(page, box, n -> { }); // the first opens Jetty's own threads and the hub's
+                int before = ManagementFactory.getThreadMXBean().getThreadCount();
+                AtomicLongArray seen = new AtomicLongArray(PAGES);
+                for (int i = 0; i < PAGES; i++) {
+                    int k = i;
+                    readers.add(page, box, n -> seen.incrementAndGet(k));
+                }
+                int after = ManagementFactory.getThreadMXBean().getThreadCount();
+                assertThat(after - before).as("threads for " + PAGES + " more pages (was 2 per page)").isLessThan(40);
+                assertThat(threadsNamed("ripv-socket-handler-") + threadsNamed("ripv-web-link-")).isZero();
+
+                vehicle.line("bench 0 " + System.nanoTime());
+                long until = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+                while (System.nanoTime() < until && count(seen) < PAGES) {
+                    Thread.sleep(100);
+                }
+                assertThat(count(seen)).as("pages that got the line").isEqualTo(PAGES);
+            }
+
+            // One page stops reading; one keeps reading. A flood the stalled one's socket cannot hold.
+            WebWatchers.Page page = WebBench.login(sys.server().httpPort(), "watcher", TestSystem.PASSWORD);
+            SocketChannel stalled = WebWatchers.stalled(page, vehicle.mailbox());
+            try (WebWatchers readers = new WebWatchers(1)) {
+                AtomicLong lastSeen = new AtomicLong(-1);
+                readers.add(page, vehicle.mailbox(), n -> lastSeen.set(n));
+                String pad = "x".repeat(1000);
+                for (int i = 0; i < 20_000; i++) {
+                    vehicle.line("flood " + i + " " + pad);
+                    if (i % 2_000 == 1_999) {
+                        Thread.sleep(100); // within the service's own publishing queue
+                    }
+                }
+                long sent = System.nanoTime();
+                vehicle.line("bench 1 " + sent);
+                long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+                while (System.nanoTime() < end && lastSeen.get() < 0) {
+                    Thread.sleep(50);
+                }
+                assertThat(lastSeen.get()).as("the reading page got the line after the flood").isGreaterThanOrEqualTo(0);
+                assertThat(sys.server().console().backlogTotal()).as("entries the server holds for the page that never reads")
+                        .isLessThanOrEqualTo(2_000);
+
+                WebWatchers.Conn resumed = readers.resume(stalled, n -> { });
+                long until = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+                while (System.nanoTime() < until && resumed.markers == 0 && !resumed.closed) {
+                    vehicle.line("after");
+                    Thread.sleep(200);
+                }
+                assertThat(resumed.markers > 0 || resumed.closed).as("the page that never read is told what it missed, or cut off")
+                        .isTrue();
+            }
+            link.close();
+            vehicle.stop();
+        }
+    }
+
+    private static long count(AtomicLongArray seen) {
+        long n = 0;
+        for (int i = 0; i < seen.length(); i++) {
+            n += seen.get(i) > 0 ? 1 : 0;
+        }
+        return n;
+    }
+
+    private static long threadsNamed(String prefix) {
+        return Thread.getAllStackTraces().keySet().stream().filter(t -> t.getName().startsWith(prefix)).count();
+    }
+}

@@ -1,0 +1,116 @@
+package org.ripv.services.ingest;
+
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * A binary file's cycles for {@link DbaIngest}, straight from the {@link SlocumBinaryReader}: no
+ * DBA text in between. The header reads as dbd2asc's would ({@code filename} is the binary
+ * header's {@code full_filename}); positions come out in decimal degrees and "no fix" or
+ * impossible ones as NaN, counted, as {@link DbaReader} gives them. A 4-byte float is stored as the
+ * shortest decimal that is that float ({@code 0.1f} as 0.1, not 0.10000000149011612): the value
+ * the glider sent, without the noise of widening it.
+ */
+public final class BinaryCycles implements Cycles {
+    private final SlocumBinaryReader reader;
+    private final DbaHeader header;
+    private final Sensor.Kind[] kinds;
+    private final byte[] sizes;
+    private final int timeColumn;
+    private final int sciTimeColumn;
+    private long rows;
+    private long noFix;
+    private long impossible;
+
+    public BinaryCycles(SlocumBinaryReader reader, String file) throws SlocumFormatException {
+        this.reader = reader;
+        Map<String, String> tags = new LinkedHashMap<>(reader.tags());
+        String full = tags.getOrDefault("full_filename", tags.get("filename"));
+        if (full != null) {
+            tags.put("filename", full);
+        }
+        List<Sensor> sensors = new ArrayList<>(reader.sensors().size());
+        for (SlocumSensor s : reader.sensors()) {
+            sensors.add(new Sensor(sensors.size(), s.name(), s.units(), s.bytes(), Sensor.kindOf(s.name(), s.units())));
+        }
+        this.header = new DbaHeader(tags, sensors);
+        this.kinds = new Sensor.Kind[sensors.size()];
+        this.sizes = new byte[sensors.size()];
+        for (Sensor s : sensors) {
+            kinds[s.index()] = s.kind();
+            sizes[s.index()] = (byte) s.bytes();
+        }
+        this.timeColumn = header.column("m_present_time");
+        this.sciTimeColumn = header.column("sci_m_present_time");
+        if (timeColumn < 0 && sciTimeColumn < 0) {
+            throw new SlocumFormatException(file, reader.offset(),
+                    "no m_present_time or sci_m_present_time among the cycle's sensors: the cycles have no time");
+        }
+    }
+
+    @Override
+    public DbaHeader header() {
+        return header;
+    }
+
+    @Override
+    public boolean next(double[] values) throws IOException, SlocumFormatException {
+        if (!reader.next(values)) {
+            return false;
+        }
+        for (int i = 0; i < values.length; i++) {
+            double v = values[i];
+            if (Double.isNaN(v)) {
+                continue;
+            }
+            if (kinds[i] != Sensor.Kind.PLAIN) {
+                if (v == Degrees.NO_FIX) {
+                    noFix++;
+                    values[i] = Double.NaN;
+                } else {
+                    double d = Degrees.fromDdmm(v, kinds[i] == Sensor.Kind.LATITUDE ? 90 : 180);
+                    if (Double.isNaN(d)) {
+                        impossible++;
+                    }
+                    values[i] = d;
+                }
+            } else if (sizes[i] == 4 && Double.isFinite(v)) {
+                values[i] = Double.parseDouble(Float.toString((float) v));
+            }
+        }
+        rows++;
+        return true;
+    }
+
+    @Override
+    public double time(double[] values) {
+        double t = timeColumn >= 0 ? values[timeColumn] : Double.NaN;
+        if (Double.isNaN(t) && sciTimeColumn >= 0) {
+            t = values[sciTimeColumn];
+        }
+        return t;
+    }
+
+    @Override
+    public long rows() {
+        return rows;
+    }
+
+    @Override
+    public long noFix() {
+        return noFix;
+    }
+
+    @Override
+    public long impossible() {
+        return impossible;
+    }
+
+    @Override
+    public void close() throws IOException {
+        reader.close();
+    }
+}
