@@ -180,6 +180,7 @@ class WebConsoleBrowserTest {
         ChromeDriver b = loggedIn("alice");
         try {
             WebDriverWait wait = new WebDriverWait(b, T);
+            wait.ignoring(org.openqa.selenium.StaleElementReferenceException.class); // the fleet redraws its rows at every push
             wait.until(d -> d.findElements(By.cssSelector("tr[data-address]")).stream().anyMatch(r -> r.getText().contains("glider1")));
             wait.until(d -> d.findElement(By.cssSelector("tr[data-address] .badge")).getText().equals("on call"));
             wait.until(d -> !"0".equals(d.findElement(By.id("map")).getAttribute("data-points")));
