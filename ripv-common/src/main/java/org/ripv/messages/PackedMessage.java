@@ -8,7 +8,6 @@ import java.io.ObjectInput;
 import java.io.ObjectOutput;
 import java.io.ObjectStreamException;
 import java.io.UncheckedIOException;
-import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -102,51 +101,23 @@ final class PackedMessage implements Externalizable {
                 : m instanceof OutgoingServiceMessage ? (byte) 2 : (byte) 3;
         Header h = m.header();
         Footer f = m.footer();
-        // Straight into one array of the exact size: no stream, no buffer grown and copied.
-        byte[][] texts = new byte[10 + h.roles().size() + f.route().size()][];
-        int n = 0;
-        texts[n++] = utf8(h.origin().clientId());
-        texts[n++] = utf8(h.origin().user());
-        for (String r : h.roles()) {
-            texts[n++] = utf8(r);
-        }
-        texts[n++] = utf8(h.serviceDestination());
-        texts[n++] = utf8(h.mailboxAddress());
-        texts[n++] = utf8(h.body());
-        texts[n++] = utf8(f.serviceId());
-        texts[n++] = utf8(f.errorCode().name());
-        for (String r : f.route()) {
-            texts[n++] = utf8(r);
-        }
-        texts[n++] = utf8(f.replyText());
         checkListSize(h.roles().size());
         checkListSize(f.route().size());
-        int size = 8 + 1 + 1 + 1 + 1 + 4 * n;
-        for (int i = 0; i < n; i++) {
-            size += texts[i].length;
-        }
-        Out out = new Out(new byte[size]);
-        int t = 0;
-        out.putLong(h.messageId());
-        out.putText(texts[t++]);
-        out.putText(texts[t++]);
-        out.put(h.roles().size());
-        for (int i = 0; i < h.roles().size(); i++) {
-            out.putText(texts[t++]);
-        }
-        out.putText(texts[t++]);
-        out.putText(texts[t++]);
-        out.putText(texts[t++]);
-        out.put(h.priority().ordinal());
-        out.putText(texts[t++]);
-        out.put(f.status().ordinal());
-        out.putText(texts[t++]);
-        out.put(f.route().size());
-        for (int i = 0; i < f.route().size(); i++) {
-            out.putText(texts[t++]);
-        }
-        out.putText(texts[t]);
-        return new PackedMessage(kind, out.bytes, h.attachment(), f.result());
+        PackedBytes.Writer out = new PackedBytes.Writer(128 + h.body().length() + f.replyText().length(), "a message");
+        out.writeLong(h.messageId());
+        out.writeString(h.origin().clientId());
+        out.writeString(h.origin().user());
+        list(out, h.roles());
+        out.writeString(h.serviceDestination());
+        out.writeString(h.mailboxAddress());
+        out.writeString(h.body());
+        out.writeByte(h.priority().ordinal());
+        out.writeString(f.serviceId());
+        out.writeByte(f.status().ordinal());
+        out.writeString(f.errorCode().name());
+        list(out, f.route());
+        out.writeString(f.replyText());
+        return new PackedMessage(kind, out.toArray(), h.attachment(), f.result());
     }
 
     byte kind() {
@@ -167,19 +138,19 @@ final class PackedMessage implements Externalizable {
             throw new InvalidObjectException("a packed message without fields");
         }
         try {
-            In in = new In(fields);
-            long id = in.getLong();
-            IdBadge origin = new IdBadge(in.text(), in.text());
-            List<String> roles = in.list();
-            String destination = in.text();
-            String mailbox = in.text();
-            String body = in.text();
-            Priority priority = PRIORITIES[index(in.get(), PRIORITIES.length)];
-            String sid = in.text();
-            Status status = STATUSES[index(in.get(), STATUSES.length)];
-            ErrorCode code = ErrorCode.valueOf(in.text());
-            List<String> route = in.list();
-            String reply = in.text();
+            PackedBytes.Reader in = new PackedBytes.Reader(fields, "a packed message");
+            long id = in.readLong();
+            IdBadge origin = new IdBadge(text(in), text(in));
+            List<String> roles = list(in);
+            String destination = text(in);
+            String mailbox = text(in);
+            String body = text(in);
+            Priority priority = PRIORITIES[index(in.readByte(), PRIORITIES.length)];
+            String sid = text(in);
+            Status status = STATUSES[index(in.readByte(), STATUSES.length)];
+            ErrorCode code = ErrorCode.valueOf(text(in));
+            List<String> route = list(in);
+            String reply = text(in);
             if (in.remaining() != 0) {
                 throw new InvalidObjectException("trailing bytes in a packed message");
             }
@@ -212,102 +183,35 @@ final class PackedMessage implements Externalizable {
         return i;
     }
 
-    private static byte[] utf8(String s) {
-        return s.getBytes(StandardCharsets.UTF_8);
-    }
-
     private static void checkListSize(int n) {
         if (n > MAX_LIST) {
-            throw new UncheckedIOException(new java.io.IOException(
+            throw new UncheckedIOException(new IOException(
                     "a list of " + n + " is longer than a message may carry (" + MAX_LIST + ")"));
         }
     }
 
-    /** Big-endian writes into an array sized beforehand. */
-    private static final class Out {
-        final byte[] bytes;
-        int pos;
-
-        Out(byte[] bytes) {
-            this.bytes = bytes;
-        }
-
-        void put(int b) {
-            bytes[pos++] = (byte) b;
-        }
-
-        void putInt(int v) {
-            bytes[pos++] = (byte) (v >>> 24);
-            bytes[pos++] = (byte) (v >>> 16);
-            bytes[pos++] = (byte) (v >>> 8);
-            bytes[pos++] = (byte) v;
-        }
-
-        void putLong(long v) {
-            putInt((int) (v >>> 32));
-            putInt((int) v);
-        }
-
-        void putText(byte[] b) {
-            putInt(b.length);
-            System.arraycopy(b, 0, bytes, pos, b.length);
-            pos += b.length;
+    private static void list(PackedBytes.Writer out, List<String> l) {
+        out.writeByte(l.size());
+        for (String s : l) {
+            out.writeString(s);
         }
     }
 
-    /** Reads the fields in place, every length checked against the bytes left. */
-    private static final class In {
-        private final byte[] bytes;
-        private int pos;
-
-        In(byte[] bytes) {
-            this.bytes = bytes;
+    /** A text of the message: never absent (the -1 length PackedBytes reads as null is refused). */
+    private static String text(PackedBytes.Reader in) throws InvalidObjectException {
+        String s = in.readString();
+        if (s == null) {
+            throw new InvalidObjectException("a packed message with a text missing");
         }
+        return s;
+    }
 
-        int remaining() {
-            return bytes.length - pos;
+    private static List<String> list(PackedBytes.Reader in) throws InvalidObjectException {
+        int n = in.readByte();
+        List<String> l = new ArrayList<>(n);
+        for (int i = 0; i < n; i++) {
+            l.add(text(in));
         }
-
-        private void need(int n) throws InvalidObjectException {
-            if (remaining() < n) {
-                throw new InvalidObjectException("a packed message cut short");
-            }
-        }
-
-        int get() throws InvalidObjectException {
-            need(1);
-            return bytes[pos++] & 0xff;
-        }
-
-        int getInt() throws InvalidObjectException {
-            need(4);
-            int v = (bytes[pos] & 0xff) << 24 | (bytes[pos + 1] & 0xff) << 16 | (bytes[pos + 2] & 0xff) << 8 | bytes[pos + 3] & 0xff;
-            pos += 4;
-            return v;
-        }
-
-        long getLong() throws InvalidObjectException {
-            long high = getInt();
-            return high << 32 | getInt() & 0xffffffffL;
-        }
-
-        String text() throws InvalidObjectException {
-            int n = getInt();
-            if (n < 0 || n > remaining()) {
-                throw new InvalidObjectException("a text of " + n + " bytes where " + remaining() + " remain");
-            }
-            String s = new String(bytes, pos, n, StandardCharsets.UTF_8);
-            pos += n;
-            return s;
-        }
-
-        List<String> list() throws InvalidObjectException {
-            int n = get();
-            List<String> l = new ArrayList<>(n);
-            for (int i = 0; i < n; i++) {
-                l.add(text());
-            }
-            return l;
-        }
+        return l;
     }
 }

@@ -30,7 +30,7 @@ import org.ripv.testing.Tools;
  * one arrives on the glider byte-identical and moves to {@code sent/} with a receipt; the other,
  * which the glider cannot store (a folder of that name is in the way), stays, and goes on the next
  * call once the way is clear. A user without {@code ?to-vehicle}, a name that climbs out of the
- * folder and a folder no MailBox has are refused at upload.
+ * folder and a folder no MailBox has are refused at upload; another vehicle's file is never sent.
  */
 class ToVehicleEndToEndTest {
     static final Path ROOT = LaunchedJars.ROOT;
@@ -112,6 +112,10 @@ class ToVehicleEndToEndTest {
                 .isInstanceOf(RipvErrorException.class).hasMessageContaining("is not a to-vehicle name");
         assertThatThrownBy(() -> alice.upload(local("y.ma", mission), "to-vehicle/nobody@nowhere@None/y.ma", null))
                 .isInstanceOf(RipvErrorException.class).hasMessageContaining("no MailBox has the folder 'nobody@nowhere@None'");
+        OutgoingServerMessage other = alice.call(mailbox, "tovehicle:put to-vehicle/elsewhere@x@SerialPortServer/goto_l10.ma",
+                Priority.NORMAL, T, null);
+        assertThat(other.footer().errorCode()).isEqualTo(ErrorCode.BAD_FILE_NAME);
+        assertThat(other.footer().replyText()).contains("sends a file of " + mailbox + "'s own folder");
         Path up = sys.uploadDir();
         try (var all = Files.walk(dir)) {
             assertThat(all.filter(p -> p.getFileName().toString().equals("evil.ma") && !p.startsWith(dir.resolve("local"))))

@@ -98,6 +98,13 @@ final class ServerTaskManager extends TaskManager<IncomingServerMessage, Outgoin
         if (server.dataLoop().plot(request, sid, address.toString(), server::reply)) {
             return null; // vis:sql, vis:track, ...: the server queries the database first (org.ripv.server.dataloop)
         }
+        String ownFolder = org.ripv.server.files.ToVehicleFolder.DIR + "/" + org.ripv.server.files.FileStore.folderFor(address.toString()) + "/";
+        String[] words = h.body().trim().split("\\s+");
+        if (words[0].equals("tovehicle:put") && (words.length != 2 || !words[1].startsWith(ownFolder))) {
+            // a vehicle is sent only its own folder's files (docs/serial.md#the-to-vehicle-folder)
+            return error(request, sid, ErrorCode.BAD_FILE_NAME, "tovehicle:put sends a file of " + address + "'s own folder, "
+                    + ownFolder + "NAME; not '" + Header.abbreviate(h.body().trim()) + "'");
+        }
         Attachment attachment;
         try {
             attachment = attachmentFor(ref, h.body(), h.origin().user());

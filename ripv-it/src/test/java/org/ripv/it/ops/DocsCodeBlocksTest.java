@@ -10,6 +10,7 @@ import java.util.List;
 import java.util.Set;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
+import org.ripv.it.ops.RunnableDocs.Block;
 
 /**
  * No code block in README.md or docs/ rots unseen (docs/README.md, "Code blocks"): each fenced
@@ -28,38 +29,6 @@ class DocsCodeBlocksTest {
     static final Set<String> FORMS = Set.of("synopsis", "markdown");
     static final Pattern NEEDS = Pattern.compile("#\\s*needs\\s+\\S.*");
     static final Pattern COMMAND = Pattern.compile("^(\\$\\s+)?(\\./)?(ripv|mvn|java|scripts/\\S+)\\s.*");
-
-    record Block(Path file, int line, String info, List<String> body) {
-        String where() {
-            return file.getFileName() + ":" + line;
-        }
-    }
-
-    static List<Block> blocks(Path doc) throws Exception {
-        List<String> lines = Files.readAllLines(doc, StandardCharsets.UTF_8);
-        List<Block> out = new ArrayList<>();
-        String fence = null;
-        String info = null;
-        int start = 0;
-        List<String> body = null;
-        for (int i = 0; i < lines.size(); i++) {
-            String t = lines.get(i).strip();
-            if (fence == null && (t.startsWith("```") || t.startsWith("~~~"))) {
-                int n = RunnableDocs.fenceLength(t);
-                fence = t.substring(0, n);
-                info = t.substring(n).strip();
-                start = i + 1;
-                body = new ArrayList<>();
-            } else if (fence != null && t.equals(fence)) {
-                out.add(new Block(doc, start, info, body));
-                fence = null;
-            } else if (fence != null) {
-                body.add(lines.get(i));
-            }
-        }
-        assertThat(fence).as(doc.getFileName() + ": the block opened at line " + start + " is never closed").isNull();
-        return out;
-    }
 
     /** The lines of indented (unfenced) code blocks that hold a command line. */
     static List<String> indentedCommands(Path doc) throws Exception {
@@ -119,7 +88,7 @@ class DocsCodeBlocksTest {
         List<String> bad = new ArrayList<>();
         int shells = 0;
         for (Path doc : RunnableDocs.documents(RunnableDocsTest.ROOT)) {
-            for (Block b : blocks(doc)) {
+            for (Block b : RunnableDocs.blocks(doc)) {
                 String p = problem(b);
                 if (p != null) {
                     bad.add(b.where() + " " + p);

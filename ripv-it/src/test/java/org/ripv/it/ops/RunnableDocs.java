@@ -59,43 +59,69 @@ final class RunnableDocs {
         return docs;
     }
 
-    static List<Command> commands(Path doc) throws IOException {
+    /** A fenced code block: where its opening fence is (1-based), its info string, its lines. */
+    record Block(Path file, int line, String info, List<String> body) {
+        String where() {
+            return file.getFileName() + ":" + line;
+        }
+
+        boolean runnable() {
+            return List.of(info.split("\\s+")).contains(MARKER);
+        }
+    }
+
+    /** The fenced code blocks of a page, in order; an unclosed one is an error. */
+    static List<Block> blocks(Path doc) throws IOException {
         List<String> lines = Files.readAllLines(doc, StandardCharsets.UTF_8);
-        List<Command> out = new ArrayList<>();
-        boolean inRunnable = false;
+        List<Block> out = new ArrayList<>();
         String fence = null;
-        StringBuilder pending = null;
-        int pendingLine = 0;
+        String info = null;
+        int start = 0;
+        List<String> body = null;
         for (int i = 0; i < lines.size(); i++) {
-            String line = lines.get(i);
-            String t = line.strip();
+            String t = lines.get(i).strip();
             if (fence == null && (t.startsWith("```") || t.startsWith("~~~"))) {
                 int n = fenceLength(t);
                 fence = t.substring(0, n);
-                List<String> info = List.of(t.substring(n).strip().split("\\s+"));
-                inRunnable = info.contains(MARKER);
-                continue;
-            }
-            if (fence != null && t.equals(fence)) {
+                info = t.substring(n).strip();
+                start = i + 1;
+                body = new ArrayList<>();
+            } else if (fence != null && t.equals(fence)) {
+                out.add(new Block(doc, start, info, body));
                 fence = null;
-                inRunnable = false;
+            } else if (fence != null) {
+                body.add(lines.get(i));
+            }
+        }
+        if (fence != null) {
+            throw new IOException(doc.getFileName() + ": the code block opened at line " + start + " is never closed");
+        }
+        return out;
+    }
+
+    static List<Command> commands(Path doc) throws IOException {
+        List<Command> out = new ArrayList<>();
+        for (Block b : blocks(doc)) {
+            if (!b.runnable()) {
                 continue;
             }
-            if (!inRunnable) {
-                continue;
-            }
-            if (pending == null && (t.isEmpty() || t.startsWith("#"))) {
-                continue;
-            }
-            if (pending == null) {
-                pending = new StringBuilder();
-                pendingLine = i + 1;
-            }
-            boolean continued = t.endsWith("\\");
-            pending.append(continued ? t.substring(0, t.length() - 1).strip() + " " : t);
-            if (!continued) {
-                out.add(new Command(doc, pendingLine, withoutComment(pending.toString()).strip()));
-                pending = null;
+            StringBuilder pending = null;
+            int pendingLine = 0;
+            for (int k = 0; k < b.body().size(); k++) {
+                String t = b.body().get(k).strip();
+                if (pending == null && (t.isEmpty() || t.startsWith("#"))) {
+                    continue;
+                }
+                if (pending == null) {
+                    pending = new StringBuilder();
+                    pendingLine = b.line() + 1 + k;
+                }
+                boolean continued = t.endsWith("\\");
+                pending.append(continued ? t.substring(0, t.length() - 1).strip() + " " : t);
+                if (!continued) {
+                    out.add(new Command(doc, pendingLine, withoutComment(pending.toString()).strip()));
+                    pending = null;
+                }
             }
         }
         return out;

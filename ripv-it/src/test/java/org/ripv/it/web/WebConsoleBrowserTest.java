@@ -10,7 +10,6 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
-import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
@@ -39,7 +38,6 @@ class WebConsoleBrowserTest {
 
     @TempDir
     static Path dir;
-    static final List<Process> processes = new ArrayList<>();
     static int http;
     static String glider;
     static Path shots;
@@ -59,41 +57,24 @@ class WebConsoleBrowserTest {
         }
     }
 
+    static LaunchedProcesses system;
+
     static Process launch(String name, String input, String... args) throws IOException {
-        List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Xmx256m"));
-        cmd.addAll(List.of(args));
-        ProcessBuilder pb = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(dir.resolve(name + ".log").toFile());
-        Process p = pb.start();
-        if (input != null) {
-            p.getOutputStream().write(input.getBytes(StandardCharsets.UTF_8));
-        }
-        p.getOutputStream().close();
-        processes.add(p);
-        return p;
+        return system.launch(name, input, args);
     }
 
     static void waitFor(String what, java.util.function.BooleanSupplier check) throws InterruptedException {
-        long end = System.nanoTime() + T.toNanos();
-        while (System.nanoTime() < end) {
-            if (check.getAsBoolean()) {
-                return;
-            }
-            Thread.sleep(200); // processes of our own starting: nothing to be told by
-        }
-        throw new AssertionError("waited " + T + " for " + what + "; logs in " + dir);
+        system.waitFor(what, check);
     }
 
     static String log(String name) {
-        try {
-            return Files.readString(dir.resolve(name + ".log"));
-        } catch (IOException e) {
-            return "";
-        }
+        return system.log(name);
     }
 
     @BeforeAll
     static void startTheSystem() throws Exception {
         Chromium.assume();
+        system = new LaunchedProcesses(dir, T);
         for (String m : List.of("ripv-server", "ripv-services")) {
             assertThat(jar(m)).as("build the jars first (mvn -DskipTests package)").exists();
         }
@@ -130,15 +111,8 @@ class WebConsoleBrowserTest {
 
     @AfterAll
     static void stopTheSystem() {
-        processes.forEach(Process::destroy);
-        for (Process p : processes) {
-            try {
-                if (!p.waitFor(10, java.util.concurrent.TimeUnit.SECONDS)) {
-                    p.destroyForcibly();
-                }
-            } catch (InterruptedException e) {
-                p.destroyForcibly();
-            }
+        if (system != null) {
+            system.stopAll();
         }
     }
 

@@ -24,7 +24,8 @@ import org.slf4j.LoggerFactory;
 /**
  * One page's WebSocket ({@code /ws}): a Post Office client in the server's own process, with no
  * socket or thread of its own (docs/web.md). The page sends
- * {@code {"id":7,"mailbox":"…","body":"dir","priority":"normal","csrf":"…"}}; this hands it to its
+ * {@code {"id":7,"mailbox":"…","body":"dir","priority":"normal","csrf":"…"}} (an upload chunk adds
+ * {@code "file"} and {@code "data"}, see {@link FileChunks}); this hands it to its
  * {@link SocketHandler} as that client's request, so the server's own rules decide; every reply
  * and console push goes back as JSON ({@link WebReplies}) with Jetty's asynchronous send.
  *
@@ -87,8 +88,10 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
             sessions.find(login.id); // the user acted: the session is not idle
             SocketHandler c = client;
             if (c != null) {
-                c.received(new IncomingServerMessage(Header.request(m.path("id").asLong(), m.path("mailbox").asText(""),
-                        m.path("body").asText(""), Priority.parse(m.path("priority").asText("normal")))));
+                Header h = Header.request(m.path("id").asLong(), m.path("mailbox").asText(""), m.path("body").asText(""),
+                        Priority.parse(m.path("priority").asText("normal")));
+                org.ripv.messages.Attachment chunk = FileChunks.attachment(m);
+                c.received(new IncomingServerMessage(chunk == null ? h : h.withAttachment(chunk)));
             }
         } catch (IOException | IllegalArgumentException e) {
             sendText("{\"type\":\"error\",\"text\":" + quote("could not send: " + e.getMessage()) + "}", null);

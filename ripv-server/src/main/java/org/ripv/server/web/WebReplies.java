@@ -11,8 +11,9 @@ import org.ripv.messages.Result;
 /**
  * A reply or console push as the pages read it: {@code {"type":"reply"|"push", "id", "status",
  * "error", "text", "result": {"kind": "ConsoleBatch", ...}}}. Results are the protocol's own
- * records, written by Jackson; file bytes stay on the server (the page is told the name and size;
- * a plot's numbers come along for the page's own chart).
+ * records, written by Jackson; file bytes stay on the server (the page is told the name and size),
+ * except the chunks of a {@code ?download} the page asked for ({@link FileChunks}); a plot's
+ * numbers come along for the page's own chart.
  */
 final class WebReplies {
     private final ObjectMapper json = new ObjectMapper();
@@ -28,7 +29,7 @@ final class WebReplies {
         n.put("text", m.footer().replyText());
         Result r = m.footer().result();
         if (r != null) {
-            ObjectNode result = json.valueToTree(summary(r));
+            ObjectNode result = json.valueToTree(FileChunks.carriesBytes(m) ? FileChunks.Chunk.of((FileData) r) : summary(r));
             result.put("kind", r.getClass().getSimpleName());
             n.set("result", result);
         }

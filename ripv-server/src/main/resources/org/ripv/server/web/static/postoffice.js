@@ -32,12 +32,12 @@ export class PostOffice {
     w.done(m);
   }
 
-  /** Sends a request; resolves with its final reply; progress replies go to onProgress. */
-  async send(mailbox, body, priority = 'normal', onProgress = () => {}) {
+  /** Sends a request; resolves with its final reply; progress replies go to onProgress; extra: an upload chunk (transfer.js). */
+  async send(mailbox, body, priority = 'normal', onProgress = () => {}, extra = {}) {
     await this.ready;
     const id = this.nextId++;
     const reply = new Promise((done) => this.waiting.set(id, { done, progress: onProgress }));
-    this.socket.send(JSON.stringify({ id, mailbox, body, priority, csrf: this.csrf }));
+    this.socket.send(JSON.stringify({ ...extra, id, mailbox, body, priority, csrf: this.csrf }));
     this.lastId = id;
     return reply;
   }
@@ -51,7 +51,10 @@ export function bar(s) {
   const fleet = document.createElement('a');
   fleet.href = '/fleet.html';
   fleet.textContent = 'Fleet';
-  nav.append(fleet);
+  const notify = document.createElement('a');
+  notify.href = '/notify.html';
+  notify.textContent = 'Notifications';
+  nav.append(fleet, notify);
   for (const [href, text] of [['/data.html', 'Data'], ['/service.html', 'Services']]) {
     const a = document.createElement('a');
     a.href = href;

@@ -1,0 +1,44 @@
+// Small DOM helpers for the files, queue and notifications pages. Text from vehicles, files and the server is only
+// ever set as textContent: whatever it holds stays text.
+
+/** An element with text (never parsed as HTML) and attributes. */
+export function el(tag, text = '', attrs = {}) {
+  const e = document.createElement(tag);
+  if (text) e.textContent = text;
+  for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, v);
+  return e;
+}
+
+export function button(text, onClick, cls = 'secondary') {
+  const b = el('button', text, { type: 'button', class: cls });
+  b.addEventListener('click', onClick);
+  return b;
+}
+
+/** Shows a reply's text in a status line: an ERROR in the error colour, as an alert. */
+export function say(line, reply) {
+  line.textContent = reply.status === 'ERROR' ? `Error: ${reply.text}` : reply.text;
+  line.setAttribute('role', reply.status === 'ERROR' ? 'alert' : 'status');
+}
+
+/** The MailBox the page is about (?m=…), and the vehicle's name in it. */
+export function mailboxParam() {
+  const m = new URLSearchParams(location.search).get('m') || '';
+  const handle = m.substring(m.lastIndexOf('>') + 1);
+  return { mailbox: m, handle };
+}
+
+/** Links between a vehicle's pages, kept in the ?m= of the page. */
+export function vehicleNav(mailbox, here) {
+  const nav = el('nav', '', { class: 'row tabs', 'aria-label': 'this vehicle' });
+  for (const [page, text] of [['vehicle.html', 'Console'], ['files.html', 'Files'], ['queue.html', 'Queue and receipts']]) {
+    const a = el('a', text, { href: `/${page}?m=${encodeURIComponent(mailbox)}` });
+    if (page === here) a.setAttribute('aria-current', 'page');
+    nav.append(a);
+  }
+  return nav;
+}
+
+export function observerOnly(s) {
+  return s.roles.length > 0 && s.roles.every((r) => r === 'observers');
+}
