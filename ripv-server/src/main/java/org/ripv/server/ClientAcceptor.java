@@ -1,16 +1,20 @@
 package org.ripv.server;
 
 import java.io.IOException;
-import java.net.ServerSocket;
-import java.net.Socket;
+import java.nio.channels.ClosedChannelException;
+import java.nio.channels.ServerSocketChannel;
+import java.nio.channels.SocketChannel;
 import java.util.Collection;
 import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.atomic.AtomicInteger;
+import javax.net.ssl.SSLContext;
 import org.ripv.server.handlers.SocketHandler;
 import org.ripv.server.handlers.WriterPool;
 import org.ripv.server.security.ConnectionGate;
+import org.ripv.server.transport.ClientLoops;
 import org.ripv.wire.FrameCodec;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -18,13 +22,17 @@ import org.slf4j.LoggerFactory;
 /**
  * The client port (thesis 5.2.2, the server's accept loop): takes each connection, gives it a
  * six-digit client id, asks the {@link ConnectionGate} before anything else happens on it (so a
- * refused address costs no TLS handshake and no thread), and starts its {@link SocketHandler}.
- * Knows the connected clients by id.
+ * refused address costs no TLS handshake), and starts its {@link SocketHandler} on one of the
+ * server's few selector threads ({@link ClientLoops}): no client has a thread of its own. Knows
+ * the connected clients by id.
  */
 final class ClientAcceptor {
     private static final Logger log = LoggerFactory.getLogger(ClientAcceptor.class);
 
-    private final ServerSocket listener;
+    private final ServerSocketChannel listener;
+    private final SSLContext tls;
+    private final ClientLoops loops;
+    private final ScheduledExecutorService timers;
     private final FrameCodec codec;
     private final WriterPool writers;
     private final SocketHandler.Dispatcher dispatch;
@@ -33,11 +41,19 @@ final class ClientAcceptor {
     private final AtomicInteger nextClientId = new AtomicInteger(100_000);
     private final Thread thread;
     private volatile boolean running = true;
+    private final Object closes = new Object();
 
-    /** Starts accepting on a bound listener. */
-    ClientAcceptor(ServerSocket listener, FrameCodec codec, WriterPool writers, SocketHandler.Dispatcher dispatch,
-                   ConnectionGate gate) {
+    /**
+     * Starts accepting on a bound listener.
+     *
+     * @param tls the TLS context, or null for plain TCP ({@code --plain})
+     */
+    ClientAcceptor(ServerSocketChannel listener, SSLContext tls, ScheduledExecutorService timers,
+                   FrameCodec codec, WriterPool writers, SocketHandler.Dispatcher dispatch, ConnectionGate gate) throws IOException {
         this.listener = listener;
+        this.tls = tls;
+        this.loops = new ClientLoops();
+        this.timers = timers;
         this.codec = codec;
         this.writers = writers;
         this.dispatch = dispatch;
@@ -48,7 +64,7 @@ final class ClientAcceptor {
     }
 
     int port() {
-        return listener.getLocalPort();
+        return listener.socket().getLocalPort();
     }
 
     Optional<SocketHandler> client(String clientId) {
@@ -62,22 +78,47 @@ final class ClientAcceptor {
     /** A client closed: it is forgotten (only that handler, not a later one given the same id). */
     void forget(SocketHandler client) {
         clients.remove(client.clientId(), client);
+        synchronized (closes) {
+            closes.notifyAll();
+        }
+    }
+
+    /** Waits until a client closes (freeing its socket), a second at most: other files may be freed too. */
+    private void awaitAClose() {
+        synchronized (closes) {
+            try {
+                closes.wait(1_000);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                running = false;
+            }
+        }
     }
 
     private void acceptLoop() {
         while (running) {
-            Socket s;
+            SocketChannel s;
+            SocketHandler h;
+            String id = newClientId();
             try {
                 s = listener.accept();
+            } catch (ClosedChannelException e) {
+                break;
             } catch (IOException e) {
                 if (running) {
                     log.warn("accept failed: {}", e.toString());
+                    awaitAClose(); // out of open files (ulimit -n): accepting again at once would only fail again
                 }
                 continue;
             }
-            String id = newClientId();
-            SocketHandler h = new SocketHandler(s, id, codec, writers, dispatch);
-            if (!gate.admit(id, s.getInetAddress(), h::close)) {
+            try {
+                h = new SocketHandler(loops.connection(s, tls), id, codec, writers, dispatch, timers);
+            } catch (IOException e) {
+                log.debug("client {} gone before it was set up: {}", id, e.toString());
+                closeQuietly(s);
+                continue;
+            }
+            if (!gate.admit(id, h.remoteInetAddress(), h::close)) {
                 closeQuietly(s);
                 continue;
             }
@@ -88,7 +129,7 @@ final class ClientAcceptor {
                 h.close();
                 break;
             }
-            log.debug("client {} connected from {}", id, s.getRemoteSocketAddress());
+            log.debug("client {} connected from {}", id, h.remoteAddress());
             h.start();
         }
     }
@@ -136,6 +177,7 @@ final class ClientAcceptor {
         running = false;
         closeQuietly(listener);
         clients.values().forEach(SocketHandler::close);
+        loops.close();
     }
 
     private static void closeQuietly(java.io.Closeable c) {

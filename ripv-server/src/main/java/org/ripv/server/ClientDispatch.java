@@ -24,7 +24,7 @@ final class ClientDispatch implements SocketHandler.Dispatcher {
         Header h = request.header();
         String body = h.body().trim();
         if (body.equals("?login") || body.startsWith("?login ")) {
-            server.security().logins().login(client, request); // on the client's thread, PBKDF2 on the log-in pool
+            server.security().logins().loginLater(client, request); // PBKDF2 on the log-in pool, never on this selector thread
             return;
         }
         if (!client.isLoggedIn() && !body.equals("?help") && !body.equals("?ping")) {

@@ -85,7 +85,7 @@ public final class RIPVServer implements AutoCloseable {
     private MailBox<IncomingServerMessage, OutgoingServerMessage> box;
     private PendingRequests pending;
     private volatile RequestEndings endings;
-    private ServerSocket listener;
+    private java.nio.channels.ServerSocketChannel listener;
     private volatile ClientAcceptor acceptor;
     private Registry registry;
     private int registryPort;
@@ -188,8 +188,8 @@ public final class RIPVServer implements AutoCloseable {
             registryGuard = RegistryGuard.bind(registry, stub);
 
             tls = ServerTls.resolve(config.tls(), config.security().plain(), config.dataDir().resolve("tls"));
-            listener = tls.serverSockets().createServerSocket();
-            listener.setReuseAddress(true);
+            listener = java.nio.channels.ServerSocketChannel.open(); // TLS on the selector threads (org.ripv.server.transport)
+            listener.setOption(java.net.StandardSocketOptions.SO_REUSEADDR, true);
             try {
                 listener.bind(new InetSocketAddress(bind, config.port()), 128);
             } catch (IOException e) {
@@ -206,7 +206,7 @@ public final class RIPVServer implements AutoCloseable {
             throw e;
         }
         running = true;
-        acceptor = new ClientAcceptor(listener, codec, writers, dispatch, security.gate());
+        acceptor = new ClientAcceptor(listener, tls.context(), timers, codec, writers, dispatch, security.gate());
         long check = config.serviceCheck().toMillis();
         timers.scheduleWithFixedDelay(this::checkServices, check, check, TimeUnit.MILLISECONDS);
         log.info("RIPVServer listening for clients on port {}{}, RMI registry on port {}, data in {}", port(),
@@ -512,7 +512,7 @@ public final class RIPVServer implements AutoCloseable {
 
     /** The client port (useful with port 0). */
     public int port() {
-        return listener.getLocalPort();
+        return listener.socket().getLocalPort();
     }
 
     public int registryPort() {

@@ -1,6 +1,5 @@
 package org.ripv.server.handlers;
 
-import java.io.BufferedOutputStream;
 import java.io.DataOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
@@ -9,6 +8,7 @@ import java.util.List;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
+import java.util.function.BooleanSupplier;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.Footer;
 import org.ripv.messages.Header;
@@ -23,7 +23,9 @@ import org.slf4j.LoggerFactory;
  * holds this writer: {@link #scheduled} is true from the moment a reply finds the queue without a
  * worker until a worker has written everything and found the queue empty, so at most one thread
  * writes at a time and a reply queued as a worker finishes is never stranded. An idle client
- * costs no writer thread (docs/performance.md).
+ * costs no writer thread (docs/performance.md). The socket never blocks a worker: while its
+ * connection holds more than it can send ({@code backedUp}), the writer leaves the rest in its
+ * bounded queue and is scheduled again when the connection has drained.
  */
 final class ReplyWriter {
     private static final Logger log = LoggerFactory.getLogger(ReplyWriter.class);
@@ -49,6 +51,7 @@ final class ReplyWriter {
     private boolean stopped;
     private boolean ended;
     private DataOutputStream out;
+    private BooleanSupplier backedUp = () -> false;
     private final List<Runnable> flushed = new ArrayList<>();
 
     /** @param closer closes the connection after a write failed or the last reply went out */
@@ -61,11 +64,22 @@ final class ReplyWriter {
         this.capacity = capacity;
     }
 
-    /** The socket may be written now (the greeting is done): replies queued so far go out. */
-    void open(OutputStream socketOut, int buffer) {
+    /**
+     * The socket may be written now (the greeting is done): replies queued so far go out.
+     *
+     * @param socketOut gathers what is written until a flush
+     * @param full      true while the connection holds more unsent bytes than it should
+     */
+    void open(OutputStream socketOut, BooleanSupplier full) {
         synchronized (lock) {
-            out = new DataOutputStream(new BufferedOutputStream(socketOut, buffer));
+            backedUp = full;
+            out = new DataOutputStream(socketOut);
         }
+        scheduleIfNeeded();
+    }
+
+    /** The connection sent what it held: replies that waited for it go out. */
+    void drained() {
         scheduleIfNeeded();
     }
 
@@ -113,7 +127,7 @@ final class ReplyWriter {
 
     private void scheduleIfNeeded() {
         synchronized (lock) {
-            if (scheduled || out == null || stopped || replies.isEmpty()) {
+            if (scheduled || out == null || stopped || replies.isEmpty() || backedUp.getAsBoolean()) {
                 return;
             }
             scheduled = true;
@@ -136,7 +150,7 @@ final class ReplyWriter {
      */
     void dedicated() throws InterruptedException {
         while (write(replies.poll(IDLE_MILLIS, TimeUnit.MILLISECONDS))) {
-            // each round blocks in poll or in the socket, never spins
+            // each round blocks in poll, never spins; a backed-up connection ends the round
         }
     }
 
@@ -161,7 +175,7 @@ final class ReplyWriter {
                 } else {
                     encode(m.message());
                 }
-                m = ++n < MAX_PER_TURN ? replies.poll() : null;
+                m = ++n < MAX_PER_TURN && !backedUp.getAsBoolean() ? replies.poll() : null;
             }
             if (n > 0) {
                 out.flush();
@@ -178,8 +192,8 @@ final class ReplyWriter {
             }
         }
         synchronized (lock) {
-            if (stopped || replies.isEmpty()) {
-                scheduled = false; // all is flushed; the next reply schedules this writer again
+            if (stopped || replies.isEmpty() || backedUp.getAsBoolean()) {
+                scheduled = false; // all is flushed; the next reply (or the connection draining) schedules this writer again
                 return false;
             }
             return true;
@@ -202,9 +216,9 @@ final class ReplyWriter {
             ended = true;
             stopped = true;
         }
-        // On this writer, as part of its turn: closing a TLS socket writes close_notify, which could
-        // block on a peer that stopped reading, and then the pool's stall check replaces this writer.
-        // (Closing on threads of their own let a log-in flood reconnect faster: LoginFloodAttackTest.)
+        // On this writer, as part of its turn (closing never waits for the peer: the close_notify
+        // goes only if the socket takes it at once). Closing on threads of their own let a log-in
+        // flood reconnect faster: LoginFloodAttackTest.
         closer.run();
         return false;
     }

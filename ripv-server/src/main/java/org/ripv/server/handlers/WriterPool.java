@@ -18,12 +18,12 @@ import org.slf4j.LoggerFactory;
  * line for 1,000 watchers is thus 1,000 writes by {@link #WORKERS} threads instead of 1,000
  * thread wake-ups.
  *
- * <p>Sockets are blocking (TLS), so a client that stops reading would hold a worker in its write
- * once its socket buffers are full. A check every {@link #STALL_MILLIS} finds a worker that has
- * been writing one client for that long: that worker leaves the pool and stays with that client
- * alone (as its own writer thread, until it has had nothing to write for a while), and a new
- * worker takes its place. So a stuck client holds a shared thread for at most about twice
- * {@link #STALL_MILLIS}, and then costs one thread of its own, as it did before the pool.
+ * <p>Sockets never block a worker (org.ripv.server.transport): what a socket does not take waits
+ * in its connection, and past a bound the writer leaves the rest in the client's queue until the
+ * connection has drained. A turn can still be long (a large reply to encode): a check every
+ * {@link #STALL_MILLIS} finds a worker that has been on one client for that long; that worker
+ * leaves the pool and stays with that client alone (until it has had nothing to write for a
+ * while), and a new worker takes its place, so one client never holds the shared writers up.
  */
 public final class WriterPool implements AutoCloseable {
     private static final Logger log = LoggerFactory.getLogger(WriterPool.class);

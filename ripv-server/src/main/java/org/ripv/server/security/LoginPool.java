@@ -57,6 +57,11 @@ public final class LoginPool implements AutoCloseable {
         };
     }
 
+    /** The most log-ins this pool holds at once: those being checked and those waiting for a thread. */
+    public int capacity() {
+        return pool.getMaximumPoolSize() + QUEUE;
+    }
+
     /** Thrown when too many log-ins wait already. */
     public static final class Busy extends Exception {
         private static final long serialVersionUID = 1L;
@@ -66,7 +71,7 @@ public final class LoginPool implements AutoCloseable {
         }
     }
 
-    /** Runs a check on the pool and waits for it (the caller is the connection's own reader). */
+    /** Runs a check on the pool and waits for it (the caller is a thread that may wait: {@link Logins}). */
     public <T> T run(Callable<T> check) throws Busy, InterruptedException {
         Future<T> f;
         try {

@@ -5,6 +5,11 @@ import java.nio.CharBuffer;
 import java.nio.charset.StandardCharsets;
 import java.util.Arrays;
 import java.util.Optional;
+import java.util.concurrent.RejectedExecutionException;
+import java.util.concurrent.SynchronousQueue;
+import java.util.concurrent.ThreadPoolExecutor;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.Supplier;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.Footer;
@@ -17,12 +22,13 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * {@code ?login USER} with the password in the attachment. Runs on the connection's reader
- * thread, which waits while the password is checked on the {@link LoginPool}; a blocked user or
- * address is refused before any hashing; every failure is one audit line; a refusal that ends
- * the connection is sent before the close.
+ * {@code ?login USER} with the password in the attachment. The connection takes no further
+ * request until its log-in is answered; the answer is waited for on one of a few threads of its
+ * own (no more than the {@link LoginPool} holds, so a selector thread never waits) while the
+ * password is checked on the pool; a blocked user or address is refused before any hashing; every
+ * failure is one audit line; a refusal that ends the connection is sent before the close.
  */
-public final class Logins {
+public final class Logins implements AutoCloseable {
     private static final Logger log = LoggerFactory.getLogger(Logins.class);
 
     /** Failed log-ins one connection may make before it is closed. */
@@ -32,12 +38,49 @@ public final class Logins {
     private final LoginThrottle throttle;
     private final LoginPool pool;
     private final ConnectionGate gate;
+    /** Where client-port log-ins wait for their check: idle, no thread at all. */
+    private final ThreadPoolExecutor waiting;
 
     public Logins(Supplier<PermitFile> permits, LoginThrottle throttle, LoginPool pool, ConnectionGate gate) {
         this.permits = permits;
         this.throttle = throttle;
         this.pool = pool;
         this.gate = gate;
+        AtomicInteger n = new AtomicInteger();
+        // One more than the pool holds: the pool, not this, decides when a flood is refused as busy.
+        this.waiting = new ThreadPoolExecutor(0, pool.capacity() + 1, 10, TimeUnit.SECONDS, new SynchronousQueue<>(), r -> {
+            Thread t = new Thread(r, "ripv-login-wait-" + n.incrementAndGet());
+            t.setDaemon(true);
+            return t;
+        });
+    }
+
+    /**
+     * Answers a {@code ?login} from the client port, on a selector thread: the client's reading is
+     * held and the log-in waits for its check elsewhere; the client reads on once it is answered.
+     */
+    public void loginLater(SocketHandler client, IncomingServerMessage request) {
+        client.holdReading();
+        try {
+            waiting.execute(() -> {
+                try {
+                    login(client, request);
+                } finally {
+                    client.resumeReading();
+                }
+            });
+        } catch (RejectedExecutionException e) {
+            String[] words = request.header().body().trim().split("\\s+");
+            Audit.log(true, "login-busy", "user", words.length > 1 ? words[1] : "", "from",
+                    client.remoteInetAddress().getHostAddress(), "via", "client " + client.clientId());
+            client.send(refusal(request, ErrorCode.NOT_AVAILABLE, "too many log-ins at once; try again in a few seconds"));
+            client.resumeReading();
+        }
+    }
+
+    @Override
+    public void close() {
+        waiting.shutdownNow();
     }
 
     /** Answers a {@code ?login} request on the client's connection. */

@@ -47,6 +47,7 @@ public final class ServerSecurity implements AutoCloseable {
 
     @Override
     public void close() {
+        logins.close();
         pool.close();
     }
 }
