@@ -90,6 +90,8 @@ public final class RIPVServer implements AutoCloseable {
     private Registry registry;
     private int registryPort;
     private WebConsole landingPage;
+    private volatile String mapTiles;
+    private volatile String publicNames;
     private ServerSecurity security;
     private RegistryGuard registryGuard;
     private ServerTls tls;
@@ -125,6 +127,21 @@ public final class RIPVServer implements AutoCloseable {
         this.liveness = Executors.newFixedThreadPool(2, Threads.named("ripv-service-check"));
         this.fileWork = Executors.newFixedThreadPool(2, Threads.named("ripv-file-work"));
         this.serviceLiveness = new ServiceLiveness(services, liveness, checkers, timers, config.serviceCheck(), this::drop);
+    }
+
+    /** The web console's map tiles ({@code --map-tiles URL}, checked by {@link WebConsole.Options}); set before {@link #start()}. */
+    public RIPVServer withMapTiles(String template) {
+        this.mapTiles = template;
+        return this;
+    }
+
+    /** The web console's public view of the vehicles whose names match ({@code --public GLOB}); null: off. Set before {@link #start()}. */
+    public RIPVServer withPublicView(String glob) {
+        if (glob != null) {
+            PublicVehicles.glob(glob); // a bad glob is refused now, not at the first visitor
+        }
+        this.publicNames = glob;
+        return this;
     }
 
     /** Opens the data directory, the permit file, the RMI registry and the client port. Returns at once. */
@@ -285,7 +302,10 @@ public final class RIPVServer implements AutoCloseable {
         // The web console (org.ripv.server.web): its pages are Post Office clients through WebClients.
         WebConsole page = new WebConsole(new WebConsole.Options(new InetSocketAddress(bind, config.httpPort()),
                 files.uploadDir(), config.maxUpload(), config.clientJar(), this::describe, port(), security.webAccess(),
-                config.security().httpUpload(), tls.context(), new WebClients(() -> acceptor), codec, null));
+                config.security().httpUpload(), tls.context(), new WebClients(() -> acceptor), codec, mapTiles));
+        if (publicNames != null) {
+            page.withPublicView(new PublicVehicles(this, publicNames));
+        }
         try {
             page.start();
         } catch (IOException e) {

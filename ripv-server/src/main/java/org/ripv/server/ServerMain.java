@@ -67,6 +67,12 @@ public final class ServerMain implements Callable<Integer> {
         @Option(names = "--http-upload", description = "Let users who log in on the landing page upload files (off by default;"
                 + " the permit file's ?upload rules apply).")
         boolean httpUpload;
+        @Option(names = "--map-tiles", paramLabel = "URL", description = "Map tiles for the web console's map, an https URL with {z}, {x}"
+                + " and {y} (default: none; the map is a latitude/longitude grid that needs no internet).")
+        String mapTiles;
+        @Option(names = "--public", paramLabel = "GLOB", description = "Show anonymous visitors of the web console the map, track and"
+                + " last contact of the vehicles whose names match, e.g. 'glider*' (off by default).")
+        String publicNames;
         @Option(names = "--max-clients", defaultValue = "1000", paramLabel = "N",
                 description = "Clients that may be logged in at once (default ${DEFAULT-VALUE}; each idle one costs the server a thread"
                         + " and its buffers: docs/performance.md, Connections).")
@@ -144,6 +150,10 @@ public final class ServerMain implements Callable<Integer> {
             }
             SessionOptions sessions;
             try {
+                org.ripv.server.web.WebConsole.checkMapTiles(mapTiles);
+                if (publicNames != null) {
+                    PublicVehicles.glob(publicNames); // refuses a bad glob with its message
+                }
                 config = config.withStateStore(stateStore.location(System.err));
                 sessions = SessionOptions.defaults().withTranscripts(transcriptFileMb * 1024 * 1024, transcriptDays)
                         .withWebhooks(org.ripv.server.notify.WebhookTargets.parse(webhookAllow));
@@ -202,7 +212,7 @@ public final class ServerMain implements Callable<Integer> {
 
         /** Starts a server and its outbound port (a busy one only warns). */
         private RIPVServer open(ServerConfig config, SessionOptions sessions) throws java.io.IOException {
-            RIPVServer server = new RIPVServer(config, sessions);
+            RIPVServer server = new RIPVServer(config, sessions).withMapTiles(mapTiles).withPublicView(publicNames);
             server.start();
             openedOutbound = -1;
             if (outboundPort >= 0) {

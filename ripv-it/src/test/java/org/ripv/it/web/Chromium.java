@@ -31,6 +31,11 @@ final class Chromium {
 
     /** A fresh browser with its own profile; the server's self-signed certificate is accepted as a user would after the warning. */
     static ChromeDriver start(Path profile) {
+        return start(profile, null);
+    }
+
+    /** The same, saving what the page downloads into {@code downloads} without asking (null: Chromium's default). */
+    static ChromeDriver start(Path profile, Path downloads) {
         ChromeDriverService service = new ChromeDriverService.Builder().usingDriverExecutable(DRIVER.toFile())
                 .usingAnyFreePort().withLogFile(new File(profile.toFile(), "chromedriver.log")).build();
         ChromeOptions options = new ChromeOptions();
@@ -38,6 +43,10 @@ final class Chromium {
         options.addArguments("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
                 "--disable-background-networking", "--disable-component-update", "--disable-sync", "--disable-dev-shm-usage",
                 "--ignore-certificate-errors", "--window-size=1280,900", "--user-data-dir=" + profile.resolve("profile"));
+        if (downloads != null) {
+            options.setExperimentalOption("prefs", java.util.Map.of("download.default_directory", downloads.toString(),
+                    "download.prompt_for_download", false));
+        }
         ChromeDriver driver = new ChromeDriver(service, options);
         driver.manage().timeouts().scriptTimeout(Duration.ofSeconds(30));
         return driver;

@@ -154,6 +154,7 @@ class WebConsoleBrowserTest {
         ChromeDriver b = loggedIn("alice");
         try {
             WebDriverWait wait = new WebDriverWait(b, T);
+            wait.ignoring(org.openqa.selenium.StaleElementReferenceException.class); // the fleet redraws its rows at every push
             wait.until(d -> d.findElements(By.cssSelector("tr[data-address]")).stream().anyMatch(r -> r.getText().contains("glider1")));
             wait.until(d -> d.findElement(By.cssSelector("tr[data-address] .badge")).getText().equals("on call"));
             wait.until(d -> !"0".equals(d.findElement(By.id("map")).getAttribute("data-points")));
@@ -164,7 +165,7 @@ class WebConsoleBrowserTest {
             shot(b, "fleet-phone");
             b.manage().window().setSize(new Dimension(1280, 900));
 
-            b.findElement(By.linkText(glider)).click();
+            b.findElement(By.linkText("glider1")).click(); // the fleet names a vehicle by its handle, not its address
             wait.until(d -> console(d).contains("GPS Location"));
             String before = console(b);
             b.findElement(By.xpath("//button[text()='Take lock']")).click();

@@ -89,10 +89,20 @@ public final class WebConsole implements AutoCloseable {
             }
             status = status == null ? () -> "RIPVServer" : status;
             codec = codec == null ? new FrameCodec(FrameCodec.DEFAULT_MAX_FRAME) : codec;
-            if (mapTiles != null && !mapTiles.matches("https://[A-Za-z0-9.\\-]+(:\\d+)?/\\S*\\{z}\\S*")) {
-                throw new IllegalArgumentException("--map-tiles '" + mapTiles + "' is not an https URL with {z}, {x} and {y},"
-                        + " e.g. https://tile.openstreetmap.org/{z}/{x}/{y}.png");
-            }
+            checkMapTiles(mapTiles);
+        }
+    }
+
+    /**
+     * Refuses a tile URL the map cannot use or the Content-Security-Policy could not name as one host.
+     *
+     * @throws IllegalArgumentException quoting the URL and saying what it needs
+     */
+    public static void checkMapTiles(String template) {
+        if (template != null && !template.matches("https://[A-Za-z0-9.\\-]+(:\\d+)?/[^\\s\"'<>;]*\\{z}[^\\s\"'<>;]*")
+                || template != null && !(template.contains("{x}") && template.contains("{y}"))) {
+            throw new IllegalArgumentException("--map-tiles '" + template + "' is not an https URL with {z}, {x} and {y},"
+                    + " e.g. https://tile.openstreetmap.org/{z}/{x}/{y}.png");
         }
     }
 
@@ -102,9 +112,16 @@ public final class WebConsole implements AutoCloseable {
     private Server server;
     private ServerConnector connector;
     private ScheduledExecutorService timer;
+    private volatile PublicFleet publicFleet;
 
     public WebConsole(Options options) {
         this.options = Objects.requireNonNull(options, "options");
+    }
+
+    /** Turns the public view on ({@code --public GLOB}): anonymous visitors get {@code /api/public}; set before {@link #start()}. */
+    public WebConsole withPublicView(PublicFleet fleet) {
+        this.publicFleet = fleet;
+        return this;
     }
 
     /** Binds and starts serving; returns at once. */
@@ -186,6 +203,7 @@ public final class WebConsole implements AutoCloseable {
         }
         chain.add(new UploadHandler(options.uploadDir(), options.maxUploadBytes(), options.access(),
                 options.uploads() && options.access() != null, sessions));
+        chain.add(new PublicHandler(publicFleet, options.mapTiles()));
         chain.add(webjarContext);
         chain.add(pages);
         chain.add(new NotFound());

@@ -12,7 +12,8 @@ import org.ripv.messages.Result;
  * A reply or console push as the pages read it: {@code {"type":"reply"|"push", "id", "status",
  * "error", "text", "result": {"kind": "ConsoleBatch", ...}}}. Results are the protocol's own
  * records, written by Jackson; file bytes stay on the server (the page is told the name and size),
- * except the chunks of a {@code ?download} the page asked for ({@link FileChunks}).
+ * except the chunks of a {@code ?download} the page asked for ({@link FileChunks}); a plot's
+ * numbers come along for the page's own chart.
  */
 final class WebReplies {
     private final ObjectMapper json = new ObjectMapper();
@@ -44,7 +45,7 @@ final class WebReplies {
             return new FileSummary(f.name(), f.total());
         }
         if (r instanceof ImageResult i) {
-            return new FileSummary(i.name(), i.jpeg() == null ? 0 : i.jpeg().length);
+            return new Picture(i.name(), i.jpeg().length, i.chart());
         }
         if (r instanceof FileBundle b) {
             return new Files(b.files().stream().map(f -> new FileSummary(f.name(), f.total())).toList());
@@ -54,6 +55,9 @@ final class WebReplies {
 
     /** A file the reply carried, without its bytes. */
     record FileSummary(String name, long bytes) {}
+
+    /** A plot without its JPEG, with the numbers it was drawn from (null from Octave or MATLAB) for the page's chart. */
+    record Picture(String name, long bytes, org.ripv.messages.ChartData chart) {}
 
     /** The files a bundle carried, without their bytes. */
     record Files(java.util.List<FileSummary> files) {}

@@ -7,6 +7,9 @@
  * ({@link org.ripv.server.web.LandingHandler}, {@link org.ripv.server.web.LoginHandler},
  * {@link org.ripv.server.web.UploadHandler}, {@link org.ripv.server.web.SecurityHeaders}), the
  * pages are static HTML and one ES module each (resources {@code org/ripv/server/web/static}),
- * Leaflet and uPlot come from their WebJars. docs/web.md.
+ * Leaflet and uPlot come from their WebJars. The one exception to "a logged-in client" is the
+ * public view ({@link org.ripv.server.web.PublicHandler}, {@code --public GLOB}, off by default):
+ * read only, four fields of the vehicles the operator named, for visitors with no log-in.
+ * docs/web.md.
  */
 package org.ripv.server.web;

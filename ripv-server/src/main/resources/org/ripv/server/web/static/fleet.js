@@ -1,19 +1,24 @@
 // The fleet: every MailBox with its call state, live; positions on an offline lat/lon grid.
 import { session, PostOffice, bar, ago } from './postoffice.js';
 import { drawMap } from './map.js';
+import { labels } from './names.js';
 
 const s = await session();
 bar(s);
 const po = new PostOffice(s.csrf);
 const vehicles = new Map(); // address -> {status, lastContact, lat, lon, calls, latest, track: [[lat, lon]]}
 const stateLine = document.getElementById('state');
+// Tiles when the server was given --map-tiles, else the offline grid.
+const drawTracks = s.mapTiles ? (await import('./tilemap.js')).tileMap(document.getElementById('map'), s.mapTiles)
+  : (list) => drawMap(document.getElementById('map'), list);
 
-function row(address, v) {
+function row(address, v, label) {
   const tr = document.createElement('tr');
   const name = document.createElement('td');
   const link = document.createElement('a');
   link.href = `/vehicle.html?m=${encodeURIComponent(address)}`;
-  link.textContent = address;
+  link.textContent = label;
+  link.title = address;
   name.append(link);
   const state = document.createElement('td');
   const badge = document.createElement('span');
@@ -30,8 +35,9 @@ function row(address, v) {
 
 function render() {
   const body = document.getElementById('vehicles');
-  body.replaceChildren(...[...vehicles.entries()].map(([a, v]) => row(a, v)));
-  drawMap(document.getElementById('map'), [...vehicles.entries()].map(([a, v]) => ({ name: a, track: v.track })));
+  const names = labels([...vehicles.keys()]);
+  body.replaceChildren(...[...vehicles.entries()].map(([a, v]) => row(a, v, names.get(a))));
+  drawTracks([...vehicles.entries()].map(([a, v]) => ({ name: a, track: v.track })));
 }
 
 function takeStatus(m) {

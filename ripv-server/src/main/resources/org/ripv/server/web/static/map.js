@@ -1,3 +1,4 @@
+import { vehicleName } from './names.js';
 // An offline map: latitude/longitude grid lines with each vehicle's track and latest fix. No tiles, no internet.
 export function drawMap(canvas, vehicles) {
   const g = canvas.getContext('2d');
@@ -37,7 +38,7 @@ export function drawMap(canvas, vehicles) {
     g.stroke();
     const [lat, lon] = v.track[v.track.length - 1];
     g.beginPath(); g.arc(x(lon), y(lat), 6, 0, 2 * Math.PI); g.fill();
-    g.fillText(v.name.replace(/^.*>/, ''), x(lon) + 8, y(lat) - 8);
+    g.fillText(vehicleName(v.name), x(lon) + 8, y(lat) - 8);
   });
   canvas.dataset.points = String(points.length);
 }

@@ -55,6 +55,12 @@ export function bar(s) {
   notify.href = '/notify.html';
   notify.textContent = 'Notifications';
   nav.append(fleet, notify);
+  for (const [href, text] of [['/data.html', 'Data'], ['/service.html', 'Services']]) {
+    const a = document.createElement('a');
+    a.href = href;
+    a.textContent = text;
+    nav.append(a);
+  }
   const who = document.createElement('span');
   who.id = 'who';
   who.textContent = `${s.user} (${s.roles.join(', ')})`;

@@ -1,0 +1,43 @@
+// The map on the operator's tiles (--map-tiles URL) with Leaflet from the server's WebJar: each
+// vehicle's track and latest fix. The CSP lets images come from that tile host only.
+import * as L from '/webjars/leaflet/1.9.4/dist/leaflet-src.esm.js';
+import { vehicleName } from './names.js';
+
+export function tileMap(canvas, template) {
+  const css = document.createElement('link');
+  css.rel = 'stylesheet';
+  css.href = '/webjars/leaflet/1.9.4/dist/leaflet.css';
+  document.head.append(css);
+  const div = document.createElement('div');
+  div.id = canvas.id;
+  div.className = 'tiles';
+  div.setAttribute('role', 'img');
+  div.setAttribute('aria-label', canvas.getAttribute('aria-label') || 'Map');
+  canvas.replaceWith(div);
+  const map = L.map(div, { worldCopyJump: true }).setView([0, 0], 2);
+  const host = new URL(template.replaceAll(/\{[a-z]\}/g, '0')).host;
+  L.tileLayer(template, { maxZoom: 18, attribution: `Tiles: ${host}` }).addTo(map);
+  const layer = L.layerGroup().addTo(map);
+  let fitted = false;
+  return (vehicles) => {
+    layer.clearLayers();
+    const all = [];
+    vehicles.forEach((v, i) => {
+      if (!v.track.length) return;
+      const colour = `hsl(${(i * 67) % 360} 70% 40%)`;
+      L.polyline(v.track, { color: colour, weight: 2 }).addTo(layer);
+      const last = v.track[v.track.length - 1];
+      L.circleMarker(last, { radius: 6, color: colour, fillOpacity: 0.9 }).bindTooltip(label(vehicleName(v.name)), { permanent: true }).addTo(layer);
+      all.push(...v.track);
+    });
+    if (all.length && !fitted) { map.fitBounds(all, { maxZoom: 12, padding: [20, 20] }); fitted = true; }
+    div.dataset.points = String(all.length);
+  };
+}
+
+// Leaflet sets a string tooltip as HTML; a vehicle's name goes in as text.
+function label(text) {
+  const span = document.createElement('span');
+  span.textContent = text;
+  return span;
+}
