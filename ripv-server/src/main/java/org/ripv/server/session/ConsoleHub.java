@@ -27,7 +27,7 @@ import org.slf4j.LoggerFactory;
 public final class ConsoleHub implements AutoCloseable {
     private static final Logger log = LoggerFactory.getLogger(ConsoleHub.class);
     /** How many MailBoxes one connection may watch at once. */
-    public static final int MAX_WATCHES_PER_CLIENT = 64;
+    public static final int MAX_WATCHES_PER_CLIENT = 1024;
     /** Recent entries a new watcher gets with its {@code ?watch} reply. */
     static final int REPLAY = 20;
     /** Distinct MailBoxes one service may publish for (a hostile service cannot grow the state without end). */

@@ -74,8 +74,9 @@ if (list.status === 'ERROR') {
   (list.result?.mailboxes || []).forEach(takeStatus);
   stateLine.textContent = `${vehicles.size} MailBox(es), updated live.`;
   render();
-  for (const address of vehicles.keys()) {
-    const w = await po.send('', `?watch ${address}`);
+  // All at once: a fleet of 100 answered one by one waits 100 round trips before it is live.
+  const watches = await Promise.all([...vehicles.keys()].map((address) => po.send('', `?watch ${address}`)));
+  for (const w of watches) {
     if (w.result && w.result.kind === 'ConsoleBatch') w.result.entries.forEach((e) => takeEntry(e, false)); // counted in the status already
   }
   render();
