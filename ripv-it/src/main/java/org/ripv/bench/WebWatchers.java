@@ -7,159 +7,79 @@ import java.io.InputStream;
 import java.net.InetSocketAddress;
 import java.nio.ByteBuffer;
 import java.nio.channels.Channels;
-import java.nio.channels.SelectionKey;
-import java.nio.channels.Selector;
 import java.nio.channels.SocketChannel;
 import java.nio.charset.StandardCharsets;
-import java.util.ArrayList;
 import java.util.Base64;
-import java.util.List;
 import java.util.concurrent.ThreadLocalRandom;
 import java.util.function.LongConsumer;
 
 /**
- * Many web console WebSockets for {@code ./ripv bench web}, on a few selector threads: each one
+ * Many web console WebSockets for {@code ./ripv bench web}, on a few selector threads
+ * ({@link SelectorReaders}): each one
  * does what a page does — the HTTP upgrade with the session cookie and the page's Origin, then
  * {@code ?watch} as a JSON request with the CSRF token (blocking, one at a time) — and from then on
  * its frames are read raw and each line's send time is taken from the bytes ({@link RawWatchers#scan}),
  * so that ten thousand JSON parsers in the benchmark's own JVM do not measure the clients instead of
  * the server. Server frames are unmasked (RFC 6455 5.1); text, continuation and close are all a page sees here.
  */
-final class WebWatchers implements AutoCloseable {
+final class WebWatchers extends SelectorReaders<WebWatchers.Conn> {
     private static final byte[] SKIPPED = "lines skipped".getBytes(StandardCharsets.US_ASCII);
 
     /** What a page needs to open its socket: where, its cookie, its Origin and its CSRF token. */
     record Page(String host, int port, String cookie, String origin, String csrf) {}
 
-    /** One socket: where its delays go, how many skip markers it saw, and the start of a frame a read cut off. */
-    static final class Conn {
-        final SocketChannel ch;
-        final LongConsumer delays;
+    /** One socket, and how many skip markers it saw. */
+    static final class Conn extends SelectorReaders.Socket {
         volatile long markers;
-        volatile boolean closed;
-        byte[] partial;
 
         Conn(SocketChannel ch, LongConsumer delays) {
-            this.ch = ch;
-            this.delays = delays;
+            super(ch, delays);
         }
     }
 
-    private final List<Loop> loops = new ArrayList<>();
     private volatile int lastPayloadBytes;
-    private int next;
-
-    private final class Loop implements Runnable {
-        final Selector selector;
-        final Thread thread;
-        volatile boolean closed;
-        ByteBuffer scratch = ByteBuffer.allocateDirect(64 * 1024);
-        byte[] payload = new byte[4096];
-
-        Loop(int i) throws IOException {
-            selector = Selector.open();
-            thread = new Thread(this, "bench-web-watchers-" + i);
-            thread.setDaemon(true);
-            thread.start();
-        }
-
-        void register(Conn c) throws IOException {
-            synchronized (this) {
-                selector.wakeup();
-                c.ch.register(selector, SelectionKey.OP_READ, c);
-            }
-        }
-
-        @Override
-        public void run() {
-            while (!closed) {
-                try {
-                    selector.select();
-                    synchronized (this) {
-                        // lets register() run between selects
-                    }
-                    for (SelectionKey k : selector.selectedKeys()) {
-                        Conn c = (Conn) k.attachment();
-                        if (!k.isValid() || !read(c)) {
-                            c.closed = true;
-                            k.cancel();
-                        }
-                    }
-                    selector.selectedKeys().clear();
-                } catch (IOException | java.nio.channels.ClosedSelectorException e) {
-                    if (!closed) {
-                        continue;
-                    }
-                }
-            }
-        }
-
-        /** Reads what the socket has and scans its whole frames; false at its end or a close frame. */
-        private boolean read(Conn c) throws IOException {
-            ByteBuffer b = scratch;
-            b.clear();
-            if (c.partial != null) {
-                b.put(c.partial);
-                c.partial = null;
-            }
-            if (c.ch.read(b) < 0) {
-                return false;
-            }
-            long now = System.nanoTime();
-            b.flip();
-            while (b.remaining() >= 2) {
-                int at = b.position();
-                int op = b.get(at) & 0x0f;
-                int len7 = b.get(at + 1) & 0x7f;
-                int head = len7 == 126 ? 4 : len7 == 127 ? 10 : 2;
-                if (b.remaining() < head) {
-                    break;
-                }
-                long len = len7 == 126 ? b.getShort(at + 2) & 0xffff : len7 == 127 ? b.getLong(at + 2) : len7;
-                if (len > 16 << 20) {
-                    throw new IOException("a WebSocket frame of " + len + " bytes");
-                }
-                if (b.remaining() < head + len) {
-                    break;
-                }
-                if (op == 8) {
-                    return false;
-                }
-                int n = (int) len;
-                if (payload.length < n) {
-                    payload = new byte[n];
-                }
-                b.position(at + head);
-                b.get(payload, 0, n);
-                lastPayloadBytes = head + n;
-                RawWatchers.scan(payload, n, now, c.delays);
-                if (contains(payload, n, SKIPPED)) {
-                    c.markers++;
-                }
-            }
-            if (b.hasRemaining()) {
-                c.partial = new byte[b.remaining()];
-                b.get(c.partial);
-                if (c.partial.length > scratch.capacity() / 2) {
-                    scratch = ByteBuffer.allocateDirect(scratch.capacity() * 2); // a large frame: grow once
-                }
-            }
-            return true;
-        }
-
-        void close() throws IOException {
-            closed = true;
-            for (SelectionKey k : selector.keys()) {
-                k.channel().close();
-            }
-            selector.close();
-        }
-    }
+    /** A frame's payload for the scan, per reading thread. */
+    private final ThreadLocal<byte[]> payload = ThreadLocal.withInitial(() -> new byte[4096]);
 
     WebWatchers(int threads) throws IOException {
-        for (int i = 0; i < Math.max(1, threads); i++) {
-            loops.add(new Loop(i));
+        super(threads, "bench-web-watchers");
+    }
+
+    @Override
+    protected boolean frames(Conn c, ByteBuffer b, long now) throws IOException {
+        byte[] p = payload.get();
+        while (b.remaining() >= 2) {
+            int at = b.position();
+            int op = b.get(at) & 0x0f;
+            int len7 = b.get(at + 1) & 0x7f;
+            int head = len7 == 126 ? 4 : len7 == 127 ? 10 : 2;
+            if (b.remaining() < head) {
+                break;
+            }
+            long len = len7 == 126 ? b.getShort(at + 2) & 0xffff : len7 == 127 ? b.getLong(at + 2) : len7;
+            if (len > 16 << 20) {
+                throw new IOException("a WebSocket frame of " + len + " bytes");
+            }
+            if (b.remaining() < head + len) {
+                break;
+            }
+            if (op == 8) {
+                return false;
+            }
+            int n = (int) len;
+            if (p.length < n) {
+                p = new byte[n];
+                payload.set(p);
+            }
+            b.position(at + head);
+            b.get(p, 0, n);
+            lastPayloadBytes = head + n;
+            RawWatchers.scan(p, n, now, c.delays);
+            if (contains(p, n, SKIPPED)) {
+                c.markers++;
+            }
         }
+        return true;
     }
 
     /** The size on the wire of the last frame read (a console push's), or 0 before the first. */
@@ -169,11 +89,7 @@ final class WebWatchers implements AutoCloseable {
 
     /** Opens a page's socket and watches the MailBox; its delays (nanoseconds) go to {@code delays}. */
     Conn add(Page page, String mailbox, LongConsumer delays) throws IOException {
-        SocketChannel ch = open(page, mailbox, false);
-        Conn c = new Conn(ch, delays);
-        ch.configureBlocking(false);
-        loops.get(Math.floorMod(next++, loops.size())).register(c);
-        return c;
+        return register(new Conn(open(page, mailbox, false), delays));
     }
 
     /**
@@ -187,10 +103,7 @@ final class WebWatchers implements AutoCloseable {
 
     /** A stalled page starts reading again: what it gets from now on is scanned (skip markers counted). */
     Conn resume(SocketChannel ch, LongConsumer delays) throws IOException {
-        Conn c = new Conn(ch, delays);
-        ch.configureBlocking(false);
-        loops.get(0).register(c);
-        return c;
+        return registerFirst(new Conn(ch, delays));
     }
 
     private static SocketChannel open(Page page, String mailbox, boolean smallBuffer) throws IOException {
@@ -306,12 +219,5 @@ final class WebWatchers implements AutoCloseable {
             return true;
         }
         return false;
-    }
-
-    @Override
-    public void close() throws IOException {
-        for (Loop l : loops) {
-            l.close();
-        }
     }
 }
