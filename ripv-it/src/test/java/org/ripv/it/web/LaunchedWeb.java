@@ -10,7 +10,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.TimeUnit;
 import org.openqa.selenium.By;
 import org.openqa.selenium.OutputType;
 import org.openqa.selenium.chrome.ChromeDriver;
@@ -27,12 +26,13 @@ public final class LaunchedWeb implements AutoCloseable {
     public final int port;
     public final int registry;
     public final int http;
-    private final List<Process> processes = new ArrayList<>();
+    private final LaunchedProcesses processes;
     private final java.util.concurrent.atomic.AtomicInteger browsers = new java.util.concurrent.atomic.AtomicInteger();
 
     /** Users as NAME:ROLES (each with {@link WebConsoleBrowserTest#PASSWORD}); extra permit lines appended after them. */
     public LaunchedWeb(Path dir, List<String> users, List<String> permitLines, String... serverOptions) throws Exception {
         this.dir = dir;
+        this.processes = new LaunchedProcesses(dir, WebConsoleBrowserTest.T);
         this.data = Files.createDirectories(dir.resolve("server"));
         Path permit = data.resolve("permit.txt");
         for (String u : users) {
@@ -101,34 +101,15 @@ public final class LaunchedWeb implements AutoCloseable {
     }
 
     Process launch(String name, String input, String... args) throws IOException {
-        List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Xmx256m"));
-        cmd.addAll(List.of(args));
-        Process p = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(dir.resolve(name + ".log").toFile()).start();
-        if (input != null) {
-            p.getOutputStream().write(input.getBytes(StandardCharsets.UTF_8));
-        }
-        p.getOutputStream().close();
-        processes.add(p);
-        return p;
+        return processes.launch(name, input, args);
     }
 
     public void waitFor(String what, java.util.function.BooleanSupplier check) throws InterruptedException {
-        long end = System.nanoTime() + WebConsoleBrowserTest.T.toNanos();
-        while (System.nanoTime() < end) {
-            if (check.getAsBoolean()) {
-                return;
-            }
-            Thread.sleep(200); // processes of our own starting: nothing to be told by
-        }
-        throw new AssertionError("waited " + WebConsoleBrowserTest.T + " for " + what + "; logs in " + dir);
+        processes.waitFor(what, check);
     }
 
     public String log(String name) {
-        try {
-            return Files.readString(dir.resolve(name + ".log"));
-        } catch (IOException e) {
-            return "";
-        }
+        return processes.log(name);
     }
 
     public String url(String page) {
@@ -165,16 +146,6 @@ public final class LaunchedWeb implements AutoCloseable {
 
     @Override
     public void close() {
-        processes.forEach(Process::destroy);
-        for (Process p : processes) {
-            try {
-                if (!p.waitFor(10, TimeUnit.SECONDS)) {
-                    p.destroyForcibly();
-                }
-            } catch (InterruptedException e) {
-                p.destroyForcibly();
-                Thread.currentThread().interrupt();
-            }
-        }
+        processes.stopAll();
     }
 }
