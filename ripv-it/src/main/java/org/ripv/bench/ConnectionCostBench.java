@@ -169,7 +169,7 @@ public final class ConnectionCostBench implements Callable<Integer> {
         Thread.sleep(500);
     }
 
-    private static String jcmd(long pid, String what) throws Exception {
+    static String jcmd(long pid, String what) throws Exception {
         String jcmd = Path.of(System.getProperty("java.home"), "bin", "jcmd").toString();
         Process p = new ProcessBuilder(jcmd, Long.toString(pid), what).redirectErrorStream(true).start();
         String text = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);

@@ -511,27 +511,8 @@ public final class WebBench implements Callable<Integer> {
 
     /** Threads and VmRSS (KiB) of a process from /proc, and its live heap (KiB) after a full GC from jcmd. */
     static long[] sample(long pid) throws Exception {
-        jcmd(pid, "GC.run");
+        ConnectionCostBench.jcmd(pid, "GC.run");
         Thread.sleep(500);
-        Matcher heapUsed = Pattern.compile("used (\\d+)K").matcher(jcmd(pid, "GC.heap_info"));
-        long used = heapUsed.find() ? Long.parseLong(heapUsed.group(1)) : -1;
-        long threads = 0;
-        long rss = 0;
-        for (String line : Files.readAllLines(Path.of("/proc", Long.toString(pid), "status"))) {
-            if (line.startsWith("Threads:")) {
-                threads = Long.parseLong(line.substring(8).trim());
-            } else if (line.startsWith("VmRSS:")) {
-                rss = Long.parseLong(line.substring(6).trim().split("\\s+")[0]);
-            }
-        }
-        return new long[] {threads, rss, used};
-    }
-
-    private static String jcmd(long pid, String what) throws Exception {
-        String jcmd = Path.of(System.getProperty("java.home"), "bin", "jcmd").toString();
-        Process p = new ProcessBuilder(jcmd, Long.toString(pid), what).redirectErrorStream(true).start();
-        String text = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
-        p.waitFor(60, TimeUnit.SECONDS);
-        return text;
+        return ConnectionCostBench.sample(pid);
     }
 }
