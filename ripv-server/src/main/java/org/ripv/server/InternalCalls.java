@@ -20,6 +20,7 @@ import org.ripv.messages.Priority;
 import org.ripv.naming.MailboxAddress;
 import org.ripv.naming.MalformedNameException;
 import org.ripv.server.dataloop.ServiceCalls;
+import org.ripv.server.services.ServiceReference;
 
 /**
  * The server's own requests to services ({@link ServiceCalls}): forwarded like a client's, with

@@ -25,6 +25,7 @@ import org.ripv.outbound.OutboundHandshake;
 import org.ripv.outbound.OutboundLimits;
 import org.ripv.rmi.DeadlineSocketFactory;
 import org.ripv.rmi.GenericRMIInterface;
+import org.ripv.server.services.ServiceReference;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 

@@ -26,14 +26,23 @@ import org.ripv.post.MailBox;
 import org.ripv.post.PostOffice;
 import org.ripv.rmi.GenericRMIInterface;
 import org.ripv.rmi.RmiSupport;
+import org.ripv.server.clients.ClientAcceptor;
+import org.ripv.server.clients.ServerSessions;
+import org.ripv.server.clients.WebClients;
 import org.ripv.server.files.FileStore;
 import org.ripv.server.handlers.SocketHandler;
 import org.ripv.server.web.WebConsole;
 import org.ripv.server.permit.PermitFile;
 import org.ripv.server.permit.PermitWatcher;
+import org.ripv.server.requests.PendingRequests;
+import org.ripv.server.requests.RequestEndings;
 import org.ripv.server.security.RegistryGuard;
 import org.ripv.server.security.ServerSecurity;
 import org.ripv.server.security.ServerTls;
+import org.ripv.server.services.BoundServerSocketFactory;
+import org.ripv.server.services.ServiceLiveness;
+import org.ripv.server.services.ServiceReference;
+import org.ripv.server.services.ServiceSecret;
 import org.ripv.server.session.ConsoleHub;
 import org.ripv.wire.FrameCodec;
 import org.slf4j.Logger;
@@ -103,8 +112,8 @@ public final class RIPVServer implements AutoCloseable {
     private ServerState state;
 
     /** An operator's hold on a MailBox ({@code ?lock}). */
-    record OperatorLock(String user, String clientId, long untilMillis) {
-        boolean expired() {
+    public record OperatorLock(String user, String clientId, long untilMillis) {
+        public boolean expired() {
             return System.currentTimeMillis() > untilMillis;
         }
     }
@@ -159,7 +168,7 @@ public final class RIPVServer implements AutoCloseable {
         codec = new FrameCodec(config.maxFrame());
         pending = new PendingRequests(timers, config.requestTimeout(), this::timedOut);
         workflows = new org.ripv.server.workflow.Workflows(state.store(), new WorkflowBridge(this));
-        endings = new RequestEndings(this, pending, withdrawals, config.requestTimeout());
+        endings = new RequestEndings(this::reply, pending, withdrawals, config.requestTimeout());
         box = postOffice.open(POST_OFFICE, new ServerTaskManager(this));
         // A log-in looks at the file first (one stat): a user just added with ripv passwd can log in
         // at once, not only after the next periodic check.

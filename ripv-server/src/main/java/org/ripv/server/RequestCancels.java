@@ -13,6 +13,8 @@ import org.ripv.messages.IncomingServerMessage;
 import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.Status;
 import org.ripv.server.permit.PermitFile;
+import org.ripv.server.requests.PendingRequests;
+import org.ripv.server.services.ServiceReference;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 

@@ -8,6 +8,7 @@ import org.ripv.messages.OutgoingServiceMessage;
 import org.ripv.messages.ServiceDescriptor;
 import org.ripv.rmi.GenericRMIInterface;
 import org.ripv.server.security.ServiceChallenges;
+import org.ripv.server.services.ServiceReference;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 

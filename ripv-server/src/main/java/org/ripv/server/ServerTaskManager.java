@@ -19,6 +19,7 @@ import org.ripv.post.MailBox;
 import org.ripv.server.files.FileTooLargeException;
 import org.ripv.server.handlers.SocketHandler;
 import org.ripv.server.permit.PermitFile;
+import org.ripv.server.services.ServiceReference;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 

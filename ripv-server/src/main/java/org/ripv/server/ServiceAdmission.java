@@ -9,6 +9,7 @@ import java.util.List;
 import org.ripv.messages.ServiceDescriptor;
 import org.ripv.naming.ServiceName;
 import org.ripv.rmi.GenericRMIInterface;
+import org.ripv.server.services.ServiceReference;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 

@@ -18,6 +18,8 @@ import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.ServiceDescriptor;
 import org.ripv.messages.ServiceList;
 import org.ripv.naming.MailboxAddress;
+import org.ripv.server.services.ServiceReference;
+import org.ripv.server.services.ServiceLiveness;
 
 /**
  * The server commands that ask services: {@code ?mailboxes} asks every service at once, each

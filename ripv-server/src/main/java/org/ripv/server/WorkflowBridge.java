@@ -5,6 +5,7 @@ import org.ripv.messages.Header;
 import org.ripv.messages.IncomingServerMessage;
 import org.ripv.server.files.FileStore;
 import org.ripv.server.permit.PermitFile;
+import org.ripv.server.services.ServiceReference;
 import org.ripv.server.workflow.WorkflowHost;
 
 /** The server as the workflow runner sees it (org.ripv.server.workflow.WorkflowHost). */

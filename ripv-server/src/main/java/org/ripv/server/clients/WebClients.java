@@ -1,4 +1,4 @@
-package org.ripv.server;
+package org.ripv.server.clients;
 
 import java.io.IOException;
 import java.util.List;
@@ -13,10 +13,10 @@ import org.ripv.server.web.PostOfficeDoor;
  * and audit), so a page's requests meet every rule a socket client's do — with no socket and no
  * thread of its own (docs/web.md).
  */
-final class WebClients implements PostOfficeDoor {
+public final class WebClients implements PostOfficeDoor {
     private final Supplier<ClientAcceptor> acceptor;
 
-    WebClients(Supplier<ClientAcceptor> acceptor) {
+    public WebClients(Supplier<ClientAcceptor> acceptor) {
         this.acceptor = acceptor;
     }
 

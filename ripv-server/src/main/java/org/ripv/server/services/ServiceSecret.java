@@ -1,4 +1,4 @@
-package org.ripv.server;
+package org.ripv.server.services;
 
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
@@ -15,13 +15,13 @@ import org.slf4j.LoggerFactory;
  * The service secret ({@code DATA/service.secret}): made on the server's first start, readable
  * by its owner only, and required of every service that registers.
  */
-final class ServiceSecret {
+public final class ServiceSecret {
     private static final Logger log = LoggerFactory.getLogger(ServiceSecret.class);
 
     private ServiceSecret() {}
 
     /** Reads the secret, or writes a new random one when there is none usable. */
-    static String loadOrCreate(Path file) throws IOException {
+    public static String loadOrCreate(Path file) throws IOException {
         if (Files.exists(file)) {
             String s = Files.readString(file, StandardCharsets.UTF_8).trim();
             if (s.length() >= 16) {

@@ -1,4 +1,4 @@
-package org.ripv.server;
+package org.ripv.server.clients;
 
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
@@ -7,6 +7,7 @@ import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
 import org.ripv.messages.VehicleEvent;
+import org.ripv.server.RIPVServer;
 import org.ripv.server.session.ConsoleHub;
 
 /**
@@ -14,7 +15,7 @@ import org.ripv.server.session.ConsoleHub;
  * taken out of the lock table and watchers get LOCK_RELEASED, as when its holder unlocks or
  * disconnects (docs/sessions.md). One timer per locked MailBox, replaced when the lock is.
  */
-final class LockExpiries {
+public final class LockExpiries {
     private final ScheduledExecutorService timers;
     private final Map<String, RIPVServer.OperatorLock> locks;
     private final ConsoleHub console;

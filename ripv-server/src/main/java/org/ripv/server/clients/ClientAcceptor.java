@@ -1,4 +1,4 @@
-package org.ripv.server;
+package org.ripv.server.clients;
 
 import java.io.IOException;
 import java.nio.channels.ClosedChannelException;
@@ -26,7 +26,7 @@ import org.slf4j.LoggerFactory;
  * server's few selector threads ({@link ClientLoops}): no client has a thread of its own. Knows
  * the connected clients by id.
  */
-final class ClientAcceptor {
+public final class ClientAcceptor {
     private static final Logger log = LoggerFactory.getLogger(ClientAcceptor.class);
 
     private final ServerSocketChannel listener;
@@ -48,7 +48,7 @@ final class ClientAcceptor {
      *
      * @param tls the TLS context, or null for plain TCP ({@code --plain})
      */
-    ClientAcceptor(ServerSocketChannel listener, SSLContext tls, ScheduledExecutorService timers,
+    public ClientAcceptor(ServerSocketChannel listener, SSLContext tls, ScheduledExecutorService timers,
                    FrameCodec codec, WriterPool writers, SocketHandler.Dispatcher dispatch, ConnectionGate gate) throws IOException {
         this.listener = listener;
         this.tls = tls;
@@ -67,7 +67,7 @@ final class ClientAcceptor {
         return listener.socket().getLocalPort();
     }
 
-    Optional<SocketHandler> client(String clientId) {
+    public Optional<SocketHandler> client(String clientId) {
         return Optional.ofNullable(clients.get(clientId));
     }
 
@@ -76,7 +76,7 @@ final class ClientAcceptor {
     }
 
     /** A client closed: it is forgotten (only that handler, not a later one given the same id). */
-    void forget(SocketHandler client) {
+    public void forget(SocketHandler client) {
         clients.remove(client.clientId(), client);
         synchronized (closes) {
             closes.notifyAll();
@@ -173,7 +173,7 @@ final class ClientAcceptor {
     }
 
     /** Stops accepting and disconnects every client. */
-    void close() {
+    public void close() {
         running = false;
         closeQuietly(listener);
         clients.values().forEach(SocketHandler::close);

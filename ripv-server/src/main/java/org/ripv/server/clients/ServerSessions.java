@@ -1,4 +1,4 @@
-package org.ripv.server;
+package org.ripv.server.clients;
 
 import java.io.IOException;
 import java.nio.file.Path;
@@ -8,6 +8,8 @@ import java.util.function.Function;
 import java.util.function.Supplier;
 import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.VehicleEvent;
+import org.ripv.server.RIPVServer;
+import org.ripv.server.SessionOptions;
 import org.ripv.server.handlers.SocketHandler;
 import org.ripv.server.notify.Notifier;
 import org.ripv.server.notify.NotifyCommands;
@@ -21,7 +23,7 @@ import org.ripv.wire.FrameCodec;
  * The server's vehicle sessions wired together (docs/sessions.md): the console hub with its
  * transcripts, the notifier, and the commands that reach them; RIPVServer only calls in here.
  */
-final class ServerSessions implements AutoCloseable {
+public final class ServerSessions implements AutoCloseable {
     /** A MailBox's transcript keeps at most this many files' worth of entries a day (docs/security.md). */
     static final int TRANSCRIPT_FILES_A_DAY = 4;
     private final ConsoleHub console;
@@ -30,7 +32,7 @@ final class ServerSessions implements AutoCloseable {
     private final NotifyCommands notifyCommands;
     private LockExpiries lockExpiries;
 
-    ServerSessions(Path dataDir, org.ripv.server.store.StateStore store, SessionOptions options, Supplier<PermitFile> permits,
+    public ServerSessions(Path dataDir, org.ripv.server.store.StateStore store, SessionOptions options, Supplier<PermitFile> permits,
                    Function<String, Optional<SocketHandler>> clients, FrameCodec codec) throws IOException {
         // A MailBox's transcript keeps at most four files' worth a day (256 MiB by default).
         console = new ConsoleHub(dataDir.resolve("transcripts"), store, options.keepDays(),
@@ -63,13 +65,13 @@ final class ServerSessions implements AutoCloseable {
     }
 
     /** Operator locks that run out are released with an event ({@link LockExpiries}). */
-    void expireLocks(java.util.concurrent.ScheduledExecutorService timers, Map<String, RIPVServer.OperatorLock> locks,
+    public void expireLocks(java.util.concurrent.ScheduledExecutorService timers, Map<String, RIPVServer.OperatorLock> locks,
                      java.util.function.Consumer<String> released) {
         lockExpiries = new LockExpiries(timers, locks, console, released);
     }
 
     /** An operator took or renewed the lock on a MailBox ({@code ?lock}). */
-    void lockTaken(String mailbox, RIPVServer.OperatorLock lock) {
+    public void lockTaken(String mailbox, RIPVServer.OperatorLock lock) {
         if (lockExpiries != null) {
             lockExpiries.taken(mailbox, lock);
         }
@@ -79,28 +81,28 @@ final class ServerSessions implements AutoCloseable {
      * The permit file changed: watches whose user lost the read right end, each told why once;
      * notifications check the rules in force at each delivery (Notifier).
      */
-    void permitsChanged(PermitFile rules) {
+    public void permitsChanged(PermitFile rules) {
         console.recheck((user, mailbox) -> {
             String why = org.ripv.server.session.Rights.whyNotRead(rules, user, mailbox);
             return why == null ? null : why + "; the permit file changed";
         });
     }
 
-    ConsoleHub console() {
+    public ConsoleHub console() {
         return console;
     }
 
-    ConsoleCommands consoleCommands() {
+    public ConsoleCommands consoleCommands() {
         return consoleCommands;
     }
 
-    NotifyCommands notifyCommands() {
+    public NotifyCommands notifyCommands() {
         return notifyCommands;
     }
 
     /** A client left: its watches go, and its locks are released (an event each). */
     /** @return true when the client held operator locks (now released) */
-    boolean clientClosed(String clientId, Map<String, RIPVServer.OperatorLock> locks) {
+    public boolean clientClosed(String clientId, Map<String, RIPVServer.OperatorLock> locks) {
         console.clientClosed(clientId);
         return locks.entrySet().removeIf(e -> {
             boolean mine = e.getValue().clientId().equals(clientId);

@@ -1,4 +1,4 @@
-package org.ripv.server;
+package org.ripv.server.services;
 
 import java.rmi.RemoteException;
 import java.time.Duration;
@@ -21,6 +21,7 @@ import org.ripv.messages.MailboxStatus;
 import org.ripv.messages.ServiceDescriptor;
 import org.ripv.naming.ServiceName;
 import org.ripv.rmi.GenericRMIInterface;
+import org.ripv.server.requests.PendingRequests;
 
 /**
  * The server's handle on one registered service (thesis: ServiceReference): its descriptor,
@@ -31,7 +32,7 @@ import org.ripv.rmi.GenericRMIInterface;
  * <p>It also knows which requests have not reached the service yet (so that a timeout can say
  * "never delivered" truthfully), and the service's health as the last call or check found it.
  */
-final class ServiceReference {
+public final class ServiceReference {
     /** The most requests sent in one RMI call. */
     static final int MAX_BATCH = 256;
     private static final Pattern ENDPOINT = Pattern.compile("endpoint:\\[([^,\\]]+)");
@@ -62,11 +63,11 @@ final class ServiceReference {
     private volatile boolean closed;
 
     /** Hears of a request that could not be delivered. */
-    interface Failure {
+    public interface Failure {
         void failed(ServiceReference ref, IncomingServiceMessage request, Exception cause);
     }
 
-    ServiceReference(ServiceDescriptor descriptor, GenericRMIInterface stub, String token, Failure onFailure, long order) {
+    public ServiceReference(ServiceDescriptor descriptor, GenericRMIInterface stub, String token, Failure onFailure, long order) {
         this.descriptor = descriptor;
         this.onFailure = onFailure;
         ServiceName.parse(descriptor.name()); // refuses a malformed name before any thread starts
@@ -80,7 +81,7 @@ final class ServiceReference {
     }
 
     /** Where the server calls the service: HOST:PORT from the stub, or how the calls travel. */
-    static String addressOf(Object stub) {
+    public static String addressOf(Object stub) {
         String s = String.valueOf(stub);
         Matcher m = ENDPOINT.matcher(s);
         if (m.find()) {
@@ -89,24 +90,24 @@ final class ServiceReference {
         return stub instanceof java.lang.reflect.Proxy && !s.contains("RemoteObjectInvocationHandler") ? s : "?";
     }
 
-    ServiceDescriptor descriptor() {
+    public ServiceDescriptor descriptor() {
         return descriptor;
     }
 
-    String token() {
+    public String token() {
         return token;
     }
 
     /** HOST:PORT the server calls the service at (what the service registered with). */
-    String address() {
+    public String address() {
         return address;
     }
 
-    long order() {
+    public long order() {
         return order;
     }
 
-    GenericRMIInterface stub() {
+    public GenericRMIInterface stub() {
         return stub;
     }
 
@@ -114,7 +115,7 @@ final class ServiceReference {
      * Queues a request for the sender thread — unless the service is known not to answer and the
      * call under way to it is stuck: then it fails at once rather than wait behind that call.
      */
-    void forward(IncomingServiceMessage request) {
+    public void forward(IncomingServiceMessage request) {
         if (closed) {
             onFailure.failed(this, request, new RemoteException(descriptor.name() + " is no longer registered"));
             return;
@@ -128,7 +129,7 @@ final class ServiceReference {
     }
 
     /** True while the request has not reached the service (queued here, or in a call under way). */
-    boolean undelivered(Header h) {
+    public boolean undelivered(Header h) {
         return undelivered.contains(PendingRequests.key(h));
     }
 
@@ -166,7 +167,7 @@ final class ServiceReference {
     }
 
     /** Takes a request that is still waiting here out of the queue; true when it was there. */
-    boolean unqueue(Header h) {
+    public boolean unqueue(Header h) {
         boolean removed = queue.removeIf(r -> r.header().messageId() == h.messageId()
                 && r.header().origin().clientId().equals(h.origin().clientId()));
         if (removed) {
@@ -176,7 +177,7 @@ final class ServiceReference {
     }
 
     /** Asks the service to drop a request that has not started; true when it will never run. */
-    boolean withdraw(Header h) throws RemoteException {
+    public boolean withdraw(Header h) throws RemoteException {
         if (unqueue(h)) {
             return true;
         }
@@ -184,7 +185,7 @@ final class ServiceReference {
     }
 
     /** Asks the service to stop a request that is running; true when its handler took the cancel. */
-    boolean cancel(org.ripv.messages.Header h) throws RemoteException {
+    public boolean cancel(org.ripv.messages.Header h) throws RemoteException {
         return stub.cancel(token, h.mailboxAddress(), h.origin().clientId(), h.messageId());
     }
 
@@ -229,7 +230,7 @@ final class ServiceReference {
     }
 
     /** The MailBoxes within {@code deadline}; a {@link java.util.concurrent.TimeoutException} cause when late. */
-    CompletableFuture<List<MailboxStatus>> mailboxes(Executor pool, Duration deadline) {
+    public CompletableFuture<List<MailboxStatus>> mailboxes(Executor pool, Duration deadline) {
         return mailboxesAsync(pool).copy().orTimeout(deadline.toMillis(), TimeUnit.MILLISECONDS);
     }
 
@@ -246,7 +247,7 @@ final class ServiceReference {
         trouble("could not reach " + address + ": " + why(e, address));
     }
 
-    void trouble(String why) {
+    public void trouble(String why) {
         if (problemSince == null) {
             problemSince = Instant.now();
         }
@@ -270,16 +271,16 @@ final class ServiceReference {
     }
 
     /** Empty when the last call went through; else what went wrong. */
-    String problem() {
+    public String problem() {
         return problem;
     }
 
-    Instant problemSince() {
+    public Instant problemSince() {
         return problemSince;
     }
 
     /** A failed call in words: the innermost cause's message without the address (callers add it). */
-    static String why(Throwable e, String address) {
+    public static String why(Throwable e, String address) {
         Throwable t = e;
         while (t.getCause() != null && t.getCause() != t) {
             t = t.getCause();
@@ -298,7 +299,7 @@ final class ServiceReference {
         return m;
     }
 
-    void close() {
+    public void close() {
         closed = true;
         sender.interrupt();
     }

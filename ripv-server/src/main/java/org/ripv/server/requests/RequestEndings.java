@@ -1,16 +1,20 @@
-package org.ripv.server;
+package org.ripv.server.requests;
 
 import java.rmi.RemoteException;
 import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.Executor;
 import java.util.concurrent.RejectedExecutionException;
+import java.util.function.Consumer;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.Footer;
 import org.ripv.messages.Header;
 import org.ripv.messages.Ids;
 import org.ripv.messages.IncomingServerMessage;
 import org.ripv.messages.IncomingServiceMessage;
+import org.ripv.messages.OutgoingServerMessage;
+import org.ripv.server.RIPVServer;
+import org.ripv.server.services.ServiceReference;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -20,27 +24,27 @@ import org.slf4j.LoggerFactory;
  * delivered but silent ({@code TIMEOUT}, withdrawn if it had not started), or lost with its
  * service ({@code SERVICE_GONE}, "went away"). Nothing here waits for another request's call.
  */
-final class RequestEndings {
+public final class RequestEndings {
     private static final Logger log = LoggerFactory.getLogger(RequestEndings.class);
 
-    private final RIPVServer server;
+    private final Consumer<OutgoingServerMessage> reply;
     private final PendingRequests pending;
     private final Executor withdrawals;
     private final Duration timeout;
 
-    RequestEndings(RIPVServer server, PendingRequests pending, Executor withdrawals, Duration timeout) {
-        this.server = server;
+    public RequestEndings(Consumer<OutgoingServerMessage> reply, PendingRequests pending, Executor withdrawals, Duration timeout) {
+        this.reply = reply;
         this.pending = pending;
         this.withdrawals = withdrawals;
         this.timeout = timeout;
     }
 
     private void error(Header h, String sid, ErrorCode code, String text) {
-        server.reply(new IncomingServerMessage(h).reply(Footer.error(sid, code, text).via(RIPVServer.SERVER_SERVICE)));
+        reply.accept(new IncomingServerMessage(h).reply(Footer.error(sid, code, text).via(RIPVServer.SERVER_SERVICE)));
     }
 
     /** A request whose call to its service failed. */
-    void undeliverable(ServiceReference ref, IncomingServiceMessage r, Exception e) {
+    public void undeliverable(ServiceReference ref, IncomingServiceMessage r, Exception e) {
         String why = ServiceReference.why(e, ref.address());
         log.warn("could not reach {} at {}: {}", ref, ref.address(), why);
         if (pending.complete(r.header(), ref.descriptor().name()) != null) {
@@ -68,7 +72,7 @@ final class RequestEndings {
      * Delivered: try to withdraw it, on a thread of its own with the RMI deadlines, so that no
      * other request waits on this call; skip that when the service is known not to answer.
      */
-    void timedOut(PendingRequests.Pending p, ServiceReference ref) {
+    public void timedOut(PendingRequests.Pending p, ServiceReference ref) {
         String what = "'" + Header.abbreviate(p.header().body()) + "'";
         if (ref != null && (ref.unqueue(p.header()) || ref.undelivered(p.header()))) {
             error(p.header(), ref.descriptor().sid(), ErrorCode.SERVICE_GONE, "could not reach " + p.service() + " at "
@@ -95,7 +99,7 @@ final class RequestEndings {
     }
 
     /** A service left (dropped, or registered again): its pending requests end now, each told why. */
-    void drop(ServiceReference ref, String why) {
+    public void drop(ServiceReference ref, String why) {
         List<PendingRequests.Pending> failed = pending.failService(ref.descriptor().name());
         ref.close();
         for (PendingRequests.Pending p : failed) {

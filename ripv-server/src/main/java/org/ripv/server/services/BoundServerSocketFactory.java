@@ -1,4 +1,4 @@
-package org.ripv.server;
+package org.ripv.server.services;
 
 import java.io.IOException;
 import java.net.InetAddress;
@@ -11,7 +11,7 @@ import java.util.Objects;
  * Server sockets for the RMI registry and the server's RMI object, bound to {@code --bind} when
  * given. Equal factories let both share one port (RMI compares them with equals).
  */
-record BoundServerSocketFactory(InetAddress address) implements RMIServerSocketFactory {
+public record BoundServerSocketFactory(InetAddress address) implements RMIServerSocketFactory {
     @Override
     public ServerSocket createServerSocket(int port) throws IOException {
         ServerSocket s = new ServerSocket();

@@ -1,4 +1,4 @@
-package org.ripv.server;
+package org.ripv.server.requests;
 
 import java.time.Duration;
 import java.util.ArrayList;
@@ -17,9 +17,9 @@ import org.ripv.messages.Header;
  * Deadlines are checked by one sweep a few times a second rather than one timer per request,
  * which costs nothing per request on the hot path.
  */
-final class PendingRequests {
+public final class PendingRequests {
     /** One forwarded request; its deadline moves on with each PROGRESS reply. */
-    static final class Pending {
+    public static final class Pending {
         private final Header header;
         private final String service;
         private volatile long deadlineNanos;
@@ -30,11 +30,11 @@ final class PendingRequests {
             this.deadlineNanos = deadlineNanos;
         }
 
-        Header header() {
+        public Header header() {
             return header;
         }
 
-        String service() {
+        public String service() {
             return service;
         }
     }
@@ -43,24 +43,24 @@ final class PendingRequests {
     private final long timeoutNanos;
     private final Consumer<Pending> onTimeout;
 
-    PendingRequests(ScheduledExecutorService timers, Duration timeout, Consumer<Pending> onTimeout) {
+    public PendingRequests(ScheduledExecutorService timers, Duration timeout, Consumer<Pending> onTimeout) {
         this.timeoutNanos = timeout.toNanos();
         this.onTimeout = onTimeout;
         long sweep = Math.max(20, Math.min(250, timeout.toMillis() / 10));
         timers.scheduleWithFixedDelay(this::sweep, sweep, sweep, TimeUnit.MILLISECONDS);
     }
 
-    static String key(Header h) {
+    public static String key(Header h) {
         return h.origin().clientId() + "#" + h.messageId();
     }
 
     /** Starts tracking a request; false when one with the same id is already pending. */
-    boolean add(Header h, String service) {
+    public boolean add(Header h, String service) {
         return pending.putIfAbsent(key(h), new Pending(h, service, System.nanoTime() + timeoutNanos)) == null;
     }
 
     /** A PROGRESS reply arrived from {@code service}: restart the request's clock. Null if not pending there. */
-    Pending touch(Header h, String service) {
+    public Pending touch(Header h, String service) {
         Pending p = pending.get(key(h));
         if (p == null || !p.service().equals(service)) {
             return null;
@@ -73,7 +73,7 @@ final class PendingRequests {
      * The final reply arrived from {@code service}: stop tracking. Null when the request was not
      * pending at that service (late, or a reply from a service it was never sent to).
      */
-    Pending complete(Header h, String service) {
+    public Pending complete(Header h, String service) {
         String k = key(h);
         Pending p = pending.get(k);
         if (p == null || !p.service().equals(service) || !pending.remove(k, p)) {
@@ -83,12 +83,12 @@ final class PendingRequests {
     }
 
     /** The pending request a client sent with this message id, or null. */
-    Pending get(String clientId, long messageId) {
+    public Pending get(String clientId, long messageId) {
         return pending.get(clientId + "#" + messageId);
     }
 
     /** Every pending request with this message id, whoever sent it. */
-    List<Pending> withMessageId(long messageId) {
+    public List<Pending> withMessageId(long messageId) {
         return pending.values().stream().filter(p -> p.header().messageId() == messageId).toList();
     }
 
@@ -116,7 +116,7 @@ final class PendingRequests {
     }
 
     /** Forgets the requests of a client that went away (their replies will be dropped anyway). */
-    void forgetClient(String clientId) {
+    public void forgetClient(String clientId) {
         pending.values().removeIf(p -> p.header().origin().clientId().equals(clientId));
     }
 }

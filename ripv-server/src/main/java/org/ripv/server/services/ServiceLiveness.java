@@ -1,4 +1,4 @@
-package org.ripv.server;
+package org.ripv.server.services;
 
 import java.time.Duration;
 import java.time.Instant;
@@ -20,15 +20,15 @@ import org.slf4j.LoggerFactory;
  * from the service list (its pending requests then fail). The removed are remembered with their
  * reason until they register again. Checks never pile up on a service that hangs.
  */
-final class ServiceLiveness {
+public final class ServiceLiveness {
     private static final Logger log = LoggerFactory.getLogger(ServiceLiveness.class);
     /** Removes a service that failed this many checks in a row. */
     static final int FAILED_CHECKS_TO_REMOVE = 2;
     /** How long a check waits for a service; also the per-service deadline of {@code ?mailboxes}. */
-    static final Duration QUERY_DEADLINE = Duration.ofMillis(Long.getLong("ripv.service.queryMillis", 2_000));
+    public static final Duration QUERY_DEADLINE = Duration.ofMillis(Long.getLong("ripv.service.queryMillis", 2_000));
 
     /** A service removed for failing its checks (or refused at registration: {@code refused}), and why. */
-    record Lost(String why, Instant when, boolean refused) {}
+    public record Lost(String why, Instant when, boolean refused) {}
 
     private final Map<String, ServiceReference> services;
     private final ExecutorService checks;
@@ -39,7 +39,7 @@ final class ServiceLiveness {
     private final BiConsumer<ServiceReference, String> drop;
     private final Map<String, Lost> lost = new ConcurrentHashMap<>();
 
-    ServiceLiveness(Map<String, ServiceReference> services, ExecutorService checks, ExecutorService queries,
+    public ServiceLiveness(Map<String, ServiceReference> services, ExecutorService checks, ExecutorService queries,
                     ScheduledExecutorService timers, Duration interval, BiConsumer<ServiceReference, String> drop) {
         this.services = services;
         this.checks = checks;
@@ -53,14 +53,14 @@ final class ServiceLiveness {
     }
 
     /** Checks every registered service (the server's timer calls this each interval). */
-    void checkAll() {
+    public void checkAll() {
         for (ServiceReference ref : services.values()) {
             soon(ref);
         }
     }
 
     /** Checks one service off the caller's thread (after a call to it failed). */
-    void soon(ServiceReference ref) {
+    public void soon(ServiceReference ref) {
         if (!checks.isShutdown()) {
             try {
                 checks.execute(() -> check(ref));
@@ -71,19 +71,19 @@ final class ServiceLiveness {
     }
 
     /** Services removed for failing their checks, by name, until they register again. */
-    Map<String, Lost> lost() {
+    public Map<String, Lost> lost() {
         return lost;
     }
 
     /** A registration refused because the server cannot call the service back: {@code ?services} says so. */
-    void refused(String name, String why) {
+    public void refused(String name, String why) {
         if (!services.containsKey(name)) {
             lost.put(name, new Lost(why, Instant.now(), true));
         }
     }
 
     /** A service registered (again): forget that it was lost. */
-    void registered(String name) {
+    public void registered(String name) {
         lost.remove(name);
     }
 
