@@ -7,6 +7,7 @@ import java.net.ConnectException;
 import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.net.SocketTimeoutException;
+import java.nio.ByteBuffer;
 import java.nio.charset.StandardCharsets;
 import java.security.GeneralSecurityException;
 import java.security.cert.X509Certificate;
@@ -16,6 +17,7 @@ import javax.net.ssl.SSLContext;
 import javax.net.ssl.SSLSocket;
 import javax.net.ssl.TrustManager;
 import javax.net.ssl.X509TrustManager;
+import org.ripv.wire.FrameCodec;
 
 /**
  * Finds out what listens on a host's port by speaking to it the way each of RIPV's servers
@@ -49,7 +51,9 @@ public final class PortProbe {
     private static final byte[] JRMP = {'J', 'R', 'M', 'I', 0, 2, 0x4b}; // magic, version 2, StreamProtocol
     private static final int JRMP_ACK = 0x4e;
     private static final byte[] GET = "GET / HTTP/1.0\r\n\r\n".getBytes(StandardCharsets.US_ASCII);
-    private static final byte[] GREETING = {'R', 'I', 'P', 'V', 0, 0, 0, 1};
+    /** The greeting a client of this version sends: a server refuses another version without a word. */
+    static final byte[] GREETING = ByteBuffer.allocate(FrameCodec.MAGIC.length + Integer.BYTES).put(FrameCodec.MAGIC)
+            .putInt(FrameCodec.VERSION).array();
 
     private PortProbe() {
     }
