@@ -63,8 +63,9 @@ public final class ConsoleModel {
         ArrayDeque<ConsoleEntry> list = entries.computeIfAbsent(batch.mailbox(), k -> new ArrayDeque<>());
         List<ConsoleEntry> history = batch.entries();
         // Where the transcript meets what is shown: the first entry kept, found by value (times
-        // alone collide within a millisecond); failing that, whatever is strictly older.
-        int meet = list.isEmpty() ? history.size() : history.indexOf(list.peekFirst());
+        // alone collide within a millisecond) but for its number, which the live entry has and the
+        // transcript's copy may not; failing that, whatever is strictly older.
+        int meet = list.isEmpty() ? history.size() : indexOfUnnumbered(history, list.peekFirst());
         long oldest = list.isEmpty() ? Long.MAX_VALUE : list.peekFirst().time();
         List<ConsoleEntry> older = meet >= 0 ? history.subList(0, meet)
                 : history.stream().filter(e -> e.time() < oldest).toList();
@@ -73,6 +74,16 @@ public final class ConsoleModel {
         }
         revisions.merge(batch.mailbox(), 1L, Long::sum);
         listeners.forEach(l -> l.changed(batch.mailbox()));
+    }
+
+    private static int indexOfUnnumbered(List<ConsoleEntry> history, ConsoleEntry first) {
+        ConsoleEntry wanted = first.withSeq(0);
+        for (int i = 0; i < history.size(); i++) {
+            if (history.get(i).withSeq(0).equals(wanted)) {
+                return i;
+            }
+        }
+        return -1;
     }
 
     public List<ConsoleEntry> entries(String mailbox) {
