@@ -53,6 +53,7 @@ public final class ZmodemSender extends ZmodemPeer<ZmodemSender> {
         FileHeader header = new FileHeader(file.name(), file.length(), file.mtimeSeconds(), file.mode());
         long start = offer(file, h);
         if (start < 0) {
+            endAfterSkip();
             throw new ZmodemException(ZmodemException.Kind.LINE, "the vehicle skipped " + file.name()
                     + " (ZSKIP: it may have it already, or may not write it)");
         }
@@ -78,7 +79,11 @@ public final class ZmodemSender extends ZmodemPeer<ZmodemSender> {
                                 + " again " + rounds + " times (a bad line); stopped at byte " + pos);
                     }
                 }
-                case Zmodem.ZSKIP, Zmodem.ZFERR, Zmodem.ZABORT, Zmodem.ZCAN -> throw new ZmodemException(
+                case Zmodem.ZSKIP -> {
+                    endAfterSkip();
+                    throw new ZmodemException(ZmodemException.Kind.LINE, "the vehicle stopped taking " + file.name() + " (ZSKIP)");
+                }
+                case Zmodem.ZFERR, Zmodem.ZABORT, Zmodem.ZCAN -> throw new ZmodemException(
                         ZmodemException.Kind.LINE, "the vehicle stopped taking " + file.name() + " ("
                         + Zmodem.name(answer.type()) + ")");
                 default -> throw new ZmodemException(ZmodemException.Kind.PROTOCOL, "unexpected " + answer
@@ -263,6 +268,19 @@ public final class ZmodemSender extends ZmodemPeer<ZmodemSender> {
             return in.header(millis, null);
         } catch (ZFrameReader.Timeout e) {
             return null;
+        }
+    }
+
+    /**
+     * A receiver that skipped the file waits for the next one: ZFIN tells it there is none, so its
+     * rz ends now and the shell is back, instead of after rz's own timeouts (minutes of a call at
+     * the surface). Failing that, the skip is still what is reported.
+     */
+    private void endAfterSkip() {
+        try {
+            finishSession();
+        } catch (IOException e) {
+            // the line is gone or garbled: the receiver times out on its own
         }
     }
 

@@ -94,6 +94,27 @@ class LrzszZmodemTest {
         }
     }
 
+    /**
+     * rz that cannot write the file skips it: our sender reports the skip and ends the session, so
+     * rz exits at once (before, it waited out its own timeouts, about two and a half minutes of a
+     * call at the surface, as ToVehicleEndToEndTest's glider did).
+     */
+    @Test
+    void aSkippedFileEndsTheReceiversSessionAtOnce() throws Exception {
+        Path src = tmp.resolve("src");
+        Path f = sampleFiles(src, 3000).get(0);
+        Path out = Files.createDirectories(tmp.resolve("rz-blocked"));
+        Files.createDirectories(out.resolve(f.getFileName().toString())); // a folder in the way
+        Path pty = tmp.resolve("ttyRZ-skip");
+        try (Socat socat = Socat.start(out, "pty,raw,echo=0,link=" + pty, "SYSTEM:'exec rz -q -y'", pty)) {
+            try (SerialLink link = SerialLink.open(LinkSettings.defaults(pty.toString()))) {
+                ZmodemException e = assertThrows(ZmodemException.class, () -> new ZmodemSender(link, 5000, null).send(SendFile.of(f)));
+                assertTrue(e.getMessage().contains("skipped"), e.getMessage());
+                socat.waitFor(Duration.ofSeconds(20)); // the line still open: rz ends because the session did
+            }
+        }
+    }
+
     /** The call drops once 40 % of the file has come; the next sz is asked from the part's length. */
     @Test
     void aCallCutAt40PercentIsResumedByTheNextCall() throws Exception {
