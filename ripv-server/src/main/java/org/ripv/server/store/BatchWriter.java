@@ -135,9 +135,17 @@ public final class BatchWriter<T> implements AutoCloseable {
     @Override
     public void close() {
         closed = true;
-        thread.interrupt();
+        // Woken by a marker, not at once by an interrupt: an interrupt landing inside a write to a
+        // file channel closes the channel (ClosedByInterruptException) and loses the batch being
+        // written, e.g. a vehicle's state saved just before a shutdown. Only a sink still waiting
+        // after a second (a store that does not answer) is interrupted.
+        queue.offer(new Sync(new CountDownLatch(1)));
         try {
-            thread.join(5000);
+            thread.join(1000);
+            if (thread.isAlive()) {
+                thread.interrupt();
+                thread.join(4000);
+            }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }

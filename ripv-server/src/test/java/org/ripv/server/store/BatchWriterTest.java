@@ -56,6 +56,32 @@ class BatchWriterTest {
         }
     }
 
+    /**
+     * Closing while a batch is being written lets the write finish uninterrupted: an interrupt
+     * inside a file channel's write loses the batch (ServerAwayTest's vehicle state, in CI).
+     */
+    @Test
+    void closeDoesNotInterruptAWriteInProgress() throws Exception {
+        CountDownLatch inside = new CountDownLatch(1);
+        java.util.concurrent.atomic.AtomicBoolean interrupted = new java.util.concurrent.atomic.AtomicBoolean();
+        List<Integer> seen = new CopyOnWriteArrayList<>();
+        BatchWriter<Integer> w = new BatchWriter<>("test-writer", 100, 10, (batch, dropped) -> {
+            inside.countDown();
+            try {
+                Thread.sleep(300); // a write under way, as a file channel's would be
+            } catch (InterruptedException e) {
+                interrupted.set(true);
+            }
+            seen.addAll(batch);
+        });
+        w.offer(1);
+        assertThat(inside.await(5, TimeUnit.SECONDS)).isTrue();
+        w.offer(2);
+        w.close();
+        assertThat(interrupted).isFalse();
+        assertThat(seen).containsExactly(1, 2);
+    }
+
     @Test
     void aSinkThatThrowsLosesOnlyItsBatch() {
         List<Integer> seen = new CopyOnWriteArrayList<>();
