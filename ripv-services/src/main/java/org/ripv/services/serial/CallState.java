@@ -12,12 +12,17 @@ import org.ripv.messages.VehicleEvent;
  * A vehicle link's call: whether the vehicle is on a call, dived (the call ended normally) or
  * lost (the link failed), since when, how many calls, and the last position; and the events that
  * say so. SURFACED waits a moment for the surface dialog's GPS line so that it carries the
- * position (at most {@link #SURFACE_WAIT_NANOS}, or until the call ends or someone sends a command).
+ * position: at most {@link #SURFACE_WAIT_NANOS} from the vehicle's first words on the call (or
+ * {@link #SILENT_WAIT_NANOS} from the connect when it says nothing), or until the call ends or
+ * someone sends a command. The wait counts from the first words, not the connect, because over a
+ * modem or Iridium the dialog starts seconds after the carrier, and a stalled moment between the
+ * connect and the dialog must not cost SURFACED its position.
  *
  * <p>Not thread-safe: {@link VehicleConsole} calls it under its lock.
  */
 final class CallState {
     static final long SURFACE_WAIT_NANOS = 5_000_000_000L;
+    static final long SILENT_WAIT_NANOS = 30_000_000_000L;
     private static final DateTimeFormatter TIME = DateTimeFormatter.ofPattern("HH:mm:ss 'UTC'", Locale.ROOT)
             .withZone(ZoneOffset.UTC);
 
@@ -32,6 +37,7 @@ final class CallState {
     private String why = "";
     private String how = "";
     private boolean pending;
+    private boolean heard;
     private long pendingSince;
 
     CallState(String mailbox, Consumer<ConsoleEntry> out) {
@@ -62,7 +68,16 @@ final class CallState {
         this.how = how;
         this.why = "";
         pending = true;
+        heard = false;
         pendingSince = nowNanos;
+    }
+
+    /** The vehicle said something: on a new call, SURFACED's wait for the GPS line starts now. */
+    void heard(long nowNanos) {
+        if (pending && !heard) {
+            heard = true;
+            pendingSince = nowNanos;
+        }
     }
 
     /** A GPS line was seen; during the surface dialog it completes SURFACED. */
@@ -75,7 +90,7 @@ final class CallState {
 
     /** SURFACED goes out without a position when no GPS line came in time. */
     void tick(long nowNanos) {
-        if (pending && nowNanos - pendingSince > SURFACE_WAIT_NANOS) {
+        if (pending && nowNanos - pendingSince > (heard ? SURFACE_WAIT_NANOS : SILENT_WAIT_NANOS)) {
             surfaced();
         }
     }

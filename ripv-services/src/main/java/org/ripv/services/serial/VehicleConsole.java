@@ -61,6 +61,7 @@ final class VehicleConsole {
     /** Text from the vehicle. */
     synchronized void text(byte[] bytes, int offset, int length) {
         lastInput = System.nanoTime();
+        call.heard(lastInput);
         lines.feed(bytes, offset, length, this::line);
     }
 
@@ -107,6 +108,7 @@ final class VehicleConsole {
         }
         if (calls == Calls.DIALOG && !call.onCall() && settings.surface().matcher(text).find()) {
             call.started("surface dialog: " + text, now);
+            call.heard(now);
         }
         GpsFix.parse(text).ifPresent(call::position);
         if (settings.alert().matcher(text).find()) {
