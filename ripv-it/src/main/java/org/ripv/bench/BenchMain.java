@@ -24,8 +24,6 @@ public final class BenchMain {
             "  ymodem     YMODEM over a baud-paced relay as a share of the line rate, and against lrzsz",
             "             [BAUD:BYTES ...], e.g. 9600:65536 115200:1048576",
             String.join("\n", ZmodemBench.USAGE),
-            "  zmodem     ZMODEM over a baud-paced relay against lrzsz sz/rz; over an Iridium-like link (2,400 baud,",
-            "             1 s latency, a drop every 60 s) the calls to move 100 KB resuming, against YMODEM from zero",
             "  console    the live console: 1,000 watchers of a vehicle printing 50 lines/s against one watcher,",
             "             with one more that never reads, and the same fan-out with no RIPV (the machine's floor)",
             "             [--watchers N] [--rate N] [--seconds S] [--baseline-seconds S] [--warmup S] [--raw-threads N]",

@@ -36,6 +36,8 @@ final class VehicleConsole {
     private final LineRate rate;
     private final CallState call;
     private long lastInput = System.nanoTime();
+    private long lastText;
+    private boolean spoken;
     private long lastSkipReport = System.nanoTime();
     private long linesSinceReport;
     private String echo;
@@ -61,6 +63,8 @@ final class VehicleConsole {
     /** Text from the vehicle. */
     synchronized void text(byte[] bytes, int offset, int length) {
         lastInput = System.nanoTime();
+        lastText = lastInput;
+        spoken = true;
         call.heard(lastInput);
         lines.feed(bytes, offset, length, this::line);
     }
@@ -175,6 +179,9 @@ final class VehicleConsole {
     synchronized void callStarted(String how) {
         lastInput = System.nanoTime();
         call.started(how, lastInput);
+        if (spoken && lastInput - lastText < CallState.SURFACE_WAIT_NANOS) {
+            call.heard(lastText); // the carrier is polled: the dialog may have come in just before it rose
+        }
     }
 
     /** The call ended normally (DIVED) or the link failed (LINK_LOST). */
