@@ -68,6 +68,15 @@ public final class CallsBench implements Callable<Integer> {
         }
     }
 
+    /**
+     * Where the links listen and the vehicles call. Not 127.0.0.1: the links take ports the kernel
+     * picks, and in a JVM or on a machine that ran other tests a stray client still redialling
+     * some 127.0.0.1 port of an earlier test (an outbound link reconnecting every 300 ms) can land on
+     * one, hold it for a second and leave the vehicle that calls then refused (CI saw "v074: call
+     * failed: Broken pipe" and a SURFACED with no position). Loopback answers on all of 127/8.
+     */
+    static final String ADDRESS = "127.0.0.2";
+
     /** Collects what the service publishes. */
     private static final class Sink implements ReplySink {
         final Map<String, AtomicLong> lastSeq = new ConcurrentHashMap<>();
@@ -112,7 +121,7 @@ public final class CallsBench implements Callable<Integer> {
     public static Result run(int n, Duration spread, Duration surface, int linesPerSecond, Path work) throws Exception {
         List<VehicleLink> links = new ArrayList<>();
         for (int i = 0; i < n; i++) {
-            links.add(new VehicleLink(LinkSettings.defaults("listen://127.0.0.1:0"),
+            links.add(new VehicleLink(LinkSettings.defaults("listen://" + ADDRESS + ":0"),
                     CallSettings.defaults().withName(String.format(Locale.ROOT, "v%03d", i))));
         }
         SerialPortServer serial = SerialPortServer.withCalls("bench", links, null, false, work);
@@ -166,7 +175,7 @@ public final class CallsBench implements Callable<Integer> {
 
     private static void vehicle(String name, int port, long startAt, Duration surface, int linesPerSecond, AtomicLong sent) {
         LockSupport.parkNanos(Math.max(0, startAt - System.nanoTime())); // the bench paces the calls
-        try (Socket s = new Socket("127.0.0.1", port)) {
+        try (Socket s = new Socket(ADDRESS, port)) {
             s.setTcpNoDelay(true);
             OutputStream out = s.getOutputStream();
             out.write(("\r\nGlider " + name + " at surface.\r\nVehicle Name: " + name
