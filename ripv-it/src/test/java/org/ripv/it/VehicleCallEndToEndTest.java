@@ -119,7 +119,8 @@ class VehicleCallEndToEndTest {
         assertThat(surfaced.text()).contains("call 1 (caller 127.0.0.1:");
         assertThat(surfaced.lat()).isCloseTo(41.63323, org.assertj.core.data.Offset.offset(1e-5)); // 4137.994 N
         assertThat(surfaced.lon()).isCloseTo(-70.53647, org.assertj.core.data.Offset.offset(1e-5)); // -7032.188 E
-        assertThat(a.texts()).anySatisfy(l -> assertThat(l).contains("MISSION1.LOG"));
+        // dir's output follows its COMMAND entry in pushes of their own: on a loaded machine a moment later
+        assertThat(a.await(e -> e.text().contains("MISSION1.LOG"), t)).as(String.join("\n", a.texts())).isTrue();
 
         awaitStatus(mailbox, "dived at");
         assertThat(a.await(e -> e.event() == org.ripv.messages.VehicleEvent.DIVED, t)).isTrue();
