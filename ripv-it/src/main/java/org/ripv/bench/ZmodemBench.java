@@ -158,9 +158,10 @@ public final class ZmodemBench {
         }
         Path file = dir.resolve("bench.bin");
         Files.write(file, data);
+        long escapes = escaped(data);
         System.out.printf(Locale.ROOT, "sending %s: %,d bytes, %.2f %% of them escaped by ZMODEM (the line's ceiling %.2f %%)%n%n",
-                source == null ? "random bytes" : source, data.length, 100.0 * escaped(data) / data.length,
-                100.0 * data.length / (data.length + escaped(data) + 6.0 * Math.ceil(data.length / 1024.0)));
+                source == null ? "random bytes" : source, data.length, 100.0 * escapes / data.length,
+                100.0 * data.length / (data.length + escapes + 6.0 * Math.ceil(data.length / 1024.0)));
         System.out.println("| pair (sender → receiver) | baud | bytes | seconds | bytes/s | of line rate | RIPV CPU s | load | identical |");
         System.out.println("| --- | --- | --- | --- | --- | --- | --- | --- | --- |");
         System.out.println(bench.ours(baud, file).markdown());
