@@ -134,6 +134,11 @@ final class Connection implements Link {
     }
 
     @Override
+    public boolean buffersDeeply() {
+        return link.buffersDeeply();
+    }
+
+    @Override
     public boolean carrier() {
         return link.carrier();
     }

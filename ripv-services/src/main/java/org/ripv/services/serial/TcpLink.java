@@ -83,6 +83,12 @@ public final class TcpLink implements Link {
         return false;
     }
 
+    /** The kernel's socket buffers take megabytes; the modem at the far end drains them at its own rate. */
+    @Override
+    public boolean buffersDeeply() {
+        return true;
+    }
+
     @Override
     public boolean carrier() {
         return true;

@@ -24,6 +24,17 @@ public interface ByteLink {
     default void flush() throws IOException {
     }
 
+    /**
+     * True when the link holds far more than the line carries in a frame timeout: a TCP socket in
+     * front of a modem takes a whole file at once while the line needs minutes for it. A ZMODEM
+     * sender on such a link keeps in step with its receiver's acknowledgements (a window), or its
+     * wait for the answer to the end of the file would outlast the timeout. A serial port's few
+     * buffered bytes keep a sender in step by themselves.
+     */
+    default boolean buffersDeeply() {
+        return false;
+    }
+
     /** Writes all of {@code bytes}. */
     default void write(byte[] bytes) throws IOException {
         write(bytes, 0, bytes.length);
