@@ -28,9 +28,10 @@ final class WebWatchers extends SelectorReaders<WebWatchers.Conn> {
     /** What a page needs to open its socket: where, its cookie, its Origin and its CSRF token. */
     record Page(String host, int port, String cookie, String origin, String csrf) {}
 
-    /** One socket, and how many skip markers it saw. */
+    /** One socket, and how many frames and skip markers it saw. */
     static final class Conn extends SelectorReaders.Socket {
         volatile long markers;
+        volatile long frames;
 
         Conn(SocketChannel ch, LongConsumer delays) {
             super(ch, delays);
@@ -75,6 +76,7 @@ final class WebWatchers extends SelectorReaders<WebWatchers.Conn> {
             b.get(p, 0, n);
             lastPayloadBytes = head + n;
             RawWatchers.scan(p, n, now, c.delays);
+            c.frames++;
             if (contains(p, n, SKIPPED)) {
                 c.markers++;
             }

@@ -367,6 +367,11 @@ public final class ConsoleHub implements AutoCloseable {
         return watchers.values().stream().flatMap(List::stream).mapToLong(Watcher::backlog).sum();
     }
 
+    /** Entries skipped so far for the watchers here now, each too slow to take them (tests and the benchmark). */
+    public long skippedTotal() {
+        return watchers.values().stream().flatMap(List::stream).mapToLong(Watcher::totalSkipped).sum();
+    }
+
     /** A MailBox's call state, or null when it has never published anything. */
     public SessionState state(String mailbox) {
         return states.state(mailbox);
