@@ -2,8 +2,13 @@ package org.ripv.it.security;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import java.io.IOException;
+import java.nio.file.FileVisitResult;
 import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
+import java.nio.file.SimpleFileVisitor;
+import java.nio.file.attribute.BasicFileAttributes;
 import java.nio.file.attribute.PosixFilePermissions;
 import java.time.Duration;
 import java.util.ArrayList;
@@ -58,14 +63,39 @@ class FilePermissionsAttackTest {
             }
             List<String> open = new ArrayList<>();
             for (String area : List.of("transcripts", "audit", "workflows")) {
-                try (var all = Files.walk(data.resolve(area))) {
-                    for (Path p : (Iterable<Path>) all::iterator) {
-                        String mode = PosixFilePermissions.toString(Files.getPosixFilePermissions(p));
-                        if (!mode.equals(Files.isDirectory(p) ? "rwx------" : "rw-------")) {
-                            open.add(data.relativize(p) + " " + mode);
+                Files.walkFileTree(data.resolve(area), new SimpleFileVisitor<>() {
+                    @Override
+                    public FileVisitResult preVisitDirectory(Path d, BasicFileAttributes attrs) throws IOException {
+                        check(d, "rwx------");
+                        return FileVisitResult.CONTINUE;
+                    }
+
+                    @Override
+                    public FileVisitResult visitFile(Path f, BasicFileAttributes attrs) throws IOException {
+                        check(f, "rw-------");
+                        return FileVisitResult.CONTINUE;
+                    }
+
+                    /** The server writes a file beside its place and renames it: one listed a moment ago may be gone. */
+                    @Override
+                    public FileVisitResult visitFileFailed(Path f, IOException e) throws IOException {
+                        if (e instanceof NoSuchFileException) {
+                            return FileVisitResult.CONTINUE;
+                        }
+                        throw e;
+                    }
+
+                    private void check(Path p, String expected) throws IOException {
+                        try {
+                            String mode = PosixFilePermissions.toString(Files.getPosixFilePermissions(p));
+                            if (!mode.equals(expected)) {
+                                open.add(data.relativize(p) + " " + mode);
+                            }
+                        } catch (NoSuchFileException gone) {
+                            // renamed into place since it was listed; its new name is checked in its own turn
                         }
                     }
-                }
+                });
             }
             assertThat(open).as("readable by other accounts (umask here: group and others may read new files)").isEmpty();
         }
