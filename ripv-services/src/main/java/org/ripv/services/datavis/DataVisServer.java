@@ -192,6 +192,20 @@ public final class DataVisServer extends RIPVService {
 
         @Override
         public Reply execute(Request request) throws Exception {
+            plotCancel.start();
+            try {
+                Reply reply = run(request);
+                if (plotCancel.asked()) {
+                    // the operator was told the cancel was taken; the reply says so even if the work had ended
+                    throw new ServiceException(ErrorCode.CANCELLED, "'" + request.command().strip() + "' cancelled");
+                }
+                return reply;
+            } finally {
+                plotCancel.end();
+            }
+        }
+
+        private Reply run(Request request) throws Exception {
             String line = request.command().strip();
             if (line.equalsIgnoreCase("help")) {
                 return Reply.ok("vis:NAME [out=NAME] [title=\"...\"] [xlabel=\"...\"] [ylabel=\"...\"] [legend=a|b|c] "
@@ -251,6 +265,9 @@ public final class DataVisServer extends RIPVService {
 
     private Reply plot(Request request, VisCommand vis, Attachment file) throws Exception {
         long t0 = System.nanoTime();
+        if (plotCancel.asked()) {
+            throw cancelled(request, file);
+        }
         if (config.worker() == WorkerMode.BUILTIN && (builtin == null || !builtin.isAlive())) {
             log.info("the built-in plot worker had stopped (or a plot was cancelled); starting it again");
             builtin = PlotWorker.start(dir);
@@ -280,9 +297,7 @@ public final class DataVisServer extends RIPVService {
             // A cancel taken as the worker finished still cancels: the operator was told it was
             // taken, and the worker has been stopped all the same.
             if (plotCancel.asked()) {
-                log.info("vis:{} for {} was cancelled; the {} worker was stopped", file.name(), request.user(), config.worker());
-                throw new ServiceException(ErrorCode.CANCELLED, "plot of " + file.name() + " cancelled; the "
-                        + config.worker() + " worker was stopped and starts again for the next plot");
+                throw cancelled(request, file);
             }
             if (!status.equals("1") && !status.isEmpty()) {
                 String why = status.startsWith("0") ? status.substring(1).strip() : status;
@@ -306,9 +321,14 @@ public final class DataVisServer extends RIPVService {
                     + file.name() + " to " + jpegName + " (" + bytes.length + " bytes) in " + ms + " ms with the "
                     + config.worker() + " worker", new ImageResult(jpegName, bytes, chart));
         } finally {
-            plotCancel.end();
             Exchange.clean(dir); // whatever happened, the next request starts from an empty exchange
         }
+    }
+
+    private ServiceException cancelled(Request request, Attachment file) {
+        log.info("vis:{} for {} was cancelled; the {} worker was stopped", file.name(), request.user(), config.worker());
+        return new ServiceException(ErrorCode.CANCELLED, "plot of " + file.name() + " cancelled; the "
+                + config.worker() + " worker was stopped and starts again for the next plot");
     }
 
     /**

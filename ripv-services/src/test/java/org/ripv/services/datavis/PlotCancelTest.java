@@ -1,8 +1,12 @@
 package org.ripv.services.datavis;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
+import java.nio.file.ClosedWatchServiceException;
+import java.nio.file.FileSystems;
 import java.nio.file.Path;
+import java.nio.file.WatchService;
 import java.util.Locale;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -43,5 +47,34 @@ class PlotCancelTest {
             VisHarness.decode(img.jpeg());
             assertThat(next.footer().replyText()).contains("3 rows");
         }
+    }
+
+    /**
+     * The server shows the MailBox busy as soon as the request starts, before the plot waits on its
+     * worker; a cancel in that moment was refused ("cannot stop ... while it runs"), seen in a
+     * clean-clone run of VehicleCancelEndToEndTest. It is taken, and the wait that follows ends at once.
+     */
+    @Test
+    void aCancelBeforeThePlotWaitsIsTakenAndItsWaitEndsAtOnce() throws Exception {
+        PlotCancel cancel = new PlotCancel();
+        assertThat(cancel.ask()).as("no request running: nothing to cancel").isFalse();
+        cancel.start();
+        assertThat(cancel.ask()).as("the request runs but does not wait yet").isTrue();
+        assertThat(cancel.asked()).isTrue();
+        try (WatchService watch = FileSystems.getDefault().newWatchService()) {
+            cancel.begin(watch);
+            assertThatThrownBy(watch::take).isInstanceOf(ClosedWatchServiceException.class);
+        }
+        cancel.end();
+        assertThat(cancel.ask()).as("the request is over").isFalse();
+        cancel.start();
+        assertThat(cancel.asked()).as("the next request starts uncancelled").isFalse();
+        try (WatchService watch = FileSystems.getDefault().newWatchService()) {
+            cancel.begin(watch);
+            assertThat(watch.poll()).as("its wait is open").isNull();
+            assertThat(cancel.ask()).isTrue();
+            assertThatThrownBy(watch::take).isInstanceOf(ClosedWatchServiceException.class);
+        }
+        cancel.end();
     }
 }
