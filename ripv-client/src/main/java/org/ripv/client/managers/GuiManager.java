@@ -19,6 +19,8 @@ import org.ripv.client.handlers.RipvErrorException;
 import org.ripv.client.managers.ClientModel.Connection;
 import org.ripv.client.managers.ClientModel.FileArea;
 import org.ripv.client.managers.ServiceModel.LineKind;
+import org.ripv.messages.ConsoleBatch;
+import org.ripv.messages.ErrorCode;
 import org.ripv.messages.FileListing;
 import org.ripv.messages.ImageResult;
 import org.ripv.messages.MailboxStatus;
@@ -47,7 +49,10 @@ import org.ripv.messages.TableResult;
  * <p>Parts. This class is the façade: it applies {@link GuiInterface} calls to the model and
  * hands the rest to package-private collaborators: {@link Session} (log-in, reconnect, periodic
  * refresh), {@link Requests} (sending, and which COM panel a reply belongs to),
- * {@link ReplyDispatcher} (SID/FID dispatch) and {@link Transfers} (uploads, downloads, saves).
+ * {@link ReplyDispatcher} (SID/FID dispatch), {@link Transfers} (uploads, downloads, saves),
+ * {@link WorkflowActions} (workflow queues), {@link MailboxTargets} (tabs, MailBoxes, targets and
+ * the vehicle the window opens on) and {@link ConsoleRouter} (replies, progress, tables, pictures
+ * and console lines to the panels that show them).
  */
 public final class GuiManager implements GuiInterface, AutoCloseable {
 
@@ -71,8 +76,9 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
     private final Requests requests;
     private final ReplyDispatcher dispatcher;
     private final Transfers transfers;
-    private final DesktopNotice desktop;
     private final WorkflowActions workflows;
+    private final MailboxTargets targets;
+    private final ConsoleRouter router;
 
     /** A manager for the Swing GUI: changes go to the event thread. */
     public GuiManager(ClientModel model) {
@@ -97,8 +103,9 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
         this.requests = new Requests(model, io, session::connection, this);
         this.dispatcher = new ReplyDispatcher(this, requests);
         this.transfers = new Transfers(model, ui, io, session::connection, this, requests);
-        this.desktop = new DesktopNotice(model::notice);
         this.workflows = new WorkflowActions(model.workflows(), ui, io, session::connection);
+        this.targets = new MailboxTargets(model, ui, requests);
+        this.router = new ConsoleRouter(model, ui, requests, new DesktopNotice(model::notice));
     }
 
     private static ThreadFactory named(String prefix) {
@@ -250,7 +257,7 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
      * Sends a request whose final reply goes to the returned future only, not to the panels (the
      * Fleet view's queries to the DatabaseServer: no DAB tab opens for them). Any thread.
      */
-    public java.util.concurrent.CompletableFuture<OutgoingServerMessage> ask(String mailbox, String body) {
+    public CompletableFuture<OutgoingServerMessage> ask(String mailbox, String body) {
         return requests.ask(mailbox, body);
     }
 
@@ -303,83 +310,22 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
 
     @Override
     public void showServices(List<ServiceDescriptor> services) {
-        ui.execute(() -> {
-            if (model.services(services)) {
-                // A new service: its MailBoxes now, not at the next periodic refresh.
-                requests.background("?mailboxes");
-            }
-        });
+        targets.services(services);
     }
 
     @Override
     public void showMailboxes(List<MailboxStatus> mailboxes) {
-        ui.execute(() -> {
-            for (ServiceModel s : model.services()) {
-                List<MailboxStatus> mine = mailboxes.stream().filter(m -> belongsTo(m.address(), s.name())).toList();
-                boolean pickFirst = s.target().isEmpty() && !mine.isEmpty();
-                if (!mine.equals(s.mailboxes())) {
-                    s.mailboxes(mine);
-                    model.fire(ClientModel.Kind.MAILBOXES, s.name());
-                    model.fire(ClientModel.Kind.COM, s.name());
-                }
-                if (pickFirst) {
-                    // One obvious target saves a click (a vehicle before a plain port); the MAM tree still shows the choice.
-                    selectMailbox(s.name(), mine.stream().filter(GuiManager::isVehicle).findFirst().orElse(mine.get(0)).address());
-                }
-            }
-            openOnFirstVehicle();
-        });
-    }
-
-    /** A MailBox the operator calls a vehicle: one with a call state (it has published call events). */
-    static boolean isVehicle(MailboxStatus m) {
-        return m.session() != null;
-    }
-
-    /**
-     * The window opens on the first vehicle: the first service with a vehicle MailBox, else the first
-     * SerialPortServer, with that MailBox its target. Decided once, when the first MailBoxes come.
-     */
-    private void openOnFirstVehicle() {
-        if (!model.opening().isEmpty()) {
-            return;
-        }
-        ServiceModel chosen = null;
-        for (ServiceModel s : model.services()) {
-            if (s.mailboxes().stream().anyMatch(GuiManager::isVehicle)) {
-                chosen = s;
-                break;
-            }
-            if (chosen == null && s.descriptor() != null && org.ripv.messages.Ids.SID_SERIAL.equals(s.descriptor().sid())
-                    && !s.mailboxes().isEmpty()) {
-                chosen = s;
-            }
-        }
-        if (chosen != null && model.openOn(chosen.name())) {
-            MailboxStatus first = chosen.mailboxes().stream().filter(GuiManager::isVehicle).findFirst()
-                    .orElse(chosen.mailboxes().get(0));
-            if (!first.address().equals(chosen.target())) {
-                selectMailbox(chosen.name(), first.address());
-            }
-            model.fire(ClientModel.Kind.SERVICES, null);
-        }
+        targets.mailboxes(mailboxes);
     }
 
     @Override
     public void showMailboxStatus(MailboxStatus status) {
-        ui.execute(() -> {
-            for (ServiceModel s : model.services()) {
-                if (belongsTo(status.address(), s.name())) {
-                    s.status(status);
-                    model.fire(ClientModel.Kind.MAILBOXES, s.name());
-                    model.fire(ClientModel.Kind.COM, s.name());
-                }
-            }
-        });
+        targets.status(status);
     }
 
-    private static boolean belongsTo(String mailbox, String service) {
-        return mailbox.startsWith(service) && mailbox.length() > service.length();
+    @Override
+    public void showSession(SessionInfo session) {
+        targets.session(session);
     }
 
     @Override
@@ -393,79 +339,28 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
     }
 
     @Override
-    public void showSession(SessionInfo session) {
-        ui.execute(() -> {
-            model.session(session);
-            // A new connection (after a drop) watches nothing yet: watch the targets again.
-            for (ServiceModel m : model.services()) {
-                if (!m.target().isEmpty()) {
-                    requests.send("", "?watch " + m.target(), Priority.NORMAL, null);
-                }
-            }
-        });
-    }
-
-    @Override
     public void showReply(String service, LineKind kind, String text) {
-        ui.execute(() -> {
-            ServiceModel m = service == null ? null : model.service(service);
-            if (m == null) {
-                // The service vanished meanwhile (or never registered): say it in the status bar.
-                model.notice((service == null ? "" : service + ": ") + text, kind == LineKind.ERROR);
-                return;
-            }
-            m.append(kind, text);
-            model.fire(ClientModel.Kind.COM, service);
-            if (kind == LineKind.ERROR || kind == LineKind.REPLY || kind == LineKind.NOTICE) {
-                // The status bar shows the latest outcome: a later success replaces an error.
-                model.notice(service + ": " + text, kind == LineKind.ERROR);
-            }
-        });
+        router.reply(service, kind, text);
     }
 
     @Override
     public void showProgress(String service, Progress progress) {
-        if (service == null) {
-            return;
-        }
-        ui.execute(() -> {
-            ServiceModel m = model.service(service);
-            if (m != null && !Objects.equals(m.progress(), progress)) {
-                m.progress(progress);
-                model.fire(ClientModel.Kind.COM, service);
-            }
-        });
+        router.progress(service, progress);
     }
 
     @Override
     public void requestStarted(String service, long messageId, String command) {
-        ui.execute(() -> {
-            ServiceModel m = model.service(service);
-            if (m != null) {
-                m.started(messageId, command, System.currentTimeMillis());
-                model.fire(ClientModel.Kind.COM, service);
-            }
-        });
+        router.started(service, messageId, command);
     }
 
     @Override
     public void requestProgress(String service, long messageId, Progress progress) {
-        ui.execute(() -> {
-            ServiceModel m = service == null ? null : model.service(service);
-            if (m != null && m.progress(messageId, progress)) {
-                model.fire(ClientModel.Kind.COM, service);
-            }
-        });
+        router.progress(service, messageId, progress);
     }
 
     @Override
-    public void requestEnded(String service, long messageId, org.ripv.messages.ErrorCode code) {
-        ui.execute(() -> {
-            ServiceModel m = model.service(service);
-            if (m != null && m.ended(messageId) != null) {
-                model.fire(ClientModel.Kind.COM, service);
-            }
-        });
+    public void requestEnded(String service, long messageId, ErrorCode code) {
+        router.ended(service, messageId, code);
     }
 
     /**
@@ -475,97 +370,37 @@ public final class GuiManager implements GuiInterface, AutoCloseable {
      * status bar and the request runs on. Call on the UI thread.
      */
     public void cancel(String service, long messageId) {
-        ServiceModel m = model.service(service);
-        if (m == null || !m.cancelling(messageId, true)) {
-            return;
-        }
-        model.fire(ClientModel.Kind.COM, service);
-        requests.call("?cancel " + messageId, (reply, e) -> {
-            boolean refused = e != null || reply.status() == org.ripv.messages.Status.ERROR;
-            if (e != null) {
-                showNotice("'?cancel " + messageId + "' got no reply: " + Failures.describe(e), true);
-            }
-            if (refused) {
-                ui.execute(() -> {
-                    ServiceModel now = model.service(service);
-                    if (now != null && now.cancelling(messageId, false)) {
-                        model.fire(ClientModel.Kind.COM, service);
-                    }
-                });
-            } else if (!reply.footer().replyText().isBlank()) {
-                showNotice(reply.footer().replyText(), false);
-            }
-        });
+        router.cancel(service, messageId);
     }
 
     @Override
     public void showTable(String service, TableResult table) {
-        ui.execute(() -> {
-            ServiceModel m = service == null ? null : model.service(service);
-            if (m != null) {
-                m.addTable(table);
-                model.fire(ClientModel.Kind.TABLES, service);
-            }
-        });
+        router.table(service, table);
     }
 
     @Override
     public void showImage(String service, ImageResult image, BufferedImage decoded) {
-        ui.execute(() -> {
-            ServiceModel m = service == null ? null : model.service(service);
-            if (m != null) {
-                m.picture(new ServiceModel.Picture(image, decoded));
-                model.fire(ClientModel.Kind.IMAGE, service);
-            }
-        });
+        router.image(service, image, decoded);
     }
 
     /** Fetches older lines of a MailBox's console from the server's transcript. Any thread. */
     public void loadHistory(String mailbox) {
-        if (mailbox != null && !mailbox.isEmpty()) {
-            requests.send("", "?history " + mailbox + " --last " + org.ripv.client.managers.ConsoleModel.MAX_ENTRIES / 5,
-                    Priority.NORMAL, null);
-        }
+        router.loadHistory(mailbox);
     }
 
     @Override
-    public void showHistory(org.ripv.messages.ConsoleBatch batch) {
-        ui.execute(() -> model.console().addHistory(batch));
+    public void showHistory(ConsoleBatch batch) {
+        router.history(batch);
     }
 
     @Override
-    public void showConsole(org.ripv.messages.ConsoleBatch batch, boolean live) {
-        ui.execute(() -> {
-            model.console().add(batch);
-            for (ServiceModel s : model.services()) {
-                if (belongsTo(batch.mailbox(), s.name()) && s.console(batch.mailbox(), batch.entries())) {
-                    model.fire(ClientModel.Kind.MAILBOXES, s.name()); // the badges in SEL and MAM
-                    model.fire(ClientModel.Kind.COM, s.name()); // and SS, from the same state
-                }
-            }
-            if (live) {
-                for (org.ripv.messages.ConsoleEntry e : batch.entries()) {
-                    if (e.kind() == org.ripv.messages.ConsoleEntry.Kind.EVENT
-                            && (e.event() == org.ripv.messages.VehicleEvent.WORKFLOW_DONE
-                            || e.event() == org.ripv.messages.VehicleEvent.WORKFLOW_DONE_WITH_ERRORS
-                            || e.event() == org.ripv.messages.VehicleEvent.WORKFLOW_FAILED)) {
-                        String vehicle = e.mailbox().substring(e.mailbox().lastIndexOf('>') + 1);
-                        model.notice(vehicle + " " + e.event() + (e.text().isEmpty() ? "" : ": " + e.text()),
-                                e.event() != org.ripv.messages.VehicleEvent.WORKFLOW_DONE);
-                    }
-                    if (ConsoleModel.notifies(e)) {
-                        String vehicle = e.mailbox().substring(e.mailbox().lastIndexOf('>') + 1);
-                        desktop.show("RIPV: " + vehicle + " " + e.event(), e.text().isEmpty() ? e.mailbox() : e.text(),
-                                e.event() == org.ripv.messages.VehicleEvent.ALERT);
-                    }
-                }
-            }
-        });
+    public void showConsole(ConsoleBatch batch, boolean live) {
+        router.console(batch, live);
     }
 
     @Override
     public void showNotice(String text, boolean error) {
-        ui.execute(() -> model.notice(text, error));
+        router.notice(text, error);
     }
 
     @Override
