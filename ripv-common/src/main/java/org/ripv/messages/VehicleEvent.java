@@ -28,5 +28,9 @@ public enum VehicleEvent {
      */
     INGEST_WAITING,
     /** A file that waited for its sensor-list cache was ingested once the cache arrived. */
-    INGEST_RELEASED
+    INGEST_RELEASED,
+    /** A DatabaseServer refused a file (not a Slocum file, or broken): nothing of it stored; the text says why. */
+    INGEST_REFUSED,
+    /** A file whose bytes a DatabaseServer had stored already (fetched again): nothing added. */
+    INGEST_REPEATED
 }

@@ -23,7 +23,8 @@ import org.slf4j.LoggerFactory;
  * Automatic ingest: when a SerialPortServer reply puts Slocum DBA files (recognised by their first
  * line, not their names) in the download directory, the server sends {@code ingest NAME...} to a
  * DatabaseServer MailBox on the fetching user's behalf, tells that user (PROGRESS), and adds the
- * result to the download's own OK reply. On by default, per vehicle ({@link IngestSettings}).
+ * result to the download's own OK reply, which stays OK whatever the ingest made of the files
+ * ({@link IngestVerdict}). On by default, per vehicle ({@link IngestSettings}).
  */
 public final class DataLoop {
     private static final Logger log = LoggerFactory.getLogger(DataLoop.class);
@@ -106,7 +107,7 @@ public final class DataLoop {
         int fetched = files.size();
         if (database == null) {
             log.warn("not ingesting {} for {}: no DatabaseServer is registered", names, user);
-            send.accept(IngestVerdict.failed(reply, fetched, 0, "not ingested: no DatabaseServer is registered"));
+            send.accept(IngestVerdict.notIngested(reply, fetched, "not ingested: no DatabaseServer is registered"));
             return true;
         }
         String what = names.size() == 1 ? names.get(0) : names.size() + " Slocum files";
@@ -115,12 +116,13 @@ public final class DataLoop {
                 .whenComplete((f, e) -> {
                     OutgoingServerMessage verdict;
                     if (e != null) {
-                        verdict = IngestVerdict.failed(reply, fetched, 0, "not ingested: " + e);
-                    } else if (f.status() == Status.OK) {
+                        verdict = IngestVerdict.notIngested(reply, fetched, "not ingested: " + e);
+                    } else if (f.status() == Status.OK || f.replyText().lines().anyMatch(IngestVerdict::notIngested)) {
+                        // per-file lines: some files refused or stored already, each said so
                         verdict = IngestVerdict.ingested(reply, fetched, names.size(), database, f.replyText());
                     } else {
-                        verdict = IngestVerdict.failed(reply, fetched, names.size() - IngestVerdict.refused(f.replyText()),
-                                "not ingested (" + f.errorCode() + "): " + f.replyText());
+                        verdict = IngestVerdict.notIngested(reply, fetched, "not ingested (" + f.errorCode() + "): "
+                                + f.replyText());
                     }
                     log.info("automatic ingest of {} for {}: {}", names, user, verdict.footer().replyText().replace('\n', ' '));
                     send.accept(verdict);

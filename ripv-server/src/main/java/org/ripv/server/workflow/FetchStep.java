@@ -24,9 +24,9 @@ import org.ripv.server.files.FileNames;
  * {@code ymodem:get}: lists the vehicle's files unless every name is literal and {@code all} is
  * given, picks the names and glob matches not fetched before with the same size, and fetches
  * them one file per request, so a cut call costs only the file it cut. Each file fetched is read
- * back from the download store for its size and SHA-256. When the server's automatic ingest
- * refused a file, the file is still recorded and fetching goes on, but the step fails:
- * "fetched 3, ingested 0 of 3: …".
+ * back from the download store for its size and SHA-256. The step's verdict is the transfer's:
+ * a file the server's automatic ingest refused or had stored already is fetched all the same,
+ * and the step is OK with that file's {@code note:} line in its output ({@link IngestVerdict}).
  */
 final class FetchStep {
     private final Workflows workflows;
@@ -54,9 +54,6 @@ final class FetchStep {
         StringBuilder out = new StringBuilder();
         List<Receipt.FileRecord> files = new ArrayList<>();
         int skipped = 0;
-        int dbaFiles = 0;
-        int ingested = 0;
-        List<String> notIngested = new ArrayList<>();
         for (String name : wanted) {
             Long size = listing.get(name);
             try {
@@ -70,29 +67,16 @@ final class FetchStep {
             OutgoingServerMessage r = requests.send(e, clientId, mailbox, step.transferWord() + " " + name, step.timeout());
             Outcome o = Outcome.judged(step, r);
             out.append(r.footer().replyText().strip()).append('\n');
-            // A file that arrived but was not ingested is stored and recorded; the step fails once
-            // every file is fetched (the call's time is best spent fetching), not at the first.
             Optional<IngestVerdict.Counts> counts = r.footer().result() instanceof FileListing
                     ? IngestVerdict.counts(r.footer().replyText()) : Optional.empty();
-            if (!o.ok() && counts.isEmpty()) {
+            if (!o.ok()) {
                 return new Outcome(false, false, false, out.toString(), name + ": " + o.error(), files);
             }
             String failed = record(r, name, size, files, fetchedNow);
             if (failed != null) {
                 return new Outcome(false, false, false, out.toString(), failed, files);
             }
-            if (counts.isPresent()) {
-                dbaFiles += counts.get().fetched();
-                ingested += counts.get().ingested();
-                tally.ingested(counts.get().ingested());
-            }
-            if (!o.ok()) {
-                notIngested.add(name + ": " + (counts.get().why().isEmpty() ? o.error() : counts.get().why()));
-            }
-        }
-        if (!notIngested.isEmpty()) {
-            return new Outcome(false, false, false, out.toString(), "fetched " + files.size() + ", ingested " + ingested
-                    + " of " + dbaFiles + ": " + String.join("\n", notIngested), files);
+            counts.ifPresent(c -> tally.ingested(c.ingested()));
         }
         if (wanted.isEmpty() || files.isEmpty()) {
             out.append(wanted.isEmpty() ? "no file on the vehicle matches " + String.join(" ", step.names())

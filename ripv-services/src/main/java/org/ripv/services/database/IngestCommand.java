@@ -155,6 +155,9 @@ final class IngestCommand {
                 }
                 DbaIngest.Outcome o = store(ingest, f, request.user());
                 lines.add(o.describe());
+                if (o.duplicate()) {
+                    notices.repeated(f.name() + ": " + o.describe(), request.user());
+                }
                 values += o.duplicate() ? 0 : o.values();
                 log.info("{} ingest {} for {}: {} in {} ms", target.handle(), f.name(), request.user(), o.describe(),
                         (System.nanoTime() - t0) / 1_000_000);
@@ -166,14 +169,17 @@ final class IngestCommand {
             } catch (DbaFormatException | org.ripv.services.ingest.SlocumFormatException | IllegalArgumentException e) {
                 refused++;
                 lines.add(f.name() + ": refused, nothing stored: " + e.getMessage());
+                notices.refused(lines.get(lines.size() - 1), request.user());
                 log.info("{} ingest {} for {} refused: {}", target.handle(), f.name(), request.user(), e.getMessage());
             } catch (SQLException e) {
                 refused++;
                 lines.add(f.name() + ": the database failed, nothing stored: " + DatabaseHandler.describe(e));
+                notices.refused(lines.get(lines.size() - 1), request.user());
                 log.warn("{} ingest {} failed: {}", target.handle(), f.name(), DatabaseHandler.describe(e));
             } catch (IOException | RuntimeException e) {
                 refused++;
                 lines.add(f.name() + ": could not be read, nothing stored: " + e);
+                notices.refused(lines.get(lines.size() - 1), request.user());
                 log.warn("{} ingest {} failed", target.handle(), f.name(), e);
             }
             if (ordered.size() > 1) {

@@ -90,6 +90,11 @@ public final class BinaryCycles implements Cycles {
     }
 
     @Override
+    public String leftOut() {
+        return reader.leftOut();
+    }
+
+    @Override
     public void close() throws IOException {
         reader.close();
     }

@@ -27,6 +27,11 @@ public interface Cycles extends AutoCloseable {
     /** Position values that are not DDMM.MMMM within range. */
     long impossible();
 
+    /** What a file cut short left out once {@link #next} returned false ({@link SlocumBinaryReader#leftOut()}); empty if nothing. */
+    default String leftOut() {
+        return "";
+    }
+
     @Override
     void close() throws IOException;
 }

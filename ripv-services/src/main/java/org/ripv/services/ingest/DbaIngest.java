@@ -47,9 +47,11 @@ public final class DbaIngest {
      * @param merged     rows whose cycle (vehicle, segment, time) was stored already, by an earlier file
      *                   of the same segment (a {@code .sbd} before its {@code .dbd}) or earlier in this
      *                   one: their values went into that cycle instead of a new one
+     * @param leftOut    what a file cut short of its end left out ({@link Cycles#leftOut()}), empty if nothing
      */
     public record Outcome(String name, String dbaName, String vehicle, long fileId, boolean duplicate, long rows,
-                          int sensors, long values, long positions, long noFix, long impossible, long untimed, long merged) {
+                          int sensors, long values, long positions, long noFix, long impossible, long untimed, long merged,
+                          String leftOut) {
         /** "cp_388-2016-012-0-0: 23 rows, 52 sensors, 296 values, 2 positions", and what else is worth saying. */
         public String describe() {
             if (duplicate) {
@@ -69,6 +71,9 @@ public final class DbaIngest {
             if (merged > 0) {
                 b.append(" (").append(merged).append(" of the rows' cycles were stored already: their values were merged"
                         + " into them, not stored twice)");
+            }
+            if (!leftOut.isEmpty()) {
+                b.append(" (").append(leftOut).append(')');
             }
             return b.toString();
         }
@@ -179,7 +184,7 @@ public final class DbaIngest {
                 }
                 String dba = rs.getString(2);
                 return new Outcome(name, dba == null ? name : dba, rs.getString(3), rs.getLong(1), true, rs.getLong(4),
-                        rs.getInt(5), rs.getLong(6), rs.getLong(7), 0, 0, 0, 0);
+                        rs.getInt(5), rs.getLong(6), rs.getLong(7), 0, 0, 0, 0, "");
             }
         }
     }
@@ -246,7 +251,7 @@ public final class DbaIngest {
                 up.executeUpdate();
             }
             return new Outcome(name, dbaName, vehicle, fileId, false, r.rows() - untimed, h.sensors().size(), w.values(),
-                    w.positions(), r.noFix(), r.impossible(), untimed, w.merged());
+                    w.positions(), r.noFix(), r.impossible(), untimed, w.merged(), r.leftOut());
         }
     }
 

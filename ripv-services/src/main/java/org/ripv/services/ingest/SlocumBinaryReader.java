@@ -33,7 +33,9 @@ import java.util.regex.Pattern;
  * <p>As Teledyne's {@code dbd2asc} does, the first data cycle (the values the file starts from)
  * gives no row but the values later "same as before" states repeat. One cycle is in memory at a
  * time; anything that is not as the header promises throws a {@link SlocumFormatException} with
- * the byte offset.
+ * the byte offset. A file whose data cycles stop short of the end tag (a call cut over Iridium)
+ * is read, as {@code dbd2asc} reads it, up to its last whole cycle; {@link #leftOut()} says what
+ * was left. A file cut in its header or known-bytes cycle has no cycle to give and is refused.
  */
 public final class SlocumBinaryReader implements AutoCloseable {
     /** The label line's value in every binary file. */
@@ -61,6 +63,10 @@ public final class SlocumBinaryReader implements AutoCloseable {
     private boolean first = true;
     private boolean ended;
     private long cycles;
+    /** Why the data ended before the end tag, or empty (see {@link #leftOut()}). */
+    private String leftOut = "";
+    /** True while a data cycle is read: running out of bytes then cuts the file, it does not break it. */
+    private boolean inCycle;
 
     /**
      * Reads the header, the sensor list and the known-bytes cycle.
@@ -157,6 +163,15 @@ public final class SlocumBinaryReader implements AutoCloseable {
         return cycles;
     }
 
+    /**
+     * What a file cut short of its end tag left out, once {@link #next} has returned false: empty
+     * for a whole file, else e.g. "the file ends after 376 cycles without its end tag 'X' (17 bytes
+     * of a cut cycle left out): read up to its last whole cycle, as dbd2asc does".
+     */
+    public String leftOut() {
+        return leftOut;
+    }
+
     /** How many bytes of the (decompressed) file have been read. */
     public long offset() {
         return base + pos;
@@ -176,8 +191,7 @@ public final class SlocumBinaryReader implements AutoCloseable {
                 long at = offset();
                 int tag = read();
                 if (tag < 0) {
-                    throw new SlocumFormatException(file, at, "the file ends after " + cycles + " cycles without its end tag 'X':"
-                            + " it is truncated");
+                    return cut(at, "");
                 }
                 if (tag == 'X') {
                     ended = true;
@@ -187,7 +201,14 @@ public final class SlocumBinaryReader implements AutoCloseable {
                     throw new SlocumFormatException(file, at, "expected a data cycle ('d') or the end ('X'), found byte 0x"
                             + Integer.toHexString(tag) + " (cycle " + (cycles + 1) + ")");
                 }
-                cycle(row);
+                inCycle = true;
+                try {
+                    cycle(row);
+                } catch (Cut c) {
+                    return cut(at, " (" + (c.offset() - at) + " bytes of a cut cycle left out)");
+                } finally {
+                    inCycle = false;
+                }
                 cycles++;
                 if (!first) {
                     return true;
@@ -197,6 +218,28 @@ public final class SlocumBinaryReader implements AutoCloseable {
         } catch (Lz4BlockInputStream.CompressedFormatException e) {
             throw e.format();
         }
+    }
+
+    /** Ends the data at {@code at}, the start of the first cycle that is not whole. */
+    private boolean cut(long at, String part) {
+        ended = true;
+        leftOut = "the file ends after " + cycles + " cycles without its end tag 'X'" + part
+                + ": read up to its last whole cycle (byte " + at + "), as dbd2asc does";
+        return false;
+    }
+
+    /** The bytes ran out inside a data cycle (its offset is the file's end): the file was cut there. */
+    private static final class Cut extends SlocumFormatException {
+        private static final long serialVersionUID = 1L;
+
+        Cut(String file, long offset, String reason) {
+            super(file, offset, reason);
+        }
+    }
+
+    private SlocumFormatException truncated(String what) {
+        String reason = "the file ends inside " + what + ": it is truncated";
+        return inCycle ? new Cut(file, base + lim, reason) : new SlocumFormatException(file, offset(), reason);
     }
 
     private void cycle(double[] row) throws IOException, SlocumFormatException {
@@ -220,7 +263,7 @@ public final class SlocumBinaryReader implements AutoCloseable {
 
     private double value(int size) throws IOException, SlocumFormatException {
         if (lim - pos < size && !ensure(size)) {
-            throw new SlocumFormatException(file, offset(), "the file ends inside a " + size + "-byte value: it is truncated");
+            throw truncated("a " + size + "-byte value");
         }
         int p = pos;
         pos += size;
@@ -362,7 +405,7 @@ public final class SlocumBinaryReader implements AutoCloseable {
 
     private void fill(byte[] into, String what) throws IOException, SlocumFormatException {
         if (lim - pos < into.length && !ensure(into.length)) {
-            throw new SlocumFormatException(file, offset(), "the file ends inside " + what + ": it is truncated");
+            throw truncated(what);
         }
         System.arraycopy(buf, pos, into, 0, into.length);
         pos += into.length;

@@ -27,7 +27,8 @@ final class Merge {
         this.only = only;
     }
 
-    void one(InputStream in, String name, SensorListCache cache) throws IOException, SlocumFormatException {
+    /** Prints one file; returns what a file cut short of its end left out, or empty. */
+    String one(InputStream in, String name, SensorListCache cache) throws IOException, SlocumFormatException {
         try (SlocumBinaryReader r = SlocumBinaryReader.open(in, name, cache)) {
             int[] pick = pick(r.sensors());
             DbaText text = DbaText.start(out, r.tags(), select(r.sensors(), pick));
@@ -39,6 +40,7 @@ final class Merge {
                 }
                 text.row(shown);
             }
+            return r.leftOut();
         }
     }
 

@@ -70,7 +70,11 @@ public final class SlocumCommand implements Callable<Integer> {
                 } else {
                     for (Path f : files) {
                         try (InputStream in = Files.newInputStream(f)) {
-                            new Merge(out, sensors).one(in, f.getFileName().toString(), c);
+                            String left = new Merge(out, sensors).one(in, f.getFileName().toString(), c);
+                            if (!left.isEmpty()) {
+                                out.flush();
+                                err.println("Note: " + f.getFileName() + ": " + left);
+                            }
                         }
                     }
                 }

@@ -64,13 +64,45 @@ class SlocumBadInputTest {
         }
     }
 
+    /** Rows read from {@code data} and what the reader says it left out. */
+    static Map.Entry<Integer, String> readAll(byte[] data) throws Exception {
+        try (SlocumBinaryReader r = new SlocumBinaryReader(new ByteArrayInputStream(data), "cut.sbd", null)) {
+            double[] row = new double[r.sensors().size()];
+            int rows = 0;
+            while (r.next(row)) {
+                rows++;
+            }
+            return Map.entry(rows, r.leftOut());
+        }
+    }
+
+    @Test
+    void aFileCutInItsCyclesIsReadUpToItsLastWholeCycleAndSaysWhatItLeft() throws Exception {
+        byte[] good = sample();
+        assertThat(readAll(good)).isEqualTo(Map.entry(50, ""));
+        // the end tag lost (a call cut at the very end): every cycle, and it says so
+        var noEnd = readAll(java.util.Arrays.copyOf(good, good.length - 1));
+        assertThat(noEnd.getKey()).isEqualTo(50);
+        assertThat(noEnd.getValue()).startsWith("the file ends after 51 cycles without its end tag 'X': read up to its last"
+                + " whole cycle (byte " + (good.length - 1) + "), as dbd2asc does");
+        // cut inside the last cycle: that cycle is left out, with how many bytes of it there were
+        var cut = readAll(java.util.Arrays.copyOf(good, good.length - 4));
+        assertThat(cut.getKey()).isEqualTo(49);
+        assertThat(cut.getValue()).startsWith("the file ends after 50 cycles without its end tag 'X' (")
+                .contains(" bytes of a cut cycle left out)");
+        // and the DBA text dbd2asc would print: the same rows as the whole file, less the cut one
+        List<String> whole = decode(good, "a.sbd").lines().skip(17).toList();
+        assertThat(decode(java.util.Arrays.copyOf(good, good.length - 4), "a.sbd").lines().skip(17).toList())
+                .isEqualTo(whole.subList(0, 49));
+    }
+
     @Test
     void badInputIsRefusedWithTheOffsetAndTheReason() throws Exception {
         byte[] good = sample();
         String text = new String(good, StandardCharsets.ISO_8859_1);
         int known = text.indexOf("sa\u0012\u0034");
         assertThatThrownBy(() -> SlocumBinaryFiles.dba("empty.sbd", new byte[0], null)).hasMessage("empty.sbd: byte 0: the file is empty (0 bytes)");
-        for (int cut : new int[] {5, known - 3, known + 3, known + 20, good.length - 1}) {
+        for (int cut : new int[] {5, known - 3, known + 3}) {
             assertThatThrownBy(() -> decode(java.util.Arrays.copyOf(good, cut), "cut.sbd")).as("cut at " + cut)
                     .isInstanceOf(SlocumFormatException.class).hasMessageContaining("truncated").hasMessageStartingWith("cut.sbd: byte ");
         }
