@@ -25,9 +25,10 @@ import org.ripv.services.serial.VehicleLink;
 
 /**
  * Issue 24, item 5: receipts tell the truth. The glider simulator, launched as its own process,
- * calls a SerialPortServer's listen:// link; a queued workflow fetches a DBA file the database
- * refuses and one it takes. With {@code continue-on-error} the run ends DONE_WITH_ERRORS (receipt,
- * event), its notify says what happened; without, the step fails "fetched 1, ingested 0".
+ * calls a SerialPortServer's listen:// link; a queued workflow asks for a file the vehicle does not
+ * have, fetches a DBA file the database refuses and one it takes. With {@code continue-on-error} the
+ * run ends DONE_WITH_ERRORS (receipt, event), its notify says what happened. Issue 32, item 10: the
+ * refused file is a fetch that worked, a {@code note:} in the step's output, not a failed step.
  */
 class ReceiptVerdictsEndToEndTest {
     static final Path SLOCUM = Path.of("../ripv-services/src/test/resources/slocum");
@@ -72,7 +73,7 @@ class ReceiptVerdictsEndToEndTest {
     }
 
     @Test
-    void aFailedIngestIsAFailedStepAndContinueOnErrorEndsDoneWithErrors() throws Exception {
+    void aRefusedIngestIsANoteOfAnOkFetchAndContinueOnErrorEndsDoneWithErrors() throws Exception {
         sys = TestSystem.start(dir.resolve("sys"));
         sys.user("alice", "operators");
         LinkSettings link = LinkSettings.defaults("listen://127.0.0.1:0").withIdleTimeout(Duration.ofSeconds(1))
@@ -85,11 +86,12 @@ class ReceiptVerdictsEndToEndTest {
         String mb = "<SerialPortServer>::<localhost>ru29";
         ClientSocketHandler alice = sys.login("alice");
         upload(alice, "night.wf", """
-                ymodem:get short_header.mrg continue-on-error
+                ymodem:get missing.mrg continue-on-error
+                ymodem:get short_header.mrg
                 ymodem:get cp_388_2016_012_0_0.mrg
                 notify "ru29: {fetched} fetched, {ingested} ingested, {failed} step(s) failed"
                 """);
-        upload(alice, "strict.wf", "ymodem:get short_header.mrg all\nnotify 'never says this'\n");
+        upload(alice, "strict.wf", "ymodem:get short_header.mrg all\nnotify 'the refused file was fetched'\n");
         ok(alice, "?queue add " + mb + " night.wf");
         ok(alice, "?queue add " + mb + " strict.wf");
 
@@ -101,31 +103,39 @@ class ReceiptVerdictsEndToEndTest {
                 + serial.listenPort("ru29"), "--name", "ru29", "--surface-seconds", "120", "--dive-seconds", "5",
                 "--dir", glider.toString()));
 
-        String receipts = await(alice, "?receipts " + mb, r -> r.contains("'strict.wf'") && r.contains("result: FAILED"));
+        String receipts = await(alice, "?receipts " + mb, r -> r.contains("'strict.wf'")
+                && r.substring(r.indexOf("'strict.wf'")).contains("result: "));
         String night = receipts.substring(receipts.indexOf("receipt: workflow 1"), receipts.indexOf("receipt: workflow 2"));
         String strict = receipts.substring(receipts.indexOf("receipt: workflow 2"));
         assertThat(night).as(night)
-                .contains("step 1/3 (line 1) ymodem:get short_header.mrg: FAILED (continue-on-error)")
-                .contains("error: fetched 1, ingested 0 of 1: short_header.mrg: not ingested (BAD_REQUEST): ")
+                .contains("step 1/4 (line 1) ymodem:get missing.mrg: FAILED (continue-on-error)")
+                .contains("step 2/4 (line 2) ymodem:get short_header.mrg: OK")
+                .contains("fetched 1, ingested 0 into <DatabaseServer>")
+                .contains("note: ru29@")
                 .contains("short_header.mrg: refused, nothing stored: line 11")
-                .contains("step 2/3 (line 2) ymodem:get cp_388_2016_012_0_0.mrg: OK")
-                .contains("step 3/3 (line 3) notify ru29: {fetched} fetched, {ingested} ingested, {failed} step(s) failed: OK")
+                .contains("step 3/4 (line 3) ymodem:get cp_388_2016_012_0_0.mrg: OK")
+                .contains("step 4/4 (line 4) notify ru29: {fetched} fetched, {ingested} ingested, {failed} step(s) failed: OK")
                 .contains("output: ru29: 2 fetched, 1 ingested, 1 step(s) failed")
                 .contains("done: fetched 2, ingested 1, 1 step(s) failed")
                 .contains("result: DONE_WITH_ERRORS")
                 .contains("error: 1 step(s) failed (continue-on-error)")
+                .doesNotContain("DATABASE_ERROR")
                 .doesNotContain("result: DONE at");
         assertThat(night).containsPattern("file ru29\\S*/short_header.mrg \\d+ bytes sha256"); // fetched, kept, recorded
         assertThat(strict).as(strict)
-                .contains("step 1/2 (line 1) ymodem:get short_header.mrg all: FAILED")
-                .contains("fetched 1, ingested 0 of 1")
-                .doesNotContain("never says this")
-                .contains("result: FAILED");
-        String history = await(alice, "?history " + mb, h -> h.contains("WORKFLOW_FAILED"));
+                .contains("step 1/2 (line 1) ymodem:get short_header.mrg all: OK")
+                .contains("note: ")
+                .contains("output: the refused file was fetched")
+                .contains("result: DONE");
+        String history = await(alice, "?history " + mb, h -> h.contains("'strict.wf'"));
         assertThat(history).contains("* WORKFLOW_DONE_WITH_ERRORS workflow 1 'night.wf': done_with_errors: 1 step(s) failed")
-                .contains("'night.wf': ru29: 2 fetched, 1 ingested, 1 step(s) failed");
-        // the once workflow that reached its end leaves the queue; the failed one holds its head
+                .contains("'night.wf': ru29: 2 fetched, 1 ingested, 1 step(s) failed")
+                .doesNotContain("WORKFLOW_FAILED");
+        // the database said it per file, as an event of its MailBox
+        String dbHistory = await(alice, "?history <DatabaseServer>::<localhost>TTY1", h -> h.contains("INGEST_REFUSED"));
+        assertThat(dbHistory).contains("short_header.mrg: refused, nothing stored");
+        // both once workflows reached their end and left the queue
         String queue = ok(alice, "?queue " + mb);
-        assertThat(queue).doesNotContain("night.wf").contains("strict.wf").contains("failed at step 1/2");
+        assertThat(queue).doesNotContain("night.wf").doesNotContain("strict.wf");
     }
 }

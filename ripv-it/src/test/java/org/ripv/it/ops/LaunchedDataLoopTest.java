@@ -80,6 +80,9 @@ class LaunchedDataLoopTest {
     }
 
     String log(String name) throws Exception {
+        if (!Files.exists(tmp.resolve(name + ".log"))) {
+            return ""; // not launched by this test
+        }
         return Files.readString(tmp.resolve(name + ".log"), StandardCharsets.UTF_8);
     }
 
@@ -283,5 +286,71 @@ class LaunchedDataLoopTest {
 
         assertThat(log("database")).doesNotContain("REJECTED").doesNotContain("Warning: RMI replies");
         assertThat(log("serial") + log("datavis")).doesNotContain("Warning: RMI replies");
+    }
+
+    /**
+     * Issue 32, item 10, as launched: a real flight file cut short of its end (as over Iridium) is
+     * ingested up to its last whole cycle and says what it left; a file the database refuses and a
+     * file fetched again are notes of an OK fetch and events of the database's MailBox, never a
+     * failed fetch (the CLI exits 0, no DATABASE_ERROR).
+     */
+    @Test
+    void aCutRealFileIsIngestedUpToItsLastWholeCycleAndRefusedOrRepeatedFilesAreNotesOfAnOkFetch() throws Exception {
+        for (String m : List.of("ripv-server", "ripv-services")) {
+            assumeTrue(Files.isRegularFile(jar(m)), "needs the jars (mvn verify builds them before this module's tests)");
+        }
+        assumeTrue(Files.isDirectory(SLOCUM_BINARY.resolve("realtime_raw")), "needs ../shared/data/slocum-binary beside the repository");
+        int[] p = freePorts(4);
+        clientPort = p[0];
+        Path data = tmp.resolve("ripv-data");
+        knownHosts = tmp.resolve("known_hosts");
+        Files.createDirectories(tmp.resolve("home"));
+        Path files = Files.createDirectories(tmp.resolve("glider-files"));
+        String tbd = "rosie_713-2019-166-0-157.tbd";
+        byte[] whole = Files.readAllBytes(SLOCUM_BINARY.resolve("realtime_raw").resolve(tbd));
+        Files.write(files.resolve(tbd), java.util.Arrays.copyOf(whole, whole.length - 100)); // the call cut near its end
+        Files.copy(SLOCUM_BINARY.resolve("cac/426bd56d.cac"), files.resolve("426bd56d.cac"));
+        byte[] noise = new byte[3000];
+        new java.util.Random(32).nextBytes(noise);
+        Files.write(files.resolve("junk.scd"), noise);
+
+        launch("server", "ripv-server", "server", "--data", data.toString(), "--port", "" + p[0], "--registry-port", "" + p[1],
+                "--http-port", "0", "--outbound-port", "" + p[2]);
+        launch("simulator", "ripv-services", "simulator", "--listen", "" + p[3], "--files", files.toString());
+        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(120);
+        while (!log("server").contains("RIPVServer ready")) {
+            assertThat(System.nanoTime()).as(log("server")).isLessThan(end);
+            assertThat(started.get(0).isAlive()).as(log("server")).isTrue();
+            Thread.sleep(200);
+        }
+        PermitFile.setUser(data.resolve("permit.txt"), "alice", TestSystem.PASSWORD.toCharArray(), List.of("operators"), 1000);
+        String secret = data.resolve("service.secret").toString();
+        String server = "localhost:" + p[1];
+        launch("serial", "ripv-services", "serial", "--server", server, "--secret-file", secret, "--link", "tcp://127.0.0.1:" + p[3]);
+        launch("database", "ripv-services", "database", "--server", server, "--secret-file", secret);
+        String services = awaitServices("SerialPortServer", "DatabaseServer");
+        String serial = mailbox(services, "SerialPortServer");
+        String db = mailbox(services, "DatabaseServer");
+
+        assertThat(cli("use " + serial, "ymodem:get 426bd56d.cac " + tbd + " junk.scd")).as(out()).isZero();
+        assertThat(out()).as(out())
+                .contains("received 426bd56d.cac").contains(tbd + " (" + (whole.length - 100) + " bytes)").contains("junk.scd (3000 bytes)")
+                .contains("fetched 3, ingested 2 into " + db + " (1 not ingested, see the notes")
+                .containsPattern("rosie_713-2019-166-0-157: \\d+ rows, 9 sensors")
+                .contains("the file ends after ").contains(" cycles without its end tag 'X' (")
+                .contains("bytes of a cut cycle left out): read up to its last whole cycle")
+                .containsPattern("(?m)^note: \\S*junk.scd: refused, nothing stored")
+                .doesNotContain("DATABASE_ERROR").doesNotContain("Error:");
+        long cycles = count(db, "cycle WHERE vehicle = 'rosie_713'");
+        assertThat(cycles).as("the cut file's whole cycles are stored").isBetween(600L, 641L);
+
+        // the same file again: stored already, a note of an OK fetch
+        assertThat(cli("use " + serial, "ymodem:get " + tbd)).as(out()).isZero();
+        assertThat(out()).as(out()).contains("received " + tbd).contains("fetched 1, ingested 0 into ")
+                .containsPattern("(?m)^note: rosie_713-2019-166-0-157: stored already \\(file \\d+\\), nothing added")
+                .doesNotContain("DATABASE_ERROR");
+        assertThat(count(db, "cycle WHERE vehicle = 'rosie_713'")).isEqualTo(cycles);
+        assertThat(awaitHistory(db, "INGEST_REPEATED")).contains("INGEST_REFUSED").contains("junk.scd: refused, nothing stored")
+                .contains("stored already");
     }
 }
