@@ -24,7 +24,9 @@ import org.ripv.naming.MailboxAddress;
 /**
  * Runs lines of the COM panel's command language against a connected server: {@code ?...}
  * server commands, {@code use MAILBOX}, {@code priority LEVEL}, {@code put LOCALFILE},
- * {@code get NAME [LOCALDIR]}, and anything else as a command for the current MailBox.
+ * {@code get NAME [LOCALDIR]}, {@code send LINE} (LINE to the current MailBox verbatim, for a
+ * vehicle command that shares a word with the CLI: {@code send put c_dive_target_depth 30},
+ * {@code send exit}), and anything else as a command for the current MailBox.
  *
  * <p>{@link #cancel()} (Ctrl-C in the interactive CLI) stops waiting for the running request: a
  * transfer stops after its current chunk (an upload's part is dropped on the server); any other
@@ -67,8 +69,14 @@ public final class CliSession {
         return mailbox;
     }
 
+    /** The first words that make a line the CLI's own (a vehicle command with one of them needs {@code send}). */
+    public static final java.util.List<String> OWN_WORDS = java.util.List.of("use", "priority", "put", "get", "export", "key",
+            "send", "help", "quit", "exit");
+
     /** The help of the CLI's own lines. */
     public static final String HELP = String.join("\n",
+            "  Lines starting with one of the CLI's own words (" + String.join(", ", OWN_WORDS) + ") are the CLI's;",
+            "  any other line goes to the current MailBox. send LINE sends a line that starts with one of them.",
             "  ?COMMAND                         a server command (?help lists them)",
             "  use MAILBOX                      send further lines to MAILBOX (a full address or its handle; ?mailboxes lists them)",
             "  priority normal|priority|urgent  the inbox further requests go to",
@@ -77,9 +85,11 @@ public final class CliSession {
             "  get NAME [LOCALDIR]              download from the server's download directory (default: the current directory)",
             "  export csv|json LOCALFILE        write the last query result to a local file (numbers as numbers, NULL as null)",
             "  export svg LOCALFILE             write the last plot (a vis: reply with data) as an SVG picture",
+            "  send LINE                        send LINE to the current MailBox verbatim, even when it starts with",
+            "                                   one of the CLI's words: send put c_dive_target_depth 30, send exit, send get m_battery",
             "  key KEY                          press a control key on the current MailBox's vehicle (ctrl-c, ctrl-r, …): ?key MAILBOX KEY",
             "  help                             this, and the current service's help",
-            "  quit                             end the session (Ctrl-D too)",
+            "  quit, exit                       end the session (Ctrl-D too); send exit leaves GliderDOS instead",
             "  anything else                    a command for the current MailBox");
 
     /**
@@ -117,6 +127,7 @@ public final class CliSession {
                     localError(ErrorCode.BAD_REQUEST, e.getMessage());
                 }
             }
+            case "send" -> sendVerbatim(rawLine);
             case "put" -> put(rest);
             case "get" -> get(rest);
             case "export" -> export(rest);
@@ -139,6 +150,19 @@ public final class CliSession {
             }
         }
         return true;
+    }
+
+    /** {@code send LINE}: LINE as typed (after the one space that follows send) to the current MailBox. */
+    private void sendVerbatim(String rawLine) throws IOException {
+        String after = rawLine.stripLeading().substring("send".length());
+        String verbatim = after.isEmpty() ? "" : after.substring(1);
+        if (verbatim.isBlank()) {
+            localError(ErrorCode.BAD_REQUEST, "send takes the line to send, e.g. send put c_dive_target_depth 30");
+        } else if (mailbox.isEmpty()) {
+            localError(ErrorCode.BAD_REQUEST, "no MailBox chosen for 'send " + verbatim + "': use MAILBOX first (?mailboxes lists them)");
+        } else {
+            send(mailbox, verbatim);
+        }
     }
 
     private void help() throws IOException {

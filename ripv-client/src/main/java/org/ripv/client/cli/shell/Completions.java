@@ -8,13 +8,19 @@ import java.util.Set;
 
 /**
  * Tab completion for the CLI's lines: the word being typed, given the words before it and the
- * current MailBox. The CLI's own words, the server's {@code ?} commands, MailBox names after
+ * current MailBox. The CLI's own words (listed under a group of their own, {@link #group}), the server's {@code ?} commands, MailBox names after
  * {@code use} (and {@code ?status}, {@code ?lock}, {@code ?unlock}), the service's commands, files
  * of the download directory after {@code get}, of the upload directory after an attach prefix
  * ({@code vis:NAME}). Local files after {@code put} are the terminal's business ({@link Shell}).
  */
 final class Completions {
-    static final List<String> LOCAL = List.of("use", "priority", "put", "get", "key", "help", "quit", "exit");
+    static final List<String> LOCAL = org.ripv.client.cli.CliSession.OWN_WORDS;
+    /** The group Tab lists the CLI's own words under, apart from the server's and the MailBox's commands. */
+    static final String OWN_GROUP = "the CLI's own words (send LINE sends a line starting with one to the vehicle)";
+    /** What Tab shows beside each of the CLI's own words. */
+    static final String OWN_MARK = "the CLI's own word";
+    static final String SERVER_GROUP = "server commands";
+    static final String MAILBOX_GROUP = "commands for the MailBox";
     static final List<String> PRIORITIES = List.of("normal", "priority", "urgent");
     private static final Set<String> TAKES_MAILBOX = Set.of("use", "?status", "?lock", "?unlock");
 
@@ -41,6 +47,8 @@ final class Completions {
             }
         } else if (index == 1 && TAKES_MAILBOX.contains(first)) {
             out.addAll(facts.mailboxes());
+        } else if (index == 1 && first.equals("send") && !mailbox.isEmpty()) {
+            out.addAll(facts.serviceCommands(mailbox)); // what follows send is the MailBox's
         } else if (index == 1 && first.equals("priority")) {
             out.addAll(PRIORITIES);
         } else if (index == 1 && (first.equals("get") || first.equals("?download"))) {
@@ -54,6 +62,11 @@ final class Completions {
             out.addAll(attached(current, mailbox));
         }
         return new ArrayList<>(out);
+    }
+
+    /** Which group Tab shows a first word under: the CLI's own, the server's, or the MailBox's. */
+    static String group(String word) {
+        return LOCAL.contains(word) ? OWN_GROUP : word.startsWith("?") ? SERVER_GROUP : MAILBOX_GROUP;
     }
 
     /** {@code vis:NAME} for every upload NAME, when the word starts with one of the service's attach prefixes. */

@@ -217,7 +217,10 @@ public final class Shell {
             }
             for (String c : completions.candidates(words, index, session.mailbox())) {
                 boolean prefixOnly = c.endsWith(":");
-                candidates.add(new Candidate(c, c, null, null, null, null, !prefixOnly));
+                String group = index == 0 ? Completions.group(c) : null;
+                // the CLI's own words say so beside them: a line starting with one never reaches the vehicle
+                String descr = Completions.OWN_GROUP.equals(group) ? Completions.OWN_MARK : null;
+                candidates.add(new Candidate(c, c, group, descr, null, null, !prefixOnly));
             }
         }
 

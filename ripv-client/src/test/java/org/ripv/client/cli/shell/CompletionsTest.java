@@ -49,6 +49,17 @@ class CompletionsTest {
     }
 
     @Test
+    void theClisOwnWordsAreAGroupOfTheirOwnAndSendTakesTheMailBoxsCommands() {
+        assertThat(c.candidates(List.of("s"), 0, GLIDER)).contains("send", "?services");
+        assertThat(Completions.group("send")).isEqualTo(Completions.OWN_GROUP).contains("the CLI's own words");
+        assertThat(Completions.group("put")).isEqualTo(Completions.OWN_GROUP);
+        assertThat(Completions.group("exit")).isEqualTo(Completions.OWN_GROUP);
+        assertThat(Completions.group("?help")).isEqualTo(Completions.SERVER_GROUP);
+        assertThat(Completions.group("dir")).isEqualTo(Completions.MAILBOX_GROUP);
+        assertThat(c.candidates(List.of("send", ""), 1, GLIDER)).containsExactly("dir", "type");
+    }
+
+    @Test
     void mailboxesAfterUseFilesAfterGetPrioritiesAfterPriority() {
         assertThat(c.candidates(List.of("use", ""), 1, "")).containsExactly(GLIDER, VIS);
         assertThat(c.candidates(List.of("?lock", "<S"), 1, "")).containsExactly(GLIDER, VIS);
