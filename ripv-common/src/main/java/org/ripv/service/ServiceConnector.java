@@ -150,6 +150,13 @@ public final class ServiceConnector implements AutoCloseable {
             }
             lost();
         } catch (IllegalStateException e) {
+            if (org.ripv.naming.NameTaken.is(e.getMessage()) && options.giveUpAfter() > 0) {
+                // another running service holds the name: stop rather than contend for it (--retry-forever waits for it to go)
+                log.error("{}: the server refused the registration: {}", service.name(), e.getMessage());
+                fatal.complete("the server at " + where() + " refused the registration: " + e.getMessage());
+                timer.shutdown();
+                return;
+            }
             // Refused but fixable (the server cannot call back, or a newer attempt won): say so, keep trying.
             notice(e.getMessage());
         } catch (SecurityException e) {

@@ -7,6 +7,7 @@ import java.security.SecureRandom;
 import java.util.HexFormat;
 import java.util.List;
 import org.ripv.messages.ServiceDescriptor;
+import org.ripv.naming.NameTaken;
 import org.ripv.naming.ServiceName;
 import org.ripv.rmi.GenericRMIInterface;
 import org.ripv.server.services.ServiceReference;
@@ -18,7 +19,8 @@ import org.slf4j.LoggerFactory;
  * cannot reach is refused at once, with the address tried and what to set, instead of being
  * listed and stalling every request), then lists it — unless a newer registration of the same
  * service got there first, which a late one (from an attempt the service gave up on) must never
- * replace.
+ * replace, or another running service holds the name: a second process of one name is refused
+ * ({@link NameTaken}) while the first answers its heartbeat, and takes over only once it does not.
  */
 final class ServiceAdmission {
     private static final Logger log = LoggerFactory.getLogger(ServiceAdmission.class);
@@ -53,6 +55,7 @@ final class ServiceAdmission {
             server.liveness().refused(d.name(), "cannot call it back at " + ServiceReference.addressOf(service));
             throw e;
         }
+        refuseIfHeld(server, d);
         ServiceReference ref = new ServiceReference(d, service, token, server::undeliverable,
                 d.registration());
         ServiceReference[] replaced = new ServiceReference[1];
@@ -76,6 +79,29 @@ final class ServiceAdmission {
         log.info("{} registered from {} ({})", ref, ref.address(), d.description());
         reconcileCalls(server, ref, d.started());
         return ref.token();
+    }
+
+    /**
+     * Refuses {@code d} when another instance of a service (another start time) holds its name and
+     * still answers; one that does not answer is taken over. The same instance registering again
+     * (a heartbeat the server did not know, a restarted server) is not held back.
+     */
+    private static void refuseIfHeld(RIPVServer server, ServiceDescriptor d) {
+        ServiceReference old = server.serviceMap().get(d.name());
+        if (old == null || d.started() == 0 || old.descriptor().started() == 0 || old.descriptor().started() == d.started()) {
+            return;
+        }
+        try {
+            callBack(old.descriptor(), old.stub(), server.checkers());
+        } catch (IllegalStateException gone) {
+            log.warn("{}: the service registered at {} no longer answers; the new registration takes over the name",
+                    d.name(), old.address());
+            return;
+        }
+        String why = NameTaken.refusal(d.name(), old.address(), old.order(), old.descriptor().started());
+        log.warn("refused a second service named {}: {}", d.name(), why);
+        server.liveness().refused(d.name(), "its name is held by the running service at " + old.address());
+        throw new IllegalStateException(why);
     }
 
     /**

@@ -174,7 +174,8 @@ class ConsoleSessionTest {
         call(olga, "?watch " + box);
         vehicle.event(VehicleEvent.SURFACED, "", 41.5, -70.5);
         assertThat(o.await(e -> e.event() == VehicleEvent.SURFACED, T)).isTrue();
-        // The same service registers again (a restart): the call in progress is lost.
+        // The same service registers again (a restart: the old instance is gone): the call in progress is lost.
+        connector.close();
         VehicleConsoleService restarted = new VehicleConsoleService("localhost", "ru29");
         sys.register(restarted);
         assertThat(o.await(e -> e.event() == VehicleEvent.LINK_LOST, T)).isTrue();
