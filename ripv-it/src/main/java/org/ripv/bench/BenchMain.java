@@ -52,6 +52,14 @@ public final class BenchMain {
             "Every benchmark takes --short: counts and times shrunk to seconds, to check that it still runs (CI does);",
             "its figures mean little. See docs/performance.md for what each measures and the figures.");
 
+    /**
+     * What a {@code --short} run prints first and last: its shrunk counts give one sample or a few,
+     * and a ratio from them ({@code 2587×}) is noise, not a figure to quote.
+     */
+    static final String NOT_MEASUREMENTS = "--short: these figures are not measurements: counts and times shrunk to seconds,"
+            + " one sample or a few each, so a ratio means nothing; this run only shows that the benchmark still runs"
+            + " (run it without --short to measure; docs/performance.md has the figures)";
+
     /** What {@code ripv bench --help} prints: the one list of benchmarks the docs' lists must equal. */
     public static String usage() {
         return USAGE;
@@ -66,6 +74,7 @@ public final class BenchMain {
             System.out.println(org.ripv.launch.Version.line());
             System.exit(0);
         }
+        boolean shortRun = Arrays.asList(args).subList(1, args.length).contains(ShortMode.FLAG);
         String[] rest = ShortMode.apply(args[0], Arrays.copyOfRange(args, 1, args.length));
         if (!List.of("broker", "calls", "workflow").contains(args[0]) && (Arrays.asList(rest).contains("--help") || Arrays.asList(rest).contains("-h"))) {
             System.out.println(USAGE); // the benchmarks without a picocli command of their own
@@ -77,6 +86,14 @@ public final class BenchMain {
         System.setProperty(org.ripv.client.handlers.Tls.KNOWN_HOSTS_PROPERTY, known.toString());
         if (ShortMode.names().contains(args[0])) {
             System.out.println(CpuClock.machineLine()); // how loaded the machine was, beside every benchmark's figures
+            if (shortRun) {
+                // before the figures and after them (every benchmark ends by returning or System.exit)
+                System.out.println(NOT_MEASUREMENTS);
+                Runtime.getRuntime().addShutdownHook(new Thread(() -> {
+                    System.out.println(NOT_MEASUREMENTS);
+                    System.out.flush();
+                }, "ripv-bench-short-note"));
+            }
         }
         switch (args[0]) {
             case "broker" -> System.exit(Launchers.commandLine(new BrokerBench(), "ripv bench broker").execute(rest));

@@ -72,6 +72,8 @@ class EveryBenchmarkRunsTest {
         assertThat(p.exitValue()).as("ripv bench " + name + " --short exit status; its output:\n" + out).isZero();
         assertThat(out).as("no exception in the output").doesNotContain("Exception in thread").doesNotContain("\tat org.ripv.");
         assertThat(out).as("the machine's load is reported").contains(CpuClock.LOAD_PREFIX);
+        assertThat(out.split(Pattern.quote(BenchMain.NOT_MEASUREMENTS), -1))
+                .as("a --short run says before and after its figures that they are not measurements").hasSize(3);
         if (List.of("broker", "database", "console", "workflow", "web", "slocum", "ingest").contains(name)) {
             assertThat(out).as("CPU per operation against the floor's").containsPattern(
                     "cpu per op: .* [0-9.]+ us, floor [0-9.]+ us \\(CPU [0-9.]+×; wall [0-9.]+×\\)");
