@@ -26,6 +26,7 @@ Environment:
   RIPV_HTTP_PORT       landing page port (default 8080)
   RIPV_GLIDER_PORT     the simulated glider's TCP port (default 5555)
   RIPV_OUTBOUND_PORT   where services behind NAT connect out (default 4446; -1: none)
+  RIPV_WEBHOOK_PORT    the demo's webhook receiver on 127.0.0.1, for trying notifications (default 4447)
   RIPV_GLIDER_DIALOG   picodos (default) or gliderdos: a Slocum's surface dialog, control keys and GliderDOS
   RIPV_GLIDER_LINE     unset, or iridium: the glider's calls at 2,400 baud, 1 s latency, dropped after 60 s
   RIPV_DEMO_HEADLESS=1 no GUI even with a display
@@ -55,6 +56,7 @@ REGISTRY="${RIPV_REGISTRY_PORT:-1099}"
 HTTP="${RIPV_HTTP_PORT:-8080}"
 GLIDER="${RIPV_GLIDER_PORT:-5555}"
 OUTBOUND="${RIPV_OUTBOUND_PORT:-4446}"
+WEBHOOK="${RIPV_WEBHOOK_PORT:-4447}"
 GLIDER_NAME="${RIPV_GLIDER_NAME:-sim01}"
 DIVE="${RIPV_DIVE_SECONDS:-30}"
 SURFACE="${RIPV_SURFACE_SECONDS:-60}"
@@ -154,9 +156,9 @@ wait_port() {
   echo "demo: nothing answered on port $1; see $DEMO/logs/" >&2
   exit 1
 }
-for p in "$PORT" "$REGISTRY" "$HTTP" "$GLIDER"; do
+for p in "$PORT" "$REGISTRY" "$HTTP" "$GLIDER" "$WEBHOOK"; do
   if ! port_free "$p"; then
-    echo "demo: port $p is in use. Stop what uses it, or set RIPV_PORT / RIPV_REGISTRY_PORT / RIPV_HTTP_PORT / RIPV_GLIDER_PORT." >&2
+    echo "demo: port $p is in use. Stop what uses it, or set RIPV_PORT / RIPV_REGISTRY_PORT / RIPV_HTTP_PORT / RIPV_GLIDER_PORT / RIPV_WEBHOOK_PORT." >&2
     exit 1
   fi
 done
@@ -175,14 +177,29 @@ KNOWN="$DEMO/known_hosts"
 [ -f "$DEMO/server/tls/server.p12" ] || rm -f "$KNOWN"
 export RIPV_KNOWN_HOSTS="$KNOWN"
 
+# Notifications can be tried on this machine: a webhook receiver on loopback, which the server may
+# send to while the demo listens on this machine only (opened to the network, it may not: anyone
+# who can log in could then make the server call this host's other local services).
+echo "demo: starting the webhook receiver on 127.0.0.1:$WEBHOOK (what it gets goes to $DEMO/logs/webhooks.log)" >&2
+"$JAVA" "${USER_HOME[@]}" -jar "$(jar ripv-server)" webhook-sink --port "$WEBHOOK" >"$DEMO/logs/webhooks.log" 2>&1 &
+pids+=($!)
+WEBHOOK_ALLOW=()
+[ "$HERE" = localhost ] && [ "$BIND" != 0.0.0.0 ] && [ "$BIND" != "::" ] && WEBHOOK_ALLOW=(--webhook-allow 127.0.0.1/32)
+
 echo "demo: starting the RIPVServer (logs in $DEMO/logs)" >&2
 "$JAVA" "${USER_HOME[@]}" -jar "$(jar ripv-server)" server --data "$DEMO/server" --port "$PORT" --registry-port "$REGISTRY" \
-  --http-port "$HTTP" --outbound-port "$OUTBOUND" --bind "$BIND" >"$DEMO/logs/server.log" 2>&1 &
+  --http-port "$HTTP" --outbound-port "$OUTBOUND" --bind "$BIND" ${WEBHOOK_ALLOW[@]+"${WEBHOOK_ALLOW[@]}"} \
+  >"$DEMO/logs/server.log" 2>&1 &
 pids+=($!)
 wait_port "$PORT"
 secret="$DEMO/server/service.secret"
-for s in "$ROOT"/docs/samples/*.dat "$ROOT"/docs/samples/*.wf "$ROOT"/docs/samples/*.ma; do
+for s in "$ROOT"/docs/samples/*.dat "$ROOT"/docs/samples/*.wf "$ROOT"/docs/samples/*.ma "$ROOT"/scripts/demo-data/*.wf; do
   [ -f "$s" ] && [ ! -f "$DEMO/server/upload/$(basename "$s")" ] && cp "$s" "$DEMO/server/upload/"
+done
+# The glider carries real Slocum files and their sensor-list caches (scripts/demo-data/README.md).
+mkdir -p "$DEMO/glider"
+for s in "$ROOT"/scripts/demo-data/glider/*; do
+  [ -f "$DEMO/glider/$(basename "$s")" ] || cp "$s" "$DEMO/glider/"
 done
 
 echo "demo: starting the SerialPortServer (glider $GLIDER_NAME calls in on port $GLIDER), DatabaseServer and DataVisServer" >&2
@@ -195,11 +212,6 @@ for i in $(seq 1 150); do
   sleep 0.2
 done
 
-echo "demo: the simulated glider $GLIDER_NAME calls in for $SURFACE s, dives for $DIVE s, and calls again" >&2
-"$JAVA" "${USER_HOME[@]}" -jar "$(jar ripv-services)" simulator --call "$HERE:$GLIDER" --name "$GLIDER_NAME" \
-  --dive-seconds "$DIVE" --surface-seconds "$SURFACE" --dir "$DEMO/glider" --dialog "$GLIDER_DIALOG" \
-  ${GLIDER_LINE[@]+"${GLIDER_LINE[@]}"} >"$DEMO/logs/simulator.log" 2>&1 &
-pids+=($!)
 "$JAVA" "${USER_HOME[@]}" -Dripv.host=localhost -jar "$(jar ripv-services)" database --server "$HERE:$REGISTRY" --secret-file "$secret" \
   --data "$DEMO/database" >"$DEMO/logs/database.log" 2>&1 &
 pids+=($!)
@@ -226,6 +238,25 @@ for i in $(seq 1 600); do
   sleep 0.2
 done
 
+# The glider's first call fetches its Slocum files (the server ingests them): queued once, before
+# the glider first calls.
+BOX="<SerialPortServer>::<localhost>$GLIDER_NAME"
+if [ ! -f "$DEMO/server/.demo-fetch-queued" ]; then
+  if "$JAVA" "${USER_HOME[@]}" -jar "$(jar ripv-client)" cli --server "localhost:$PORT" --user "$USER_NAME" \
+       --password-file "$DEMO/password" --exec "?queue add $BOX fetch-slocum-data.wf" >"$DEMO/logs/queue.log" 2>&1; then
+    touch "$DEMO/server/.demo-fetch-queued"
+    echo "demo: queued fetch-slocum-data.wf for $GLIDER_NAME's first call (its Slocum files, ingested as they land)" >&2
+  else
+    echo "demo: could not queue fetch-slocum-data.wf (see $DEMO/logs/queue.log); the glider's files are there to fetch by hand" >&2
+  fi
+fi
+
+echo "demo: the simulated glider $GLIDER_NAME calls in for $SURFACE s, dives for $DIVE s, and calls again" >&2
+"$JAVA" "${USER_HOME[@]}" -jar "$(jar ripv-services)" simulator --call "$HERE:$GLIDER" --name "$GLIDER_NAME" \
+  --dive-seconds "$DIVE" --surface-seconds "$SURFACE" --dir "$DEMO/glider" --dialog "$GLIDER_DIALOG" \
+  ${GLIDER_LINE[@]+"${GLIDER_LINE[@]}"} >"$DEMO/logs/simulator.log" 2>&1 &
+pids+=($!)
+
 cli_hint() {
   cat <<HINT
 
@@ -240,6 +271,10 @@ RIPV demo is running. Connect with the CLI, e.g.:
   "on call since ..." or "dived at ...", and commands work while it is on a call.
 
   Database:  --exec 'use <DatabaseServer>::<localhost>TTY1' --exec 'SELECT * FROM mission'
+  Glider data: the first call runs the queued fetch-slocum-data.wf (?receipts $BOX); then
+             --exec 'use <DatabaseServer>::<localhost>TTY1' --exec 'SELECT * FROM positions', vis:track rosie_713
+  Notifications: --exec '?notify add webhook http://127.0.0.1:$WEBHOOK/ SURFACED,DIVED,WORKFLOW_DONE'
+             the demo's webhook receiver writes what it gets to $DEMO/logs/webhooks.log
   Plot:      --exec 'use <DataVisServer>::<localhost>TTY1' --exec 'vis:glider-temperature.dat'
   Web console: https://localhost:$HTTP/ (log in as $USER_NAME, password in $DEMO/password; the server's own certificate: your browser asks first)
   Server certificate: $(grep -o 'SHA256:[0-9A-F:]*' "$DEMO/logs/server.log" | head -1)

@@ -30,7 +30,7 @@ import picocli.CommandLine.Parameters;
  */
 @Command(name = "ripv", mixinStandardHelpOptions = true,
         description = "The RIPV broker, and its user administration.",
-        subcommands = {ServerMain.Serve.class, ServerMain.Passwd.class})
+        subcommands = {ServerMain.Serve.class, ServerMain.Passwd.class, org.ripv.server.demo.WebhookSink.class})
 public final class ServerMain implements Callable<Integer> {
 
     @Override

@@ -29,6 +29,7 @@ final class RunningDemo implements AutoCloseable {
     final int httpPort;
     final int gliderPort;
     final int outboundPort;
+    final int webhookPort;
     final ProcessWatch watch = new ProcessWatch();
     final Process process;
 
@@ -42,6 +43,7 @@ final class RunningDemo implements AutoCloseable {
         this.httpPort = ports[2];
         this.gliderPort = ports[3];
         this.outboundPort = ports[4];
+        this.webhookPort = ports[5];
         ProcessBuilder pb = new ProcessBuilder("bash", root.resolve("ripv").toString(), "demo").directory(root.toFile())
                 .redirectErrorStream(true).redirectOutput(log.toFile())
                 .redirectInput(ProcessBuilder.Redirect.from(new File("/dev/null")));
@@ -63,6 +65,7 @@ final class RunningDemo implements AutoCloseable {
         env.put("RIPV_HTTP_PORT", "" + httpPort);
         env.put("RIPV_GLIDER_PORT", "" + gliderPort);
         env.put("RIPV_OUTBOUND_PORT", "" + outboundPort);
+        env.put("RIPV_WEBHOOK_PORT", "" + webhookPort);
         env.put("RIPV_DEMO_HEADLESS", "1");
         env.put("HOME", home.toString());
         return env;
@@ -94,7 +97,7 @@ final class RunningDemo implements AutoCloseable {
     static RunningDemo start(Path root, Path dir, Path home, Duration max, Map<String, String> extra) throws Exception {
         Files.createDirectories(home);
         Path log = Files.createTempFile(home.getParent(), "demo", ".log");
-        RunningDemo demo = new RunningDemo(root, dir, home, log, freePorts(5), extra);
+        RunningDemo demo = new RunningDemo(root, dir, home, log, freePorts(6), extra);
         long end = System.nanoTime() + max.toNanos();
         while (!demo.output().contains(RUNNING)) {
             if (!demo.process.isAlive() || System.nanoTime() > end) {
