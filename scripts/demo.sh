@@ -119,7 +119,6 @@ trap own_pidfile EXIT
 jar() { echo "$ROOT/$1/target/$1.jar"; }
 for m in ripv-server ripv-services ripv-client; do
   if [ ! -f "$(jar "$m")" ]; then
-    echo "ripv: building the jars (first run; mvn -q -DskipTests package)..." >&2
     "$ROOT/ripv" build
     break
   fi

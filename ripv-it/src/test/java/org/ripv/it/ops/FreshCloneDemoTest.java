@@ -41,6 +41,9 @@ class FreshCloneDemoTest {
         try (RunningDemo demo = RunningDemo.start(clone, tmp.resolve("demo"), home, Duration.ofMinutes(25),
                 Map.of("RIPV_SURFACE_SECONDS", "20", "RIPV_DIVE_SECONDS", "5"))) {
             assertThat(demo.output()).contains("ripv: building the jars").contains("./ripv cli --server localhost:" + demo.port);
+            // the first build says how far it is, module by module, and prints no escape codes (issue 32, item 12)
+            assertThat(demo.output()).contains("ripv: [2/6] RIPV common").contains("ripv: [6/6] ")
+                    .containsPattern("ripv: the jars are built \\(\\d+ s\\)").doesNotContain("\u001b").doesNotContain("[0m");
             assertThat(clone.resolve("ripv-server/target/ripv-server.jar")).exists();
 
             String cli = "cd '" + clone + "' && export HOME='" + home + "' && unset RIPV_KNOWN_HOSTS RIPV_PASSWORD && ./ripv cli --server localhost:"
