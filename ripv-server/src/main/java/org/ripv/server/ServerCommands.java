@@ -59,7 +59,7 @@ final class ServerCommands {
         COMMANDS.put("?unlock", new Command(Ids.FID_UNLOCK, "?unlock MAILBOX", "release your lock"));
         COMMANDS.put("?logins", new Command(Ids.FID_LOGINS, "?logins", "users and addresses with failed log-ins, and their blocks (needs a right)"));
         COMMANDS.put("?unlock-login", new Command(Ids.FID_UNLOCK_LOGIN, "?unlock-login USER|ADDRESS", "lift a log-in block or lock (needs a right)"));
-        COMMANDS.put("?queue", new Command(Ids.FID_QUEUE, "?queue MAILBOX | add MAILBOX NAME | remove MAILBOX ID | clear MAILBOX",
+        COMMANDS.put("?queue", new Command(Ids.FID_QUEUE, "?queue MAILBOX | add MAILBOX NAME [--typed] | remove MAILBOX ID | clear MAILBOX",
                 "the workflows queued for a vehicle's next call (docs/workflows.md)"));
         COMMANDS.put("?receipts", new Command(Ids.FID_RECEIPTS, "?receipts MAILBOX [--last N]", "what the last workflow runs did"));
         COMMANDS.put("?cancel", new Command(Ids.FID_CANCEL, "?cancel MESSAGE-ID [CLIENT-ID]", "stop a request that is queued or running"));

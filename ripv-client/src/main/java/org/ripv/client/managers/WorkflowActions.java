@@ -67,7 +67,7 @@ final class WorkflowActions {
     /** Uploads a workflow file under its own name, then queues it. */
     void addFile(String mailbox, Path local, ClientSocketHandler.IfExists ifExists) {
         String name = local.getFileName() == null ? local.toString() : local.getFileName().toString();
-        io.execute(() -> uploadAndQueue(mailbox, local, name, ifExists));
+        io.execute(() -> uploadAndQueue(mailbox, local, name, ifExists, false));
     }
 
     /** Uploads text written in the GUI as NAME, then queues it. */
@@ -77,7 +77,7 @@ final class WorkflowActions {
             try {
                 tmp = Files.createTempFile("ripv-workflow-", ".wf");
                 Files.writeString(tmp, text, StandardCharsets.UTF_8);
-                uploadAndQueue(mailbox, tmp, name, ifExists);
+                uploadAndQueue(mailbox, tmp, name, ifExists, true);
             } catch (IOException e) {
                 failed(mailbox, "writing " + name, e);
             } finally {
@@ -92,7 +92,8 @@ final class WorkflowActions {
         });
     }
 
-    private void uploadAndQueue(String mailbox, Path local, String name, ClientSocketHandler.IfExists ifExists) {
+    /** @param typed written in the GUI: a refused one leaves the upload store again ({@code ?queue add … --typed}) */
+    private void uploadAndQueue(String mailbox, Path local, String name, ClientSocketHandler.IfExists ifExists, boolean typed) {
         try {
             ClientSocketHandler h = connection();
             String stored = name;
@@ -110,7 +111,7 @@ final class WorkflowActions {
                 }
                 return;
             }
-            change(h, mailbox, "?queue add " + mailbox + " " + stored);
+            change(h, mailbox, "?queue add " + mailbox + " " + stored + (typed ? " --typed" : ""));
         } catch (IOException | RuntimeException e) {
             failed(mailbox, "upload of " + name, e);
         }

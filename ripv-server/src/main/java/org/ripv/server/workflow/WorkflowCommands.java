@@ -66,7 +66,8 @@ final class WorkflowCommands {
         String verb = w.length > 1 ? w[1].toLowerCase(Locale.ROOT) : "";
         switch (verb) {
             case "add" -> {
-                usage(w.length == 4, "?queue add MAILBOX NAME");
+                boolean typed = w.length == 5 && w[4].equals(TYPED);
+                usage(w.length == 4 || typed, "?queue add MAILBOX NAME [" + TYPED + "]");
                 String mailbox = address(w[2]);
                 mayRead(user, mailbox);
                 PermitFile.User u = permitted(request);
@@ -74,8 +75,16 @@ final class WorkflowCommands {
                     throw new IllegalArgumentException("no MailBox " + mailbox + " exists or has existed; queues are for"
                             + " MailBoxes a service has (?mailboxes lists them)");
                 }
-                Workflow wf = read(w[3]);
-                checkSteps(u, mailbox, wf);
+                Workflow wf;
+                try {
+                    wf = read(w[3]);
+                    checkSteps(u, mailbox, wf);
+                } catch (RuntimeException refused) {
+                    if (typed) {
+                        dropTyped(w[3], user);
+                    }
+                    throw refused;
+                }
                 QueuedWorkflow e = workflows.queues.add(mailbox, user, sourceOf(w[3]), wf);
                 if (workflows.onCall(mailbox)) {
                     workflows.surfaced(mailbox); // the vehicle is on a call now: run it in this call
@@ -267,6 +276,25 @@ final class WorkflowCommands {
                     .onUnmappableCharacter(CodingErrorAction.REPORT).decode(java.nio.ByteBuffer.wrap(bytes)).toString();
         } catch (CharacterCodingException e) {
             throw new WorkflowException(name, 0, "not UTF-8 text: a workflow file is text (docs/workflows.md)");
+        }
+    }
+
+    /**
+     * The word after {@code ?queue add MAILBOX NAME} that says NAME was uploaded only to be queued
+     * (typed in the GUI's editor or the web page): when the workflow is refused, the file leaves
+     * the upload store again, so drafts that did not parse do not pile up there.
+     */
+    static final String TYPED = "--typed";
+
+    /** Deletes a refused typed workflow, when the user who queues it uploaded it (no one else's file goes). */
+    private void dropTyped(String name, String user) {
+        try {
+            if (user.equals(workflows.host.files().owner(name))) {
+                workflows.host.files().delete(name);
+                log.info("{}: deleted the refused typed workflow {} from the upload store", user, name);
+            }
+        } catch (IOException | RuntimeException e) {
+            log.warn("could not delete the refused typed workflow {}: {}", name, e.toString());
         }
     }
 

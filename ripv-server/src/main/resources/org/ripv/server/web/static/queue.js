@@ -61,8 +61,9 @@ function showLines(text, reply, file) {
   document.getElementById('error-line')?.scrollIntoView({ block: 'nearest' });
 }
 
-async function queueFile(name, text) {
-  const r = await po.send('', `?queue add ${mailbox} ${name}`);
+async function queueFile(name, text, typed = false) {
+  // --typed: a refused workflow typed in the page leaves the upload store again (docs/workflows.md)
+  const r = await po.send('', `?queue add ${mailbox} ${name}${typed ? ' --typed' : ''}`);
   say($('add-status'), r.status === 'ERROR' ? r : { ...r, text: r.text.split('\n')[0] }); // the listing is shown above
   showLines(text ?? '', r, name);
   if (r.status !== 'ERROR') listQueue();
@@ -71,10 +72,10 @@ async function queueFile(name, text) {
 
 // A file from the browser or the text box goes into the upload store first (as 'put' does in the CLI), under a free
 // name if that one is taken, then ?queue add names it: the server parses it and says where it is wrong.
-async function uploadAndQueue(name, text) {
+async function uploadAndQueue(name, text, typed = false) {
   const up = await upload(po, name, new TextEncoder().encode(text), 'keep');
   if (up.status === 'ERROR') { say($('add-status'), up); return; }
-  await queueFile(storedName(up, name), text);
+  await queueFile(storedName(up, name), text, typed);
   listStore();
 }
 
@@ -90,7 +91,7 @@ $('stored-form').addEventListener('submit', async (e) => {
 });
 $('typed-form').addEventListener('submit', async (e) => {
   e.preventDefault();
-  await uploadAndQueue($('wf-name').value.trim(), $('wf-text').value);
+  await uploadAndQueue($('wf-name').value.trim(), $('wf-text').value, true);
 });
 $('refresh-queue').addEventListener('click', listQueue);
 $('clear-queue').addEventListener('click', async () => {
