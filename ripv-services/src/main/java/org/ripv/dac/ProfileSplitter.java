@@ -49,12 +49,18 @@ public final class ProfileSplitter {
         double[] s = smooth(p);
         List<Integer> turns = new ArrayList<>();
         turns.add(0);
-        for (int i = 0; i + 2 < n; i++) {
-            double d0 = s[i + 1] - s[i];
-            double d1 = s[i + 2] - s[i + 1];
-            if (d0 * d1 < 0) {
-                turns.add(i + 1);
+        // pyglider's test is d[i] * d[i+1] < 0; a flat top (a zero difference) would hide a turn
+        // from it, so the sign compared is that of the last difference that was not zero.
+        double lastSign = 0;
+        for (int i = 0; i + 1 < n; i++) {
+            double sign = Math.signum(s[i + 1] - s[i]);
+            if (sign == 0) {
+                continue;
             }
+            if (lastSign != 0 && sign != lastSign && i > 0) {
+                turns.add(i);
+            }
+            lastSign = sign;
         }
         if (turns.size() == 1) {
             throw new DacException(where + ": the pressure never turns (" + n + " samples, " + String.format(java.util.Locale.ROOT,
