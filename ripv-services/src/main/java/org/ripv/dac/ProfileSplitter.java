@@ -51,8 +51,11 @@ public final class ProfileSplitter {
         turns.add(0);
         // pyglider's test is d[i] * d[i+1] < 0; a flat top (a zero difference) would hide a turn
         // from it, so the sign compared is that of the last difference that was not zero.
+        // Within half a filter of either end the running mean sees numpy's zero padding, which
+        // bends any series towards 0: a "turn" there is the filter's, not the glider's.
+        int edge = filterLength / 2 + 1;
         double lastSign = 0;
-        for (int i = 0; i + 1 < n; i++) {
+        for (int i = edge; i + 1 < n - edge; i++) {
             double sign = Math.signum(s[i + 1] - s[i]);
             if (sign == 0) {
                 continue;
