@@ -74,7 +74,7 @@ public final class Metadata {
         return parse(root, file.getFileName().toString());
     }
 
-    static Metadata parse(JsonNode root, String source) throws DacException {
+    public static Metadata parse(JsonNode root, String source) throws DacException {
         List<String> problems = new ArrayList<>();
         if (root == null || !root.isObject()) {
             throw new DacException(source + ": expected an object with 'global', 'platform' and 'instrument_ctd', found " + QcConfig.kind(root));

@@ -68,7 +68,7 @@ public final class QcConfig {
         return parse(root, file.toString());
     }
 
-    static QcConfig parse(JsonNode root, String source) throws DacException {
+    public static QcConfig parse(JsonNode root, String source) throws DacException {
         if (root == null || !root.isObject()) {
             throw new DacException(source + ": expected variables with a 'qartod' section each (ioos_qc's YAML), found " + kind(root));
         }
