@@ -44,10 +44,54 @@ public final class ProfileWriter {
     private final Metadata meta;
     private final QcConfig qc;
     private final CdlTemplate template = CdlTemplate.v2();
+    /** Every variable's attributes as written, made once: they depend on the template, metadata and QC only. */
+    private final Map<String, List<Attribute>> attributes = new LinkedHashMap<>();
 
     public ProfileWriter(Metadata meta, QcConfig qc) {
         this.meta = meta;
         this.qc = qc;
+        for (CdlTemplate.Var tv : template.variables()) {
+            List<Attribute> list = new ArrayList<>();
+            for (Map.Entry<String, Object> a : tv.attributes().entrySet()) {
+                Object v = value(tv, a.getKey(), a.getValue());
+                if (a.getKey().equals("ancillary_variables") && qc.tests().containsKey(tv.name())) {
+                    List<String> names = new ArrayList<>();
+                    for (QcConfig.Test t : qc.tests().get(tv.name())) {
+                        names.add("qartod_" + tv.name() + "_" + t.shortName() + "_flag");
+                    }
+                    names.add("qartod_" + tv.name() + "_primary_flag");
+                    v = v + " " + String.join(" ", names);
+                }
+                list.add(attribute(a.getKey(), v));
+            }
+            attributes.put(tv.name(), List.copyOf(list));
+        }
+        for (Map.Entry<String, List<QcConfig.Test>> e : qc.tests().entrySet()) {
+            for (QcConfig.Test t : e.getValue()) {
+                attributes.put("qartod_" + e.getKey() + "_" + t.shortName() + "_flag", flagAttributes(e.getKey(), t.shortName(), t.json()));
+            }
+            attributes.put("qartod_" + e.getKey() + "_primary_flag", flagAttributes(e.getKey(), "primary", null));
+        }
+    }
+
+    private static List<Attribute> flagAttributes(String var, String test, String config) {
+        boolean primary = test.equals("primary");
+        List<Attribute> a = new ArrayList<>();
+        a.add(new Attribute("_FillValue", (byte) 9));
+        a.add(new Attribute("long_name", primary ? "QARTOD Primary Flag for " + var : "QARTOD " + test.replace('_', ' ') + " test flag for " + var));
+        a.add(new Attribute("standard_name", primary ? "aggregate_quality_flag" : test + "_test_quality_flag"));
+        a.add(new Attribute("flag_values", Array.factory(new byte[] {1, 2, 3, 4, 9})));
+        a.add(new Attribute("flag_meanings", "GOOD NOT_EVALUATED SUSPECT FAIL MISSING"));
+        a.add(new Attribute("valid_min", (byte) 1));
+        a.add(new Attribute("valid_max", (byte) 9));
+        a.add(new Attribute("ioos_qc_module", "qartod"));
+        a.add(new Attribute("ioos_qc_test", primary ? "aggregate" : test + "_test"));
+        a.add(new Attribute("ioos_qc_target", var));
+        if (config != null) {
+            a.add(new Attribute("ioos_qc_config", config));
+        }
+        a.add(new Attribute("references", "https://ioos.noaa.gov/project/qartod/"));
+        return List.copyOf(a);
     }
 
     /** The DAC's name for a profile's file: {@code glider_yyyymmddTHHMMSSZ_rt.nc} (real time) or {@code _delayed.nc}. */
@@ -99,42 +143,17 @@ public final class ProfileWriter {
             w.addDimension(null, "traj_strlen", 20);
             Map<String, Variable> vars = new LinkedHashMap<>();
             for (CdlTemplate.Var tv : template.variables()) {
-                DataType type = type(tv.type());
-                Variable v = w.addVariable(null, tv.name(), type, String.join(" ", tv.dims()));
-                for (Map.Entry<String, Object> a : tv.attributes().entrySet()) {
-                    w.addVariableAttribute(v, attribute(a.getKey(), value(tv, a.getKey(), a.getValue())));
-                }
+                Variable v = w.addVariable(null, tv.name(), type(tv.type()), String.join(" ", tv.dims()));
+                attributes.get(tv.name()).forEach(a -> w.addVariableAttribute(v, a));
                 vars.put(tv.name(), v);
             }
             for (Map.Entry<String, Map<String, byte[]>> e : flags.entrySet()) {
-                String var = e.getKey();
-                List<String> names = new ArrayList<>();
                 for (String test : e.getValue().keySet()) {
-                    String name = "qartod_" + var + "_" + test + "_flag";
-                    names.add(name);
+                    String name = "qartod_" + e.getKey() + "_" + test + "_flag";
                     Variable v = w.addVariable(null, name, DataType.BYTE, time.getShortName());
-                    boolean primary = test.equals("primary");
-                    w.addVariableAttribute(v, new Attribute("_FillValue", (byte) 9));
-                    w.addVariableAttribute(v, new Attribute("long_name", primary ? "QARTOD Primary Flag for " + var
-                            : "QARTOD " + test.replace('_', ' ') + " test flag for " + var));
-                    w.addVariableAttribute(v, new Attribute("standard_name", primary ? "aggregate_quality_flag" : test + "_test_quality_flag"));
-                    w.addVariableAttribute(v, new Attribute("flag_values", Array.factory(new byte[] {1, 2, 3, 4, 9})));
-                    w.addVariableAttribute(v, new Attribute("flag_meanings", "GOOD NOT_EVALUATED SUSPECT FAIL MISSING"));
-                    w.addVariableAttribute(v, new Attribute("valid_min", (byte) 1));
-                    w.addVariableAttribute(v, new Attribute("valid_max", (byte) 9));
-                    w.addVariableAttribute(v, new Attribute("ioos_qc_module", "qartod"));
-                    w.addVariableAttribute(v, new Attribute("ioos_qc_test", primary ? "aggregate" : test + "_test"));
-                    w.addVariableAttribute(v, new Attribute("ioos_qc_target", var));
-                    if (!primary) {
-                        String config = qc.tests().get(var).stream().filter(t -> t.shortName().equals(test)).findFirst().orElseThrow().json();
-                        w.addVariableAttribute(v, new Attribute("ioos_qc_config", config));
-                    }
-                    w.addVariableAttribute(v, new Attribute("references", "https://ioos.noaa.gov/project/qartod/"));
+                    attributes.get(name).forEach(a -> w.addVariableAttribute(v, a));
                     vars.put(name, v);
                 }
-                Variable target = vars.get(var);
-                String anc = target.findAttribute("ancillary_variables").getStringValue();
-                w.addVariableAttribute(target, new Attribute("ancillary_variables", anc + " " + String.join(" ", names)));
             }
             globals(w, p);
             w.create();
