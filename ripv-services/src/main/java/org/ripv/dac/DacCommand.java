@@ -17,7 +17,7 @@ import picocli.CommandLine.Spec;
  * DAC's checks on such files (docs/dac.md). Exit codes: 0 done, 1 input refused or a file that
  * fails the check, 2 a usage error.
  */
-@Command(name = "dac", mixinStandardHelpOptions = true, subcommands = {DacCommand.Profiles.class, DacCommand.Check.class},
+@Command(name = "dac", mixinStandardHelpOptions = true, subcommands = {DacCommand.Profiles.class, DacCommand.Check.class, DacCommand.Push.class},
         description = "IOOS Glider DAC profile files (NetCDF-3, template IOOS_Glider_NetCDF_v2.0) with QARTOD flags.")
 public final class DacCommand implements Callable<Integer> {
     @Spec
@@ -85,6 +85,66 @@ public final class DacCommand implements Callable<Integer> {
                 r.lines().forEach(out::println);
                 out.flush();
                 return r.allPassed() ? 0 : 1;
+            } catch (DacException e) {
+                err.println("Error: " + e.getMessage());
+                return 1;
+            }
+        }
+    }
+
+    @Command(name = "push", mixinStandardHelpOptions = true,
+            description = {"Pushes profile files to the DAC's SFTP folder: key authentication, the host key checked against a known-hosts"
+                    + " file, each file checked first, a ledger of what was sent (nothing is sent twice), retries with back-off.",
+                    "Example: ripv dac push --to sftp://rosie@gliders.ioos.us/rosie_713-20190615 --key ~/.ssh/id_ecdsa --known-hosts ~/.ssh/known_hosts dac"})
+    static final class Push implements Callable<Integer> {
+        @Parameters(arity = "1..*", paramLabel = "FILE.nc|DIR", description = "Profile files, or folders of them (their *.nc).")
+        List<Path> files;
+
+        @Option(names = "--to", required = true, paramLabel = "sftp://USER@HOST[:PORT]/FOLDER", description = "The deployment's folder on the DAC's SFTP server.")
+        java.net.URI to;
+
+        @Option(names = "--key", required = true, paramLabel = "FILE", description = "The private key (OpenSSH or PEM; RSA or ECDSA).")
+        Path key;
+
+        @Option(names = "--known-hosts", required = true, paramLabel = "FILE", description = "known_hosts holding the server's host key.")
+        Path knownHosts;
+
+        @Option(names = "--ledger", paramLabel = "FILE", description = "The ledger (default: dac-ledger.tsv in the first folder given, or beside the first file).")
+        Path ledger;
+
+        @Option(names = "--attempts", paramLabel = "N", defaultValue = "4", description = "Connection attempts, 1 s, 2 s, 4 s … apart (default ${DEFAULT-VALUE}).")
+        int attempts;
+
+        @Spec
+        picocli.CommandLine.Model.CommandSpec spec;
+
+        @Override
+        public Integer call() throws IOException, InterruptedException {
+            PrintWriter out = spec.commandLine().getOut();
+            PrintWriter err = spec.commandLine().getErr();
+            List<Path> all = new java.util.ArrayList<>();
+            for (Path f : files) {
+                if (Files.isDirectory(f)) {
+                    try (var s = Files.list(f)) {
+                        s.filter(p -> p.getFileName().toString().endsWith(".nc")).sorted().forEach(all::add);
+                    }
+                } else if (Files.isRegularFile(f)) {
+                    all.add(f);
+                } else {
+                    err.println("Error: no such file or folder: " + f);
+                    return 1;
+                }
+            }
+            Path l = ledger != null ? ledger : (Files.isDirectory(files.get(0)) ? files.get(0) : files.get(0).toAbsolutePath().getParent()).resolve("dac-ledger.tsv");
+            try {
+                List<SftpPush.Outcome> r = new SftpPush(to, key, knownHosts, new DacLedger(l), attempts, java.time.Duration.ofSeconds(1)).push(all);
+                boolean ok = true;
+                for (SftpPush.Outcome o : r) {
+                    out.println(o.file().getFileName() + ": " + o.status() + " (" + o.detail() + ")");
+                    ok &= o.status().equals("sent") || o.status().equals("already sent");
+                }
+                out.println((r.isEmpty() ? "no .nc files to push" : r.stream().filter(o -> o.status().equals("sent")).count() + " sent") + "; ledger " + l);
+                return ok ? 0 : 1;
             } catch (DacException e) {
                 err.println("Error: " + e.getMessage());
                 return 1;
