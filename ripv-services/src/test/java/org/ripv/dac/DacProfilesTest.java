@@ -140,6 +140,22 @@ class DacProfilesTest {
     }
 
     @Test
+    void theDelayedModeFilesOfTheSameSegmentGiveDelayedFilesOfTheSameProfiles(@TempDir Path in, @TempDir Path out) throws Exception {
+        SensorListCache cache = new SensorListCache(DacFixtures.cache());
+        Path dbd = in.resolve(SEG + ".dbd");
+        Path ebd = in.resolve(SEG + ".ebd");
+        Files.write(dbd, org.ripv.services.ingest.SlocumEncoder.recode(Files.readAllBytes(DacFixtures.raw(SEG + ".sbd")), cache, "dbd", List.of(), (r, n) -> { }));
+        Files.write(ebd, org.ripv.services.ingest.SlocumEncoder.recode(Files.readAllBytes(DacFixtures.raw(SEG + ".tbd")), cache, "ebd", List.of(), (r, n) -> { }));
+        DacRun.Result delayed = new DacRun(new SegmentReader(cache), ProfileSplitter.defaults(),
+                new ProfileWriter(Metadata.read(DacFixtures.meta()), QcConfig.none()), new ProfileChecker()).run(List.of(ebd, dbd), out);
+        assertThat(delayed.allPassed()).isTrue();
+        Path rtOut = Files.createDirectories(in.resolve("rt"));
+        DacRun.Result rt = run(rtOut);
+        assertThat(delayed.written()).extracting(f -> f.getFileName().toString())
+                .containsExactlyElementsOf(rt.written().stream().map(f -> f.getFileName().toString().replace("_rt.nc", "_delayed.nc")).toList());
+    }
+
+    @Test
     void theSplitterIsPyglidersWithSettableLimits(@TempDir Path out) throws Exception {
         double[] p = new double[200];
         for (int i = 0; i < 200; i++) {
