@@ -116,6 +116,13 @@ public final class DacBench {
             }
             Arrays.sort(ratios);
             double median = ratios[runs / 2];
+            if (cpuFloor == 0 || cpuPath == 0) {
+                // the process clock ticks in 10 ms: a run this short has no CPU figure to give
+                System.out.printf(Locale.ROOT, "DAC files against NetCDF-Java writing the same files alone: wall median %.2f×;"
+                        + " CPU not measured (the run is shorter than the process clock's 10 ms tick)%n", ratios[runs / 2]);
+                System.out.println(CpuClock.machineLine());
+                return;
+            }
             double cpuRatio = (cpuPath / (double) nPath) / (cpuFloor / (double) nFloor);
             System.out.printf(Locale.ROOT, "DAC files (split, GSW, QC, template, write and rename) against NetCDF-Java writing the same"
                     + " files alone: best %.0f against %.0f profiles/s; wall median %.2f×, CPU %.2f× (target <= 1.5×)%n",
