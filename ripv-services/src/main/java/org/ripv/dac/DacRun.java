@@ -1,7 +1,6 @@
 package org.ripv.dac;
 
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -10,8 +9,8 @@ import java.util.Map;
 /**
  * One run of the pipeline over a set of files: decode, split, derive, flag, write, check. All
  * segments are decoded and split before the first file is written, so input that is refused
- * leaves nothing behind; a written file that fails the check is kept as {@code NAME.failed} and
- * reported, never left under the name a DAC upload would pick up.
+ * leaves nothing behind; a file is checked before it takes its name, and one that fails is kept
+ * as {@code NAME.failed} and reported, never given the name a DAC upload would pick up.
  */
 public final class DacRun {
     /** What was written, one line a profile, and whether every file passed the check. */
@@ -39,8 +38,9 @@ public final class DacRun {
         List<String> lines = new ArrayList<>();
         boolean ok = true;
         for (Profile p : all) {
-            Path f = writer.write(p, out);
-            ProfileChecker.Report r = checker.check(f);
+            ProfileChecker.Report[] report = new ProfileChecker.Report[1];
+            Path f = writer.write(p, out, checker, report);
+            ProfileChecker.Report r = report[0];
             String qc = qcSummary(writer.flags(p));
             if (r.passed()) {
                 written.add(f);
@@ -49,9 +49,7 @@ public final class DacRun {
                         r.warnings().isEmpty() ? "" : " (warnings: " + String.join("; ", r.warnings()) + ")"));
             } else {
                 ok = false;
-                Path failed = f.resolveSibling(f.getFileName() + ".failed");
-                Files.move(f, failed, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
-                lines.add(failed.getFileName() + ": FAILS the DAC check, kept, not for sending: " + String.join("; ", r.failures()));
+                lines.add(f.getFileName() + ": FAILS the DAC check, kept, not for sending: " + String.join("; ", r.failures()));
             }
         }
         if (all.isEmpty()) {

@@ -102,6 +102,35 @@ public final class ProfileWriter {
 
     /** Writes the profile into {@code dir}; returns the file. */
     public Path write(Profile p, Path dir) throws IOException {
+        return writeUnchecked(p, dir);
+    }
+
+    /**
+     * Writes the profile into {@code dir}, checked before it takes its name: a file the checker
+     * fails becomes {@code NAME.failed} (the report says why), so no failing file ever has a name an
+     * upload would pick up. Returns the file and its report (null without a checker).
+     */
+    public Path write(Profile p, Path dir, ProfileChecker checker, ProfileChecker.Report[] report) throws IOException {
+        Path target = dir.resolve(fileName(p));
+        Path tmp = dir.resolve(target.getFileName() + ".tmp");
+        Files.deleteIfExists(tmp);
+        boolean done = false;
+        try {
+            writeTo(p, tmp);
+            ProfileChecker.Report r = checker.check(tmp);
+            report[0] = new ProfileChecker.Report(target, r.failures(), r.warnings());
+            Path to = r.passed() ? target : dir.resolve(target.getFileName() + ".failed");
+            Files.move(tmp, to, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
+            done = true;
+            return to;
+        } finally {
+            if (!done) {
+                Files.deleteIfExists(tmp);
+            }
+        }
+    }
+
+    private Path writeUnchecked(Profile p, Path dir) throws IOException {
         Path target = dir.resolve(fileName(p));
         Path tmp = dir.resolve(target.getFileName() + ".tmp");
         Files.deleteIfExists(tmp);
