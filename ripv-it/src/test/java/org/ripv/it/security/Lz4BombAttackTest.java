@@ -65,14 +65,28 @@ class Lz4BombAttackTest {
 
     /** A compressed file of {@code cycles} cycles, the values changing each cycle so each is stored. */
     static byte[] scd(String name, int cycles) throws Exception {
+        return scd(name, cycles, 0);
+    }
+
+    /** As above with {@code wide} more 8-byte sensors, each changing every cycle: many plain bytes a cycle. */
+    static byte[] scd(String name, int cycles, int wide) throws Exception {
         ByteArrayOutputStream plain = new ByteArrayOutputStream();
         Map<String, String> tags = new LinkedHashMap<>();
         tags.put("full_filename", name);
         tags.put("filename_extension", "sbd");
-        SlocumEncoder e = SlocumEncoder.start(plain, tags, List.of(new SlocumSensor("m_present_time", "timestamp", 8),
+        List<SlocumSensor> sensors = new java.util.ArrayList<>(List.of(new SlocumSensor("m_present_time", "timestamp", 8),
                 new SlocumSensor("m_depth", "m", 4)));
+        for (int k = 0; k < wide; k++) {
+            sensors.add(new SlocumSensor("x_wide_" + k, "nodim", 8));
+        }
+        SlocumEncoder e = SlocumEncoder.start(plain, tags, sensors);
+        double[] row = new double[sensors.size()];
         for (int i = 0; i < cycles; i++) {
-            e.cycle(new double[] {1.56e9 + i, i % 2});
+            row[0] = 1.56e9 + i;
+            for (int k = 1; k < row.length; k++) {
+                row[k] = i % 2;
+            }
+            e.cycle(row);
         }
         e.end();
         byte[] p = plain.toByteArray();
@@ -101,8 +115,8 @@ class Lz4BombAttackTest {
     @Test
     void aBombIsRefusedWithTheLimitAndNothingStored() throws Exception {
         ClientSocketHandler otto = sys.login("otto");
-        byte[] bytesBomb = scd("bomb_a-2019-001-0-0", 1_000_000); // ~21 MB decompressed
-        assertThat(bytesBomb.length).as("a small file").isLessThan(8 << 20);
+        byte[] bytesBomb = scd("bomb_a-2019-001-0-0", 20_000, 100); // ~16 MB decompressed in 20,000 rows
+        assertThat(bytesBomb.length).as("a small file").isLessThan(1 << 20);
         OutgoingServerMessage r = ingest(otto, "bomb_a-2019-001-0-0.scd", bytesBomb);
         assertThat(r.status()).isEqualTo(Status.ERROR);
         assertThat(r.footer().replyText()).contains("refused, nothing stored").contains("decompresses to more than 8388608 bytes")

@@ -48,6 +48,10 @@ class RequestFloodAttackTest {
         }
     }
 
+    static String reply(ClientSocketHandler c, String body) throws Exception {
+        return c.call("", body, Priority.NORMAL, T, p -> { }).footer().replyText();
+    }
+
     static List<OutgoingServerMessage> all(List<CompletableFuture<OutgoingServerMessage>> sent) throws Exception {
         List<OutgoingServerMessage> got = new ArrayList<>();
         for (CompletableFuture<OutgoingServerMessage> f : sent) {
@@ -66,6 +70,11 @@ class RequestFloodAttackTest {
         ClientSocketHandler alice = sys.login("alice");
         // The clock is busy for 3 s: everything mallory sends meanwhile waits.
         CompletableFuture<OutgoingServerMessage> busy = mallory.send(CLOCK, "sleep 3000", Priority.NORMAL, p -> { });
+        long until = System.nanoTime() + T.toNanos();
+        while (!reply(alice, "?status " + CLOCK).contains("busy")) { // the sleep runs: nothing of the flood can finish before it
+            assertThat(System.nanoTime()).as("the clock starts its sleep").isLessThan(until);
+            Thread.sleep(10);
+        }
         List<CompletableFuture<OutgoingServerMessage>> urgent = new ArrayList<>();
         for (int i = 0; i < 200; i++) {
             urgent.add(mallory.send(CLOCK, "echo urgent " + i, Priority.URGENT, p -> { }));
