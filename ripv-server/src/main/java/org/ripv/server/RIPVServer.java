@@ -322,6 +322,7 @@ public final class RIPVServer implements AutoCloseable {
                 files.uploadDir(), config.maxUpload(), config.clientJar(), this::describe, port(), security.webAccess(),
                 config.security().httpUpload(), tls.context(), new WebClients(() -> acceptor), codec, mapTiles));
         // The upload form stores through the FileStore with ?upload's quota and owners (issue 33 item 5).
+        page.withPagesPerUser(config.security().webPages()); // issue 33 item 2
         page.withFormUploads((user, parked) -> files.storeWhole(user, parked,
                 permits().user(user).map(u -> permits().quota(u)).orElse(0L)));
         if (publicNames != null) {

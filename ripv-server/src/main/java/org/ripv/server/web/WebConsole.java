@@ -127,6 +127,12 @@ public final class WebConsole implements AutoCloseable {
         return this;
     }
 
+    /** Pages (WebSockets) one user may have open over all their log-ins, one log-in half of it ({@code --web-pages}). */
+    public WebConsole withPagesPerUser(int n) {
+        sessions.pagesPerUser(n);
+        return this;
+    }
+
     /** Where the upload form stores files (the server's FileStore, with ?upload's rules); without it the form takes none. Before {@link #start()}. */
     public WebConsole withFormUploads(FormUploads store) {
         this.formUploads = store;

@@ -30,10 +30,12 @@ final class WebSessions {
     static final int MAX_SESSIONS = 1000;
     /** Browsers (devices, profiles) one user may be logged in from at once. */
     static final int MAX_SESSIONS_PER_USER = 16;
-    /** Pages (tabs) one log-in may have open: each page is one WebSocket and one Post Office client. */
+    /** Pages (tabs) one log-in may have open by default: each page is one WebSocket and one Post Office client. */
     static final int MAX_SOCKETS_PER_SESSION = 32;
-    /** Pages one user may have open over all their log-ins. */
+    /** Pages one user may have open over all their log-ins by default ({@code --web-pages}). */
     static final int MAX_SOCKETS_PER_USER = 64;
+    private volatile int socketsPerSession = MAX_SOCKETS_PER_SESSION;
+    private volatile int socketsPerUser = MAX_SOCKETS_PER_USER;
     /** Files one session may upload. */
     static final int MAX_FILES = 100;
 
@@ -95,6 +97,12 @@ final class WebSessions {
         return s;
     }
 
+    /** Pages one user may have open ({@code --web-pages}); one log-in at most half of it. */
+    void pagesPerUser(int n) {
+        socketsPerUser = n;
+        socketsPerSession = Math.max(1, n / 2);
+    }
+
     /** Ends every expired session, closing its pages' WebSockets (a page of an expired log-in gets no more pushes). */
     synchronized int sweep() {
         long now = clock.getAsLong();
@@ -115,12 +123,12 @@ final class WebSessions {
         if (socket != null && s.sockets.contains(socket)) {
             return null;
         }
-        if (s.sockets.size() >= MAX_SOCKETS_PER_SESSION) {
-            return "this log-in has " + MAX_SOCKETS_PER_SESSION + " pages open, the most it may; close one and reload";
+        if (s.sockets.size() >= socketsPerSession) {
+            return "this log-in has " + socketsPerSession + " pages open, the most it may; close one and reload";
         }
         int mine = sessions.values().stream().filter(x -> x.user.equals(s.user)).mapToInt(x -> x.sockets.size()).sum();
-        if (mine >= MAX_SOCKETS_PER_USER) {
-            return s.user + " has " + MAX_SOCKETS_PER_USER + " pages open over all log-ins, the most a user may; close one and reload";
+        if (mine >= socketsPerUser) {
+            return s.user + " has " + socketsPerUser + " pages open over all log-ins, the most a user may; close one and reload";
         }
         if (socket != null) {
             s.sockets.add(socket);
