@@ -63,7 +63,10 @@ class ViewOnlySqlAttackTest {
         ClientSocketHandler vera = sys.login("vera");
         // The data page's own three queries.
         for (String ok : List.of("SELECT * FROM positions ORDER BY time_utc DESC FETCH FIRST 1000 ROWS ONLY",
-                "SELECT * FROM latest ORDER BY vehicle, sensor", "SELECT * FROM dives ORDER BY start_utc DESC")) {
+                "SELECT * FROM latest ORDER BY vehicle, sensor", "SELECT * FROM dives ORDER BY start_utc DESC",
+                // a track's points as the server's vis:track asks for them, as the user
+                "SELECT lon, lat FROM positions WHERE vehicle = 'unit_363' AND time_utc <= CAST('2030-01-01 00:00:00' AS TIMESTAMP)"
+                        + " ORDER BY time_utc DESC")) {
             OutgoingServerMessage r = vera.call(DB, ok, Priority.NORMAL, T, p -> { });
             assertThat(r.status()).as(ok + ": " + r.footer().replyText()).isEqualTo(Status.OK);
         }
@@ -76,7 +79,8 @@ class ViewOnlySqlAttackTest {
                 "SELECT * FROM positions UNION SELECT * FROM positions ORDER BY 1",
                 "SELECT * FROM data_file ORDER BY 1",
                 "SELECT * FROM \"SYS\".\"SYSTABLES\" ORDER BY 1",
-                "SELECT * FROM positions ORDER BY 1 -- comment")) {
+                "SELECT * FROM positions ORDER BY 1 -- comment",
+                "SELECT * FROM positions ORDER BY CAST((SELECT MAX(ingested_by) FROM data_file) AS VARCHAR(9))")) {
             long t0 = System.nanoTime();
             OutgoingServerMessage r = vera.call(DB, attack, Priority.NORMAL, T, p -> { });
             assertThat(r.status()).as(attack).isEqualTo(Status.ERROR);
