@@ -115,8 +115,8 @@ class PlanEndToEndTest {
         assertThat(table.rows()).hasSize(3);
         OutgoingServerMessage bad = call(alice, "?plan " + mailbox + " check bad_l14.ma");
         assertThat(bad.footer().errorCode()).isEqualTo(ErrorCode.BAD_REQUEST);
-        assertThat(bad.footer().replyText()).contains("bad_l14.ma:15: latitude '4168.25' has 68.25 minutes: minutes must be under 60")
-                .contains("bad_l14.ma:13: <start:waypoints> has no <end:waypoints>");
+        assertThat(bad.footer().replyText()).contains("bad_l14.ma:14: latitude '4168.25' has 68.25 minutes: minutes must be under 60")
+                .contains("bad_l14.ma:12: <start:waypoints> has no <end:waypoints>");
 
         // item 3: refused files and rights stage nothing; good ones are staged and queued
         OutgoingServerMessage refused = call(alice, "?plan " + mailbox + " send bad_l14.ma as goto_l10.ma");
