@@ -155,13 +155,18 @@ class PlanEndToEndTest {
         String history = call(alice, "?history " + mailbox + " --last 1000").footer().replyText();
         assertThat(history).contains("change 1 goto_l10.ma (from goto_l11.ma): queued")
                 .contains("change 1 goto_l10.ma (from goto_l11.ma): sent")
-                .contains("change 1 goto_l10.ma (from goto_l11.ma): received: the vehicle's dir lists goto_l10.ma with " + GOTO.length()
-                        + " bytes")
+                .contains("change 1 goto_l10.ma (from goto_l11.ma): received: the vehicle's dir lists goto_l10.ma with its size; sha256 "
+                        + sha256(GOTO))
                 .contains("change 3 put c_dive_target_depth 30: received: the vehicle echoed sensor:c_dive_target_depth=30")
                 .contains("change 2 goto_l12.ma (from goto_l13.ma) is not in effect");
         assertThat(history.lines().filter(l -> l.contains("ALERT") && l.contains("change 2 goto_l12.ma"))).hasSize(1);
         // the fleet view lists what is not settled: nothing now
         assertThat(call(bob, "?changes").footer().replyText()).startsWith("0 pending change(s)");
+    }
+
+    private static String sha256(String text) throws Exception {
+        return java.util.HexFormat.of().formatHex(java.security.MessageDigest.getInstance("SHA-256")
+                .digest(text.getBytes(StandardCharsets.US_ASCII)));
     }
 
     private static String awaitChanges(ClientSocketHandler c, String mailbox, String wanted, int seconds) throws Exception {

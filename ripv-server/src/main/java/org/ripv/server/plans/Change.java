@@ -51,9 +51,4 @@ record Change(long id, String mailbox, Kind kind, String target, String value, S
     Change withDetail(String why) {
         return withSurfacings(surfacings, why);
     }
-
-    Change withSha(String sha) {
-        return new Change(id, mailbox, kind, target, value, source, sha, bytes, user, state, queuedAt, sentAt, receivedAt,
-                settledAt, surfacings, staged, workflowId, detail, waypoints);
-    }
 }

@@ -127,11 +127,13 @@ final class ChangeFollower {
                 continue;
             }
             String sha = sha256(files.uploadDir().resolve(sentAs));
+            String differs = sha.equals(c.sha256()) ? ""
+                    : " (NOT the file checked, sha256 " + c.sha256() + ": the staged file was replaced after ?plan send)";
             Change sent = move(c, Change.State.SENT, e.time(), "sent by the to-vehicle round: " + sentAs + ".receipt, sha256 " + sha
-                    + (sha.equals(c.sha256()) ? "" : " (NOT the file checked, sha256 " + c.sha256() + ": it was replaced after ?plan send)"));
+                    + differs);
             if (e.text().contains("dir lists " + name + " with ")) {
-                move(sent.withSha(sha), Change.State.RECEIVED, e.time(), "the vehicle's dir lists " + name + " with " + c.bytes()
-                        + " bytes; sha256 " + sha + " (receipt " + sentAs + ".receipt)");
+                move(sent, Change.State.RECEIVED, e.time(), "the vehicle's dir lists " + name + " with its size; sha256 " + sha
+                        + differs + " (receipt " + sentAs + ".receipt)");
             }
             return; // one staged file is one change
         }
