@@ -160,6 +160,14 @@ class PlanEndToEndTest {
                 .contains("change 3 put c_dive_target_depth 30: received: the vehicle echoed sensor:c_dive_target_depth=30")
                 .contains("change 2 goto_l12.ma (from goto_l13.ma) is not in effect");
         assertThat(history.lines().filter(l -> l.contains("ALERT") && l.contains("change 2 goto_l12.ma"))).hasSize(1);
+        // item 5: the forecast from the simulated glider's last fix (calls under a minute apart: the assumed speed)
+        OutgoingServerMessage forecast = call(alice, "?plan ru29 forecast goto_l11.ma");
+        assertThat(forecast.status()).as(forecast.footer().replyText()).isEqualTo(Status.OK);
+        assertThat(forecast.footer().replyText()).contains("forecast of goto_l11.ma for " + mailbox + " from its fix at ")
+                .contains("speed 0.3 m/s (assumed").contains("no current known");
+        assertThat(((TableResult) forecast.footer().result()).rows()).extracting(r -> r[0]).containsExactly("1", "2", "0");
+        assertThat(call(alice, "?plan ru29 forecast goto_l11.ma 0.6").footer().replyText()).contains("speed 0.6 m/s (given)");
+        assertThat(call(alice, "?plan ru29 forecast goto_l11.ma 99").footer().errorCode()).isEqualTo(ErrorCode.BAD_REQUEST);
         // the fleet view lists what is not settled: nothing now
         assertThat(call(bob, "?changes").footer().replyText()).startsWith("0 pending change(s)");
     }

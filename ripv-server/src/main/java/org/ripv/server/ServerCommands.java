@@ -62,8 +62,8 @@ final class ServerCommands {
         COMMANDS.put("?queue", new Command(Ids.FID_QUEUE, "?queue MAILBOX | add MAILBOX NAME | remove MAILBOX ID | clear MAILBOX",
                 "the workflows queued for a vehicle's next call (docs/workflows.md)"));
         COMMANDS.put("?receipts", new Command(Ids.FID_RECEIPTS, "?receipts MAILBOX [--last N]", "what the last workflow runs did"));
-        COMMANDS.put("?plan", new Command(Ids.FID_PLAN, "?plan MAILBOX check FILE | send FILE [as NAME] | set NAME VALUE",
-                "check a Slocum behaviour file (.ma), send it on the next call, or queue a put (docs/plans.md)"));
+        COMMANDS.put("?plan", new Command(Ids.FID_PLAN, "?plan MAILBOX check FILE | send FILE [as NAME] | set NAME VALUE | forecast FILE [SPEED]",
+                "check a Slocum behaviour file (.ma), send it on the next call, queue a put, or forecast its legs (docs/plans.md)"));
         COMMANDS.put("?changes", new Command(Ids.FID_CHANGES, "?changes [MAILBOX]",
                 "each change sent to a vehicle: queued, sent, received, in effect or not"));
         COMMANDS.put("?cancel", new Command(Ids.FID_CANCEL, "?cancel MESSAGE-ID [CLIENT-ID]", "stop a request that is queued or running"));

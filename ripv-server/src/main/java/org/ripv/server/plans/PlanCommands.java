@@ -50,11 +50,15 @@ final class PlanCommands {
     private final PlanHost host;
     private final ChangeBook book;
     private final PlanLimits limits;
+    private final Fixes fixes;
+    /** A Slocum's usual horizontal speed through the water, for a glider with fewer than two fixes. */
+    static final double ASSUMED_SPEED = 0.3;
 
-    PlanCommands(PlanHost host, ChangeBook book, PlanLimits limits) {
+    PlanCommands(PlanHost host, ChangeBook book, PlanLimits limits, Fixes fixes) {
         this.host = host;
         this.book = book;
         this.limits = limits;
+        this.fixes = fixes;
     }
 
     /** A refusal by the rights: answered FORBIDDEN. */
@@ -68,7 +72,8 @@ final class PlanCommands {
 
     OutgoingServerMessage plan(IncomingServerMessage request) throws IOException {
         String[] w = request.header().body().trim().split("\\s+");
-        String usage = "usage: ?plan MAILBOX check FILE | ?plan MAILBOX send FILE [as NAME] | ?plan MAILBOX set NAME VALUE";
+        String usage = "usage: ?plan MAILBOX check FILE | ?plan MAILBOX send FILE [as NAME] | ?plan MAILBOX set NAME VALUE"
+                + " | ?plan MAILBOX forecast FILE [SPEED]";
         if (w.length < 4) {
             throw new IllegalArgumentException(usage);
         }
@@ -88,8 +93,78 @@ final class PlanCommands {
                 need(w.length == 5, "usage: ?plan MAILBOX set NAME VALUE");
                 yield set(request, mailbox, w[3], w[4]);
             }
+            case "forecast" -> {
+                need(w.length == 4 || w.length == 5, "usage: ?plan MAILBOX forecast FILE [SPEED] (m/s through the water)");
+                yield forecast(request, mailbox, w[3], w.length == 5 ? w[4] : null);
+            }
             default -> throw new IllegalArgumentException(usage);
         };
+    }
+
+    /**
+     * Distance, bearing and ETA to each waypoint from the vehicle's last fix. The speed through
+     * the water is the pilot's, else the last two fixes' speed over ground less the current, else
+     * {@value #ASSUMED_SPEED} m/s; the current is the last dialog's {@code m_water_vx/vy}.
+     */
+    private OutgoingServerMessage forecast(IncomingServerMessage request, String mailbox, String name, String speedText)
+            throws IOException {
+        Found f = find(mailbox, name);
+        PlanCheck c = read(f, name);
+        if (!c.ok()) {
+            return error(request, Ids.FID_PLAN, ErrorCode.BAD_REQUEST, refusal(c, f));
+        }
+        if (!c.file().isGoto()) {
+            throw new IllegalArgumentException(name + " is a " + c.file().behavior() + " file: only a goto list has waypoints to forecast");
+        }
+        Fixes.Fix fix = fixes.last(mailbox).orElseThrow(() -> new IllegalArgumentException("no GPS fix of " + mailbox
+                + " since the server started: a forecast starts from the last surfacing's position"));
+        Fixes.Current cur = fixes.current(mailbox).orElse(new Fixes.Current(0, 0));
+        String currentWhy = fixes.current(mailbox).isPresent()
+                ? String.format(Locale.ROOT, "depth-averaged current %.3f m/s east, %.3f m/s north (the last dialog's m_water_vx/vy)",
+                cur.east(), cur.north()) : "no current known (m_water_vx/vy not in the dialogs)";
+        double speed;
+        String speedWhy;
+        if (speedText != null) {
+            if (!NUMBER.matcher(speedText).matches() || !(Double.parseDouble(speedText) > 0) || Double.parseDouble(speedText) > 5) {
+                throw new IllegalArgumentException("SPEED is the glider's speed through the water in m/s, over 0 and at most 5, not '"
+                        + speedText + "'");
+            }
+            speed = Double.parseDouble(speedText);
+            speedWhy = "speed " + speedText + " m/s (given)";
+        } else {
+            Fixes.Fix before = fixes.previous(mailbox).orElse(null);
+            double seconds = before == null ? 0 : (fix.time() - before.time()) / 1000.0;
+            if (before != null && seconds >= 60) {
+                double d = org.ripv.plans.Forecast.distance(before.lat(), before.lon(), fix.lat(), fix.lon());
+                double b = Math.toRadians(org.ripv.plans.Forecast.bearing(before.lat(), before.lon(), fix.lat(), fix.lon()));
+                double east = d / seconds * Math.sin(b) - cur.east();
+                double north = d / seconds * Math.cos(b) - cur.north();
+                speed = Math.hypot(east, north);
+                speedWhy = String.format(Locale.ROOT, "speed %.3f m/s through the water (%.3f m/s over ground between the last two"
+                        + " fixes, less the current)", speed, d / seconds);
+            } else {
+                speed = 0;
+                speedWhy = "";
+            }
+            if (!(speed > 0.05)) {
+                speed = ASSUMED_SPEED;
+                speedWhy = "speed " + ASSUMED_SPEED + " m/s (assumed: fewer than two fixes a minute apart, or no way made)";
+            }
+        }
+        List<org.ripv.plans.Forecast.Leg> legs = org.ripv.plans.Forecast.legs(c.file(), fix.lat(), fix.lon(),
+                Instant.ofEpochMilli(fix.time()), speed, cur.east(), cur.north());
+        String basis = String.format(Locale.ROOT, "of %s for %s from its fix at %s (%.5f, %.5f); %s; %s", name, mailbox,
+                Instant.ofEpochMilli(fix.time()), fix.lat(), fix.lon(), speedWhy, currentWhy);
+        List<String[]> rows = new ArrayList<>();
+        for (org.ripv.plans.Forecast.Leg l : legs) {
+            rows.add(new String[] {Integer.toString(l.n()), String.format(Locale.ROOT, "%.5f", l.lat()),
+                    String.format(Locale.ROOT, "%.5f", l.lon()), String.format(Locale.ROOT, "%.1f", l.legMetres()),
+                    String.format(Locale.ROOT, "%.1f", l.bearing()), String.format(Locale.ROOT, "%.1f", l.totalMetres()),
+                    l.eta() == null ? null : l.eta().toString()});
+        }
+        return ok(request, Ids.FID_PLAN, org.ripv.plans.Forecast.render(legs, basis), new TableResult("?plan forecast " + name,
+                List.of("n", "lat", "lon", "leg_m", "bearing", "total_m", "eta"),
+                List.of("INTEGER", "DOUBLE", "DOUBLE", "DOUBLE", "DOUBLE", "DOUBLE", "VARCHAR"), rows, false));
     }
 
     /** The file: in the upload store, else the vehicle's latest download of that name. */

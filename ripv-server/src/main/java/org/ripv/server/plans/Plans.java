@@ -33,11 +33,12 @@ public final class Plans implements AutoCloseable {
     private final PlanCommands commands;
     private final ChangeFollower follower;
     private final DialogWindow dialogs = new DialogWindow();
+    private final Fixes fixes = new Fixes();
     private final ThreadPoolExecutor thread;
 
     public Plans(PlanHost host, Path dir) throws IOException {
         this.book = new ChangeBook(dir);
-        this.commands = new PlanCommands(host, book, PlanLimits.DEFAULT);
+        this.commands = new PlanCommands(host, book, PlanLimits.DEFAULT, fixes);
         this.follower = new ChangeFollower(book, host.files(), host::publish);
         this.thread = new ThreadPoolExecutor(1, 1, 0, TimeUnit.SECONDS, new ArrayBlockingQueue<>(10_000), r -> {
             Thread t = new Thread(r, "ripv-plans");
@@ -58,7 +59,11 @@ public final class Plans implements AutoCloseable {
                     continue; // ours, or a line's alert: nothing to follow
                 }
                 try {
-                    dialogs.take(e).ifPresent(follower::judge);
+                    fixes.take(e);
+                    dialogs.take(e).ifPresent(f -> {
+                        fixes.take(f);
+                        follower.judge(f);
+                    });
                     follower.take(e);
                 } catch (RuntimeException x) {
                     log.warn("plans: a console entry of {} could not be followed: {}", e.mailbox(), x.toString());
@@ -73,7 +78,10 @@ public final class Plans implements AutoCloseable {
      * replace that (see docs/plans.md).
      */
     public void surfacing(SurfacingFacts facts) {
-        thread.execute(() -> follower.judge(facts));
+        thread.execute(() -> {
+            fixes.take(facts);
+            follower.judge(facts);
+        });
     }
 
     /** {@code ?plan ...}. */
