@@ -126,7 +126,7 @@ public final class Forecast {
             b.append(String.format(Locale.ROOT, "%n%4d  %10.5f  %11.5f  %8.2f  %6.0f°  %9.2f  %6.3f  %s", l.n(), l.lat(), l.lon(),
                     l.legMetres() / 1000, l.bearing(), l.totalMetres() / 1000, l.groundSpeed(),
                     l.eta() == null ? "not reachable: the current is stronger than the glider on this leg or one before"
-                            : l.eta().toString()));
+                            : l.eta().truncatedTo(java.time.temporal.ChronoUnit.SECONDS).toString()));
         }
         return b.toString();
     }
