@@ -81,7 +81,7 @@ class PlanEditorBrowserTest {
         }
     }
 
-    private static String text(ChromeDriver b, String id) {
+    private static String text(org.openqa.selenium.WebDriver b, String id) {
         return b.findElement(By.id(id)).getText();
     }
 
@@ -127,6 +127,8 @@ class PlanEditorBrowserTest {
             assertThat(text(b, "problems")).contains("goto_l11.ma:").contains("latitude '9512.0000' is 95.20000°, over 90°");
             assertThat(text(b, "save-status")).startsWith("Error: goto_l11.ma was saved but does not pass the check");
             assertThat(b.findElement(By.id("send")).isEnabled()).isFalse();
+            assertThat(b.findElement(By.cssSelector("#bargs tr[data-name='num_waypoints'] .value")).getAttribute("value")).isEqualTo("2");
+            b.executeScript("document.getElementById('problems').scrollIntoView({block: 'center'})");
             Files.write(shots.resolve("plan-refused-desktop.png"), b.getScreenshotAs(OutputType.BYTES));
 
             type(rows.get(0).findElement(By.className("lat")), "41.3");
@@ -165,7 +167,10 @@ class PlanEditorBrowserTest {
             Files.write(shots.resolve("plan-desktop.png"), b.getScreenshotAs(OutputType.BYTES));
             b.manage().window().setSize(new Dimension(390, 844));
             assertThat((Long) b.executeScript("return document.documentElement.scrollWidth - document.documentElement.clientWidth"))
-                    .as("no sideways scrolling on a phone").isLessThanOrEqualTo(0L);
+                    .as(() -> "no sideways scrolling on a phone; too wide: " + b.executeScript("return [...document.querySelectorAll('body *')]"
+                            + ".filter(e => e.getBoundingClientRect().right > document.documentElement.clientWidth || e.scrollWidth > e.clientWidth + 1 && getComputedStyle(e).overflowX === 'visible')"
+                            + ".map(e => e.tagName + '#' + e.id + '.' + e.className + ' ' + Math.round(e.getBoundingClientRect().right) + '/' + e.scrollWidth).join(', ') + ' scrollWidth ' + document.documentElement.scrollWidth + ' clientWidth ' + document.documentElement.clientWidth"))
+                    .isLessThanOrEqualTo(0L);
             b.executeScript("document.getElementById('wpts').scrollIntoView({block: 'start'})");
             Files.write(shots.resolve("plan-phone.png"), b.getScreenshotAs(OutputType.BYTES));
         } finally {

@@ -38,14 +38,19 @@ function addWaypoint(lat = '', lon = '', comment = '') {
 }
 
 function renumber() {
-  [...$('wpts').tBodies[0].rows].forEach((tr, i) => { tr.cells[0].textContent = String(i); });
+  const rows = [...$('wpts').tBodies[0].rows];
+  rows.forEach((tr, i) => { tr.cells[0].textContent = String(i); });
+  const count = document.querySelector("#bargs tr[data-name='num_waypoints'] .value");
+  if (count) count.value = String(rows.length); // counted, never typed: the glider reads exactly this many
 }
 
 function showBargs(bargs) {
   $('bargs').tBodies[0].replaceChildren(...bargs.map(([name, units, value, comment]) => {
     const tr = el('tr', '', { 'data-name': name, 'data-units': units });
     tr.append(el('td', `${name}(${units})`), el('td'), el('td'));
-    tr.children[1].append(input(value, `${name} value`, 'value'));
+    const v = input(value, `${name} value`, 'value');
+    if (name === 'num_waypoints') v.readOnly = true;
+    tr.children[1].append(v);
     tr.children[2].append(input(comment, `${name} comment`, 'comment'));
     return tr;
   }));
@@ -100,6 +105,7 @@ async function load(e) {
   const bargs = r.text.split('\n').slice(r.text.split('\n').indexOf('b_args:') + 1).map((l) => BARG.exec(l)).filter(Boolean)
     .map((m) => [m[1], m[2], m[3], m[4] ?? '']);
   showBargs(bargs);
+  renumber();
 }
 
 function showProblems(reply) {
