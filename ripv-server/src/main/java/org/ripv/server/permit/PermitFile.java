@@ -208,8 +208,8 @@ public final class PermitFile {
     /**
      * Whether any command at all may be allowed for this user in this service's MailBox — for pages
      * that show a command line only to those who may use it. The rules are read in order as
-     * {@link #decide} reads them: an allow for a real command (not the pseudo-command {@code ?read})
-     * says yes; a deny of every command ({@code *}) ends it. Every command is still decided by
+     * {@link #decide} reads them: an allow for a vehicle's command (not a {@code ?} command such as
+     * {@code ?read} or {@code ?key ctrl-c}) says yes; a deny of every command ({@code *}) ends it. Every command is still decided by
      * {@link #decide} when it is sent.
      */
     public boolean maySendSomething(User user, String serviceName, String handle) {
@@ -219,7 +219,8 @@ public final class PermitFile {
                 continue;
             }
             boolean every = r.command().pattern().equals(".*");
-            if (r.allow() && !r.command().matcher("?read").matches() || r.allow() && every) {
+            // A rule about '?' commands (?read, ?key ctrl-c) is no command line's worth: those have controls of their own.
+            if (r.allow() && (every || !r.command().pattern().startsWith(java.util.regex.Pattern.quote("?")))) {
                 return true;
             }
             if (!r.allow() && every) {
