@@ -15,7 +15,6 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.openqa.selenium.By;
-import org.openqa.selenium.Dimension;
 import org.openqa.selenium.Keys;
 import org.openqa.selenium.StaleElementReferenceException;
 import org.openqa.selenium.WebDriver;
@@ -42,7 +41,7 @@ import org.openqa.selenium.support.ui.WebDriverWait;
 class PilotConsoleBrowserTest {
     static final String GLIDER1 = "<SerialPortServer>::<localhost>glider1";
     static final String GLIDER2 = "<SerialPortServer>::<localhost>glider2";
-    static final String DB = "<DatabaseServer>::<localhost>";
+    static final String DB = "<DatabaseServer>::<localhost>TTY1";
 
     @TempDir
     static Path dir;
@@ -76,6 +75,7 @@ class PilotConsoleBrowserTest {
         byte[] big = new byte[64 * 1024];
         new Random(32).nextBytes(big);
         Files.write(g2.resolve("BIG.DAT"), big);
+        Files.writeString(g2.resolve("SMALL.TXT"), "a small file from glider2\n".repeat(4));
         sys.launch("glider2", null, "-jar", LaunchedWeb.jar("ripv-services"), "simulator", "--call", "127.0.0.1:" + link2, "--name",
                 "glider2", "--dive-seconds", "4", "--surface-seconds", "600", "--baud", "2400", "--dir", g2.toString());
     }
@@ -112,6 +112,12 @@ class PilotConsoleBrowserTest {
                 + " const r = await po.send('', '?status ' + arguments[0]); done(r.result?.session?.state ?? 'none'); });", mailbox));
     }
 
+    /** The page's viewport exactly (a phone's as a phone has it), for the check and the screenshots. */
+    static void viewport(ChromeDriver b, int width, int height) {
+        b.executeCdpCommand("Emulation.setDeviceMetricsOverride", java.util.Map.of("width", width, "height", height,
+                "deviceScaleFactor", 1, "mobile", width < 600));
+    }
+
     static void noSidewaysScrolling(ChromeDriver b) {
         assertThat((Long) b.executeScript("return document.documentElement.scrollWidth - document.documentElement.clientWidth"))
                 .as("no sideways scrolling on a phone").isLessThanOrEqualTo(0L);
@@ -132,11 +138,12 @@ class PilotConsoleBrowserTest {
             assertThat(first).isBetween(0, 45);
             wait.until(d -> !text(d, "dives-in").equals("dives in " + first + " s")); // it counts down, live
             assertThat(keyButtons(b)).as("the link's keys").containsExactly("Ctrl-C", "Ctrl-R", "Ctrl-E", "Ctrl-F");
+            viewport(b, 1366, 768);
             LaunchedWeb.shot(b, "vehicle-countdown-desktop");
-            b.manage().window().setSize(new Dimension(390, 844));
+            viewport(b, 390, 844);
             noSidewaysScrolling(b);
             LaunchedWeb.shot(b, "vehicle-countdown-phone");
-            b.manage().window().setSize(new Dimension(1366, 768));
+            viewport(b, 1366, 768);
 
             // Ctrl-C takes the glider to GliderDOS: the key goes to this page's MailBox, and the count stops.
             b.findElement(By.xpath("//div[@id='keys']/button[text()='Ctrl-C']")).click();
@@ -184,7 +191,8 @@ class PilotConsoleBrowserTest {
             b.findElement(By.xpath("//button[text()='ymodem:get']")).click();
             wait.until(d -> text(d, "transfer-progress").matches("(?s).*\\d+ %.*"));
             assertThat(b.findElement(By.id("transfer-cancel")).isDisplayed()).isTrue();
-            LaunchedWeb.shot(b, "files-desktop");
+            viewport(b, 1366, 768);
+            LaunchedWeb.shot(b, "files-cancel-desktop");
             b.findElement(By.id("transfer-cancel")).click();
             wait.until(d -> text(d, "transfer-reply").startsWith("Error:"));
             assertThat(text(b, "transfer-reply")).containsIgnoringCase("cancel").doesNotContain("no request #");
@@ -192,8 +200,18 @@ class PilotConsoleBrowserTest {
             b.findElement(By.id("refresh-downloads")).click();
             Thread.sleep(500);
             assertThat(text(b, "downloads")).doesNotContain("BIG.DAT");
-            b.manage().window().setSize(new Dimension(390, 844));
+            // A small one comes whole, and its row's Download stays one line on a phone.
+            WebElement names = b.findElement(By.id("transfer-names"));
+            names.clear();
+            names.sendKeys("SMALL.TXT");
+            b.findElement(By.xpath("//button[text()='ymodem:get']")).click();
+            wait.until(d -> text(d, "downloads").contains("SMALL.TXT"));
+            LaunchedWeb.shot(b, "files-desktop");
+            viewport(b, 390, 844);
             noSidewaysScrolling(b);
+            WebElement download = b.findElement(By.xpath("//tbody[@id='downloads']//button[text()='Download']"));
+            assertThat(download.getSize().getHeight()).as("Download on one line").isLessThan(2 * download.getSize().getWidth() / 3 + 20)
+                    .isLessThan(48);
             LaunchedWeb.shot(b, "files-phone");
         } finally {
             b.quit();
@@ -224,13 +242,19 @@ class PilotConsoleBrowserTest {
                     + " const r = await po.send(arguments[0], 'SELECT COUNT(*) FROM positions'); done(r.result.rows[0][0]); });", DB);
             assertThat(gps + dr).isGreaterThanOrEqualTo(Integer.parseInt(String.valueOf(dbRows)) + 2);
             assertThat(b.findElement(By.cssSelector("table.fleet")).getText()).contains("glider1").contains("glider2");
-            LaunchedWeb.shot(b, "fleet-desktop");
-            b.manage().window().setSize(new Dimension(390, 844));
+            // Fitted to one vehicle (a fleet may be oceans apart): the database's glider and its track.
+            String scaleOfAll = map.getAttribute("data-scale");
+            new org.openqa.selenium.support.ui.Select(b.findElement(By.id("map-focus"))).selectByVisibleText("unit_363");
+            wait.until(d -> !scaleOfAll.equals(d.findElement(By.id("map")).getAttribute("data-scale")));
+            assertThat(b.findElement(By.id("map")).getAttribute("data-dr")).isEqualTo(String.valueOf(dr)); // every fix still drawn
+            viewport(b, 1366, 768);
+            LaunchedWeb.shot(b, "fleet-track-desktop");
+            viewport(b, 390, 844);
             noSidewaysScrolling(b);
             WebElement position = b.findElement(By.xpath("//table[contains(@class,'fleet')]//th[text()='Position']"));
             assertThat(position.isDisplayed()).as("the fleet shows Position on a phone").isTrue();
             b.executeScript("document.getElementById('map').scrollIntoView()");
-            LaunchedWeb.shot(b, "fleet-phone");
+            LaunchedWeb.shot(b, "fleet-track-phone");
         } finally {
             b.quit();
         }
@@ -255,6 +279,7 @@ class PilotConsoleBrowserTest {
             wait.until(d -> "true".equals(d.findElement(By.tagName("body")).getAttribute("data-ready")));
             assertThat(b.findElement(By.id("add")).isDisplayed()).isFalse();
             assertThat(b.findElement(By.id("clear-queue")).isDisplayed()).isFalse();
+            viewport(b, 1366, 768);
             LaunchedWeb.shot(b, "queue-observer-desktop");
         } finally {
             b.quit();

@@ -1,7 +1,7 @@
 // The fleet: every MailBox with its call state, live; each vehicle's whole track on the map — the fixes of its transcript
 // (30 days, as the public view shows) and the positions the DatabaseServer holds (GPS and dead-reckoned).
 import { session, PostOffice, bar } from './postoffice.js';
-import { ago } from './time.js';
+import { ago, utc } from './time.js';
 import { drawMap } from './map.js';
 import { labels, vehicleName } from './names.js';
 
@@ -17,7 +17,8 @@ const TRACK_DAYS = 30;
 /** The newest positions the map asks the database for (the data page's own statement, so view-only rules allow it). */
 export const POSITIONS = 'SELECT * FROM positions ORDER BY time_utc DESC FETCH FIRST 5000 ROWS ONLY';
 // Tiles when the server was given --map-tiles, else the offline grid.
-const drawTracks = s.mapTiles ? (await import('./tilemap.js')).tileMap(mapBox, s.mapTiles) : (list) => drawMap(mapBox, list);
+const drawTracks = s.mapTiles ? (await import('./tilemap.js')).tileMap(mapBox, s.mapTiles) : (list, focus) => drawMap(mapBox, list, [], focus);
+const focus = document.getElementById('map-focus'); // the vehicle the map is fitted to: a fleet may be oceans apart
 
 function row(address, v, label) {
   const tr = document.createElement('tr');
@@ -36,6 +37,7 @@ function row(address, v, label) {
   tr.append(name, state, ...cells.map((t) => { const td = document.createElement('td'); td.textContent = t; return td; }));
   tr.children[2].className = 'ago';
   tr.children[2].dataset.time = String(v.lastContact || 0);
+  tr.children[2].title = utc(v.lastContact); // the time itself, as every page writes it
   tr.dataset.address = address;
   return tr;
 }
@@ -52,8 +54,20 @@ function render() {
   const body = document.getElementById('vehicles');
   const names = labels([...vehicles.keys()]);
   body.replaceChildren(...[...vehicles.entries()].map(([a, v]) => row(a, v, names.get(a))));
-  drawTracks(mapVehicles());
+  drawMapNow();
 }
+
+function drawMapNow() {
+  const list = mapVehicles();
+  const tracked = list.filter((v) => v.track.length).map((v) => v.name);
+  if (tracked.join('\n') !== [...focus.options].slice(1).map((o) => o.value).join('\n')) {
+    const was = focus.value;
+    focus.replaceChildren(new Option('every vehicle', ''), ...tracked.map((n) => new Option(vehicleName(n), n)));
+    focus.value = tracked.includes(was) ? was : '';
+  }
+  drawTracks(list, focus.value);
+}
+focus.addEventListener('change', drawMapNow);
 
 function addFix(v, lat, lon, t) {
   const key = `${t}/${lat}/${lon}`;
@@ -137,4 +151,4 @@ setInterval(() => {
 }, 1000);
 // The map is drawn at its size on screen: again when that changes (a phone turned, a window resized).
 let resized = null;
-window.addEventListener('resize', () => { clearTimeout(resized); resized = setTimeout(() => drawTracks(mapVehicles()), 150); });
+window.addEventListener('resize', () => { clearTimeout(resized); resized = setTimeout(drawMapNow, 150); });

@@ -4,6 +4,7 @@ import { vehicleName } from './names.js';
 // Drawn at the canvas's size on screen in CSS pixels (sharp, and the labels as large on a phone as on a desk).
 // A vehicle is { name, track: [fix] }, a fix { lat, lon, t, gps } or a [lat, lon] pair (a GPS fix, as the public view
 // sends). `layers` are drawn last, each called with (g, { x(lon), y(lat), w, h }): room for currents and waypoints.
+// `focus` names the vehicle the map is fitted to (the others still drawn where they fall); none: every vehicle.
 
 /** A fix in one form: [lat, lon] pairs are GPS fixes. */
 export function fix(p) {
@@ -14,7 +15,7 @@ export function colour(i) {
   return `hsl(${(i * 67) % 360} 70% 38%)`;
 }
 
-export function drawMap(canvas, vehicles, layers = []) {
+export function drawMap(canvas, vehicles, layers = [], focus = '') {
   const css = getComputedStyle(document.documentElement);
   const ink = (name, fallback) => css.getPropertyValue(name).trim() || fallback;
   const box = canvas.getBoundingClientRect();
@@ -28,12 +29,13 @@ export function drawMap(canvas, vehicles, layers = []) {
   g.fillRect(0, 0, w, h);
   const tracks = vehicles.map((v) => ({ name: v.name, fixes: v.track.map(fix) }));
   const points = tracks.flatMap((v) => v.fixes);
+  const fitted = tracks.find((v) => v.name === focus && v.fixes.length)?.fixes || points;
 
   // Bounds with equal distances across and up (a degree of longitude is cos(lat) of one of latitude).
   let [minLat, maxLat, minLon, maxLon] = [-60, 60, -180, 180];
-  if (points.length) {
-    minLat = Math.min(...points.map((p) => p.lat)); maxLat = Math.max(...points.map((p) => p.lat));
-    minLon = Math.min(...points.map((p) => p.lon)); maxLon = Math.max(...points.map((p) => p.lon));
+  if (fitted.length) {
+    minLat = Math.min(...fitted.map((p) => p.lat)); maxLat = Math.max(...fitted.map((p) => p.lat));
+    minLon = Math.min(...fitted.map((p) => p.lon)); maxLon = Math.max(...fitted.map((p) => p.lon));
   }
   const k = Math.max(0.05, Math.cos((((minLat + maxLat) / 2) * Math.PI) / 180));
   const spanLat = Math.max(0.01, maxLat - minLat) * 1.3, spanLon = Math.max(0.01, maxLon - minLon) * 1.3;
@@ -60,6 +62,7 @@ export function drawMap(canvas, vehicles, layers = []) {
   }
 
   let gps = 0, dr = 0;
+  const placed = []; // label boxes so far: a name never covers another
   tracks.forEach((v, i) => {
     if (!v.fixes.length) return;
     const c = colour(i);
@@ -74,7 +77,7 @@ export function drawMap(canvas, vehicles, layers = []) {
     }
     const last = fixes[fixes.length - 1];
     g.beginPath(); g.arc(x(last.lon), y(last.lat), 7, 0, 2 * Math.PI); g.fill();
-    label(g, vehicleName(v.name), x(last.lon) + 10, y(last.lat) - 8, w, ink('--card', '#fff'), c);
+    label(g, vehicleName(v.name), x(last.lon) + 10, y(last.lat) - 8, w, ink('--card', '#fff'), c, placed);
   });
   layers.forEach((layer) => layer(g, { x, y, w, h }));
   legend(g, h, ink);
@@ -84,12 +87,14 @@ export function drawMap(canvas, vehicles, layers = []) {
   canvas.dataset.dr = String(dr);
 }
 
-/** A name with a halo, kept inside the map. */
-function label(g, text, px, py, w, halo, c) {
-  g.font = 'bold 14px system-ui, sans-serif';
+/** A name with a halo, kept inside the map and below any name it would cover. */
+function label(g, text, px, py, w, halo, c, placed) {
+  g.font = 'bold 15px system-ui, sans-serif';
   const tw = g.measureText(text).width;
   const at = Math.min(px, w - tw - 4);
-  const top = Math.max(16, py);
+  let top = Math.max(18, py);
+  while (placed.some((b) => at < b.x + b.w && b.x < at + tw && Math.abs(top - b.y) < 18)) top += 18;
+  placed.push({ x: at, y: top, w: tw });
   g.lineWidth = 4; g.strokeStyle = halo; g.strokeText(text, at, top);
   g.fillStyle = c; g.fillText(text, at, top);
 }

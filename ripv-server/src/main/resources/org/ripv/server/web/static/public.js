@@ -19,6 +19,7 @@ function row(v) {
   tr.append(...cells.map((c) => { const td = document.createElement('td'); td.append(c); return td; }));
   tr.children[2].className = 'ago';
   tr.children[2].dataset.time = String(v.lastContact || 0);
+  tr.children[2].title = utc(v.lastContact); // the time itself, as every page writes it
   return tr;
 }
 

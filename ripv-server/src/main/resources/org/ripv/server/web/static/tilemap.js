@@ -20,8 +20,8 @@ export function tileMap(canvas, template) {
   L.tileLayer(template, { maxZoom: 18, attribution: `Tiles: ${host}` }).addTo(map);
   L.control.scale({ imperial: false }).addTo(map);
   const layer = L.layerGroup().addTo(map);
-  let fitted = false;
-  return (vehicles) => {
+  let fitted = null; // the focus the map was last fitted to
+  return (vehicles, focus = '') => {
     layer.clearLayers();
     const all = [];
     vehicles.forEach((v, i) => {
@@ -37,7 +37,9 @@ export function tileMap(canvas, template) {
       L.circleMarker(last, { radius: 7, color: c, fillOpacity: 0.9 }).bindTooltip(label(vehicleName(v.name)), { permanent: true }).addTo(layer);
       all.push(...points);
     });
-    if (all.length && !fitted) { map.fitBounds(all, { maxZoom: 12, padding: [20, 20] }); fitted = true; }
+    const mine = vehicles.find((v) => v.name === focus && v.track.length);
+    const bounds = mine ? mine.track.map(fix).map((p) => [p.lat, p.lon]) : all;
+    if (bounds.length && fitted !== focus) { map.fitBounds(bounds, { maxZoom: 12, padding: [20, 20] }); fitted = focus; }
     div.dataset.points = String(all.length);
   };
 }
