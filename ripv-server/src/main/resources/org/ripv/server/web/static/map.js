@@ -44,21 +44,24 @@ export function drawMap(canvas, vehicles, layers = [], focus = '') {
   const x = (lon) => w / 2 + (lon - midLon) * k * perDegree;
   const y = (lat) => h / 2 - (lat - midLat) * perDegree;
 
-  const step = niceStep(Math.max(h / perDegree, w / (k * perDegree)) / 5);
-  const digits = Math.max(0, -Math.floor(Math.log10(step)));
+  // Grid steps by the room each axis has: a label of longitude needs about 110 px, one of latitude 60.
+  const latStep = niceStep(h / perDegree / Math.max(2, Math.floor(h / 60)));
+  const lonStep = niceStep(w / (k * perDegree) / Math.max(2, Math.floor(w / 110)));
+  const digits = (step) => Math.max(0, -Math.floor(Math.log10(step)));
   g.strokeStyle = ink('--line', '#ccc');
   g.fillStyle = ink('--muted', '#555');
   g.font = '13px system-ui, sans-serif';
   g.lineWidth = 1;
   const lat0 = midLat - h / 2 / perDegree, lat1 = midLat + h / 2 / perDegree;
   const lon0 = midLon - w / 2 / (k * perDegree), lon1 = midLon + w / 2 / (k * perDegree);
-  for (let lat = Math.ceil(lat0 / step) * step; lat <= lat1; lat += step) {
+  for (let lat = Math.ceil(lat0 / latStep) * latStep; lat <= lat1; lat += latStep) {
     g.beginPath(); g.moveTo(0, y(lat)); g.lineTo(w, y(lat)); g.stroke();
-    g.fillText(`${lat.toFixed(digits)}°`, 4, y(lat) - 3);
+    if (y(lat) > 30 && y(lat) < h - 30) g.fillText(`${lat.toFixed(digits(latStep))}°`, 4, y(lat) - 3);
   }
-  for (let lon = Math.ceil(lon0 / step) * step; lon <= lon1; lon += step) {
+  for (let lon = Math.ceil(lon0 / lonStep) * lonStep; lon <= lon1; lon += lonStep) {
     g.beginPath(); g.moveTo(x(lon), 0); g.lineTo(x(lon), h); g.stroke();
-    g.fillText(`${lon.toFixed(digits)}°`, x(lon) + 3, 14);
+    const text = `${lon.toFixed(digits(lonStep))}°`;
+    if (x(lon) + 3 + g.measureText(text).width < w - 2) g.fillText(text, x(lon) + 3, 14);
   }
 
   let gps = 0, dr = 0;
@@ -67,10 +70,18 @@ export function drawMap(canvas, vehicles, layers = [], focus = '') {
     if (!v.fixes.length) return;
     const c = colour(i);
     const fixes = [...v.fixes].sort((a, b) => (a.t || 0) - (b.t || 0));
-    g.strokeStyle = c; g.fillStyle = c; g.lineWidth = 1.5;
-    g.beginPath();
-    fixes.forEach((p, n) => (n ? g.lineTo(x(p.lon), y(p.lat)) : g.moveTo(x(p.lon), y(p.lat))));
-    g.stroke();
+    g.strokeStyle = c; g.fillStyle = c;
+    // One line through the GPS fixes, a thinner dashed one through the dead-reckoned positions: the two disagree by
+    // the glider's drift, and one line through both would zig-zag between them.
+    for (const gpsOnes of [false, true]) {
+      g.lineWidth = gpsOnes ? 2 : 1;
+      g.setLineDash(gpsOnes ? [] : [4, 3]);
+      g.beginPath();
+      fixes.filter((p) => !!p.gps === gpsOnes).forEach((p, n) => (n ? g.lineTo(x(p.lon), y(p.lat)) : g.moveTo(x(p.lon), y(p.lat))));
+      g.stroke();
+    }
+    g.setLineDash([]);
+    g.lineWidth = 1.5;
     for (const p of fixes) {
       g.beginPath();
       if (p.gps) { gps++; g.arc(x(p.lon), y(p.lat), 3.5, 0, 2 * Math.PI); g.fill(); } else { dr++; g.arc(x(p.lon), y(p.lat), 2.5, 0, 2 * Math.PI); g.stroke(); }

@@ -109,7 +109,7 @@ async function listReceipts() {
   const [head, ...rest] = r.text.split('\n\n');
   // The server lists them oldest first, each beginning "receipt: workflow ID 'FILE' of OWNER …"; the page shows them
   // newest first, opened on a click, and says so.
-  $('receipts-status').textContent = head.replace(/,? oldest first\s*$/, '') + ', newest first';
+  $('receipts-status').textContent = /oldest first\s*$/.test(head) ? head.replace(/oldest first\s*$/, 'newest first') : head;
   const receipts = rest.join('\n\n').split(/\n(?=receipt: )/).filter((t) => t.startsWith('receipt: ')).reverse();
   $('receipts').replaceChildren(...receipts.map((t) => {
     const d = el('details', '', { class: 'receipt' });

@@ -29,7 +29,9 @@ export function tileMap(canvas, template) {
       const c = colour(i);
       const fixes = v.track.map(fix).sort((a, b) => (a.t || 0) - (b.t || 0));
       const points = fixes.map((p) => [p.lat, p.lon]);
-      L.polyline(points, { color: c, weight: 2 }).addTo(layer);
+      // GPS fixes joined by a solid line, dead-reckoned positions by a dashed one (they differ by the drift).
+      L.polyline(fixes.filter((p) => p.gps).map((p) => [p.lat, p.lon]), { color: c, weight: 2 }).addTo(layer);
+      L.polyline(fixes.filter((p) => !p.gps).map((p) => [p.lat, p.lon]), { color: c, weight: 1, dashArray: '4 3' }).addTo(layer);
       for (const p of fixes) {
         L.circleMarker([p.lat, p.lon], p.gps ? { radius: 3.5, color: c, fillOpacity: 1, weight: 1 } : { radius: 2.5, color: c, fill: false, weight: 1.5 }).addTo(layer);
       }
