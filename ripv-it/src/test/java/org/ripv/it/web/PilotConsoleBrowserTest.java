@@ -151,6 +151,11 @@ class PilotConsoleBrowserTest {
             wait.until(d -> !d.findElement(By.id("dives-in")).isDisplayed());
             assertThat(text(b, "badge")).isEqualTo("on call");
 
+            // ?key typed in the page means this page's vehicle (no full address needed).
+            b.findElement(By.id("command")).sendKeys("?key ctrl-c", Keys.ENTER);
+            wait.until(d -> text(d, "console").split("alice> \\?key ctrl-c", -1).length == 3); // the vehicle's console has it
+            assertThat(text(b, "console")).doesNotContain("usage: ?key MAILBOX KEY").doesNotContain("Error: ");
+
             // Output once: what the glider prints arrives as console lines, not again as the reply.
             WebElement command = b.findElement(By.id("command"));
             command.sendKeys("help", Keys.ENTER);

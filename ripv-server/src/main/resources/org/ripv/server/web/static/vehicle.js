@@ -120,7 +120,10 @@ if (watching.status === 'ERROR') {
 
 const progress = $('progress');
 const cancel = $('cancel');
-async function send(body, priority) {
+async function send(typed, priority) {
+  // "?key ctrl-c" typed here means this page's vehicle: the server's ?key wants the MailBox's address first.
+  const key = /^\?key\s+(ctrl-[a-z])$/i.exec(typed);
+  const body = key ? `?key ${mailbox} ${key[1].toLowerCase()}` : typed;
   const target = body.startsWith('?') ? '' : mailbox;
   const before = vehicleLines;
   const req = po.send(target, body, priority, (p) => {
@@ -137,7 +140,7 @@ async function send(body, priority) {
     cancel.disabled = true;
     progress.textContent = '';
   }
-  if (target) await vehicleReply(m, before); else reply(m);
+  if (target || key) await vehicleReply(m, before); else reply(m); // a key's answer is the vehicle's lines too
 }
 
 $('command-form').addEventListener('submit', async (e) => {
@@ -176,7 +179,10 @@ async function showKeys(keys) {
     b.className = 'secondary key';
     b.textContent = k.replace(/^ctrl-(.)$/, (_, c) => `Ctrl-${c.toUpperCase()}`);
     b.title = `Press ${b.textContent} on the vehicle (?key ${k})`;
-    b.addEventListener('click', async () => reply(await po.send('', `?key ${mailbox} ${k}`, 'urgent')));
+    b.addEventListener('click', async () => {
+      const before = vehicleLines;
+      await vehicleReply(await po.send('', `?key ${mailbox} ${k}`, 'urgent'), before);
+    });
     return b;
   }));
   $('keys').hidden = allowed.length === 0;
