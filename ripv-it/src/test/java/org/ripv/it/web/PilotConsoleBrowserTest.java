@@ -212,6 +212,26 @@ class PilotConsoleBrowserTest {
             b.findElement(By.xpath("//button[text()='ymodem:get']")).click();
             wait.until(d -> text(d, "downloads").contains("SMALL.TXT"));
             LaunchedWeb.shot(b, "files-desktop");
+
+            // A row's Download is its Cancel while the chunks come: 64 MB stored for glider2 stops part way, nothing saved.
+            Path folder = sys.data.resolve("download").resolve(text(b, "downloads").lines().filter(l -> l.contains("SMALL.TXT"))
+                    .findFirst().orElseThrow().split("/")[0]);
+            try (var out = Files.newOutputStream(folder.resolve("HUGE.BIN"))) {
+                byte[] mb = new byte[1 << 20];
+                for (int i = 0; i < 64; i++) {
+                    out.write(mb);
+                }
+            }
+            b.findElement(By.id("refresh-downloads")).click();
+            wait.until(d -> text(d, "downloads").contains("HUGE.BIN"));
+            By huge = By.xpath("//tbody[@id='downloads']/tr[contains(@data-name,'HUGE.BIN')]//button");
+            b.findElement(huge).click();
+            wait.until(d -> d.findElement(huge).getText().equals("Cancel") && text(d, "download-status").contains("HUGE.BIN: "));
+            b.findElement(huge).click();
+            wait.until(d -> text(d, "download-status").startsWith("Error: download of"));
+            assertThat(text(b, "download-status")).contains("HUGE.BIN cancelled at");
+            assertThat(b.findElement(huge).getText()).isEqualTo("Download");
+            assertThat(sys.downloads("alice").resolve("HUGE.BIN")).doesNotExist();
             viewport(b, 390, 844);
             noSidewaysScrolling(b);
             WebElement download = b.findElement(By.xpath("//tbody[@id='downloads']//button[text()='Download']"));
