@@ -4,6 +4,7 @@ import { session, PostOffice, bar } from './postoffice.js';
 import { upload, storedName } from './transfer.js';
 import { el, button, say, mailboxParam, vehicleNav } from './ui.js';
 import { rights } from './rights.js';
+import { command, NotAName } from './address.js';
 
 const { mailbox, handle } = mailboxParam();
 const s = await session();
@@ -14,22 +15,23 @@ document.title = `RIPV queue ${handle}`;
 document.querySelector('main').prepend(vehicleNav(mailbox, 'queue.html'));
 const $ = (id) => document.getElementById(id);
 // What the permit file lets this user do with the queue (the server decides each command again).
-const may = (await rights('', [`?queue add ${mailbox} x.wf`, `?queue remove ${mailbox} 1`, `?queue clear ${mailbox}`])).commands;
+const ADD = command('?queue', 'add', mailbox, 'x.wf'), REMOVE = command('?queue', 'remove', mailbox, '1'), CLEAR = command('?queue', 'clear', mailbox);
+const may = (await rights('', [ADD, REMOVE, CLEAR])).commands;
 
 // "   3  alice      once         fetch.wf  2 step(s), queued" — the listing's rows start with the workflow's id.
 const ROW = /^\s*(\d+)\s+(\S+)\s+(\S+)\s+(.*)$/;
 
 async function listQueue() {
-  const r = await po.send('', `?queue ${mailbox}`);
+  const r = await po.send('', command('?queue', mailbox));
   if (r.status === 'ERROR') { say($('queue-status'), r); return; }
   const lines = r.text.split('\n');
   $('queue-status').textContent = lines[0];
   $('queue').replaceChildren(...lines.slice(1).map((l) => ROW.exec(l)).filter(Boolean).map((m) => {
     const li = el('li', '', { 'data-id': m[1] });
     li.append(el('span', `#${m[1]} ${m[4]} (${m[2]}, ${m[3]})`));
-    if (may[`?queue remove ${mailbox} 1`]) {
+    if (may[REMOVE]) {
       li.append(button('Remove', async () => {
-        const x = await po.send('', `?queue remove ${mailbox} ${m[1]}`);
+        const x = await po.send('', command('?queue', 'remove', mailbox, m[1]));
         say($('queue-reply'), { ...x, text: x.text.split('\n')[0] });
         if (x.status !== 'ERROR') listQueue();
       }));
@@ -66,7 +68,15 @@ function showLines(text, reply, file) {
 }
 
 async function queueFile(name, text) {
-  const r = await po.send('', `?queue add ${mailbox} ${name}`);
+  let line;
+  try {
+    line = command('?queue', 'add', mailbox, name);
+  } catch (e) {
+    if (!(e instanceof NotAName)) throw e;
+    say($('add-status'), { status: 'ERROR', text: e.message });
+    return { status: 'ERROR', text: e.message };
+  }
+  const r = await po.send('', line);
   say($('add-status'), r.status === 'ERROR' ? r : { ...r, text: r.text.split('\n')[0] }); // the listing is shown above
   showLines(text ?? '', r, name);
   if (r.status !== 'ERROR') listQueue();
@@ -99,12 +109,12 @@ $('typed-form').addEventListener('submit', async (e) => {
 $('refresh-queue').addEventListener('click', listQueue);
 $('clear-queue').addEventListener('click', async () => {
   if (!confirm(`Remove every workflow from the queue of ${handle}?`)) return;
-  say($('queue-reply'), await po.send('', `?queue clear ${mailbox}`));
+  say($('queue-reply'), await po.send('', command('?queue', 'clear', mailbox)));
   listQueue();
 });
 
 async function listReceipts() {
-  const r = await po.send('', `?receipts ${mailbox} --last 50`);
+  const r = await po.send('', command('?receipts', mailbox, '--last', '50'));
   if (r.status === 'ERROR') { say($('receipts-status'), r); return; }
   const [head, ...rest] = r.text.split('\n\n');
   // The server lists them oldest first, each beginning "receipt: workflow ID 'FILE' of OWNER …"; the page shows them
@@ -119,8 +129,8 @@ async function listReceipts() {
   }));
 }
 $('refresh-receipts').addEventListener('click', listReceipts);
-$('add').hidden = !may[`?queue add ${mailbox} x.wf`];
-$('clear-queue').hidden = !may[`?queue clear ${mailbox}`];
+$('add').hidden = !may[ADD];
+$('clear-queue').hidden = !may[CLEAR];
 // A workflow's events arrive on the MailBox's console stream: the queue and receipts follow them.
 po.onPush = (m) => {
   if (m.result?.kind === 'ConsoleBatch' && m.result.mailbox === mailbox && m.result.entries.some((e) => e.event?.startsWith('WORKFLOW'))) {
@@ -128,5 +138,5 @@ po.onPush = (m) => {
     listReceipts();
   }
 };
-await Promise.all([listQueue(), listStore(), listReceipts(), po.send('', `?watch ${mailbox}`)]);
+await Promise.all([listQueue(), listStore(), listReceipts(), po.send('', command('?watch', mailbox))]);
 document.body.dataset.ready = 'true';

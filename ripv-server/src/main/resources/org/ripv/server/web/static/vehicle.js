@@ -5,8 +5,10 @@ import { session, PostOffice, bar } from './postoffice.js';
 import { CallState, linkKeys } from './callstate.js';
 import { rights } from './rights.js';
 import { clock } from './time.js';
+import { mailboxParam } from './ui.js';
+import { command } from './address.js';
 
-const mailbox = new URLSearchParams(location.search).get('m') || '';
+const { mailbox } = mailboxParam(); // one MailBox address or the page stops, saying the link's name is not valid
 const s = await session();
 bar(s);
 document.getElementById('name').textContent = mailbox;
@@ -59,7 +61,7 @@ setInterval(showCall, 1000);
 let keysAllowed = [];
 /** The MailBox's status: lock holder, call state and the keys its link takes. */
 async function refreshStatus() {
-  const st = await po.send('', `?status ${mailbox}`);
+  const st = await po.send('', command('?status', mailbox));
   const r = st.result;
   setLock(r?.lockedBy || '');
   call.takeSession(r?.session);
@@ -110,7 +112,7 @@ async function vehicleReply(m, linesBefore) {
   if (m.status !== 'OK' || vehicleLines === linesBefore) reply(m);
 }
 
-const watching = await po.send('', `?watch ${mailbox}`);
+const watching = await po.send('', command('?watch', mailbox));
 if (watching.status === 'ERROR') {
   stateLine.textContent = `Error: ${watching.text}`;
 } else {
@@ -123,7 +125,7 @@ const cancel = $('cancel');
 async function send(typed, priority) {
   // "?key ctrl-c" typed here means this page's vehicle: the server's ?key wants the MailBox's address first.
   const key = /^\?key\s+(ctrl-[a-z])$/i.exec(typed);
-  const body = key ? `?key ${mailbox} ${key[1].toLowerCase()}` : typed;
+  const body = key ? command('?key', mailbox, key[1].toLowerCase()) : typed;
   const target = body.startsWith('?') ? '' : mailbox;
   const before = vehicleLines;
   const req = po.send(target, body, priority, (p) => {
@@ -158,10 +160,10 @@ async function cancelRunning() {
 }
 cancel.addEventListener('click', cancelRunning);
 document.addEventListener('keydown', (e) => { if (e.key === 'Escape') cancelRunning(); });
-$('take-lock').addEventListener('click', async () => reply(await po.send('', `?lock ${mailbox}`)));
-$('release-lock').addEventListener('click', async () => reply(await po.send('', `?unlock ${mailbox}`)));
+$('take-lock').addEventListener('click', async () => reply(await po.send('', command('?lock', mailbox))));
+$('release-lock').addEventListener('click', async () => reply(await po.send('', command('?unlock', mailbox))));
 $('earlier').addEventListener('click', async () => {
-  const h = await po.send('', `?history ${mailbox} --last 1000`);
+  const h = await po.send('', command('?history', mailbox, '--last', '1000'));
   if (h.status === 'ERROR') { reply(h); return; }
   consoleBox.replaceChildren(...(h.result?.entries || []).map(entryLine));
 });
@@ -181,7 +183,7 @@ async function showKeys(keys) {
     b.title = `Press ${b.textContent} on the vehicle (?key ${k})`;
     b.addEventListener('click', async () => {
       const before = vehicleLines;
-      await vehicleReply(await po.send('', `?key ${mailbox} ${k}`, 'urgent'), before);
+      await vehicleReply(await po.send('', command('?key', mailbox, k), 'urgent'), before);
     });
     return b;
   }));
@@ -197,9 +199,10 @@ function showRights() {
   $('command-form').hidden = !maySend;
   $('observer').hidden = maySend || mayUseKeys;
 }
-const [onBox, onServer] = await Promise.all([rights(mailbox), rights('', [`?lock ${mailbox}`])]);
+const LOCK = command('?lock', mailbox);
+const [onBox, onServer] = await Promise.all([rights(mailbox), rights('', [LOCK])]);
 maySend = onBox.send;
-const mayLock = onServer.commands[`?lock ${mailbox}`];
+const mayLock = onServer.commands[LOCK];
 $('take-lock').hidden = !mayLock;
 $('release-lock').hidden = !mayLock;
 showRights();
