@@ -29,6 +29,11 @@ public enum VehicleEvent {
     INGEST_WAITING,
     /** A file that waited for its sensor-list cache was ingested once the cache arrived. */
     INGEST_RELEASED,
+    /**
+     * A plan change (a behaviour file sent, a {@code put}) moved on: queued, sent, received, in
+     * effect or not in effect (docs/plans.md). The text names the change and its new state.
+     */
+    PLAN_CHANGE,
     /** A DatabaseServer refused a file (not a Slocum file, or broken): nothing of it stored; the text says why. */
     INGEST_REFUSED,
     /** A file whose bytes a DatabaseServer had stored already (fetched again): nothing added. */
