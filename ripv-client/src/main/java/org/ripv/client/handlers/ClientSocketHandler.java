@@ -64,6 +64,13 @@ public final class ClientSocketHandler implements AutoCloseable {
 
         default void onDisconnected(Exception cause) {
         }
+
+        /**
+         * One page of a table arrived ({@link TablePages}); {@link #onReply} sees the whole table
+         * with the final reply. For those who time the first rows (bench database) or show them early.
+         */
+        default void onPage(OutgoingServerMessage page) {
+        }
     }
 
     private record Pending(CompletableFuture<OutgoingServerMessage> done, Consumer<OutgoingServerMessage> progress) {}
@@ -428,6 +435,13 @@ public final class ClientSocketHandler implements AutoCloseable {
             // (only for a request of ours: a page for anything else is dropped).
             if (pending.containsKey(id)) {
                 pages.computeIfAbsent(id, k -> new TablePages()).add((TableResult) reply.footer().result());
+                for (Listener l : listeners) {
+                    try {
+                        l.onPage(reply);
+                    } catch (RuntimeException e) {
+                        log.warn("a listener failed on a page of #{}", id, e);
+                    }
+                }
             }
             return;
         }
