@@ -25,6 +25,8 @@ public final class ShortRuns {
             String name = args[i];
             int status;
             long t0 = System.nanoTime();
+            // One run's system properties (Derby's log file in a folder it deletes, known_hosts) are not the next one's.
+            java.util.Properties before = (java.util.Properties) System.getProperties().clone();
             try (PrintStream log = new PrintStream(new FileOutputStream(dir.resolve(name + ".log").toFile()), true,
                     StandardCharsets.UTF_8)) {
                 System.setOut(log);
@@ -37,6 +39,7 @@ public final class ShortRuns {
                 } finally {
                     System.setOut(out);
                     System.setErr(err);
+                    System.setProperties(before);
                 }
             }
             Files.writeString(dir.resolve(name + ".exit"), Integer.toString(status));
