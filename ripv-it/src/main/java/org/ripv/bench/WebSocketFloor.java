@@ -105,14 +105,14 @@ public final class WebSocketFloor {
         private static void flush(SelectionKey k) {
             ArrayDeque<ByteBuffer> owed = (ArrayDeque<ByteBuffer>) k.attachment();
             try {
-                while (!owed.isEmpty()) {
-                    ((SocketChannel) k.channel()).write(owed.peek());
-                    if (owed.peek().hasRemaining()) {
-                        return;
-                    }
+                // one gathering write of all it owes, as a server's writer does for a page behind
+                ((SocketChannel) k.channel()).write(owed.toArray(new ByteBuffer[0]));
+                while (!owed.isEmpty() && !owed.peek().hasRemaining()) {
                     owed.poll();
                 }
-                k.interestOps(0);
+                if (owed.isEmpty()) {
+                    k.interestOps(0);
+                }
             } catch (IOException gone) {
                 k.cancel();
             }
