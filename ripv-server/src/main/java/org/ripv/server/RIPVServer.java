@@ -85,6 +85,7 @@ public final class RIPVServer implements AutoCloseable {
     private final ExecutorService fileWork;
     private final ServerRemote remote = new ServerRemote(this);
     private final InternalCalls internalCalls = new InternalCalls(this);
+    private final org.ripv.server.clients.WaitingRequests waiting = new org.ripv.server.clients.WaitingRequests();
     private volatile org.ripv.server.dataloop.DataLoop dataLoop;
 
     private PermitWatcher permits;
@@ -177,6 +178,7 @@ public final class RIPVServer implements AutoCloseable {
             return permits.current();
         }, () -> secret);
         sessions = new ServerSessions(config.dataDir(), state.store(), sessionOptions, this::permits, this::client, codec);
+        sessions.countRepliesIn(waiting);
         sessions.expireLocks(timers, locks, mailbox -> workflows.lockReleased(mailbox));
         permits.onChange(sessions::permitsChanged);
         dataLoop = new org.ripv.server.dataloop.DataLoop(internalCalls, config.dataDir().resolve("ingest.properties"));
@@ -216,6 +218,13 @@ public final class RIPVServer implements AutoCloseable {
         }
         running = true;
         acceptor = new ClientAcceptor(listener, tls.context(), timers, codec, writers, dispatch, security.gate());
+        // A reload that removes a user, changes a password or roles reaches every open log-in (issue 33 item 4).
+        org.ripv.server.security.StaleLogins stale = new org.ripv.server.security.StaleLogins(permits.current(), acceptor::clients);
+        if (landingPage != null) {
+            WebConsole web = landingPage;
+            stale.onChange(c -> web.usersChanged(c.ended(), c.roles()));
+        }
+        permits.onChange(stale);
         long check = config.serviceCheck().toMillis();
         timers.scheduleWithFixedDelay(this::checkServices, check, check, TimeUnit.MILLISECONDS);
         log.info("RIPVServer listening for clients on port {}{}, RMI registry on port {}, data in {}", port(),
@@ -312,6 +321,10 @@ public final class RIPVServer implements AutoCloseable {
         WebConsole page = new WebConsole(new WebConsole.Options(new InetSocketAddress(bind, config.httpPort()),
                 files.uploadDir(), config.maxUpload(), config.clientJar(), this::describe, port(), security.webAccess(),
                 config.security().httpUpload(), tls.context(), new WebClients(() -> acceptor), codec, mapTiles));
+        // The upload form stores through the FileStore with ?upload's quota and owners (issue 33 item 5).
+        page.withPagesPerUser(config.security().webPages()); // issue 33 item 2
+        page.withFormUploads((user, parked) -> files.storeWhole(user, parked,
+                permits().user(user).map(u -> permits().quota(u)).orElse(0L)));
         if (publicNames != null) {
             page.withPublicView(new PublicVehicles(this, publicNames));
         }
@@ -443,6 +456,11 @@ public final class RIPVServer implements AutoCloseable {
     /** Automatic ingest and plots from data (org.ripv.server.dataloop). */
     org.ripv.server.dataloop.DataLoop dataLoop() {
         return dataLoop;
+    }
+
+    /** Each client's requests waiting for their final reply, capped (issue 33 item 10). */
+    org.ripv.server.clients.WaitingRequests waiting() {
+        return waiting;
     }
 
     PendingRequests pending() {
