@@ -28,5 +28,10 @@ public enum VehicleEvent {
      */
     INGEST_WAITING,
     /** A file that waited for its sensor-list cache was ingested once the cache arrived. */
-    INGEST_RELEASED
+    INGEST_RELEASED,
+    /**
+     * A plan change (a behaviour file sent, a {@code put}) moved on: queued, sent, received, in
+     * effect or not in effect (docs/plans.md). The text names the change and its new state.
+     */
+    PLAN_CHANGE
 }

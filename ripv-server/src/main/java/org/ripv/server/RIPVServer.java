@@ -106,6 +106,8 @@ public final class RIPVServer implements AutoCloseable {
     private RegistryGuard registryGuard;
     private ServerTls tls;
     private org.ripv.server.workflow.Workflows workflows;
+    /** Plans and their changes (org.ripv.server.plans, docs/plans.md). */
+    private org.ripv.server.plans.Plans plans;
     private final RequestCancels cancels = new RequestCancels(this);
     private OutboundListener outbound;
     private volatile boolean running;
@@ -169,6 +171,7 @@ public final class RIPVServer implements AutoCloseable {
         codec = new FrameCodec(config.maxFrame());
         pending = new PendingRequests(timers, config.requestTimeout(), this::timedOut);
         workflows = new org.ripv.server.workflow.Workflows(state.store(), new WorkflowBridge(this));
+        plans = new org.ripv.server.plans.Plans(new PlanBridge(this), config.dataDir().resolve("plans"));
         endings = new RequestEndings(this::reply, pending, withdrawals, config.requestTimeout());
         box = postOffice.open(POST_OFFICE, new ServerTaskManager(this));
         // A log-in looks at the file first (one stat): a user just added with ripv passwd can log in
@@ -294,6 +297,9 @@ public final class RIPVServer implements AutoCloseable {
         RmiSupport.unexport(remote);
         if (workflows != null) {
             workflows.close();
+        }
+        if (plans != null) {
+            plans.close();
         }
         if (sessions != null) {
             sessions.close();
@@ -423,6 +429,10 @@ public final class RIPVServer implements AutoCloseable {
         return services;
     }
 
+    org.ripv.server.plans.Plans plans() {
+        return plans;
+    }
+
     org.ripv.server.workflow.Workflows workflows() {
         return workflows;
     }
@@ -443,6 +453,9 @@ public final class RIPVServer implements AutoCloseable {
      */
     void publishServerEntry(org.ripv.messages.ConsoleEntry entry) {
         sessions.console().serverEntry(entry);
+        if (plans != null) {
+            plans.onConsole(List.of(entry));
+        }
     }
 
     String secret() {
@@ -513,7 +526,9 @@ public final class RIPVServer implements AutoCloseable {
         // The calls end first, so a workflow step under way is cut (it resumes on the next call)
         // rather than failed by the request ending below.
         String name = ref.descriptor().name();
-        workflows.onConsole(name, sessions.console().serviceGone(name, why));
+        List<org.ripv.messages.ConsoleEntry> gone = sessions.console().serviceGone(name, why);
+        workflows.onConsole(name, gone);
+        plans.onConsole(gone);
         endings.drop(ref, why);
     }
 
@@ -524,6 +539,7 @@ public final class RIPVServer implements AutoCloseable {
     void console(ServiceReference ref, List<org.ripv.messages.ConsoleEntry> entries) {
         sessions.console().publish(ref.descriptor().name(), entries);
         workflows.onConsole(ref.descriptor().name(), entries);
+        plans.onConsole(entries);
         // Answer only once they are stored: the service offers what a server did not take to the
         // next one (restarted, or a standby), so a server that dies now loses no transcript line.
         sessions.console().sync();
