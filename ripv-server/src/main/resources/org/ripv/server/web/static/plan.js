@@ -3,7 +3,9 @@
 // it on the next call (?plan send), queue a put (?plan set), and follow every change (?changes) as its events arrive.
 import { session, PostOffice, bar } from './postoffice.js';
 import { upload, storedName } from './transfer.js';
-import { el, button, say, mailboxParam, vehicleNav, observerOnly } from './ui.js';
+import { el, button, say, mailboxParam, vehicleNav } from './ui.js';
+import { rights } from './rights.js';
+import { command } from './address.js';
 
 const { mailbox, handle } = mailboxParam();
 const s = await session();
@@ -177,10 +179,11 @@ $('send-form').addEventListener('submit', send);
 $('set-form').addEventListener('submit', set);
 $('forecast').addEventListener('click', forecast);
 $('refresh-changes').addEventListener('click', listChanges);
-if (observerOnly(s)) {
-  $('save-card').hidden = true;
-  $('set-card').hidden = true;
-}
+// What the permit file lets this user change (the server decides each command again when it is sent).
+const SEND = command('?plan', mailbox, 'send', 'goto_l10.ma'), SET = command('?plan', mailbox, 'set', 'x', '0');
+const may = (await rights('', [SEND, SET])).commands;
+if (!may[SEND]) $('save-card').hidden = true;
+if (!may[SET]) $('set-card').hidden = true;
 // A change's state moves with PLAN_CHANGE events on the MailBox's console stream.
 po.onPush = (m) => {
   if (m.result?.kind === 'ConsoleBatch' && m.result.mailbox === mailbox && m.result.entries.some((x) => x.event === 'PLAN_CHANGE')) {

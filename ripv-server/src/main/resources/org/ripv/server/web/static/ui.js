@@ -44,7 +44,3 @@ export function vehicleNav(mailbox, here) {
   }
   return nav;
 }
-
-export function observerOnly(s) {
-  return s.roles.length > 0 && s.roles.every((r) => r === 'observers');
-}
