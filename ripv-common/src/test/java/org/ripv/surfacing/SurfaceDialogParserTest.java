@@ -194,7 +194,8 @@ class SurfaceDialogParserTest {
                 + "ABORT HISTORY: total since reset: 99999999999999999999\r\n").dialogs.get(0);
         assertThat(s.vehicle()).isEqualTo("x");
         assertThat(s.becauseText()).isEqualTo("[31mAbort[0m");
-        assertThat(s.value("m_battery")).isEqualTo(1e23);
+        assertThat(s.value("m_battery")).isNull(); // more digits than any sensor has: kept as text
+        assertThat(s.sensors().get("m_battery").text()).isEqualTo("99999999999999999999999.5");
         assertThat(s.sensors().get("m_battery").ageSeconds()).isInfinite();
         assertThat(s.sensors().get("m_vacuum").value()).isNull();
         assertThat(s.devices().errors().total()).isEqualTo(999999999999999L);
