@@ -60,7 +60,7 @@ public final class SurfaceDialogParser {
     private static final Pattern BECAUSE = Pattern.compile("Because:\\s*(.*)");
     private static final Pattern MISSION = Pattern.compile("MissionName:\\s*(\\S{0,128})(?:\\s+MissionNum:\\s*(.*))?");
     private static final Pattern VEHICLE = Pattern.compile("Vehicle Name:\\s*(\\S{1,64}).*");
-    private static final Pattern TIME = Pattern.compile("Curr Time:\\s*(.{0,64}?)\\s+MT:\\s*(-?\\d{1,15}).*");
+    private static final Pattern TIME = Pattern.compile("Curr Time:\\s*(.{0,64}?)\\s+MT:\\s*(-?\\d{1,15})(?!\\d).*");
     private static final Pattern PLACE = Pattern.compile("(GPS\\s*(Location|Invalid|TooFar)|DR\\s+Location)\\s*:\\s*(" + NUM
             + ")\\s*([NS])\\s+(" + NUM + ")\\s*([EW])(?:\\s+measured\\s+(" + NUM + ")\\s+secs?\\s+ago)?.*");
     private static final Pattern SENSOR = Pattern.compile("sensor:\\s*([A-Za-z_][A-Za-z0-9_]{0,63})(?:\\(([^)]{0,32})\\))?\\s*=\\s*(\\S{1,64})"
@@ -68,7 +68,7 @@ public final class SurfaceDialogParser {
     private static final String C3 = "\\s*(\\d{1,15})\\s*/\\s*(\\d{1,15})\\s*/\\s*(\\d{1,15})";
     private static final Pattern DEVICES = Pattern.compile("devices:\\s*\\(t/m/s\\)\\s*errs:" + C3 + "\\s*warn:" + C3 + "\\s*oddity:" + C3 + ".*");
     private static final Pattern ABORT = Pattern.compile("ABORT HISTORY:\\s*(.*)");
-    private static final Pattern ABORT_TOTAL = Pattern.compile("total since reset:\\s*(\\d{1,15}).*");
+    private static final Pattern ABORT_TOTAL = Pattern.compile("total since reset:\\s*(\\d{1,15})(?!\\d).*");
     private static final Pattern ABORT_LAST = Pattern.compile("last abort (cause|details|time|segment|mission):\\s*(.*)");
     private static final Pattern NUMBER = Pattern.compile(NUM);
 
