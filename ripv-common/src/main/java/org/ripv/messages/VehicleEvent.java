@@ -12,7 +12,11 @@ public enum VehicleEvent {
     DIVED,
     /** The link failed (I/O error, the device vanished, the service restarted mid-call). */
     LINK_LOST,
-    /** A line of the vehicle's output matched the link's alert pattern. */
+    /**
+     * Something needs a pilot: a line of the vehicle's output matched the link's alert pattern, or
+     * the server found trouble in a surfacing's call record (a new abort, a leak, the battery, …;
+     * the text names the cause: docs/surfacings.md).
+     */
     ALERT,
     TRANSFER_DONE,
     TRANSFER_FAILED,
@@ -28,5 +32,10 @@ public enum VehicleEvent {
      */
     INGEST_WAITING,
     /** A file that waited for its sensor-list cache was ingested once the cache arrived. */
-    INGEST_RELEASED
+    INGEST_RELEASED,
+    /**
+     * The server's: a vehicle has not called within its expected interval plus a grace (set, or
+     * learned from its recent calls), and again, saying how late, when it calls (docs/surfacings.md).
+     */
+    OVERDUE
 }
