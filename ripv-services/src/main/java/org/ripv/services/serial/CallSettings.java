@@ -25,7 +25,13 @@ public record CallSettings(String name, Pattern surface, Duration quiet, Pattern
 
     /** The Slocum surface dialog: "Glider ru29 at surface." or a GPS fix line. */
     public static final String DEFAULT_SURFACE = "Glider .* at surface|GPS Location:";
-    public static final String DEFAULT_ALERT = "abort|ABORT|leak|LEAK|Error|ERROR";
+    /**
+     * Lines that raise an ALERT at once: a leak or an error the vehicle shouts. Not "abort" (every
+     * Slocum dialog says "Control-C to abort" and prints its ABORT HISTORY) and not sensor names
+     * ({@code m_leakdetect_voltage}): the server reads each surface dialog and alerts on a new
+     * abort, a leak voltage, the battery, … with the cause (docs/surfacings.md).
+     */
+    public static final String DEFAULT_ALERT = "LEAK|[Ll]eak detected|ERROR|[Ee]rror:";
     public static final Duration DEFAULT_QUIET = Duration.ofMinutes(10);
     public static final int DEFAULT_LINE_LENGTH = 1024;
     public static final int DEFAULT_LINES_PER_SECOND = 200;
