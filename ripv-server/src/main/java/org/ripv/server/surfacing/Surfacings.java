@@ -174,7 +174,9 @@ public final class Surfacings implements AutoCloseable {
             return;
         }
         v.now = e.time();
-        v.parser.end(); // a call's start or end ends any dialog under way
+        if (e.event() != VehicleEvent.SURFACED) {
+            v.parser.end(); // the call's end ends a dialog under way (SURFACED comes in the middle of one, after its fix)
+        }
         if (e.event() == VehicleEvent.SURFACED) {
             String back = overdue.called(e.mailbox(), e.time());
             if (back != null) {

@@ -45,12 +45,15 @@ class SurfacingsTest {
 
     /** One call: SURFACED, the dialog's lines as the service publishes them, DIVED. */
     private void call(String dialog, long time) throws Exception {
-        surfacings.accept(List.of(new ConsoleEntry(time, RU29, ConsoleEntry.Kind.EVENT, "", "call", VehicleEvent.SURFACED, null, null)));
         String text = Files.readString(DIALOGS.resolve(dialog), StandardCharsets.ISO_8859_1);
         long t = time;
         for (String line : text.split("\r\n")) {
             if (!line.isBlank()) {
                 surfacings.accept(List.of(new ConsoleEntry(++t, RU29, ConsoleEntry.Kind.LINE, "", line, null, null, null)));
+            }
+            if (line.startsWith("GPS Location")) { // the service's SURFACED waits for the fix: in the middle of the dialog
+                surfacings.accept(List.of(new ConsoleEntry(t, RU29, ConsoleEntry.Kind.EVENT, "", "call", VehicleEvent.SURFACED,
+                        null, null)));
             }
         }
         surfacings.accept(List.of(new ConsoleEntry(t + 1000, RU29, ConsoleEntry.Kind.EVENT, "", "the caller hung up",
