@@ -82,6 +82,12 @@ public final class SurfaceDialogParser {
         this.listener = listener;
     }
 
+    /** The seconds of a dive countdown line ("Hit Control-C within 50 seconds …"), or -1 when it is none. */
+    public static long countdownSeconds(String line) {
+        Matcher m = COUNTDOWN.matcher(line.strip());
+        return line.length() <= MAX_LINE && m.lookingAt() ? Long.parseLong(m.group(1)) : -1;
+    }
+
     /** True while a dialog has begun and not ended. */
     public boolean inDialog() {
         return dialog != null;
