@@ -52,7 +52,7 @@ class SurfacingsEndToEndTest {
     }
 
     /** The server, and the SerialPortServer launched with a listen:// link named ru29; returns its port. */
-    private int start() throws Exception {
+    private int start(String linkOptions) throws Exception {
         for (String m : List.of("ripv-server", "ripv-services")) {
             assumeTrue(Files.isRegularFile(ROOT.resolve(m + "/target/" + m + ".jar")), "needs the jars (mvn package builds them)");
         }
@@ -69,7 +69,7 @@ class SurfacingsEndToEndTest {
         Path serviceLog = dir.resolve("serial.log");
         jars.launch(serviceLog, "service", "serial", "--server", "localhost:" + sys.server().registryPort(), "--secret-file",
                 secret.toString(), "--no-enumerate", "--work", dir.resolve("work").toString(), "--link",
-                "listen://127.0.0.1:" + port + ",name=ru29,idle-timeout=1000,prompt-regex=GliderDOS [^>]*>|C:\\\\>");
+                "listen://127.0.0.1:" + port + ",name=ru29,idle-timeout=1000" + linkOptions + ",prompt-regex=GliderDOS [^>]*>|C:\\\\>");
         long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
         while (sys.server().serviceCount() == 0) {
             assertThat(System.nanoTime() < end).as("the SerialPortServer registered; its log: " + Files.readString(serviceLog)).isTrue();
@@ -84,9 +84,10 @@ class SurfacingsEndToEndTest {
 
     @Test
     void callRecordsAlertsWithTheirCauseAndAnOverdueGlider() throws Exception {
-        int port = start();
-        // ru29 is expected every 3 s (+1 s grace); it dives for 9 s between calls, so it is late each dive
-        Files.writeString(sys.dataDir().resolve("surfacing-alerts.conf"), "# test rules\nru29 overdue 3s\n* overdue.grace 1s\n");
+        // ru29 is expected every 3 s (its link's overdue=, +1 s grace from the rules file); it dives for
+        // 9 s between calls, so it is late each dive
+        int port = start(",overdue=3s");
+        Files.writeString(sys.dataDir().resolve("surfacing-alerts.conf"), "# test rules\nru29 overdue 1h\n* overdue.grace 1s\n");
         ClientSocketHandler alice = sys.login("alice");
         String mailbox = "<SerialPortServer>::<localhost>ru29";
         Pushes pushes = Pushes.on(alice);
@@ -112,7 +113,7 @@ class SurfacingsEndToEndTest {
                 || t.contains("sensor:"));
         assertThat(alerts).allSatisfy(a -> assertThat(a.lat()).isNotNull());
         ConsoleEntry late = pushes.entries.stream().filter(e -> e.event() == VehicleEvent.OVERDUE).findFirst().orElseThrow();
-        assertThat(late.text()).startsWith("no call for").contains("expected every 3 s (its overdue rule) + 1 s grace");
+        assertThat(late.text()).startsWith("no call for").contains("expected every 3 s (its link's overdue=) + 1 s grace");
         // a call that ends after its dialog is a dive, not a lost link
         assertThat(pushes.entries).extracting(ConsoleEntry::event).contains(VehicleEvent.DIVED).doesNotContain(VehicleEvent.LINK_LOST);
 
@@ -144,7 +145,7 @@ class SurfacingsEndToEndTest {
 
     @Test
     void aCallDroppedInTheMiddleOfItsDialogIsLinkLostNotADive() throws Exception {
-        int port = start();
+        int port = start("");
         ClientSocketHandler alice = sys.login("alice");
         String mailbox = "<SerialPortServer>::<localhost>ru29";
         Pushes pushes = Pushes.on(alice);

@@ -163,29 +163,8 @@ final class AlertRules {
         }
     }
 
-    /** {@code 500ms}, {@code 90s}, {@code 10m}, {@code 2h}, {@code 1d}, or ISO-8601 ({@code PT2H}); positive. */
+    /** {@code 90s}, {@code 10m}, {@code 2h}, {@code 1d}, or ISO-8601 ({@code PT2H}); positive. */
     static Duration duration(String s) {
-        java.util.regex.Matcher m = java.util.regex.Pattern.compile("(\\d{1,9})(ms|s|m|h|d)").matcher(s.toLowerCase(Locale.ROOT));
-        Duration d;
-        if (m.matches()) {
-            long n = Long.parseLong(m.group(1));
-            d = switch (m.group(2)) {
-                case "ms" -> Duration.ofMillis(n);
-                case "s" -> Duration.ofSeconds(n);
-                case "m" -> Duration.ofMinutes(n);
-                case "h" -> Duration.ofHours(n);
-                default -> Duration.ofDays(n);
-            };
-        } else {
-            try {
-                d = Duration.parse(s);
-            } catch (java.time.format.DateTimeParseException e) {
-                throw new IllegalArgumentException("not a duration: '" + s + "' (e.g. 90s, 10m, 2h, 1d)");
-            }
-        }
-        if (d.isNegative() || d.isZero()) {
-            throw new IllegalArgumentException("a duration must be positive: '" + s + "'");
-        }
-        return d;
+        return org.ripv.surfacing.CallInterval.parse(s);
     }
 }

@@ -23,6 +23,8 @@ final class Overdue {
 
     private static final class Calls {
         final ArrayDeque<Long> starts = new ArrayDeque<>();
+        /** The link's {@code overdue=} as its SURFACED announced it, or null. */
+        Duration announced;
         boolean onCall;
         boolean late;
         long due;
@@ -35,9 +37,13 @@ final class Overdue {
         this.thresholds = thresholds;
     }
 
-    /** A call began at {@code time}; the text to publish when it was overdue, else null. */
-    String called(String mailbox, long time) {
+    /**
+     * A call began at {@code time}; {@code announced} is the link's interval its SURFACED gave (or
+     * null). Returns the text to publish when it was overdue, else null.
+     */
+    String called(String mailbox, long time, Duration announced) {
         Calls c = vehicles.computeIfAbsent(mailbox, k -> new Calls());
+        c.announced = announced;
         String back = null;
         if (c.late) {
             back = "called again " + words(Duration.ofMillis(Math.max(0, time - c.due))) + " after it was due";
@@ -67,7 +73,7 @@ final class Overdue {
                 return;
             }
             AlertRules.Thresholds t = thresholds.apply(mailbox);
-            Duration every = t.overdue() != null ? t.overdue() : learned(c);
+            Duration every = interval(c, t);
             if (every == null) {
                 return;
             }
@@ -75,7 +81,8 @@ final class Overdue {
             if (now >= c.due) {
                 c.late = true;
                 out.add(new Late(mailbox, "no call for " + words(Duration.ofMillis(now - c.starts.getLast()))
-                        + "; expected every " + words(every) + (t.overdue() != null ? " (its overdue rule)"
+                        + "; expected every " + words(every) + (c.announced != null ? " (its link's overdue=)"
+                        : t.overdue() != null ? " (its overdue rule)"
                         : " (learned from its last " + (c.starts.size() - 1) + " intervals)") + " + " + words(t.grace()) + " grace"));
             }
         });
@@ -91,12 +98,17 @@ final class Overdue {
                 continue;
             }
             AlertRules.Thresholds t = thresholds.apply(e.getKey());
-            Duration every = t.overdue() != null ? t.overdue() : learned(c);
+            Duration every = interval(c, t);
             if (every != null) {
                 soonest = Math.min(soonest, c.starts.getLast() + every.toMillis() + t.grace().toMillis());
             }
         }
         return Math.max(1, soonest - now);
+    }
+
+    /** The link's {@code overdue=}, else the rules file's, else what its calls taught. */
+    private static Duration interval(Calls c, AlertRules.Thresholds t) {
+        return c.announced != null ? c.announced : t.overdue() != null ? t.overdue() : learned(c);
     }
 
     private static Duration learned(Calls c) {

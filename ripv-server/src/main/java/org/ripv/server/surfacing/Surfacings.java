@@ -178,7 +178,8 @@ public final class Surfacings implements AutoCloseable {
             v.parser.end(); // the call's end ends a dialog under way (SURFACED comes in the middle of one, after its fix)
         }
         if (e.event() == VehicleEvent.SURFACED) {
-            String back = overdue.called(e.mailbox(), e.time());
+            String back = overdue.called(e.mailbox(), e.time(),
+                    org.ripv.surfacing.CallInterval.announced(e.text()).orElse(null));
             if (back != null) {
                 publish(e.mailbox(), VehicleEvent.OVERDUE, back, e.lat(), e.lon());
             }

@@ -156,12 +156,12 @@ class SurfacingsTest {
     @Test
     void aLearnedIntervalNeedsThreeCalls() {
         Overdue o = new Overdue(m -> AlertRules.DEFAULTS);
-        o.called(RU29, 0);
+        o.called(RU29, 0, null);
         o.ended(RU29);
         assertThat(o.check(10_000_000)).isEmpty();
-        o.called(RU29, 3_600_000);
+        o.called(RU29, 3_600_000, null);
         o.ended(RU29);
-        o.called(RU29, 7_200_000);
+        o.called(RU29, 7_200_000, null);
         o.ended(RU29);
         assertThat(o.check(7_200_000 + 3_600_000 + 500_000)).isEmpty(); // within the 10 min grace
         assertThat(o.check(7_200_000 + 3_600_000 + 700_000)).singleElement().extracting(Overdue.Late::text).asString()

@@ -56,7 +56,7 @@ final class VehicleConsole {
         this.calls = calls;
         this.lines = new LineAssembler(settings.lineLength());
         this.rate = new LineRate(settings.linesPerSecond(), System.nanoTime());
-        this.call = new CallState(mailbox, out);
+        this.call = new CallState(mailbox, out, settings.overdue());
     }
 
     Calls calls() {
