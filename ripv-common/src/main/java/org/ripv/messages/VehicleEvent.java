@@ -34,6 +34,11 @@ public enum VehicleEvent {
     /** A file that waited for its sensor-list cache was ingested once the cache arrived. */
     INGEST_RELEASED,
     /**
+     * A plan change (a behaviour file sent, a {@code put}) moved on: queued, sent, received, in
+     * effect or not in effect (docs/plans.md). The text names the change and its new state.
+     */
+    PLAN_CHANGE,
+    /**
      * The server's: a vehicle has not called within its expected interval plus a grace (set, or
      * learned from its recent calls), and again, saying how late, when it calls (docs/surfacings.md).
      */

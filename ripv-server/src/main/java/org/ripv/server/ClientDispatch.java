@@ -32,9 +32,15 @@ final class ClientDispatch implements SocketHandler.Dispatcher {
                     "log in first (?login USER with the password), then send '" + Header.abbreviate(body) + "'")));
             return;
         }
+        String full = server.waiting().take(client.clientId(), h);
+        if (full != null) {
+            client.send(request.reply(Footer.error(Ids.FID_NONE, ErrorCode.NOT_AVAILABLE, full)));
+            return;
+        }
         IncomingServerMessage stamped = new IncomingServerMessage(
                 h.withOrigin(client.badge(), client.roles()).withDestination(""));
         if (!server.deliver(stamped)) {
+            server.waiting().done(client.clientId(), h); // taken above, refused here: no longer waiting
             client.send(request.reply(Footer.error(Ids.FID_NONE, ErrorCode.NOT_AVAILABLE,
                     "the server is overloaded: too many requests waiting; try again shortly")));
         }
@@ -43,6 +49,7 @@ final class ClientDispatch implements SocketHandler.Dispatcher {
     @Override
     public void closed(SocketHandler client) {
         server.forgetClient(client);
+        server.waiting().forget(client.clientId());
         server.security().gate().closed(client.clientId());
         server.pending().forgetClient(client.clientId());
         server.files().abortAll(client.clientId());

@@ -85,6 +85,7 @@ public final class RIPVServer implements AutoCloseable {
     private final ExecutorService fileWork;
     private final ServerRemote remote = new ServerRemote(this);
     private final InternalCalls internalCalls = new InternalCalls(this);
+    private final org.ripv.server.clients.WaitingRequests waiting = new org.ripv.server.clients.WaitingRequests();
     private volatile org.ripv.server.dataloop.DataLoop dataLoop;
 
     private PermitWatcher permits;
@@ -105,6 +106,8 @@ public final class RIPVServer implements AutoCloseable {
     private RegistryGuard registryGuard;
     private ServerTls tls;
     private org.ripv.server.workflow.Workflows workflows;
+    /** Plans and their changes (org.ripv.server.plans, docs/plans.md). */
+    private org.ripv.server.plans.Plans plans;
     private final RequestCancels cancels = new RequestCancels(this);
     private OutboundListener outbound;
     private volatile boolean running;
@@ -168,6 +171,7 @@ public final class RIPVServer implements AutoCloseable {
         codec = new FrameCodec(config.maxFrame());
         pending = new PendingRequests(timers, config.requestTimeout(), this::timedOut);
         workflows = new org.ripv.server.workflow.Workflows(state.store(), new WorkflowBridge(this));
+        plans = new org.ripv.server.plans.Plans(new PlanBridge(this), config.dataDir().resolve("plans"));
         endings = new RequestEndings(this::reply, pending, withdrawals, config.requestTimeout());
         box = postOffice.open(POST_OFFICE, new ServerTaskManager(this));
         // A log-in looks at the file first (one stat): a user just added with ripv passwd can log in
@@ -177,6 +181,7 @@ public final class RIPVServer implements AutoCloseable {
             return permits.current();
         }, () -> secret);
         sessions = new ServerSessions(config.dataDir(), state.store(), sessionOptions, this::permits, this::client, codec);
+        sessions.countRepliesIn(waiting);
         sessions.expireLocks(timers, locks, mailbox -> workflows.lockReleased(mailbox));
         permits.onChange(sessions::permitsChanged);
         dataLoop = new org.ripv.server.dataloop.DataLoop(internalCalls, config.dataDir().resolve("ingest.properties"));
@@ -216,6 +221,13 @@ public final class RIPVServer implements AutoCloseable {
         }
         running = true;
         acceptor = new ClientAcceptor(listener, tls.context(), timers, codec, writers, dispatch, security.gate());
+        // A reload that removes a user, changes a password or roles reaches every open log-in (issue 33 item 4).
+        org.ripv.server.security.StaleLogins stale = new org.ripv.server.security.StaleLogins(permits.current(), acceptor::clients);
+        if (landingPage != null) {
+            WebConsole web = landingPage;
+            stale.onChange(c -> web.usersChanged(c.ended(), c.roles()));
+        }
+        permits.onChange(stale);
         long check = config.serviceCheck().toMillis();
         timers.scheduleWithFixedDelay(this::checkServices, check, check, TimeUnit.MILLISECONDS);
         log.info("RIPVServer listening for clients on port {}{}, RMI registry on port {}, data in {}", port(),
@@ -286,6 +298,9 @@ public final class RIPVServer implements AutoCloseable {
         if (workflows != null) {
             workflows.close();
         }
+        if (plans != null) {
+            plans.close();
+        }
         if (sessions != null) {
             sessions.close();
         }
@@ -312,6 +327,10 @@ public final class RIPVServer implements AutoCloseable {
         WebConsole page = new WebConsole(new WebConsole.Options(new InetSocketAddress(bind, config.httpPort()),
                 files.uploadDir(), config.maxUpload(), config.clientJar(), this::describe, port(), security.webAccess(),
                 config.security().httpUpload(), tls.context(), new WebClients(() -> acceptor), codec, mapTiles));
+        // The upload form stores through the FileStore with ?upload's quota and owners (issue 33 item 5).
+        page.withPagesPerUser(config.security().webPages()); // issue 33 item 2
+        page.withFormUploads((user, parked) -> files.storeWhole(user, parked,
+                permits().user(user).map(u -> permits().quota(u)).orElse(0L)));
         if (publicNames != null) {
             page.withPublicView(new PublicVehicles(this, publicNames));
         }
@@ -410,6 +429,10 @@ public final class RIPVServer implements AutoCloseable {
         return services;
     }
 
+    org.ripv.server.plans.Plans plans() {
+        return plans;
+    }
+
     org.ripv.server.workflow.Workflows workflows() {
         return workflows;
     }
@@ -430,6 +453,9 @@ public final class RIPVServer implements AutoCloseable {
      */
     void publishServerEntry(org.ripv.messages.ConsoleEntry entry) {
         sessions.console().serverEntry(entry);
+        if (plans != null) {
+            plans.onConsole(List.of(entry));
+        }
     }
 
     String secret() {
@@ -443,6 +469,11 @@ public final class RIPVServer implements AutoCloseable {
     /** Automatic ingest and plots from data (org.ripv.server.dataloop). */
     org.ripv.server.dataloop.DataLoop dataLoop() {
         return dataLoop;
+    }
+
+    /** Each client's requests waiting for their final reply, capped (issue 33 item 10). */
+    org.ripv.server.clients.WaitingRequests waiting() {
+        return waiting;
     }
 
     PendingRequests pending() {
@@ -495,7 +526,9 @@ public final class RIPVServer implements AutoCloseable {
         // The calls end first, so a workflow step under way is cut (it resumes on the next call)
         // rather than failed by the request ending below.
         String name = ref.descriptor().name();
-        workflows.onConsole(name, sessions.console().serviceGone(name, why));
+        List<org.ripv.messages.ConsoleEntry> gone = sessions.console().serviceGone(name, why);
+        workflows.onConsole(name, gone);
+        plans.onConsole(gone);
         endings.drop(ref, why);
     }
 
@@ -506,6 +539,7 @@ public final class RIPVServer implements AutoCloseable {
     void console(ServiceReference ref, List<org.ripv.messages.ConsoleEntry> entries) {
         sessions.console().publish(ref.descriptor().name(), entries);
         workflows.onConsole(ref.descriptor().name(), entries);
+        plans.onConsole(entries);
         // Answer only once they are stored: the service offers what a server did not take to the
         // next one (restarted, or a standby), so a server that dies now loses no transcript line.
         sessions.console().sync();

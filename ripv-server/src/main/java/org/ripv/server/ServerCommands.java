@@ -62,6 +62,10 @@ final class ServerCommands {
         COMMANDS.put("?queue", new Command(Ids.FID_QUEUE, "?queue MAILBOX | add MAILBOX NAME | remove MAILBOX ID | clear MAILBOX",
                 "the workflows queued for a vehicle's next call (docs/workflows.md)"));
         COMMANDS.put("?receipts", new Command(Ids.FID_RECEIPTS, "?receipts MAILBOX [--last N]", "what the last workflow runs did"));
+        COMMANDS.put("?plan", new Command(Ids.FID_PLAN, "?plan MAILBOX check FILE | send FILE [as NAME] | set NAME VALUE | forecast FILE [SPEED]",
+                "check a Slocum behaviour file (.ma), send it on the next call, queue a put, or forecast its legs (docs/plans.md)"));
+        COMMANDS.put("?changes", new Command(Ids.FID_CHANGES, "?changes [MAILBOX]",
+                "each change sent to a vehicle: queued, sent, received, in effect or not"));
         COMMANDS.put("?cancel", new Command(Ids.FID_CANCEL, "?cancel MESSAGE-ID [CLIENT-ID]", "stop a request that is queued or running"));
         COMMANDS.put("?key", new Command(Ids.FID_KEY, "?key MAILBOX KEY", "press a control key on a vehicle (ctrl-c, ctrl-r, …)"));
         COMMANDS.put("?watch", new Command(Ids.FID_WATCH, "?watch MAILBOX", "follow a MailBox's console: lines, commands, events"));
@@ -88,7 +92,7 @@ final class ServerCommands {
 
     /** Commands that touch the disk: they run on the file workers, not on the Post Office's thread. */
     private static final java.util.Set<String> FILE_WORK = java.util.Set.of("?upload", "?upload-cancel", "?download",
-            "?dlfiles", "?ulfiles", "?delete", "?queue", "?receipts", "?history", "?notify", "?audit", "?surfacings");
+            "?dlfiles", "?ulfiles", "?delete", "?queue", "?receipts", "?plan", "?changes", "?history", "?notify", "?audit", "?surfacings");
 
     /** Runs one {@code ?} command; its reply (or replies) go to the Post Office's outbox. */
     void run(IncomingServerMessage request) {
@@ -289,6 +293,10 @@ final class ServerCommands {
                 return server.workflows().receiptsCommand(request);
             case "?key":
                 return key(request, w);
+            case "?plan":
+                return server.plans().planCommand(request);
+            case "?changes":
+                return server.plans().changesCommand(request);
             case "?cancel":
                 server.checkers().execute(() -> server.reply(server.cancels().command(request)));
                 return null;

@@ -176,6 +176,9 @@ final class ServerTaskManager extends TaskManager<IncomingServerMessage, Outgoin
         if (server.workflows().reply(reply)) {
             return; // a workflow step's reply: the runner judges it
         }
+        if (reply.footer().status() != org.ripv.messages.Status.PROGRESS) {
+            server.waiting().done(reply.header().origin().clientId(), reply.header()); // its final reply: no longer waiting
+        }
         Optional<SocketHandler> client = server.client(reply.header().origin().clientId());
         if (client.isEmpty()) {
             log.info("dropped reply to #{}: client {} has disconnected", reply.header().messageId(),

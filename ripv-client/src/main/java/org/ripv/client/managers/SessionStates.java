@@ -44,7 +44,7 @@ public final class SessionStates {
                     fromVehicle = false;
                 }
                 case LOCK_TAKEN, LOCK_RELEASED, WORKFLOW_DONE, WORKFLOW_FAILED, WORKFLOW_DONE_WITH_ERRORS, INGEST_WAITING,
-                        INGEST_RELEASED -> fromVehicle = false;
+                        INGEST_RELEASED, PLAN_CHANGE -> fromVehicle = false;
                 default -> { }
             }
         }

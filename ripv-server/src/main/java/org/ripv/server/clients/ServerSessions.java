@@ -42,7 +42,7 @@ public final class ServerSessions implements AutoCloseable {
         notifier = new Notifier(store, permits, options.smtp(),
                 options.notifyBackoff(), options.notifyTimeout(), options.webhooks());
         console.onEvent(notifier::accept);
-        consoleCommands = new ConsoleCommands(console, permits, id -> clients.apply(id).map(ServerSessions::outlet),
+        consoleCommands = new ConsoleCommands(console, permits, id -> clients.apply(id).map(this::outlet),
                 RIPVServer.SERVER_SERVICE);
         notifyCommands = new NotifyCommands(notifier, RIPVServer.SERVER_SERVICE);
         // Every surface dialog becomes a call record, alerts and overdue calls (docs/surfacings.md).
@@ -51,7 +51,14 @@ public final class ServerSessions implements AutoCloseable {
         surfacingCommands = new org.ripv.server.surfacing.SurfacingCommands(surfacings, permits, RIPVServer.SERVER_SERVICE);
     }
 
-    private static Outlet outlet(SocketHandler h) {
+    /** Counts the replies a watch sends itself (they do not pass the Post Office's outbox) as final (issue 33 item 10). */
+    public void countRepliesIn(WaitingRequests requests) {
+        this.waiting = requests;
+    }
+
+    private volatile WaitingRequests waiting;
+
+    private Outlet outlet(SocketHandler h) {
         return new Outlet() {
             @Override
             public boolean push(OutgoingServerMessage message, byte[] frame, Runnable written) {
@@ -60,6 +67,10 @@ public final class ServerSessions implements AutoCloseable {
 
             @Override
             public void send(OutgoingServerMessage reply) {
+                WaitingRequests w = waiting;
+                if (w != null && reply.footer().status() != org.ripv.messages.Status.PROGRESS) {
+                    w.done(h.clientId(), reply.header());
+                }
                 h.send(reply);
             }
 

@@ -67,6 +67,8 @@ public final class GliderSimulator implements AutoCloseable {
     /** Null: the PicoDOS prompt at once (the default); else the Slocum surface dialog and GliderDOS. */
     private volatile GliderDos gliderDos;
     private volatile SurfaceTrouble trouble = SurfaceTrouble.NONE;
+    /** What its plan (goto_l10.ma, put values) makes its dialog print. */
+    private final PlanState plan;
     private volatile Duration surfaceWait = Duration.ofSeconds(60);
     private volatile IridiumLine.Settings line = IridiumLine.Settings.NONE;
     private volatile String name = "sim01";
@@ -81,6 +83,7 @@ public final class GliderSimulator implements AutoCloseable {
      */
     public GliderSimulator(Path dir, Duration submerge, YmodemConfig ymodem) throws IOException {
         this.dir = Files.createDirectories(dir);
+        this.plan = new PlanState(this.dir);
         this.submerge = submerge;
         this.ymodem = ymodem;
         seed(this.dir);
@@ -314,7 +317,7 @@ public final class GliderSimulator implements AutoCloseable {
                     calls++;
                     ShellLink shell = new ShellLink(link);
                     if (gliderDos == null) {
-                        say(shell, dialog.text(calls, java.time.Instant.now()) + PROMPT);
+                        say(shell, dialog.text(calls, java.time.Instant.now(), "SIM.MI", plan.dialogLines()) + PROMPT);
                         converse(shell, System.nanoTime() + surfaceTime.toNanos(), dialog::chatter, 0);
                         submerged = true;
                         say(shell, "\r\nHanging up: diving for " + diveTime.toSeconds() + " s\r\n");
@@ -354,7 +357,7 @@ public final class GliderSimulator implements AutoCloseable {
         GliderDos g = gliderDos;
         g.surfaced();
         pendingEnd = null;
-        say(shell, dialog.fullText(calls, java.time.Instant.now(), g.mission(), g.reportLines(), trouble));
+        say(shell, dialog.fullText(calls, java.time.Instant.now(), g.mission(), plan.waypointLines() + g.reportLines(), trouble));
         SurfaceCountdown.Answer a = SurfaceCountdown.run(shell, surfaceWait, surfaceWait, dir);
         if (a == SurfaceCountdown.Answer.CONTROL_C) {
             say(shell, g.prompt());
@@ -458,6 +461,10 @@ public final class GliderSimulator implements AutoCloseable {
         String[] words = command.split("\\s+");
         String verb = words[0].toUpperCase(Locale.ROOT);
         GliderDos g = gliderDos;
+        if (g == null && verb.equals("PUT")) {
+            say(shell, plan.put(words)); // a glider's put, at the simple shell too (docs/plans.md)
+            return false;
+        }
         GliderDos.Answer answer = g == null ? null : g.execute(verb, words);
         if (answer != null) {
             say(shell, answer.text());

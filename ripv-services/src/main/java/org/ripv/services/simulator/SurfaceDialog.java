@@ -71,7 +71,8 @@ final class SurfaceDialog {
     /**
      * The whole dialog of a Slocum's surfacing as GliderDOS prints it (firmware 8-10 shape: fix
      * lines with their ages, the surface list with ages, device counts, the ABORT HISTORY block),
-     * with the report list's lines after its sensors and the trouble asked for.
+     * with {@code reportLines} (the plan's waypoint, the report list) after its sensors and the
+     * trouble asked for.
      */
     String fullText(int call, Instant now, String mission, String reportLines, SurfaceTrouble trouble) {
         double[] p = position(call);
@@ -80,7 +81,6 @@ final class SurfaceDialog {
         String gps = degreesMinutes(p[0]) + " N " + degreesMinutes(p[1]) + " E";
         String invalid = degreesMinutes(p[0] + 0.0012) + " N " + degreesMinutes(p[1] - 0.0009) + " E";
         String dr = degreesMinutes(p[0] - 0.0001) + " N " + degreesMinutes(p[1] + 0.0001) + " E";
-        double[] wpt = {START_LAT + 0.05, START_LON + 0.05};
         StringBuilder b = new StringBuilder("\r\n");
         b.append("Glider ").append(name).append(" at surface.\r\n");
         b.append(aborted ? "Because:Abort [" + SurfaceTrouble.ABORT_CAUSE + "]" : "Because:Surface interval [1]").append("\r\n");
@@ -90,8 +90,6 @@ final class SurfaceDialog {
         b.append("DR  Location:  ").append(dr).append(" measured     30.0 secs ago\r\n");
         b.append("GPS Invalid :  ").append(invalid).append(" measured     44.5 secs ago\r\n");
         b.append("GPS Location:  ").append(gps).append(" measured     26.0 secs ago\r\n");
-        b.append(sensor("c_wpt_lat(lat)", degreesMinutes(wpt[0]), "1003.2"));
-        b.append(sensor("c_wpt_lon(lon)", degreesMinutes(wpt[1]), "1003.2"));
         b.append(sensor("m_battery(volts)", String.format(Locale.ROOT, "%.2f", Math.max(10.0, 15.2 - 0.05 * call)), "2.1"));
         b.append(sensor("m_coulomb_amphr_total(amp-hrs)", String.format(Locale.ROOT, "%.2f", 1.5 * call), "3.0"));
         b.append(sensor("m_vacuum(inHg)", "7.21", "2.1"));
