@@ -12,7 +12,11 @@ public enum VehicleEvent {
     DIVED,
     /** The link failed (I/O error, the device vanished, the service restarted mid-call). */
     LINK_LOST,
-    /** A line of the vehicle's output matched the link's alert pattern. */
+    /**
+     * Something needs a pilot: a line of the vehicle's output matched the link's alert pattern, or
+     * the server found trouble in a surfacing's call record (a new abort, a leak, the battery, …;
+     * the text names the cause: docs/surfacings.md).
+     */
     ALERT,
     TRANSFER_DONE,
     TRANSFER_FAILED,
@@ -34,6 +38,11 @@ public enum VehicleEvent {
      * effect or not in effect (docs/plans.md). The text names the change and its new state.
      */
     PLAN_CHANGE,
+    /**
+     * The server's: a vehicle has not called within its expected interval plus a grace (set, or
+     * learned from its recent calls), and again, saying how late, when it calls (docs/surfacings.md).
+     */
+    OVERDUE,
     /** A DatabaseServer refused a file (not a Slocum file, or broken): nothing of it stored; the text says why. */
     INGEST_REFUSED,
     /** A file whose bytes a DatabaseServer had stored already (fetched again): nothing added. */

@@ -12,9 +12,9 @@ import org.junit.jupiter.api.Test;
 
 /**
  * Issue 32, item 12: {@code ripv bench broker --short} printed {@code 2587×} as if it were a
- * figure. A short run says, before its figures and after them, that they are not measurements;
- * a full run does not (only its --help here: a full run takes minutes). Every other benchmark's
- * short run is checked the same way in {@link EveryBenchmarkRunsTest}.
+ * figure. A short run, launched as a process as {@code ./ripv bench broker --short} runs it, says
+ * before its figures and after them that they are not measurements; its --help does not.
+ * {@link EveryBenchmarkRunsTest} checks every benchmark's short run in one JVM.
  */
 class ShortRunSaysItIsNoMeasurementTest {
     static String run(String... args) throws Exception {
@@ -32,8 +32,8 @@ class ShortRunSaysItIsNoMeasurementTest {
     @Test
     void brokerShortSaysItsFiguresAreNotMeasurementsBeforeAndAfterThem() throws Exception {
         String out = run("broker", "--short");
-        int first = out.indexOf(BenchMain.NOT_MEASUREMENTS);
-        int last = out.lastIndexOf(BenchMain.NOT_MEASUREMENTS);
+        int first = out.indexOf(ShortMode.NOT_MEASUREMENTS);
+        int last = out.lastIndexOf(ShortMode.NOT_MEASUREMENTS);
         assertThat(first).as(out).isGreaterThanOrEqualTo(0);
         assertThat(last).as("said again after the figures:\n" + out).isGreaterThan(first);
         String figures = out.substring(first, last);

@@ -71,6 +71,8 @@ final class ServerCommands {
         COMMANDS.put("?watch", new Command(Ids.FID_WATCH, "?watch MAILBOX", "follow a MailBox's console: lines, commands, events"));
         COMMANDS.put("?unwatch", new Command(Ids.FID_UNWATCH, "?unwatch MAILBOX", "stop following it"));
         COMMANDS.put("?history", new Command(Ids.FID_HISTORY, "?history MAILBOX [--last N] [--since ISO-TIME]", "its transcript"));
+        COMMANDS.put("?surfacings", new Command(Ids.FID_SURFACINGS, org.ripv.server.surfacing.SurfacingCommands.usage(),
+                "its call records: one per surfacing (docs/surfacings.md)"));
         COMMANDS.put("?notify", new Command(Ids.FID_NOTIFY, "?notify add|list|remove ...", "e-mail or webhook on vehicle events"));
         COMMANDS.put("?audit", new Command(Ids.FID_AUDIT, "?audit [--last N] [--since ISO-TIME]", "the audit trail (needs a right)"));
         COMMANDS.put("?logout", new Command(Ids.FID_LOGOUT, "?logout", "end the session and close the connection"));
@@ -90,7 +92,7 @@ final class ServerCommands {
 
     /** Commands that touch the disk: they run on the file workers, not on the Post Office's thread. */
     private static final java.util.Set<String> FILE_WORK = java.util.Set.of("?upload", "?upload-cancel", "?download",
-            "?dlfiles", "?ulfiles", "?delete", "?queue", "?receipts", "?plan", "?changes", "?history", "?notify", "?audit");
+            "?dlfiles", "?ulfiles", "?delete", "?queue", "?receipts", "?plan", "?changes", "?history", "?notify", "?audit", "?surfacings");
 
     /** Runs one {@code ?} command; its reply (or replies) go to the Post Office's outbox. */
     void run(IncomingServerMessage request) {
@@ -343,6 +345,8 @@ final class ServerCommands {
                 return server.sessions().consoleCommands().run(request, c.fid(), w);
             case "?notify":
                 return server.sessions().notifyCommands().run(request, c.fid(), w);
+            case "?surfacings":
+                return server.sessions().surfacingCommands().run(request, c.fid(), w);
             default:
                 throw new IllegalStateException("no handler for " + w[0]);
         }

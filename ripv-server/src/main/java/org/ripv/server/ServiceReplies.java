@@ -7,12 +7,15 @@ import org.ripv.messages.ErrorCode;
 import org.ripv.messages.FileBundle;
 import org.ripv.messages.FileData;
 import org.ripv.messages.FileListing;
+import org.ripv.messages.IdBadge;
 import org.ripv.messages.Footer;
 import org.ripv.messages.ImageResult;
 import org.ripv.messages.IncomingServerMessage;
 import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.OutgoingServiceMessage;
 import org.ripv.messages.Result;
+import org.ripv.messages.TablePages;
+import org.ripv.server.paging.PageRelay;
 import org.ripv.server.requests.PendingRequests;
 import org.ripv.server.services.ServiceReference;
 import org.slf4j.Logger;
@@ -25,6 +28,9 @@ import org.slf4j.LoggerFactory;
  */
 final class ServiceReplies {
     private static final Logger log = LoggerFactory.getLogger(ServiceReplies.class);
+
+    /** Pages of query results on their way to clients (issue 38); its threads end when idle, so one serves every server in the JVM. */
+    private static final PageRelay PAGES = new PageRelay();
 
     private ServiceReplies() {}
 
@@ -46,6 +52,12 @@ final class ServiceReplies {
         f = server.cancels().judge(p, f);
         // Route by the header the server sent, never by what the service wrote back.
         OutgoingServerMessage out = new IncomingServerMessage(p.header()).reply(f.via(RIPVServer.SERVER_SERVICE));
+        if (TablePages.isPage(f)) {
+            String clientId = p.header().origin().clientId();
+            PAGES.relay(out, ref, server::client, IdBadge.SERVER.clientId().equals(clientId)
+                    || org.ripv.server.workflow.Workflows.isWorkflowClient(clientId), server::reply);
+            return;
+        }
         if (!server.dataLoop().downloaded(out, sent, server::reply)) { // DBA files go to the database first
             server.reply(out);
         }
