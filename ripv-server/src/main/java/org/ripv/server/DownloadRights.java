@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.util.Optional;
 import org.ripv.server.files.FileStore;
 import org.ripv.server.permit.PermitFile;
+import org.ripv.server.permit.SecurityRefusal;
 import org.ripv.server.session.Rights;
 
 /**
@@ -20,7 +21,7 @@ final class DownloadRights {
     /**
      * Refuses a file the user may not have.
      *
-     * @throws ServerCommands.SecurityRefusal quoting the file, its MailBox and the rule that decided
+     * @throws SecurityRefusal quoting the file, its MailBox and the rule that decided
      */
     static void check(FileStore files, PermitFile permits, String user, String name) throws IOException {
         Optional<String> mailbox = files.mailboxOf(name);
@@ -29,7 +30,7 @@ final class DownloadRights {
         }
         String why = Rights.whyNotRead(permits, user, mailbox.get());
         if (why != null) {
-            throw new ServerCommands.SecurityRefusal("'" + name + "' came from " + mailbox.get() + ", and " + why
+            throw new SecurityRefusal("'" + name + "' came from " + mailbox.get() + ", and " + why
                     + "; a download needs the ?read right on the MailBox it came from (docs/permit.md)");
         }
     }

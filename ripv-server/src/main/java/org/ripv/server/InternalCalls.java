@@ -20,6 +20,7 @@ import org.ripv.messages.Priority;
 import org.ripv.naming.MailboxAddress;
 import org.ripv.naming.MalformedNameException;
 import org.ripv.server.dataloop.ServiceCalls;
+import org.ripv.server.permit.SecurityRefusal;
 import org.ripv.server.services.ServiceReference;
 
 /**
@@ -75,7 +76,7 @@ final class InternalCalls implements ServiceCalls {
             try {
                 a = DownloadAttachments.forCommand(server.files(), ref.get().descriptor(), body,
                         name -> DownloadRights.check(server.files(), server.permits(), user, name));
-            } catch (ServerCommands.SecurityRefusal e) {
+            } catch (SecurityRefusal e) {
                 done.complete(Footer.error(ref.get().descriptor().sid(), ErrorCode.FORBIDDEN, e.getMessage()));
                 return done;
             } catch (IOException | IllegalArgumentException e) {

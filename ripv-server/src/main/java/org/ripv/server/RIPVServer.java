@@ -31,6 +31,7 @@ import org.ripv.server.clients.ServerSessions;
 import org.ripv.server.clients.WebClients;
 import org.ripv.server.files.FileStore;
 import org.ripv.server.handlers.SocketHandler;
+import org.ripv.server.lock.OperatorLock;
 import org.ripv.server.web.WebConsole;
 import org.ripv.server.permit.PermitFile;
 import org.ripv.server.permit.PermitWatcher;
@@ -66,8 +67,6 @@ public final class RIPVServer implements AutoCloseable {
     private static final Logger log = LoggerFactory.getLogger(RIPVServer.class);
     /** The server's one MailBox. */
     public static final String POST_OFFICE = "RIPV Post Office";
-    /** The name rules use for the server's own commands. */
-    public static final String SERVER_SERVICE = "RIPVServer";
 
     private final ServerConfig config;
     private final SessionOptions sessionOptions;
@@ -110,13 +109,6 @@ public final class RIPVServer implements AutoCloseable {
     private volatile boolean running;
     private ServerSessions sessions;
     private ServerState state;
-
-    /** An operator's hold on a MailBox ({@code ?lock}). */
-    public record OperatorLock(String user, String clientId, long untilMillis) {
-        public boolean expired() {
-            return System.currentTimeMillis() > untilMillis;
-        }
-    }
 
     public RIPVServer(ServerConfig config) {
         this(config, SessionOptions.defaults());

@@ -14,6 +14,7 @@ import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.Status;
 import org.ripv.server.permit.PermitFile;
 import org.ripv.server.requests.PendingRequests;
+import org.ripv.server.requests.ServerReplies;
 import org.ripv.server.services.ServiceReference;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -80,7 +81,7 @@ final class RequestCancels {
         String owner = p.header().origin().user();
         if (!owner.equals(user)) {
             PermitFile permits = server.permits();
-            PermitFile.Decision d = permits.user(user).map(u -> permits.decide(u, RIPVServer.SERVER_SERVICE, "",
+            PermitFile.Decision d = permits.user(user).map(u -> permits.decide(u, ServerReplies.SERVICE, "",
                     request.header().body().trim())).orElse(new PermitFile.Decision(false, "not in the permit file"));
             if (!d.allowed()) {
                 return error(request, ErrorCode.FORBIDDEN, "request #" + id + " is " + owner + "'s; user '" + user
@@ -88,7 +89,7 @@ final class RequestCancels {
             }
         }
         Outcome o = cancel(p, user);
-        return o.ok() ? request.reply(Footer.ok(Ids.FID_CANCEL, o.text(), null).via(RIPVServer.SERVER_SERVICE))
+        return o.ok() ? request.reply(Footer.ok(Ids.FID_CANCEL, o.text(), null).via(ServerReplies.SERVICE))
                 : error(request, o.code(), o.text());
     }
 
@@ -115,7 +116,7 @@ final class RequestCancels {
                 if (server.pending().complete(h, p.service()) != null) {
                     server.reply(new IncomingServerMessage(h).reply(Footer.error(ref.descriptor().sid(), ErrorCode.CANCELLED,
                             "'" + Header.abbreviate(h.body()) + "' was cancelled by " + byUser + " before it ran")
-                            .via(RIPVServer.SERVER_SERVICE)));
+                            .via(ServerReplies.SERVICE)));
                 }
                 log.info("{} cancelled {} of {} before it ran", byUser, what, h.origin().user());
                 transcript(h, byUser, "before it ran");
@@ -163,6 +164,6 @@ final class RequestCancels {
     }
 
     private static OutgoingServerMessage error(IncomingServerMessage request, ErrorCode code, String text) {
-        return request.reply(Footer.error(Ids.FID_CANCEL, code, text).via(RIPVServer.SERVER_SERVICE));
+        return request.reply(Footer.error(Ids.FID_CANCEL, code, text).via(ServerReplies.SERVICE));
     }
 }

@@ -21,7 +21,10 @@ import org.ripv.server.files.FileExistsException;
 import org.ripv.server.files.FileStore;
 import org.ripv.server.files.UploadMode;
 import org.ripv.server.files.FileTooLargeException;
+import org.ripv.server.lock.OperatorLock;
 import org.ripv.server.permit.PermitFile;
+import org.ripv.server.permit.SecurityRefusal;
+import org.ripv.server.requests.ServerReplies;
 import org.ripv.server.security.SecurityCommands;
 import org.ripv.server.vehicles.MailboxArgument;
 import org.ripv.server.vehicles.VehicleNames;
@@ -239,7 +242,7 @@ final class ServerCommands {
                 UploadMode mode = UploadMode.parse(w.length == 5 ? w[4] : null);
                 if (mode == UploadMode.REPLACE) {
                     // replacing is a right of its own (docs/permit.md): '?replace NAME' for RIPVServer
-                    PermitFile.Decision d = server.permits().decide(u, RIPVServer.SERVER_SERVICE, "", "?replace " + w[1]);
+                    PermitFile.Decision d = server.permits().decide(u, ServerReplies.SERVICE, "", "?replace " + w[1]);
                     if (!d.allowed()) {
                         throw new SecurityRefusal("user '" + user + "' may not replace files in the upload directory ("
                                 + d.because() + "); upload with 'keep' to store it under a new name");
@@ -297,9 +300,9 @@ final class ServerCommands {
                 if (seconds < 1 || seconds > MAX_LOCK_SECONDS) {
                     throw new IllegalArgumentException("a lock lasts 1 to " + MAX_LOCK_SECONDS + " seconds, not " + seconds);
                 }
-                RIPVServer.OperatorLock mine = new RIPVServer.OperatorLock(user, request.header().origin().clientId(),
+                OperatorLock mine = new OperatorLock(user, request.header().origin().clientId(),
                         System.currentTimeMillis() + seconds * 1000);
-                RIPVServer.OperatorLock now = server.locks().compute(address.toString(),
+                OperatorLock now = server.locks().compute(address.toString(),
                         (k, old) -> old == null || old.expired() || old.user().equals(user)
                                 || org.ripv.server.workflow.Workflows.isWorkflowClient(old.clientId()) ? mine : old);
                 if (now != mine) {
@@ -314,7 +317,7 @@ final class ServerCommands {
             case "?unlock": {
                 permit(request, c);
                 MailboxAddress address = MailboxAddress.parse(arg(w, 1, c));
-                RIPVServer.OperatorLock l = server.locks().get(address.toString());
+                OperatorLock l = server.locks().get(address.toString());
                 if (l != null && !l.expired() && !l.user().equals(user)) {
                     return ServerTaskManager.error(request, c.fid(), ErrorCode.MAILBOX_LOCKED,
                             address + " is locked by " + l.user() + ", not by you");
@@ -367,7 +370,7 @@ final class ServerCommands {
      */
     private void toVehicleRight(PermitFile.User u, String user, String name) {
         org.ripv.server.files.ToVehicleFolder.Name n = org.ripv.server.files.ToVehicleFolder.parse(name);
-        PermitFile.Decision d = server.permits().decide(u, RIPVServer.SERVER_SERVICE, "", "?to-vehicle " + n.folder());
+        PermitFile.Decision d = server.permits().decide(u, ServerReplies.SERVICE, "", "?to-vehicle " + n.folder());
         if (!d.allowed()) {
             throw new SecurityRefusal("user '" + user + "' may not put files for a vehicle in to-vehicle/" + n.folder() + " ("
                     + d.because() + "); that takes the right '?to-vehicle " + n.folder() + "' for RIPVServer");
@@ -382,25 +385,16 @@ final class ServerCommands {
         String user = request.header().origin().user();
         PermitFile.User u = server.permits().user(user).orElseThrow(
                 () -> new SecurityRefusal("user '" + user + "' is no longer in the permit file"));
-        PermitFile.Decision d = server.permits().decide(u, RIPVServer.SERVER_SERVICE, "", request.header().body());
+        PermitFile.Decision d = server.permits().decide(u, ServerReplies.SERVICE, "", request.header().body());
         if (!d.allowed()) {
             throw new SecurityRefusal("user '" + user + "' may not use " + c.usage().split(" ")[0] + " (" + d.because() + ")");
         }
         return u;
     }
 
-    /** A refused server command: answered FORBIDDEN. */
-    static final class SecurityRefusal extends IllegalArgumentException {
-        private static final long serialVersionUID = 1L;
-
-        SecurityRefusal(String message) {
-            super(message);
-        }
-    }
-
     private static OutgoingServerMessage ok(IncomingServerMessage request, Command c, String text,
                                             org.ripv.messages.Result result) {
-        return request.reply(Footer.ok(c.fid(), text, result).via(RIPVServer.SERVER_SERVICE));
+        return request.reply(Footer.ok(c.fid(), text, result).via(ServerReplies.SERVICE));
     }
 
     private static OutgoingServerMessage listing(IncomingServerMessage request, Command c, FileListing all, String shown) {

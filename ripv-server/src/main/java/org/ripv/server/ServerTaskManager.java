@@ -18,7 +18,10 @@ import org.ripv.naming.MalformedNameException;
 import org.ripv.post.MailBox;
 import org.ripv.server.files.FileTooLargeException;
 import org.ripv.server.handlers.SocketHandler;
+import org.ripv.server.lock.OperatorLock;
 import org.ripv.server.permit.PermitFile;
+import org.ripv.server.permit.SecurityRefusal;
+import org.ripv.server.requests.ServerReplies;
 import org.ripv.server.services.ServiceReference;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -91,7 +94,7 @@ final class ServerTaskManager extends TaskManager<IncomingServerMessage, Outgoin
             return error(request, sid, ErrorCode.FORBIDDEN, "user '" + h.origin().user() + "' may not send '"
                     + Header.abbreviate(h.body().trim()) + "' to " + address + " (" + d.because() + ")");
         }
-        RIPVServer.OperatorLock lock = server.locks().get(address.toString());
+        OperatorLock lock = server.locks().get(address.toString());
         if (lock != null && !lock.expired() && !lock.user().equals(h.origin().user())) {
             return error(request, sid, ErrorCode.MAILBOX_LOCKED, address + " is locked by " + lock.user() + " until "
                     + java.time.Instant.ofEpochMilli(lock.untilMillis()) + "; try later");
@@ -109,7 +112,7 @@ final class ServerTaskManager extends TaskManager<IncomingServerMessage, Outgoin
         Attachment attachment;
         try {
             attachment = attachmentFor(ref, h.body(), h.origin().user());
-        } catch (ServerCommands.SecurityRefusal e) {
+        } catch (SecurityRefusal e) {
             return error(request, sid, ErrorCode.FORBIDDEN, e.getMessage());
         } catch (FileTooLargeException e) {
             return error(request, sid, ErrorCode.TOO_LARGE, e.getMessage());
@@ -168,7 +171,7 @@ final class ServerTaskManager extends TaskManager<IncomingServerMessage, Outgoin
     }
 
     static OutgoingServerMessage error(IncomingServerMessage request, String id, ErrorCode code, String text) {
-        return request.reply(Footer.error(id, code, text).via(RIPVServer.SERVER_SERVICE));
+        return request.reply(Footer.error(id, code, text).via(ServerReplies.SERVICE));
     }
 
     @Override

@@ -18,6 +18,7 @@ import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.ServiceDescriptor;
 import org.ripv.messages.ServiceList;
 import org.ripv.naming.MailboxAddress;
+import org.ripv.server.requests.ServerReplies;
 import org.ripv.server.services.ServiceReference;
 import org.ripv.server.services.ServiceLiveness;
 
@@ -93,7 +94,7 @@ final class ServiceQueries {
                 }
             }
             server.reply(request.reply(Footer.ok(Ids.FID_MAILBOXES, all.size() + " mailbox(es)\n" + text.toString().stripTrailing(),
-                    new MailboxList(all)).via(RIPVServer.SERVER_SERVICE)));
+                    new MailboxList(all)).via(ServerReplies.SERVICE)));
         });
     }
 
@@ -134,7 +135,7 @@ final class ServiceQueries {
                 if (s.address().equals(address.toString())) {
                     MailboxStatus withLock = server.withLock(s);
                     server.reply(request.reply(Footer.ok(Ids.FID_STATUS, ServerCommands.describe(withLock), withLock)
-                            .via(RIPVServer.SERVER_SERVICE)));
+                            .via(ServerReplies.SERVICE)));
                     return;
                 }
             }
@@ -164,7 +165,7 @@ final class ServiceQueries {
                         .append(l.why()).append(l.refused() ? " (its registration; it keeps trying)" : " (removed until it registers again)");
             }
         }
-        return request.reply(Footer.ok(Ids.FID_SERVICES, b.toString(), new ServiceList(list)).via(RIPVServer.SERVER_SERVICE));
+        return request.reply(Footer.ok(Ids.FID_SERVICES, b.toString(), new ServiceList(list)).via(ServerReplies.SERVICE));
     }
 
     private String failure(ServiceReference ref, Throwable e) {

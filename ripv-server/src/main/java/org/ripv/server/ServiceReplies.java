@@ -14,6 +14,7 @@ import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.OutgoingServiceMessage;
 import org.ripv.messages.Result;
 import org.ripv.server.requests.PendingRequests;
+import org.ripv.server.requests.ServerReplies;
 import org.ripv.server.services.ServiceReference;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -45,7 +46,7 @@ final class ServiceReplies {
         f = store(server, f, folderOf(p.header().mailboxAddress()));
         f = server.cancels().judge(p, f);
         // Route by the header the server sent, never by what the service wrote back.
-        OutgoingServerMessage out = new IncomingServerMessage(p.header()).reply(f.via(RIPVServer.SERVER_SERVICE));
+        OutgoingServerMessage out = new IncomingServerMessage(p.header()).reply(f.via(ServerReplies.SERVICE));
         if (!server.dataLoop().downloaded(out, sent, server::reply)) { // DBA files go to the database first
             server.reply(out);
         }

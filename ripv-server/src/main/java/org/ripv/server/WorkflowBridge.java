@@ -4,6 +4,7 @@ import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.Header;
 import org.ripv.messages.IncomingServerMessage;
 import org.ripv.server.files.FileStore;
+import org.ripv.server.lock.OperatorLock;
 import org.ripv.server.permit.PermitFile;
 import org.ripv.server.services.ServiceReference;
 import org.ripv.server.workflow.WorkflowHost;
@@ -66,13 +67,13 @@ final class WorkflowBridge implements WorkflowHost {
 
     @Override
     public Lock lock(String mailbox) {
-        RIPVServer.OperatorLock l = server.locks().get(mailbox);
+        OperatorLock l = server.locks().get(mailbox);
         return l == null ? null : new Lock(l.user(), l.clientId(), l.untilMillis());
     }
 
     @Override
     public boolean lockForWorkflow(String mailbox, String user, String clientId, long untilMillis) {
-        RIPVServer.OperatorLock mine = new RIPVServer.OperatorLock(user, clientId, untilMillis);
+        OperatorLock mine = new OperatorLock(user, clientId, untilMillis);
         return server.locks().compute(mailbox, (k, old) -> old == null || old.expired() || old.clientId().equals(clientId)
                 ? mine : old) == mine;
     }

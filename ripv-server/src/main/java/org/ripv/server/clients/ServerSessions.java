@@ -8,12 +8,13 @@ import java.util.function.Function;
 import java.util.function.Supplier;
 import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.VehicleEvent;
-import org.ripv.server.RIPVServer;
 import org.ripv.server.SessionOptions;
 import org.ripv.server.handlers.SocketHandler;
+import org.ripv.server.lock.OperatorLock;
 import org.ripv.server.notify.Notifier;
 import org.ripv.server.notify.NotifyCommands;
 import org.ripv.server.permit.PermitFile;
+import org.ripv.server.requests.ServerReplies;
 import org.ripv.server.session.ConsoleCommands;
 import org.ripv.server.session.ConsoleHub;
 import org.ripv.server.session.Outlet;
@@ -41,8 +42,8 @@ public final class ServerSessions implements AutoCloseable {
                 options.notifyBackoff(), options.notifyTimeout(), options.webhooks());
         console.onEvent(notifier::accept);
         consoleCommands = new ConsoleCommands(console, permits, id -> clients.apply(id).map(ServerSessions::outlet),
-                RIPVServer.SERVER_SERVICE);
-        notifyCommands = new NotifyCommands(notifier, RIPVServer.SERVER_SERVICE);
+                ServerReplies.SERVICE);
+        notifyCommands = new NotifyCommands(notifier, ServerReplies.SERVICE);
     }
 
     private static Outlet outlet(SocketHandler h) {
@@ -65,13 +66,13 @@ public final class ServerSessions implements AutoCloseable {
     }
 
     /** Operator locks that run out are released with an event ({@link LockExpiries}). */
-    public void expireLocks(java.util.concurrent.ScheduledExecutorService timers, Map<String, RIPVServer.OperatorLock> locks,
+    public void expireLocks(java.util.concurrent.ScheduledExecutorService timers, Map<String, OperatorLock> locks,
                      java.util.function.Consumer<String> released) {
         lockExpiries = new LockExpiries(timers, locks, console, released);
     }
 
     /** An operator took or renewed the lock on a MailBox ({@code ?lock}). */
-    public void lockTaken(String mailbox, RIPVServer.OperatorLock lock) {
+    public void lockTaken(String mailbox, OperatorLock lock) {
         if (lockExpiries != null) {
             lockExpiries.taken(mailbox, lock);
         }
@@ -102,7 +103,7 @@ public final class ServerSessions implements AutoCloseable {
 
     /** A client left: its watches go, and its locks are released (an event each). */
     /** @return true when the client held operator locks (now released) */
-    public boolean clientClosed(String clientId, Map<String, RIPVServer.OperatorLock> locks) {
+    public boolean clientClosed(String clientId, Map<String, OperatorLock> locks) {
         console.clientClosed(clientId);
         return locks.entrySet().removeIf(e -> {
             boolean mine = e.getValue().clientId().equals(clientId);

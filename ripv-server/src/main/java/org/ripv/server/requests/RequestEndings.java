@@ -13,7 +13,6 @@ import org.ripv.messages.Ids;
 import org.ripv.messages.IncomingServerMessage;
 import org.ripv.messages.IncomingServiceMessage;
 import org.ripv.messages.OutgoingServerMessage;
-import org.ripv.server.RIPVServer;
 import org.ripv.server.services.ServiceReference;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -40,7 +39,7 @@ public final class RequestEndings {
     }
 
     private void error(Header h, String sid, ErrorCode code, String text) {
-        reply.accept(new IncomingServerMessage(h).reply(Footer.error(sid, code, text).via(RIPVServer.SERVER_SERVICE)));
+        reply.accept(new IncomingServerMessage(h).reply(Footer.error(sid, code, text).via(ServerReplies.SERVICE)));
     }
 
     /** A request whose call to its service failed. */
