@@ -16,6 +16,8 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
+import java.util.function.Supplier;
+import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.Footer;
 import org.ripv.messages.IncomingServerMessage;
@@ -27,11 +29,26 @@ import org.ripv.post.PostOffice;
 import org.ripv.rmi.GenericRMIInterface;
 import org.ripv.rmi.RmiSupport;
 import org.ripv.server.clients.ClientAcceptor;
+import org.ripv.server.clients.ClientDispatch;
 import org.ripv.server.clients.ServerSessions;
 import org.ripv.server.clients.WebClients;
+import org.ripv.server.commands.ServerCommands;
+import org.ripv.server.commands.ServiceQueries;
+import org.ripv.server.dataloop.DataLoop;
 import org.ripv.server.files.FileStore;
 import org.ripv.server.handlers.SocketHandler;
 import org.ripv.server.lock.OperatorLock;
+import org.ripv.server.remote.OutboundListener;
+import org.ripv.server.remote.ServerRemote;
+import org.ripv.server.requests.InternalCalls;
+import org.ripv.server.requests.RequestCancels;
+import org.ripv.server.requests.RequestForwarder;
+import org.ripv.server.requests.ServiceReplies;
+import org.ripv.server.routing.Admission;
+import org.ripv.server.routing.ServerTaskManager;
+import org.ripv.server.services.ServiceAdmission;
+import org.ripv.server.services.ServiceRegistry;
+import org.ripv.server.web.PublicVehicles;
 import org.ripv.server.web.WebConsole;
 import org.ripv.server.permit.PermitFile;
 import org.ripv.server.permit.PermitWatcher;
@@ -45,6 +62,8 @@ import org.ripv.server.services.ServiceLiveness;
 import org.ripv.server.services.ServiceReference;
 import org.ripv.server.services.ServiceSecret;
 import org.ripv.server.session.ConsoleHub;
+import org.ripv.server.workflow.WorkflowBridge;
+import org.ripv.server.workflow.Workflows;
 import org.ripv.wire.FrameCodec;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -70,8 +89,7 @@ public final class RIPVServer implements AutoCloseable {
 
     private final ServerConfig config;
     private final SessionOptions sessionOptions;
-    private final ClientDispatch dispatch = new ClientDispatch(this);
-    private final Map<String, ServiceReference> services = new ConcurrentHashMap<>();
+    private final ServiceRegistry services = new ServiceRegistry();
     private final Map<String, OperatorLock> locks = new ConcurrentHashMap<>();
     private final PostOffice<IncomingServerMessage, OutgoingServerMessage> postOffice = new PostOffice<>(200_000);
     private final ScheduledExecutorService timers;
@@ -82,9 +100,9 @@ public final class RIPVServer implements AutoCloseable {
     private final ExecutorService liveness;
     private final ServiceLiveness serviceLiveness;
     private final ExecutorService fileWork;
-    private final ServerRemote remote = new ServerRemote(this);
-    private final InternalCalls internalCalls = new InternalCalls(this);
-    private volatile org.ripv.server.dataloop.DataLoop dataLoop;
+    private ServerRemote remote;
+    private volatile InternalCalls internalCalls;
+    private ServiceAdmission admission;
 
     private PermitWatcher permits;
     private FileStore files;
@@ -103,12 +121,13 @@ public final class RIPVServer implements AutoCloseable {
     private ServerSecurity security;
     private RegistryGuard registryGuard;
     private ServerTls tls;
-    private org.ripv.server.workflow.Workflows workflows;
-    private final RequestCancels cancels = new RequestCancels(this);
+    private Workflows workflows;
     private OutboundListener outbound;
     private volatile boolean running;
     private ServerSessions sessions;
     private ServerState state;
+    private ClientDispatch dispatch;
+    private PublicVehicles publicVehicles;
 
     public RIPVServer(ServerConfig config) {
         this(config, SessionOptions.defaults());
@@ -155,23 +174,40 @@ public final class RIPVServer implements AutoCloseable {
         org.ripv.files.PrivateFiles.restrict(config.dataDir()); // the data directory is RIPV's alone (0700)
         state = ServerState.open(config, sessionOptions); // first: an unreachable database leaves nothing open
         permits = new PermitWatcher(config.permitFile());
+        Supplier<PermitFile> permitFile = permits::current;
         files = new FileStore(config.dataDir().resolve("upload"), config.dataDir().resolve("download"), config.maxUpload());
         secret = ServiceSecret.loadOrCreate(config.dataDir().resolve("service.secret"));
         codec = new FrameCodec(config.maxFrame());
         pending = new PendingRequests(timers, config.requestTimeout(), this::timedOut);
-        workflows = new org.ripv.server.workflow.Workflows(state.store(), new WorkflowBridge(this));
         endings = new RequestEndings(this::reply, pending, withdrawals, config.requestTimeout());
-        box = postOffice.open(POST_OFFICE, new ServerTaskManager(this));
         // A log-in looks at the file first (one stat): a user just added with ripv passwd can log in
         // at once, not only after the next periodic check.
         security = new ServerSecurity(config.security(), config.maxClients(), timers, () -> {
             permits.reloadIfChanged();
             return permits.current();
         }, () -> secret);
-        sessions = new ServerSessions(config.dataDir(), state.store(), sessionOptions, this::permits, this::client, codec);
+        sessions = new ServerSessions(config.dataDir(), state.store(), sessionOptions, permitFile, this::client, codec);
+        ConsoleHub console = sessions.console();
+        RequestForwarder forwarder = new RequestForwarder(pending, this::reply);
+        RequestCancels cancels = new RequestCancels(pending, services, permitFile, this::reply, console::serverEntry);
+        workflows = new Workflows(state.store(), new WorkflowBridge(this::deliver, console, files, services, checkers,
+                permitFile, locks, cancels));
         sessions.expireLocks(timers, locks, mailbox -> workflows.lockReleased(mailbox));
         permits.onChange(sessions::permitsChanged);
-        dataLoop = new org.ripv.server.dataloop.DataLoop(internalCalls, config.dataDir().resolve("ingest.properties"));
+        internalCalls = new InternalCalls(services, permitFile, files, forwarder);
+        DataLoop dataLoop = new DataLoop(internalCalls, config.dataDir().resolve("ingest.properties"));
+        admission = new ServiceAdmission(services, serviceLiveness, checkers, this::undeliverable, this::drop, this::serviceOnline);
+        remote = new ServerRemote(security.challenges(), admission, services,
+                new ServiceReplies(pending, cancels, files, dataLoop, this::reply), this::console);
+        ServiceQueries queries = new ServiceQueries(services, serviceLiveness, checkers, permitFile, locks, console, this::reply);
+        Admission admit = new Admission(Admission.steps(services, permitFile, locks, dataLoop, files, this::reply), forwarder);
+        ServerCommands commands = new ServerCommands(new ServerCommands.Parts(permitFile, files, services, queries, locks, sessions,
+                workflows, cancels, security.throttle(), state.audit(), state.store(), this::client), fileWork, checkers,
+                this::reply, admit::route);
+        box = postOffice.open(POST_OFFICE, new ServerTaskManager(commands::run, admit, workflows::reply, this::client, this::reply));
+        dispatch = new ClientDispatch(security.logins(), this::deliver, this::clientClosed);
+        publicVehicles = publicNames == null ? null : new PublicVehicles(
+                () -> queries.known().thenApply(ServiceQueries.Known::addresses), console, checkers, publicNames);
 
         InetAddress bind = config.bindAddress() == null ? null : InetAddress.getByName(config.bindAddress());
         try {
@@ -231,7 +267,7 @@ public final class RIPVServer implements AutoCloseable {
         }
         if (outbound == null) {
             InetAddress bind = config.bindAddress() == null ? null : InetAddress.getByName(config.bindAddress());
-            outbound = new OutboundListener(this, remote, bind, port);
+            outbound = new OutboundListener(secret, services, admission, this::drop, remote, bind, port);
             log.info("services behind NAT may connect out to port {} (--outbound-only)", outbound.port());
         }
         return outbound.port();
@@ -260,8 +296,7 @@ public final class RIPVServer implements AutoCloseable {
             }
         }
         writers.close();
-        services.values().forEach(ServiceReference::close);
-        services.clear();
+        services.closeAll();
         if (registry != null) {
             try {
                 registry.unbind(GenericRMIInterface.BINDING);
@@ -274,7 +309,9 @@ public final class RIPVServer implements AutoCloseable {
                 // not exported
             }
         }
-        RmiSupport.unexport(remote);
+        if (remote != null) {
+            RmiSupport.unexport(remote);
+        }
         if (workflows != null) {
             workflows.close();
         }
@@ -304,8 +341,8 @@ public final class RIPVServer implements AutoCloseable {
         WebConsole page = new WebConsole(new WebConsole.Options(new InetSocketAddress(bind, config.httpPort()),
                 files.uploadDir(), config.maxUpload(), config.clientJar(), this::describe, port(), security.webAccess(),
                 config.security().httpUpload(), tls.context(), new WebClients(() -> acceptor), codec, mapTiles));
-        if (publicNames != null) {
-            page.withPublicView(new PublicVehicles(this, publicNames));
+        if (publicVehicles != null) {
+            page.withPublicView(publicVehicles);
         }
         try {
             page.start();
@@ -324,7 +361,7 @@ public final class RIPVServer implements AutoCloseable {
         StringBuilder b = new StringBuilder("RIPVServer on " + org.ripv.naming.Handles.localHost() + "\n");
         b.append("Clients connect to port ").append(port()).append(tls.label())
                 .append(tls.fingerprint() == null ? "" : "; certificate " + tls.fingerprint()).append('\n');
-        List<ServiceReference> list = services();
+        List<ServiceReference> list = services.all();
         b.append(list.size()).append(" service(s) registered");
         list.forEach(r -> b.append("\n  ").append(r.descriptor().name()));
         return b.toString();
@@ -341,140 +378,55 @@ public final class RIPVServer implements AutoCloseable {
         }
     }
 
-    // ---- used by the TaskManager and commands (package-private) ----
-
-    ServerConfig config() {
-        return config;
-    }
-
-    PermitFile permits() {
-        return permits.current();
-    }
-
-    FileStore files() {
-        return files;
-    }
-
-    ExecutorService checkers() {
-        return checkers;
-    }
-
-    /** Where uploads, downloads and listings run, so that disk work never holds up the Post Office. */
-    ExecutorService fileWork() {
-        return fileWork;
-    }
-
-    Map<String, OperatorLock> locks() {
-        return locks;
-    }
-
-    ServerState state() {
-        return state;
-    }
-
-    ServerSessions sessions() {
-        return sessions;
-    }
-
     /** The live console: watchers, vehicle state, transcripts (tests and benchmarks look inside). */
     public ConsoleHub console() {
         return sessions.console();
     }
 
-    /** Forgets a client whose connection closed (only that handler: an id may be reused). */
-    void forgetClient(SocketHandler client) {
+    // ---- events that concern several parts: the lobby tells each ----
+
+    /** A client's connection closed: it is forgotten everywhere it left state (only that handler: an id may be reused). */
+    private void clientClosed(SocketHandler client) {
         ClientAcceptor a = acceptor;
         if (a != null) {
             a.forget(client);
         }
+        String id = client.clientId();
+        security.gate().closed(id);
+        pending.forgetClient(id);
+        files.abortAll(id);
+        if (sessions.clientClosed(id, locks)) {
+            workflows.lockReleased(null);
+        }
     }
 
-    Optional<SocketHandler> client(String clientId) {
+    private Optional<SocketHandler> client(String clientId) {
         ClientAcceptor a = acceptor;
         return a == null ? Optional.empty() : a.client(clientId);
     }
 
-    ServiceLiveness liveness() {
-        return serviceLiveness;
-    }
-
-    Map<String, ServiceReference> serviceMap() {
-        return services;
-    }
-
-    org.ripv.server.workflow.Workflows workflows() {
-        return workflows;
-    }
-
-    RequestCancels cancels() {
-        return cancels;
-    }
-
-    /** Puts a server-made request (a workflow step) into the Post Office like a client's; false when it is full. */
-    boolean deliver(IncomingServerMessage request) {
+    /** Puts a request into the Post Office (a client's, or a workflow step's); false when it is full. */
+    private boolean deliver(IncomingServerMessage request) {
         return box.deliver(request);
     }
 
-    /**
-     * SEAM for the live console (issue 11): a console entry the server itself originates — a
-     * workflow's progress line, WORKFLOW_DONE / WORKFLOW_FAILED — for watchers, the transcript and
-     * notifications. Until the fan-out is merged it is only logged.
-     */
-    void publishServerEntry(org.ripv.messages.ConsoleEntry entry) {
-        sessions.console().serverEntry(entry);
-    }
-
-    String secret() {
-        return secret;
-    }
-
-    ServerSecurity security() {
-        return security;
-    }
-
-    /** Automatic ingest and plots from data (org.ripv.server.dataloop). */
-    org.ripv.server.dataloop.DataLoop dataLoop() {
-        return dataLoop;
-    }
-
-    PendingRequests pending() {
-        return pending;
-    }
-
-    Optional<ServiceReference> service(String fullName) {
-        return Optional.ofNullable(services.get(fullName));
-    }
-
-    List<ServiceReference> services() {
-        return services.values().stream().sorted(java.util.Comparator.comparing(r -> r.descriptor().name())).toList();
-    }
-
     /** Posts a reply for the outbox assistant to deliver. */
-    void reply(OutgoingServerMessage reply) {
-        if (internalCalls.accept(reply)) {
+    private void reply(OutgoingServerMessage reply) {
+        InternalCalls own = internalCalls;
+        if (own != null && own.accept(reply)) {
             return; // the server's own request (org.ripv.server.dataloop)
         }
         box.post(reply);
     }
 
-    /** Forwards a checked request to its service; the request is now pending. */
-    void forward(ServiceReference ref, IncomingServiceMessage request) {
-        if (!pending.add(request.header(), ref.descriptor().name())) {
-            reply(new IncomingServerMessage(request.header()).reply(Footer.error(ref.descriptor().sid(),
-                    ErrorCode.BAD_REQUEST, "message id " + request.header().messageId() + " is already in use by a pending request")));
-            return;
-        }
-        ref.forward(request);
-    }
-
     /** A request that could not be handed to its service: fail it, and check whether the service lives. */
-    void undeliverable(ServiceReference ref, IncomingServiceMessage r, Exception e) {
+    private void undeliverable(ServiceReference ref, IncomingServiceMessage r, Exception e) {
         endings.undeliverable(ref, r, e);
         serviceLiveness.soon(ref);
     }
 
     private void timedOut(PendingRequests.Pending p) {
-        endings.timedOut(p, services.get(p.service()));
+        endings.timedOut(p, services.find(p.service()).orElse(null));
     }
 
     private void checkServices() {
@@ -483,7 +435,8 @@ public final class RIPVServer implements AutoCloseable {
         permits.reloadIfChanged();
     }
 
-    void drop(ServiceReference ref, String why) {
+    /** A service went away or registered again: its calls end, then its requests. */
+    private void drop(ServiceReference ref, String why) {
         // The calls end first, so a workflow step under way is cut (it resumes on the next call)
         // rather than failed by the request ending below.
         String name = ref.descriptor().name();
@@ -492,24 +445,27 @@ public final class RIPVServer implements AutoCloseable {
     }
 
     /**
+     * A service that just registered listed its MailBoxes: a new instance cannot carry on a call
+     * from before it started, so those calls end; the queued workflows of calls still open run now;
+     * download folders from before they were per address move to each MailBox's own.
+     */
+    private void serviceOnline(String name, long started, List<String> boxes) {
+        workflows.onConsole(name, sessions.console().serviceStarted(name, started, boxes));
+        workflows.serviceOnline(boxes);
+        files.adoptAll(boxes);
+    }
+
+    /**
      * Console entries a service published for its MailBoxes (the live console). Only entries for
      * the calling service's own MailBoxes are taken.
      */
-    void console(ServiceReference ref, List<org.ripv.messages.ConsoleEntry> entries) {
+    private void console(ServiceReference ref, List<ConsoleEntry> entries) {
         sessions.console().publish(ref.descriptor().name(), entries);
         workflows.onConsole(ref.descriptor().name(), entries);
         // Answer only once they are stored: the service offers what a server did not take to the
         // next one (restarted, or a standby), so a server that dies now loses no transcript line.
         sessions.console().sync();
     }
-
-    /** Current MailBox status with the operator lock and the vehicle's call state added. */
-    MailboxStatus withLock(MailboxStatus s) {
-        OperatorLock l = locks.get(s.address());
-        MailboxStatus withState = s.withSession(sessions.console().state(s.address()));
-        return l == null || l.expired() ? withState : withState.withLock(l.user());
-    }
-
 
     /** The client port (useful with port 0). */
     public int port() {

@@ -16,6 +16,7 @@ import java.util.concurrent.CountDownLatch;
 import javax.net.ssl.SSLContext;
 import org.ripv.server.permit.Passwords;
 import org.ripv.server.permit.PermitFile;
+import org.ripv.server.web.PublicVehicles;
 import org.ripv.service.ServiceOptions;
 import org.ripv.launch.Launchers;
 import picocli.CommandLine;

@@ -475,6 +475,17 @@ public final class FileStore {
         }
     }
 
+    /** {@link #adopt} for each MailBox a service lists as it registers; a folder that cannot be made is logged, not fatal. */
+    public void adoptAll(List<String> mailboxes) {
+        for (String mb : mailboxes) {
+            try {
+                adopt(mb);
+            } catch (IOException | RuntimeException e) {
+                org.slf4j.LoggerFactory.getLogger(FileStore.class).warn("could not make the download folder of {}: {}", mb, e.toString());
+            }
+        }
+    }
+
     /**
      * The MailBox's folder, made if need be and marked with its address. A folder from before
      * folders were per address ({@code download/HANDLE/}, no mark) is moved here the first time

@@ -30,7 +30,7 @@ public final class ServiceLiveness {
     /** A service removed for failing its checks (or refused at registration: {@code refused}), and why. */
     public record Lost(String why, Instant when, boolean refused) {}
 
-    private final Map<String, ServiceReference> services;
+    private final ServiceRegistry services;
     private final ExecutorService checks;
     private final ExecutorService queries;
     private final ScheduledExecutorService timers;
@@ -39,7 +39,7 @@ public final class ServiceLiveness {
     private final BiConsumer<ServiceReference, String> drop;
     private final Map<String, Lost> lost = new ConcurrentHashMap<>();
 
-    public ServiceLiveness(Map<String, ServiceReference> services, ExecutorService checks, ExecutorService queries,
+    public ServiceLiveness(ServiceRegistry services, ExecutorService checks, ExecutorService queries,
                     ScheduledExecutorService timers, Duration interval, BiConsumer<ServiceReference, String> drop) {
         this.services = services;
         this.checks = checks;
@@ -54,7 +54,7 @@ public final class ServiceLiveness {
 
     /** Checks every registered service (the server's timer calls this each interval). */
     public void checkAll() {
-        for (ServiceReference ref : services.values()) {
+        for (ServiceReference ref : services.all()) {
             soon(ref);
         }
     }
@@ -77,7 +77,7 @@ public final class ServiceLiveness {
 
     /** A registration refused because the server cannot call the service back: {@code ?services} says so. */
     public void refused(String name, String why) {
-        if (!services.containsKey(name)) {
+        if (!services.isListed(name)) {
             lost.put(name, new Lost(why, Instant.now(), true));
         }
     }
@@ -115,7 +115,7 @@ public final class ServiceLiveness {
     private void failed(ServiceReference ref) {
         int failures = ref.failedChecks.incrementAndGet();
         String why = ref.problem();
-        if (failures >= FAILED_CHECKS_TO_REMOVE && services.remove(ref.descriptor().name(), ref)) {
+        if (failures >= FAILED_CHECKS_TO_REMOVE && services.remove(ref)) {
             log.warn("{} is gone: {}; removed it from the service list", ref, why);
             lost.put(ref.descriptor().name(), new Lost(why, Instant.now(), false));
             drop.accept(ref, "went away (" + why + ")");

@@ -21,7 +21,6 @@ import org.ripv.messages.MailboxStatus;
 import org.ripv.messages.ServiceDescriptor;
 import org.ripv.naming.ServiceName;
 import org.ripv.rmi.GenericRMIInterface;
-import org.ripv.server.requests.PendingRequests;
 
 /**
  * The server's handle on one registered service (thesis: ServiceReference): its descriptor,
@@ -124,13 +123,13 @@ public final class ServiceReference {
             onFailure.failed(this, request, new java.rmi.ConnectException(problem));
             return;
         }
-        undelivered.add(PendingRequests.key(request.header()));
+        undelivered.add(request.header().requestKey());
         queue.add(request);
     }
 
     /** True while the request has not reached the service (queued here, or in a call under way). */
     public boolean undelivered(Header h) {
-        return undelivered.contains(PendingRequests.key(h));
+        return undelivered.contains(h.requestKey());
     }
 
     private void sendLoop() {
@@ -150,11 +149,11 @@ public final class ServiceReference {
                     stub.serviceRequests(token, List.copyOf(batch));
                 }
                 callingSince = 0;
-                batch.forEach(r -> undelivered.remove(PendingRequests.key(r.header())));
+                batch.forEach(r -> undelivered.remove(r.header().requestKey()));
                 healthy();
             } catch (RemoteException | RuntimeException e) {
                 callingSince = 0;
-                batch.forEach(r -> undelivered.remove(PendingRequests.key(r.header())));
+                batch.forEach(r -> undelivered.remove(r.header().requestKey()));
                 trouble(e);
                 batch.forEach(r -> onFailure.failed(this, r, e));
             }
@@ -162,7 +161,7 @@ public final class ServiceReference {
         }
         List<IncomingServiceMessage> left = new ArrayList<>();
         queue.drainTo(left);
-        left.forEach(r -> undelivered.remove(PendingRequests.key(r.header())));
+        left.forEach(r -> undelivered.remove(r.header().requestKey()));
         left.forEach(r -> onFailure.failed(this, r, new RemoteException(descriptor.name() + " is no longer registered")));
     }
 
@@ -171,7 +170,7 @@ public final class ServiceReference {
         boolean removed = queue.removeIf(r -> r.header().messageId() == h.messageId()
                 && r.header().origin().clientId().equals(h.origin().clientId()));
         if (removed) {
-            undelivered.remove(PendingRequests.key(h));
+            undelivered.remove(h.requestKey());
         }
         return removed;
     }
@@ -258,7 +257,7 @@ public final class ServiceReference {
             List<IncomingServiceMessage> waiting = new ArrayList<>();
             queue.drainTo(waiting);
             for (IncomingServiceMessage r : waiting) {
-                undelivered.remove(PendingRequests.key(r.header()));
+                undelivered.remove(r.header().requestKey());
                 onFailure.failed(this, r, new java.rmi.ConnectException(why));
             }
         }

@@ -1,4 +1,4 @@
-package org.ripv.server;
+package org.ripv.server.commands;
 
 import java.io.IOException;
 import java.nio.file.NoSuchFileException;
@@ -6,6 +6,10 @@ import java.time.Instant;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.concurrent.Executor;
+import java.util.function.Consumer;
+import java.util.function.Function;
+import java.util.function.Supplier;
 import org.ripv.commands.SingleLineCommand;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.FileData;
@@ -17,24 +21,35 @@ import org.ripv.messages.MailboxStatus;
 import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.SessionInfo;
 import org.ripv.naming.MailboxAddress;
+import org.ripv.server.clients.ServerSessions;
+import org.ripv.server.files.DownloadRights;
 import org.ripv.server.files.FileExistsException;
 import org.ripv.server.files.FileStore;
 import org.ripv.server.files.UploadMode;
 import org.ripv.server.files.FileTooLargeException;
+import org.ripv.server.handlers.SocketHandler;
 import org.ripv.server.lock.OperatorLock;
 import org.ripv.server.permit.PermitFile;
 import org.ripv.server.permit.SecurityRefusal;
+import org.ripv.server.requests.RequestCancels;
 import org.ripv.server.requests.ServerReplies;
+import org.ripv.server.security.LoginThrottle;
 import org.ripv.server.security.SecurityCommands;
+import org.ripv.server.services.ServiceRegistry;
+import org.ripv.server.session.ConsoleHub;
+import org.ripv.server.store.AuditCommand;
+import org.ripv.server.store.AuditTrail;
+import org.ripv.server.store.StateStore;
 import org.ripv.server.vehicles.MailboxArgument;
 import org.ripv.server.vehicles.VehicleNames;
+import org.ripv.server.workflow.Workflows;
 
 /**
  * The server's own {@code ?} commands (Appendix B and docs/protocol.md). Each reply carries the
  * command's FID. Commands that must ask services ({@code ?mailboxes}, {@code ?status}) run off
  * the Post Office's thread so that a slow service cannot hold up everyone else.
  */
-final class ServerCommands {
+public final class ServerCommands {
     static final long MAX_DOWNLOAD_CHUNK = 1024 * 1024;
     static final long MAX_LOCK_SECONDS = 3600;
 
@@ -75,16 +90,55 @@ final class ServerCommands {
         COMMANDS.put("?logout", new Command(Ids.FID_LOGOUT, "?logout", "end the session and close the connection"));
     }
 
-    private final RIPVServer server;
-
+    private final Supplier<PermitFile> permits;
+    private final FileStore files;
+    private final ServiceRegistry services;
     private final ServiceQueries queries;
+    private final Map<String, OperatorLock> locks;
+    private final ConsoleHub console;
+    private final ServerSessions sessions;
+    private final Workflows workflows;
+    private final RequestCancels cancels;
+    private final LoginThrottle throttle;
+    private final AuditTrail audit;
+    private final StateStore store;
+    private final Function<String, Optional<SocketHandler>> clients;
+    private final Executor fileWork;
+    private final Executor checkers;
+    private final Consumer<OutgoingServerMessage> outbox;
     /** Sends a request on to its MailBox's service as a client's command goes (checks included); a refusal, or null. */
-    private final java.util.function.Function<IncomingServerMessage, OutgoingServerMessage> route;
+    private final Function<IncomingServerMessage, OutgoingServerMessage> route;
 
-    ServerCommands(RIPVServer server, java.util.function.Function<IncomingServerMessage, OutgoingServerMessage> route) {
-        this.server = server;
+    /** The parts the server's own commands read and change. */
+    public record Parts(Supplier<PermitFile> permits, FileStore files, ServiceRegistry services, ServiceQueries queries,
+                       Map<String, OperatorLock> locks, ServerSessions sessions, Workflows workflows, RequestCancels cancels,
+                       LoginThrottle throttle, AuditTrail audit, StateStore store, Function<String, Optional<SocketHandler>> clients) {}
+
+    /**
+     * @param fileWork where commands that touch the disk run
+     * @param checkers where commands that call services run
+     * @param outbox   where the replies go (the Post Office's outbox)
+     * @param route    forwards a request as a client's goes (for {@code ?key})
+     */
+    public ServerCommands(Parts parts, Executor fileWork, Executor checkers, Consumer<OutgoingServerMessage> outbox,
+                          Function<IncomingServerMessage, OutgoingServerMessage> route) {
+        this.permits = parts.permits();
+        this.files = parts.files();
+        this.services = parts.services();
+        this.queries = parts.queries();
+        this.locks = parts.locks();
+        this.sessions = parts.sessions();
+        this.console = parts.sessions().console();
+        this.workflows = parts.workflows();
+        this.cancels = parts.cancels();
+        this.throttle = parts.throttle();
+        this.audit = parts.audit();
+        this.store = parts.store();
+        this.clients = parts.clients();
+        this.fileWork = fileWork;
+        this.checkers = checkers;
+        this.outbox = outbox;
         this.route = route;
-        this.queries = new ServiceQueries(server);
     }
 
     /** Commands that touch the disk: they run on the file workers, not on the Post Office's thread. */
@@ -92,11 +146,11 @@ final class ServerCommands {
             "?dlfiles", "?ulfiles", "?delete", "?queue", "?receipts", "?history", "?notify", "?audit");
 
     /** Runs one {@code ?} command; its reply (or replies) go to the Post Office's outbox. */
-    void run(IncomingServerMessage request) {
+    public void run(IncomingServerMessage request) {
         try {
             SingleLineCommand.check(request.header().body(), SingleLineCommand.SERVER_MAX);
         } catch (IllegalArgumentException e) {
-            server.reply(ServerTaskManager.error(request, Ids.FID_NONE, ErrorCode.BAD_REQUEST, e.getMessage()));
+            outbox.accept(ServerReplies.error(request, Ids.FID_NONE, ErrorCode.BAD_REQUEST, e.getMessage()));
             return;
         }
         String body = request.header().body().trim();
@@ -104,7 +158,7 @@ final class ServerCommands {
         String word = w[0].toLowerCase(java.util.Locale.ROOT);
         Command c = COMMANDS.get(word);
         if (c == null) {
-            server.reply(ServerTaskManager.error(request, Ids.FID_NONE, ErrorCode.UNKNOWN_COMMAND,
+            outbox.accept(ServerReplies.error(request, Ids.FID_NONE, ErrorCode.UNKNOWN_COMMAND,
                     "unknown server command '" + w[0] + "'; ?help lists them"));
             return;
         }
@@ -116,7 +170,7 @@ final class ServerCommands {
                     VehicleNames.Resolution r = VehicleNames.resolve(w[at], known.addresses(), known.notAnswering());
                     String why = !r.resolved() ? r.error() : word.equals("?watch") ? unheardOf(r.address(), known) : null;
                     if (why != null) {
-                        server.reply(ServerTaskManager.error(request, c.fid(), ErrorCode.UNKNOWN_MAILBOX, why));
+                        outbox.accept(ServerReplies.error(request, c.fid(), ErrorCode.UNKNOWN_MAILBOX, why));
                     } else if (r.address().equals(w[at])) {
                         dispatch(request, c, w, word);
                     } else {
@@ -125,7 +179,7 @@ final class ServerCommands {
                     }
                 } catch (RuntimeException x) {
                     // off the Post Office's thread nothing else would answer: the client must not wait for ever
-                    server.reply(ServerTaskManager.error(request, c.fid(), ErrorCode.INTERNAL, c.usage() + " failed: " + x));
+                    outbox.accept(ServerReplies.error(request, c.fid(), ErrorCode.INTERNAL, c.usage() + " failed: " + x));
                 }
             });
             return;
@@ -135,7 +189,7 @@ final class ServerCommands {
 
     private void dispatch(IncomingServerMessage request, Command c, String[] w, String word) {
         if (FILE_WORK.contains(word)) {
-            server.fileWork().execute(() -> runNow(request, c, w));
+            fileWork.execute(() -> runNow(request, c, w));
         } else {
             runNow(request, c, w);
         }
@@ -146,11 +200,11 @@ final class ServerCommands {
      * has never heard from it (a MailBox of a service that is down now can still be watched).
      */
     private String unheardOf(String address, ServiceQueries.Known known) {
-        if (known.addresses().contains(address) || server.console().state(address) != null) {
+        if (known.addresses().contains(address) || console.state(address) != null) {
             return null;
         }
         String service = MailboxAddress.parse(address).service().toString();
-        return "no MailBox " + address + (server.service(service).isPresent() ? ": " + service + " does not list it"
+        return "no MailBox " + address + (services.find(service).isPresent() ? ": " + service + " does not list it"
                 : ": no service " + service + " is registered") + " and nothing was ever heard from it; "
                 + VehicleNames.whatThereIs(known.addresses(), known.notAnswering());
     }
@@ -166,27 +220,26 @@ final class ServerCommands {
         try {
             OutgoingServerMessage reply = execute(request, c, w);
             if (reply != null) {
-                server.reply(reply);
+                outbox.accept(reply);
             }
         } catch (FileTooLargeException e) {
-            server.reply(ServerTaskManager.error(request, c.fid(), ErrorCode.TOO_LARGE, e.getMessage()));
+            outbox.accept(ServerReplies.error(request, c.fid(), ErrorCode.TOO_LARGE, e.getMessage()));
         } catch (NoSuchFileException e) {
-            server.reply(ServerTaskManager.error(request, c.fid(), ErrorCode.BAD_FILE_NAME, e.getMessage()));
+            outbox.accept(ServerReplies.error(request, c.fid(), ErrorCode.BAD_FILE_NAME, e.getMessage()));
         } catch (FileExistsException e) {
-            server.reply(ServerTaskManager.error(request, c.fid(), ErrorCode.FILE_EXISTS, e.getMessage()));
+            outbox.accept(ServerReplies.error(request, c.fid(), ErrorCode.FILE_EXISTS, e.getMessage()));
         } catch (SecurityRefusal e) {
-            server.reply(ServerTaskManager.error(request, c.fid(), ErrorCode.FORBIDDEN, e.getMessage()));
+            outbox.accept(ServerReplies.error(request, c.fid(), ErrorCode.FORBIDDEN, e.getMessage()));
         } catch (IllegalArgumentException e) {
-            server.reply(ServerTaskManager.error(request, c.fid(), ErrorCode.BAD_REQUEST, e.getMessage()));
+            outbox.accept(ServerReplies.error(request, c.fid(), ErrorCode.BAD_REQUEST, e.getMessage()));
         } catch (IOException e) {
-            server.reply(ServerTaskManager.error(request, c.fid(), ErrorCode.INTERNAL, c.usage() + " failed: " + e.getMessage()));
+            outbox.accept(ServerReplies.error(request, c.fid(), ErrorCode.INTERNAL, c.usage() + " failed: " + e.getMessage()));
         }
     }
 
     private OutgoingServerMessage execute(IncomingServerMessage request, Command c, String[] w) throws IOException {
         String user = request.header().origin().user();
-        FileStore files = server.files();
-        switch (w[0].toLowerCase(java.util.Locale.ROOT)) {
+                switch (w[0].toLowerCase(java.util.Locale.ROOT)) {
             case "?help": {
                 StringBuilder b = new StringBuilder("Server commands:\n");
                 COMMANDS.forEach((k, v) -> b.append(String.format("  %-32s %s  [FID %s]%n", v.usage(), v.help(), v.fid())));
@@ -199,7 +252,7 @@ final class ServerCommands {
                 return ok(request, c, user + " on client " + request.header().origin().clientId() + " " + request.header().roles(),
                         new SessionInfo(request.header().origin().clientId(), user, request.header().roles(), "RIPVServer"));
             case "?logout":
-                server.client(request.header().origin().clientId()).ifPresent(h -> {
+                clients.apply(request.header().origin().clientId()).ifPresent(h -> {
                     h.send(ok(request, c, "goodbye", null));
                     h.close();
                 });
@@ -242,7 +295,7 @@ final class ServerCommands {
                 UploadMode mode = UploadMode.parse(w.length == 5 ? w[4] : null);
                 if (mode == UploadMode.REPLACE) {
                     // replacing is a right of its own (docs/permit.md): '?replace NAME' for RIPVServer
-                    PermitFile.Decision d = server.permits().decide(u, ServerReplies.SERVICE, "", "?replace " + w[1]);
+                    PermitFile.Decision d = permits.get().decide(u, ServerReplies.SERVICE, "", "?replace " + w[1]);
                     if (!d.allowed()) {
                         throw new SecurityRefusal("user '" + user + "' may not replace files in the upload directory ("
                                 + d.because() + "); upload with 'keep' to store it under a new name");
@@ -252,7 +305,7 @@ final class ServerCommands {
                     toVehicleRight(u, user, w[1]);
                 }
                 FileStore.ChunkResult r = files.uploadChunk(request.header().origin().clientId(), user, w[1], offset, total,
-                        request.header().attachment().data(), mode, server.permits().quota(u));
+                        request.header().attachment().data(), mode, permits.get().quota(u));
                 String text;
                 if (!r.complete()) {
                     text = "received " + r.received() + " of " + r.total() + " bytes of " + w[1];
@@ -275,7 +328,7 @@ final class ServerCommands {
                 if (w.length != 4) {
                     throw new IllegalArgumentException("usage: " + c.usage());
                 }
-                DownloadRights.check(files, server.permits(), user, w[1]);
+                DownloadRights.check(files, permits.get(), user, w[1]);
                 long offset = number(w[2], "OFFSET");
                 int length = (int) Math.min(MAX_DOWNLOAD_CHUNK, number(w[3], "LENGTH"));
                 Object[] chunk = files.readDownload(w[1], offset, length);
@@ -285,13 +338,13 @@ final class ServerCommands {
                         new FileData(w[1], offset, total, data));
             }
             case "?queue":
-                return server.workflows().queueCommand(request);
+                return workflows.queueCommand(request);
             case "?receipts":
-                return server.workflows().receiptsCommand(request);
+                return workflows.receiptsCommand(request);
             case "?key":
                 return key(request, w);
             case "?cancel":
-                server.checkers().execute(() -> server.reply(server.cancels().command(request)));
+                checkers.execute(() -> outbox.accept(cancels.command(request)));
                 return null;
             case "?lock": {
                 permit(request, c);
@@ -302,57 +355,45 @@ final class ServerCommands {
                 }
                 OperatorLock mine = new OperatorLock(user, request.header().origin().clientId(),
                         System.currentTimeMillis() + seconds * 1000);
-                OperatorLock now = server.locks().compute(address.toString(),
+                OperatorLock now = locks.compute(address.toString(),
                         (k, old) -> old == null || old.expired() || old.user().equals(user)
-                                || org.ripv.server.workflow.Workflows.isWorkflowClient(old.clientId()) ? mine : old);
+                                || Workflows.isWorkflowClient(old.clientId()) ? mine : old);
                 if (now != mine) {
-                    return ServerTaskManager.error(request, c.fid(), ErrorCode.MAILBOX_LOCKED,
+                    return ServerReplies.error(request, c.fid(), ErrorCode.MAILBOX_LOCKED,
                             address + " is locked by " + now.user() + " until " + Instant.ofEpochMilli(now.untilMillis()));
                 }
-                server.console().serverEvent(address.toString(), org.ripv.messages.VehicleEvent.LOCK_TAKEN, user,
+                console.serverEvent(address.toString(), org.ripv.messages.VehicleEvent.LOCK_TAKEN, user,
                         "until " + Instant.ofEpochMilli(mine.untilMillis()));
-                server.sessions().lockTaken(address.toString(), mine);
+                sessions.lockTaken(address.toString(), mine);
                 return ok(request, c, address + " locked by " + user + " until " + Instant.ofEpochMilli(mine.untilMillis()), null);
             }
             case "?unlock": {
                 permit(request, c);
                 MailboxAddress address = MailboxAddress.parse(arg(w, 1, c));
-                OperatorLock l = server.locks().get(address.toString());
+                OperatorLock l = locks.get(address.toString());
                 if (l != null && !l.expired() && !l.user().equals(user)) {
-                    return ServerTaskManager.error(request, c.fid(), ErrorCode.MAILBOX_LOCKED,
+                    return ServerReplies.error(request, c.fid(), ErrorCode.MAILBOX_LOCKED,
                             address + " is locked by " + l.user() + ", not by you");
                 }
-                if (server.locks().remove(address.toString()) != null && l != null && !l.expired()) {
-                    server.console().serverEvent(address.toString(), org.ripv.messages.VehicleEvent.LOCK_RELEASED, user, "");
+                if (locks.remove(address.toString()) != null && l != null && !l.expired()) {
+                    console.serverEvent(address.toString(), org.ripv.messages.VehicleEvent.LOCK_RELEASED, user, "");
                 }
-                server.workflows().lockReleased(address.toString());
+                workflows.lockReleased(address.toString());
                 return ok(request, c, address + " unlocked", null);
             }
             case "?logins", "?unlock-login":
                 permit(request, c);
-                return SecurityCommands.run(request, c.fid(), w, server.security().throttle());
+                return SecurityCommands.run(request, c.fid(), w, throttle);
             case "?audit":
                 permit(request, c);
-                return org.ripv.server.store.AuditCommand.run(request, c.fid(), w, server.state().audit(), server.state().store());
+                return AuditCommand.run(request, c.fid(), w, audit, store);
             case "?watch", "?unwatch", "?history":
-                return server.sessions().consoleCommands().run(request, c.fid(), w);
+                return sessions.consoleCommands().run(request, c.fid(), w);
             case "?notify":
-                return server.sessions().notifyCommands().run(request, c.fid(), w);
+                return sessions.notifyCommands().run(request, c.fid(), w);
             default:
                 throw new IllegalStateException("no handler for " + w[0]);
         }
-    }
-
-    static String describe(MailboxStatus s) {
-        if (ServiceQueries.HIDDEN.equals(s.detail())) {
-            return s.address() + ": " + s.detail();
-        }
-        String what = !s.running().isEmpty() ? "busy: " + s.running()
-                : (s.available() ? "available" : "not available") + (s.busy() ? ", busy" : "");
-        return s.address() + ": " + what
-                + (s.lockedBy().isEmpty() ? "" : ", locked by " + s.lockedBy())
-                + (s.detail().isEmpty() ? "" : " (" + s.detail() + ")")
-                + (s.session() == null ? "" : "; vehicle " + org.ripv.server.session.ConsoleCommands.describeState(s.session()));
     }
 
     /**
@@ -370,12 +411,12 @@ final class ServerCommands {
      */
     private void toVehicleRight(PermitFile.User u, String user, String name) {
         org.ripv.server.files.ToVehicleFolder.Name n = org.ripv.server.files.ToVehicleFolder.parse(name);
-        PermitFile.Decision d = server.permits().decide(u, ServerReplies.SERVICE, "", "?to-vehicle " + n.folder());
+        PermitFile.Decision d = permits.get().decide(u, ServerReplies.SERVICE, "", "?to-vehicle " + n.folder());
         if (!d.allowed()) {
             throw new SecurityRefusal("user '" + user + "' may not put files for a vehicle in to-vehicle/" + n.folder() + " ("
                     + d.because() + "); that takes the right '?to-vehicle " + n.folder() + "' for RIPVServer");
         }
-        if (!server.files().isMailboxFolder(n.folder())) {
+        if (!files.isMailboxFolder(n.folder())) {
             throw new IllegalArgumentException("no MailBox has the folder '" + n.folder() + "'; give the vehicle's folder"
                     + " as ?dlfiles names it (HANDLE@HOST@SERVICE)");
         }
@@ -383,9 +424,9 @@ final class ServerCommands {
 
     private PermitFile.User permit(IncomingServerMessage request, Command c) {
         String user = request.header().origin().user();
-        PermitFile.User u = server.permits().user(user).orElseThrow(
+        PermitFile.User u = permits.get().user(user).orElseThrow(
                 () -> new SecurityRefusal("user '" + user + "' is no longer in the permit file"));
-        PermitFile.Decision d = server.permits().decide(u, ServerReplies.SERVICE, "", request.header().body());
+        PermitFile.Decision d = permits.get().decide(u, ServerReplies.SERVICE, "", request.header().body());
         if (!d.allowed()) {
             throw new SecurityRefusal("user '" + user + "' may not use " + c.usage().split(" ")[0] + " (" + d.because() + ")");
         }

@@ -1,8 +1,7 @@
-package org.ripv.server;
+package org.ripv.server.files;
 
 import java.io.IOException;
 import java.util.Optional;
-import org.ripv.server.files.FileStore;
 import org.ripv.server.permit.PermitFile;
 import org.ripv.server.permit.SecurityRefusal;
 import org.ripv.server.session.Rights;
@@ -15,7 +14,7 @@ import org.ripv.server.session.Rights;
  * DataVisServer only attached another vehicle's download). Loose files, and folders not yet
  * claimed by a MailBox since the upgrade, need the {@code ?download} gate only.
  */
-final class DownloadRights {
+public final class DownloadRights {
     private DownloadRights() {}
 
     /**
@@ -23,7 +22,7 @@ final class DownloadRights {
      *
      * @throws SecurityRefusal quoting the file, its MailBox and the rule that decided
      */
-    static void check(FileStore files, PermitFile permits, String user, String name) throws IOException {
+    public static void check(FileStore files, PermitFile permits, String user, String name) throws IOException {
         Optional<String> mailbox = files.mailboxOf(name);
         if (mailbox.isEmpty()) {
             return;
