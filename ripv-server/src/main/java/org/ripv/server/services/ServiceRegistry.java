@@ -35,11 +35,11 @@ public final class ServiceRegistry {
     }
 
     /**
-     * Lists {@code ref} under its name unless {@code keepOld} says the one listed now stays.
+     * Lists {@code ref} under its name; where one is listed already, {@code choose(old, ref)} says which stays.
      *
      * @return the reference in force afterwards, and the one it replaced (or null)
      */
-    Replacement put(ServiceReference ref, BinaryOperator<ServiceReference> choose) {
+    public Replacement put(ServiceReference ref, BinaryOperator<ServiceReference> choose) {
         ServiceReference[] replaced = new ServiceReference[1];
         ServiceReference now = services.compute(ref.descriptor().name(), (name, old) -> {
             ServiceReference kept = old == null ? ref : choose.apply(old, ref);
@@ -49,7 +49,8 @@ public final class ServiceRegistry {
         return new Replacement(now, replaced[0]);
     }
 
-    record Replacement(ServiceReference now, ServiceReference replaced) {}
+    /** The reference in force after {@link #put}, and the one it replaced (or null). */
+    public record Replacement(ServiceReference now, ServiceReference replaced) {}
 
     /** Removes this very reference (not a newer registration of the same name); true when it was listed. */
     public boolean remove(ServiceReference ref) {
