@@ -86,7 +86,7 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
                 c.received(new IncomingServerMessage(chunk == null ? h : h.withAttachment(chunk)));
             }
         } catch (IOException | IllegalArgumentException e) {
-            sendText("{\"type\":\"error\",\"text\":" + quote("could not send: " + e.getMessage()) + "}", null);
+            sendText(error("could not send: " + e.getMessage()), null);
         }
     }
 
@@ -194,11 +194,12 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
         }
     }
 
-    private static String quote(String s) {
+    /** What a page is told when its message could not be sent: {@code {"type":"error","text":...}}. */
+    private static String error(String text) {
         try {
-            return JSON.writeValueAsString(s);
+            return JSON.writeValueAsString(JSON.createObjectNode().put("type", "error").put("text", text));
         } catch (com.fasterxml.jackson.core.JsonProcessingException e) {
-            return "\"\"";
+            throw new IllegalStateException("an error could not be written as JSON", e);
         }
     }
 

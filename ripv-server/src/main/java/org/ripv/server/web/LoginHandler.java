@@ -145,7 +145,7 @@ final class LoginHandler extends Handler.Abstract {
     private void session(Request request, Response response, Callback callback) throws Exception {
         Session s = sessions.find(request);
         if (s == null) {
-            Pages.send(response, callback, 401, "application/json", "{\"error\":\"log in first\"}");
+            Pages.send(response, callback, 401, "application/json", json.writeValueAsString(Map.of("error", "log in first")));
             return;
         }
         Map<String, Object> m = new LinkedHashMap<>(pageSettings);
