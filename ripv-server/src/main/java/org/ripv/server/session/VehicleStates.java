@@ -124,7 +124,7 @@ final class VehicleStates {
             if (v.recent.size() > RECENT) {
                 v.recent.removeFirst();
             }
-            if (isContact(e)) {
+            if (e.isContact()) {
                 v.lastContact = Math.max(v.lastContact, e.time());
             }
             if (e.lat() != null && e.lon() != null && Double.isFinite(e.lat()) && Double.isFinite(e.lon())
@@ -134,14 +134,11 @@ final class VehicleStates {
             }
             if (e.kind() == ConsoleEntry.Kind.EVENT) {
                 v.lastEvent = e.event();
-                switch (e.event()) {
-                    case SURFACED -> {
-                        v.state = State.ON_CALL;
-                        v.calls++;
-                    }
-                    case DIVED -> v.state = State.DIVED;
-                    case LINK_LOST -> v.state = State.LOST;
-                    default -> { }
+                if (e.event().callState() != null) {
+                    v.state = e.event().callState();
+                }
+                if (e.event().startsCall()) {
+                    v.calls++;
                 }
                 save = true;
             }
@@ -150,17 +147,6 @@ final class VehicleStates {
             save(e.mailbox(), v);
         }
         return save;
-    }
-
-    private static boolean isContact(ConsoleEntry e) {
-        return switch (e.kind()) {
-            case LINE, TRANSFER -> true;
-            case COMMAND -> false;
-            case EVENT -> switch (e.event()) {
-                case SURFACED, DIVED, ALERT, TRANSFER_DONE, TRANSFER_FAILED -> true;
-                default -> false;
-            };
-        };
     }
 
     /** The MailBoxes of a service (by address prefix) that are on call now. */
