@@ -22,6 +22,7 @@ import org.ripv.messages.Ids;
 import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.Priority;
 import org.ripv.messages.Status;
+import org.ripv.retry.Backoff;
 
 /**
  * {@code ripv cli ... --follow MAILBOX}: watches a MailBox and prints its console — the recent
@@ -139,8 +140,9 @@ public final class ConsoleFollower implements ClientSocketHandler.Listener {
 
     /** Tries again and again, waiting longer each time (up to {@link #MAX_BACKOFF}); null when stopped. */
     private ClientSocketHandler reconnect() {
-        long wait = 500;
+        Backoff backoff = new Backoff(Duration.ofMillis(500), MAX_BACKOFF);
         while (stopped.getCount() > 0) {
+            long wait = backoff.nextMillis();
             try {
                 return reconnect.connect();
             } catch (InterruptedException e) {
@@ -157,7 +159,6 @@ public final class ConsoleFollower implements ClientSocketHandler.Listener {
                 Thread.currentThread().interrupt();
                 return null;
             }
-            wait = Math.min(wait * 2, MAX_BACKOFF.toMillis());
         }
         return null;
     }

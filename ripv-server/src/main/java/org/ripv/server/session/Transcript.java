@@ -10,6 +10,7 @@ import java.time.ZoneOffset;
 import java.util.ArrayList;
 import java.util.List;
 import org.ripv.messages.ConsoleEntry;
+import org.ripv.retry.Backoff;
 import org.ripv.server.store.BatchWriter;
 import org.ripv.server.store.EmbeddedStateStore;
 import org.ripv.server.store.StateStore;
@@ -209,7 +210,7 @@ public final class Transcript implements AutoCloseable {
             return;
         }
         long giveUp = System.nanoTime() + RETRY_FOR.toNanos();
-        long wait = 500;
+        Backoff backoff = new Backoff(Duration.ofMillis(500), Duration.ofMillis(8000));
         for (int attempt = 1; ; attempt++) {
             try {
                 store.appendTranscript(lines);
@@ -218,6 +219,7 @@ public final class Transcript implements AutoCloseable {
                 }
                 return;
             } catch (IOException | RuntimeException x) {
+                long wait = backoff.nextMillis();
                 if (writer.isClosed() || System.nanoTime() + wait * 1_000_000 > giveUp) {
                     log.warn("transcript: could not store {} entries, they are lost: {}", lines.size(), x.toString());
                     return;
@@ -237,7 +239,6 @@ public final class Transcript implements AutoCloseable {
                     }
                     return;
                 }
-                wait = Math.min(wait * 2, 8000);
             }
         }
     }
