@@ -18,6 +18,7 @@ import org.ripv.client.handlers.ClientSocketHandler;
 import org.ripv.json.JsonWriter;
 import org.ripv.messages.ConsoleBatch;
 import org.ripv.messages.ConsoleEntry;
+import org.ripv.messages.ConsoleLines;
 import org.ripv.messages.Ids;
 import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.Priority;
@@ -237,14 +238,6 @@ public final class ConsoleFollower implements ClientSocketHandler.Listener {
     }
 
     static String toText(ConsoleEntry e) {
-        String t = Instant.ofEpochMilli(e.time()).toString();
-        return switch (e.kind()) {
-            case LINE -> t + "  " + e.text();
-            case COMMAND -> t + "  " + (e.user().isEmpty() ? "" : "[" + e.user() + "] ") + "> " + e.text();
-            case TRANSFER -> t + "  ~ " + e.text();
-            case EVENT -> t + "  * " + e.event() + (e.user().isEmpty() ? "" : " by " + e.user())
-                    + (e.text().isEmpty() ? "" : " " + e.text())
-                    + (e.lat() != null && e.lon() != null ? String.format(Locale.ROOT, " (%.5f, %.5f)", e.lat(), e.lon()) : "");
-        };
+        return ConsoleLines.withInstant(e);
     }
 }

@@ -5,6 +5,7 @@ import java.util.LinkedHashMap;
 import java.util.Locale;
 import java.util.Map;
 import org.ripv.messages.ConsoleEntry;
+import org.ripv.messages.ConsoleLines;
 import org.ripv.messages.VehicleEvent;
 
 /**
@@ -73,13 +74,6 @@ public final class Entries {
 
     /** The entry for people: {@code 2026-11-23T14:02:03Z ru29 [alice] > GPS Location ...}. */
     public static String toText(ConsoleEntry e) {
-        String t = Instant.ofEpochMilli(e.time()).toString();
-        return switch (e.kind()) {
-            case LINE -> t + "  " + e.text();
-            case COMMAND -> t + "  " + (e.user().isEmpty() ? "" : "[" + e.user() + "] ") + "> " + e.text();
-            case TRANSFER -> t + "  ~ " + e.text();
-            case EVENT -> t + "  * " + e.event() + (e.text().isEmpty() ? "" : " " + e.text())
-                    + (e.lat() != null && e.lon() != null ? String.format(Locale.ROOT, " (%.5f, %.5f)", e.lat(), e.lon()) : "");
-        };
+        return ConsoleLines.withInstantNoEventUser(e);
     }
 }
