@@ -4,10 +4,13 @@ import java.io.IOException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.ServerSocket;
-import java.nio.file.Files;
+import java.net.StandardSocketOptions;
+import java.nio.channels.ServerSocketChannel;
 import java.nio.file.Path;
+import java.rmi.NoSuchObjectException;
 import java.rmi.RemoteException;
 import java.rmi.registry.Registry;
+import java.rmi.server.UnicastRemoteObject;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
@@ -15,17 +18,19 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.SynchronousQueue;
+import java.util.concurrent.ThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Supplier;
+import org.ripv.files.PrivateFiles;
 import org.ripv.messages.ConsoleEntry;
-import org.ripv.messages.ErrorCode;
-import org.ripv.messages.Footer;
 import org.ripv.messages.IncomingServerMessage;
 import org.ripv.messages.IncomingServiceMessage;
-import org.ripv.messages.MailboxStatus;
 import org.ripv.messages.OutgoingServerMessage;
+import org.ripv.naming.Handles;
 import org.ripv.post.MailBox;
 import org.ripv.post.PostOffice;
+import org.ripv.rmi.DeadlineSocketFactory;
 import org.ripv.rmi.GenericRMIInterface;
 import org.ripv.rmi.RmiSupport;
 import org.ripv.server.clients.ClientAcceptor;
@@ -37,6 +42,7 @@ import org.ripv.server.commands.ServiceQueries;
 import org.ripv.server.dataloop.DataLoop;
 import org.ripv.server.files.FileStore;
 import org.ripv.server.handlers.SocketHandler;
+import org.ripv.server.handlers.WriterPool;
 import org.ripv.server.lock.OperatorLock;
 import org.ripv.server.remote.OutboundListener;
 import org.ripv.server.remote.ServerRemote;
@@ -65,6 +71,7 @@ import org.ripv.server.session.ConsoleHub;
 import org.ripv.server.workflow.WorkflowBridge;
 import org.ripv.server.workflow.Workflows;
 import org.ripv.wire.FrameCodec;
+import org.ripv.wire.WireFilter;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -94,7 +101,7 @@ public final class RIPVServer implements AutoCloseable {
     private final PostOffice<IncomingServerMessage, OutgoingServerMessage> postOffice = new PostOffice<>(200_000);
     private final ScheduledExecutorService timers;
     /** The threads that write every client's socket. */
-    private final org.ripv.server.handlers.WriterPool writers;
+    private final WriterPool writers;
     private final ExecutorService checkers;
     private final ExecutorService withdrawals;
     private final ExecutorService liveness;
@@ -111,7 +118,7 @@ public final class RIPVServer implements AutoCloseable {
     private MailBox<IncomingServerMessage, OutgoingServerMessage> box;
     private PendingRequests pending;
     private volatile RequestEndings endings;
-    private java.nio.channels.ServerSocketChannel listener;
+    private ServerSocketChannel listener;
     private volatile ClientAcceptor acceptor;
     private Registry registry;
     private int registryPort;
@@ -138,12 +145,12 @@ public final class RIPVServer implements AutoCloseable {
         this.config = config;
         this.sessionOptions = sessionOptions;
         this.timers = Executors.newScheduledThreadPool(1, Threads.named("ripv-server-timer"));
-        this.writers = new org.ripv.server.handlers.WriterPool(timers);
+        this.writers = new WriterPool(timers);
         // Calls to services: each is bounded by the RMI deadlines and at most one MailBox query
         // runs per service, so a cached pool grows by one thread per hung service at worst.
         this.checkers = Executors.newCachedThreadPool(Threads.named("ripv-service-query"));
-        this.withdrawals = new java.util.concurrent.ThreadPoolExecutor(0, 16, 30, TimeUnit.SECONDS,
-                new java.util.concurrent.SynchronousQueue<>(), Threads.named("ripv-withdraw"));
+        this.withdrawals = new ThreadPoolExecutor(0, 16, 30, TimeUnit.SECONDS,
+                new SynchronousQueue<>(), Threads.named("ripv-withdraw"));
         this.liveness = Executors.newFixedThreadPool(2, Threads.named("ripv-service-check"));
         this.fileWork = Executors.newFixedThreadPool(2, Threads.named("ripv-file-work"));
         this.serviceLiveness = new ServiceLiveness(services, liveness, checkers, timers, config.serviceCheck(), this::drop);
@@ -170,8 +177,8 @@ public final class RIPVServer implements AutoCloseable {
             return;
         }
         RmiSupport.configure(5_000, 15_000);
-        org.ripv.files.PrivateFiles.createDirectories(config.dataDir());
-        org.ripv.files.PrivateFiles.restrict(config.dataDir()); // the data directory is RIPV's alone (0700)
+        PrivateFiles.createDirectories(config.dataDir());
+        PrivateFiles.restrict(config.dataDir()); // the data directory is RIPV's alone (0700)
         state = ServerState.open(config, sessionOptions); // first: an unreachable database leaves nothing open
         permits = new PermitWatcher(config.permitFile());
         Supplier<PermitFile> permitFile = permits::current;
@@ -214,19 +221,19 @@ public final class RIPVServer implements AutoCloseable {
             registryPort = config.registryPort() == 0 ? freePort() : config.registryPort();
             BoundServerSocketFactory rmiSockets = new BoundServerSocketFactory(bind);
             // Services call back with deadlines: the factory travels inside the stub they get.
-            org.ripv.rmi.DeadlineSocketFactory callSockets = org.ripv.rmi.DeadlineSocketFactory.fromSystem();
+            DeadlineSocketFactory callSockets = DeadlineSocketFactory.fromSystem();
             try {
                 registry = RegistryGuard.create(registryPort, callSockets, rmiSockets);
             } catch (RemoteException e) {
                 throw new IOException("cannot open the RMI registry on port " + registryPort + " (in use?): " + e.getMessage(), e);
             }
-            GenericRMIInterface stub = (GenericRMIInterface) java.rmi.server.UnicastRemoteObject.exportObject(remote,
-                    registryPort, callSockets, rmiSockets, org.ripv.wire.WireFilter.forRmi(RmiSupport.MAX_RMI_BYTES));
+            GenericRMIInterface stub = (GenericRMIInterface) UnicastRemoteObject.exportObject(remote,
+                    registryPort, callSockets, rmiSockets, WireFilter.forRmi(RmiSupport.MAX_RMI_BYTES));
             registryGuard = RegistryGuard.bind(registry, stub);
 
             tls = ServerTls.resolve(config.tls(), config.security().plain(), config.dataDir().resolve("tls"));
-            listener = java.nio.channels.ServerSocketChannel.open(); // TLS on the selector threads (org.ripv.server.transport)
-            listener.setOption(java.net.StandardSocketOptions.SO_REUSEADDR, true);
+            listener = ServerSocketChannel.open(); // TLS on the selector threads (org.ripv.server.transport)
+            listener.setOption(StandardSocketOptions.SO_REUSEADDR, true);
             try {
                 listener.bind(new InetSocketAddress(bind, config.port()), 128);
             } catch (IOException e) {
@@ -304,8 +311,8 @@ public final class RIPVServer implements AutoCloseable {
                 // not bound, or already gone
             }
             try {
-                java.rmi.server.UnicastRemoteObject.unexportObject(registry, true);
-            } catch (java.rmi.NoSuchObjectException ignored) {
+                UnicastRemoteObject.unexportObject(registry, true);
+            } catch (NoSuchObjectException ignored) {
                 // not exported
             }
         }
@@ -358,7 +365,7 @@ public final class RIPVServer implements AutoCloseable {
      * no paths, and no service descriptions (a database's names its JDBC URL).
      */
     private String describe() {
-        StringBuilder b = new StringBuilder("RIPVServer on " + org.ripv.naming.Handles.localHost() + "\n");
+        StringBuilder b = new StringBuilder("RIPVServer on " + Handles.localHost() + "\n");
         b.append("Clients connect to port ").append(port()).append(tls.label())
                 .append(tls.fingerprint() == null ? "" : "; certificate " + tls.fingerprint()).append('\n');
         List<ServiceReference> list = services.all();

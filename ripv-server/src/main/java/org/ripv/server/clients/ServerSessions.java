@@ -4,6 +4,8 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.Map;
 import java.util.Optional;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.function.Consumer;
 import java.util.function.Function;
 import java.util.function.Supplier;
 import org.ripv.messages.OutgoingServerMessage;
@@ -18,6 +20,8 @@ import org.ripv.server.requests.ServerReplies;
 import org.ripv.server.session.ConsoleCommands;
 import org.ripv.server.session.ConsoleHub;
 import org.ripv.server.session.Outlet;
+import org.ripv.server.session.Rights;
+import org.ripv.server.store.StateStore;
 import org.ripv.wire.FrameCodec;
 
 /**
@@ -33,7 +37,7 @@ public final class ServerSessions implements AutoCloseable {
     private final NotifyCommands notifyCommands;
     private LockExpiries lockExpiries;
 
-    public ServerSessions(Path dataDir, org.ripv.server.store.StateStore store, SessionOptions options, Supplier<PermitFile> permits,
+    public ServerSessions(Path dataDir, StateStore store, SessionOptions options, Supplier<PermitFile> permits,
                    Function<String, Optional<SocketHandler>> clients, FrameCodec codec) throws IOException {
         // A MailBox's transcript keeps at most four files' worth a day (256 MiB by default).
         console = new ConsoleHub(dataDir.resolve("transcripts"), store, options.keepDays(),
@@ -66,8 +70,8 @@ public final class ServerSessions implements AutoCloseable {
     }
 
     /** Operator locks that run out are released with an event ({@link LockExpiries}). */
-    public void expireLocks(java.util.concurrent.ScheduledExecutorService timers, Map<String, OperatorLock> locks,
-                     java.util.function.Consumer<String> released) {
+    public void expireLocks(ScheduledExecutorService timers, Map<String, OperatorLock> locks,
+                     Consumer<String> released) {
         lockExpiries = new LockExpiries(timers, locks, console, released);
     }
 
@@ -84,7 +88,7 @@ public final class ServerSessions implements AutoCloseable {
      */
     public void permitsChanged(PermitFile rules) {
         console.recheck((user, mailbox) -> {
-            String why = org.ripv.server.session.Rights.whyNotRead(rules, user, mailbox);
+            String why = Rights.whyNotRead(rules, user, mailbox);
             return why == null ? null : why + "; the permit file changed";
         });
     }

@@ -9,6 +9,7 @@ import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
+import java.rmi.RemoteException;
 import java.time.Duration;
 import java.util.List;
 import java.util.Set;
@@ -191,43 +192,44 @@ public final class OutboundListener implements AutoCloseable {
         }
 
         @Override
-        public void serviceReply(String token, OutgoingServiceMessage reply) throws java.rmi.RemoteException {
+        public void serviceReply(String token, OutgoingServiceMessage reply) throws RemoteException {
             remote.serviceReply(token, reply);
         }
 
         @Override
-        public void serviceReplies(String token, List<OutgoingServiceMessage> replies) throws java.rmi.RemoteException {
+        public void serviceReplies(String token, List<OutgoingServiceMessage> replies) throws RemoteException {
             remote.serviceReplies(token, replies);
         }
 
         @Override
-        public void console(String token, List<ConsoleEntry> entries) throws java.rmi.RemoteException {
+        public void console(String token, List<ConsoleEntry> entries) throws RemoteException {
             remote.console(token, entries);
         }
 
         @Override
-        public boolean heartbeat(String token) throws java.rmi.RemoteException {
+        public boolean heartbeat(String token) throws RemoteException {
             return remote.heartbeat(token);
         }
 
+        // What the server does not take from any service, it does not take over this connection either.
         @Override
-        public void serviceRequest(String token, IncomingServiceMessage request) {
-            throw new UnsupportedOperationException("the RIPVServer takes no service requests");
+        public void serviceRequest(String token, IncomingServiceMessage request) throws RemoteException {
+            remote.serviceRequest(token, request);
         }
 
         @Override
-        public void serviceRequests(String token, List<IncomingServiceMessage> requests) {
-            throw new UnsupportedOperationException("the RIPVServer takes no service requests");
+        public void serviceRequests(String token, List<IncomingServiceMessage> requests) throws RemoteException {
+            remote.serviceRequests(token, requests);
         }
 
         @Override
-        public boolean withdraw(String token, String mailbox, String clientId, long messageId) {
-            throw new UnsupportedOperationException("the RIPVServer runs no service MailBoxes");
+        public boolean withdraw(String token, String mailbox, String clientId, long messageId) throws RemoteException {
+            return remote.withdraw(token, mailbox, clientId, messageId);
         }
 
         @Override
-        public List<MailboxStatus> mailboxes(String token) {
-            throw new UnsupportedOperationException("ask ?mailboxes over the client socket");
+        public List<MailboxStatus> mailboxes(String token) throws RemoteException {
+            return remote.mailboxes(token);
         }
     }
 }

@@ -1,5 +1,9 @@
 package org.ripv.server.requests;
 
+import java.net.NoRouteToHostException;
+import java.net.SocketTimeoutException;
+import java.rmi.ConnectException;
+import java.rmi.NoSuchObjectException;
 import java.rmi.RemoteException;
 import java.time.Duration;
 import java.util.List;
@@ -57,9 +61,9 @@ public final class RequestEndings {
     /** True when a call failed before any byte of it could leave (no connection): it surely did not arrive. */
     static boolean neverConnected(Throwable e) {
         for (Throwable t = e; t != null; t = t.getCause() == t ? null : t.getCause()) {
-            if (t instanceof java.rmi.ConnectException || t instanceof java.net.ConnectException
-                    || t instanceof java.net.SocketTimeoutException && String.valueOf(t.getMessage()).startsWith("could not reach")
-                    || t instanceof java.rmi.NoSuchObjectException || t instanceof java.net.NoRouteToHostException) {
+            if (t instanceof ConnectException || t instanceof java.net.ConnectException
+                    || t instanceof SocketTimeoutException && String.valueOf(t.getMessage()).startsWith("could not reach")
+                    || t instanceof NoSuchObjectException || t instanceof NoRouteToHostException) {
                 return true;
             }
         }

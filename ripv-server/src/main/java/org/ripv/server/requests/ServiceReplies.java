@@ -14,6 +14,7 @@ import org.ripv.messages.IncomingServerMessage;
 import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.OutgoingServiceMessage;
 import org.ripv.messages.Result;
+import org.ripv.messages.Status;
 import org.ripv.server.dataloop.DataLoop;
 import org.ripv.server.files.FileStore;
 import org.ripv.server.services.ServiceReference;
@@ -104,7 +105,7 @@ public final class ServiceReplies {
             return f.withText(storedAs(f.replyText(), names)).withResult(new FileListing("download", stored));
         } catch (IOException | IllegalArgumentException e) {
             log.warn("could not store a file from a reply: {}", e.getMessage());
-            return new Footer(f.serviceId(), org.ripv.messages.Status.ERROR, ErrorCode.TRANSFER_FAILED, f.route(),
+            return new Footer(f.serviceId(), Status.ERROR, ErrorCode.TRANSFER_FAILED, f.route(),
                     (f.replyText().isEmpty() ? "" : f.replyText() + "\n") + "the server could not store the file: " + e.getMessage(),
                     null);
         }

@@ -4,9 +4,15 @@ import java.rmi.RemoteException;
 import java.rmi.ServerError;
 import java.rmi.ServerException;
 import java.security.SecureRandom;
+import java.time.Duration;
 import java.util.HexFormat;
 import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CompletionException;
+import java.util.concurrent.ExecutionException;
 import java.util.concurrent.Executor;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
 import java.util.function.BiConsumer;
 import org.ripv.messages.MailboxStatus;
 import org.ripv.messages.ServiceDescriptor;
@@ -27,8 +33,8 @@ public final class ServiceAdmission {
     private static final Logger log = LoggerFactory.getLogger(ServiceAdmission.class);
     private static final SecureRandom RANDOM = new SecureRandom();
     /** How long the call-back at registration may take. */
-    public static final java.time.Duration CALLBACK_DEADLINE =
-            java.time.Duration.ofMillis(Long.getLong("ripv.service.callbackMillis", 5_000));
+    public static final Duration CALLBACK_DEADLINE =
+            Duration.ofMillis(Long.getLong("ripv.service.callbackMillis", 5_000));
 
     /** What the server does once a service's MailBoxes are known after it registered. */
     @FunctionalInterface
@@ -133,22 +139,22 @@ public final class ServiceAdmission {
      */
     static void callBack(ServiceDescriptor d, GenericRMIInterface service, Executor pool) {
         String address = ServiceReference.addressOf(service);
-        java.util.concurrent.CompletableFuture<Boolean> probe = java.util.concurrent.CompletableFuture.supplyAsync(() -> {
+        CompletableFuture<Boolean> probe = CompletableFuture.supplyAsync(() -> {
             try {
                 return service.heartbeat("probe");
             } catch (RemoteException e) {
-                throw new java.util.concurrent.CompletionException(e);
+                throw new CompletionException(e);
             }
         }, pool);
         try {
-            probe.get(CALLBACK_DEADLINE.toMillis(), java.util.concurrent.TimeUnit.MILLISECONDS);
-        } catch (java.util.concurrent.TimeoutException e) {
+            probe.get(CALLBACK_DEADLINE.toMillis(), TimeUnit.MILLISECONDS);
+        } catch (TimeoutException e) {
             probe.cancel(true);
             throw refused(d, address, "timed out after " + CALLBACK_DEADLINE.toMillis() + " ms");
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             throw refused(d, address, "interrupted");
-        } catch (java.util.concurrent.ExecutionException e) {
+        } catch (ExecutionException e) {
             Throwable t = e.getCause();
             if (t instanceof ServerException || t instanceof ServerError || t instanceof UnsupportedOperationException
                     || t instanceof SecurityException) {

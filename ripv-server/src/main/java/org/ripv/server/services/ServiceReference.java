@@ -1,5 +1,8 @@
 package org.ripv.server.services;
 
+import java.lang.reflect.Proxy;
+import java.net.SocketTimeoutException;
+import java.rmi.ConnectException;
 import java.rmi.RemoteException;
 import java.time.Duration;
 import java.time.Instant;
@@ -11,6 +14,8 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.Executor;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
+import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.regex.Matcher;
@@ -49,14 +54,14 @@ public final class ServiceReference {
     private final long order;
     /** Liveness: failed checks in a row, and whether a check is under way. */
     final AtomicInteger failedChecks = new AtomicInteger();
-    final java.util.concurrent.atomic.AtomicBoolean checking = new java.util.concurrent.atomic.AtomicBoolean();
+    final AtomicBoolean checking = new AtomicBoolean();
     /** The MailBox query under way, which every asker shares (one call per service at a time). */
     private final AtomicReference<CompletableFuture<List<MailboxStatus>>> query = new AtomicReference<>();
     private volatile String problem = "";
     /** When the sender's call under way began (0: none): a call stuck for long marks a path that is gone. */
     private volatile long callingSince;
     /** A call stuck this long (past any connect deadline) means the requests behind it should not wait. */
-    private static final long STUCK_NANOS = java.util.concurrent.TimeUnit.MILLISECONDS.toNanos(
+    private static final long STUCK_NANOS = TimeUnit.MILLISECONDS.toNanos(
             Long.getLong("ripv.service.stuckMillis", 3_000));
     private volatile Instant problemSince;
     private volatile boolean closed;
@@ -86,7 +91,7 @@ public final class ServiceReference {
         if (m.find()) {
             return m.group(1);
         }
-        return stub instanceof java.lang.reflect.Proxy && !s.contains("RemoteObjectInvocationHandler") ? s : "?";
+        return stub instanceof Proxy && !s.contains("RemoteObjectInvocationHandler") ? s : "?";
     }
 
     public ServiceDescriptor descriptor() {
@@ -120,7 +125,7 @@ public final class ServiceReference {
             return;
         }
         if (stuck()) {
-            onFailure.failed(this, request, new java.rmi.ConnectException(problem));
+            onFailure.failed(this, request, new ConnectException(problem));
             return;
         }
         undelivered.add(request.header().requestKey());
@@ -184,7 +189,7 @@ public final class ServiceReference {
     }
 
     /** Asks the service to stop a request that is running; true when its handler took the cancel. */
-    public boolean cancel(org.ripv.messages.Header h) throws RemoteException {
+    public boolean cancel(Header h) throws RemoteException {
         return stub.cancel(token, h.mailboxAddress(), h.origin().clientId(), h.messageId());
     }
 
@@ -258,7 +263,7 @@ public final class ServiceReference {
             queue.drainTo(waiting);
             for (IncomingServiceMessage r : waiting) {
                 undelivered.remove(r.header().requestKey());
-                onFailure.failed(this, r, new java.rmi.ConnectException(why));
+                onFailure.failed(this, r, new ConnectException(why));
             }
         }
     }
@@ -284,7 +289,7 @@ public final class ServiceReference {
         while (t.getCause() != null && t.getCause() != t) {
             t = t.getCause();
         }
-        if (t instanceof java.util.concurrent.TimeoutException) {
+        if (t instanceof TimeoutException) {
             return "no answer within the deadline";
         }
         String m = t.getMessage() == null ? t.getClass().getSimpleName() : t.getMessage();
@@ -292,7 +297,7 @@ public final class ServiceReference {
         if (at >= 0 && m.indexOf(": ", at) > 0) {
             return m.substring(m.indexOf(": ", at) + 2); // "timed out after 3000 ms" from DeadlineSocketFactory
         }
-        if (t instanceof java.net.SocketTimeoutException) {
+        if (t instanceof SocketTimeoutException) {
             return "no answer: " + m;
         }
         return m;

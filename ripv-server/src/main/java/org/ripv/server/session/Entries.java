@@ -1,6 +1,7 @@
 package org.ripv.server.session;
 
 import java.time.Instant;
+import java.time.format.DateTimeParseException;
 import java.util.LinkedHashMap;
 import java.util.Locale;
 import java.util.Map;
@@ -51,7 +52,7 @@ public final class Entries {
         long time;
         try {
             time = Instant.parse(string(m, "time")).toEpochMilli();
-        } catch (java.time.format.DateTimeParseException e) {
+        } catch (DateTimeParseException e) {
             throw new IllegalArgumentException("bad time");
         }
         ConsoleEntry.Kind kind = ConsoleEntry.Kind.valueOf(string(m, "kind").toUpperCase(Locale.ROOT));

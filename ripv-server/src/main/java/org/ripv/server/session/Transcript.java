@@ -8,7 +8,10 @@ import java.time.Instant;
 import java.time.LocalDate;
 import java.time.ZoneOffset;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
+import org.ripv.files.PrivateFiles;
 import org.ripv.messages.ConsoleEntry;
 import org.ripv.retry.Backoff;
 import org.ripv.server.store.BatchWriter;
@@ -42,7 +45,7 @@ public final class Transcript implements AutoCloseable {
     /** The most bytes one MailBox's transcript takes in one UTC day; 0: no cap. */
     private final long dayCap;
     /** What each MailBox wrote today, and what was cut: the writer thread's alone. */
-    private final java.util.Map<String, DayUse> today = new java.util.HashMap<>();
+    private final Map<String, DayUse> today = new HashMap<>();
 
     private static final class DayUse {
         LocalDate day;
@@ -93,7 +96,7 @@ public final class Transcript implements AutoCloseable {
         this.store = store;
         this.ownsStore = ownsStore;
         this.keepDays = Math.max(1, keepDays);
-        org.ripv.files.PrivateFiles.createDirectories(root); // owner-only whatever the umask (issue 23, item 13)
+        PrivateFiles.createDirectories(root); // owner-only whatever the umask (issue 23, item 13)
         this.writer = new BatchWriter<>("ripv-transcript-writer", QUEUE, 4096, new BatchWriter.Sink<>() {
             @Override
             public void started() {

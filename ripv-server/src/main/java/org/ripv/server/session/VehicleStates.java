@@ -5,6 +5,7 @@ import java.util.ArrayDeque;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.concurrent.ConcurrentHashMap;
 import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.SessionState;
@@ -196,7 +197,7 @@ final class VehicleStates {
     /** Reads the saved state of a MailBox not seen since the server started. */
     private Vehicle load(String mailbox) {
         try {
-            java.util.Optional<String> saved = store.loadVehicleState(mailbox);
+            Optional<String> saved = store.loadVehicleState(mailbox);
             if (saved.isEmpty()) {
                 return null;
             }

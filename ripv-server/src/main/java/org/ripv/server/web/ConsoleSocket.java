@@ -1,5 +1,6 @@
 package org.ripv.server.web;
 
+import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import java.io.IOException;
@@ -8,6 +9,7 @@ import java.net.InetSocketAddress;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.eclipse.jetty.websocket.api.Callback;
 import org.eclipse.jetty.websocket.api.Session;
+import org.ripv.messages.Attachment;
 import org.ripv.messages.Header;
 import org.ripv.messages.IncomingServerMessage;
 import org.ripv.messages.OutgoingServerMessage;
@@ -82,7 +84,7 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
             if (c != null) {
                 Header h = Header.request(m.path("id").asLong(), m.path("mailbox").asText(""), m.path("body").asText(""),
                         Priority.parse(m.path("priority").asText("normal")));
-                org.ripv.messages.Attachment chunk = FileChunks.attachment(m);
+                Attachment chunk = FileChunks.attachment(m);
                 c.received(new IncomingServerMessage(chunk == null ? h : h.withAttachment(chunk)));
             }
         } catch (IOException | IllegalArgumentException e) {
@@ -198,7 +200,7 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
     private static String error(String text) {
         try {
             return JSON.writeValueAsString(JSON.createObjectNode().put("type", "error").put("text", text));
-        } catch (com.fasterxml.jackson.core.JsonProcessingException e) {
+        } catch (JsonProcessingException e) {
             throw new IllegalStateException("an error could not be written as JSON", e);
         }
     }

@@ -1,5 +1,6 @@
 package org.ripv.server.web;
 
+import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import java.util.LinkedHashMap;
 import java.util.Map;
@@ -53,7 +54,7 @@ final class PublicHandler extends Handler.Abstract {
             m.put("vehicles", vehicles);
             try {
                 Pages.send(response, callback, 200, "application/json", json.writeValueAsString(m));
-            } catch (com.fasterxml.jackson.core.JsonProcessingException e) {
+            } catch (JsonProcessingException e) {
                 Pages.send(response, callback, 500, "application/json", error("could not write the vehicles"));
             }
         });

@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.time.Duration;
 import java.time.Instant;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.CompletableFuture;
@@ -15,6 +16,7 @@ import org.ripv.messages.SessionState;
 import org.ripv.naming.MailboxAddress;
 import org.ripv.naming.MalformedNameException;
 import org.ripv.server.session.ConsoleHub;
+import org.ripv.server.session.Transcript;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -91,7 +93,7 @@ public final class PublicVehicles implements PublicFleet {
             SessionState s = console.state(address);
             out.add(new Vehicle(handle, s == null ? "UNKNOWN" : s.state().name(), s == null ? 0 : s.lastContact(), track(address)));
         }
-        out.sort(java.util.Comparator.comparing(v -> v.name().toLowerCase(Locale.ROOT)));
+        out.sort(Comparator.comparing(v -> v.name().toLowerCase(Locale.ROOT)));
         return out;
     }
 
@@ -99,7 +101,7 @@ public final class PublicVehicles implements PublicFleet {
         List<double[]> fixes = new ArrayList<>();
         try {
             for (ConsoleEntry e : console.history(address, Instant.now().minus(Duration.ofDays(TRACK_DAYS)),
-                    org.ripv.server.session.Transcript.MAX_HISTORY).entries()) {
+                    Transcript.MAX_HISTORY).entries()) {
                 if (e.lat() != null && e.lon() != null) {
                     fixes.add(new double[] {e.lat(), e.lon()});
                 }

@@ -9,6 +9,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
+import java.util.Locale;
 import java.util.Set;
 import java.util.UUID;
 import org.eclipse.jetty.http.HttpHeader;
@@ -85,7 +86,7 @@ final class UploadHandler extends Handler.Abstract {
         MultiPartFormData.from(request, request, type, config).whenComplete((parts, failure) -> {
             if (failure != null) {
                 String why = String.valueOf(failure.getMessage());
-                boolean big = why.toLowerCase(java.util.Locale.ROOT).contains("max");
+                boolean big = why.toLowerCase(Locale.ROOT).contains("max");
                 Pages.fail(response, callback, big ? 413 : 400, big ? "Upload too large" : "Bad form data", (big
                         ? "The files are over this server's limit of " + maxUploadBytes + " bytes per upload (" + why + ")."
                         : "The form could not be read: " + why + ".") + " None of the files were saved.");

@@ -1,11 +1,15 @@
 package org.ripv.server.web;
 
 import java.io.IOException;
+import java.net.InetAddress;
 import java.net.InetSocketAddress;
+import java.net.URI;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
+import java.util.ArrayList;
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.concurrent.Executors;
@@ -195,7 +199,7 @@ public final class WebConsole implements AutoCloseable {
         webjars.setBaseResource(resources.newClassLoaderResource("META-INF/resources/webjars/"));
         webjars.setDirAllowed(false);
         ContextHandler webjarContext = new ContextHandler(webjars, "/webjars");
-        java.util.List<Handler> chain = new java.util.ArrayList<>();
+        List<Handler> chain = new ArrayList<>();
         chain.add(new LandingHandler(options.status(), options.clientJar(), options.clientPort(), tls, sessions, options.access() != null,
                 options.uploads() && options.access() != null ? options.maxUploadBytes() : 0));
         if (options.access() != null) {
@@ -229,8 +233,8 @@ public final class WebConsole implements AutoCloseable {
                     return null;
                 }
                 // The browser's address, for the gate's per-address rules and the log lines.
-                java.net.InetAddress from = request.getConnectionMetaData().getRemoteSocketAddress() instanceof InetSocketAddress a
-                        && a.getAddress() != null ? a.getAddress() : java.net.InetAddress.getLoopbackAddress();
+                InetAddress from = request.getConnectionMetaData().getRemoteSocketAddress() instanceof InetSocketAddress a
+                        && a.getAddress() != null ? a.getAddress() : InetAddress.getLoopbackAddress();
                 return new ConsoleSocket(sessions, login, options.door(), pushJson, from);
             });
         });
@@ -242,7 +246,7 @@ public final class WebConsole implements AutoCloseable {
         if (template == null) {
             return null;
         }
-        java.net.URI u = java.net.URI.create(template.replaceAll("\\{[a-z]}", "0"));
+        URI u = URI.create(template.replaceAll("\\{[a-z]}", "0"));
         return u.getScheme() + "://" + u.getAuthority();
     }
 

@@ -1,12 +1,19 @@
 package org.ripv.server.workflow;
 
+import java.nio.file.Files;
+import java.time.Duration;
 import java.util.Map;
+import java.util.concurrent.ExecutionException;
 import java.util.concurrent.Executor;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
 import java.util.function.Predicate;
 import java.util.function.Supplier;
 import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.Header;
 import org.ripv.messages.IncomingServerMessage;
+import org.ripv.messages.SessionState;
+import org.ripv.naming.MailboxAddress;
 import org.ripv.server.files.FileStore;
 import org.ripv.server.lock.OperatorLock;
 import org.ripv.server.permit.PermitFile;
@@ -50,19 +57,19 @@ public final class WorkflowBridge implements WorkflowHost {
 
     @Override
     public boolean onCall(String mailbox) {
-        org.ripv.messages.SessionState s = console.state(mailbox);
-        return s != null && s.state() == org.ripv.messages.SessionState.State.ON_CALL;
+        SessionState s = console.state(mailbox);
+        return s != null && s.state() == SessionState.State.ON_CALL;
     }
 
     @Override
     public boolean knownMailbox(String mailbox) {
         if (console.state(mailbox) != null
-                || java.nio.file.Files.isDirectory(files.downloadDir().resolve(FileStore.folderFor(mailbox)))) {
+                || Files.isDirectory(files.downloadDir().resolve(FileStore.folderFor(mailbox)))) {
             return true;
         }
-        org.ripv.naming.MailboxAddress address;
+        MailboxAddress address;
         try {
-            address = org.ripv.naming.MailboxAddress.parse(mailbox);
+            address = MailboxAddress.parse(mailbox);
         } catch (RuntimeException e) {
             return false;
         }
@@ -71,9 +78,9 @@ public final class WorkflowBridge implements WorkflowHost {
             return false;
         }
         try {
-            return ref.mailboxes(checkers, java.time.Duration.ofSeconds(5)).get(10, java.util.concurrent.TimeUnit.SECONDS)
+            return ref.mailboxes(checkers, Duration.ofSeconds(5)).get(10, TimeUnit.SECONDS)
                     .stream().anyMatch(s -> s.address().equals(address.toString()));
-        } catch (java.util.concurrent.ExecutionException | java.util.concurrent.TimeoutException e) {
+        } catch (ExecutionException | TimeoutException e) {
             return false;
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
