@@ -9,7 +9,8 @@ import java.util.regex.Pattern;
  * handle, e.g. {@code <SerialPortServer>::<imvros.mit.edu>COM1}.
  */
 public record MailboxAddress(ServiceName service, String handle) {
-    static final String HANDLE = "[A-Za-z0-9][A-Za-z0-9._\\-]{0,127}";
+    /** The handle's grammar (the web pages' address.js holds the same text). */
+    public static final String HANDLE = "[A-Za-z0-9][A-Za-z0-9._\\-]{0,127}";
     private static final Pattern FULL = Pattern.compile(
             "<(" + ServiceName.SERVICE + ")>::<(" + ServiceName.HOST + ")>(" + HANDLE + ")");
     private static final Pattern HANDLE_ONLY = Pattern.compile(HANDLE);

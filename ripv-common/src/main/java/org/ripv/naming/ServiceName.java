@@ -9,8 +9,9 @@ import java.util.regex.Pattern;
  * {@code <DatabaseServer>::<deslab.mit.edu>}.
  */
 public record ServiceName(String service, String host) {
-    static final String SERVICE = "[A-Za-z][A-Za-z0-9_]{0,63}";
-    static final String HOST = "[A-Za-z0-9._:%\\-]{1,253}";
+    /** The grammar of a service's name and of a host (the web pages' address.js holds the same text). */
+    public static final String SERVICE = "[A-Za-z][A-Za-z0-9_]{0,63}";
+    public static final String HOST = "[A-Za-z0-9._:%\\-]{1,253}";
     private static final Pattern FULL = Pattern.compile("<(" + SERVICE + ")>::<(" + HOST + ")>");
     /** Compiled once: every request's address is checked against them. */
     private static final Pattern SERVICE_NAME = Pattern.compile(SERVICE);

@@ -476,7 +476,8 @@ public final class WebBench implements Callable<Integer> {
         String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
         List<String> cmd = List.of(java, "-Xmx" + heap, "-cp", System.getProperty("java.class.path"), "org.ripv.server.ServerMain",
                 "server", "--data", dir.toString(), "--port", "0", "--registry-port", "0", "--http-port", Integer.toString(httpPort),
-                "--plain", "--max-clients", Integer.toString(watchers + 200));
+                "--plain", "--max-clients", Integer.toString(watchers + 200),
+                "--web-pages", Integer.toString(2 * (watchers + 200))); // the bench's crowd is one log-in's pages
         Process p = new ProcessBuilder(cmd).redirectErrorStream(true).start();
         BufferedReader r = new BufferedReader(new InputStreamReader(p.getInputStream(), StandardCharsets.UTF_8));
         Pattern ready = Pattern.compile("RIPVServer ready: clients on port (\\d+).*register at [^:]+:(\\d+) with --secret-file (\\S+?),");

@@ -31,6 +31,8 @@ class WebWatchersThreadsTest {
     @Test
     void fiveHundredPagesCostNoThreadEachAndAPageThatNeverReadsIsBounded() throws Exception {
         ServerConfig config = ServerConfig.forTests(dir.resolve("server")).plain().withPorts(0, 0, 0).withMaxClients(PAGES + 50);
+        // every page is one log-in's here: the operator lets one user open them all (--web-pages)
+        config = config.withSecurity(config.security().withWebPages(4 * PAGES));
         try (TestSystem sys = TestSystem.start(config)) {
             sys.user("watcher", "observers");
             VehicleConsoleService vehicle = new VehicleConsoleService("localhost", "ru29");

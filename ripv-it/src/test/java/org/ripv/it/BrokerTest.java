@@ -164,7 +164,8 @@ class BrokerTest {
         List<CompletableFuture<OutgoingServerMessage>> all = new ArrayList<>();
         for (int i = 0; i < 200; i++) {
             all.add(a.send("<OverlapService>::<localhost>TTY1", "a" + i, Priority.NORMAL, null));
-            all.add(b.send("<OverlapService>::<localhost>TTY1", "b" + i, i % 3 == 0 ? Priority.URGENT : Priority.NORMAL, null));
+            // mixed priorities, urgent ones within what one client may have waiting (WaitingRequests.MAX_RAISED, issue 33)
+            all.add(b.send("<OverlapService>::<localhost>TTY1", "b" + i, i % 10 == 0 ? Priority.URGENT : Priority.NORMAL, null));
         }
         for (CompletableFuture<OutgoingServerMessage> f : all) {
             assertThat(f.get(60, TimeUnit.SECONDS).status()).isEqualTo(Status.OK);

@@ -36,6 +36,7 @@ import org.ripv.rmi.RmiSupport;
 import org.ripv.server.clients.ClientAcceptor;
 import org.ripv.server.clients.ClientDispatch;
 import org.ripv.server.clients.ServerSessions;
+import org.ripv.server.clients.WaitingRequests;
 import org.ripv.server.clients.WebClients;
 import org.ripv.server.commands.ServerCommands;
 import org.ripv.server.commands.ServiceQueries;
@@ -52,6 +53,7 @@ import org.ripv.server.requests.RequestForwarder;
 import org.ripv.server.requests.ServiceReplies;
 import org.ripv.server.routing.Admission;
 import org.ripv.server.routing.ServerTaskManager;
+import org.ripv.server.security.StaleLogins;
 import org.ripv.server.services.ServiceAdmission;
 import org.ripv.server.services.ServiceRegistry;
 import org.ripv.server.web.PublicVehicles;
@@ -110,6 +112,8 @@ public final class RIPVServer implements AutoCloseable {
     private ServerRemote remote;
     private volatile InternalCalls internalCalls;
     private ServiceAdmission admission;
+    /** Each client's requests waiting for their final reply, capped (issue 33 item 10). */
+    private final WaitingRequests waiting = new WaitingRequests();
 
     private PermitWatcher permits;
     private FileStore files;
@@ -194,6 +198,7 @@ public final class RIPVServer implements AutoCloseable {
             return permits.current();
         }, () -> secret);
         sessions = new ServerSessions(config.dataDir(), state.store(), sessionOptions, permitFile, this::client, codec);
+        sessions.countRepliesIn(waiting);
         ConsoleHub console = sessions.console();
         RequestForwarder forwarder = new RequestForwarder(pending, this::reply);
         RequestCancels cancels = new RequestCancels(pending, services, permitFile, this::reply, console::serverEntry);
@@ -211,8 +216,9 @@ public final class RIPVServer implements AutoCloseable {
         ServerCommands commands = new ServerCommands(new ServerCommands.Parts(permitFile, files, services, queries, locks, sessions,
                 workflows, cancels, security.throttle(), state.audit(), state.store(), this::client), fileWork, checkers,
                 this::reply, admit::route);
-        box = postOffice.open(POST_OFFICE, new ServerTaskManager(commands::run, admit, workflows::reply, this::client, this::reply));
-        dispatch = new ClientDispatch(security.logins(), this::deliver, this::clientClosed);
+        box = postOffice.open(POST_OFFICE, new ServerTaskManager(commands::run, admit, workflows::reply, waiting, this::client,
+                this::reply));
+        dispatch = new ClientDispatch(security.logins(), waiting, this::deliver, this::clientClosed);
         publicVehicles = publicNames == null ? null : new PublicVehicles(
                 () -> queries.known().thenApply(ServiceQueries.Known::addresses), console, checkers, publicNames);
 
@@ -251,6 +257,13 @@ public final class RIPVServer implements AutoCloseable {
         }
         running = true;
         acceptor = new ClientAcceptor(listener, tls.context(), timers, codec, writers, dispatch, security.gate());
+        // A reload that removes a user, changes a password or roles reaches every open log-in (issue 33 item 4).
+        StaleLogins stale = new StaleLogins(permits.current(), acceptor::clients);
+        if (landingPage != null) {
+            WebConsole web = landingPage;
+            stale.onChange(c -> web.usersChanged(c.ended(), c.roles()));
+        }
+        permits.onChange(stale);
         long check = config.serviceCheck().toMillis();
         timers.scheduleWithFixedDelay(this::checkServices, check, check, TimeUnit.MILLISECONDS);
         log.info("RIPVServer listening for clients on port {}{}, RMI registry on port {}, data in {}", port(),
@@ -348,6 +361,12 @@ public final class RIPVServer implements AutoCloseable {
         WebConsole page = new WebConsole(new WebConsole.Options(new InetSocketAddress(bind, config.httpPort()),
                 files.uploadDir(), config.maxUpload(), config.clientJar(), this::describe, port(), security.webAccess(),
                 config.security().httpUpload(), tls.context(), new WebClients(() -> acceptor), codec, mapTiles));
+        // The upload form stores through the FileStore with ?upload's quota and owners (issue 33 item 5).
+        page.withPagesPerUser(config.security().webPages()); // issue 33 item 2
+        page.withFormUploads((user, parked) -> {
+            PermitFile p = permits.current();
+            return files.storeWhole(user, parked, p.user(user).map(p::quota).orElse(0L));
+        });
         if (publicVehicles != null) {
             page.withPublicView(publicVehicles);
         }
@@ -399,6 +418,7 @@ public final class RIPVServer implements AutoCloseable {
             a.forget(client);
         }
         String id = client.clientId();
+        waiting.forget(id);
         security.gate().closed(id);
         pending.forgetClient(id);
         files.abortAll(id);

@@ -80,6 +80,9 @@ public final class ServerMain implements Callable<Integer> {
         @Option(names = "--http-upload", description = "Let users who log in on the landing page upload files (off by default;"
                 + " the permit file's ?upload rules apply).")
         boolean httpUpload;
+        @Option(names = "--web-pages", paramLabel = "N", defaultValue = "64", description = "Web console pages (WebSockets) one user"
+                + " may have open over all their log-ins; one log-in half of it (default ${DEFAULT-VALUE}).")
+        int webPages;
         @Option(names = "--map-tiles", paramLabel = "URL", description = "Map tiles for the web console's map, an https URL with {z}, {x}"
                 + " and {y} (default: none; the map is a latitude/longitude grid that needs no internet).")
         String mapTiles;
@@ -150,8 +153,11 @@ public final class ServerMain implements Callable<Integer> {
                     .withBindAddress(bind)
                     .withMaxClients(maxClients)
                     .withClientJar(clientJar != null ? clientJar : defaultClientJar());
+            if (webPages < 2) {
+                throw new CommandLine.ParameterException(new CommandLine(new Serve()), "--web-pages must be at least 2, got " + webPages);
+            }
             config = config.withSecurity(config.security().withPlain(plain).withHttpUpload(httpUpload)
-                    .withLoginDeadline(Duration.ofSeconds(loginDeadline)));
+                    .withLoginDeadline(Duration.ofSeconds(loginDeadline)).withWebPages(webPages));
             String fingerprint = null;
             if (tlsKeystore != null && plain) {
                 throw new CommandLine.ParameterException(new CommandLine(new Serve()), "--plain and --tls-keystore exclude each other");

@@ -14,13 +14,13 @@ import org.openqa.selenium.chrome.ChromeOptions;
  * never downloads anything). Without chromium and chromedriver the test skips, saying so; under
  * {@code RIPV_REQUIRE_TOOLS=1} (CI) it fails instead.
  */
-final class Chromium {
+public final class Chromium {
     static final Path BROWSER = Path.of("/usr/bin/chromium");
     static final Path DRIVER = Path.of("/usr/bin/chromedriver");
 
     private Chromium() {}
 
-    static void assume() {
+    public static void assume() {
         boolean there = Files.isExecutable(BROWSER) && Files.isExecutable(DRIVER);
         String why = "needs " + BROWSER + " and " + DRIVER + " (apt-get install chromium chromium-driver)";
         if (!there && "1".equals(System.getenv("RIPV_REQUIRE_TOOLS"))) {
@@ -30,12 +30,12 @@ final class Chromium {
     }
 
     /** A fresh browser with its own profile; the server's self-signed certificate is accepted as a user would after the warning. */
-    static ChromeDriver start(Path profile) {
+    public static ChromeDriver start(Path profile) {
         return start(profile, null);
     }
 
     /** The same, saving what the page downloads into {@code downloads} without asking (null: Chromium's default). */
-    static ChromeDriver start(Path profile, Path downloads) {
+    public static ChromeDriver start(Path profile, Path downloads) {
         ChromeDriverService service = new ChromeDriverService.Builder().usingDriverExecutable(DRIVER.toFile())
                 .usingAnyFreePort().withLogFile(new File(profile.toFile(), "chromedriver.log")).build();
         ChromeOptions options = new ChromeOptions();

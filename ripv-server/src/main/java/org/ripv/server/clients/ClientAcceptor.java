@@ -73,7 +73,8 @@ public final class ClientAcceptor {
         return Optional.ofNullable(clients.get(clientId));
     }
 
-    Collection<SocketHandler> clients() {
+    /** Every connected client, socket and web page alike. */
+    public Collection<SocketHandler> clients() {
         return clients.values();
     }
 

@@ -17,6 +17,7 @@ import org.ripv.server.security.Logins;
  */
 public final class ClientDispatch implements SocketHandler.Dispatcher {
     private final Logins logins;
+    private final WaitingRequests waiting;
     private final Predicate<IncomingServerMessage> postOffice;
     private final Consumer<SocketHandler> closed;
 
@@ -24,8 +25,10 @@ public final class ClientDispatch implements SocketHandler.Dispatcher {
      * @param postOffice delivers a request to the RIPV Post Office; false when it is full
      * @param closed     forgets a closed connection everywhere it left state (pending requests, uploads, locks…)
      */
-    public ClientDispatch(Logins logins, Predicate<IncomingServerMessage> postOffice, Consumer<SocketHandler> closed) {
+    public ClientDispatch(Logins logins, WaitingRequests waiting, Predicate<IncomingServerMessage> postOffice,
+                          Consumer<SocketHandler> closed) {
         this.logins = logins;
+        this.waiting = waiting;
         this.postOffice = postOffice;
         this.closed = closed;
     }
@@ -43,9 +46,15 @@ public final class ClientDispatch implements SocketHandler.Dispatcher {
                     "log in first (?login USER with the password), then send '" + Header.abbreviate(body) + "'")));
             return;
         }
+        String full = waiting.take(client.clientId(), h);
+        if (full != null) {
+            client.send(request.reply(Footer.error(Ids.FID_NONE, ErrorCode.NOT_AVAILABLE, full)));
+            return;
+        }
         IncomingServerMessage stamped = new IncomingServerMessage(
                 h.withOrigin(client.badge(), client.roles()).withDestination(""));
         if (!postOffice.test(stamped)) {
+            waiting.done(client.clientId(), h); // taken above, refused here: no longer waiting
             client.send(request.reply(Footer.error(Ids.FID_NONE, ErrorCode.NOT_AVAILABLE,
                     "the server is overloaded: too many requests waiting; try again shortly")));
         }

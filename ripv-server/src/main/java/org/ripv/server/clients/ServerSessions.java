@@ -9,6 +9,7 @@ import java.util.function.Consumer;
 import java.util.function.Function;
 import java.util.function.Supplier;
 import org.ripv.messages.OutgoingServerMessage;
+import org.ripv.messages.Status;
 import org.ripv.messages.VehicleEvent;
 import org.ripv.server.SessionOptions;
 import org.ripv.server.handlers.SocketHandler;
@@ -45,12 +46,19 @@ public final class ServerSessions implements AutoCloseable {
         notifier = new Notifier(store, permits, options.smtp(),
                 options.notifyBackoff(), options.notifyTimeout(), options.webhooks());
         console.onEvent(notifier::accept);
-        consoleCommands = new ConsoleCommands(console, permits, id -> clients.apply(id).map(ServerSessions::outlet),
+        consoleCommands = new ConsoleCommands(console, permits, id -> clients.apply(id).map(this::outlet),
                 ServerReplies.SERVICE);
         notifyCommands = new NotifyCommands(notifier, ServerReplies.SERVICE);
     }
 
-    private static Outlet outlet(SocketHandler h) {
+    /** Counts the replies a watch sends itself (they do not pass the Post Office's outbox) as final (issue 33 item 10). */
+    public void countRepliesIn(WaitingRequests requests) {
+        this.waiting = requests;
+    }
+
+    private volatile WaitingRequests waiting;
+
+    private Outlet outlet(SocketHandler h) {
         return new Outlet() {
             @Override
             public boolean push(OutgoingServerMessage message, byte[] frame, Runnable written) {
@@ -59,6 +67,10 @@ public final class ServerSessions implements AutoCloseable {
 
             @Override
             public void send(OutgoingServerMessage reply) {
+                WaitingRequests w = waiting;
+                if (w != null && reply.footer().status() != Status.PROGRESS) {
+                    w.done(h.clientId(), reply.header());
+                }
                 h.send(reply);
             }
 

@@ -2,7 +2,8 @@ package org.ripv.server.files;
 
 /**
  * The rules for a file name a client or service may give (the thesis's CGI script, appendix D):
- * one path element, no slashes or backslashes, no leading dot, no control characters, at most
+ * one path element, no slashes or backslashes, no leading dot, no control characters (C0, DEL, C1,
+ * line separators) nor bidirectional controls, at most
  * 255 characters.
  */
 public final class FileNames {
@@ -28,8 +29,13 @@ public final class FileNames {
         }
         for (int i = 0; i < name.length(); i++) {
             char c = name.charAt(i);
-            if (c < 0x20 || c == 0x7f) {
+            if (c < 0x20 || c >= 0x7f && c <= 0x9f || c == 0x2028 || c == 0x2029) {
                 throw new IllegalArgumentException("file name '" + shown + "' contains a control character (code " + (int) c + ")");
+            }
+            if (isBidiControl(c)) {
+                // U+202E shows 'evil\u202Efdp.exe' as 'evilexe.pdf' in listings (issue 33 item 10)
+                throw new IllegalArgumentException("file name '" + shown + "' contains a bidirectional control character (U+"
+                        + String.format("%04X", (int) c) + "), which makes a name look like another");
             }
         }
         if (name.equals("~") || name.isBlank() || name.contains(":")) {
@@ -38,10 +44,15 @@ public final class FileNames {
         return name;
     }
 
+    /** The embeddings, overrides and isolates (U+202A–202E, U+2066–2069) and the marks (U+200E, U+200F, U+061C). */
+    static boolean isBidiControl(char c) {
+        return c >= 0x202a && c <= 0x202e || c >= 0x2066 && c <= 0x2069 || c == 0x200e || c == 0x200f || c == 0x061c;
+    }
+
     private static String printable(String s) {
         StringBuilder b = new StringBuilder();
         for (char c : s.toCharArray()) {
-            b.append(c < 0x20 || c == 0x7f ? '?' : c);
+            b.append(c < 0x20 || c >= 0x7f && c <= 0x9f || c == 0x2028 || c == 0x2029 || isBidiControl(c) ? '?' : c);
         }
         return b.toString();
     }

@@ -129,10 +129,8 @@ public final class FileStore {
                     ? -sizeOrZero(uploadPath(name)) : 0);
             if (used + total > quota) {
                 abort(clientId, name);
-                throw new FileTooLargeException("'" + name + "' (" + total + " bytes) would take " + user + " to "
-                        + (used + total) + " bytes in the upload directory; the quota is " + quota
-                        + " bytes (?delete old files first)");
             }
+            requireQuota(user, used, total, quota, "'" + name + "'");
             PrivateFiles.write(part, data, StandardOpenOption.CREATE, StandardOpenOption.TRUNCATE_EXISTING, StandardOpenOption.WRITE);
         } else {
             Upload have = uploads.get(key);
@@ -154,6 +152,57 @@ public final class FileStore {
         }
         uploads.put(key, new Upload(user, total, received, mode));
         return new ChunkResult(received, total, false, name);
+    }
+
+    /** The quota rule, one for the client's chunks and the web form: what a user holds plus what arrives. */
+    private static void requireQuota(String user, long used, long adding, long quota, String what) throws FileTooLargeException {
+        if (used + adding > quota) {
+            throw new FileTooLargeException(what + " (" + adding + " bytes) would take " + user + " to " + (used + adding)
+                    + " bytes in the upload directory; the quota is " + quota + " bytes (?delete old files first)");
+        }
+    }
+
+    /**
+     * Stores whole files that arrived another way (the web form, already on disk, by asked name) for
+     * {@code user}, with the chunks' rules: names checked, never over an existing file, the user's
+     * quota for them together, each remembered as theirs ({@code .owners}) and owner-only. All or none.
+     *
+     * @return the names stored
+     * @throws FileExistsException   a name is taken (nothing stored)
+     * @throws FileTooLargeException over the upload limit or the quota (nothing stored)
+     */
+    public synchronized List<String> storeWhole(String user, Map<String, Path> files, long quota) throws IOException {
+        long adding = 0;
+        for (Map.Entry<String, Path> f : files.entrySet()) {
+            if (Files.exists(uploadPath(f.getKey()))) {
+                throw exists(f.getKey());
+            }
+            long size = Files.size(f.getValue());
+            if (size > maxUpload) {
+                throw new FileTooLargeException("'" + f.getKey() + "' is " + size + " bytes; the upload limit is " + maxUpload + " bytes");
+            }
+            adding += size;
+        }
+        requireQuota(user, usedBy(user, ""), adding, quota, files.size() == 1 ? "'" + files.keySet().iterator().next() + "'"
+                : files.size() + " files");
+        List<String> stored = new ArrayList<>();
+        try {
+            for (Map.Entry<String, Path> f : files.entrySet()) {
+                PrivateFiles.restrict(f.getValue());
+                if (!linkInto(f.getValue(), f.getKey())) {
+                    throw exists(f.getKey());
+                }
+                stored.add(f.getKey());
+            }
+        } catch (IOException | RuntimeException e) {
+            for (String name : stored) {
+                Files.deleteIfExists(uploadPath(name)); // all or none
+            }
+            throw e;
+        }
+        stored.forEach(name -> owners.setProperty(name, user));
+        saveOwners();
+        return stored;
     }
 
     private static FileExistsException exists(String name) {

@@ -208,15 +208,19 @@ public final class PermitFile {
     }
 
     /**
-     * Adds a user or changes an existing one's password (and roles, when given), rewriting the
-     * file through a temporary file so that a crash never leaves it half written.
+     * Adds a user or changes an existing one's password (and roles, when given; the stored hash is
+     * kept when the password is the same), rewriting the file through a temporary file so that a crash never leaves it half written.
      */
     public static void setUser(Path file, String name, char[] password, List<String> roles, int iterations) throws IOException {
         if (!name.matches("[A-Za-z0-9._@-]{1,64}")) {
             throw new IllegalArgumentException("a user name is 1–64 letters, digits, '.', '_', '@' or '-', got '" + name + "'");
         }
         PermitFile current = load(file);
-        String hash = Passwords.hash(password, iterations);
+        // The same password keeps its hash: a change of roles alone is not a password change, which
+        // logs the user out everywhere (org.ripv.server.security.StaleLogins).
+        String had = current.user(name).map(User::hash).orElse(null);
+        String hash = had != null && had.split("\\$").length == 4 && had.split("\\$")[1].equals(String.valueOf(iterations))
+                && Passwords.verify(password, had) ? had : Passwords.hash(password, iterations);
         List<String> out = new ArrayList<>();
         boolean replaced = false;
         for (String line : current.lines) {

@@ -10,7 +10,9 @@ import org.ripv.messages.Header;
 import org.ripv.messages.Ids;
 import org.ripv.messages.IncomingServerMessage;
 import org.ripv.messages.OutgoingServerMessage;
+import org.ripv.messages.Status;
 import org.ripv.post.MailBox;
+import org.ripv.server.clients.WaitingRequests;
 import org.ripv.server.handlers.SocketHandler;
 import org.ripv.server.requests.ServerReplies;
 import org.slf4j.Logger;
@@ -28,21 +30,24 @@ public final class ServerTaskManager extends TaskManager<IncomingServerMessage, 
     private final Consumer<IncomingServerMessage> commands;
     private final Admission admission;
     private final Predicate<OutgoingServerMessage> workflowReplies;
+    private final WaitingRequests waiting;
     private final Function<String, Optional<SocketHandler>> clients;
     private final Consumer<OutgoingServerMessage> outbox;
 
     /**
      * @param commands        runs a {@code ?} command
      * @param workflowReplies takes a workflow step's reply (true), or leaves it (false)
+     * @param waiting         each client's requests waiting for their final reply
      * @param clients         the connected client of an id
      * @param outbox          where a refusal goes (the Post Office's outbox)
      */
     public ServerTaskManager(Consumer<IncomingServerMessage> commands, Admission admission,
-                             Predicate<OutgoingServerMessage> workflowReplies, Function<String, Optional<SocketHandler>> clients,
-                             Consumer<OutgoingServerMessage> outbox) {
+                             Predicate<OutgoingServerMessage> workflowReplies, WaitingRequests waiting,
+                             Function<String, Optional<SocketHandler>> clients, Consumer<OutgoingServerMessage> outbox) {
         this.commands = commands;
         this.admission = admission;
         this.workflowReplies = workflowReplies;
+        this.waiting = waiting;
         this.clients = clients;
         this.outbox = outbox;
     }
@@ -63,6 +68,9 @@ public final class ServerTaskManager extends TaskManager<IncomingServerMessage, 
     public void parseFooter(MailBox<IncomingServerMessage, OutgoingServerMessage> box, OutgoingServerMessage reply) {
         if (workflowReplies.test(reply)) {
             return; // a workflow step's reply: the runner judges it
+        }
+        if (reply.footer().status() != Status.PROGRESS) {
+            waiting.done(reply.header().origin().clientId(), reply.header()); // its final reply: no longer waiting
         }
         Optional<SocketHandler> client = clients.apply(reply.header().origin().clientId());
         if (client.isEmpty()) {

@@ -59,7 +59,12 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
     @Override
     public void onWebSocketOpen(Session session) {
         this.socket = session;
-        login.sockets.add(this);
+        String refused = sessions.admitSocket(login, this);
+        if (refused != null) {
+            log.info("web console socket of {} from {} refused: {}", login.user, address.getHostAddress(), refused);
+            session.close(1008, truncate(refused), Callback.NOOP);
+            return;
+        }
         try {
             client = door.open(this, login.user, login.roles);
         } catch (IOException e) {

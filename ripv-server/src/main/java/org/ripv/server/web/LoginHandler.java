@@ -98,6 +98,13 @@ final class LoginHandler extends Handler.Abstract {
             sessions.end(before.id); // never carried over a log-in: a planted id dies here
         }
         Session s = sessions.create(r.user(), r.roles());
+        if (s == null) {
+            log.warn("web log-in of {} refused: {} web sessions are open, the most this server keeps", r.user(), WebSessions.MAX_SESSIONS);
+            Pages.fail(response, callback, 503, "Log-in refused", "This server has " + WebSessions.MAX_SESSIONS
+                    + " web log-ins open, the most it keeps; try again in a few minutes (idle ones end after "
+                    + WebConsole.SESSION_IDLE.toMinutes() + " minutes) or use the RIPV client.");
+            return;
+        }
         response.getHeaders().add(HttpHeader.SET_COOKIE, sessions.cookie(s, secure));
         Pages.redirect(response, callback, "/fleet.html");
     }

@@ -3,13 +3,14 @@ package org.ripv.server.web;
 import static org.ripv.server.web.Pages.html;
 
 import java.io.IOException;
-import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashSet;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.Set;
 import java.util.UUID;
 import org.eclipse.jetty.http.HttpHeader;
@@ -20,7 +21,10 @@ import org.eclipse.jetty.server.Handler;
 import org.eclipse.jetty.server.Request;
 import org.eclipse.jetty.server.Response;
 import org.eclipse.jetty.util.Callback;
+import org.ripv.files.PrivateFiles;
+import org.ripv.server.files.FileExistsException;
 import org.ripv.server.files.FileNames;
+import org.ripv.server.files.FileTooLargeException;
 import org.ripv.server.web.WebSessions.Session;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -43,13 +47,15 @@ final class UploadHandler extends Handler.Abstract {
     private final WebAccess access;
     private final boolean uploads;
     private final WebSessions sessions;
+    private final FormUploads store;
 
-    UploadHandler(Path uploadDir, long maxUploadBytes, WebAccess access, boolean uploads, WebSessions sessions) {
+    UploadHandler(Path uploadDir, long maxUploadBytes, WebAccess access, boolean uploads, WebSessions sessions, FormUploads store) {
         this.uploadDir = uploadDir;
         this.maxUploadBytes = maxUploadBytes;
         this.access = access;
-        this.uploads = uploads;
+        this.uploads = uploads && store != null;
         this.sessions = sessions;
+        this.store = store;
     }
 
     @Override
@@ -78,8 +84,7 @@ final class UploadHandler extends Handler.Abstract {
                     + " (use the upload form). Nothing was saved.");
             return true;
         }
-        Path parking = uploadDir.resolve(".ripv-form");
-        Files.createDirectories(parking);
+        Path parking = PrivateFiles.createDirectories(uploadDir.resolve(".ripv-form")); // 0700, as the rest
         MultiPartConfig config = new MultiPartConfig.Builder().location(parking).maxParts(MAX_PARTS)
                 .maxSize(maxUploadBytes + FORM_OVERHEAD).maxPartSize(maxUploadBytes).maxMemoryPartSize(16 * 1024)
                 .maxHeadersSize(8 * 1024).build();
@@ -172,32 +177,50 @@ final class UploadHandler extends Handler.Abstract {
                     + WebSessions.MAX_FILES + " files, " + 4 * maxUploadBytes + " bytes); log in again later. None of the files were saved.");
             return;
         }
-        // Every file arrived and passed the rules: each is written beside the folder, then moved in, never over another.
+        // Every file arrived and passed the form's rules: each is parked owner-only, then the store applies the client's
+        // rules (quota, owners, never over another file) to all of them at once.
         List<Path> parked = new ArrayList<>();
         try {
+            Map<String, Path> byName = new LinkedHashMap<>();
             for (MultiPart.Part p : files) {
                 Path tmp = uploadDir.resolve(".ripv-form").resolve(UUID.randomUUID() + ".part");
-                p.writeTo(tmp);
                 parked.add(tmp);
+                p.writeTo(tmp); // inside the 0700 parking folder; owner-only before it is linked in
+                PrivateFiles.restrict(tmp);
+                byName.put(p.getFileName(), tmp);
+            }
+            List<String> stored;
+            try {
+                stored = store.store(s.user, byName);
+            } catch (FileExistsException e) {
+                discard(parked);
+                Pages.fail(response, callback, 409, "File exists", e.getMessage() + " The web page never replaces a file. None of the files were saved.");
+                return;
+            } catch (FileTooLargeException e) {
+                discard(parked);
+                Pages.fail(response, callback, 413, "Over your quota", e.getMessage() + ". None of the files were saved.");
+                return;
             }
             StringBuilder saved = new StringBuilder();
             for (int i = 0; i < files.size(); i++) {
                 String name = files.get(i).getFileName();
-                try {
-                    Files.move(parked.get(i), uploadDir.resolve(name));
-                } catch (FileAlreadyExistsException e) {
-                    Pages.fail(response, callback, 409, "File exists", "A file named " + name + " arrived meanwhile; nothing of it was replaced.");
-                    return;
+                if (!stored.contains(name)) {
+                    continue;
                 }
                 saved.append("<li>").append(html(name)).append(" (").append(files.get(i).getLength()).append(" bytes)</li>");
                 log.info("web upload stored {} ({} bytes) for {} from {}", name, files.get(i).getLength(), s.user, Request.getRemoteAddr(request));
             }
+            discard(parked); // the stored files are links of their own: the parked names go before the answer
             Pages.send(response, callback, 200, "text/html; charset=utf-8", Pages.page("Upload complete",
                     "<p>Saved in the server's upload directory:</p><ul id=\"saved\">" + saved + "</ul><p><a href=\"/\">Back</a></p>"));
         } finally {
-            for (Path p : parked) {
-                Files.deleteIfExists(p);
-            }
+            discard(parked);
+        }
+    }
+
+    private static void discard(List<Path> parked) throws IOException {
+        for (Path p : parked) {
+            Files.deleteIfExists(p);
         }
     }
 }

@@ -12,8 +12,10 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
+import java.util.Set;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.TimeUnit;
 import java.util.function.Supplier;
 import javax.net.ssl.SSLContext;
 import org.eclipse.jetty.http.HttpVersion;
@@ -58,6 +60,8 @@ public final class WebConsole implements AutoCloseable {
     static final Duration IDLE = Duration.ofSeconds(20);
     static final Duration SESSION_IDLE = Duration.ofMinutes(30);
     static final Duration SESSION_ABSOLUTE = Duration.ofHours(12);
+    /** How often expired sessions are looked for. */
+    static final Duration SWEEP = Duration.ofSeconds(10);
     /**
      * Open connections at most: well above the thousand slow ones a visitor must outlast, and room
      * for the 10,000 pages of a public outreach day (a page costs no thread: docs/web.md).
@@ -117,6 +121,7 @@ public final class WebConsole implements AutoCloseable {
     private ServerConnector connector;
     private ScheduledExecutorService timer;
     private volatile PublicFleet publicFleet;
+    private volatile FormUploads formUploads;
 
     public WebConsole(Options options) {
         this.options = Objects.requireNonNull(options, "options");
@@ -125,6 +130,18 @@ public final class WebConsole implements AutoCloseable {
     /** Turns the public view on ({@code --public GLOB}): anonymous visitors get {@code /api/public}; set before {@link #start()}. */
     public WebConsole withPublicView(PublicFleet fleet) {
         this.publicFleet = fleet;
+        return this;
+    }
+
+    /** Pages (WebSockets) one user may have open over all their log-ins, one log-in half of it ({@code --web-pages}). */
+    public WebConsole withPagesPerUser(int n) {
+        sessions.pagesPerUser(n);
+        return this;
+    }
+
+    /** Where the upload form stores files (the server's FileStore, with ?upload's rules); without it the form takes none. Before {@link #start()}. */
+    public WebConsole withFormUploads(FormUploads store) {
+        this.formUploads = store;
         return this;
     }
 
@@ -165,6 +182,8 @@ public final class WebConsole implements AutoCloseable {
             t.setDaemon(true);
             return t;
         });
+        // An expired log-in's pages are closed within this, not only at their next request (issue 33 item 10).
+        timer.scheduleWithFixedDelay(sessions::sweep, SWEEP.toMillis(), SWEEP.toMillis(), TimeUnit.MILLISECONDS);
         HeaderDeadline deadline = new HeaderDeadline(null, HEADER_DEADLINE.toMillis(), timer);
         c.addBean(deadline);
         deadline.setHandler(new SecurityHeaders(handlers(s), options.tls() != null, tileOrigin(options.mapTiles())));
@@ -206,7 +225,7 @@ public final class WebConsole implements AutoCloseable {
             chain.add(new LoginHandler(options.access(), sessions, tls, settings));
         }
         chain.add(new UploadHandler(options.uploadDir(), options.maxUploadBytes(), options.access(),
-                options.uploads() && options.access() != null, sessions));
+                options.uploads() && options.access() != null, sessions, formUploads));
         chain.add(new PublicHandler(publicFleet, options.mapTiles()));
         chain.add(webjarContext);
         chain.add(pages);
@@ -230,6 +249,12 @@ public final class WebConsole implements AutoCloseable {
                 WebSessions.Session login = sessions.find(request);
                 if (login == null) {
                     Response.writeError(request, response, callback, 403, "log in first");
+                    return null;
+                }
+                String full = sessions.admitSocket(login, null);
+                if (full != null) {
+                    log.info("web console socket of {} refused from {}: {}", login.user, Request.getRemoteAddr(request), full);
+                    Response.writeError(request, response, callback, 429, full);
                     return null;
                 }
                 // The browser's address, for the gate's per-address rules and the log lines.
@@ -257,6 +282,14 @@ public final class WebConsole implements AutoCloseable {
             Pages.send(response, callback, 404, "text/plain; charset=utf-8", "no page " + Request.getPathInContext(request) + " here; see /\n");
             return true;
         }
+    }
+
+    /**
+     * The permit file changed (issue 33 item 4): the sessions of {@code ended} users end (their pages
+     * close); users in {@code roles} keep their sessions with the new roles.
+     */
+    public void usersChanged(Set<String> ended, Map<String, List<String>> roles) {
+        sessions.usersChanged(ended, roles);
     }
 
     /** The bound port. */

@@ -19,11 +19,23 @@ import org.eclipse.jetty.server.Request;
  * SameSite=Strict cookie; a separate random CSRF token every state change must send back; an
  * idle and an absolute expiry; the pages' open WebSockets, closed when the session ends. A
  * session id is only ever made here at a log-in, so an id planted before it is never kept.
- * Bounded: the oldest session goes when there are too many.
+ * Bounded per user and in all (issue 33 items 2 and 3): a user's new log-in past
+ * {@link #MAX_SESSIONS_PER_USER} ends that user's own oldest session, never another user's; with
+ * {@link #MAX_SESSIONS} live a log-in is refused; a session opens at most
+ * {@link #MAX_SOCKETS_PER_SESSION} WebSockets and a user at most {@link #MAX_SOCKETS_PER_USER}, so one
+ * log-in cannot take the server's client places. Expired sessions are swept (their sockets closed).
  */
 final class WebSessions {
     static final String COOKIE = "ripv-session";
     static final int MAX_SESSIONS = 1000;
+    /** Browsers (devices, profiles) one user may be logged in from at once. */
+    static final int MAX_SESSIONS_PER_USER = 16;
+    /** Pages (tabs) one log-in may have open by default: each page is one WebSocket and one Post Office client. */
+    static final int MAX_SOCKETS_PER_SESSION = 32;
+    /** Pages one user may have open over all their log-ins by default ({@code --web-pages}). */
+    static final int MAX_SOCKETS_PER_USER = 64;
+    private volatile int socketsPerSession = MAX_SOCKETS_PER_SESSION;
+    private volatile int socketsPerUser = MAX_SOCKETS_PER_USER;
     /** Files one session may upload. */
     static final int MAX_FILES = 100;
 
@@ -34,7 +46,8 @@ final class WebSessions {
         final String id = random();
         final String csrf = random();
         final String user;
-        final List<String> roles;
+        /** Re-derived when the permit file changes (item 4): the next page and every request use the new roles. */
+        volatile List<String> roles;
         final long created;
         volatile long lastSeen;
         long bytes;
@@ -65,13 +78,78 @@ final class WebSessions {
         this.clock = clock;
     }
 
+    /**
+     * A new session for a log-in, or null when {@link #MAX_SESSIONS} are live (the log-in is refused:
+     * no other user's session is ended to make room). The user's own oldest session ends when they
+     * already have {@link #MAX_SESSIONS_PER_USER}.
+     */
     synchronized Session create(String user, List<String> roles) {
+        sweep();
+        List<Session> own = sessions.values().stream().filter(x -> x.user.equals(user)).toList(); // oldest first
+        for (int i = 0; i <= own.size() - MAX_SESSIONS_PER_USER; i++) {
+            end(own.get(i).id);
+        }
         if (sessions.size() >= MAX_SESSIONS) {
-            end(sessions.keySet().iterator().next());
+            return null;
         }
         Session s = new Session(user, roles, clock.getAsLong());
         sessions.put(s.id, s);
         return s;
+    }
+
+    /** Pages one user may have open ({@code --web-pages}); one log-in at most half of it. */
+    void pagesPerUser(int n) {
+        socketsPerUser = n;
+        socketsPerSession = Math.max(1, n / 2);
+    }
+
+    /** Ends every expired session, closing its pages' WebSockets (a page of an expired log-in gets no more pushes). */
+    synchronized int sweep() {
+        long now = clock.getAsLong();
+        List<String> expired = sessions.values().stream()
+                .filter(s -> now - s.lastSeen > idleMillis || now - s.created > absoluteMillis).map(s -> s.id).toList();
+        expired.forEach(this::end);
+        return expired.size();
+    }
+
+    /**
+     * Why the session may open no further WebSocket, or null. {@code socket} non-null: it is counted
+     * now (atomically with the check); null: only asked (before the upgrade, so a refusal costs little).
+     */
+    synchronized String admitSocket(Session s, AutoCloseable socket) {
+        if (sessions.get(s.id) != s) {
+            return "the session has ended; log in again";
+        }
+        if (socket != null && s.sockets.contains(socket)) {
+            return null;
+        }
+        if (s.sockets.size() >= socketsPerSession) {
+            return "this log-in has " + socketsPerSession + " pages open, the most it may; close one and reload";
+        }
+        int mine = sessions.values().stream().filter(x -> x.user.equals(s.user)).mapToInt(x -> x.sockets.size()).sum();
+        if (mine >= socketsPerUser) {
+            return s.user + " has " + socketsPerUser + " pages open over all log-ins, the most a user may; close one and reload";
+        }
+        if (socket != null) {
+            s.sockets.add(socket);
+        }
+        return null;
+    }
+
+    /** Ends the sessions of {@code ended} users; gives the sessions of users in {@code roles} their new roles. */
+    synchronized void usersChanged(Set<String> ended, Map<String, List<String>> roles) {
+        for (Session s : List.copyOf(sessions.values())) {
+            if (ended.contains(s.user)) {
+                end(s.id);
+            } else if (roles.containsKey(s.user)) {
+                s.roles = List.copyOf(roles.get(s.user));
+            }
+        }
+    }
+
+    /** The live sessions of a user. */
+    synchronized List<Session> of(String user) {
+        return sessions.values().stream().filter(x -> x.user.equals(user)).toList();
     }
 
     /** The live session the request's cookie names (touching it), or null. */

@@ -5,6 +5,7 @@ import java.nio.file.Path;
 import java.util.List;
 import org.ripv.server.store.EmbeddedStateStore;
 import org.ripv.server.store.StateStore;
+import org.ripv.text.Printable;
 
 /**
  * The receipts of every run, kept in the server's {@link StateStore} (embedded: one owner-only
@@ -27,7 +28,9 @@ final class Receipts {
 
     /** Stores a receipt, replacing this run's earlier one; keeps the newest {@link #KEEP} (an every-call workflow leaves one per call). */
     void write(Receipt r) throws IOException {
-        store.saveReceipt(r.mailbox, r.fileName(), r.render(), KEEP);
+        // A notify text or a vehicle's reply may hold ESC, BEL or C1 (CSI, OSC): stored escaped, so `cat` of a receipt
+        // file is text, never a terminal command (issue 33 item 10); line feeds and tabs stay.
+        store.saveReceipt(r.mailbox, r.fileName(), Printable.escape(r.render()), KEEP);
     }
 
     /** The last {@code n} receipts of a MailBox, oldest first. */

@@ -15,8 +15,9 @@ import org.slf4j.LoggerFactory;
 /**
  * Runs one MailBox's queue during one call: each workflow in order, each step through the
  * server's request path, holding the MailBox's operator lock for the workflow's duration. Stops
- * when the queue is done, a step fails (the workflow stays at the head for the next call), or
- * the call ends (the cut step runs again on the next call).
+ * when the queue is done or the call ends (the cut step runs again on the next call). A failed
+ * step keeps its workflow at its place for the next call and holds back that owner's later
+ * workflows; other users' workflows behind it still run.
  *
  * <p>Its parts: {@link CallGate} (the call, and waiting at a boundary), {@link LockTurn} (the
  * lock at each boundary, pause and resume), {@link StepRequests} (a step's request and its reply),
@@ -78,18 +79,23 @@ final class Runner implements Runnable {
     @Override
     public void run() {
         Set<Long> ran = new HashSet<>();
+        // A failed workflow holds back its owner's later workflows (their order is its owner's), never another user's:
+        // one user's failing workflow must not block everyone's queue (issue 33 item 10).
+        Set<String> held = new HashSet<>();
         try {
             sendToVehicle();
             while (gate.ended() == null && !workflows.closed()) {
-                Optional<QueuedWorkflow> next = workflows.queues.list(mailbox).stream().filter(e -> !ran.contains(e.id()))
-                        .findFirst();
+                Optional<QueuedWorkflow> next = workflows.queues.list(mailbox).stream()
+                        .filter(e -> !ran.contains(e.id()) && !held.contains(e.owner())).findFirst();
                 if (next.isEmpty()) {
                     break;
                 }
                 ran.add(next.get().id());
                 String result = runOne(next.get());
-                if (!result.equals("DONE") && !result.equals("DONE_WITH_ERRORS") && !result.equals("REMOVED")) {
-                    break; // a failed workflow holds the head of the queue; a cut call stops everything
+                if (result.equals("FAILED")) {
+                    held.add(next.get().owner());
+                } else if (!result.equals("DONE") && !result.equals("DONE_WITH_ERRORS") && !result.equals("REMOVED")) {
+                    break; // a cut call stops everything
                 }
             }
         } catch (IOException | RuntimeException e) {

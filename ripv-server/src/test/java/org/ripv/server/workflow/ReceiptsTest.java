@@ -43,6 +43,23 @@ class ReceiptsTest {
     }
 
     @Test
+    void controlCharactersFromAWorkflowAreStoredEscaped() throws Exception {
+        Receipts receipts = new Receipts(dir);
+        Receipt r = new Receipt(MB, 8, "evil.wf", "mallory", 1, 0);
+        r.steps.add(new Receipt.StepRecord(0, 1, 2, "notify", 1000, 1100, "OK", "\u001b]0;pwned\u0007\u001b[2J\u009b31mred\rfake",
+                List.of(), ""));
+        r.result = "DONE";
+        receipts.write(r);
+        Path d = dir.resolve(org.ripv.server.store.DataFiles.key(MB));
+        String stored;
+        try (var files = Files.list(d)) {
+            stored = Files.readString(files.findFirst().orElseThrow());
+        }
+        assertThat(stored).doesNotContain("\u001b", "\u0007", "\u009b", "\r")
+                .contains("^[]0;pwned^G^[[2J\\u009b31mred\\rfake").contains("\n");
+    }
+
+    @Test
     void onlyTheNewestAreKept() throws Exception {
         Receipts receipts = new Receipts(dir);
         Path d = dir.resolve(org.ripv.server.store.DataFiles.key(MB));

@@ -68,6 +68,9 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
     private Statement runningStatement;
     private Thread runningThread;
     private volatile boolean cancelRequested;
+    /** True while an ingest runs (it has no one statement to cancel: it looks at cancelRequested between rows). */
+    private boolean ingesting;
+    private org.ripv.services.ingest.IngestLimits ingestLimits = org.ripv.services.ingest.IngestLimits.defaults();
 
     public DatabaseHandler(DatabaseTarget target, QueryLimits limits) {
         this(target, limits, IngestNotices.NONE);
@@ -81,6 +84,12 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
         this.availability = Availability.available(describe());
     }
 
+    /** Sets how much one ingested file may hold ({@code --ingest-max-bytes}, {@code --ingest-max-rows}). */
+    public DatabaseHandler withIngestLimits(org.ripv.services.ingest.IngestLimits limits) {
+        this.ingestLimits = java.util.Objects.requireNonNull(limits, "limits");
+        return this;
+    }
+
     /** Loads the driver and opens the owner connection now, so a bad URL shows at start. */
     public void connect() throws SQLException {
         connection(false);
@@ -90,6 +99,16 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
     public Reply execute(Request request) {
         if (IngestCommand.matches(request.command())) {
             return ingest(request);
+        }
+        if (ViewQuery.appliesTo(request.roles())) {
+            // a view user: one SELECT from one view, read-only, under a short time limit (issue 33 item 6)
+            String refused = ViewQuery.refusal(request.command() == null ? "" : request.command());
+            if (refused != null) {
+                return Reply.error(ErrorCode.FORBIDDEN, refused);
+            }
+            int limit = limits.queryTimeoutSeconds() == 0 ? ViewQuery.TIMEOUT_SECONDS
+                    : Math.min(limits.queryTimeoutSeconds(), ViewQuery.TIMEOUT_SECONDS);
+            return run(request.command(), true, limit);
         }
         return run(request.command(), readsOnly(request.roles()));
     }
@@ -104,15 +123,28 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
         if (readsOnly(request.roles())) {
             return Reply.error(ErrorCode.FORBIDDEN, "you may only read this database; ingest writes to it");
         }
+        synchronized (this) {
+            ingesting = true;
+            cancelRequested = false;
+        }
         try {
-            return ingest.run(request, connection(false));
+            return ingest.run(request, connection(false), ingestLimits, () -> cancelRequested);
         } catch (SQLException e) {
             return Reply.error(ErrorCode.NOT_AVAILABLE, "cannot connect to " + target.safeUrl() + ": " + describe(e));
+        } finally {
+            synchronized (this) {
+                ingesting = false;
+            }
         }
     }
 
     /** Runs one SQL command as the owner, or as the reader. */
     public Reply run(String command, boolean asReader) {
+        return run(command, asReader, limits.queryTimeoutSeconds());
+    }
+
+    /** As above, cancelled after {@code timeoutSeconds} (0: no limit). */
+    Reply run(String command, boolean asReader, int timeoutSeconds) {
         List<String> statements;
         try {
             statements = SqlScript.split(command == null ? "" : command);
@@ -147,7 +179,7 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
             // One row more than we keep tells us the result was cut.
             st.setMaxRows(limits.maxRows() + 1);
             st.setFetchSize(Math.min(limits.maxRows() + 1, 1000));
-            st.setQueryTimeout(limits.queryTimeoutSeconds());
+            st.setQueryTimeout(timeoutSeconds);
             if (st.execute(sql)) {
                 try (ResultSet rs = st.getResultSet()) {
                     TableResult table = table(sql, rs);
@@ -186,6 +218,10 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
      */
     @Override
     public synchronized boolean cancel(Request running) {
+        if (ingesting) {
+            cancelRequested = true; // the ingest stops at its next look, rolling back the file under way
+            return true;
+        }
         Statement st = runningStatement;
         if (st == null) {
             return false;

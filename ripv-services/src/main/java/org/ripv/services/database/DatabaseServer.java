@@ -38,6 +38,7 @@ public final class DatabaseServer extends RIPVService {
     private final List<DatabaseTarget> targets;
     private final QueryLimits limits;
     private final List<DatabaseHandler> handlers = new ArrayList<>();
+    private volatile org.ripv.services.ingest.IngestLimits ingestLimits = org.ripv.services.ingest.IngestLimits.defaults();
 
     public DatabaseServer(String host, List<DatabaseTarget> targets, QueryLimits limits) {
         super(NAME, Ids.SID_DATABASE, host);
@@ -52,6 +53,12 @@ public final class DatabaseServer extends RIPVService {
         }
         this.targets = List.copyOf(targets);
         this.limits = Objects.requireNonNull(limits, "limits");
+    }
+
+    /** How much one ingested file may hold (issue 33 item 8); set before the service starts. */
+    public DatabaseServer withIngestLimits(org.ripv.services.ingest.IngestLimits limits) {
+        this.ingestLimits = Objects.requireNonNull(limits, "limits");
+        return this;
     }
 
     /** The MailBox handles for {@code n} databases: TTY1, TTY2, ... (COM1, COM2, ... on Windows). */
@@ -69,7 +76,7 @@ public final class DatabaseServer extends RIPVService {
     protected void open() {
         for (DatabaseTarget t : targets) {
             DatabaseHandler h = new DatabaseHandler(t, limits,
-                    IngestNotices.publishing(name().mailbox(t.handle()).toString(), this::publish));
+                    IngestNotices.publishing(name().mailbox(t.handle()).toString(), this::publish)).withIngestLimits(ingestLimits);
             try {
                 h.connect();
             } catch (SQLException e) {

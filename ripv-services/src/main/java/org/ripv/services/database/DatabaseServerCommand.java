@@ -55,6 +55,14 @@ public final class DatabaseServerCommand implements Callable<Integer> {
             description = "Characters of cell text one reply may carry; keeps a table inside one 16 MiB frame (default: ${DEFAULT-VALUE}).")
     long maxResultChars;
 
+    @Option(names = "--ingest-max-bytes", paramLabel = "BYTES", defaultValue = "" + org.ripv.services.ingest.IngestLimits.DEFAULT_MAX_PLAIN_BYTES,
+            description = "Bytes one compressed Slocum file may decompress to; a larger one is refused (default: ${DEFAULT-VALUE}).")
+    long ingestMaxBytes;
+
+    @Option(names = "--ingest-max-rows", paramLabel = "N", defaultValue = "" + org.ripv.services.ingest.IngestLimits.DEFAULT_MAX_ROWS,
+            description = "Rows (cycles) one ingested file may hold; a larger one is refused, nothing of it stored (default: ${DEFAULT-VALUE}).")
+    long ingestMaxRows;
+
     /** One database's connection settings. */
     static final class Database {
         @Option(names = "--driver", paramLabel = "CLASS",
@@ -114,7 +122,8 @@ public final class DatabaseServerCommand implements Callable<Integer> {
                         d.schema));
             }
         }
-        return new DatabaseServer(host, targets, limits);
+        return new DatabaseServer(host, targets, limits).withIngestLimits(new org.ripv.services.ingest.IngestLimits(ingestMaxBytes,
+                ingestMaxRows));
     }
 
     /** Where launch warnings go (standard error; injectable for tests). */

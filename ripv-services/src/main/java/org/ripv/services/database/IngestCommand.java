@@ -102,6 +102,11 @@ final class IngestCommand {
     }
 
     Reply run(Request request, Connection c) {
+        return run(request, c, org.ripv.services.ingest.IngestLimits.defaults(), () -> false);
+    }
+
+    /** As above, each file within {@code limits}, stopping when {@code cancelled} says so ({@code ?cancel}). */
+    Reply run(Request request, Connection c, org.ripv.services.ingest.IngestLimits limits, java.util.function.BooleanSupplier cancelled) {
         List<String> names = request.arguments();
         if (names.isEmpty()) {
             return Reply.error(ErrorCode.BAD_REQUEST, "usage: ingest NAME... (Slocum DBA files in the server's download"
@@ -127,7 +132,8 @@ final class IngestCommand {
         List<String> lines = new ArrayList<>();
         int refused = 0;
         long values = 0;
-        DbaIngest ingest = new DbaIngest(c);
+        DbaIngest ingest = new DbaIngest(c).limitedBy(limits, cancelled);
+        slocum.limit(limits.maxPlainBytes());
         // Cache files first: a bundle of ymodem:get *.sbd *.cac decodes whatever its order.
         List<Attachment> ordered = new ArrayList<>(files.stream().filter(f -> SlocumArrivals.isCache(f.name())).toList());
         files.stream().filter(f -> !SlocumArrivals.isCache(f.name())).forEach(ordered::add);
@@ -163,6 +169,17 @@ final class IngestCommand {
                         + ".cac, or upload it and ingest it); it is ingested by itself when that arrives");
                 notices.waiting(f.name(), e.crc(), request.user());
                 log.info("{} ingest {} for {}: waits for {}.cac", target.handle(), f.name(), request.user(), e.crc());
+            } catch (org.ripv.services.ingest.IngestStopped e) {
+                if (e.cancelled()) {
+                    lines.add(e.getMessage());
+                    log.info("{} ingest of {} for {} cancelled", target.handle(), f.name(), request.user());
+                    refreshWaiting();
+                    return Reply.error(ErrorCode.CANCELLED, String.join("\n", lines) + "\ningest cancelled: the files above it"
+                            + " were stored, the rest were not");
+                }
+                refused++;
+                lines.add(f.name() + ": refused, nothing stored: " + e.getMessage());
+                log.info("{} ingest {} for {} refused: {}", target.handle(), f.name(), request.user(), e.getMessage());
             } catch (DbaFormatException | org.ripv.services.ingest.SlocumFormatException | IllegalArgumentException e) {
                 refused++;
                 lines.add(f.name() + ": refused, nothing stored: " + e.getMessage());

@@ -24,6 +24,7 @@ import org.ripv.services.ingest.SlocumFormatException;
 final class SlocumArrivals {
     private final SensorListCache cache;
     private final Path waiting;
+    private volatile long maxPlainBytes = org.ripv.services.ingest.IngestLimits.DEFAULT_MAX_PLAIN_BYTES;
 
     SlocumArrivals(Path base) {
         this.cache = new SensorListCache(base.resolve("sensor-cache"));
@@ -44,6 +45,11 @@ final class SlocumArrivals {
                 target.handle().replaceAll("[^A-Za-z0-9._-]", "_")));
     }
 
+    /** Decompress at most this many bytes of one file. */
+    void limit(long maxPlainBytes) {
+        this.maxPlainBytes = maxPlainBytes;
+    }
+
     SensorListCache cache() {
         return cache;
     }
@@ -60,7 +66,7 @@ final class SlocumArrivals {
     /** A binary file's cycles; a file whose cache is missing is kept to wait for it, and the exception thrown. */
     Cycles open(Attachment f) throws IOException, SlocumFormatException {
         try {
-            return SlocumBinaryFiles.cycles(f.name(), f.data(), cache);
+            return SlocumBinaryFiles.cycles(f.name(), f.data(), cache, maxPlainBytes);
         } catch (MissingSensorListException e) {
             Path dir = waiting.resolve(e.crc());
             Files.createDirectories(dir);

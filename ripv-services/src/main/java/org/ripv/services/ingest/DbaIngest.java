@@ -75,9 +75,18 @@ public final class DbaIngest {
     }
 
     private final Connection c;
+    private IngestLimits limits = IngestLimits.defaults();
+    private java.util.function.BooleanSupplier cancelled = () -> false;
 
     public DbaIngest(Connection connection) {
         this.c = connection;
+    }
+
+    /** At most {@code limits.maxRows()} rows a file; {@code cancelled} is asked every {@link IngestLimits#CANCEL_EVERY} rows. */
+    public DbaIngest limitedBy(IngestLimits limits, java.util.function.BooleanSupplier cancelled) {
+        this.limits = limits;
+        this.cancelled = cancelled;
+        return this;
     }
 
     /** The SHA-256 of a file's bytes, as 64 hex digits. */
@@ -129,6 +138,7 @@ public final class DbaIngest {
         if (earlier != null) {
             return earlier;
         }
+        countRows(name, opener); // a file over the row limit is refused before a row is written: the refusal costs less
         boolean auto = c.getAutoCommit();
         c.setAutoCommit(false);
         try (Cycles r = opener.open()) {
@@ -149,6 +159,21 @@ public final class DbaIngest {
             throw e;
         } finally {
             c.setAutoCommit(auto);
+        }
+    }
+
+    /** Decodes the file once without writing, refusing it past the row limit or on a cancel. */
+    private void countRows(String name, Opener opener) throws IOException, DbaFormatException, SlocumFormatException {
+        try (Cycles r = opener.open()) {
+            double[] row = new double[r.header().sensors().size()];
+            while (r.next(row)) {
+                if (r.rows() > limits.maxRows()) {
+                    throw new IngestStopped(limits.tooManyRows(name), false);
+                }
+                if (r.rows() % IngestLimits.CANCEL_EVERY == 0 && cancelled.getAsBoolean()) {
+                    throw new IngestStopped(name + ": cancelled after reading " + r.rows() + " rows; nothing of it stored", true);
+                }
+            }
         }
     }
 
@@ -204,6 +229,12 @@ public final class DbaIngest {
         double last = Double.NaN;
         try (CycleWriter w = new CycleWriter(c, utc, vehicle, cut(dbaName, 255), fileId, h)) {
             while (r.next(row)) {
+                if (r.rows() > limits.maxRows()) {
+                    throw new IngestStopped(limits.tooManyRows(name), false); // rolled back: nothing of the file stays
+                }
+                if (r.rows() % IngestLimits.CANCEL_EVERY == 0 && cancelled.getAsBoolean()) {
+                    throw new IngestStopped(name + ": cancelled after " + r.rows() + " rows; nothing of it stored", true);
+                }
                 double t = r.time(row);
                 if (!Double.isFinite(t) || t < 0 || t > 32_503_680_000d) { // up to year 3000
                     untimed++;

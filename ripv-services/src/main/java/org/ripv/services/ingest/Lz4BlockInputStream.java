@@ -26,10 +26,17 @@ public final class Lz4BlockInputStream extends InputStream {
     private int end;
     private long compressedOffset;
     private long plainOffset;
+    private final long maxPlainBytes;
 
     public Lz4BlockInputStream(InputStream in, String file) {
+        this(in, file, IngestLimits.DEFAULT_MAX_PLAIN_BYTES);
+    }
+
+    /** As above, refusing to decompress more than {@code maxPlainBytes} (an LZ4 bomb: issue 33 item 8). */
+    public Lz4BlockInputStream(InputStream in, String file, long maxPlainBytes) {
         this.in = in;
         this.file = file;
+        this.maxPlainBytes = maxPlainBytes;
     }
 
     /** True for the compressed extensions: the middle letter of a three-letter Slocum extension is 'c'. */
@@ -83,6 +90,10 @@ public final class Lz4BlockInputStream extends InputStream {
             end = LZ4.decompress(compressed, 0, length, block, 0, MAX_BLOCK);
         } catch (LZ4Exception e) {
             throw corrupt("a corrupt LZ4 block of " + length + " bytes (" + e.getMessage() + ")");
+        }
+        if (plainOffset + end > maxPlainBytes) {
+            throw new CompressedFormatException(new SlocumFormatException(file, compressedOffset, "the file decompresses to more"
+                    + " than " + maxPlainBytes + " bytes, the most one file may (the DatabaseServer's --ingest-max-bytes)"));
         }
         compressedOffset += 2 + length;
         return end > 0 || fill();

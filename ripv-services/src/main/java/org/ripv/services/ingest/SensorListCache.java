@@ -19,6 +19,12 @@ import org.ripv.slocum.SlocumFiles;
  * {@code state/cache} folder and a dockserver's {@code cac} folder hold them). Names are matched
  * whatever their case; files are written whole (a temporary file moved into place) and never
  * replaced, so readers on other threads see a list completely or not at all.
+ *
+ * <p>A list is kept, taken and used only when it has the CRC it is filed under, computed as the
+ * glider's firmware does ({@link #crcOf}: every one of the real cache files in the shared test data
+ * is named by it). Before (issue 33 item 7) one cache served every vehicle and the first writer
+ * won: a file from vehicle A claiming B's {@code sensor_list_crc} with its own list was kept as
+ * {@code CRC.cac}, and B's files then decoded with A's list (latitude and longitude swapped).
  */
 public final class SensorListCache {
     private static final Pattern CRC = Pattern.compile("[0-9A-Fa-f]{8}");
@@ -45,7 +51,28 @@ public final class SensorListCache {
         return SlocumFiles.baseName(name);
     }
 
-    /** The lines of the list with this CRC, if the cache holds it. */
+    /**
+     * The CRC a Slocum glider gives a sensor list: CRC-32 (the IEEE polynomial, as {@link java.util.zip.CRC32})
+     * of the list's text — each {@code s:} line ending in a line feed, as in a cache file — without
+     * CRC-32's final inversion; eight lower-case hex digits.
+     */
+    public static String crcOf(byte[] listText) {
+        java.util.zip.CRC32 c = new java.util.zip.CRC32();
+        c.update(listText);
+        return String.format("%08x", ~c.getValue() & 0xffffffffL);
+    }
+
+    /** {@link #crcOf(byte[])} of these lines, each ending in a line feed. */
+    public static String crcOf(List<String> lines) {
+        return crcOf((String.join("\n", lines) + "\n").getBytes(StandardCharsets.ISO_8859_1));
+    }
+
+    /**
+     * The lines of the list with this CRC, if the cache holds it.
+     *
+     * @throws IOException when the cache file does not hold the list with that CRC (put there by hand
+     *                     or by an older version): it is not used, and the message says what to do
+     */
     public Optional<List<String>> lines(String crc) throws IOException {
         Optional<Path> file = find(crc);
         if (file.isEmpty()) {
@@ -54,7 +81,13 @@ public final class SensorListCache {
         if (Files.size(file.get()) > MAX_FILE_BYTES) {
             throw new IOException(file.get() + " is larger than a sensor list can be (" + MAX_FILE_BYTES + " bytes)");
         }
-        return Optional.of(SensorList.lines(Files.readString(file.get(), StandardCharsets.ISO_8859_1)));
+        byte[] data = Files.readAllBytes(file.get());
+        String actual = crcOf(data);
+        if (!actual.equalsIgnoreCase(crc)) {
+            throw new IOException("the cache file " + file.get().getFileName() + " does not hold the sensor list with CRC " + crc
+                    + " (its list's CRC is " + actual + "); it is not used: delete it and fetch the vehicle's own cache file");
+        }
+        return Optional.of(SensorList.lines(new String(data, StandardCharsets.ISO_8859_1)));
     }
 
     public boolean holds(String crc) throws IOException {
@@ -75,12 +108,24 @@ public final class SensorListCache {
         }
     }
 
-    /** Keeps a list read from a file that carries its own, unless the cache holds it already. */
-    public void keep(String crc, List<String> lines) throws IOException {
-        if (!CRC.matcher(crc).matches() || holds(crc)) {
-            return;
+    /**
+     * Keeps a list read from a file that carries its own, unless the cache holds it already or the
+     * list does not have the CRC the file claims (a file may decode with its own list, but never
+     * files another list under someone else's CRC).
+     *
+     * @return false when the list was not kept because its CRC is not the one claimed
+     */
+    public boolean keep(String crc, List<String> lines) throws IOException {
+        if (!CRC.matcher(crc).matches()) {
+            return false;
         }
-        write(crc.toLowerCase(Locale.ROOT) + ".cac", String.join("\n", lines) + "\n");
+        if (!crcOf(lines).equalsIgnoreCase(crc)) {
+            return false;
+        }
+        if (!holds(crc)) {
+            write(crc.toLowerCase(Locale.ROOT) + ".cac", String.join("\n", lines) + "\n");
+        }
+        return true;
     }
 
     /**
@@ -108,6 +153,11 @@ public final class SensorListCache {
             }
         }
         String crc = name.substring(0, 8).toLowerCase(Locale.ROOT);
+        String actual = crcOf((String.join("\n", lines) + "\n").getBytes(StandardCharsets.ISO_8859_1));
+        if (!actual.equals(crc)) {
+            throw new IllegalArgumentException(name + " does not hold the sensor list with CRC " + crc + " (its list's CRC is "
+                    + actual + "): refused, not kept");
+        }
         if (!holds(crc)) {
             write(crc + ".cac", String.join("\n", lines) + "\n");
         }

@@ -25,10 +25,16 @@ public final class SlocumBinaryFiles {
      * @throws SlocumFormatException      when its header cannot be decoded
      */
     public static Cycles cycles(String name, byte[] data, SensorListCache cache) throws IOException, SlocumFormatException {
+        return cycles(name, data, cache, IngestLimits.DEFAULT_MAX_PLAIN_BYTES);
+    }
+
+    /** As above, decompressing at most {@code maxPlainBytes}. */
+    public static Cycles cycles(String name, byte[] data, SensorListCache cache, long maxPlainBytes)
+            throws IOException, SlocumFormatException {
         if (data.length == 0) {
             throw new SlocumFormatException(name, 0, "the file is empty (0 bytes)");
         }
-        SlocumBinaryReader r = SlocumBinaryReader.open(new ByteArrayInputStream(data), name, cache);
+        SlocumBinaryReader r = SlocumBinaryReader.open(new ByteArrayInputStream(data), name, cache, maxPlainBytes);
         return new BinaryCycles(r, name);
     }
 

@@ -111,8 +111,10 @@ public final class SlocumBinaryReader implements AutoCloseable {
                 throw new SlocumFormatException(file, listAt, (factored.equals("1") ? "the cache file " + crc + ".cac does not fit"
                         + " the header (a cache of another list under this CRC?): " : "") + e.getMessage());
             }
-            if (factored.equals("0") && cache != null) {
-                cache.keep(crc, lines);
+            if (factored.equals("0") && cache != null && !cache.keep(crc, lines)) {
+                // the file decodes with its own list, but that list is not filed under a CRC it does not have
+                org.slf4j.LoggerFactory.getLogger(SlocumBinaryReader.class).warn("{}: its sensor list's CRC is {}, not the {} its"
+                        + " header claims; the list is not kept in the sensor-list cache", file, SensorListCache.crcOf(lines), crc);
             }
             this.sizes = new byte[perCycle];
             for (int i = 0; i < perCycle; i++) {
@@ -129,7 +131,14 @@ public final class SlocumBinaryReader implements AutoCloseable {
 
     /** A reader for a file by its name: compressed names ({@code .?cd}) are decompressed on the way. */
     public static SlocumBinaryReader open(InputStream in, String file, SensorListCache cache) throws IOException, SlocumFormatException {
-        return new SlocumBinaryReader(Lz4BlockInputStream.isCompressedName(file) ? new Lz4BlockInputStream(in, file) : in, file, cache);
+        return open(in, file, cache, IngestLimits.DEFAULT_MAX_PLAIN_BYTES);
+    }
+
+    /** As above, decompressing at most {@code maxPlainBytes}. */
+    public static SlocumBinaryReader open(InputStream in, String file, SensorListCache cache, long maxPlainBytes)
+            throws IOException, SlocumFormatException {
+        return new SlocumBinaryReader(Lz4BlockInputStream.isCompressedName(file) ? new Lz4BlockInputStream(in, file, maxPlainBytes)
+                : in, file, cache);
     }
 
     /** True for the names of Slocum binary data files, plain or compressed ({@code .sbd}, {@code .tcd}, …). */

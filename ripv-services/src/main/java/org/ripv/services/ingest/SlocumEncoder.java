@@ -41,12 +41,15 @@ public final class SlocumEncoder {
         h.append("total_num_sensors:    ").append(sensors.size()).append('\n')
                 .append("sensors_per_cycle:    ").append(sensors.size()).append('\n')
                 .append("state_bytes_per_cycle:    ").append((sensors.size() + 3) / 4).append('\n')
-                .append("sensor_list_crc:    ").append(String.format("%08x", sensors.hashCode())).append('\n')
-                .append("sensor_list_factored:    0\n");
+                ;
+        List<String> list = new java.util.ArrayList<>();
         for (int i = 0; i < sensors.size(); i++) {
             SlocumSensor s = sensors.get(i);
-            h.append(String.format("s: T %4d %4d %d %s %s%n", i, i, s.bytes(), s.name(), s.units()));
+            list.add(String.format(java.util.Locale.ROOT, "s: T %4d %4d %d %s %s", i, i, s.bytes(), s.name(), s.units()));
         }
+        h.append("sensor_list_crc:    ").append(SensorListCache.crcOf(list)).append('\n') // the firmware's CRC of the list
+                .append("sensor_list_factored:    0\n");
+        list.forEach(l -> h.append(l).append('\n'));
         out.write(h.toString().getBytes(StandardCharsets.US_ASCII));
         SlocumEncoder e = new SlocumEncoder(out, sensors);
         e.out.writeByte('s');

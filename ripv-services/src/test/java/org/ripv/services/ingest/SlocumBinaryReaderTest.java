@@ -71,12 +71,34 @@ class SlocumBinaryReaderTest {
     void aCacheOfAnotherListUnderTheCrcIsRefused() throws Exception {
         Path f = SlocumData.files().get(2);
         SensorListCache wrong = new SensorListCache(tmp.resolve("wrong"));
-        wrong.accept("6b016a2e.cac", Files.readAllBytes(SlocumData.dir().resolve("cac/426bd56d.cac")));
+        byte[] other = Files.readAllBytes(SlocumData.dir().resolve("cac/426bd56d.cac"));
+        // Refused at the door: its list's CRC, as the glider computes it, is not the name's (issue 33 item 7).
+        assertThatThrownBy(() -> wrong.accept("6b016a2e.cac", other))
+                .hasMessageContaining("does not hold the sensor list with CRC 6b016a2e (its list's CRC is 426bd56d)");
+        // One an older version kept is not used either.
+        Files.createDirectories(tmp.resolve("wrong"));
+        Files.write(tmp.resolve("wrong/6b016a2e.cac"), other);
         assertThatThrownBy(() -> decode(Files.newInputStream(f), f.getFileName().toString(), wrong))
-                .isInstanceOf(SlocumFormatException.class).hasMessageContaining("the cache file 6b016a2e.cac does not fit the header")
-                .hasMessageContaining("total_num_sensors");
+                .isInstanceOf(java.io.IOException.class).hasMessageContaining("does not hold the sensor list with CRC 6b016a2e")
+                .hasMessageContaining("delete it and fetch the vehicle's own cache file");
+        // Every real cache file is named by its list's CRC (the shared data's own, read-only files: tests of older
+        // versions left made-up lists there, 0600, filed under made-up CRCs — what this item now refuses).
+        try (var cacs = Files.list(SlocumData.dir().resolve("cac"))) {
+            for (Path c : cacs.filter(c -> !isOwnerWritable(c)).toList()) {
+                assertThat(SensorListCache.crcOf(Files.readAllBytes(c))).as(c.toString())
+                        .isEqualTo(c.getFileName().toString().substring(0, 8).toLowerCase(java.util.Locale.ROOT));
+            }
+        }
         assertThatThrownBy(() -> wrong.accept("6b016a2e.txt", new byte[1])).hasMessageContaining("not a cache file name");
         assertThatThrownBy(() -> wrong.accept("12345678.cac", "hello\n".getBytes())).hasMessageContaining("line 1 is not a sensor-list line");
+    }
+
+    private static boolean isOwnerWritable(Path p) {
+        try {
+            return Files.getPosixFilePermissions(p).contains(java.nio.file.attribute.PosixFilePermission.OWNER_WRITE);
+        } catch (java.io.IOException e) {
+            return true;
+        }
     }
 
     @Test

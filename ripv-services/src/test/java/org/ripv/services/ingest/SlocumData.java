@@ -37,7 +37,23 @@ public final class SlocumData {
         return Files.readString(dir().resolve("expected").resolve(file.getFileName() + ".dbd2asc.txt"));
     }
 
-    public static SensorListCache cache() {
-        return new SensorListCache(dir().resolve("cac"));
+    /**
+     * A cache holding the shared cache files, in a copy of this JVM's own: a cache keeps the lists of
+     * the files it decodes, and tests decode made-up files, whose lists must not land in the shared
+     * data (they did: 0600 files among the 0444 originals).
+     */
+    public static synchronized SensorListCache cache() throws IOException {
+        if (copy == null) {
+            Path to = Files.createTempDirectory("ripv-cac-");
+            try (Stream<Path> s = Files.list(dir().resolve("cac"))) {
+                for (Path f : s.toList()) {
+                    Files.copy(f, to.resolve(f.getFileName()));
+                }
+            }
+            copy = to;
+        }
+        return new SensorListCache(copy);
     }
+
+    private static Path copy;
 }

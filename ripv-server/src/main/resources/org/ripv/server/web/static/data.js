@@ -4,6 +4,7 @@
 import { session, PostOffice, bar } from './postoffice.js';
 import { tableElement, csv, download } from './table.js';
 import { drawChart, chartCsv, chartPng, chartSize } from './chart.js';
+import { command, NotAName } from './address.js';
 
 const s = await session();
 bar(s);
@@ -86,7 +87,14 @@ $('chart-form').addEventListener('submit', async (e) => {
     return;
   }
   const db = $('database').value;
-  const body = `vis:${kind} ${vehicle}${kind === 'profile' ? ` ${sensor}` : ''}${databases.length > 1 ? ` db=${db}` : ''}`;
+  let body;
+  try { // each part one word: a vehicle name from the data cannot add options to the command
+    body = command(`vis:${kind}`, vehicle, ...(kind === 'profile' ? [sensor] : []), ...(databases.length > 1 ? [`db=${db}`] : []));
+  } catch (err) {
+    if (!(err instanceof NotAName)) throw err;
+    $('chart-state').textContent = `Error: ${err.message}`;
+    return;
+  }
   $('chart-state').textContent = `Drawing ${body}…`;
   const r = await po.send($('datavis').value, body);
   if (r.status === 'ERROR') { $('chart-state').textContent = `Error: ${r.text} [${r.error}]`; return; }

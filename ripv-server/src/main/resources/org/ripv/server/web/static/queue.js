@@ -3,6 +3,7 @@
 import { session, PostOffice, bar } from './postoffice.js';
 import { upload, storedName } from './transfer.js';
 import { el, button, say, mailboxParam, vehicleNav, observerOnly } from './ui.js';
+import { command, NotAName } from './address.js';
 
 const { mailbox, handle } = mailboxParam();
 const s = await session();
@@ -17,7 +18,7 @@ const $ = (id) => document.getElementById(id);
 const ROW = /^\s*(\d+)\s+(\S+)\s+(\S+)\s+(.*)$/;
 
 async function listQueue() {
-  const r = await po.send('', `?queue ${mailbox}`);
+  const r = await po.send('', command('?queue', mailbox));
   if (r.status === 'ERROR') { say($('queue-status'), r); return; }
   const lines = r.text.split('\n');
   $('queue-status').textContent = lines[0];
@@ -26,7 +27,7 @@ async function listQueue() {
     li.append(el('span', `#${m[1]} ${m[4]} (${m[2]}, ${m[3]})`));
     if (!observerOnly(s)) {
       li.append(button('Remove', async () => {
-        const x = await po.send('', `?queue remove ${mailbox} ${m[1]}`);
+        const x = await po.send('', command('?queue', 'remove', mailbox, m[1]));
         say($('queue-reply'), { ...x, text: x.text.split('\n')[0] });
         if (x.status !== 'ERROR') listQueue();
       }));
@@ -62,7 +63,15 @@ function showLines(text, reply, file) {
 }
 
 async function queueFile(name, text) {
-  const r = await po.send('', `?queue add ${mailbox} ${name}`);
+  let line;
+  try {
+    line = command('?queue', 'add', mailbox, name);
+  } catch (e) {
+    if (!(e instanceof NotAName)) throw e;
+    say($('add-status'), { status: 'ERROR', text: e.message });
+    return { status: 'ERROR', text: e.message };
+  }
+  const r = await po.send('', line);
   say($('add-status'), r.status === 'ERROR' ? r : { ...r, text: r.text.split('\n')[0] }); // the listing is shown above
   showLines(text ?? '', r, name);
   if (r.status !== 'ERROR') listQueue();
@@ -95,12 +104,12 @@ $('typed-form').addEventListener('submit', async (e) => {
 $('refresh-queue').addEventListener('click', listQueue);
 $('clear-queue').addEventListener('click', async () => {
   if (!confirm(`Remove every workflow from the queue of ${handle}?`)) return;
-  say($('queue-reply'), await po.send('', `?queue clear ${mailbox}`));
+  say($('queue-reply'), await po.send('', command('?queue', 'clear', mailbox)));
   listQueue();
 });
 
 async function listReceipts() {
-  const r = await po.send('', `?receipts ${mailbox} --last 50`);
+  const r = await po.send('', command('?receipts', mailbox, '--last', '50'));
   if (r.status === 'ERROR') { say($('receipts-status'), r); return; }
   const [head, ...rest] = r.text.split('\n\n');
   $('receipts-status').textContent = head;
@@ -125,5 +134,5 @@ po.onPush = (m) => {
     listReceipts();
   }
 };
-await Promise.all([listQueue(), listStore(), listReceipts(), po.send('', `?watch ${mailbox}`)]);
+await Promise.all([listQueue(), listStore(), listReceipts(), po.send('', command('?watch', mailbox))]);
 document.body.dataset.ready = 'true';

@@ -4,13 +4,19 @@
 import { session, PostOffice, bar } from './postoffice.js';
 import { tableElement } from './table.js';
 import { vehicleName } from './names.js';
+import { serviceFromUrl, refuse } from './address.js';
 
 const s = await session();
 bar(s);
 const po = new PostOffice(s.csrf);
 const $ = (id) => document.getElementById(id);
 po.onClose = (why) => { $('state').textContent = `Disconnected: ${why}. Reload the page to reconnect.`; };
-const wanted = new URLSearchParams(location.search).get('s');
+let wanted;
+try {
+  wanted = serviceFromUrl(); // one service name, or the page says the link's name is not valid and stops
+} catch (e) {
+  refuse(e, $('state'));
+}
 
 const services = (await po.send('', '?services')).result?.services || [];
 const statuses = (await po.send('', '?mailboxes')).result?.mailboxes || [];

@@ -1,3 +1,5 @@
+import { mailboxFromUrl, refuse, NotAName } from './address.js';
+
 // Small DOM helpers for the files, queue and notifications pages. Text from vehicles, files and the server is only
 // ever set as textContent: whatever it holds stays text.
 
@@ -21,11 +23,15 @@ export function say(line, reply) {
   line.setAttribute('role', reply.status === 'ERROR' ? 'alert' : 'status');
 }
 
-/** The MailBox the page is about (?m=…), and the vehicle's name in it. */
+/** The MailBox the page is about (?m=…), and the vehicle's name in it; a link holding anything else stops the page, saying so. */
 export function mailboxParam() {
-  const m = new URLSearchParams(location.search).get('m') || '';
-  const handle = m.substring(m.lastIndexOf('>') + 1);
-  return { mailbox: m, handle };
+  try {
+    const m = mailboxFromUrl();
+    if (!m.mailbox) throw new NotAName('This page is about one MailBox, and the link names none: open it from the fleet page.');
+    return m;
+  } catch (e) {
+    return refuse(e);
+  }
 }
 
 /** Links between a vehicle's pages, kept in the ?m= of the page. */

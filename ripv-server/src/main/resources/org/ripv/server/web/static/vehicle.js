@@ -1,8 +1,10 @@
 // A vehicle's live console (the stream --follow gives), scroll-back, and a command line with the user's rights.
 // Vehicle text is only ever set with textContent: a line of HTML stays a line of text.
 import { session, PostOffice, bar } from './postoffice.js';
+import { mailboxParam } from './ui.js';
+import { command } from './address.js';
 
-const mailbox = new URLSearchParams(location.search).get('m') || '';
+const { mailbox } = mailboxParam(); // one MailBox address or the page stops, saying the link's name is not valid
 const s = await session();
 bar(s);
 document.getElementById('name').textContent = mailbox;
@@ -59,14 +61,14 @@ function reply(m) {
   append(nodes.filter((n) => n.textContent));
 }
 
-const watching = await po.send('', `?watch ${mailbox}`);
+const watching = await po.send('', command('?watch', mailbox));
 if (watching.status === 'ERROR') {
   stateLine.textContent = `Error: ${watching.text}`;
 } else {
   stateLine.textContent = watching.text;
   append((watching.result?.entries || []).map(entryLine));
 }
-const status = await po.send('', `?status ${mailbox}`);
+const status = await po.send('', command('?status', mailbox));
 setLock(status.result?.lockedBy || '');
 
 const observer = s.roles.length > 0 && s.roles.every((r) => r === 'observers');
@@ -100,14 +102,14 @@ document.getElementById('command-form').addEventListener('submit', async (e) => 
 
 async function cancelRunning() {
   if (running == null) return;
-  reply(await po.send('', `?cancel ${running}`));
+  reply(await po.send('', command('?cancel', String(running))));
 }
 cancel.addEventListener('click', cancelRunning);
 document.addEventListener('keydown', (e) => { if (e.key === 'Escape') cancelRunning(); });
-document.getElementById('take-lock').addEventListener('click', async () => reply(await po.send('', `?lock ${mailbox}`)));
-document.getElementById('release-lock').addEventListener('click', async () => reply(await po.send('', `?unlock ${mailbox}`)));
+document.getElementById('take-lock').addEventListener('click', async () => reply(await po.send('', command('?lock', mailbox))));
+document.getElementById('release-lock').addEventListener('click', async () => reply(await po.send('', command('?unlock', mailbox))));
 document.getElementById('earlier').addEventListener('click', async () => {
-  const h = await po.send('', `?history ${mailbox} --last 1000`);
+  const h = await po.send('', command('?history', mailbox, '--last', '1000'));
   if (h.status === 'ERROR') { reply(h); return; }
   consoleBox.replaceChildren(...(h.result?.entries || []).map(entryLine));
 });
