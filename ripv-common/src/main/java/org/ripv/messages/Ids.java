@@ -53,6 +53,11 @@ public final class Ids {
     public static final String FID_QUEUE = "555800";
     public static final String FID_RECEIPTS = "555801";
     public static final String FID_CANCEL = "555802";
+    // Plans and their changes (docs/plans.md): 555810-555819.
+    /** {@code ?plan MAILBOX check|send|set ...}: behaviour files checked, sent, parameters set. */
+    public static final String FID_PLAN = "555810";
+    /** {@code ?changes [MAILBOX]}: each change sent to a vehicle and how far it got. */
+    public static final String FID_CHANGES = "555811";
     /** {@code ?key MAILBOX KEY}: one control key to a vehicle (docs/serial.md#control-keys). */
     public static final String FID_KEY = "555720";
     /** Replies to a message the server could not attribute to any command or service. */

@@ -32,8 +32,12 @@ public enum VehicleEvent {
      */
     INGEST_WAITING,
     /** A file that waited for its sensor-list cache was ingested once the cache arrived. */
-    INGEST_RELEASED
-    ;
+    INGEST_RELEASED,
+    /**
+     * A plan change (a behaviour file sent, a {@code put}) moved on: queued, sent, received, in
+     * effect or not in effect (docs/plans.md). The text names the change and its new state.
+     */
+    PLAN_CHANGE;
 
     /** The call state this event moves the vehicle to, or null when it leaves the state as it was. */
     public SessionState.State callState() {

@@ -35,6 +35,8 @@ public final class BenchMain {
             "             [--runs N] [--wide-runs N] [--track-runs N] [--rows N] [--only wide|long|track]",
             "  slocum     Slocum binary decoding (10 MB, plain and LZ4) in MB/s against reading the same bytes, and",
             "             binary ingest against a direct JDBC batch insert   [--mb N] [--runs N] [--ingest-rows N]",
+            "  dac        IOOS Glider DAC profile files per second from decoded data (split, GSW, QARTOD, template)",
+            "             against writing the same arrays with NetCDF-Java alone   [--yos N] [--runs N]",
             "  datavis    vis: to JPEG for 10,000 and 1,000,000 points, built-in worker and Octave   [--no-octave]",
             "             [--points 10000,1000000] [--runs N]",
             "  firststart the DatabaseServer's first start (Derby created and seeded) in a fresh JVM, against",
@@ -91,6 +93,7 @@ public final class BenchMain {
             case "calls" -> System.exit(Launchers.commandLine(new CallsBench(), "ripv bench calls").execute(rest));
             case "ingest" -> IngestBench.main(rest);
             case "slocum" -> SlocumBench.main(rest);
+            case "dac" -> DacBench.main(rest);
             case "hosts" -> HostsBench.main(rest);
             case "store" -> StoreBench.main(rest);
             case "workflow" -> System.exit(Launchers.commandLine(new WorkflowBench(), "ripv bench workflow").execute(rest));

@@ -38,6 +38,7 @@ final class ShortMode {
             Map.entry("hosts", List.of("--requests", "30", "--takeovers", "1")),
             Map.entry("store", List.of("--entries", "2000")),
             Map.entry("slocum", List.of("--mb", "1", "--runs", "1", "--ingest-rows", "300")),
+            Map.entry("dac", List.of("--yos", "3", "--runs", "1", "--not-a-measurement")),
             Map.entry("workflow", List.of("--files", "2", "--get-bytes", "8192", "--put-bytes", "4096", "--report-only")));
 
     private ShortMode() {}

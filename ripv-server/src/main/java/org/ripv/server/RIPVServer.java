@@ -45,6 +45,8 @@ import org.ripv.server.files.FileStore;
 import org.ripv.server.handlers.SocketHandler;
 import org.ripv.server.handlers.WriterPool;
 import org.ripv.server.lock.OperatorLock;
+import org.ripv.server.plans.PlanBridge;
+import org.ripv.server.plans.Plans;
 import org.ripv.server.remote.OutboundListener;
 import org.ripv.server.remote.ServerRemote;
 import org.ripv.server.requests.InternalCalls;
@@ -133,6 +135,8 @@ public final class RIPVServer implements AutoCloseable {
     private RegistryGuard registryGuard;
     private ServerTls tls;
     private Workflows workflows;
+    /** Plans and their changes (org.ripv.server.plans, docs/plans.md). */
+    private Plans plans;
     private OutboundListener outbound;
     private volatile boolean running;
     private ServerSessions sessions;
@@ -201,9 +205,11 @@ public final class RIPVServer implements AutoCloseable {
         sessions.countRepliesIn(waiting);
         ConsoleHub console = sessions.console();
         RequestForwarder forwarder = new RequestForwarder(pending, this::reply);
-        RequestCancels cancels = new RequestCancels(pending, services, permitFile, this::reply, console::serverEntry);
-        workflows = new Workflows(state.store(), new WorkflowBridge(this::deliver, console, files, services, checkers,
-                permitFile, locks, cancels));
+        RequestCancels cancels = new RequestCancels(pending, services, permitFile, this::reply, this::publishServerEntry);
+        workflows = new Workflows(state.store(), new WorkflowBridge(this::deliver, console, this::publishServerEntry, files,
+                services, checkers, permitFile, locks, cancels));
+        plans = new Plans(new PlanBridge(files, permitFile, this::publishServerEntry, workflows::queueGenerated),
+                config.dataDir().resolve("plans"));
         sessions.expireLocks(timers, locks, mailbox -> workflows.lockReleased(mailbox));
         permits.onChange(sessions::permitsChanged);
         internalCalls = new InternalCalls(services, permitFile, files, forwarder);
@@ -214,7 +220,7 @@ public final class RIPVServer implements AutoCloseable {
         ServiceQueries queries = new ServiceQueries(services, serviceLiveness, checkers, permitFile, locks, console, this::reply);
         Admission admit = new Admission(Admission.steps(services, permitFile, locks, dataLoop, files, this::reply), forwarder);
         ServerCommands commands = new ServerCommands(new ServerCommands.Parts(permitFile, files, services, queries, locks, sessions,
-                workflows, cancels, security.throttle(), state.audit(), state.store(), this::client), fileWork, checkers,
+                workflows, plans, cancels, security.throttle(), state.audit(), state.store(), this::client), fileWork, checkers,
                 this::reply, admit::route);
         box = postOffice.open(POST_OFFICE, new ServerTaskManager(commands::run, admit, workflows::reply, waiting, this::client,
                 this::reply));
@@ -334,6 +340,9 @@ public final class RIPVServer implements AutoCloseable {
         }
         if (workflows != null) {
             workflows.close();
+        }
+        if (plans != null) {
+            plans.close();
         }
         if (sessions != null) {
             sessions.close();
@@ -467,7 +476,9 @@ public final class RIPVServer implements AutoCloseable {
         // The calls end first, so a workflow step under way is cut (it resumes on the next call)
         // rather than failed by the request ending below.
         String name = ref.descriptor().name();
-        workflows.onConsole(name, sessions.console().serviceGone(name, why));
+        List<ConsoleEntry> gone = sessions.console().serviceGone(name, why);
+        workflows.onConsole(name, gone);
+        plans.onConsole(gone);
         endings.drop(ref, why);
     }
 
@@ -483,12 +494,24 @@ public final class RIPVServer implements AutoCloseable {
     }
 
     /**
+     * A console entry the server itself originates (a workflow's progress line and end, a cancel,
+     * a plan change): for watchers, the transcript and notifications, and for the plans that follow changes.
+     */
+    private void publishServerEntry(ConsoleEntry entry) {
+        sessions.console().serverEntry(entry);
+        if (plans != null) {
+            plans.onConsole(List.of(entry));
+        }
+    }
+
+    /**
      * Console entries a service published for its MailBoxes (the live console). Only entries for
      * the calling service's own MailBoxes are taken.
      */
     private void console(ServiceReference ref, List<ConsoleEntry> entries) {
         sessions.console().publish(ref.descriptor().name(), entries);
         workflows.onConsole(ref.descriptor().name(), entries);
+        plans.onConsole(entries);
         // Answer only once they are stored: the service offers what a server did not take to the
         // next one (restarted, or a standby), so a server that dies now loses no transcript line.
         sessions.console().sync();

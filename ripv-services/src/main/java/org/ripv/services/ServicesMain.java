@@ -24,7 +24,8 @@ public final class ServicesMain {
             "  database  | DatabaseServer     SQL on embedded Derby, or any JDBC database",
             "  datavis   | DataVisServer      plots from data files through a plotting worker",
             "  simulator                      a simulated glider (PicoDOS-like) on TCP or a pty",
-            "  slocum decode FILE...          Slocum binary files as DBA text, as dbd2asc prints them");
+            "  slocum decode FILE...          Slocum binary files as DBA text, as dbd2asc prints them",
+            "  dac profiles|check ...         IOOS Glider DAC profile files (NetCDF) with QARTOD flags");
 
     public static int run(PrintStream err, String... args) {
         if (args.length == 0 || args[0].equals("--help") || args[0].equals("-h")) {
@@ -47,6 +48,8 @@ public final class ServicesMain {
                 return execute(new SimulatorCommand(), "ripv simulator", rest);
             case "slocum":
                 return execute(new org.ripv.services.slocum.SlocumCommand(), "ripv slocum", rest);
+            case "dac":
+                return execute(new org.ripv.dac.DacCommand(), "ripv dac", rest);
             default:
                 err.println("Error: unknown service '" + args[0] + "'");
                 err.println(USAGE);

@@ -33,7 +33,7 @@ class RipvScriptHelpTest {
     static Stream<Arguments> commands() {
         List<Arguments> all = new ArrayList<>();
         for (String c : List.of("", "help", "demo", "build", "server", "passwd", "service", "service serial",
-                "service database", "service datavis", "service clock", "simulator", "slocum", "slocum decode", "client", "cli",
+                "service database", "service datavis", "service clock", "simulator", "slocum", "slocum decode", "plan", "plan check", "plan forecast", "dac", "dac profiles", "dac check", "dac push", "client", "cli",
                 "bench", "bench broker", "bench database", "bench ymodem", "bench datavis", "bench firststart", "bench calls", "bench hosts", "bench workflow", "bench slocum")) {
             for (String flag : List.of("--help", "-h")) {
                 all.add(Arguments.of(c, flag));

@@ -81,16 +81,14 @@ class AnonymousUploadAttackTest {
                     .doesNotContain(sys.dataDir().toAbsolutePath().toString())
                     .doesNotContain("Example service: time") // service descriptions (a database's is its JDBC URL)
                     .doesNotContain("jdbc:");
-            // Plain HTTP is not served on the TLS port.
-            HttpClient plain = HttpClient.newHttpClient();
-            Throwable refused = null;
-            try {
-                plain.send(HttpRequest.newBuilder(URI.create("http://localhost:" + sys.server().httpPort() + "/"))
-                        .timeout(Duration.ofSeconds(5)).build(), HttpResponse.BodyHandlers.ofString());
-            } catch (java.io.IOException e) {
-                refused = e;
-            }
-            assertThat(refused).isNotNull();
+            // Plain HTTP on the TLS port serves nothing: only a redirect to https (issue 32), no page, no cookie.
+            HttpResponse<String> plain = HttpClient.newHttpClient().send(HttpRequest.newBuilder(
+                    URI.create("http://localhost:" + sys.server().httpPort() + "/")).timeout(Duration.ofSeconds(5)).build(),
+                    HttpResponse.BodyHandlers.ofString());
+            assertThat(plain.statusCode()).isEqualTo(308);
+            assertThat(plain.headers().firstValue("Location")).contains("https://localhost:" + sys.server().httpPort() + "/");
+            assertThat(plain.headers().firstValue("Set-Cookie")).isEmpty();
+            assertThat(plain.body()).doesNotContain("ClockService").doesNotContain("SHA256:");
         }
     }
 

@@ -25,6 +25,7 @@ import org.ripv.server.handlers.SocketHandler;
 import org.ripv.server.lock.OperatorLock;
 import org.ripv.server.permit.PermitFile;
 import org.ripv.server.permit.SecurityRefusal;
+import org.ripv.server.plans.Plans;
 import org.ripv.server.requests.RequestCancels;
 import org.ripv.server.requests.ServerReplies;
 import org.ripv.server.security.LoginThrottle;
@@ -49,7 +50,7 @@ import org.ripv.server.workflow.Workflows;
 public final class ServerCommands {
     /** The parts the server's own commands read and change. */
     public record Parts(Supplier<PermitFile> permits, FileStore files, ServiceRegistry services, ServiceQueries queries,
-                        Map<String, OperatorLock> locks, ServerSessions sessions, Workflows workflows, RequestCancels cancels,
+                        Map<String, OperatorLock> locks, ServerSessions sessions, Workflows workflows, Plans plans, RequestCancels cancels,
                         LoginThrottle throttle, AuditTrail audit, StateStore store, Function<String, Optional<SocketHandler>> clients) {}
 
     private final Parts parts;
@@ -133,6 +134,13 @@ public final class ServerCommands {
                         c -> parts.workflows().queueCommand(c.request())).onFileWork())
                 .add(ServerCommand.open("?receipts", Ids.FID_RECEIPTS, "?receipts MAILBOX [--last N]",
                         "what the last workflow runs did", c -> parts.workflows().receiptsCommand(c.request())).onFileWork())
+                .add(ServerCommand.open("?plan", Ids.FID_PLAN,
+                        "?plan MAILBOX check FILE | send FILE [as NAME] | set NAME VALUE | forecast FILE [SPEED]",
+                        "check a Slocum behaviour file (.ma), send it on the next call, queue a put, or forecast its legs (docs/plans.md)",
+                        c -> parts.plans().planCommand(c.request())).onFileWork())
+                .add(ServerCommand.open("?changes", Ids.FID_CHANGES, "?changes [MAILBOX]",
+                        "each change sent to a vehicle: queued, sent, received, in effect or not",
+                        c -> parts.plans().changesCommand(c.request())).onFileWork())
                 .add(ServerCommand.open("?cancel", Ids.FID_CANCEL, "?cancel MESSAGE-ID [CLIENT-ID]",
                         "stop a request that is queued or running", c -> {
                             checkers.execute(() -> outbox.accept(parts.cancels().command(c.request())));

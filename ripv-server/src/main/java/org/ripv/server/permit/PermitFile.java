@@ -208,6 +208,31 @@ public final class PermitFile {
     }
 
     /**
+     * Whether any command at all may be allowed for this user in this service's MailBox — for pages
+     * that show a command line only to those who may use it. The rules are read in order as
+     * {@link #decide} reads them: an allow for a vehicle's command (not a {@code ?} command such as
+     * {@code ?read} or {@code ?key ctrl-c}) says yes; a deny of every command ({@code *}) ends it. Every command is still decided by
+     * {@link #decide} when it is sent.
+     */
+    public boolean maySendSomething(User user, String serviceName, String handle) {
+        for (Rule r : rules) {
+            if (!r.appliesTo(user.name(), user.roles()) || !r.service().matcher(serviceName).matches()
+                    || !r.mailbox().matcher(handle).matches()) {
+                continue;
+            }
+            boolean every = r.command().pattern().equals(".*");
+            // A rule about '?' commands (?read, ?key ctrl-c) is no command line's worth: those have controls of their own.
+            if (r.allow() && (every || !r.command().pattern().startsWith(java.util.regex.Pattern.quote("?")))) {
+                return true;
+            }
+            if (!r.allow() && every) {
+                return false;
+            }
+        }
+        return false;
+    }
+
+    /**
      * Adds a user or changes an existing one's password (and roles, when given; the stored hash is
      * kept when the password is the same), rewriting the file through a temporary file so that a crash never leaves it half written.
      */

@@ -1,9 +1,11 @@
 package org.ripv.server.security;
 
 import java.util.Arrays;
+import java.util.List;
 import java.util.function.Supplier;
-import org.ripv.server.web.WebAccess;
+import org.ripv.naming.MailboxAddress;
 import org.ripv.server.permit.PermitFile;
+import org.ripv.server.web.WebAccess;
 
 /**
  * The web console's log-in (and its upload form with {@code --http-upload}): the client port's users, limits, pool and
@@ -40,5 +42,27 @@ public final class WebLogins implements WebAccess {
     public boolean mayUpload(String user, String fileName) {
         PermitFile p = permits.get();
         return p.user(user).map(u -> p.decide(u, "RIPVServer", "", "?upload " + fileName + " 0 0").allowed()).orElse(false);
+    }
+
+    @Override
+    public Rights rights(String user, String mailbox, List<String> commands) {
+        PermitFile p = permits.get();
+        java.util.Map<String, Boolean> each = new java.util.LinkedHashMap<>();
+        PermitFile.User u = p.user(user).orElse(null);
+        String service = "RIPVServer";
+        String handle = "";
+        if (u != null && !mailbox.isEmpty()) {
+            try {
+                MailboxAddress a = MailboxAddress.parse(mailbox);
+                service = a.service().service();
+                handle = a.handle();
+            } catch (IllegalArgumentException e) {
+                u = null; // no rights on a name that is no MailBox
+            }
+        }
+        for (String c : commands) {
+            each.put(c, u != null && p.decide(u, service, handle, c).allowed());
+        }
+        return new Rights(u != null && p.maySendSomething(u, service, handle), each);
     }
 }

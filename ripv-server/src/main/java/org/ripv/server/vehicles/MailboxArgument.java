@@ -9,7 +9,8 @@ import java.util.Set;
  * sim01 dive.wf}). Words are the command line split on white space; word 0 is the command.
  */
 public final class MailboxArgument {
-    private static final Set<String> FIRST = Set.of("?status", "?lock", "?unlock", "?watch", "?unwatch", "?history", "?receipts");
+    private static final Set<String> FIRST = Set.of("?status", "?lock", "?unlock", "?watch", "?unwatch", "?history", "?receipts", "?plan",
+            "?changes");
     private static final Set<String> QUEUE_VERBS = Set.of("add", "remove", "clear");
 
     private MailboxArgument() {

@@ -24,4 +24,20 @@ public interface WebAccess {
 
     /** May this user store a file of this name (the permit file's rule for {@code ?upload NAME})? */
     boolean mayUpload(String user, String fileName);
+
+    /**
+     * What the permit file lets a user send, for pages that show only the controls the user may use
+     * (the server decides every command again when it is sent).
+     *
+     * @param send     whether some command may go to the MailBox at all (a command line is worth showing)
+     * @param commands each command asked about, allowed or not
+     */
+    record Rights(boolean send, java.util.Map<String, Boolean> commands) {}
+
+    /**
+     * The user's rights on a MailBox ({@code ""}: the server's own commands, {@code ?lock ...}), for
+     * these commands as the page would send them ({@code ?key ctrl-c} to a MailBox is asked as
+     * {@code ?key ctrl-c}). An unknown user or a malformed address has no rights.
+     */
+    Rights rights(String user, String mailbox, List<String> commands);
 }

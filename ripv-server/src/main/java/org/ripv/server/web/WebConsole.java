@@ -20,6 +20,7 @@ import java.util.function.Supplier;
 import javax.net.ssl.SSLContext;
 import org.eclipse.jetty.http.HttpVersion;
 import org.eclipse.jetty.server.ConnectionLimit;
+import org.eclipse.jetty.server.DetectorConnectionFactory;
 import org.eclipse.jetty.server.Handler;
 import org.eclipse.jetty.server.HttpConfiguration;
 import org.eclipse.jetty.server.HttpConnectionFactory;
@@ -167,7 +168,9 @@ public final class WebConsole implements AutoCloseable {
             http.addCustomizer(secure);
             SslContextFactory.Server ssl = new SslContextFactory.Server();
             ssl.setSslContext(options.tls());
-            c = new ServerConnector(s, new SslConnectionFactory(ssl, HttpVersion.HTTP_1_1.asString()), new HttpConnectionFactory(http));
+            // http:// on this port is told from TLS by its first bytes and answered with a redirect (HttpsRedirect).
+            c = new ServerConnector(s, new DetectorConnectionFactory(new SslConnectionFactory(ssl, HttpVersion.HTTP_1_1.asString())),
+                    new HttpConnectionFactory(http));
         } else {
             c = new ServerConnector(s, new HttpConnectionFactory(http));
         }
@@ -186,7 +189,8 @@ public final class WebConsole implements AutoCloseable {
         timer.scheduleWithFixedDelay(sessions::sweep, SWEEP.toMillis(), SWEEP.toMillis(), TimeUnit.MILLISECONDS);
         HeaderDeadline deadline = new HeaderDeadline(null, HEADER_DEADLINE.toMillis(), timer);
         c.addBean(deadline);
-        deadline.setHandler(new SecurityHeaders(handlers(s), options.tls() != null, tileOrigin(options.mapTiles())));
+        Handler served = new SecurityHeaders(handlers(s), options.tls() != null, tileOrigin(options.mapTiles()));
+        deadline.setHandler(options.tls() != null ? new HttpsRedirect(served) : served);
         s.setHandler(deadline);
         try {
             s.start();
@@ -223,6 +227,7 @@ public final class WebConsole implements AutoCloseable {
                 options.uploads() && options.access() != null ? options.maxUploadBytes() : 0));
         if (options.access() != null) {
             chain.add(new LoginHandler(options.access(), sessions, tls, settings));
+            chain.add(new RightsHandler(options.access(), sessions));
         }
         chain.add(new UploadHandler(options.uploadDir(), options.maxUploadBytes(), options.access(),
                 options.uploads() && options.access() != null, sessions, formUploads));

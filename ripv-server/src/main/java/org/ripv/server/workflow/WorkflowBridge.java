@@ -7,6 +7,7 @@ import java.util.concurrent.ExecutionException;
 import java.util.concurrent.Executor;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
+import java.util.function.Consumer;
 import java.util.function.Predicate;
 import java.util.function.Supplier;
 import org.ripv.messages.ConsoleEntry;
@@ -26,6 +27,7 @@ import org.ripv.server.session.ConsoleHub;
 public final class WorkflowBridge implements WorkflowHost {
     private final Predicate<IncomingServerMessage> postOffice;
     private final ConsoleHub console;
+    private final Consumer<ConsoleEntry> publish;
     private final FileStore files;
     private final ServiceRegistry services;
     private final Executor checkers;
@@ -35,13 +37,16 @@ public final class WorkflowBridge implements WorkflowHost {
 
     /**
      * @param postOffice delivers a step's request to the RIPV Post Office; false when it is full
-     * @param console    the vehicles' call state, and where the runner's own entries go
+     * @param console    the vehicles' call state
+     * @param publish    where the runner's own console entries go
      * @param checkers   where calls to services run
      */
-    public WorkflowBridge(Predicate<IncomingServerMessage> postOffice, ConsoleHub console, FileStore files, ServiceRegistry services,
-                          Executor checkers, Supplier<PermitFile> permits, Map<String, OperatorLock> locks, RequestCancels cancels) {
+    public WorkflowBridge(Predicate<IncomingServerMessage> postOffice, ConsoleHub console, Consumer<ConsoleEntry> publish,
+                          FileStore files, ServiceRegistry services, Executor checkers, Supplier<PermitFile> permits,
+                          Map<String, OperatorLock> locks, RequestCancels cancels) {
         this.postOffice = postOffice;
         this.console = console;
+        this.publish = publish;
         this.files = files;
         this.services = services;
         this.checkers = checkers;
@@ -123,6 +128,6 @@ public final class WorkflowBridge implements WorkflowHost {
 
     @Override
     public void publish(ConsoleEntry entry) {
-        console.serverEntry(entry);
+        publish.accept(entry);
     }
 }

@@ -271,6 +271,21 @@ final class WorkflowCommands {
         }
     }
 
+    /** {@link Workflows#queueGenerated}: as {@code ?queue add}, the text given rather than uploaded. */
+    long queueGenerated(String mailbox, String user, String label, String source) throws IOException {
+        mayRead(user, mailbox);
+        PermitFile p = workflows.host.permits();
+        PermitFile.User u = p.user(user).orElseThrow(() -> new Workflows.Refused("user '" + user + "' is no longer in the permit file"));
+        Workflow wf = WorkflowParser.parse(label, source, workflows::uploadExists);
+        checkSteps(u, mailbox, wf);
+        QueuedWorkflow e = workflows.queues.add(mailbox, user, source, wf);
+        if (workflows.onCall(mailbox)) {
+            workflows.surfaced(mailbox);
+        }
+        log.info("{} queued workflow {} '{}' for {} (generated)", user, e.id(), e.file(), mailbox);
+        return e.id();
+    }
+
     /** Reads and parses an uploaded workflow file; refused whole with line and reason. */
     private Workflow read(String name) throws IOException {
         FileNames.check(name);

@@ -287,6 +287,18 @@ public final class Workflows implements AutoCloseable {
         return commands.queue(request);
     }
 
+    /**
+     * Queues a workflow the server wrote for {@code user} (a plan's {@code put}, docs/plans.md),
+     * checked as {@code ?queue add} checks a file: parsed whole, every step one the user may send.
+     * Runs in this call when the vehicle is on one. Returns the workflow's id.
+     *
+     * @throws Refused            the user may not read the MailBox or send a step
+     * @throws WorkflowException  the text is not a workflow
+     */
+    public long queueGenerated(String mailbox, String user, String label, String source) throws IOException {
+        return commands.queueGenerated(mailbox, user, label, source);
+    }
+
     /** {@code ?receipts MAILBOX [--last N]}. */
     public OutgoingServerMessage receiptsCommand(IncomingServerMessage request) throws IOException {
         return commands.receipts(request);

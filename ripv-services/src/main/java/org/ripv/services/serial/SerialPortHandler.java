@@ -113,11 +113,13 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
     @Override
     public Availability availability() {
         Connection l = state.current();
-        String call = console.state() == CallState.State.NEVER && !vehicle.isListen() ? "" : "; " + console.describe();
+        // The keys ?key may press here, for the clients' key bars (the web console's vehicle page reads "keys: ...").
+        String keys = "; keys: " + ControlKey.describe(vehicle.pilot().keys());
+        String call = (console.state() == CallState.State.NEVER && !vehicle.isListen() ? "" : "; " + console.describe()) + keys;
         if (l == null) {
             if (vehicle.isListen()) {
                 return Availability.notAvailable("not on a call (" + console.describe() + "); waiting for calls on "
-                        + state.listening());
+                        + state.listening() + keys);
             }
             return Availability.notAvailable("link " + settings.device() + " is down (" + state.downReason()
                     + "); retrying every " + settings.reconnectEvery().toSeconds() + " s" + call);

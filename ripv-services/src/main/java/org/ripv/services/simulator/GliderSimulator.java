@@ -66,6 +66,8 @@ public final class GliderSimulator implements AutoCloseable {
     private java.net.InetAddress bindAddress = java.net.InetAddress.getLoopbackAddress();
     /** Null: the PicoDOS prompt at once (the default); else the Slocum surface dialog and GliderDOS. */
     private volatile GliderDos gliderDos;
+    /** What its plan (goto_l10.ma, put values) makes its dialog print. */
+    private final PlanState plan;
     private volatile Duration surfaceWait = Duration.ofSeconds(60);
     private volatile IridiumLine.Settings line = IridiumLine.Settings.NONE;
     private volatile String name = "sim01";
@@ -80,6 +82,7 @@ public final class GliderSimulator implements AutoCloseable {
      */
     public GliderSimulator(Path dir, Duration submerge, YmodemConfig ymodem) throws IOException {
         this.dir = Files.createDirectories(dir);
+        this.plan = new PlanState(this.dir);
         this.submerge = submerge;
         this.ymodem = ymodem;
         seed(this.dir);
@@ -304,7 +307,7 @@ public final class GliderSimulator implements AutoCloseable {
                     calls++;
                     ShellLink shell = new ShellLink(link);
                     if (gliderDos == null) {
-                        say(shell, dialog.text(calls, java.time.Instant.now()) + PROMPT);
+                        say(shell, dialog.text(calls, java.time.Instant.now(), "SIM.MI", plan.dialogLines()) + PROMPT);
                         converse(shell, System.nanoTime() + surfaceTime.toNanos(), dialog::chatter, 0);
                         submerged = true;
                         say(shell, "\r\nHanging up: diving for " + diveTime.toSeconds() + " s\r\n");
@@ -344,7 +347,7 @@ public final class GliderSimulator implements AutoCloseable {
         GliderDos g = gliderDos;
         g.surfaced();
         pendingEnd = null;
-        say(shell, dialog.text(calls, java.time.Instant.now(), g.mission(), g.reportLines()));
+        say(shell, dialog.text(calls, java.time.Instant.now(), g.mission(), g.reportLines() + plan.waypointLines()));
         SurfaceCountdown.Answer a = SurfaceCountdown.run(shell, surfaceWait, surfaceWait, dir);
         if (a == SurfaceCountdown.Answer.CONTROL_C) {
             say(shell, g.prompt());
@@ -448,6 +451,10 @@ public final class GliderSimulator implements AutoCloseable {
         String[] words = command.split("\\s+");
         String verb = words[0].toUpperCase(Locale.ROOT);
         GliderDos g = gliderDos;
+        if (g == null && verb.equals("PUT")) {
+            say(shell, plan.put(words)); // a glider's put, at the simple shell too (docs/plans.md)
+            return false;
+        }
         GliderDos.Answer answer = g == null ? null : g.execute(verb, words);
         if (answer != null) {
             say(shell, answer.text());

@@ -2,6 +2,7 @@
 // drag to zoom (double-click to zoom out), the values under the pointer, CSV and PNG of it.
 import uPlot from '/webjars/uplot/1.6.30/dist/uPlot.esm.js';
 import { csv } from './table.js';
+import { utc, axisValues } from './time.js';
 
 const num = (v) => (v == null || v === 'NaN' || Number.isNaN(Number(v)) ? null : Number(v));
 const COLOURS = ['#0b5cad', '#cf222e', '#1a7f37', '#9a6700', '#8250df', '#bf3989'];
@@ -15,7 +16,7 @@ function aligned(series) {
 
 function formatX(chart, v) {
   if (v == null) return '';
-  return chart.kind === 'TIME' || chart.kind === 'DEPTH' ? new Date(v).toISOString().replace('.000Z', 'Z') : String(v);
+  return chart.kind === 'TIME' || chart.kind === 'DEPTH' ? utc(v) : String(v);
 }
 
 /** Draws the chart into host (emptied first); returns the uPlot. */
@@ -32,6 +33,8 @@ export function drawChart(host, chart, readout) {
   const { width, height } = chartSize(host);
   const scales = { x: { time }, y: { dir: down ? -1 : 1 } };
   const axes = [{ label: chart.xLabel, stroke: '#1b1f24' }, { label: chart.yLabel, stroke: '#1b1f24', size: 70 }];
+  // Time ticks as every page writes time (UTC, 2026-11-28 / 05:40), not uPlot's local US dates.
+  if (time) Object.assign(axes[0], { values: (u, ticks, ax, space, incr) => axisValues(ticks, incr), size: 56 });
   const opts = { width, height, ms: 1, scales, axes, title: chart.title, cursor: { drag: { x: true, y: true, uni: 30 } },
     hooks: { setCursor: [(u) => showValue(u, chart, readout)] } };
   if (time) opts.tzDate = (ms) => uPlot.tzDate(new Date(ms), 'Etc/UTC'); // the axis in UTC, as the data and the CSV are
@@ -81,7 +84,9 @@ function showValue(u, chart, readout) {
 /** The chart's numbers as CSV: one row per point, series, x and y (time as ISO UTC). */
 export function chartCsv(chart) {
   const rows = [];
-  for (const s of chart.series || []) s.x.forEach((x, i) => rows.push([s.name, formatX(chart, num(x)), num(s.y[i]) ?? '']));
+  // ISO 8601 with milliseconds in the file: for programs, not people.
+  const iso = (v) => (v == null ? '' : chart.kind === 'TIME' || chart.kind === 'DEPTH' ? new Date(v).toISOString() : String(v));
+  for (const s of chart.series || []) s.x.forEach((x, i) => rows.push([s.name, iso(num(x)), num(s.y[i]) ?? '']));
   return csv(['series', chart.xLabel || 'x', chart.yLabel || 'y'], rows);
 }
 

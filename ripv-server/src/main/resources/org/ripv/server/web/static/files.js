@@ -3,7 +3,9 @@
 // upload store (?upload with FILE_EXISTS / keep / replace decided by the server).
 import { session, PostOffice, bar } from './postoffice.js';
 import { upload, download, save, storedName, progressText } from './transfer.js';
-import { el, button, say, mailboxParam, vehicleNav, observerOnly } from './ui.js';
+import { el, button, say, mailboxParam, vehicleNav } from './ui.js';
+import { rights } from './rights.js';
+import { utc } from './time.js';
 
 const { mailbox, handle } = mailboxParam();
 const s = await session();
@@ -18,9 +20,7 @@ function size(n) {
   return n < 10240 ? `${n} B` : n < 10485760 ? `${Math.round(n / 1024)} KB` : `${(n / 1048576).toFixed(1)} MB`;
 }
 
-function when(ms) {
-  return ms ? new Date(ms).toISOString().replace('T', ' ').substring(0, 19) : '';
-}
+const when = utc;
 
 // A download is listed as FOLDER/NAME; the folder of a vehicle's files begins with its handle and '@'.
 function mine(name) {
@@ -36,10 +36,15 @@ async function listDownloads() {
   $('download-status').textContent = files.length ? `${files.length} file(s)` : 'No files from this vehicle yet.';
   $('downloads').replaceChildren(...files.map((f) => {
     const tr = el('tr', '', { 'data-name': f.name });
+    // The row's button is Download, and Cancel while its chunks come.
+    let stop = null;
     const get = button('Download', async () => {
-      get.disabled = true;
-      const got = await download(po, f.name, (done, total) => { $('download-status').textContent = progressText(`${f.name}`, done, total); });
-      get.disabled = false;
+      if (stop) { stop.abort(); return; }
+      stop = new AbortController();
+      get.textContent = 'Cancel';
+      const got = await download(po, f.name, (done, total) => { $('download-status').textContent = progressText(`${f.name}`, done, total); }, stop.signal);
+      stop = null;
+      get.textContent = 'Download';
       if (got.error) { say($('download-status'), got.error); return; }
       save(got.blob, f.name);
       $('download-status').textContent = `Downloaded ${f.name} (${size(got.blob.size)}).`;
@@ -62,37 +67,54 @@ async function listUploads() {
 }
 
 // ymodem:get / ymodem:put and their zmodem twins: the words the CLI and the workflow steps send to the vehicle.
+// Cancel stops the one this page started (?cancel with its id).
+let running = null;
 const transfer = async (verb) => {
   const names = $('transfer-names').value.trim();
   if (!names) { say($('transfer-reply'), { status: 'ERROR', text: `${verb} needs a file name or pattern` }); return; }
   for (const b of $('transfer-buttons').children) b.disabled = true;
   $('transfer-reply').textContent = '';
-  const r = await po.send(mailbox, `${verb} ${names}`, 'normal', (p) => {
+  const req = po.send(mailbox, `${verb} ${names}`, 'normal', (p) => {
     const x = p.result;
     $('transfer-progress').textContent = x?.kind === 'Progress' && x.total > 0
       ? progressText(x.what || verb, x.done, x.total) + (x.ratePerSecond > 0 ? `, ETA ${Math.round((x.total - x.done) / x.ratePerSecond)} s` : '')
       : p.text;
   });
+  running = req.id;
+  $('transfer-cancel').hidden = false;
+  const r = await req;
+  running = null;
+  $('transfer-cancel').hidden = true;
   for (const b of $('transfer-buttons').children) b.disabled = false;
   $('transfer-progress').textContent = '';
   say($('transfer-reply'), r);
   if (verb.endsWith(':get')) listDownloads();
 };
-if (observerOnly(s)) {
-  $('transfers').hidden = true;
-} else {
-  $('transfer-buttons').append(...['ymodem:get', 'ymodem:put', 'zmodem:get', 'zmodem:put'].map((v) => button(v, () => transfer(v))));
-}
+$('transfer-cancel').addEventListener('click', async () => {
+  if (running != null) say($('transfer-reply'), await po.cancel(running));
+});
+// The verbs the permit file lets this user send to the vehicle, whatever their role is called.
+const VERBS = ['ymodem:get', 'ymodem:put', 'zmodem:get', 'zmodem:put'];
+const may = (await rights(mailbox, VERBS.map((v) => `${v} *`))).commands;
+const allowed = VERBS.filter((v) => may[`${v} *`]);
+$('transfers').hidden = allowed.length === 0;
+$('transfer-buttons').append(...allowed.map((v) => button(v, () => transfer(v))));
 
+let uploading = null;
+$('upload-cancel').addEventListener('click', () => uploading?.abort());
 $('upload-form').addEventListener('submit', async (e) => {
   e.preventDefault();
   const file = $('upload-file').files[0];
   if (!file) { say($('upload-status'), { status: 'ERROR', text: 'choose a file first' }); return; }
   $('upload').disabled = true;
+  uploading = new AbortController();
+  $('upload-cancel').hidden = false;
   const bytes = new Uint8Array(await file.arrayBuffer());
   const r = await upload(po, file.name, bytes, $('if-exists').value, (done, total) => {
     $('upload-status').textContent = progressText(`Uploading ${file.name}`, done, total);
-  });
+  }, uploading.signal);
+  uploading = null;
+  $('upload-cancel').hidden = true;
   $('upload').disabled = false;
   say($('upload-status'), r);
   if (r.status !== 'ERROR') {

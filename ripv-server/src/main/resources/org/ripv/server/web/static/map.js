@@ -1,46 +1,139 @@
 import { vehicleName } from './names.js';
-// An offline map: latitude/longitude grid lines with each vehicle's track and latest fix. No tiles, no internet.
-export function drawMap(canvas, vehicles) {
-  const g = canvas.getContext('2d');
-  const w = canvas.width, h = canvas.height;
+// An offline map: latitude/longitude grid lines, each vehicle's whole track in time order with GPS fixes (filled dots)
+// told from dead-reckoned ones (open rings), its latest fix and name, a legend and a scale bar. No tiles, no internet.
+// Drawn at the canvas's size on screen in CSS pixels (sharp, and the labels as large on a phone as on a desk).
+// A vehicle is { name, track: [fix] }, a fix { lat, lon, t, gps } or a [lat, lon] pair (a GPS fix, as the public view
+// sends). `layers` are drawn last, each called with (g, { x(lon), y(lat), w, h }): room for currents and waypoints.
+// `focus` names the vehicle the map is fitted to (the others still drawn where they fall); none: every vehicle.
+
+/** A fix in one form: [lat, lon] pairs are GPS fixes. */
+export function fix(p) {
+  return Array.isArray(p) ? { lat: p[0], lon: p[1], t: 0, gps: true } : p;
+}
+
+export function colour(i) {
+  return `hsl(${(i * 67) % 360} 70% 38%)`;
+}
+
+export function drawMap(canvas, vehicles, layers = [], focus = '') {
   const css = getComputedStyle(document.documentElement);
-  g.fillStyle = css.getPropertyValue('--card') || '#fff';
+  const ink = (name, fallback) => css.getPropertyValue(name).trim() || fallback;
+  const box = canvas.getBoundingClientRect();
+  const w = Math.max(200, Math.round(box.width) || 800), h = Math.max(150, Math.round(box.height) || 600);
+  const dpr = window.devicePixelRatio || 1;
+  canvas.width = Math.round(w * dpr);
+  canvas.height = Math.round(h * dpr);
+  const g = canvas.getContext('2d');
+  g.setTransform(dpr, 0, 0, dpr, 0, 0);
+  g.fillStyle = ink('--card', '#fff');
   g.fillRect(0, 0, w, h);
-  const points = vehicles.flatMap((v) => v.track);
+  const tracks = vehicles.map((v) => ({ name: v.name, fixes: v.track.map(fix) }));
+  const points = tracks.flatMap((v) => v.fixes);
+  const fitted = tracks.find((v) => v.name === focus && v.fixes.length)?.fixes || points;
+
+  // Bounds with equal distances across and up (a degree of longitude is cos(lat) of one of latitude).
   let [minLat, maxLat, minLon, maxLon] = [-60, 60, -180, 180];
-  if (points.length) {
-    minLat = Math.min(...points.map((p) => p[0])); maxLat = Math.max(...points.map((p) => p[0]));
-    minLon = Math.min(...points.map((p) => p[1])); maxLon = Math.max(...points.map((p) => p[1]));
-    const pad = Math.max(0.02, (maxLat - minLat) * 0.2, (maxLon - minLon) * 0.2);
-    minLat -= pad; maxLat += pad; minLon -= pad; maxLon += pad;
+  if (fitted.length) {
+    minLat = Math.min(...fitted.map((p) => p.lat)); maxLat = Math.max(...fitted.map((p) => p.lat));
+    minLon = Math.min(...fitted.map((p) => p.lon)); maxLon = Math.max(...fitted.map((p) => p.lon));
   }
-  const x = (lon) => ((lon - minLon) / (maxLon - minLon)) * w;
-  const y = (lat) => h - ((lat - minLat) / (maxLat - minLat)) * h;
-  const step = niceStep(Math.max(maxLat - minLat, maxLon - minLon) / 5);
-  g.strokeStyle = css.getPropertyValue('--line') || '#ccc';
-  g.fillStyle = css.getPropertyValue('--muted') || '#555';
-  g.font = '14px sans-serif';
+  const k = Math.max(0.05, Math.cos((((minLat + maxLat) / 2) * Math.PI) / 180));
+  const spanLat = Math.max(0.01, maxLat - minLat) * 1.3, spanLon = Math.max(0.01, maxLon - minLon) * 1.3;
+  const perDegree = Math.min(h / spanLat, w / (spanLon * k)); // pixels per degree of latitude
+  const midLat = (minLat + maxLat) / 2, midLon = (minLon + maxLon) / 2;
+  const x = (lon) => w / 2 + (lon - midLon) * k * perDegree;
+  const y = (lat) => h / 2 - (lat - midLat) * perDegree;
+
+  // Grid steps by the room each axis has: a label of longitude needs about 110 px, one of latitude 60.
+  const latStep = niceStep(h / perDegree / Math.max(2, Math.floor(h / 60)));
+  const lonStep = niceStep(w / (k * perDegree) / Math.max(2, Math.floor(w / 110)));
+  const digits = (step) => Math.max(0, -Math.floor(Math.log10(step)));
+  g.strokeStyle = ink('--line', '#ccc');
+  g.fillStyle = ink('--muted', '#555');
+  g.font = '13px system-ui, sans-serif';
   g.lineWidth = 1;
-  for (let lat = Math.ceil(minLat / step) * step; lat <= maxLat; lat += step) {
+  const lat0 = midLat - h / 2 / perDegree, lat1 = midLat + h / 2 / perDegree;
+  const lon0 = midLon - w / 2 / (k * perDegree), lon1 = midLon + w / 2 / (k * perDegree);
+  for (let lat = Math.ceil(lat0 / latStep) * latStep; lat <= lat1; lat += latStep) {
     g.beginPath(); g.moveTo(0, y(lat)); g.lineTo(w, y(lat)); g.stroke();
-    g.fillText(`${lat.toFixed(step < 1 ? 2 : 0)}°`, 4, y(lat) - 3);
+    if (y(lat) > 30 && y(lat) < h - 30) g.fillText(`${lat.toFixed(digits(latStep))}°`, 4, y(lat) - 3);
   }
-  for (let lon = Math.ceil(minLon / step) * step; lon <= maxLon; lon += step) {
+  for (let lon = Math.ceil(lon0 / lonStep) * lonStep; lon <= lon1; lon += lonStep) {
     g.beginPath(); g.moveTo(x(lon), 0); g.lineTo(x(lon), h); g.stroke();
-    g.fillText(`${lon.toFixed(step < 1 ? 2 : 0)}°`, x(lon) + 3, h - 4);
+    const text = `${lon.toFixed(digits(lonStep))}°`;
+    if (x(lon) + 3 + g.measureText(text).width < w - 2) g.fillText(text, x(lon) + 3, 14);
   }
-  vehicles.forEach((v, i) => {
-    if (!v.track.length) return;
-    const colour = `hsl(${(i * 67) % 360} 70% 40%)`;
-    g.strokeStyle = colour; g.fillStyle = colour; g.lineWidth = 2;
-    g.beginPath();
-    v.track.forEach(([lat, lon], k) => (k ? g.lineTo(x(lon), y(lat)) : g.moveTo(x(lon), y(lat))));
-    g.stroke();
-    const [lat, lon] = v.track[v.track.length - 1];
-    g.beginPath(); g.arc(x(lon), y(lat), 6, 0, 2 * Math.PI); g.fill();
-    g.fillText(vehicleName(v.name), x(lon) + 8, y(lat) - 8);
+
+  let gps = 0, dr = 0;
+  const placed = []; // label boxes so far: a name never covers another
+  tracks.forEach((v, i) => {
+    if (!v.fixes.length) return;
+    const c = colour(i);
+    const fixes = [...v.fixes].sort((a, b) => (a.t || 0) - (b.t || 0));
+    g.strokeStyle = c; g.fillStyle = c;
+    // One line through the GPS fixes, a thinner dashed one through the dead-reckoned positions: the two disagree by
+    // the glider's drift, and one line through both would zig-zag between them.
+    for (const gpsOnes of [false, true]) {
+      g.lineWidth = gpsOnes ? 2 : 1;
+      g.setLineDash(gpsOnes ? [] : [4, 3]);
+      g.beginPath();
+      fixes.filter((p) => !!p.gps === gpsOnes).forEach((p, n) => (n ? g.lineTo(x(p.lon), y(p.lat)) : g.moveTo(x(p.lon), y(p.lat))));
+      g.stroke();
+    }
+    g.setLineDash([]);
+    g.lineWidth = 1.5;
+    for (const p of fixes) {
+      g.beginPath();
+      if (p.gps) { gps++; g.arc(x(p.lon), y(p.lat), 3.5, 0, 2 * Math.PI); g.fill(); } else { dr++; g.arc(x(p.lon), y(p.lat), 2.5, 0, 2 * Math.PI); g.stroke(); }
+    }
+    const last = fixes[fixes.length - 1];
+    g.beginPath(); g.arc(x(last.lon), y(last.lat), 7, 0, 2 * Math.PI); g.fill();
+    label(g, vehicleName(v.name), x(last.lon) + 10, y(last.lat) - 8, w, ink('--card', '#fff'), c, placed);
   });
+  layers.forEach((layer) => layer(g, { x, y, w, h }));
+  legend(g, h, ink);
+  scaleBar(g, w, h, perDegree, ink);
   canvas.dataset.points = String(points.length);
+  canvas.dataset.gps = String(gps);
+  canvas.dataset.dr = String(dr);
+}
+
+/** A name with a halo, kept inside the map and below any name it would cover. */
+function label(g, text, px, py, w, halo, c, placed) {
+  g.font = 'bold 15px system-ui, sans-serif';
+  const tw = g.measureText(text).width;
+  const at = Math.min(px, w - tw - 4);
+  let top = Math.max(18, py);
+  while (placed.some((b) => at < b.x + b.w && b.x < at + tw && Math.abs(top - b.y) < 18)) top += 18;
+  placed.push({ x: at, y: top, w: tw });
+  g.lineWidth = 4; g.strokeStyle = halo; g.strokeText(text, at, top);
+  g.fillStyle = c; g.fillText(text, at, top);
+}
+
+function legend(g, h, ink) {
+  g.font = '13px system-ui, sans-serif';
+  const y = h - 12;
+  g.fillStyle = ink('--card', '#fff'); g.globalAlpha = 0.85; g.fillRect(4, y - 14, 190, 20); g.globalAlpha = 1;
+  g.fillStyle = ink('--fg', '#222'); g.strokeStyle = ink('--fg', '#222'); g.lineWidth = 1.5;
+  g.beginPath(); g.arc(14, y - 4, 3.5, 0, 2 * Math.PI); g.fill();
+  g.fillText('GPS', 22, y);
+  g.beginPath(); g.arc(64, y - 4, 2.5, 0, 2 * Math.PI); g.stroke();
+  g.fillText('dead-reckoned', 72, y);
+}
+
+/** A bar of a round distance, about a quarter of the map wide. */
+function scaleBar(g, w, h, perDegree, ink) {
+  const metresPerPixel = 111320 / perDegree;
+  const metres = niceStep(metresPerPixel * w * 0.22);
+  const px = metres / metresPerPixel;
+  const text = metres >= 1000 ? `${metres / 1000} km` : `${metres} m`;
+  const x1 = w - 12, x0 = x1 - px, y = h - 12;
+  g.fillStyle = ink('--card', '#fff'); g.globalAlpha = 0.85; g.fillRect(x0 - 6, y - 22, px + 12, 28); g.globalAlpha = 1;
+  g.strokeStyle = ink('--fg', '#222'); g.lineWidth = 2;
+  g.beginPath(); g.moveTo(x0, y - 6); g.lineTo(x0, y); g.lineTo(x1, y); g.lineTo(x1, y - 6); g.stroke();
+  g.fillStyle = ink('--fg', '#222'); g.font = '13px system-ui, sans-serif';
+  g.fillText(text, x0 + (px - g.measureText(text).width) / 2, y - 8);
+  g.canvas.dataset.scale = text;
 }
 
 function niceStep(raw) {

@@ -32,14 +32,22 @@ export class PostOffice {
     w.done(m);
   }
 
-  /** Sends a request; resolves with its final reply; progress replies go to onProgress; extra: an upload chunk (transfer.js). */
-  async send(mailbox, body, priority = 'normal', onProgress = () => {}, extra = {}) {
-    await this.ready;
+  /**
+   * Sends a request. Returns at once a promise of its final reply (progress replies go to onProgress) that carries the
+   * request's id as `.id`, so the caller can cancel what it started (?cancel ID) before the reply comes; extra: an
+   * upload chunk (transfer.js).
+   */
+  send(mailbox, body, priority = 'normal', onProgress = () => {}, extra = {}) {
     const id = this.nextId++;
     const reply = new Promise((done) => this.waiting.set(id, { done, progress: onProgress }));
-    this.socket.send(JSON.stringify({ ...extra, id, mailbox, body, priority, csrf: this.csrf }));
-    this.lastId = id;
-    return reply;
+    this.ready.then(() => this.socket.send(JSON.stringify({ ...extra, id, mailbox, body, priority, csrf: this.csrf })),
+      () => this.received({ id, status: 'ERROR', error: 'NOT_AVAILABLE', text: 'the connection to the server could not be opened' }));
+    return Object.assign(reply, { id });
+  }
+
+  /** Cancels a request this page sent (its id from send's `.id`); resolves with the server's answer. */
+  cancel(id) {
+    return this.send('', `?cancel ${id}`);
   }
 }
 
@@ -76,11 +84,4 @@ export function bar(s) {
   document.body.prepend(header);
 }
 
-export function ago(ms) {
-  if (!ms) return 'never';
-  const s = Math.max(0, Math.round((Date.now() - ms) / 1000));
-  if (s < 60) return `${s} s ago`;
-  if (s < 3600) return `${Math.round(s / 60)} min ago`;
-  if (s < 86400) return `${Math.round(s / 3600)} h ago`;
-  return `${Math.round(s / 86400)} days ago`;
-}
+export { ago } from './time.js';

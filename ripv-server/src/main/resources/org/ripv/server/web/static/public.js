@@ -1,11 +1,12 @@
 // The public view (--public GLOB): map, track and last contact of the vehicles the operator made
 // public, for anonymous visitors. Read only: one GET, again every 15 s; no session, no WebSocket.
-import { ago } from './postoffice.js';
+import { ago, utc } from './time.js';
 import { drawMap } from './map.js';
 
 const $ = (id) => document.getElementById(id);
 const BADGE = { ON_CALL: 'on call', DIVED: 'dived', LOST: 'lost' };
 let draw = null;
+let shown = null; // what the map shows
 
 function row(v) {
   const tr = document.createElement('tr');
@@ -18,6 +19,7 @@ function row(v) {
   tr.append(...cells.map((c) => { const td = document.createElement('td'); td.append(c); return td; }));
   tr.children[2].className = 'ago';
   tr.children[2].dataset.time = String(v.lastContact || 0);
+  tr.children[2].title = utc(v.lastContact); // the time itself, as every page writes it
   return tr;
 }
 
@@ -30,12 +32,15 @@ async function refresh() {
     draw = p.mapTiles ? (await import('./tilemap.js')).tileMap($('map'), p.mapTiles) : (list) => drawMap($('map'), list);
   }
   $('vehicles').replaceChildren(...p.vehicles.map(row));
-  draw(p.vehicles.map((v) => ({ name: v.name, track: v.track })));
-  $('state').textContent = `${p.vehicles.length} vehicle(s), updated ${new Date().toLocaleTimeString()}.`;
+  shown = p.vehicles.map((v) => ({ name: v.name, track: v.track }));
+  draw(shown);
+  $('state').textContent = `${p.vehicles.length} vehicle(s), updated ${utc(Date.now())}.`;
   return true;
 }
 
 if (await refresh()) setInterval(refresh, 15000);
+// The map is drawn at its size on screen: again when that changes.
+window.addEventListener('resize', () => { if (shown) draw(shown); });
 setInterval(() => {
   for (const td of document.querySelectorAll('td.ago')) td.textContent = ago(Number(td.dataset.time));
 }, 1000);

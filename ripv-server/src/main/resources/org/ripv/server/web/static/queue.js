@@ -2,7 +2,8 @@
 // rights and runs; this page shows what it says. A refused workflow's FILE:LINE: reason is shown at that line.
 import { session, PostOffice, bar } from './postoffice.js';
 import { upload, storedName } from './transfer.js';
-import { el, button, say, mailboxParam, vehicleNav, observerOnly } from './ui.js';
+import { el, button, say, mailboxParam, vehicleNav } from './ui.js';
+import { rights } from './rights.js';
 import { command, NotAName } from './address.js';
 
 const { mailbox, handle } = mailboxParam();
@@ -13,6 +14,9 @@ document.getElementById('name').textContent = `Queue and receipts of ${handle}`;
 document.title = `RIPV queue ${handle}`;
 document.querySelector('main').prepend(vehicleNav(mailbox, 'queue.html'));
 const $ = (id) => document.getElementById(id);
+// What the permit file lets this user do with the queue (the server decides each command again).
+const ADD = command('?queue', 'add', mailbox, 'x.wf'), REMOVE = command('?queue', 'remove', mailbox, '1'), CLEAR = command('?queue', 'clear', mailbox);
+const may = (await rights('', [ADD, REMOVE, CLEAR])).commands;
 
 // "   3  alice      once         fetch.wf  2 step(s), queued" — the listing's rows start with the workflow's id.
 const ROW = /^\s*(\d+)\s+(\S+)\s+(\S+)\s+(.*)$/;
@@ -25,7 +29,7 @@ async function listQueue() {
   $('queue').replaceChildren(...lines.slice(1).map((l) => ROW.exec(l)).filter(Boolean).map((m) => {
     const li = el('li', '', { 'data-id': m[1] });
     li.append(el('span', `#${m[1]} ${m[4]} (${m[2]}, ${m[3]})`));
-    if (!observerOnly(s)) {
+    if (may[REMOVE]) {
       li.append(button('Remove', async () => {
         const x = await po.send('', command('?queue', 'remove', mailbox, m[1]));
         say($('queue-reply'), { ...x, text: x.text.split('\n')[0] });
@@ -38,7 +42,8 @@ async function listQueue() {
 
 async function listStore() {
   const r = await po.send('', '?ulfiles');
-  const names = (r.result?.files || []).map((f) => f.name).sort();
+  // Workflows only (NAME.wf, as docs/workflows.md names them): the store also holds missions and data files.
+  const names = (r.result?.files || []).map((f) => f.name).filter((n) => /\.wf$/i.test(n)).sort();
   $('wf-stored').replaceChildren(...names.map((n) => el('option', n, { value: n })));
 }
 
@@ -112,8 +117,9 @@ async function listReceipts() {
   const r = await po.send('', command('?receipts', mailbox, '--last', '50'));
   if (r.status === 'ERROR') { say($('receipts-status'), r); return; }
   const [head, ...rest] = r.text.split('\n\n');
-  $('receipts-status').textContent = head;
-  // Receipts, oldest first, each beginning "receipt: workflow ID 'FILE' of OWNER …": shown newest first, opened on a click.
+  // The server lists them oldest first, each beginning "receipt: workflow ID 'FILE' of OWNER …"; the page shows them
+  // newest first, opened on a click, and says so.
+  $('receipts-status').textContent = /oldest first\s*$/.test(head) ? head.replace(/oldest first\s*$/, 'newest first') : head;
   const receipts = rest.join('\n\n').split(/\n(?=receipt: )/).filter((t) => t.startsWith('receipt: ')).reverse();
   $('receipts').replaceChildren(...receipts.map((t) => {
     const d = el('details', '', { class: 'receipt' });
@@ -123,10 +129,8 @@ async function listReceipts() {
   }));
 }
 $('refresh-receipts').addEventListener('click', listReceipts);
-if (observerOnly(s)) {
-  $('add').hidden = true;
-  $('clear-queue').hidden = true;
-}
+$('add').hidden = !may[ADD];
+$('clear-queue').hidden = !may[CLEAR];
 // A workflow's events arrive on the MailBox's console stream: the queue and receipts follow them.
 po.onPush = (m) => {
   if (m.result?.kind === 'ConsoleBatch' && m.result.mailbox === mailbox && m.result.entries.some((e) => e.event?.startsWith('WORKFLOW'))) {

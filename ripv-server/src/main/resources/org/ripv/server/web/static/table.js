@@ -1,3 +1,5 @@
+import { utcText } from './time.js';
+
 // A TableResult as an HTML table (every cell set with textContent: database text is never HTML), and as CSV.
 export function tableElement(t) {
   const table = document.createElement('table');
@@ -15,7 +17,7 @@ export function tableElement(t) {
     const tr = document.createElement('tr');
     for (const cell of r) {
       const td = document.createElement('td');
-      td.textContent = cell ?? 'null';
+      td.textContent = cell == null ? 'null' : utcText(cell); // timestamps as every page shows time; the CSV keeps them whole
       tr.append(td);
     }
     body.append(tr);

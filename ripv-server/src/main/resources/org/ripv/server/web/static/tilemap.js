@@ -1,7 +1,8 @@
 // The map on the operator's tiles (--map-tiles URL) with Leaflet from the server's WebJar: each
-// vehicle's track and latest fix. The CSP lets images come from that tile host only.
+// vehicle's whole track (GPS fixes filled, dead-reckoned ones as rings, as on the offline map), its latest fix, a scale. The CSP lets images come from that tile host only.
 import * as L from '/webjars/leaflet/1.9.4/dist/leaflet-src.esm.js';
 import { vehicleName } from './names.js';
+import { fix, colour } from './map.js';
 
 export function tileMap(canvas, template) {
   const css = document.createElement('link');
@@ -14,23 +15,33 @@ export function tileMap(canvas, template) {
   div.setAttribute('role', 'img');
   div.setAttribute('aria-label', canvas.getAttribute('aria-label') || 'Map');
   canvas.replaceWith(div);
-  const map = L.map(div, { worldCopyJump: true }).setView([0, 0], 2);
+  const map = L.map(div, { worldCopyJump: true, preferCanvas: true }).setView([0, 0], 2);
   const host = new URL(template.replaceAll(/\{[a-z]\}/g, '0')).host;
   L.tileLayer(template, { maxZoom: 18, attribution: `Tiles: ${host}` }).addTo(map);
+  L.control.scale({ imperial: false }).addTo(map);
   const layer = L.layerGroup().addTo(map);
-  let fitted = false;
-  return (vehicles) => {
+  let fitted = null; // the focus the map was last fitted to
+  return (vehicles, focus = '') => {
     layer.clearLayers();
     const all = [];
     vehicles.forEach((v, i) => {
       if (!v.track.length) return;
-      const colour = `hsl(${(i * 67) % 360} 70% 40%)`;
-      L.polyline(v.track, { color: colour, weight: 2 }).addTo(layer);
-      const last = v.track[v.track.length - 1];
-      L.circleMarker(last, { radius: 6, color: colour, fillOpacity: 0.9 }).bindTooltip(label(vehicleName(v.name)), { permanent: true }).addTo(layer);
-      all.push(...v.track);
+      const c = colour(i);
+      const fixes = v.track.map(fix).sort((a, b) => (a.t || 0) - (b.t || 0));
+      const points = fixes.map((p) => [p.lat, p.lon]);
+      // GPS fixes joined by a solid line, dead-reckoned positions by a dashed one (they differ by the drift).
+      L.polyline(fixes.filter((p) => p.gps).map((p) => [p.lat, p.lon]), { color: c, weight: 2 }).addTo(layer);
+      L.polyline(fixes.filter((p) => !p.gps).map((p) => [p.lat, p.lon]), { color: c, weight: 1, dashArray: '4 3' }).addTo(layer);
+      for (const p of fixes) {
+        L.circleMarker([p.lat, p.lon], p.gps ? { radius: 3.5, color: c, fillOpacity: 1, weight: 1 } : { radius: 2.5, color: c, fill: false, weight: 1.5 }).addTo(layer);
+      }
+      const last = points[points.length - 1];
+      L.circleMarker(last, { radius: 7, color: c, fillOpacity: 0.9 }).bindTooltip(label(vehicleName(v.name)), { permanent: true }).addTo(layer);
+      all.push(...points);
     });
-    if (all.length && !fitted) { map.fitBounds(all, { maxZoom: 12, padding: [20, 20] }); fitted = true; }
+    const mine = vehicles.find((v) => v.name === focus && v.track.length);
+    const bounds = mine ? mine.track.map(fix).map((p) => [p.lat, p.lon]) : all;
+    if (bounds.length && fitted !== focus) { map.fitBounds(bounds, { maxZoom: 12, padding: [20, 20] }); fitted = focus; }
     div.dataset.points = String(all.length);
   };
 }

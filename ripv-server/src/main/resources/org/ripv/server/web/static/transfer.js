@@ -21,13 +21,18 @@ function fromBase64(text) {
 
 /**
  * Uploads bytes as NAME; mode '' refuses a taken name (FILE_EXISTS), 'keep' stores under a new free name, 'replace'
- * replaces (a right of its own). Resolves with the last reply: an ERROR, or the one naming where it was stored.
+ * replaces (a right of its own). Resolves with the last reply: an ERROR, or the one naming where it was stored. An
+ * aborted signal stops it between chunks and drops what the server holds of it (?upload-cancel).
  */
-export async function upload(po, name, bytes, mode, onProgress = () => {}) {
+export async function upload(po, name, bytes, mode, onProgress = () => {}, signal = null) {
   const suffix = mode ? ` ${mode}` : '';
   let offset = 0;
   let last;
   do {
+    if (signal?.aborted) {
+      await po.send('', `?upload-cancel ${name}`); // the server drops the part it holds
+      return { status: 'ERROR', error: 'CANCELLED', text: `upload of ${name} cancelled at ${offset} of ${bytes.length} bytes; nothing stored` };
+    }
     const chunk = bytes.subarray(offset, Math.min(bytes.length, offset + UP_CHUNK));
     last = await po.send('', `?upload ${name} ${offset} ${bytes.length}${suffix}`, 'normal', () => {},
       { file: name, data: toBase64(chunk) });
@@ -43,12 +48,13 @@ export function storedName(reply, asked) {
   return reply.result?.kind === 'FileListing' && reply.result.files.length ? reply.result.files[0].name : asked;
 }
 
-/** Fetches a file of the download store; resolves with { blob } or { error: reply }. */
-export async function download(po, name, onProgress = () => {}) {
+/** Fetches a file of the download store; resolves with { blob } or { error: reply }; an aborted signal stops it between chunks. */
+export async function download(po, name, onProgress = () => {}, signal = null) {
   const parts = [];
   let offset = 0;
   let total = 0;
   do {
+    if (signal?.aborted) return { error: { status: 'ERROR', error: 'CANCELLED', text: `download of ${name} cancelled at ${offset} of ${total} bytes` } };
     const r = await po.send('', `?download ${name} ${offset} ${DOWN_CHUNK}`);
     if (r.status === 'ERROR') return { error: r };
     const c = r.result;

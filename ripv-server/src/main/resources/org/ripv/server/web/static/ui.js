@@ -37,14 +37,10 @@ export function mailboxParam() {
 /** Links between a vehicle's pages, kept in the ?m= of the page. */
 export function vehicleNav(mailbox, here) {
   const nav = el('nav', '', { class: 'row tabs', 'aria-label': 'this vehicle' });
-  for (const [page, text] of [['vehicle.html', 'Console'], ['files.html', 'Files'], ['queue.html', 'Queue and receipts']]) {
+  for (const [page, text] of [['vehicle.html', 'Console'], ['files.html', 'Files'], ['queue.html', 'Queue and receipts'], ['plan.html', 'Plan']]) {
     const a = el('a', text, { href: `/${page}?m=${encodeURIComponent(mailbox)}` });
     if (page === here) a.setAttribute('aria-current', 'page');
     nav.append(a);
   }
   return nav;
-}
-
-export function observerOnly(s) {
-  return s.roles.length > 0 && s.roles.every((r) => r === 'observers');
 }

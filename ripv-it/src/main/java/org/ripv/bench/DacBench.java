@@ -1,0 +1,218 @@
+package org.ripv.bench;
+
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.dataformat.yaml.YAMLFactory;
+import java.io.InputStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Locale;
+import org.ripv.dac.Metadata;
+import org.ripv.dac.Profile;
+import org.ripv.dac.ProfileSplitter;
+import org.ripv.dac.ProfileWriter;
+import org.ripv.dac.Profiles;
+import org.ripv.dac.QcConfig;
+import org.ripv.dac.Segment;
+import ucar.ma2.Array;
+import ucar.nc2.Dimension;
+import ucar.nc2.NetcdfFileWriter;
+import ucar.nc2.Variable;
+
+/**
+ * {@code ./ripv bench dac} (issue 37; a measurement, not a timed test): DAC profile files per
+ * second from decoded data — a segment of {@code --yos} dives and climbs, 1 sample / 10 s, split,
+ * derived (GSW), QC'd (four tests on temperature, gross range on four more variables), written
+ * from the template and renamed into place — against writing the same nine arrays per profile
+ * with NetCDF-Java alone (no attributes, no QC), the floor, in the same run. Wall and process CPU
+ * per profile, the ratio (target ≤ 1.5×), the load average. Options: {@code --yos N} (default
+ * 200), {@code --runs N} (default 5).
+ */
+public final class DacBench {
+    private DacBench() {}
+
+    static final String QC = """
+            temperature: {qartod: {gross_range_test: {suspect_span: [0, 30], fail_span: [-2.5, 40]}, spike_test: {suspect_threshold: 0.5, fail_threshold: 2.0}, rate_of_change_test: {threshold: 0.1}, flat_line_test: {tolerance: 0.001, suspect_threshold: 600, fail_threshold: 1800}}}
+            conductivity: {qartod: {gross_range_test: {fail_span: [0, 10]}}}
+            salinity: {qartod: {gross_range_test: {fail_span: [0, 42]}}}
+            density: {qartod: {gross_range_test: {fail_span: [1000, 1040]}}}
+            pressure: {qartod: {gross_range_test: {fail_span: [-1, 1000]}}}
+            """;
+
+    /** A decoded segment: {@code yos} dives to 100 m and climbs, one sample every 10 s, GPS fixes at both ends. */
+    static Segment segment(int yos) {
+        int perLeg = 60;
+        int n = yos * 2 * perLeg;
+        double[] t = new double[n], p = new double[n], temp = new double[n], cond = new double[n];
+        for (int i = 0; i < n; i++) {
+            t[i] = 1.7e9 + i * 10.0;
+            int k = i % (2 * perLeg);
+            double depthFraction = k < perLeg ? k / (double) perLeg : (2 * perLeg - k) / (double) perLeg;
+            p[i] = 0.1 + 10 * depthFraction; // bar
+            temp[i] = 14 - 8 * depthFraction + 0.01 * Math.sin(i);
+            cond[i] = 4.2 - 0.6 * depthFraction;
+        }
+        Segment.Track gps = new Segment.Track(new double[] {t[0] - 60, t[n - 1] + 60}, new double[] {41.5, 41.6}, new double[] {-70.5, -70.4});
+        return new Segment("bench_1-2024-001-0-1", "bench_1", false, "bench_1-2024-001-0-1.tbd", t, p, temp, cond,
+                gps, new Segment.Track(new double[0], new double[0], new double[0]), t[n - 1], 0.05, -0.02);
+    }
+
+    public static void main(String[] args) throws Exception {
+        List<String> a = new ArrayList<>(Arrays.asList(args));
+        boolean shortRun = a.remove("--not-a-measurement");
+        int yos = option(a, "--yos", 200);
+        int runs = option(a, "--runs", 5);
+        if (!a.isEmpty()) {
+            System.err.println("Error: unknown options " + a + "; ripv bench dac [--yos N] [--runs N]");
+            System.exit(2);
+        }
+        Metadata meta;
+        try (InputStream in = DacBench.class.getResourceAsStream("dac-deployment.json")) {
+            meta = Metadata.parse(new ObjectMapper().readTree(in), "dac-deployment.json");
+        }
+        QcConfig qc = QcConfig.parse(new ObjectMapper(new YAMLFactory()).readTree(QC), "bench QC");
+        ProfileWriter writer = new ProfileWriter(meta, qc);
+        Segment seg = segment(yos);
+        List<Profile> decoded = Profiles.of(seg, ProfileSplitter.defaults());
+        Path dir = Files.createTempDirectory("ripv-bench-dac");
+        try {
+            System.out.printf(Locale.ROOT, "dac: %d yos, %d profiles of about %d samples per run, %d runs%s%n", yos, decoded.size(),
+                    decoded.get(0).size(), runs, shortRun ? " (--short: the figures below are not measurements)" : "");
+            // warm-up: both paths once; the floor's files are the path's, read back
+            path(seg, writer, dir);
+            List<FileContent> contents = new ArrayList<>();
+            try (var files = Files.list(dir)) {
+                for (Path f : files.sorted().toList()) {
+                    contents.add(FileContent.read(f));
+                }
+            }
+            for (int w = 0; w < (shortRun ? 1 : 5); w++) { // the JIT's warm-up, for both
+                path(seg, writer, dir);
+                floor(contents, dir);
+            }
+            // Per run, the path then the floor; CPU summed over all runs (the process clock ticks in
+            // 10 ms, too coarse for one run), wall as the median of the runs' ratios.
+            long cpuPath = 0, cpuFloor = 0, nPath = 0, nFloor = 0;
+            double[] ratios = new double[runs];
+            double bestPath = 0, bestFloor = 0;
+            for (int r = 0; r < runs; r++) {
+                CpuClock c = CpuClock.start();
+                int profiles = path(seg, writer, dir);
+                double wall = c.wallNanos() / 1e9 / profiles;
+                cpuPath += c.cpuNanos();
+                nPath += profiles;
+                CpuClock f = CpuClock.start();
+                int n = floor(contents, dir);
+                double fwall = f.wallNanos() / 1e9 / n;
+                cpuFloor += f.cpuNanos();
+                nFloor += n;
+                ratios[r] = wall / fwall;
+                bestPath = Math.max(bestPath, 1 / wall);
+                bestFloor = Math.max(bestFloor, 1 / fwall);
+                System.out.printf(Locale.ROOT, "run %d: DAC files %.0f profiles/s, NetCDF alone %.0f profiles/s (wall %.2f×)%n",
+                        r + 1, 1 / wall, 1 / fwall, ratios[r]);
+            }
+            Arrays.sort(ratios);
+            double median = ratios[runs / 2];
+            if (cpuFloor == 0 || cpuPath == 0) {
+                // the process clock ticks in 10 ms: a run this short has no CPU figure to give
+                System.out.printf(Locale.ROOT, "DAC files against NetCDF-Java writing the same files alone: wall median %.2f×;"
+                        + " CPU not measured (the run is shorter than the process clock's 10 ms tick)%n", ratios[runs / 2]);
+                System.out.println(CpuClock.machineLine());
+                return;
+            }
+            double cpuRatio = (cpuPath / (double) nPath) / (cpuFloor / (double) nFloor);
+            System.out.printf(Locale.ROOT, "DAC files (split, GSW, QC, template, write and rename) against NetCDF-Java writing the same"
+                    + " files alone: best %.0f against %.0f profiles/s; wall median %.2f×, CPU %.2f× (target <= 1.5×)%n",
+                    bestPath, bestFloor, median, cpuRatio);
+            System.out.println(CpuClock.ratioLine("DAC profile file", cpuPath / 1e3 / nPath, cpuFloor / 1e3 / nFloor, median));
+            System.out.println(CpuClock.machineLine());
+        } finally {
+            try (var s = Files.list(dir)) {
+                for (Path p : s.toList()) {
+                    Files.deleteIfExists(p);
+                }
+            }
+            Files.deleteIfExists(dir);
+        }
+    }
+
+    /** The product's path from decoded data: split, derive, QC, write each profile's file. */
+    static int path(Segment seg, ProfileWriter writer, Path dir) throws Exception {
+        List<Profile> ps = Profiles.of(seg, ProfileSplitter.defaults());
+        for (Profile p : ps) {
+            writer.write(p, dir);
+        }
+        return ps.size();
+    }
+
+    /** A file's variables (with their attributes and values) and global attributes, as the floor writes them again. */
+    record FileContent(List<ucar.nc2.Dimension> dims, List<Variable> vars, List<Array> values, List<ucar.nc2.Attribute> globals) {
+        static FileContent read(Path f) throws Exception {
+            try (ucar.nc2.NetcdfFile nc = ucar.nc2.NetcdfFile.open(f.toString())) {
+                List<Array> values = new ArrayList<>();
+                for (Variable v : nc.getVariables()) {
+                    values.add(v.read());
+                }
+                return new FileContent(nc.getDimensions(), nc.getVariables(), values, nc.getGlobalAttributes());
+            }
+        }
+    }
+
+    /** The floor: NetCDF-Java alone writing each file again — the same dimensions, variables, attributes and arrays. */
+    static int floor(List<FileContent> files, Path dir) throws Exception {
+        int i = 0;
+        for (FileContent c : files) {
+            Path f = dir.resolve("floor-" + (i++) + ".nc");
+            NetcdfFileWriter w = NetcdfFileWriter.createNew(NetcdfFileWriter.Version.netcdf3, f.toString());
+            try {
+                for (Dimension d : c.dims()) {
+                    if (d.isUnlimited()) {
+                        w.addUnlimitedDimension(d.getShortName());
+                    } else {
+                        w.addDimension(null, d.getShortName(), d.getLength());
+                    }
+                }
+                List<Variable> vars = new ArrayList<>();
+                for (Variable v : c.vars()) {
+                    Variable nv = w.addVariable(null, v.getShortName(), v.getDataType(), v.getDimensionsString());
+                    for (ucar.nc2.Attribute a : v.getAttributes()) {
+                        w.addVariableAttribute(nv, a);
+                    }
+                    vars.add(nv);
+                }
+                for (ucar.nc2.Attribute a : c.globals()) {
+                    w.addGroupAttribute(null, a);
+                }
+                w.create();
+                for (int k = 0; k < vars.size(); k++) {
+                    if (vars.get(k).isUnlimited()) {
+                        w.write(vars.get(k), new int[] {0}, c.values().get(k));
+                    } else {
+                        w.write(vars.get(k), c.values().get(k));
+                    }
+                }
+            } finally {
+                w.close();
+            }
+        }
+        return files.size();
+    }
+
+    private static int option(List<String> a, String name, int dflt) {
+        int i = a.indexOf(name);
+        if (i < 0) {
+            return dflt;
+        }
+        if (i + 1 >= a.size()) {
+            System.err.println("Error: " + name + " needs a number");
+            System.exit(2);
+        }
+        int v = Integer.parseInt(a.get(i + 1));
+        a.remove(i + 1);
+        a.remove(i);
+        return v;
+    }
+}

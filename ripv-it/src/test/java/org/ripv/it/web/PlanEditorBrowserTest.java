@@ -1,0 +1,180 @@
+package org.ripv.it.web;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.io.IOException;
+import java.net.InetAddress;
+import java.net.Socket;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.List;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.openqa.selenium.By;
+import org.openqa.selenium.Dimension;
+import org.openqa.selenium.OutputType;
+import org.openqa.selenium.WebElement;
+import org.openqa.selenium.chrome.ChromeDriver;
+import org.openqa.selenium.support.ui.WebDriverWait;
+
+/**
+ * The plan page (issue 36, item 2, as a table), as launched: the server, the SerialPortServer and
+ * the simulated glider are processes from the jars, and a headless Chromium writes a goto list
+ * (adds waypoints, types their positions, edits a b_arg), saves it and sees the server's
+ * {@code FILE:LINE: reason} for a latitude over 90°, fixes it, sends it on the next call as
+ * {@code goto_l10.ma}, queues a put, and watches both changes become "in effect" as the glider's
+ * dialogs show them; loads the saved file back; asks for the forecast. Screenshots, desktop and
+ * phone, go to {@code target/web-screenshots/plan-*.png} (and docs/images).
+ */
+class PlanEditorBrowserTest {
+    static final String PASSWORD = WebConsoleBrowserTest.PASSWORD;
+    static final Duration T = Duration.ofSeconds(150);
+
+    @TempDir
+    static Path dir;
+    static int http;
+    static String glider;
+    static Path shots;
+    static LaunchedProcesses system;
+
+    @BeforeAll
+    static void startTheSystem() throws Exception {
+        Chromium.assume();
+        system = new LaunchedProcesses(dir, T);
+        shots = Files.createDirectories(WebConsoleBrowserTest.root().resolve("ripv-it/target/web-screenshots"));
+        Path data = Files.createDirectories(dir.resolve("server"));
+        Process pw = system.launch("passwd", PASSWORD + "\n", "-jar", WebConsoleBrowserTest.jar("ripv-server").toString(), "passwd",
+                "--permit", data.resolve("permit.txt").toString(), "alice", "--roles", "operators");
+        assertThat(pw.waitFor()).as(system.log("passwd")).isZero();
+        int port = WebConsoleBrowserTest.freePort();
+        int registry = WebConsoleBrowserTest.freePort();
+        int link = WebConsoleBrowserTest.freePort();
+        http = WebConsoleBrowserTest.freePort();
+        system.launch("server", null, "-jar", WebConsoleBrowserTest.jar("ripv-server").toString(), "server", "--data", data.toString(),
+                "--port", String.valueOf(port), "--registry-port", String.valueOf(registry), "--http-port", String.valueOf(http),
+                "--bind", "127.0.0.1");
+        system.waitFor("the server's web console", () -> {
+            try (Socket s = new Socket(InetAddress.getLoopbackAddress(), http)) {
+                return true;
+            } catch (IOException e) {
+                return false;
+            }
+        });
+        system.launch("serial", null, "-Dripv.host=localhost", "-jar", WebConsoleBrowserTest.jar("ripv-services").toString(), "serial",
+                "--server", "127.0.0.1:" + registry, "--secret-file", data.resolve("service.secret").toString(), "--link",
+                "listen://127.0.0.1:" + link + ",name=glider1,to-vehicle=zmodem,alert=leak|LEAK", "--carrier", "ignore", "--no-enumerate");
+        system.waitFor("the SerialPortServer's MailBoxes", () -> system.log("serial").contains("MailBoxes:"));
+        glider = "<SerialPortServer>::<localhost>glider1";
+        system.launch("simulator", null, "-jar", WebConsoleBrowserTest.jar("ripv-services").toString(), "simulator", "--call",
+                "127.0.0.1:" + link, "--name", "glider1", "--dive-seconds", "2", "--surface-seconds", "10", "--dir",
+                dir.resolve("glider").toString());
+    }
+
+    @AfterAll
+    static void stopTheSystem() {
+        if (system != null) {
+            system.stopAll();
+        }
+    }
+
+    private static String text(org.openqa.selenium.WebDriver b, String id) {
+        return b.findElement(By.id(id)).getText();
+    }
+
+    private static void type(WebElement e, String value) {
+        e.clear();
+        e.sendKeys(value);
+    }
+
+    @Test
+    void aGotoListIsWrittenCheckedSentAndFollowedUntilTheGliderShowsIt() throws Exception {
+        ChromeDriver b = Chromium.start(Files.createDirectories(dir.resolve("plan-browser")));
+        try {
+            WebDriverWait wait = new WebDriverWait(b, T);
+            b.get("https://127.0.0.1:" + http + "/");
+            b.findElement(By.id("user")).sendKeys("alice");
+            b.findElement(By.id("password")).sendKeys(PASSWORD);
+            b.findElement(By.xpath("//button[text()='Log in']")).click();
+            wait.until(d -> d.getCurrentUrl().endsWith("/fleet.html"));
+            b.get("https://127.0.0.1:" + http + "/queue.html?m=" + java.net.URLEncoder.encode(glider, StandardCharsets.UTF_8));
+            wait.until(d -> "true".equals(d.findElement(By.tagName("body")).getAttribute("data-ready")));
+            b.findElement(By.linkText("Plan")).click();
+            wait.until(d -> "true".equals(d.findElement(By.tagName("body")).getAttribute("data-ready")));
+            assertThat(b.getCurrentUrl()).contains("/plan.html?m=");
+
+            // Two waypoints typed in the table; the first with a latitude over 90°.
+            b.findElement(By.id("add-wpt")).click();
+            b.findElement(By.id("add-wpt")).click();
+            b.findElement(By.id("add-wpt")).click();
+            List<WebElement> rows = b.findElements(By.cssSelector("#wpts tbody tr"));
+            assertThat(rows).hasSize(3);
+            rows.get(2).findElement(By.xpath(".//button[text()='Remove']")).click();
+            rows = b.findElements(By.cssSelector("#wpts tbody tr"));
+            assertThat(rows).hasSize(2);
+            type(rows.get(0).findElement(By.className("lat")), "95.2");
+            type(rows.get(0).findElement(By.className("lon")), "-70.6");
+            type(rows.get(0).findElement(By.className("comment")), "west corner");
+            type(rows.get(1).findElement(By.className("lat")), "41.31");
+            type(rows.get(1).findElement(By.className("lon")), "-70.55");
+            WebElement initial = b.findElement(By.cssSelector("#bargs tr[data-name='initial_wpt'] .value"));
+            type(initial, "1");
+            b.findElement(By.id("save")).click();
+            wait.until(d -> !d.findElement(By.id("problems")).getText().isEmpty());
+            assertThat(text(b, "problems")).contains("goto_l11.ma:").contains("latitude '9512.0000' is 95.20000°, over 90°");
+            assertThat(text(b, "save-status")).startsWith("Error: goto_l11.ma was saved but does not pass the check");
+            assertThat(b.findElement(By.id("send")).isEnabled()).isFalse();
+            assertThat(b.findElement(By.cssSelector("#bargs tr[data-name='num_waypoints'] .value")).getAttribute("value")).isEqualTo("2");
+            b.executeScript("document.getElementById('problems').scrollIntoView({block: 'center'})");
+            Files.write(shots.resolve("plan-refused-desktop.png"), b.getScreenshotAs(OutputType.BYTES));
+
+            type(rows.get(0).findElement(By.className("lat")), "41.3");
+            b.findElement(By.id("save")).click();
+            wait.until(d -> text(d, "save-status").startsWith("saved and checked: goto_l11(1).ma: goto_list, 2 waypoint(s)"));
+            assertThat(b.findElement(By.id("problems")).isDisplayed()).isFalse();
+            b.findElement(By.id("send")).click();
+            wait.until(d -> text(d, "send-status").startsWith("change 1: "));
+            type(b.findElement(By.id("set-value")), "40");
+            b.findElement(By.id("set")).click();
+            wait.until(d -> text(d, "set-status").contains("change 2: 'put c_dive_target_depth 40' queued"));
+
+            // The glider's next call takes both; the call after shows them: the page follows the events.
+            wait.withMessage(() -> "changes: " + text(b, "changes")).until(d ->
+                    !d.findElements(By.cssSelector("#changes li[data-id='1'][data-state='in effect']")).isEmpty()
+                            && !d.findElements(By.cssSelector("#changes li[data-id='2'][data-state='in effect']")).isEmpty());
+            assertThat(text(b, "changes")).contains("c_wpt_lat/lon 41.31000, -70.55000 is waypoint 1")
+                    .contains("sensor:c_dive_target_depth=40");
+            assertThat(Files.readString(dir.resolve("glider/goto_l10.ma"))).contains("-7036.0000\t4118.0000 # west corner");
+
+            b.findElement(By.id("forecast")).click();
+            wait.until(d -> d.findElement(By.id("forecast-text")).isDisplayed());
+            assertThat(text(b, "forecast-text")).startsWith("forecast of goto_l11(1).ma for " + glider);
+
+            // The saved file loads back into the table.
+            b.findElement(By.id("add-wpt")).click();
+            type(b.findElement(By.id("plan-file")), "goto_l11(1).ma");
+            b.findElement(By.id("load")).click();
+            wait.until(d -> text(d, "load-status").startsWith("from the upload store"));
+            rows = b.findElements(By.cssSelector("#wpts tbody tr"));
+            assertThat(rows).hasSize(2);
+            assertThat(rows.get(1).findElement(By.className("lat")).getAttribute("value")).isEqualTo("41.31000");
+            assertThat(b.findElement(By.cssSelector("#bargs tr[data-name='initial_wpt'] .value")).getAttribute("value")).isEqualTo("1");
+
+            b.executeScript("document.getElementById('changes').scrollIntoView({block: 'center'})");
+            Files.write(shots.resolve("plan-desktop.png"), b.getScreenshotAs(OutputType.BYTES));
+            b.manage().window().setSize(new Dimension(390, 844));
+            assertThat((Long) b.executeScript("return document.documentElement.scrollWidth - document.documentElement.clientWidth"))
+                    .as(() -> "no sideways scrolling on a phone; too wide: " + b.executeScript("return [...document.querySelectorAll('body *')]"
+                            + ".filter(e => e.getBoundingClientRect().right > document.documentElement.clientWidth || e.scrollWidth > e.clientWidth + 1 && getComputedStyle(e).overflowX === 'visible')"
+                            + ".map(e => e.tagName + '#' + e.id + '.' + e.className + ' ' + Math.round(e.getBoundingClientRect().right) + '/' + e.scrollWidth).join(', ') + ' scrollWidth ' + document.documentElement.scrollWidth + ' clientWidth ' + document.documentElement.clientWidth"))
+                    .isLessThanOrEqualTo(0L);
+            b.executeScript("document.getElementById('wpts').scrollIntoView({block: 'start'})");
+            Files.write(shots.resolve("plan-phone.png"), b.getScreenshotAs(OutputType.BYTES));
+        } finally {
+            b.quit();
+        }
+    }
+}

@@ -1,0 +1,12 @@
+/**
+ * Plans on the server (issue 36, docs/plans.md): {@code ?plan MAILBOX check|send|set} checks a
+ * Slocum behaviour file ({@link org.ripv.plans}), stages it in the vehicle's to-vehicle folder
+ * or queues a {@code put} as a workflow; {@code ?changes} follows each change from queued to
+ * sent, received and in effect (or not in effect, an ALERT) by what the vehicle's console shows.
+ *
+ * <p>It sees the server only through {@link org.ripv.server.plans.PlanHost}. The follower's
+ * input per surfacing is {@link org.ripv.plans.SurfacingFacts}; {@link org.ripv.server.plans.DialogWindow}
+ * makes them from the console's {@code sensor:} lines until a surface-dialog parser feeds them
+ * ({@link org.ripv.server.plans.Plans#surfacing}).
+ */
+package org.ripv.server.plans;

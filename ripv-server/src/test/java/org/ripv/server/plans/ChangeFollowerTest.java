@@ -1,0 +1,135 @@
+package org.ripv.server.plans;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.ripv.messages.ConsoleEntry;
+import org.ripv.messages.VehicleEvent;
+import org.ripv.plans.SurfacingFacts;
+import org.ripv.server.files.FileStore;
+
+/**
+ * The follower's states from console entries as the server sees them (the to-vehicle round's
+ * line, a workflow's end, the vehicle's echo, surfacings), and its book across a restart.
+ */
+class ChangeFollowerTest {
+    static final String M = "<SerialPortServer>::<shore>ru29";
+
+    @TempDir
+    Path dir;
+    FileStore files;
+    ChangeBook book;
+    List<ConsoleEntry> published = new ArrayList<>();
+    ChangeFollower follower;
+
+    @BeforeEach
+    void setUp() throws Exception {
+        files = new FileStore(dir.resolve("upload"), dir.resolve("download"), 1 << 20);
+        book = new ChangeBook(dir.resolve("plans"));
+        follower = new ChangeFollower(book, files, published::add);
+    }
+
+    private Change fileChange(long at) throws Exception {
+        Change c = new Change(book.nextId(), M, Change.Kind.FILE, "goto_l10.ma", "", "goto_l11.ma", "abc", 40, "alice",
+                Change.State.QUEUED, at, 0, 0, 0, 0, "to-vehicle/F/goto_l10.ma", 0, "",
+                List.of(new double[] {41.5, -70.5}, new double[] {41.6, -70.4}));
+        book.put(c);
+        return c;
+    }
+
+    private Change setChange(long workflow, long at) throws Exception {
+        Change c = new Change(book.nextId(), M, Change.Kind.SET, "c_dive_target_depth", "30", "put c_dive_target_depth 30", "", 0,
+                "alice", Change.State.QUEUED, at, 0, 0, 0, 0, "workflow " + workflow, workflow, "", List.of());
+        book.put(c);
+        return c;
+    }
+
+    private static ConsoleEntry at(long t, ConsoleEntry e) {
+        return new ConsoleEntry(t, e.mailbox(), e.kind(), e.user(), e.text(), e.event(), e.lat(), e.lon());
+    }
+
+    private Change.State state(long id) {
+        return book.of(M).stream().filter(c -> c.id() == id).findFirst().orElseThrow().state();
+    }
+
+    private void sentLine(long t) throws Exception {
+        Path sent = Files.createDirectories(dir.resolve("upload/to-vehicle/F/sent")).resolve("goto_l10.ma");
+        Files.writeString(sent, "x".repeat(40), StandardCharsets.US_ASCII);
+        follower.take(at(t, ConsoleEntry.command(M, "alice", "to-vehicle: sent goto_l10.ma (40 bytes) in 0.1 s by ZMODEM; the"
+                + " vehicle's dir lists goto_l10.ma with 40 bytes; moved to to-vehicle/F/sent/goto_l10.ma (receipt"
+                + " to-vehicle/F/sent/goto_l10.ma.receipt)")));
+    }
+
+    @Test
+    void aGotoFileIsSentReceivedAndInEffectWhenALaterDialogSteersForOneOfItsWaypoints() throws Exception {
+        Change c = fileChange(1000);
+        sentLine(2000);
+        assertThat(state(c.id())).isEqualTo(Change.State.RECEIVED);
+        Change now = book.of(M).get(0);
+        assertThat(now.detail()).contains("sha256 " + ChangeFollower.sha256(dir.resolve("upload/to-vehicle/F/sent/goto_l10.ma")))
+                .contains("NOT the file checked"); // the staged file was changed after the check: said so
+        // the call on which it arrived does not count; a later one does
+        follower.judge(new SurfacingFacts(M, 1500, Map.of(), 41.0, -70.0));
+        assertThat(state(c.id())).isEqualTo(Change.State.RECEIVED);
+        follower.judge(new SurfacingFacts(M, 3000, Map.of(), 41.60001, -70.40001));
+        assertThat(state(c.id())).isEqualTo(Change.State.IN_EFFECT);
+        assertThat(published).extracting(ConsoleEntry::text).anySatisfy(t -> assertThat(t).contains("in effect")
+                .contains("is waypoint 1"));
+        assertThat(new ChangeBook(dir.resolve("plans")).of(M)).extracting(Change::state).containsExactly(Change.State.IN_EFFECT);
+    }
+
+    @Test
+    void twoSurfacingsWithoutItAreNotInEffectWithOneAlert() throws Exception {
+        Change c = fileChange(1000);
+        sentLine(2000);
+        follower.judge(new SurfacingFacts(M, 3000, Map.of(), 41.0, -70.0));
+        assertThat(state(c.id())).isEqualTo(Change.State.RECEIVED);
+        assertThat(book.of(M).get(0).detail()).contains("1 of 2").contains("none of the file's 2 waypoints");
+        follower.judge(SurfacingFacts.of(M, 4000, Map.of("m_battery", 15.0)));
+        assertThat(state(c.id())).isEqualTo(Change.State.NOT_IN_EFFECT);
+        assertThat(book.of(M).get(0).detail()).contains("no c_wpt_lat/lon in its dialog");
+        follower.judge(new SurfacingFacts(M, 5000, Map.of(), 41.5, -70.5));
+        assertThat(state(c.id())).isEqualTo(Change.State.NOT_IN_EFFECT);
+        assertThat(published).filteredOn(e -> e.event() == VehicleEvent.ALERT).hasSize(1);
+    }
+
+    @Test
+    void aPutIsSentByItsWorkflowReceivedByItsEchoAndInEffectWhenTheDialogShowsTheValue() throws Exception {
+        Change other = setChange(6, 500);
+        Change c = setChange(7, 1000);
+        follower.take(at(1500, ConsoleEntry.event(M, VehicleEvent.SURFACED, "call 1", null, null)));
+        follower.take(at(1600, ConsoleEntry.line(M, "   sensor:c_dive_target_depth=30")));
+        follower.take(at(1700, ConsoleEntry.event(M, VehicleEvent.WORKFLOW_FAILED, "workflow 6 'plan-set-x.wf': failed: …", null, null)));
+        assertThat(state(other.id())).isEqualTo(Change.State.QUEUED);
+        follower.take(at(1800, ConsoleEntry.event(M, VehicleEvent.WORKFLOW_DONE, "workflow 7 'plan-set-c_dive_target_depth.wf': done",
+                null, null)));
+        assertThat(state(c.id())).isEqualTo(Change.State.RECEIVED);
+        follower.judge(SurfacingFacts.of(M, 2500, Map.of("c_dive_target_depth", 30.0)));
+        assertThat(state(c.id())).isEqualTo(Change.State.IN_EFFECT);
+    }
+
+    @Test
+    void sensorLinesAndSurfacingFactsReadTheDialogsWaypointAsDegreesAndMinutes() {
+        DialogWindow w = new DialogWindow();
+        assertThat(w.take(at(900, ConsoleEntry.line(M, "   sensor:c_wpt_lat(lat)=4136.000")))).isEmpty(); // just before SURFACED
+        assertThat(w.take(at(1000, ConsoleEntry.event(M, VehicleEvent.SURFACED, "call 1", null, null)))).isEmpty();
+        w.take(at(1100, ConsoleEntry.line(M, "   sensor:c_wpt_lon(lon)=-7024.000")));
+        w.take(at(1200, ConsoleEntry.line(M, "   sensor:c_wpt_lon(lon)=-7000.000"))); // an echo later in the call
+        w.take(at(1300, ConsoleEntry.line(M, "sensor:m_battery(volts)=15.1 trailing")));
+        SurfacingFacts f = w.take(at(2000, ConsoleEntry.event(M, VehicleEvent.DIVED, "hung up", null, null))).orElseThrow();
+        assertThat(f.time()).isEqualTo(1000);
+        assertThat(f.wptLat()).isCloseTo(41.6, org.assertj.core.data.Offset.offset(1e-9));
+        assertThat(f.wptLon()).isCloseTo(-70.4, org.assertj.core.data.Offset.offset(1e-9));
+        assertThat(f.sensors()).doesNotContainKey("m_battery");
+        assertThat(SurfacingFacts.of(M, 0, Map.of("c_wpt_lat", 69696969.0)).wptLat()).isNull();
+    }
+}
