@@ -61,8 +61,9 @@ SURFACE="${RIPV_SURFACE_SECONDS:-60}"
 GLIDER_DIALOG="${RIPV_GLIDER_DIALOG:-picodos}"
 case "$GLIDER_DIALOG" in
   picodos) LINK_PROMPT="" ;;
-  # GliderDOS's prompt and PicoDOS's; a Slocum's "to abort" is no alert (docs/serial.md)
-  gliderdos) LINK_PROMPT=",prompt-regex=GliderDOS[^>]*>|C:\\\\>,alert=(?<!to )abort|ABORT(?! HISTORY)|leak|LEAK|Error|ERROR" ;;
+  # GliderDOS's prompt and PicoDOS's; the default alert= leaves the countdown and ABORT HISTORY
+  # alone, and the server reads each surface dialog for aborts, leaks, … (docs/surfacings.md)
+  gliderdos) LINK_PROMPT=",prompt-regex=GliderDOS[^>]*>|C:\\\\>" ;;
   *) echo "demo: RIPV_GLIDER_DIALOG '$GLIDER_DIALOG' is neither picodos nor gliderdos" >&2; exit 2 ;;
 esac
 case "${RIPV_GLIDER_LINE:-}" in

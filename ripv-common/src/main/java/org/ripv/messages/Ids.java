@@ -47,6 +47,8 @@ public final class Ids {
     public static final String FID_UNWATCH = "555701";
     public static final String FID_HISTORY = "555702";
     public static final String FID_NOTIFY = "555703";
+    /** {@code ?surfacings MAILBOX}: a vehicle's call records (docs/surfacings.md). */
+    public static final String FID_SURFACINGS = "555704";
     /** Console entries pushed to watchers (message id 0, status PROGRESS, a {@link ConsoleBatch}). */
     public static final String FID_CONSOLE = "555790";
     // Workflows and cancel (docs/workflows.md): 555800-555899.

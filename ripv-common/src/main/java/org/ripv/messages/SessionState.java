@@ -15,9 +15,12 @@ import java.io.Serializable;
  * @param lastSeq     the {@link ConsoleEntry#seq()} of the last console entry this state counts, or 0
  *                    when unknown: an entry with a higher number is news, one with a lower or equal
  *                    number is already counted, whatever the millisecond it was made in
+ * @param diveAt      epoch milliseconds when the surface dialog's countdown ("Hit Control-C within N
+ *                    seconds to abort the mission") ends and the vehicle dives, or 0 when no
+ *                    countdown runs (docs/surfacings.md)
  */
 public record SessionState(State state, long lastContact, Double lat, Double lon, int calls, VehicleEvent lastEvent,
-                           long lastSeq) implements Serializable {
+                           long lastSeq, long diveAt) implements Serializable {
 
     /** A vehicle MailBox's call state. */
     public enum State {
@@ -31,6 +34,11 @@ public record SessionState(State state, long lastContact, Double lat, Double lon
 
     public SessionState {
         state = state == null ? State.UNKNOWN : state;
+    }
+
+    /** A state with no dive countdown running. */
+    public SessionState(State state, long lastContact, Double lat, Double lon, int calls, VehicleEvent lastEvent, long lastSeq) {
+        this(state, lastContact, lat, lon, calls, lastEvent, lastSeq, 0);
     }
 
     /** A state that does not say which console entries it counts. */

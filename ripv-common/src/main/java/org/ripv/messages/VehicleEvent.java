@@ -16,7 +16,11 @@ public enum VehicleEvent {
     DIVED,
     /** The link failed (I/O error, the device vanished, the service restarted mid-call). */
     LINK_LOST,
-    /** A line of the vehicle's output matched the link's alert pattern. */
+    /**
+     * Something needs a pilot: a line of the vehicle's output matched the link's alert pattern, or
+     * the server found trouble in a surfacing's call record (a new abort, a leak, the battery, …;
+     * the text names the cause: docs/surfacings.md).
+     */
     ALERT,
     TRANSFER_DONE,
     TRANSFER_FAILED,
@@ -37,7 +41,12 @@ public enum VehicleEvent {
      * A plan change (a behaviour file sent, a {@code put}) moved on: queued, sent, received, in
      * effect or not in effect (docs/plans.md). The text names the change and its new state.
      */
-    PLAN_CHANGE;
+    PLAN_CHANGE,
+    /**
+     * The server's: a vehicle has not called within its expected interval plus a grace (set, or
+     * learned from its recent calls), and again, saying how late, when it calls (docs/surfacings.md).
+     */
+    OVERDUE;
 
     /** The call state this event moves the vehicle to, or null when it leaves the state as it was. */
     public SessionState.State callState() {

@@ -36,6 +36,8 @@ public final class ServerSessions implements AutoCloseable {
     private final Notifier notifier;
     private final ConsoleCommands consoleCommands;
     private final NotifyCommands notifyCommands;
+    private final org.ripv.server.surfacing.Surfacings surfacings;
+    private final org.ripv.server.surfacing.SurfacingCommands surfacingCommands;
     private LockExpiries lockExpiries;
 
     public ServerSessions(Path dataDir, StateStore store, SessionOptions options, Supplier<PermitFile> permits,
@@ -49,6 +51,10 @@ public final class ServerSessions implements AutoCloseable {
         consoleCommands = new ConsoleCommands(console, permits, id -> clients.apply(id).map(this::outlet),
                 ServerReplies.SERVICE);
         notifyCommands = new NotifyCommands(notifier, ServerReplies.SERVICE);
+        // Every surface dialog becomes a call record, alerts and overdue calls (docs/surfacings.md).
+        surfacings = new org.ripv.server.surfacing.Surfacings(store, dataDir.resolve("surfacing-alerts.conf"), console::serverEntry);
+        console.onTaken(surfacings::accept);
+        surfacingCommands = new org.ripv.server.surfacing.SurfacingCommands(surfacings, permits, ServerReplies.SERVICE);
     }
 
     /** Counts the replies a watch sends itself (they do not pass the Post Office's outbox) as final (issue 33 item 10). */
@@ -117,6 +123,14 @@ public final class ServerSessions implements AutoCloseable {
         return notifyCommands;
     }
 
+    public org.ripv.server.surfacing.SurfacingCommands surfacingCommands() {
+        return surfacingCommands;
+    }
+
+    public org.ripv.server.surfacing.Surfacings surfacings() {
+        return surfacings;
+    }
+
     /** A client left: its watches go, and its locks are released (an event each). */
     /** @return true when the client held operator locks (now released) */
     public boolean clientClosed(String clientId, Map<String, OperatorLock> locks) {
@@ -135,6 +149,7 @@ public final class ServerSessions implements AutoCloseable {
         if (lockExpiries != null) {
             lockExpiries.close();
         }
+        surfacings.close();
         notifier.close();
         console.close();
     }

@@ -35,6 +35,7 @@ import org.ripv.server.session.ConsoleHub;
 import org.ripv.server.store.AuditCommand;
 import org.ripv.server.store.AuditTrail;
 import org.ripv.server.store.StateStore;
+import org.ripv.server.surfacing.SurfacingCommands;
 import org.ripv.server.vehicles.MailboxArgument;
 import org.ripv.server.vehicles.VehicleNames;
 import org.ripv.server.workflow.Workflows;
@@ -141,6 +142,9 @@ public final class ServerCommands {
                 .add(ServerCommand.open("?changes", Ids.FID_CHANGES, "?changes [MAILBOX]",
                         "each change sent to a vehicle: queued, sent, received, in effect or not",
                         c -> parts.plans().changesCommand(c.request())).onFileWork())
+                .add(ServerCommand.open("?surfacings", Ids.FID_SURFACINGS, SurfacingCommands.usage(),
+                        "its call records: one per surfacing (docs/surfacings.md)",
+                        c -> parts.sessions().surfacingCommands().run(c.request(), c.command().fid(), c.words())).onFileWork())
                 .add(ServerCommand.open("?cancel", Ids.FID_CANCEL, "?cancel MESSAGE-ID [CLIENT-ID]",
                         "stop a request that is queued or running", c -> {
                             checkers.execute(() -> outbox.accept(parts.cancels().command(c.request())));

@@ -58,6 +58,7 @@ public final class ConsoleHub implements AutoCloseable {
     /** The last console sequence number given; guarded by {@code order}. */
     private long lastSeq;
     private volatile Consumer<Notice> notices = n -> { };
+    private volatile Consumer<List<ConsoleEntry>> taps = l -> { };
 
     /**
      * @param transcripts  the transcripts directory (DATA/transcripts; each MailBox's state.json)
@@ -75,6 +76,14 @@ public final class ConsoleHub implements AutoCloseable {
         this.encoder = encoder;
         this.transcript = new Transcript(transcripts, store, keepDays, dayCap);
         this.states = new VehicleStates(store);
+    }
+
+    /**
+     * Who else reads every entry taken, numbered, in order (set once at start): the surface-dialog
+     * reader. Called outside the hub's lock; it must not block.
+     */
+    public void onTaken(Consumer<List<ConsoleEntry>> tap) {
+        this.taps = tap;
     }
 
     /** Where events go for notification (set once at start). */
@@ -220,6 +229,7 @@ public final class ConsoleHub implements AutoCloseable {
             return true;
         }
         List<Notice> events = new ArrayList<>();
+        List<ConsoleEntry> numbered = new ArrayList<>(entries.size());
         synchronized (order) {
             if (closing) {
                 return false;
@@ -227,6 +237,7 @@ public final class ConsoleHub implements AutoCloseable {
             Map<String, List<ConsoleEntry>> byMailbox = new LinkedHashMap<>();
             for (ConsoleEntry taken : entries) {
                 ConsoleEntry e = taken.withSeq(nextSeq());
+                numbered.add(e);
                 states.apply(e);
                 transcript.append(e);
                 byMailbox.computeIfAbsent(e.mailbox(), k -> new ArrayList<>()).add(e);
@@ -250,6 +261,11 @@ public final class ConsoleHub implements AutoCloseable {
                     }
                 }
             });
+        }
+        try {
+            taps.accept(numbered);
+        } catch (RuntimeException x) {
+            log.warn("a reader of console entries failed: {}", x.toString());
         }
         for (Notice n : events) {
             try {

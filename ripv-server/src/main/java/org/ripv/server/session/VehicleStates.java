@@ -48,12 +48,14 @@ final class VehicleStates {
         /** When the instance of the service whose calls {@link #calls} counts started (epoch ms; 0: unknown). */
         long run;
         VehicleEvent lastEvent;
+        /** When the dive countdown ends (epoch ms), or 0; not saved: it means nothing after the call. */
+        long diveAt;
         /** The sequence number of the last entry taken (not saved: numbers from before a restart are lower). */
         long lastSeq;
         final ArrayDeque<ConsoleEntry> recent = new ArrayDeque<>();
 
         synchronized SessionState snapshot() {
-            return new SessionState(state, lastContact, lat, lon, calls, lastEvent, lastSeq);
+            return new SessionState(state, lastContact, lat, lon, calls, lastEvent, lastSeq, diveAt);
         }
 
         synchronized List<ConsoleEntry> recent(int n) {
@@ -128,6 +130,12 @@ final class VehicleStates {
             if (e.isContact()) {
                 v.lastContact = Math.max(v.lastContact, e.time());
             }
+            if (e.kind() == ConsoleEntry.Kind.LINE) {
+                long seconds = org.ripv.surfacing.SurfaceDialogParser.countdownSeconds(e.text());
+                if (seconds >= 0 && seconds <= 86_400) {
+                    v.diveAt = e.time() + seconds * 1000; // "dives in N s" on every page from the state
+                }
+            }
             if (e.lat() != null && e.lon() != null && Double.isFinite(e.lat()) && Double.isFinite(e.lon())
                     && Math.abs(e.lat()) <= 90 && Math.abs(e.lon()) <= 180) {
                 v.lat = e.lat();
@@ -137,6 +145,7 @@ final class VehicleStates {
                 v.lastEvent = e.event();
                 if (e.event().callState() != null) {
                     v.state = e.event().callState();
+                    v.diveAt = 0; // a new call, its end or the link lost: no countdown runs
                 }
                 if (e.event().startsCall()) {
                     v.calls++;

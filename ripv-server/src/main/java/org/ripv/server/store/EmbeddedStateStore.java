@@ -31,6 +31,7 @@ import org.slf4j.LoggerFactory;
  * DATA/workflows/receipts/KEY/NAME.txt                 receipts, the newest kept
  * DATA/notify/subscriptions.jsonl                      notification subscriptions
  * DATA/audit/YYYY-MM-DD.log                            the audit trail: TIME LEVEL event key=value ...
+ * DATA/surfacings/KEY.jsonl                            call records, one JSON line per surfacing
  * </pre>
  * Documents are written whole through a temporary file and an atomic move. Directories are made
  * when first written.
@@ -64,6 +65,7 @@ public final class EmbeddedStateStore implements StateStore {
     private final Layout layout;
     private final FileTranscripts transcripts;
     private final Object auditLock = new Object();
+    private final Object surfacingLock = new Object();
 
     /**
      * @param layout              where each kind of state lives
@@ -108,6 +110,60 @@ public final class EmbeddedStateStore implements StateStore {
     /** A MailBox's transcript files in {@code dir}, oldest first. */
     public static List<Path> transcriptFiles(Path dir) throws IOException {
         return FileTranscripts.files(dir);
+    }
+
+    // ---- call records ----
+
+    /** Beside the transcripts: {@code DATA/surfacings}. */
+    private Path surfacings() {
+        return layout.transcripts().toAbsolutePath().resolveSibling("surfacings");
+    }
+
+    @Override
+    public void appendSurfacing(String mailbox, long time, String json, int keep) throws IOException {
+        if (json.indexOf('\n') >= 0 || json.indexOf('\r') >= 0) {
+            throw new IllegalArgumentException("a call record is one line");
+        }
+        synchronized (surfacingLock) {
+            Path f = DataFiles.directory(surfacings()).resolve(DataFiles.key(mailbox) + ".jsonl");
+            if (!Files.exists(f)) {
+                DataFiles.create(f, "");
+            }
+            try (BufferedWriter w = Files.newBufferedWriter(f, StandardCharsets.UTF_8, StandardOpenOption.APPEND)) {
+                w.write(json);
+                w.write('\n');
+            }
+            // Append-only until twice the records kept, then the newest are written anew: a vehicle
+            // calling for years costs at most 2 x keep lines.
+            List<String> all = readLast(f, 2 * keep + 1);
+            if (all.size() > 2 * keep) {
+                DataFiles.write(f, String.join("\n", all.subList(all.size() - keep, all.size())) + "\n");
+            }
+        }
+    }
+
+    @Override
+    public List<String> lastSurfacings(String mailbox, int n) throws IOException {
+        synchronized (surfacingLock) {
+            Path f = surfacings().resolve(DataFiles.key(mailbox) + ".jsonl");
+            return Files.exists(f) ? readLast(f, n) : List.of();
+        }
+    }
+
+    /** The last {@code n} non-empty lines of a file, holding no more than n in memory. */
+    private static List<String> readLast(Path f, int n) throws IOException {
+        ArrayDeque<String> last = new ArrayDeque<>();
+        try (Stream<String> lines = Files.lines(f, StandardCharsets.UTF_8)) {
+            lines.filter(l -> !l.isBlank()).forEach(l -> {
+                if (n > 0) {
+                    if (last.size() == n) {
+                        last.removeFirst();
+                    }
+                    last.addLast(l);
+                }
+            });
+        }
+        return new ArrayList<>(last);
     }
 
     // ---- transcripts ----

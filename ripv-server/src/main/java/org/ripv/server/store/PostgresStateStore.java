@@ -26,6 +26,7 @@ import java.util.Properties;
  * ripv_document(kind, mailbox, body)               workflow queues, fetched-file lists, subscriptions
  * ripv_receipt(mailbox, name, body)                receipts
  * ripv_audit(seq, time_ms, warn, line)             the audit trail
+ * ripv_surfacing(seq, mailbox, time_ms, record)    call records, one per surfacing
  * </pre>
  */
 public final class PostgresStateStore implements StateStore {
@@ -47,6 +48,9 @@ public final class PostgresStateStore implements StateStore {
                 + " PRIMARY KEY (mailbox, name))",
         "CREATE TABLE IF NOT EXISTS ripv_audit (seq BIGSERIAL PRIMARY KEY, time_ms BIGINT NOT NULL, warn BOOLEAN NOT NULL,"
                 + " line TEXT NOT NULL)",
+        "CREATE TABLE IF NOT EXISTS ripv_surfacing (seq BIGSERIAL PRIMARY KEY, mailbox TEXT NOT NULL, time_ms BIGINT NOT NULL,"
+                + " record TEXT NOT NULL)",
+        "CREATE INDEX IF NOT EXISTS ripv_surfacing_mailbox ON ripv_surfacing (mailbox, seq)",
     };
 
     private final String url;
@@ -104,7 +108,7 @@ public final class PostgresStateStore implements StateStore {
     private static boolean schemaPresent(Statement st) throws SQLException {
         StringBuilder q = new StringBuilder("SELECT true");
         for (String name : new String[] {"ripv_transcript", "ripv_transcript_mailbox", "ripv_transcript_time", "ripv_document",
-            "ripv_receipt", "ripv_audit"}) {
+            "ripv_receipt", "ripv_audit", "ripv_surfacing", "ripv_surfacing_mailbox"}) {
             q.append(" AND to_regclass('").append(name).append("') IS NOT NULL");
         }
         try (ResultSet rs = st.executeQuery(q.toString())) {
@@ -279,6 +283,46 @@ public final class PostgresStateStore implements StateStore {
     @Override
     public Optional<Stored> loadSubscriptions() throws IOException {
         return loadDocuments(SUBSCRIPTIONS, "").stream().findFirst();
+    }
+
+    // ---- call records ----
+
+    @Override
+    public void appendSurfacing(String mailbox, long time, String json, int keep) throws IOException {
+        run("keep a call record of " + mailbox, c -> {
+            try (PreparedStatement ps = c.prepareStatement("INSERT INTO ripv_surfacing (mailbox, time_ms, record) VALUES (?, ?, ?)")) {
+                ps.setString(1, text(mailbox));
+                ps.setLong(2, time);
+                ps.setString(3, text(json));
+                ps.executeUpdate();
+            }
+            try (PreparedStatement ps = c.prepareStatement("DELETE FROM ripv_surfacing WHERE mailbox = ? AND seq <"
+                    + " (SELECT seq FROM ripv_surfacing WHERE mailbox = ? ORDER BY seq DESC OFFSET ? LIMIT 1)")) {
+                ps.setString(1, text(mailbox));
+                ps.setString(2, text(mailbox));
+                ps.setInt(3, Math.max(0, keep - 1));
+                ps.executeUpdate();
+            }
+            return null;
+        });
+    }
+
+    @Override
+    public List<String> lastSurfacings(String mailbox, int n) throws IOException {
+        return run("read the call records of " + mailbox, c -> {
+            List<String> out = new ArrayList<>();
+            try (PreparedStatement ps = c.prepareStatement("SELECT record FROM ripv_surfacing WHERE mailbox = ? ORDER BY seq DESC LIMIT ?")) {
+                ps.setString(1, text(mailbox));
+                ps.setInt(2, Math.max(0, n));
+                try (ResultSet rs = ps.executeQuery()) {
+                    while (rs.next()) {
+                        out.add(rs.getString(1));
+                    }
+                }
+            }
+            Collections.reverse(out);
+            return out;
+        });
     }
 
     // ---- receipts ----

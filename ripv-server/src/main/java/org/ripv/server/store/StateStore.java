@@ -72,6 +72,17 @@ public interface StateStore extends AutoCloseable {
 
     Optional<String> loadVehicleState(String mailbox) throws IOException;
 
+    // ---- call records (org.ripv.server.surfacing) ----
+
+    /**
+     * Appends a vehicle's call record (one JSON document, no line break, whose format the server's
+     * surfacing package owns); the MailBox's records beyond the newest {@code keep} may be dropped.
+     */
+    void appendSurfacing(String mailbox, long time, String json, int keep) throws IOException;
+
+    /** The MailBox's last {@code n} call records, oldest first. */
+    List<String> lastSurfacings(String mailbox, int n) throws IOException;
+
     // ---- workflows ----
 
     /** Replaces a MailBox's workflow queue document. */

@@ -10,7 +10,7 @@ import java.util.Set;
  */
 public final class MailboxArgument {
     private static final Set<String> FIRST = Set.of("?status", "?lock", "?unlock", "?watch", "?unwatch", "?history", "?receipts", "?plan",
-            "?changes");
+            "?changes", "?surfacings");
     private static final Set<String> QUEUE_VERBS = Set.of("add", "remove", "clear");
 
     private MailboxArgument() {

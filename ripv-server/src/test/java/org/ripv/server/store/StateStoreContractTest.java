@@ -207,6 +207,25 @@ class StateStoreContractTest {
 
     @ParameterizedTest
     @EnumSource(Kind.class)
+    void callRecordsAreKeptInOrderAndOnlyTheNewest(Kind kind) throws Exception {
+        StateStore s = open(kind);
+        for (int i = 0; i < 25; i++) {
+            s.appendSurfacing(A, T0 + i, "{\"n\":" + i + ",\"text\":\"ünï \\\"q\\\"\"}", 10);
+        }
+        s.appendSurfacing(B, T0, "{\"n\":\"other\"}", 10);
+        s = reopen(kind, s);
+        List<String> last = s.lastSurfacings(A, 100);
+        assertThat(last.size()).isBetween(10, 20); // the newest 10 at least; at most twice that before they are cut
+        assertThat(last.get(last.size() - 1)).isEqualTo("{\"n\":24,\"text\":\"ünï \\\"q\\\"\"}");
+        assertThat(s.lastSurfacings(A, 3)).extracting(x -> x.substring(0, 8)).containsExactly("{\"n\":22,", "{\"n\":23,", "{\"n\":24,");
+        assertThat(s.lastSurfacings(B, 3)).containsExactly("{\"n\":\"other\"}");
+        assertThat(s.lastSurfacings("<X>::<none>", 3)).isEmpty();
+        assertThatThrownBy(() -> open(Kind.EMBEDDED).appendSurfacing(A, T0, "{}\n{}", 10))
+                .isInstanceOf(IllegalArgumentException.class);
+    }
+
+    @ParameterizedTest
+    @EnumSource(Kind.class)
     void subscriptionsAreOneDocument(Kind kind) throws Exception {
         StateStore s = open(kind);
         assertThat(s.loadSubscriptions()).isEmpty();
@@ -313,7 +332,7 @@ class StateStoreContractTest {
     void postgresServersStartingTogetherShareOneSchema() throws Exception {
         open(Kind.POSTGRES).close(); // the schema exists; drop its tables to race the creation
         try (Connection c = schema.connect(); Statement st = c.createStatement()) {
-            st.execute("DROP TABLE ripv_transcript, ripv_document, ripv_receipt, ripv_audit");
+            st.execute("DROP TABLE ripv_transcript, ripv_document, ripv_receipt, ripv_audit, ripv_surfacing");
         }
         ExecutorService pool = Executors.newFixedThreadPool(4);
         List<Future<StateStore>> opened = new ArrayList<>();
@@ -332,7 +351,7 @@ class StateStoreContractTest {
              ResultSet rs = st.executeQuery("SELECT count(*) FROM information_schema.tables WHERE table_schema = '"
                      + schema.name + "' AND table_name LIKE 'ripv_%'")) {
             rs.next();
-            assertThat(rs.getInt(1)).isEqualTo(4);
+            assertThat(rs.getInt(1)).isEqualTo(5);
         }
         assertThat(stores.get(0).describe()).doesNotContain("password=" + System.getenv().getOrDefault("RIPV_PG_PASSWORD", "x"));
     }

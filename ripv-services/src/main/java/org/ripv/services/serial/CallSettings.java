@@ -19,17 +19,31 @@ import org.ripv.security.AddressRanges;
  *                       and marked "N lines skipped"
  * @param callers        on {@code listen://} links, the addresses calls are taken from
  *                       ({@code callers=CIDR[,CIDR...]}); empty: anyone who can reach the port
+ * @param overdue        how often the vehicle is expected to call ({@code overdue=2h}), announced in
+ *                       SURFACED for the server's OVERDUE (docs/surfacings.md); null: the server learns it
  */
 public record CallSettings(String name, Pattern surface, Duration quiet, Pattern alert, int lineLength,
-                           int linesPerSecond, AddressRanges callers) {
+                           int linesPerSecond, AddressRanges callers, Duration overdue) {
 
     /** The Slocum surface dialog: "Glider ru29 at surface." or a GPS fix line. */
     public static final String DEFAULT_SURFACE = "Glider .* at surface|GPS Location:";
-    public static final String DEFAULT_ALERT = "abort|ABORT|leak|LEAK|Error|ERROR";
+    /**
+     * Lines that raise an ALERT at once: a leak or an error the vehicle shouts. Not "abort" (every
+     * Slocum dialog says "Control-C to abort" and prints its ABORT HISTORY) and not sensor names
+     * ({@code m_leakdetect_voltage}): the server reads each surface dialog and alerts on a new
+     * abort, a leak voltage, the battery, … with the cause (docs/surfacings.md).
+     */
+    public static final String DEFAULT_ALERT = "LEAK|[Ll]eak detected|ERROR|[Ee]rror:";
     public static final Duration DEFAULT_QUIET = Duration.ofMinutes(10);
     public static final int DEFAULT_LINE_LENGTH = 1024;
     public static final int DEFAULT_LINES_PER_SECOND = 200;
     private static final Pattern NAME = Pattern.compile("[A-Za-z0-9][A-Za-z0-9._-]{0,63}");
+
+    /** Settings whose call interval the server learns. */
+    public CallSettings(String name, Pattern surface, Duration quiet, Pattern alert, int lineLength, int linesPerSecond,
+                        AddressRanges callers) {
+        this(name, surface, quiet, alert, lineLength, linesPerSecond, callers, null);
+    }
 
     public CallSettings {
         if (name != null && !NAME.matcher(name).matches()) {
@@ -57,19 +71,24 @@ public record CallSettings(String name, Pattern surface, Duration quiet, Pattern
     }
 
     public CallSettings withName(String newName) {
-        return new CallSettings(newName, surface, quiet, alert, lineLength, linesPerSecond, callers);
+        return new CallSettings(newName, surface, quiet, alert, lineLength, linesPerSecond, callers, overdue);
     }
 
     public CallSettings withQuiet(Duration newQuiet) {
-        return new CallSettings(name, surface, newQuiet, alert, lineLength, linesPerSecond, callers);
+        return new CallSettings(name, surface, newQuiet, alert, lineLength, linesPerSecond, callers, overdue);
     }
 
     public CallSettings withLimits(int newLineLength, int newLinesPerSecond) {
-        return new CallSettings(name, surface, quiet, alert, newLineLength, newLinesPerSecond, callers);
+        return new CallSettings(name, surface, quiet, alert, newLineLength, newLinesPerSecond, callers, overdue);
     }
 
     /** Takes calls only from these addresses (a RUDICS gateway's, a modem server's). */
     public CallSettings withCallers(AddressRanges newCallers) {
-        return new CallSettings(name, surface, quiet, alert, lineLength, linesPerSecond, newCallers);
+        return new CallSettings(name, surface, quiet, alert, lineLength, linesPerSecond, newCallers, overdue);
+    }
+
+    /** Expects a call every {@code every} (null: the server learns it). */
+    public CallSettings withOverdue(Duration every) {
+        return new CallSettings(name, surface, quiet, alert, lineLength, linesPerSecond, callers, every);
     }
 }

@@ -40,9 +40,17 @@ final class CallState {
     private boolean heard;
     private long pendingSince;
 
+    /** The link's {@code overdue=}, announced in SURFACED for the server's OVERDUE, or null. */
+    private final java.time.Duration overdue;
+
     CallState(String mailbox, Consumer<ConsoleEntry> out) {
+        this(mailbox, out, null);
+    }
+
+    CallState(String mailbox, Consumer<ConsoleEntry> out, java.time.Duration overdue) {
         this.mailbox = mailbox;
         this.out = out;
+        this.overdue = overdue;
     }
 
     boolean onCall() {
@@ -104,7 +112,8 @@ final class CallState {
 
     private void surfaced() {
         pending = false;
-        publish(VehicleEvent.SURFACED, "call " + calls + " (" + how + ")");
+        publish(VehicleEvent.SURFACED, "call " + calls + " (" + how + ")"
+                + (overdue == null ? "" : " " + org.ripv.surfacing.CallInterval.announce(overdue)));
     }
 
     /** The call ended: DIVED (normal) or LINK_LOST. A DIVED with no call on says nothing. */

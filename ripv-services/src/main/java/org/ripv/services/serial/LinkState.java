@@ -190,9 +190,13 @@ final class LinkState {
         l.close();
         if (l.isCall()) {
             boolean hungUp = e instanceof EOFException;
-            log.info("{}: call from {} ended: {}", handle, l.describe(), downReason);
-            console.callEnded(hungUp ? VehicleEvent.DIVED : VehicleEvent.LINK_LOST,
-                    hungUp ? "the caller hung up" : "the call failed: " + downReason);
+            // A caller that hangs up while a command or transfer runs, or in the middle of its surface
+            // dialog, dropped the call (a satellite link failing); only one that hangs up after its
+            // dialog, between commands, dived.
+            String dropped = hungUp ? console.droppedMidway(commandLock.isLocked()) : null;
+            log.info("{}: call from {} ended: {}{}", handle, l.describe(), downReason, dropped == null ? "" : " (" + dropped + ")");
+            console.callEnded(hungUp && dropped == null ? VehicleEvent.DIVED : VehicleEvent.LINK_LOST,
+                    !hungUp ? "the call failed: " + downReason : dropped == null ? "the caller hung up" : dropped);
         } else {
             log.warn("{}: link {} failed: {}", handle, l.describe(), downReason);
             console.callEnded(VehicleEvent.LINK_LOST, "link " + l.describe() + " failed: " + downReason);

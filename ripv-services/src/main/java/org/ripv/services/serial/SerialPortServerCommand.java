@@ -194,7 +194,7 @@ public final class SerialPortServerCommand implements Callable<Integer> {
 
     /** The keys of a link's call and console settings ({@link CallSettings}). */
     static final java.util.Set<String> CALL_KEYS = java.util.Set.of("name", "surface", "quiet", "alert", "line-length",
-            "rate", "callers");
+            "rate", "callers", "overdue");
 
     /** The keys of a link's {@link PilotSettings}: control keys and ZMODEM commands. */
     static final java.util.Set<String> PILOT_KEYS = java.util.Set.of("keys", "zmodem-send", "zmodem-receive",
@@ -213,12 +213,21 @@ public final class SerialPortServerCommand implements Callable<Integer> {
             return new VehicleLink(link, new CallSettings(o.get("name"), regex(o.getOrDefault("surface", surface), "surface"),
                     Duration.ofSeconds(number(o, "quiet", quietSeconds)), regex(o.getOrDefault("alert", alert), "alert"),
                     number(o, "line-length", lineLength), number(o, "rate", rate),
-                    callers(o.getOrDefault("callers", callers))),
+                    callers(o.getOrDefault("callers", callers)),
+                    o.containsKey("overdue") ? overdue(o.get("overdue")) : null),
                     new PilotSettings(ControlKey.parseList(o.getOrDefault("keys", keys)),
                             o.getOrDefault("zmodem-send", zmodemSend), o.getOrDefault("zmodem-receive", zmodemReceive),
                             ToVehicleMode.parse(o.getOrDefault("to-vehicle", "off"))));
         } catch (IllegalArgumentException e) {
             throw new IllegalArgumentException("--link '" + spec + "': " + e.getMessage(), e);
+        }
+    }
+
+    private static Duration overdue(String spec) {
+        try {
+            return org.ripv.surfacing.CallInterval.parse(spec);
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException("overdue: " + e.getMessage());
         }
     }
 

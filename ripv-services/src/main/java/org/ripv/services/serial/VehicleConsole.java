@@ -4,6 +4,7 @@ import java.util.function.Consumer;
 import java.util.regex.Pattern;
 import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.VehicleEvent;
+import org.ripv.surfacing.SurfaceDialogParser;
 
 /**
  * One vehicle MailBox's live console: turns what the link's reader hands it into console entries
@@ -44,6 +45,8 @@ final class VehicleConsole {
     private int echoLines;
     private long lastAlert = System.nanoTime() - 2 * SECOND;
     private int alertsHeld;
+    /** Follows the surface dialog only to know whether a caller hung up in the middle of it. */
+    private final SurfaceDialogParser dialog = new SurfaceDialogParser(s -> { });
 
     VehicleConsole(String mailbox, CallSettings settings, Pattern prompt, Calls calls, Consumer<ConsoleEntry> out) {
         this.mailbox = mailbox;
@@ -53,7 +56,7 @@ final class VehicleConsole {
         this.calls = calls;
         this.lines = new LineAssembler(settings.lineLength());
         this.rate = new LineRate(settings.linesPerSecond(), System.nanoTime());
-        this.call = new CallState(mailbox, out);
+        this.call = new CallState(mailbox, out, settings.overdue());
     }
 
     Calls calls() {
@@ -91,6 +94,7 @@ final class VehicleConsole {
 
     private void line(String text) {
         long now = System.nanoTime();
+        dialog.line(text);
         if (prompt.matcher(text.strip()).matches()) {
             return;
         }
@@ -177,11 +181,27 @@ final class VehicleConsole {
 
     /** A call began: a caller connected or carrier rose. */
     synchronized void callStarted(String how) {
+        dialog.end(); // whatever came before this call is not its dialog
         lastInput = System.nanoTime();
         call.started(how, lastInput);
         if (spoken && lastInput - lastText < CallState.SURFACE_WAIT_NANOS) {
             call.heard(lastText); // the carrier is polled: the dialog may have come in just before it rose
         }
+    }
+
+    /**
+     * Why a call whose caller hung up now was dropped rather than ended, or null when it ended
+     * normally: a command or transfer was running, or the surface dialog had begun and not ended
+     * (no countdown, no prompt yet).
+     */
+    synchronized String droppedMidway(boolean commandRunning) {
+        if (lines.hasPartial()) {
+            lines.flush(this::line);
+        }
+        if (commandRunning) {
+            return "the caller hung up while a command or transfer ran: the call dropped";
+        }
+        return dialog.inDialog() ? "the caller hung up in the middle of its surface dialog: the call dropped" : null;
     }
 
     /** The call ended normally (DIVED) or the link failed (LINK_LOST). */

@@ -66,6 +66,7 @@ public final class GliderSimulator implements AutoCloseable {
     private java.net.InetAddress bindAddress = java.net.InetAddress.getLoopbackAddress();
     /** Null: the PicoDOS prompt at once (the default); else the Slocum surface dialog and GliderDOS. */
     private volatile GliderDos gliderDos;
+    private volatile SurfaceTrouble trouble = SurfaceTrouble.NONE;
     /** What its plan (goto_l10.ma, put values) makes its dialog print. */
     private final PlanState plan;
     private volatile Duration surfaceWait = Duration.ofSeconds(60);
@@ -162,6 +163,15 @@ public final class GliderSimulator implements AutoCloseable {
     public synchronized GliderSimulator speakGliderDos(Duration wait, Duration minute) {
         this.surfaceWait = wait;
         this.gliderDos = new GliderDos(dir, minute);
+        return this;
+    }
+
+    /**
+     * Trouble on demand in the GliderDOS dialog: an abort on each of {@code abortCalls} (1 for the
+     * first call), a leak from call {@code leakFrom} on (0: none). Call before {@code call}.
+     */
+    public synchronized GliderSimulator trouble(java.util.Set<Integer> abortCalls, int leakFrom) {
+        this.trouble = new SurfaceTrouble(abortCalls, leakFrom);
         return this;
     }
 
@@ -347,7 +357,7 @@ public final class GliderSimulator implements AutoCloseable {
         GliderDos g = gliderDos;
         g.surfaced();
         pendingEnd = null;
-        say(shell, dialog.text(calls, java.time.Instant.now(), g.mission(), g.reportLines() + plan.waypointLines()));
+        say(shell, dialog.fullText(calls, java.time.Instant.now(), g.mission(), plan.waypointLines() + g.reportLines(), trouble));
         SurfaceCountdown.Answer a = SurfaceCountdown.run(shell, surfaceWait, surfaceWait, dir);
         if (a == SurfaceCountdown.Answer.CONTROL_C) {
             say(shell, g.prompt());

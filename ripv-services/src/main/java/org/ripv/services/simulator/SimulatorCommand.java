@@ -84,6 +84,15 @@ public final class SimulatorCommand implements Callable<Integer> {
             description = "With --dialog gliderdos: how long a 'callback' minute lasts (default ${DEFAULT-VALUE}; less to rehearse quickly).")
     long minuteSeconds;
 
+    @Option(names = "--abort-on-call", split = ",", paramLabel = "N[,N...]",
+            description = "With --dialog gliderdos: these calls (1 for the first) surface because of an abort"
+                    + " (MS_ABORT_OVERDEPTH), which its ABORT HISTORY then shows.")
+    java.util.List<Integer> abortCalls = java.util.List.of();
+
+    @Option(names = "--leak-from-call", defaultValue = "0", paramLabel = "N",
+            description = "With --dialog gliderdos: from call N on its aft leak detector reads 1.21 V, a leak (default: never).")
+    int leakFrom;
+
     @Option(names = "--baud", defaultValue = "0", paramLabel = "BAUD",
             description = "On TCP: pace the call to BAUD each way, 10 bits a byte (e.g. 2400, Iridium's rate; default: unpaced).")
     int baud;
@@ -124,6 +133,14 @@ public final class SimulatorCommand implements Callable<Integer> {
             System.err.println("Error: " + e.getMessage());
             return 2;
         }
+        if (leakFrom < 0 || abortCalls.stream().anyMatch(n -> n == null || n < 1)) {
+            System.err.println("Error: --abort-on-call and --leak-from-call take call numbers from 1");
+            return 2;
+        }
+        if (dialog != Dialog.gliderdos && (leakFrom > 0 || !abortCalls.isEmpty())) {
+            System.err.println("Error: --abort-on-call and --leak-from-call need --dialog gliderdos");
+            return 2;
+        }
         if (minuteSeconds < 1) {
             System.err.println("Error: --minute-seconds " + minuteSeconds + " must be at least 1");
             return 2;
@@ -146,7 +163,8 @@ public final class SimulatorCommand implements Callable<Integer> {
         try (GliderSimulator sim = new GliderSimulator(files, Duration.ofSeconds(submergeSeconds), YmodemConfig.lrzsz())) {
             sim.overLine(line).named(name);
             if (dialog == Dialog.gliderdos) {
-                sim.speakGliderDos(Duration.ofSeconds(surfaceSeconds), Duration.ofSeconds(minuteSeconds));
+                sim.speakGliderDos(Duration.ofSeconds(surfaceSeconds), Duration.ofSeconds(minuteSeconds))
+                        .trouble(java.util.Set.copyOf(abortCalls), leakFrom);
             }
             if (seedFiles != null) {
                 try (var list = Files.list(seedFiles)) {

@@ -69,6 +69,46 @@ final class SurfaceDialog {
     }
 
     /**
+     * The whole dialog of a Slocum's surfacing as GliderDOS prints it (firmware 8-10 shape: fix
+     * lines with their ages, the surface list with ages, device counts, the ABORT HISTORY block),
+     * with {@code reportLines} (the plan's waypoint, the report list) after its sensors and the
+     * trouble asked for.
+     */
+    String fullText(int call, Instant now, String mission, String reportLines, SurfaceTrouble trouble) {
+        double[] p = position(call);
+        long missionTime = (System.nanoTime() - start) / 1_000_000_000L;
+        boolean aborted = trouble.aborted(call, now, name, mission);
+        String gps = degreesMinutes(p[0]) + " N " + degreesMinutes(p[1]) + " E";
+        String invalid = degreesMinutes(p[0] + 0.0012) + " N " + degreesMinutes(p[1] - 0.0009) + " E";
+        String dr = degreesMinutes(p[0] - 0.0001) + " N " + degreesMinutes(p[1] + 0.0001) + " E";
+        StringBuilder b = new StringBuilder("\r\n");
+        b.append("Glider ").append(name).append(" at surface.\r\n");
+        b.append(aborted ? "Because:Abort [" + SurfaceTrouble.ABORT_CAUSE + "]" : "Because:Surface interval [1]").append("\r\n");
+        b.append(String.format(Locale.ROOT, "MissionName:%s MissionNum:%s-%d (%04d.0000)\r\n", mission, name, call, call));
+        b.append("Vehicle Name: ").append(name).append("\r\n");
+        b.append("Curr Time: ").append(CTIME.format(now)).append(" MT: ").append(missionTime).append("\r\n");
+        b.append("DR  Location:  ").append(dr).append(" measured     30.0 secs ago\r\n");
+        b.append("GPS Invalid :  ").append(invalid).append(" measured     44.5 secs ago\r\n");
+        b.append("GPS Location:  ").append(gps).append(" measured     26.0 secs ago\r\n");
+        b.append(sensor("m_battery(volts)", String.format(Locale.ROOT, "%.2f", Math.max(10.0, 15.2 - 0.05 * call)), "2.1"));
+        b.append(sensor("m_coulomb_amphr_total(amp-hrs)", String.format(Locale.ROOT, "%.2f", 1.5 * call), "3.0"));
+        b.append(sensor("m_vacuum(inHg)", "7.21", "2.1"));
+        b.append(sensor("m_leakdetect_voltage(volts)", "2.47", "2.4"));
+        b.append(sensor("m_leakdetect_voltage_aft(volts)", trouble.leaks(call) ? "1.21" : "2.49", "2.4"));
+        b.append(sensor("m_water_vx(m/s)", "0.112", "812.0"));
+        b.append(sensor("m_water_vy(m/s)", "-0.048", "812.0"));
+        b.append("   sensor:m_depth(m)=0.32\r\n");
+        b.append(reportLines);
+        b.append("devices:(t/m/s) errs:     0/  0/  0 warn:     0/  0/  0 oddity:     0/  0/  0\r\n");
+        b.append(trouble.history());
+        return b.append("\r\n").toString();
+    }
+
+    private static String sensor(String nameAndUnits, String value, String age) {
+        return String.format(Locale.ROOT, "   sensor:%-40s %10s secs ago\r\n", nameAndUnits + "=" + value, age);
+    }
+
+    /**
      * What a Slocum prints after its dialog: the keys it listens for. (Worded after the real
      * glider's; not its exact text.)
      */

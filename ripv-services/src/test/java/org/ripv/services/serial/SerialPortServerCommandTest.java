@@ -1,5 +1,7 @@
 package org.ripv.services.serial;
 
+import java.util.List;
+
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -140,7 +142,15 @@ class SerialPortServerCommandTest {
         assertEquals("tcp-gw-4001", tcp.handle());
         assertTrue(tcp.call().surface().matcher("GLIDER AT SURFACE").find());
         assertTrue(CallSettings.defaults().surface().matcher("Glider ru29 at surface.").find());
-        assertTrue(CallSettings.defaults().alert().matcher("MS_ABORT_OVERDUE").find());
+        // the default alert= leaves a Slocum's every-surfacing text alone; the server reads aborts from the dialog
+        for (String routine : List.of("Hit Control-C within 50 seconds to abort the mission...",
+                "Hit Control-R to RESUME the mission, or Control-C to abort it", "ABORT HISTORY: last abort cause: MS_ABORT_OVERDEPTH",
+                "   sensor:m_leakdetect_voltage(volts)=2.47   2.4 secs ago", "devices:(t/m/s) errs:     0/  0/  0")) {
+            assertFalse(CallSettings.defaults().alert().matcher(routine).find(), routine);
+        }
+        for (String trouble : List.of("LEAK detected in aft hull", "leak detected", "ERROR: pitch motor", "Error: no GPS")) {
+            assertTrue(CallSettings.defaults().alert().matcher(trouble).find(), trouble);
+        }
         assertTrue(anonymous.call().callers().isEmpty());
     }
 

@@ -91,6 +91,7 @@ class VehicleCallTest {
             for (int i = 1; i <= 20; i++) {
                 say(s, "   sensor:line_" + i + "=" + i + "\r\n");
             }
+            say(s, "Hit Control-C within 10 seconds to abort the mission...\r\n"); // the dialog is over
             awaitEvent(VehicleEvent.SURFACED, 1);
             ConsoleEntry surfaced = event(VehicleEvent.SURFACED, 1);
             assertThat(surfaced.lat()).isCloseTo(41 + 37.994 / 60, org.assertj.core.data.Offset.offset(1e-9));
@@ -116,13 +117,17 @@ class VehicleCallTest {
         assertThat(probe.events("ru29")).extracting(ConsoleEntry::event)
                 .containsExactly(VehicleEvent.SURFACED, VehicleEvent.DIVED);
 
-        // the next call is taken just the same
+        // the next call is taken just the same; this caller hangs up in the middle of its dialog: a dropped call
         try (Socket s = call()) {
-            say(s, "GPS Location:  4138.994 N -7031.188 E measured 1.0 secs ago\r\n");
+            say(s, "GPS Location:  4138.994 N -7031.188 E measured 1.0 secs ago\r\n   sensor:m_battery(volts)=15.1\r\n");
             awaitEvent(VehicleEvent.SURFACED, 2);
             assertThat(event(VehicleEvent.SURFACED, 2).text()).contains("call 2");
         }
-        awaitEvent(VehicleEvent.DIVED, 2);
+        awaitEvent(VehicleEvent.LINK_LOST, 1);
+        assertThat(event(VehicleEvent.LINK_LOST, 1).text()).startsWith("the caller hung up in the middle of its surface dialog");
+        assertThat(probe.events("ru29")).extracting(ConsoleEntry::event)
+                .containsExactly(VehicleEvent.SURFACED, VehicleEvent.DIVED, VehicleEvent.SURFACED, VehicleEvent.LINK_LOST);
+        Eventually.await("lost in status", T, () -> probe.status("ru29").detail().contains("lost at"));
     }
 
     @Test
@@ -167,7 +172,7 @@ class VehicleCallTest {
             awaitEvent(VehicleEvent.SURFACED, 1);
             assertThat(event(VehicleEvent.SURFACED, 1).text()).contains("caller 127.0.0.2:");
         }
-        awaitEvent(VehicleEvent.DIVED, 1);
+        awaitEvent(VehicleEvent.LINK_LOST, 1); // it hung up right after "at surface.": the call dropped
         assertThat(probe.lines("ru29")).containsExactly("Glider ru29 at surface.");
         assertThat(probe.events("ru29")).hasSize(2);
     }
