@@ -105,6 +105,18 @@ public interface GenericRMIInterface extends Remote {
         throw new UnsupportedOperationException("this side runs no service MailBoxes; send ?cancel to the server");
     }
 
+    /**
+     * Tells a service that a page of the table a request is sending (a PROGRESS reply with a
+     * {@code TableResult}, {@code org.ripv.messages.TablePages}) went out to the client's socket,
+     * so the next may go: a result is never held on its way in more than a couple of pages.
+     *
+     * @return true when that request is still running there
+     * @throws UnsupportedOperationException from a side that runs no service MailBoxes (the default)
+     */
+    default boolean more(String token, String mailbox, String clientId, long messageId) throws RemoteException {
+        throw new UnsupportedOperationException("this side runs no service MailBoxes");
+    }
+
     /** The service's MailBoxes and whether each can take commands now. */
     List<MailboxStatus> mailboxes(String token) throws RemoteException;
 }

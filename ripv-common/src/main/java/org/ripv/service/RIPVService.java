@@ -241,6 +241,17 @@ public abstract class RIPVService {
         return m != null && m.cancel(clientId, messageId);
     }
 
+    /**
+     * The reader took a page of the table the request is sending ({@code Request.page}): the
+     * server calls this once the page went out to the client's socket.
+     *
+     * @return true when that request is running there
+     */
+    public final boolean pageTaken(String mailbox, String clientId, long messageId) {
+        ServiceTaskManager m = managers.get(mailbox);
+        return m != null && m.pageTaken(clientId, messageId);
+    }
+
     /** The MailBoxes and their availability. */
     public final List<MailboxStatus> mailboxes() {
         List<MailboxStatus> out = new ArrayList<>();

@@ -14,6 +14,15 @@ public interface ReplySink {
         }
     }
 
+    /**
+     * True when the reader of this sink says itself when it has taken a page of a table
+     * ({@code GenericRMIInterface.more}: the server, once the page went out to the client's
+     * socket); false when taking the reply is taking the page (a test, a service in this JVM).
+     */
+    default boolean pacesPages() {
+        return false;
+    }
+
     /** Console entries the service published ({@code RIPVService.publish}); the default drops them. */
     default void console(java.util.List<org.ripv.messages.ConsoleEntry> entries) throws Exception {
     }

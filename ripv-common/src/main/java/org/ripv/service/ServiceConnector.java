@@ -410,6 +410,12 @@ public final class ServiceConnector implements AutoCloseable {
             server().console(token(), entries);
         }
 
+        /** The server calls {@code more} when a page went out to the client's socket. */
+        @Override
+        public boolean pacesPages() {
+            return true;
+        }
+
         private GenericRMIInterface server() throws RemoteException {
             GenericRMIInterface s = server;
             if (s == null || token == null) {
@@ -484,6 +490,12 @@ public final class ServiceConnector implements AutoCloseable {
         public boolean cancel(String t, String mailbox, String clientId, long messageId) throws RemoteException {
             check(t);
             return service.cancel(mailbox, clientId, messageId);
+        }
+
+        @Override
+        public boolean more(String t, String mailbox, String clientId, long messageId) throws RemoteException {
+            check(t);
+            return service.pageTaken(mailbox, clientId, messageId);
         }
 
         @Override

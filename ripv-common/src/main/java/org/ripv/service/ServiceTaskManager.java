@@ -63,19 +63,42 @@ final class ServiceTaskManager extends TaskManager<IncomingServiceMessage, Outgo
         }
         boolean taken = handler.cancel(r);
         cancelled = taken;
+        if (taken) {
+            r.stopPages();
+        }
         return taken;
+    }
+
+    /** The reader took a page of the request running now (the server's {@code more}); false when it is not running. */
+    boolean pageTaken(String clientId, long messageId) {
+        Request r = running;
+        if (r == null || r.message().header().messageId() != messageId
+                || !r.message().header().origin().clientId().equals(clientId)) {
+            return false;
+        }
+        r.pageTaken();
+        return true;
+    }
+
+    /** For a sink that does not pace pages, handing a page over is the reader taking it. */
+    private void handedOver(OutgoingServiceMessage reply) {
+        if (org.ripv.messages.TablePages.isPage(reply.footer()) && !service.sink().pacesPages()) {
+            pageTaken(reply.header().origin().clientId(), reply.header().messageId());
+        }
     }
 
     @Override
     public void parseFooter(MailBox<IncomingServiceMessage, OutgoingServiceMessage> box, OutgoingServiceMessage reply)
             throws Exception {
         service.sink().reply(reply);
+        handedOver(reply);
     }
 
     @Override
     public void parseFooters(MailBox<IncomingServiceMessage, OutgoingServiceMessage> box, java.util.List<OutgoingServiceMessage> replies) {
         try {
             service.sink().replies(java.util.List.copyOf(replies));
+            replies.forEach(this::handedOver);
         } catch (Exception e) {
             replies.forEach(r -> undeliverable(box, r, e));
         }

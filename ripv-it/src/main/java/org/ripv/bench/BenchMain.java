@@ -60,47 +60,67 @@ public final class BenchMain {
     }
 
     public static void main(String[] args) throws Exception {
+        System.exit(run(args));
+    }
+
+    /**
+     * Runs one benchmark and returns its exit status; nothing here or in the benchmarks exits, so
+     * {@link ShortRuns} runs every {@code --short} run in one JVM (issue 38).
+     */
+    public static int run(String[] args) throws Exception {
         if (args.length == 0 || args[0].equals("--help") || args[0].equals("-h")) {
             System.out.println(USAGE);
-            System.exit(args.length == 0 ? 2 : 0);
+            return args.length == 0 ? 2 : 0;
         }
         if (args[0].equals("--version") || args[0].equals("-V")) {
             System.out.println(org.ripv.launch.Version.line());
-            System.exit(0);
+            return 0;
         }
         String[] rest = ShortMode.apply(args[0], Arrays.copyOfRange(args, 1, args.length));
         if (!List.of("broker", "calls", "workflow").contains(args[0]) && (Arrays.asList(rest).contains("--help") || Arrays.asList(rest).contains("-h"))) {
             System.out.println(USAGE); // the benchmarks without a picocli command of their own
-            System.exit(0);
+            return 0;
         }
+        // The one place every --short run says, first and last, that its figures are not measurements.
+        boolean isShort = ShortMode.announce(args, System.out);
+        try {
+            return dispatch(args[0], rest);
+        } finally {
+            if (isShort) {
+                System.out.println(ShortMode.NOT_MEASUREMENTS);
+            }
+        }
+    }
+
+    private static int dispatch(String name, String[] rest) throws Exception {
         // Each run's server makes a new certificate: keep them out of the user's ~/.ripv/known_hosts.
         java.nio.file.Path known = java.nio.file.Files.createTempFile("ripv-bench-known-hosts", "");
         known.toFile().deleteOnExit();
         System.setProperty(org.ripv.client.handlers.Tls.KNOWN_HOSTS_PROPERTY, known.toString());
-        if (ShortMode.names().contains(args[0])) {
+        if (ShortMode.names().contains(name)) {
             System.out.println(CpuClock.machineLine()); // how loaded the machine was, beside every benchmark's figures
         }
-        switch (args[0]) {
-            case "broker" -> System.exit(Launchers.commandLine(new BrokerBench(), "ripv bench broker").execute(rest));
-            case "database" -> DatabaseBench.main(rest);
-            case "connections" -> System.exit(Launchers.commandLine(new ConnectionCostBench()).execute(rest));
-            case "console" -> System.exit(Launchers.commandLine(new ConsoleBench()).execute(rest));
-            case "web" -> System.exit(Launchers.commandLine(new WebBench()).execute(rest));
-            case "ymodem" -> YmodemBenchmark.main(rest);
-            case "zmodem" -> ZmodemBench.main(rest);
-            case "datavis" -> DataVisBenchmark.main(rest);
-            case "firststart" -> FirstStartBench.main(rest);
-            case "calls" -> System.exit(Launchers.commandLine(new CallsBench(), "ripv bench calls").execute(rest));
-            case "ingest" -> IngestBench.main(rest);
-            case "slocum" -> SlocumBench.main(rest);
-            case "dac" -> DacBench.main(rest);
-            case "hosts" -> HostsBench.main(rest);
-            case "store" -> StoreBench.main(rest);
-            case "workflow" -> System.exit(Launchers.commandLine(new WorkflowBench(), "ripv bench workflow").execute(rest));
+        return switch (name) {
+            case "broker" -> Launchers.commandLine(new BrokerBench(), "ripv bench broker").execute(rest);
+            case "database" -> DatabaseBench.run(rest);
+            case "connections" -> Launchers.commandLine(new ConnectionCostBench()).execute(rest);
+            case "console" -> Launchers.commandLine(new ConsoleBench()).execute(rest);
+            case "web" -> Launchers.commandLine(new WebBench()).execute(rest);
+            case "ymodem" -> YmodemBenchmark.run(rest);
+            case "zmodem" -> ZmodemBench.run(rest);
+            case "datavis" -> DataVisBenchmark.run(rest);
+            case "firststart" -> FirstStartBench.run(rest);
+            case "calls" -> Launchers.commandLine(new CallsBench(), "ripv bench calls").execute(rest);
+            case "ingest" -> IngestBench.run(rest);
+            case "slocum" -> SlocumBench.run(rest);
+            case "dac" -> DacBench.run(rest);
+            case "hosts" -> HostsBench.run(rest);
+            case "store" -> StoreBench.run(rest);
+            case "workflow" -> Launchers.commandLine(new WorkflowBench(), "ripv bench workflow").execute(rest);
             default -> {
-                System.err.println("Error: unknown benchmark '" + args[0] + "'\n" + USAGE);
-                System.exit(2);
+                System.err.println("Error: unknown benchmark '" + name + "'\n" + USAGE);
+                yield 2;
             }
-        }
+        };
     }
 }

@@ -60,13 +60,18 @@ public final class DacBench {
     }
 
     public static void main(String[] args) throws Exception {
+        System.exit(run(args));
+    }
+
+    /** The benchmark, its exit status returned rather than exited with ({@code BenchMain} runs several in one JVM). */
+    public static int run(String[] args) throws Exception {
         List<String> a = new ArrayList<>(Arrays.asList(args));
         boolean shortRun = a.remove("--not-a-measurement");
         int yos = option(a, "--yos", 200);
         int runs = option(a, "--runs", 5);
         if (!a.isEmpty()) {
             System.err.println("Error: unknown options " + a + "; ripv bench dac [--yos N] [--runs N]");
-            System.exit(2);
+            return 2;
         }
         Metadata meta;
         try (InputStream in = DacBench.class.getResourceAsStream("dac-deployment.json")) {
@@ -121,7 +126,7 @@ public final class DacBench {
                 System.out.printf(Locale.ROOT, "DAC files against NetCDF-Java writing the same files alone: wall median %.2f×;"
                         + " CPU not measured (the run is shorter than the process clock's 10 ms tick)%n", ratios[runs / 2]);
                 System.out.println(CpuClock.machineLine());
-                return;
+                return 0;
             }
             double cpuRatio = (cpuPath / (double) nPath) / (cpuFloor / (double) nFloor);
             System.out.printf(Locale.ROOT, "DAC files (split, GSW, QC, template, write and rename) against NetCDF-Java writing the same"
@@ -137,6 +142,7 @@ public final class DacBench {
             }
             Files.deleteIfExists(dir);
         }
+        return 0;
     }
 
     /** The product's path from decoded data: split, derive, QC, write each profile's file. */

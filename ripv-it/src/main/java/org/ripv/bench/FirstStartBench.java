@@ -25,9 +25,14 @@ public final class FirstStartBench {
     private FirstStartBench() {}
 
     public static void main(String[] args) throws Exception {
+        System.exit(run(args));
+    }
+
+    /** The benchmark, its exit status returned rather than exited with ({@code BenchMain} runs several in one JVM). */
+    public static int run(String[] args) throws Exception {
         if (args.length >= 1 && args[0].equals("child")) {
             child(args[1], Path.of(args[2]));
-            return;
+            return 0;
         }
         int runs = args.length >= 2 && args[0].equals("--runs") ? Integer.parseInt(args[1]) : 3;
         List<long[]> ripv = new ArrayList<>();
@@ -43,7 +48,7 @@ public final class FirstStartBench {
         System.out.printf("RIPV / baseline: wall %.2f, cpu %.2f (median of %d runs; %d cores, load average %.1f)%n",
                 (double) r[0] / s[0], (double) r[1] / s[1], runs, Runtime.getRuntime().availableProcessors(),
                 ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage());
-        System.exit(0);
+        return 0;
     }
 
     private static long[] median(List<long[]> v) {

@@ -38,6 +38,11 @@ final class HostsBench {
     private HostsBench() {}
 
     public static void main(String[] args) throws Exception {
+        System.exit(run(args));
+    }
+
+    /** The benchmark, its exit status returned rather than exited with ({@code BenchMain} runs several in one JVM). */
+    public static int run(String[] args) throws Exception {
         int requests = 300;
         int takeovers = 3;
         for (int i = 0; i < args.length; i++) {
@@ -46,7 +51,7 @@ final class HostsBench {
                 case "--takeovers" -> takeovers = Integer.parseInt(args[++i]);
                 default -> {
                     System.err.println("Error: unknown option " + args[i] + "\n" + USAGE);
-                    System.exit(2);
+                    return 2;
                 }
             }
         }
@@ -59,7 +64,7 @@ final class HostsBench {
         }
         if (why != null) {
             System.err.println("Error: ripv bench hosts " + why);
-            System.exit(1);
+            return 1;
         }
         Path dir = Files.createTempDirectory("ripv-bench-hosts");
         try {
@@ -67,7 +72,7 @@ final class HostsBench {
         } finally {
             Netns.sh("rm", "-rf", dir.toString());
         }
-        System.exit(0);
+        return 0;
     }
 
     private static void run(Path dir, int requests, int takeovers) throws Exception {

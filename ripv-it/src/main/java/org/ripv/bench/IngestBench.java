@@ -71,6 +71,11 @@ public final class IngestBench {
     private IngestBench() {}
 
     public static void main(String[] args) throws Exception {
+        System.exit(run(args));
+    }
+
+    /** The benchmark, its exit status returned rather than exited with ({@code BenchMain} runs several in one JVM). */
+    public static int run(String[] args) throws Exception {
         int runs = intOption(args, "--runs", 2);
         int wideRuns = intOption(args, "--wide-runs", Math.max(runs, 7));
         int trackRuns = intOption(args, "--track-runs", 3);
@@ -90,7 +95,7 @@ public final class IngestBench {
         } finally {
             deleteTree(dir);
         }
-        System.exit(0);
+        return 0;
     }
 
     private static void run(Path dir, int runs, int wideRuns, int trackRuns, String only, int rows) throws Exception {

@@ -97,8 +97,9 @@ final class RawWatchers extends SelectorReaders<SelectorReaders.Socket> {
         }
     }
 
-    /** Finds every "bench I NANOS" in the frame's first {@code to} bytes and reports now - NANOS. */
-    static void scan(byte[] f, int to, long now, LongConsumer delay) {
+    /** Finds every "bench I NANOS" in the frame's first {@code to} bytes, reports now - NANOS for each, and returns how many. */
+    static int scan(byte[] f, int to, long now, LongConsumer delay) {
+        int found = 0;
         outer:
         for (int i = 0; i + MARK.length < to; i++) {
             if (f[i] != 'b') {
@@ -120,8 +121,10 @@ final class RawWatchers extends SelectorReaders<SelectorReaders.Socket> {
             }
             if (digits > 0) {
                 delay.accept(now - sent);
+                found++;
             }
             i = j;
         }
+        return found;
     }
 }

@@ -41,7 +41,25 @@ final class ShortMode {
             Map.entry("dac", List.of("--yos", "3", "--runs", "1", "--not-a-measurement")),
             Map.entry("workflow", List.of("--files", "2", "--get-bytes", "8192", "--put-bytes", "4096", "--report-only")));
 
+    /** What every {@value #FLAG} run prints first and last, so its figures are never read as measurements. */
+    static final String NOT_MEASUREMENTS = "--short: counts and times shrunk to check that this benchmark runs;"
+            + " its figures are NOT measurements (docs/performance.md has measured ones)";
+
     private ShortMode() {}
+
+    /**
+     * When {@code args} hold {@value #FLAG}: prints {@link #NOT_MEASUREMENTS} to {@code out}
+     * ({@link BenchMain#run} prints it again under the figures).
+     *
+     * @return whether the run is short
+     */
+    static boolean announce(String[] args, java.io.PrintStream out) {
+        if (!Arrays.asList(args).contains(FLAG)) {
+            return false;
+        }
+        out.println(NOT_MEASUREMENTS);
+        return true;
+    }
 
     /** The benchmarks {@code ripv bench} knows, each with a short mode. */
     static List<String> names() {

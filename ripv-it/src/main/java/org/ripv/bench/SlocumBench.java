@@ -100,6 +100,11 @@ public final class SlocumBench {
     }
 
     public static void main(String[] args) throws Exception {
+        System.exit(run(args));
+    }
+
+    /** The benchmark, its exit status returned rather than exited with ({@code BenchMain} runs several in one JVM). */
+    public static int run(String[] args) throws Exception {
         int mb = option(args, "--mb", 10);
         int runs = option(args, "--runs", 5);
         int ingestRows = option(args, "--ingest-rows", 20_000);
@@ -124,7 +129,7 @@ public final class SlocumBench {
                 }
             }
         }
-        System.exit(0);
+        return 0;
     }
 
     private static void decodeSpeed(String what, Path file, int runs) throws Exception {

@@ -34,10 +34,15 @@ public final class StoreBench {
     private StoreBench() {}
 
     public static void main(String[] args) throws Exception {
+        System.exit(run(args));
+    }
+
+    /** The benchmark, its exit status returned rather than exited with ({@code BenchMain} runs several in one JVM). */
+    public static int run(String[] args) throws Exception {
         int n = args.length >= 2 && args[0].equals("--entries") ? Integer.parseInt(args[1]) : 200_000;
         if (args.length > 0 && !(args.length == 2 && args[0].equals("--entries"))) {
             System.err.println("Usage: ripv bench store [--entries N]   (PostgreSQL from RIPV_PG_URL, RIPV_PG_USER, RIPV_PG_PASSWORD)");
-            System.exit(2);
+            return 2;
         }
         Path dir = Files.createTempDirectory("ripv-store-bench");
         try (StateStore files = new EmbeddedStateStore(dir, 64L * 1024 * 1024)) {
@@ -47,7 +52,7 @@ public final class StoreBench {
         String url = System.getenv("RIPV_PG_URL");
         if (url == null || url.isBlank()) {
             System.out.println("PostgreSQL: skipped (set RIPV_PG_URL, RIPV_PG_USER, RIPV_PG_PASSWORD)");
-            System.exit(0);
+            return 0;
         }
         Properties admin = new Properties();
         admin.setProperty("user", System.getenv().getOrDefault("RIPV_PG_USER", "postgres"));
@@ -89,7 +94,7 @@ public final class StoreBench {
                 st.execute("DROP SCHEMA IF EXISTS " + schema + " CASCADE");
             }
         }
-        System.exit(0);
+        return 0;
     }
 
     private static void report(String what, int n, double rate, int ok) {

@@ -39,6 +39,8 @@ final class WebWatchers extends SelectorReaders<WebWatchers.Conn> {
     }
 
     private volatile int lastPayloadBytes;
+    /** The smallest frame that carried a bench line: one line's push (a page behind gets several lines in one). */
+    private volatile int smallestPush = Integer.MAX_VALUE;
     /** A frame's payload for the scan, per reading thread. */
     private final ThreadLocal<byte[]> payload = ThreadLocal.withInitial(() -> new byte[4096]);
 
@@ -75,13 +77,21 @@ final class WebWatchers extends SelectorReaders<WebWatchers.Conn> {
             b.position(at + head);
             b.get(p, 0, n);
             lastPayloadBytes = head + n;
-            RawWatchers.scan(p, n, now, c.delays);
+            if (RawWatchers.scan(p, n, now, c.delays) == 1 && head + n < smallestPush) {
+                smallestPush = head + n;
+            }
             c.frames++;
             if (contains(p, n, SKIPPED)) {
                 c.markers++;
             }
         }
         return true;
+    }
+
+    /** The size on the wire of the smallest frame that carried one bench line, or 0 before the first. */
+    int smallestPushBytes() {
+        int s = smallestPush;
+        return s == Integer.MAX_VALUE ? 0 : s;
     }
 
     /** The size on the wire of the last frame read (a console push's), or 0 before the first. */

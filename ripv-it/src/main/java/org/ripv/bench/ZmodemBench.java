@@ -94,6 +94,11 @@ public final class ZmodemBench {
     }
 
     public static void main(String[] args) throws Exception {
+        System.exit(run(args));
+    }
+
+    /** The benchmark, its exit status returned rather than exited with ({@code BenchMain} runs several in one JVM). */
+    public static int run(String[] args) throws Exception {
         int baud = 115200;
         int bytes = 1 << 20;
         int iBaud = 2400;
@@ -115,25 +120,24 @@ public final class ZmodemBench {
                 source = Path.of(args[++i]);
                 if (!Files.isRegularFile(source) || Files.size(source) == 0) {
                     System.err.println("Error: --file " + source + ": no such file, or it is empty");
-                    System.exit(2);
+                    return 2;
                 }
                 continue;
             }
             if (i + 1 >= args.length) {
                 System.err.println("Error: '" + a + "' needs a value (ripv bench --help)");
-                System.exit(2);
+                return 2;
             }
             long v;
             try {
                 v = Long.parseLong(args[++i]);
             } catch (NumberFormatException e) {
                 System.err.println("Error: " + a + " takes a whole number, got '" + args[i] + "'");
-                System.exit(2);
-                return;
+                return 2;
             }
             if (v <= 0 && !(a.equals("--latency") && v == 0)) { // a link with no latency is a fair case
                 System.err.println("Error: " + a + (a.equals("--latency") ? " must not be negative" : " must be above 0") + ", got " + v);
-                System.exit(2);
+                return 2;
             }
             switch (a) {
                 case "--baud" -> baud = (int) v;
@@ -147,13 +151,13 @@ public final class ZmodemBench {
                 case "--rounds" -> rounds = (int) v;
                 default -> {
                     System.err.println("Error: unknown option '" + a + "' (ripv bench --help)");
-                    System.exit(2);
+                    return 2;
                 }
             }
         }
         if (!installed("sz") || !installed("rz") || !installed("sb") || !installed("socat")) {
             System.err.println("Error: the ZMODEM benchmark compares with lrzsz: install lrzsz and socat");
-            System.exit(1);
+            return 1;
         }
         Path dir = Files.createTempDirectory("zmodem-bench");
         ZmodemBench bench = new ZmodemBench(dir);
@@ -219,7 +223,7 @@ public final class ZmodemBench {
             System.out.println(bench.iridiumZmodem(iBaud, latency, dropEvery, small, maxCalls));
             System.out.println(bench.iridiumYmodem(iBaud, latency, dropEvery, small, ymodemCalls));
         }
-        System.exit(0);
+        return 0;
     }
 
     /** The bytes ZMODEM sends as two: ZDLE, and DLE, XON, XOFF with their high-bit twins. */

@@ -216,7 +216,7 @@ public final class RIPVServer implements AutoCloseable {
         DataLoop dataLoop = new DataLoop(internalCalls, config.dataDir().resolve("ingest.properties"));
         admission = new ServiceAdmission(services, serviceLiveness, checkers, this::undeliverable, this::drop, this::serviceOnline);
         remote = new ServerRemote(security.challenges(), admission, services,
-                new ServiceReplies(pending, cancels, files, dataLoop, this::reply), this::console);
+                new ServiceReplies(pending, cancels, files, dataLoop, this::reply, this::client), this::console);
         ServiceQueries queries = new ServiceQueries(services, serviceLiveness, checkers, permitFile, locks, console, this::reply);
         Admission admit = new Admission(Admission.steps(services, permitFile, locks, dataLoop, files, this::reply), forwarder);
         ServerCommands commands = new ServerCommands(new ServerCommands.Parts(permitFile, files, services, queries, locks, sessions,

@@ -34,6 +34,8 @@ import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.Priority;
 import org.ripv.messages.SessionInfo;
 import org.ripv.messages.Status;
+import org.ripv.messages.TablePages;
+import org.ripv.messages.TableResult;
 import org.ripv.wire.FrameCodec;
 import org.ripv.wire.ProtocolException;
 import org.slf4j.Logger;
@@ -62,6 +64,13 @@ public final class ClientSocketHandler implements AutoCloseable {
 
         default void onDisconnected(Exception cause) {
         }
+
+        /**
+         * One page of a table arrived ({@link TablePages}); {@link #onReply} sees the whole table
+         * with the final reply. For those who time the first rows (bench database) or show them early.
+         */
+        default void onPage(OutgoingServerMessage page) {
+        }
     }
 
     private record Pending(CompletableFuture<OutgoingServerMessage> done, Consumer<OutgoingServerMessage> progress) {}
@@ -71,6 +80,8 @@ public final class ClientSocketHandler implements AutoCloseable {
     private final DataInputStream in;
     private final FrameCodec codec;
     private final Map<Long, Pending> pending = new ConcurrentHashMap<>();
+    /** Tables arriving in pages, by message id, joined before anyone sees the final reply ({@link TablePages}). */
+    private final Map<Long, TablePages> pages = new ConcurrentHashMap<>();
     private final List<Listener> listeners = new CopyOnWriteArrayList<>();
     private final AtomicLong ids = new AtomicLong();
     private final Thread reader;
@@ -418,6 +429,28 @@ public final class ClientSocketHandler implements AutoCloseable {
     }
 
     private void dispatch(OutgoingServerMessage reply) {
+        long id = reply.header().messageId();
+        if (TablePages.isPage(reply.footer())) {
+            // A query's rows in pages: kept here, so that listeners and callers see one table, as before
+            // (only for a request of ours: a page for anything else is dropped).
+            if (pending.containsKey(id)) {
+                pages.computeIfAbsent(id, k -> new TablePages()).add((TableResult) reply.footer().result());
+                for (Listener l : listeners) {
+                    try {
+                        l.onPage(reply);
+                    } catch (RuntimeException e) {
+                        log.warn("a listener failed on a page of #{}", id, e);
+                    }
+                }
+            }
+            return;
+        }
+        if (reply.status().isFinal()) {
+            TablePages joined = pages.remove(id);
+            if (joined != null) {
+                reply = new OutgoingServerMessage(reply.header(), joined.join(reply.footer()));
+            }
+        }
         // Listeners first: whoever waits on the future then finds them up to date.
         for (Listener l : listeners) {
             try {
@@ -426,7 +459,6 @@ public final class ClientSocketHandler implements AutoCloseable {
                 log.warn("a listener failed on {}", reply, e);
             }
         }
-        long id = reply.header().messageId();
         Pending p = reply.status().isFinal() ? pending.remove(id) : pending.get(id);
         if (p != null) {
             if (reply.status().isFinal()) {
@@ -443,6 +475,7 @@ public final class ClientSocketHandler implements AutoCloseable {
         IOException failure = new IOException(cause == null ? "connection closed" : cause.getMessage(), cause);
         pending.values().forEach(p -> p.done().completeExceptionally(failure));
         pending.clear();
+        pages.clear();
         try {
             socket.close();
         } catch (IOException ignored) {

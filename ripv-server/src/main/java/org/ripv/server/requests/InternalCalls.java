@@ -18,6 +18,8 @@ import org.ripv.messages.Ids;
 import org.ripv.messages.IncomingServiceMessage;
 import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.Priority;
+import org.ripv.messages.TablePages;
+import org.ripv.messages.TableResult;
 import org.ripv.naming.MailboxAddress;
 import org.ripv.naming.MalformedNameException;
 import org.ripv.server.dataloop.ServiceCalls;
@@ -34,7 +36,8 @@ import org.ripv.server.services.ServiceRegistry;
  * client id {@code 000000}; the server's outbox hands their replies here instead of to a socket.
  */
 public final class InternalCalls implements ServiceCalls {
-    private record Waiter(CompletableFuture<Footer> done, Consumer<Footer> progress) {}
+    /** One of our requests: its future, its progress reports, and the pages of a table it is receiving. */
+    private record Waiter(CompletableFuture<Footer> done, Consumer<Footer> progress, TablePages pages) {}
 
     private final ServiceRegistry services;
     private final Supplier<PermitFile> permits;
@@ -98,7 +101,7 @@ public final class InternalCalls implements ServiceCalls {
             }
         }
         long id = ids.incrementAndGet();
-        waiting.put(id, new Waiter(done, progress == null ? f -> { } : progress));
+        waiting.put(id, new Waiter(done, progress == null ? f -> { } : progress, new TablePages()));
         Header h = new Header(id, new IdBadge(IdBadge.SERVER.clientId(), user), roles, ref.get().descriptor().name(), mailbox,
                 body, Priority.NORMAL, a);
         forwarder.forward(ref.get(), new IncomingServiceMessage(h));
@@ -113,14 +116,16 @@ public final class InternalCalls implements ServiceCalls {
         long id = reply.header().messageId();
         if (!reply.status().isFinal()) {
             Waiter w = waiting.get(id);
-            if (w != null) {
+            if (w != null && TablePages.isPage(reply.footer())) {
+                w.pages().add((TableResult) reply.footer().result());
+            } else if (w != null) {
                 w.progress().accept(reply.footer());
             }
             return true;
         }
         Waiter w = waiting.remove(id);
         if (w != null) {
-            w.done().complete(reply.footer());
+            w.done().complete(w.pages().join(reply.footer()));
         }
         return true;
     }

@@ -3,11 +3,14 @@ package org.ripv.server.requests;
 import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import java.util.function.Consumer;
+import java.util.function.Function;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.FileBundle;
 import org.ripv.messages.FileData;
 import org.ripv.messages.FileListing;
+import org.ripv.messages.IdBadge;
 import org.ripv.messages.Footer;
 import org.ripv.messages.ImageResult;
 import org.ripv.messages.IncomingServerMessage;
@@ -15,9 +18,13 @@ import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.OutgoingServiceMessage;
 import org.ripv.messages.Result;
 import org.ripv.messages.Status;
+import org.ripv.messages.TablePages;
 import org.ripv.server.dataloop.DataLoop;
 import org.ripv.server.files.FileStore;
+import org.ripv.server.handlers.SocketHandler;
+import org.ripv.server.paging.PageRelay;
 import org.ripv.server.services.ServiceReference;
+import org.ripv.server.workflow.Workflows;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -29,23 +36,28 @@ import org.slf4j.LoggerFactory;
 public final class ServiceReplies {
     private static final Logger log = LoggerFactory.getLogger(ServiceReplies.class);
 
+    /** Pages of query results on their way to clients (issue 38); its threads end when idle, so one serves every server in the JVM. */
+    private static final PageRelay PAGES = new PageRelay();
+
     private final PendingRequests pending;
     private final RequestCancels cancels;
     private final FileStore files;
     private final DataLoop dataLoop;
     private final Consumer<OutgoingServerMessage> outbox;
+    private final Function<String, Optional<SocketHandler>> clients;
 
     /**
      * @param dataLoop takes the replies whose files go to the database first
      * @param outbox   where the replies go (the Post Office's outbox)
      */
     public ServiceReplies(PendingRequests pending, RequestCancels cancels, FileStore files, DataLoop dataLoop,
-                          Consumer<OutgoingServerMessage> outbox) {
+                          Consumer<OutgoingServerMessage> outbox, Function<String, Optional<SocketHandler>> clients) {
         this.pending = pending;
         this.cancels = cancels;
         this.files = files;
         this.dataLoop = dataLoop;
         this.outbox = outbox;
+        this.clients = clients;
     }
 
     /** A reply from {@code ref}, as its service called it back. */
@@ -67,6 +79,12 @@ public final class ServiceReplies {
         f = cancels.judge(p, f);
         // Route by the header the server sent, never by what the service wrote back.
         OutgoingServerMessage out = new IncomingServerMessage(p.header()).reply(f.via(ServerReplies.SERVICE));
+        if (TablePages.isPage(f)) {
+            String clientId = p.header().origin().clientId();
+            PAGES.relay(out, ref, clients, IdBadge.SERVER.clientId().equals(clientId) || Workflows.isWorkflowClient(clientId),
+                    outbox);
+            return;
+        }
         if (!dataLoop.downloaded(out, sent, outbox)) { // DBA files go to the database first
             outbox.accept(out);
         }

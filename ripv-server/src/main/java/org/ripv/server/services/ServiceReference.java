@@ -193,6 +193,11 @@ public final class ServiceReference {
         return stub.cancel(token, h.mailboxAddress(), h.origin().clientId(), h.messageId());
     }
 
+    /** Tells the service a page of a request's table went out to its client: the next may come. */
+    public boolean more(org.ripv.messages.Header h) throws RemoteException {
+        return stub.more(token, h.mailboxAddress(), h.origin().clientId(), h.messageId());
+    }
+
     /** Asks for the MailBoxes now, on the caller's thread. */
     List<MailboxStatus> mailboxes() throws RemoteException {
         return stub.mailboxes(token);

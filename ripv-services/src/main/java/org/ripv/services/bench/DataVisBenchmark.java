@@ -38,6 +38,11 @@ public final class DataVisBenchmark {
     private DataVisBenchmark() {}
 
     public static void main(String[] args) throws Exception {
+        System.exit(run(args));
+    }
+
+    /** The benchmark, its exit status returned rather than exited with ({@code BenchMain} runs several in one JVM). */
+    public static int run(String[] args) throws Exception {
         System.setProperty("java.awt.headless", "true");
         Locale.setDefault(Locale.ROOT);
         boolean octave = !List.of(args).contains("--no-octave") && onPath("octave-cli");
@@ -99,6 +104,7 @@ public final class DataVisBenchmark {
                 vis.stop();
             }
         }
+        return 0;
     }
 
     private static ImageResult plot(DataVisServer vis, BlockingQueue<OutgoingServiceMessage> replies, String name, byte[] data)

@@ -61,12 +61,17 @@ public final class YmodemBenchmark {
     }
 
     public static void main(String[] args) throws Exception {
+        System.exit(run(args));
+    }
+
+    /** The benchmark, its exit status returned rather than exited with ({@code BenchMain} runs several in one JVM). */
+    public static int run(String[] args) throws Exception {
         List<int[]> runs = new ArrayList<>();
         for (String a : args.length == 0 ? new String[] {"9600:65536", "115200:1048576"} : args) {
             String[] p = a.split(":");
             if (p.length != 2) {
                 System.err.println("Error: '" + a + "' is not BAUD:BYTES");
-                System.exit(2);
+                return 2;
             }
             runs.add(new int[] {Integer.parseInt(p[0]), Integer.parseInt(p[1])});
         }
@@ -90,7 +95,7 @@ public final class YmodemBenchmark {
         if (!lrzsz) {
             System.out.println("(lrzsz or socat not installed: lrzsz rows skipped)");
         }
-        System.exit(0);
+        return 0;
     }
 
     private Row ours(int baud, Path file) throws Exception {

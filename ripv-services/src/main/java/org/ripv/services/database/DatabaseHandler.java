@@ -108,9 +108,9 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
             }
             int limit = limits.queryTimeoutSeconds() == 0 ? ViewQuery.TIMEOUT_SECONDS
                     : Math.min(limits.queryTimeoutSeconds(), ViewQuery.TIMEOUT_SECONDS);
-            return run(request.command(), true, limit);
+            return run(request.command(), true, limit, request);
         }
-        return run(request.command(), readsOnly(request.roles()));
+        return run(request.command(), readsOnly(request.roles()), limits.queryTimeoutSeconds(), request);
     }
 
     /** True unless the roles let the user change the database: observers and unknown roles only read. */
@@ -138,13 +138,18 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
         }
     }
 
-    /** Runs one SQL command as the owner, or as the reader. */
+    /** Runs one SQL command as the owner, or as the reader; a query's whole table comes in the reply. */
     public Reply run(String command, boolean asReader) {
-        return run(command, asReader, limits.queryTimeoutSeconds());
+        return run(command, asReader, limits.queryTimeoutSeconds(), null);
     }
 
     /** As above, cancelled after {@code timeoutSeconds} (0: no limit). */
     Reply run(String command, boolean asReader, int timeoutSeconds) {
+        return run(command, asReader, timeoutSeconds, null);
+    }
+
+    /** As above; with {@code pages}, a query's rows go to its reader in pages ({@link Request#page}). */
+    private Reply run(String command, boolean asReader, int timeoutSeconds, Request pages) {
         List<String> statements;
         try {
             statements = SqlScript.split(command == null ? "" : command);
@@ -182,11 +187,13 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
             st.setQueryTimeout(timeoutSeconds);
             if (st.execute(sql)) {
                 try (ResultSet rs = st.getResultSet()) {
-                    TableResult table = table(sql, rs);
+                    ResultPages out = new ResultPages(pages);
+                    TableResult table = table(sql, rs, out);
                     long ms = (System.nanoTime() - started) / 1_000_000;
-                    log.debug("{} {}: {} rows{} in {} ms", target.handle(), SqlScript.abbreviate(sql), table.rows().size(),
-                            table.truncated() ? " (truncated)" : "", ms);
-                    return Reply.ok(summary(table, ms), table);
+                    int total = out.sent() + table.rows().size();
+                    log.debug("{} {}: {} rows{} in {} pages, {} ms", target.handle(), SqlScript.abbreviate(sql), total,
+                            table.truncated() ? " (truncated)" : "", out.pages() + 1, ms);
+                    return Reply.ok(summary(total, table.truncated(), ms), table);
                 }
             }
             int count = st.getUpdateCount();
@@ -202,6 +209,14 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
                 return Reply.error(ErrorCode.CANCELLED, "the statement was cancelled: " + describe(e));
             }
             return failure(sql, e);
+        } catch (Request.PagesStopped e) {
+            log.info("{}: '{}' stopped while sending its rows: {}", target.handle(), SqlScript.abbreviate(sql), e.getMessage());
+            return e.cancelled() ? Reply.error(ErrorCode.CANCELLED, "the statement was cancelled while its rows were sent")
+                    : Reply.error(ErrorCode.TIMEOUT, e.getMessage() + "; the statement was stopped");
+        } catch (InterruptedException e) {
+            // a cancel's interrupt while the query waited for its reader (embedded Derby has no Statement.cancel)
+            log.info("{}: '{}' cancelled while sending its rows", target.handle(), SqlScript.abbreviate(sql));
+            return Reply.error(ErrorCode.CANCELLED, "the statement was cancelled while its rows were sent");
         } finally {
             synchronized (this) {
                 runningStatement = null;
@@ -237,7 +252,13 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
         return true;
     }
 
-    private TableResult table(String sql, ResultSet rs) throws SQLException {
+    /**
+     * Reads the rows into pages: each full page goes to the reader ({@link ResultPages}) and the
+     * rows after the last page are the returned table, so the service holds one page at a time
+     * (and the reader up to {@code Request.PAGES_IN_FLIGHT} more), never the whole result.
+     */
+    private TableResult table(String sql, ResultSet rs, ResultPages out)
+            throws SQLException, Request.PagesStopped, InterruptedException {
         ResultSetMetaData md = rs.getMetaData();
         int n = md.getColumnCount();
         List<String> columns = new ArrayList<>(n);
@@ -248,23 +269,35 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
         }
         List<String[]> rows = new ArrayList<>(Math.min(limits.maxRows(), 1024));
         long chars = 0;
+        long pageChars = 0;
+        int kept = 0;
         boolean truncated = false;
         while (rs.next()) {
-            if (rows.size() == limits.maxRows()) {
+            if (kept == limits.maxRows()) {
                 truncated = true;
                 break;
             }
             String[] row = new String[n];
+            long rowChars = 0;
             for (int i = 0; i < n; i++) {
                 String v = cell(rs, i + 1);
                 row[i] = v;
-                chars += v == null ? 1 : v.length() + 1;
+                rowChars += v == null ? 1 : v.length() + 1;
             }
+            chars += rowChars;
             if (chars > limits.maxResultChars()) {
                 truncated = true;
                 break;
             }
+            rowChars += (long) ResultPages.CELL_OVERHEAD * n;
+            if (out.full(rows.size(), pageChars + rowChars)) {
+                out.send(new TableResult(sql, columns, types, rows, false));
+                rows = new ArrayList<>();
+                pageChars = 0;
+            }
             rows.add(row);
+            pageChars += rowChars;
+            kept++;
         }
         return new TableResult(sql, columns, types, rows, truncated);
     }
@@ -284,18 +317,17 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
         return v;
     }
 
-    private String summary(TableResult table, long ms) {
-        int n = table.rows().size();
+    private String summary(int n, boolean truncated, long ms) {
         String rows = n == 1 ? "1 row" : n + " rows";
-        if (!table.truncated()) {
+        if (!truncated) {
             return rows + " in " + ms + " ms";
         }
         if (n == limits.maxRows()) {
             return "first " + rows + " (truncated: the service returns at most " + limits.maxRows()
                     + " rows; narrow the query, e.g. with WHERE or FETCH FIRST n ROWS ONLY) in " + ms + " ms";
         }
-        return "first " + rows + " (truncated: the result is larger than one reply may carry, "
-                + limits.maxResultChars() + " characters; narrow the query) in " + ms + " ms";
+        return "first " + rows + " (truncated: the service returns at most " + limits.maxResultChars()
+                + " characters of one result; narrow the query) in " + ms + " ms";
     }
 
     private Reply failure(String sql, SQLException e) {

@@ -8,6 +8,8 @@
  *   <li>{@link org.ripv.services.database.DatabaseHandler} — runs one MailBox's SQL: queries
  *       to {@code TableResult}, updates to {@code UpdateCount}, database errors with their
  *       SQLState; owner and read-only reader connections.</li>
+ *   <li>{@link org.ripv.services.database.ResultPages} — a query's rows leave in pages, each once
+ *       the reader has room for it, so no result is ever held whole (issue 38).</li>
  *   <li>{@link org.ripv.services.database.EmbeddedDatabase} — the default database: created,
  *       seeded and secured (NATIVE users, SQL authorization, read-only reader) on first start.</li>
  *   <li>{@link org.ripv.services.database.SqlScript} — splits and runs the scripts of {@code sql/}.</li>

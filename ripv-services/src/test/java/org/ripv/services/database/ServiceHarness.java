@@ -12,9 +12,14 @@ import org.ripv.messages.IdBadge;
 import org.ripv.messages.IncomingServiceMessage;
 import org.ripv.messages.OutgoingServiceMessage;
 import org.ripv.messages.Priority;
+import org.ripv.messages.TablePages;
+import org.ripv.messages.TableResult;
 import org.ripv.service.RIPVService;
 
-/** Sends requests to a started service in-process (the path the RMI adapter uses) and waits for the final reply. */
+/**
+ * Sends requests to a started service in-process (the path the RMI adapter uses) and waits for the
+ * final reply, with a table's pages joined into it as a client does ({@link TablePages}).
+ */
 final class ServiceHarness {
     private final RIPVService service;
     private final BlockingQueue<OutgoingServiceMessage> replies = new LinkedBlockingQueue<>();
@@ -31,11 +36,14 @@ final class ServiceHarness {
         String mailbox = service.name().mailbox(handle).toString();
         service.accept(new IncomingServiceMessage(new Header(id, new IdBadge("123456", user), roles,
                 service.name().toString(), mailbox, command, Priority.NORMAL, null)));
+        TablePages pages = new TablePages();
         while (true) {
             OutgoingServiceMessage r = replies.poll(120, TimeUnit.SECONDS);
             assertThat(r).as("a reply to '" + command + "' within 120 s").isNotNull();
-            if (r.header().messageId() == id && r.status().isFinal()) {
-                return r;
+            if (r.header().messageId() == id && TablePages.isPage(r.footer())) {
+                pages.add((TableResult) r.footer().result());
+            } else if (r.header().messageId() == id && r.status().isFinal()) {
+                return new OutgoingServiceMessage(r.header(), pages.join(r.footer()));
             }
         }
     }

@@ -27,8 +27,11 @@ export class PostOffice {
     if (m.type === 'push') { this.onPush(m); return; }
     const w = this.waiting.get(m.id);
     if (!w) { this.onPush(m); return; }
+    // A query's rows come in pages (PROGRESS with a TableResult); the final reply gets them all, in order.
+    if (m.status === 'PROGRESS' && m.result?.kind === 'TableResult') { (w.pages ??= []).push(m.result.rows); return; }
     if (m.status === 'PROGRESS') { w.progress(m); return; }
     this.waiting.delete(m.id);
+    if (w.pages && m.result?.kind === 'TableResult') m.result.rows = [...w.pages, m.result.rows].flat();
     w.done(m);
   }
 
