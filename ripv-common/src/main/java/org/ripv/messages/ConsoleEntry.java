@@ -29,6 +29,15 @@ public record ConsoleEntry(long time, String mailbox, Kind kind, String user, St
     /** What a console entry is. */
     public enum Kind { LINE, COMMAND, EVENT, TRANSFER }
 
+    /** True when this entry is a contact with the vehicle: its lines and transfers, and the events it caused ({@link VehicleEvent#fromVehicle}). */
+    public boolean isContact() {
+        return switch (kind) {
+            case LINE, TRANSFER -> true;
+            case COMMAND -> false;
+            case EVENT -> event != null && event.fromVehicle();
+        };
+    }
+
     public ConsoleEntry {
         Objects.requireNonNull(mailbox, "mailbox");
         Objects.requireNonNull(kind, "kind");

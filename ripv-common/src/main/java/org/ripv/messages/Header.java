@@ -42,6 +42,11 @@ public record Header(long messageId, IdBadge origin, List<String> roles, String 
         return body.startsWith("?");
     }
 
+    /** The request's name while it waits for its reply: its sender's client id and its message id ({@code 123456#7}). */
+    public String requestKey() {
+        return origin.clientId() + "#" + messageId;
+    }
+
     public Header withOrigin(IdBadge newOrigin, List<String> newRoles) {
         return new Header(messageId, newOrigin, newRoles, serviceDestination, mailboxAddress, body,
                 priority, attachment);

@@ -4,6 +4,10 @@ package org.ripv.messages;
  * What happened on a vehicle link, as watchers, the transcript and notifications see it. The
  * service reports the call's life (SURFACED, DIVED, LINK_LOST), ALERTs and transfers; the server
  * adds what only it knows (locks, workflows).
+ *
+ * <p>The rules both sides apply to an event live here once: the call state it moves a vehicle to
+ * (the server's {@code VehicleStates}, the clients' {@code SessionStates}), whether it is a
+ * contact with the vehicle, and the groups pages and windows show alike.
  */
 public enum VehicleEvent {
     /** A call began: carrier rose, a caller connected, or the surface dialog was seen. */
@@ -46,5 +50,37 @@ public enum VehicleEvent {
     /** A DatabaseServer refused a file (not a Slocum file, or broken): nothing of it stored; the text says why. */
     INGEST_REFUSED,
     /** A file whose bytes a DatabaseServer had stored already (fetched again): nothing added. */
-    INGEST_REPEATED
+    INGEST_REPEATED;
+
+    /** The call state this event moves the vehicle to, or null when it leaves the state as it was. */
+    public SessionState.State callState() {
+        return switch (this) {
+            case SURFACED -> SessionState.State.ON_CALL;
+            case DIVED -> SessionState.State.DIVED;
+            case LINK_LOST -> SessionState.State.LOST;
+            default -> null;
+        };
+    }
+
+    /** True for a new call: the vehicle's call count goes up by one. */
+    public boolean startsCall() {
+        return this == SURFACED;
+    }
+
+    /**
+     * True when the vehicle itself was heard (its last contact moves): the call's life and what it
+     * sent or said; not LINK_LOST (the link failed, the vehicle said nothing), nor what the server
+     * or the database adds (locks, workflows, ingest).
+     */
+    public boolean fromVehicle() {
+        return switch (this) {
+            case SURFACED, DIVED, ALERT, TRANSFER_DONE, TRANSFER_FAILED -> true;
+            default -> false;
+        };
+    }
+
+    /** True for the end of a workflow run: WORKFLOW_DONE, WORKFLOW_DONE_WITH_ERRORS, WORKFLOW_FAILED. */
+    public boolean endsWorkflow() {
+        return this == WORKFLOW_DONE || this == WORKFLOW_DONE_WITH_ERRORS || this == WORKFLOW_FAILED;
+    }
 }

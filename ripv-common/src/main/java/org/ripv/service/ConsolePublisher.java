@@ -1,5 +1,6 @@
 package org.ripv.service;
 
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.ArrayBlockingQueue;
@@ -8,6 +9,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Supplier;
 import org.ripv.messages.ConsoleEntry;
+import org.ripv.retry.Backoff;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -117,7 +119,7 @@ final class ConsolePublisher {
     private void run() {
         List<ConsoleEntry> batch = new ArrayList<>(BATCH);
         long failingSince = 0;
-        long wait = 0;
+        Backoff backoff = new Backoff(Duration.ofMillis(100), Duration.ofMillis(2000));
         try {
             while (!Thread.currentThread().isInterrupted()) {
                 if (batch.isEmpty()) {
@@ -143,7 +145,7 @@ final class ConsolePublisher {
                     sink.get().console(List.copyOf(batch));
                     batch.clear();
                     failingSince = 0;
-                    wait = 0;
+                    backoff.reset();
                 } catch (Exception e) {
                     // The server restarted, or a standby is taking over: keep the batch and try again,
                     // so what the vehicle said meanwhile reaches the transcript (the queue behind it
@@ -159,10 +161,10 @@ final class ConsolePublisher {
                         anySkipped = true;
                         batch.clear();
                         failingSince = 0;
-                        wait = 0;
+                        backoff.reset();
                         continue;
                     }
-                    wait = wait == 0 ? 100 : Math.min(wait * 2, 2000);
+                    long wait = backoff.nextMillis();
                     log.debug("console entries not delivered ({}); trying again in {} ms", e.toString(), wait);
                     Thread.sleep(wait);
                 }

@@ -4,10 +4,13 @@ import java.io.IOException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.ServerSocket;
-import java.nio.file.Files;
+import java.net.StandardSocketOptions;
+import java.nio.channels.ServerSocketChannel;
 import java.nio.file.Path;
+import java.rmi.NoSuchObjectException;
 import java.rmi.RemoteException;
 import java.rmi.registry.Registry;
+import java.rmi.server.UnicastRemoteObject;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
@@ -15,22 +18,47 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.SynchronousQueue;
+import java.util.concurrent.ThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
-import org.ripv.messages.ErrorCode;
-import org.ripv.messages.Footer;
+import java.util.function.Supplier;
+import org.ripv.files.PrivateFiles;
+import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.IncomingServerMessage;
 import org.ripv.messages.IncomingServiceMessage;
-import org.ripv.messages.MailboxStatus;
 import org.ripv.messages.OutgoingServerMessage;
+import org.ripv.naming.Handles;
 import org.ripv.post.MailBox;
 import org.ripv.post.PostOffice;
+import org.ripv.rmi.DeadlineSocketFactory;
 import org.ripv.rmi.GenericRMIInterface;
 import org.ripv.rmi.RmiSupport;
 import org.ripv.server.clients.ClientAcceptor;
+import org.ripv.server.clients.ClientDispatch;
 import org.ripv.server.clients.ServerSessions;
+import org.ripv.server.clients.WaitingRequests;
 import org.ripv.server.clients.WebClients;
+import org.ripv.server.commands.ServerCommands;
+import org.ripv.server.commands.ServiceQueries;
+import org.ripv.server.dataloop.DataLoop;
 import org.ripv.server.files.FileStore;
 import org.ripv.server.handlers.SocketHandler;
+import org.ripv.server.handlers.WriterPool;
+import org.ripv.server.lock.OperatorLock;
+import org.ripv.server.plans.PlanBridge;
+import org.ripv.server.plans.Plans;
+import org.ripv.server.remote.OutboundListener;
+import org.ripv.server.remote.ServerRemote;
+import org.ripv.server.requests.InternalCalls;
+import org.ripv.server.requests.RequestCancels;
+import org.ripv.server.requests.RequestForwarder;
+import org.ripv.server.requests.ServiceReplies;
+import org.ripv.server.routing.Admission;
+import org.ripv.server.routing.ServerTaskManager;
+import org.ripv.server.security.StaleLogins;
+import org.ripv.server.services.ServiceAdmission;
+import org.ripv.server.services.ServiceRegistry;
+import org.ripv.server.web.PublicVehicles;
 import org.ripv.server.web.WebConsole;
 import org.ripv.server.permit.PermitFile;
 import org.ripv.server.permit.PermitWatcher;
@@ -44,7 +72,10 @@ import org.ripv.server.services.ServiceLiveness;
 import org.ripv.server.services.ServiceReference;
 import org.ripv.server.services.ServiceSecret;
 import org.ripv.server.session.ConsoleHub;
+import org.ripv.server.workflow.WorkflowBridge;
+import org.ripv.server.workflow.Workflows;
 import org.ripv.wire.FrameCodec;
+import org.ripv.wire.WireFilter;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -66,27 +97,25 @@ public final class RIPVServer implements AutoCloseable {
     private static final Logger log = LoggerFactory.getLogger(RIPVServer.class);
     /** The server's one MailBox. */
     public static final String POST_OFFICE = "RIPV Post Office";
-    /** The name rules use for the server's own commands. */
-    public static final String SERVER_SERVICE = "RIPVServer";
 
     private final ServerConfig config;
     private final SessionOptions sessionOptions;
-    private final ClientDispatch dispatch = new ClientDispatch(this);
-    private final Map<String, ServiceReference> services = new ConcurrentHashMap<>();
+    private final ServiceRegistry services = new ServiceRegistry();
     private final Map<String, OperatorLock> locks = new ConcurrentHashMap<>();
     private final PostOffice<IncomingServerMessage, OutgoingServerMessage> postOffice = new PostOffice<>(200_000);
     private final ScheduledExecutorService timers;
     /** The threads that write every client's socket. */
-    private final org.ripv.server.handlers.WriterPool writers;
+    private final WriterPool writers;
     private final ExecutorService checkers;
     private final ExecutorService withdrawals;
     private final ExecutorService liveness;
     private final ServiceLiveness serviceLiveness;
     private final ExecutorService fileWork;
-    private final ServerRemote remote = new ServerRemote(this);
-    private final InternalCalls internalCalls = new InternalCalls(this);
-    private final org.ripv.server.clients.WaitingRequests waiting = new org.ripv.server.clients.WaitingRequests();
-    private volatile org.ripv.server.dataloop.DataLoop dataLoop;
+    private ServerRemote remote;
+    private volatile InternalCalls internalCalls;
+    private ServiceAdmission admission;
+    /** Each client's requests waiting for their final reply, capped (issue 33 item 10). */
+    private final WaitingRequests waiting = new WaitingRequests();
 
     private PermitWatcher permits;
     private FileStore files;
@@ -95,7 +124,7 @@ public final class RIPVServer implements AutoCloseable {
     private MailBox<IncomingServerMessage, OutgoingServerMessage> box;
     private PendingRequests pending;
     private volatile RequestEndings endings;
-    private java.nio.channels.ServerSocketChannel listener;
+    private ServerSocketChannel listener;
     private volatile ClientAcceptor acceptor;
     private Registry registry;
     private int registryPort;
@@ -105,21 +134,15 @@ public final class RIPVServer implements AutoCloseable {
     private ServerSecurity security;
     private RegistryGuard registryGuard;
     private ServerTls tls;
-    private org.ripv.server.workflow.Workflows workflows;
+    private Workflows workflows;
     /** Plans and their changes (org.ripv.server.plans, docs/plans.md). */
-    private org.ripv.server.plans.Plans plans;
-    private final RequestCancels cancels = new RequestCancels(this);
+    private Plans plans;
     private OutboundListener outbound;
     private volatile boolean running;
     private ServerSessions sessions;
     private ServerState state;
-
-    /** An operator's hold on a MailBox ({@code ?lock}). */
-    public record OperatorLock(String user, String clientId, long untilMillis) {
-        public boolean expired() {
-            return System.currentTimeMillis() > untilMillis;
-        }
-    }
+    private ClientDispatch dispatch;
+    private PublicVehicles publicVehicles;
 
     public RIPVServer(ServerConfig config) {
         this(config, SessionOptions.defaults());
@@ -130,12 +153,12 @@ public final class RIPVServer implements AutoCloseable {
         this.config = config;
         this.sessionOptions = sessionOptions;
         this.timers = Executors.newScheduledThreadPool(1, Threads.named("ripv-server-timer"));
-        this.writers = new org.ripv.server.handlers.WriterPool(timers);
+        this.writers = new WriterPool(timers);
         // Calls to services: each is bounded by the RMI deadlines and at most one MailBox query
         // runs per service, so a cached pool grows by one thread per hung service at worst.
         this.checkers = Executors.newCachedThreadPool(Threads.named("ripv-service-query"));
-        this.withdrawals = new java.util.concurrent.ThreadPoolExecutor(0, 16, 30, TimeUnit.SECONDS,
-                new java.util.concurrent.SynchronousQueue<>(), Threads.named("ripv-withdraw"));
+        this.withdrawals = new ThreadPoolExecutor(0, 16, 30, TimeUnit.SECONDS,
+                new SynchronousQueue<>(), Threads.named("ripv-withdraw"));
         this.liveness = Executors.newFixedThreadPool(2, Threads.named("ripv-service-check"));
         this.fileWork = Executors.newFixedThreadPool(2, Threads.named("ripv-file-work"));
         this.serviceLiveness = new ServiceLiveness(services, liveness, checkers, timers, config.serviceCheck(), this::drop);
@@ -162,48 +185,67 @@ public final class RIPVServer implements AutoCloseable {
             return;
         }
         RmiSupport.configure(5_000, 15_000);
-        org.ripv.files.PrivateFiles.createDirectories(config.dataDir());
-        org.ripv.files.PrivateFiles.restrict(config.dataDir()); // the data directory is RIPV's alone (0700)
+        PrivateFiles.createDirectories(config.dataDir());
+        PrivateFiles.restrict(config.dataDir()); // the data directory is RIPV's alone (0700)
         state = ServerState.open(config, sessionOptions); // first: an unreachable database leaves nothing open
         permits = new PermitWatcher(config.permitFile());
+        Supplier<PermitFile> permitFile = permits::current;
         files = new FileStore(config.dataDir().resolve("upload"), config.dataDir().resolve("download"), config.maxUpload());
         secret = ServiceSecret.loadOrCreate(config.dataDir().resolve("service.secret"));
         codec = new FrameCodec(config.maxFrame());
         pending = new PendingRequests(timers, config.requestTimeout(), this::timedOut);
-        workflows = new org.ripv.server.workflow.Workflows(state.store(), new WorkflowBridge(this));
-        plans = new org.ripv.server.plans.Plans(new PlanBridge(this), config.dataDir().resolve("plans"));
         endings = new RequestEndings(this::reply, pending, withdrawals, config.requestTimeout());
-        box = postOffice.open(POST_OFFICE, new ServerTaskManager(this));
         // A log-in looks at the file first (one stat): a user just added with ripv passwd can log in
         // at once, not only after the next periodic check.
         security = new ServerSecurity(config.security(), config.maxClients(), timers, () -> {
             permits.reloadIfChanged();
             return permits.current();
         }, () -> secret);
-        sessions = new ServerSessions(config.dataDir(), state.store(), sessionOptions, this::permits, this::client, codec);
+        sessions = new ServerSessions(config.dataDir(), state.store(), sessionOptions, permitFile, this::client, codec);
         sessions.countRepliesIn(waiting);
+        ConsoleHub console = sessions.console();
+        RequestForwarder forwarder = new RequestForwarder(pending, this::reply);
+        RequestCancels cancels = new RequestCancels(pending, services, permitFile, this::reply, this::publishServerEntry);
+        workflows = new Workflows(state.store(), new WorkflowBridge(this::deliver, console, this::publishServerEntry, files,
+                services, checkers, permitFile, locks, cancels));
+        plans = new Plans(new PlanBridge(files, permitFile, this::publishServerEntry, workflows::queueGenerated),
+                config.dataDir().resolve("plans"));
         sessions.expireLocks(timers, locks, mailbox -> workflows.lockReleased(mailbox));
         permits.onChange(sessions::permitsChanged);
-        dataLoop = new org.ripv.server.dataloop.DataLoop(internalCalls, config.dataDir().resolve("ingest.properties"));
+        internalCalls = new InternalCalls(services, permitFile, files, forwarder);
+        DataLoop dataLoop = new DataLoop(internalCalls, config.dataDir().resolve("ingest.properties"));
+        admission = new ServiceAdmission(services, serviceLiveness, checkers, this::undeliverable, this::drop, this::serviceOnline);
+        remote = new ServerRemote(security.challenges(), admission, services,
+                new ServiceReplies(pending, cancels, files, dataLoop, this::reply, this::client), this::console);
+        ServiceQueries queries = new ServiceQueries(services, serviceLiveness, checkers, permitFile, locks, console, this::reply);
+        Admission admit = new Admission(Admission.steps(services, permitFile, locks, dataLoop, files, this::reply), forwarder);
+        ServerCommands commands = new ServerCommands(new ServerCommands.Parts(permitFile, files, services, queries, locks, sessions,
+                workflows, plans, cancels, security.throttle(), state.audit(), state.store(), this::client), fileWork, checkers,
+                this::reply, admit::route);
+        box = postOffice.open(POST_OFFICE, new ServerTaskManager(commands::run, admit, workflows::reply, waiting, this::client,
+                this::reply));
+        dispatch = new ClientDispatch(security.logins(), waiting, this::deliver, this::clientClosed);
+        publicVehicles = publicNames == null ? null : new PublicVehicles(
+                () -> queries.known().thenApply(ServiceQueries.Known::addresses), console, checkers, publicNames);
 
         InetAddress bind = config.bindAddress() == null ? null : InetAddress.getByName(config.bindAddress());
         try {
             registryPort = config.registryPort() == 0 ? freePort() : config.registryPort();
             BoundServerSocketFactory rmiSockets = new BoundServerSocketFactory(bind);
             // Services call back with deadlines: the factory travels inside the stub they get.
-            org.ripv.rmi.DeadlineSocketFactory callSockets = org.ripv.rmi.DeadlineSocketFactory.fromSystem();
+            DeadlineSocketFactory callSockets = DeadlineSocketFactory.fromSystem();
             try {
                 registry = RegistryGuard.create(registryPort, callSockets, rmiSockets);
             } catch (RemoteException e) {
                 throw new IOException("cannot open the RMI registry on port " + registryPort + " (in use?): " + e.getMessage(), e);
             }
-            GenericRMIInterface stub = (GenericRMIInterface) java.rmi.server.UnicastRemoteObject.exportObject(remote,
-                    registryPort, callSockets, rmiSockets, org.ripv.wire.WireFilter.forRmi(RmiSupport.MAX_RMI_BYTES));
+            GenericRMIInterface stub = (GenericRMIInterface) UnicastRemoteObject.exportObject(remote,
+                    registryPort, callSockets, rmiSockets, WireFilter.forRmi(RmiSupport.MAX_RMI_BYTES));
             registryGuard = RegistryGuard.bind(registry, stub);
 
             tls = ServerTls.resolve(config.tls(), config.security().plain(), config.dataDir().resolve("tls"));
-            listener = java.nio.channels.ServerSocketChannel.open(); // TLS on the selector threads (org.ripv.server.transport)
-            listener.setOption(java.net.StandardSocketOptions.SO_REUSEADDR, true);
+            listener = ServerSocketChannel.open(); // TLS on the selector threads (org.ripv.server.transport)
+            listener.setOption(StandardSocketOptions.SO_REUSEADDR, true);
             try {
                 listener.bind(new InetSocketAddress(bind, config.port()), 128);
             } catch (IOException e) {
@@ -222,7 +264,7 @@ public final class RIPVServer implements AutoCloseable {
         running = true;
         acceptor = new ClientAcceptor(listener, tls.context(), timers, codec, writers, dispatch, security.gate());
         // A reload that removes a user, changes a password or roles reaches every open log-in (issue 33 item 4).
-        org.ripv.server.security.StaleLogins stale = new org.ripv.server.security.StaleLogins(permits.current(), acceptor::clients);
+        StaleLogins stale = new StaleLogins(permits.current(), acceptor::clients);
         if (landingPage != null) {
             WebConsole web = landingPage;
             stale.onChange(c -> web.usersChanged(c.ended(), c.roles()));
@@ -251,7 +293,7 @@ public final class RIPVServer implements AutoCloseable {
         }
         if (outbound == null) {
             InetAddress bind = config.bindAddress() == null ? null : InetAddress.getByName(config.bindAddress());
-            outbound = new OutboundListener(this, remote, bind, port);
+            outbound = new OutboundListener(secret, services, admission, this::drop, remote, bind, port);
             log.info("services behind NAT may connect out to port {} (--outbound-only)", outbound.port());
         }
         return outbound.port();
@@ -280,8 +322,7 @@ public final class RIPVServer implements AutoCloseable {
             }
         }
         writers.close();
-        services.values().forEach(ServiceReference::close);
-        services.clear();
+        services.closeAll();
         if (registry != null) {
             try {
                 registry.unbind(GenericRMIInterface.BINDING);
@@ -289,12 +330,14 @@ public final class RIPVServer implements AutoCloseable {
                 // not bound, or already gone
             }
             try {
-                java.rmi.server.UnicastRemoteObject.unexportObject(registry, true);
-            } catch (java.rmi.NoSuchObjectException ignored) {
+                UnicastRemoteObject.unexportObject(registry, true);
+            } catch (NoSuchObjectException ignored) {
                 // not exported
             }
         }
-        RmiSupport.unexport(remote);
+        if (remote != null) {
+            RmiSupport.unexport(remote);
+        }
         if (workflows != null) {
             workflows.close();
         }
@@ -329,10 +372,12 @@ public final class RIPVServer implements AutoCloseable {
                 config.security().httpUpload(), tls.context(), new WebClients(() -> acceptor), codec, mapTiles));
         // The upload form stores through the FileStore with ?upload's quota and owners (issue 33 item 5).
         page.withPagesPerUser(config.security().webPages()); // issue 33 item 2
-        page.withFormUploads((user, parked) -> files.storeWhole(user, parked,
-                permits().user(user).map(u -> permits().quota(u)).orElse(0L)));
-        if (publicNames != null) {
-            page.withPublicView(new PublicVehicles(this, publicNames));
+        page.withFormUploads((user, parked) -> {
+            PermitFile p = permits.current();
+            return files.storeWhole(user, parked, p.user(user).map(p::quota).orElse(0L));
+        });
+        if (publicVehicles != null) {
+            page.withPublicView(publicVehicles);
         }
         try {
             page.start();
@@ -348,10 +393,10 @@ public final class RIPVServer implements AutoCloseable {
      * no paths, and no service descriptions (a database's names its JDBC URL).
      */
     private String describe() {
-        StringBuilder b = new StringBuilder("RIPVServer on " + org.ripv.naming.Handles.localHost() + "\n");
+        StringBuilder b = new StringBuilder("RIPVServer on " + Handles.localHost() + "\n");
         b.append("Clients connect to port ").append(port()).append(tls.label())
                 .append(tls.fingerprint() == null ? "" : "; certificate " + tls.fingerprint()).append('\n');
-        List<ServiceReference> list = services();
+        List<ServiceReference> list = services.all();
         b.append(list.size()).append(" service(s) registered");
         list.forEach(r -> b.append("\n  ").append(r.descriptor().name()));
         return b.toString();
@@ -368,152 +413,56 @@ public final class RIPVServer implements AutoCloseable {
         }
     }
 
-    // ---- used by the TaskManager and commands (package-private) ----
-
-    ServerConfig config() {
-        return config;
-    }
-
-    PermitFile permits() {
-        return permits.current();
-    }
-
-    FileStore files() {
-        return files;
-    }
-
-    ExecutorService checkers() {
-        return checkers;
-    }
-
-    /** Where uploads, downloads and listings run, so that disk work never holds up the Post Office. */
-    ExecutorService fileWork() {
-        return fileWork;
-    }
-
-    Map<String, OperatorLock> locks() {
-        return locks;
-    }
-
-    ServerState state() {
-        return state;
-    }
-
-    ServerSessions sessions() {
-        return sessions;
-    }
-
     /** The live console: watchers, vehicle state, transcripts (tests and benchmarks look inside). */
     public ConsoleHub console() {
         return sessions.console();
     }
 
-    /** Forgets a client whose connection closed (only that handler: an id may be reused). */
-    void forgetClient(SocketHandler client) {
+    // ---- events that concern several parts: the lobby tells each ----
+
+    /** A client's connection closed: it is forgotten everywhere it left state (only that handler: an id may be reused). */
+    private void clientClosed(SocketHandler client) {
         ClientAcceptor a = acceptor;
         if (a != null) {
             a.forget(client);
         }
+        String id = client.clientId();
+        waiting.forget(id);
+        security.gate().closed(id);
+        pending.forgetClient(id);
+        files.abortAll(id);
+        if (sessions.clientClosed(id, locks)) {
+            workflows.lockReleased(null);
+        }
     }
 
-    Optional<SocketHandler> client(String clientId) {
+    private Optional<SocketHandler> client(String clientId) {
         ClientAcceptor a = acceptor;
         return a == null ? Optional.empty() : a.client(clientId);
     }
 
-    ServiceLiveness liveness() {
-        return serviceLiveness;
-    }
-
-    Map<String, ServiceReference> serviceMap() {
-        return services;
-    }
-
-    org.ripv.server.plans.Plans plans() {
-        return plans;
-    }
-
-    org.ripv.server.workflow.Workflows workflows() {
-        return workflows;
-    }
-
-    RequestCancels cancels() {
-        return cancels;
-    }
-
-    /** Puts a server-made request (a workflow step) into the Post Office like a client's; false when it is full. */
-    boolean deliver(IncomingServerMessage request) {
+    /** Puts a request into the Post Office (a client's, or a workflow step's); false when it is full. */
+    private boolean deliver(IncomingServerMessage request) {
         return box.deliver(request);
     }
 
-    /**
-     * SEAM for the live console (issue 11): a console entry the server itself originates — a
-     * workflow's progress line, WORKFLOW_DONE / WORKFLOW_FAILED — for watchers, the transcript and
-     * notifications. Until the fan-out is merged it is only logged.
-     */
-    void publishServerEntry(org.ripv.messages.ConsoleEntry entry) {
-        sessions.console().serverEntry(entry);
-        if (plans != null) {
-            plans.onConsole(List.of(entry));
-        }
-    }
-
-    String secret() {
-        return secret;
-    }
-
-    ServerSecurity security() {
-        return security;
-    }
-
-    /** Automatic ingest and plots from data (org.ripv.server.dataloop). */
-    org.ripv.server.dataloop.DataLoop dataLoop() {
-        return dataLoop;
-    }
-
-    /** Each client's requests waiting for their final reply, capped (issue 33 item 10). */
-    org.ripv.server.clients.WaitingRequests waiting() {
-        return waiting;
-    }
-
-    PendingRequests pending() {
-        return pending;
-    }
-
-    Optional<ServiceReference> service(String fullName) {
-        return Optional.ofNullable(services.get(fullName));
-    }
-
-    List<ServiceReference> services() {
-        return services.values().stream().sorted(java.util.Comparator.comparing(r -> r.descriptor().name())).toList();
-    }
-
     /** Posts a reply for the outbox assistant to deliver. */
-    void reply(OutgoingServerMessage reply) {
-        if (internalCalls.accept(reply)) {
+    private void reply(OutgoingServerMessage reply) {
+        InternalCalls own = internalCalls;
+        if (own != null && own.accept(reply)) {
             return; // the server's own request (org.ripv.server.dataloop)
         }
         box.post(reply);
     }
 
-    /** Forwards a checked request to its service; the request is now pending. */
-    void forward(ServiceReference ref, IncomingServiceMessage request) {
-        if (!pending.add(request.header(), ref.descriptor().name())) {
-            reply(new IncomingServerMessage(request.header()).reply(Footer.error(ref.descriptor().sid(),
-                    ErrorCode.BAD_REQUEST, "message id " + request.header().messageId() + " is already in use by a pending request")));
-            return;
-        }
-        ref.forward(request);
-    }
-
     /** A request that could not be handed to its service: fail it, and check whether the service lives. */
-    void undeliverable(ServiceReference ref, IncomingServiceMessage r, Exception e) {
+    private void undeliverable(ServiceReference ref, IncomingServiceMessage r, Exception e) {
         endings.undeliverable(ref, r, e);
         serviceLiveness.soon(ref);
     }
 
     private void timedOut(PendingRequests.Pending p) {
-        endings.timedOut(p, services.get(p.service()));
+        endings.timedOut(p, services.find(p.service()).orElse(null));
     }
 
     private void checkServices() {
@@ -522,21 +471,44 @@ public final class RIPVServer implements AutoCloseable {
         permits.reloadIfChanged();
     }
 
-    void drop(ServiceReference ref, String why) {
+    /** A service went away or registered again: its calls end, then its requests. */
+    private void drop(ServiceReference ref, String why) {
         // The calls end first, so a workflow step under way is cut (it resumes on the next call)
         // rather than failed by the request ending below.
         String name = ref.descriptor().name();
-        List<org.ripv.messages.ConsoleEntry> gone = sessions.console().serviceGone(name, why);
+        List<ConsoleEntry> gone = sessions.console().serviceGone(name, why);
         workflows.onConsole(name, gone);
         plans.onConsole(gone);
         endings.drop(ref, why);
     }
 
     /**
+     * A service that just registered listed its MailBoxes: a new instance cannot carry on a call
+     * from before it started, so those calls end; the queued workflows of calls still open run now;
+     * download folders from before they were per address move to each MailBox's own.
+     */
+    private void serviceOnline(String name, long started, List<String> boxes) {
+        workflows.onConsole(name, sessions.console().serviceStarted(name, started, boxes));
+        workflows.serviceOnline(boxes);
+        files.adoptAll(boxes);
+    }
+
+    /**
+     * A console entry the server itself originates (a workflow's progress line and end, a cancel,
+     * a plan change): for watchers, the transcript and notifications, and for the plans that follow changes.
+     */
+    private void publishServerEntry(ConsoleEntry entry) {
+        sessions.console().serverEntry(entry);
+        if (plans != null) {
+            plans.onConsole(List.of(entry));
+        }
+    }
+
+    /**
      * Console entries a service published for its MailBoxes (the live console). Only entries for
      * the calling service's own MailBoxes are taken.
      */
-    void console(ServiceReference ref, List<org.ripv.messages.ConsoleEntry> entries) {
+    private void console(ServiceReference ref, List<ConsoleEntry> entries) {
         sessions.console().publish(ref.descriptor().name(), entries);
         workflows.onConsole(ref.descriptor().name(), entries);
         plans.onConsole(entries);
@@ -544,14 +516,6 @@ public final class RIPVServer implements AutoCloseable {
         // next one (restarted, or a standby), so a server that dies now loses no transcript line.
         sessions.console().sync();
     }
-
-    /** Current MailBox status with the operator lock and the vehicle's call state added. */
-    MailboxStatus withLock(MailboxStatus s) {
-        OperatorLock l = locks.get(s.address());
-        MailboxStatus withState = s.withSession(sessions.console().state(s.address()));
-        return l == null || l.expired() ? withState : withState.withLock(l.user());
-    }
-
 
     /** The client port (useful with port 0). */
     public int port() {

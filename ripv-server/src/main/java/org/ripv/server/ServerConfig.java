@@ -3,6 +3,9 @@ package org.ripv.server;
 import java.nio.file.Path;
 import java.time.Duration;
 import javax.net.ssl.SSLContext;
+import org.ripv.server.security.SecuritySettings;
+import org.ripv.server.store.StoreLocation;
+import org.ripv.wire.FrameCodec;
 
 /**
  * Everything a {@link RIPVServer} is started with. Port 0 picks a free port (tests); an HTTP
@@ -28,8 +31,8 @@ import javax.net.ssl.SSLContext;
 public record ServerConfig(String bindAddress, int port, int registryPort, int httpPort, Path dataDir, Path permitFile,
                            Duration requestTimeout, Duration serviceCheck, long maxUpload, int maxFrame, int maxClients,
                            SSLContext tls, Path clientJar,
-                           org.ripv.server.security.SecuritySettings security,
-                           org.ripv.server.store.StoreLocation stateStore) {
+                           SecuritySettings security,
+                           StoreLocation stateStore) {
 
     public static final int DEFAULT_PORT = 4444;
     public static final int DEFAULT_REGISTRY_PORT = 1099;
@@ -40,10 +43,10 @@ public record ServerConfig(String bindAddress, int port, int registryPort, int h
             permitFile = dataDir.resolve("permit.txt");
         }
         if (security == null) {
-            security = org.ripv.server.security.SecuritySettings.defaults();
+            security = SecuritySettings.defaults();
         }
         if (stateStore == null) {
-            stateStore = org.ripv.server.store.StoreLocation.embedded();
+            stateStore = StoreLocation.embedded();
         }
     }
 
@@ -51,7 +54,7 @@ public record ServerConfig(String bindAddress, int port, int registryPort, int h
     public static ServerConfig defaults(Path dataDir) {
         return new ServerConfig(null, DEFAULT_PORT, DEFAULT_REGISTRY_PORT, DEFAULT_HTTP_PORT, dataDir, null,
                 Duration.ofSeconds(60), Duration.ofSeconds(3), 256L * 1024 * 1024,
-                org.ripv.wire.FrameCodec.DEFAULT_MAX_FRAME, 1000, null, null, null, null);
+                FrameCodec.DEFAULT_MAX_FRAME, 1000, null, null, null, null);
     }
 
     /** Defaults for tests: free ports, no landing page, short checks. */
@@ -99,7 +102,7 @@ public record ServerConfig(String bindAddress, int port, int registryPort, int h
                 serviceCheck, maxUpload, maxFrame, maxClients, tls, clientJar, security, stateStore);
     }
 
-    public ServerConfig withSecurity(org.ripv.server.security.SecuritySettings s) {
+    public ServerConfig withSecurity(SecuritySettings s) {
         return new ServerConfig(bindAddress, port, registryPort, httpPort, dataDir, permitFile, requestTimeout,
                 serviceCheck, maxUpload, maxFrame, maxClients, tls, clientJar, s, stateStore);
     }
@@ -110,7 +113,7 @@ public record ServerConfig(String bindAddress, int port, int registryPort, int h
     }
 
     /** Where the server keeps its state: embedded (the default) or a PostgreSQL database ({@code --state-db}). */
-    public ServerConfig withStateStore(org.ripv.server.store.StoreLocation where) {
+    public ServerConfig withStateStore(StoreLocation where) {
         return new ServerConfig(bindAddress, port, registryPort, httpPort, dataDir, permitFile, requestTimeout,
                 serviceCheck, maxUpload, maxFrame, maxClients, tls, clientJar, security, where);
     }

@@ -13,9 +13,22 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
+import java.util.function.Consumer;
 import javax.net.ssl.SSLContext;
+import org.ripv.naming.Handles;
+import org.ripv.rmi.DeadlineSocketFactory;
+import org.ripv.rmi.RmiSupport;
+import org.ripv.server.lock.DataDirLock;
+import org.ripv.server.notify.Smtp;
+import org.ripv.server.notify.WebhookTargets;
 import org.ripv.server.permit.Passwords;
 import org.ripv.server.permit.PermitFile;
+import org.ripv.server.security.SelfSignedTls;
+import org.ripv.server.standby.StandbyLoop;
+import org.ripv.server.standby.StandbyOptions;
+import org.ripv.server.store.StateStoreOptions;
+import org.ripv.server.web.PublicVehicles;
+import org.ripv.server.web.WebConsole;
 import org.ripv.service.ServiceOptions;
 import org.ripv.launch.Launchers;
 import picocli.CommandLine;
@@ -109,9 +122,9 @@ public final class ServerMain implements Callable<Integer> {
         @Option(names = "--transcript-file-mb", defaultValue = "64", description = "A transcript file is continued in a new one past this size (default ${DEFAULT-VALUE} MB).")
         long transcriptFileMb;
         @CommandLine.Mixin
-        org.ripv.server.store.StateStoreOptions stateStore = new org.ripv.server.store.StateStoreOptions();
+        StateStoreOptions stateStore = new StateStoreOptions();
         @CommandLine.Mixin
-        org.ripv.server.standby.StandbyOptions standby = new org.ripv.server.standby.StandbyOptions();
+        StandbyOptions standby = new StandbyOptions();
         private volatile int openedOutbound = -1;
 
         @Override
@@ -129,8 +142,8 @@ public final class ServerMain implements Callable<Integer> {
                 throw new CommandLine.ParameterException(new CommandLine(this),
                         "--max-clients must be at least 1, got " + maxClients);
             }
-            System.setProperty(org.ripv.rmi.DeadlineSocketFactory.CONNECT_PROPERTY, Integer.toString(rmiConnectTimeout));
-            System.setProperty(org.ripv.rmi.DeadlineSocketFactory.READ_PROPERTY, Integer.toString(rmiReadTimeout));
+            System.setProperty(DeadlineSocketFactory.CONNECT_PROPERTY, Integer.toString(rmiConnectTimeout));
+            System.setProperty(DeadlineSocketFactory.READ_PROPERTY, Integer.toString(rmiReadTimeout));
             Path dataDir = data != null ? data : ServiceOptions.defaultDataDir();
             ServerConfig config = ServerConfig.defaults(dataDir)
                     .withPorts(port, registryPort, httpPort == 0 ? -1 : httpPort)
@@ -150,21 +163,21 @@ public final class ServerMain implements Callable<Integer> {
                 throw new CommandLine.ParameterException(new CommandLine(new Serve()), "--plain and --tls-keystore exclude each other");
             }
             if (tlsKeystore != null) {
-                org.ripv.server.security.SelfSignedTls.Identity id = identity(tlsKeystore, tlsPasswordFile);
+                SelfSignedTls.Identity id = identity(tlsKeystore, tlsPasswordFile);
                 config = config.withTls(id.context());
                 fingerprint = id.fingerprint();
             }
             SessionOptions sessions;
             try {
-                org.ripv.server.web.WebConsole.checkMapTiles(mapTiles);
+                WebConsole.checkMapTiles(mapTiles);
                 if (publicNames != null) {
                     PublicVehicles.glob(publicNames); // refuses a bad glob with its message
                 }
                 config = config.withStateStore(stateStore.location(System.err));
                 sessions = SessionOptions.defaults().withTranscripts(transcriptFileMb * 1024 * 1024, transcriptDays)
-                        .withWebhooks(org.ripv.server.notify.WebhookTargets.parse(webhookAllow));
+                        .withWebhooks(WebhookTargets.parse(webhookAllow));
                 if (smtp != null) {
-                    sessions = sessions.withSmtp(org.ripv.server.notify.Smtp.parse(smtp, smtpCredentials));
+                    sessions = sessions.withSmtp(Smtp.parse(smtp, smtpCredentials));
                 } else if (smtpCredentials != null) {
                     throw new IllegalArgumentException("--smtp-credentials needs --smtp HOST:PORT");
                 }
@@ -173,23 +186,23 @@ public final class ServerMain implements Callable<Integer> {
                 return 2;
             }
             // Held until this JVM ends (the OS lets go of it however the process ends).
-            org.ripv.server.lock.DataDirLock dirLock;
+            DataDirLock dirLock;
             try {
-                dirLock = org.ripv.server.lock.DataDirLock.acquire(dataDir);
-            } catch (org.ripv.server.lock.DataDirLock.HeldException e) {
+                dirLock = DataDirLock.acquire(dataDir);
+            } catch (DataDirLock.HeldException e) {
                 System.err.println("Error: " + e.getMessage());
                 return 1;
             }
-            org.ripv.rmi.RmiSupport.filterProcess();
+            RmiSupport.filterProcess();
             ServerConfig cfg = config;
             SessionOptions opts = sessions;
             String tlsFingerprint = fingerprint;
-            org.ripv.server.standby.StandbyLoop.Opener<RIPVServer> open = () -> open(cfg, opts);
-            java.util.function.Consumer<RIPVServer> ready = s -> ready(s, cfg, tlsFingerprint);
+            StandbyLoop.Opener<RIPVServer> open = () -> open(cfg, opts);
+            Consumer<RIPVServer> ready = s -> ready(s, cfg, tlsFingerprint);
             if (!config.stateStore().isEmbedded()) {
                 // A hot standby: serve only while holding the lead in the state database.
-                String me = (bind != null ? bind : rmiHostname != null ? rmiHostname : org.ripv.naming.Handles.localHost()) + ":" + port;
-                var loop = new org.ripv.server.standby.StandbyLoop<>(standby.leads(config.stateStore(), me), open, ready);
+                String me = (bind != null ? bind : rmiHostname != null ? rmiHostname : Handles.localHost()) + ":" + port;
+                var loop = new StandbyLoop<>(standby.leads(config.stateStore(), me), open, ready);
                 Runtime.getRuntime().addShutdownHook(new Thread(loop::stop, "ripv-server-shutdown"));
                 System.err.println("RIPVServer on " + me + ": taking the lead in " + config.stateStore()
                         + " (standing by while another server holds it)");
@@ -208,7 +221,7 @@ public final class ServerMain implements Callable<Integer> {
             return 0;
         }
 
-        private static void closeQuietly(org.ripv.server.lock.DataDirLock lock) {
+        private static void closeQuietly(DataDirLock lock) {
             try {
                 lock.close();
             } catch (IOException e) {
@@ -217,14 +230,14 @@ public final class ServerMain implements Callable<Integer> {
         }
 
         /** Starts a server and its outbound port (a busy one only warns). */
-        private RIPVServer open(ServerConfig config, SessionOptions sessions) throws java.io.IOException {
+        private RIPVServer open(ServerConfig config, SessionOptions sessions) throws IOException {
             RIPVServer server = new RIPVServer(config, sessions).withMapTiles(mapTiles).withPublicView(publicNames);
             server.start();
             openedOutbound = -1;
             if (outboundPort >= 0) {
                 try {
                     openedOutbound = server.openOutbound(outboundPort);
-                } catch (java.io.IOException e) {
+                } catch (IOException e) {
                     System.err.println("Warning: " + e.getMessage() + "; services in --outbound-only mode cannot connect");
                 }
             }
@@ -272,12 +285,12 @@ public final class ServerMain implements Callable<Integer> {
         }
 
         /** A TLS identity from a PKCS12 key store and a file holding its password. */
-        static org.ripv.server.security.SelfSignedTls.Identity identity(Path keystore, Path passwordFile) throws Exception {
+        static SelfSignedTls.Identity identity(Path keystore, Path passwordFile) throws Exception {
             if (passwordFile == null) {
                 throw new CommandLine.ParameterException(new CommandLine(new Serve()), "--tls-keystore needs --tls-password-file");
             }
             char[] pw = Files.readString(passwordFile, StandardCharsets.UTF_8).trim().toCharArray();
-            return org.ripv.server.security.SelfSignedTls.load(keystore, pw);
+            return SelfSignedTls.load(keystore, pw);
         }
     }
 
@@ -304,7 +317,7 @@ public final class ServerMain implements Callable<Integer> {
                 err.println("Error: a password needs at least 8 characters");
                 return 1;
             }
-            boolean existed = java.nio.file.Files.exists(permit) && PermitFile.load(permit).user(user).isPresent();
+            boolean existed = Files.exists(permit) && PermitFile.load(permit).user(user).isPresent();
             PermitFile.setUser(permit, user, password, roles, iterations);
             if (!existed && (roles == null || roles.isEmpty())) {
                 err.println("Warning: '" + user + "' has no roles; only rules that name the user will allow anything"
@@ -351,7 +364,7 @@ public final class ServerMain implements Callable<Integer> {
 
     public static void main(String[] args) {
         // Before anything makes an object stream: the JVM takes a filter factory only until then.
-        org.ripv.rmi.RmiSupport.filterProcess();
+        RmiSupport.filterProcess();
         System.exit(run(args));
     }
 }

@@ -18,10 +18,12 @@ import org.ripv.client.handlers.ClientSocketHandler;
 import org.ripv.json.JsonWriter;
 import org.ripv.messages.ConsoleBatch;
 import org.ripv.messages.ConsoleEntry;
+import org.ripv.messages.ConsoleLines;
 import org.ripv.messages.Ids;
 import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.Priority;
 import org.ripv.messages.Status;
+import org.ripv.retry.Backoff;
 
 /**
  * {@code ripv cli ... --follow MAILBOX}: watches a MailBox and prints its console — the recent
@@ -139,8 +141,9 @@ public final class ConsoleFollower implements ClientSocketHandler.Listener {
 
     /** Tries again and again, waiting longer each time (up to {@link #MAX_BACKOFF}); null when stopped. */
     private ClientSocketHandler reconnect() {
-        long wait = 500;
+        Backoff backoff = new Backoff(Duration.ofMillis(500), MAX_BACKOFF);
         while (stopped.getCount() > 0) {
+            long wait = backoff.nextMillis();
             try {
                 return reconnect.connect();
             } catch (InterruptedException e) {
@@ -157,7 +160,6 @@ public final class ConsoleFollower implements ClientSocketHandler.Listener {
                 Thread.currentThread().interrupt();
                 return null;
             }
-            wait = Math.min(wait * 2, MAX_BACKOFF.toMillis());
         }
         return null;
     }
@@ -236,14 +238,6 @@ public final class ConsoleFollower implements ClientSocketHandler.Listener {
     }
 
     static String toText(ConsoleEntry e) {
-        String t = Instant.ofEpochMilli(e.time()).toString();
-        return switch (e.kind()) {
-            case LINE -> t + "  " + e.text();
-            case COMMAND -> t + "  " + (e.user().isEmpty() ? "" : "[" + e.user() + "] ") + "> " + e.text();
-            case TRANSFER -> t + "  ~ " + e.text();
-            case EVENT -> t + "  * " + e.event() + (e.user().isEmpty() ? "" : " by " + e.user())
-                    + (e.text().isEmpty() ? "" : " " + e.text())
-                    + (e.lat() != null && e.lon() != null ? String.format(Locale.ROOT, " (%.5f, %.5f)", e.lat(), e.lon()) : "");
-        };
+        return ConsoleLines.withInstant(e);
     }
 }

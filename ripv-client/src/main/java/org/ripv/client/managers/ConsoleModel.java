@@ -5,11 +5,11 @@ import java.time.Instant;
 import java.util.ArrayDeque;
 import java.util.HashMap;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.CopyOnWriteArrayList;
 import org.ripv.messages.ConsoleBatch;
 import org.ripv.messages.ConsoleEntry;
+import org.ripv.messages.ConsoleLines;
 import org.ripv.messages.SessionState;
 import org.ripv.messages.VehicleEvent;
 
@@ -98,16 +98,7 @@ public final class ConsoleModel {
 
     /** One entry as the console shows it. */
     public static String text(ConsoleEntry e) {
-        String t = java.time.format.DateTimeFormatter.ofPattern("HH:mm:ss", Locale.ROOT)
-                .withZone(java.time.ZoneOffset.UTC).format(Instant.ofEpochMilli(e.time()));
-        return switch (e.kind()) {
-            case LINE -> t + "  " + e.text();
-            case COMMAND -> t + "  " + (e.user().isEmpty() ? "" : "[" + e.user() + "] ") + "> " + e.text();
-            case TRANSFER -> t + "  ~ " + e.text();
-            case EVENT -> t + "  * " + e.event() + (e.user().isEmpty() ? "" : " by " + e.user())
-                    + (e.text().isEmpty() ? "" : " " + e.text())
-                    + (e.lat() != null && e.lon() != null ? String.format(Locale.ROOT, " (%.5f, %.5f)", e.lat(), e.lon()) : "");
-        };
+        return ConsoleLines.withClock(e);
     }
 
     /** A state badge for people: {@code ● on call · last contact 12 min ago}; empty when unknown. */

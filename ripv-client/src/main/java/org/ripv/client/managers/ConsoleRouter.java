@@ -170,8 +170,7 @@ final class ConsoleRouter {
     /** A live workflow outcome goes to the status bar; an event worth a pilot's attention to the desktop. */
     private void announce(ConsoleEntry e) {
         String vehicle = e.mailbox().substring(e.mailbox().lastIndexOf('>') + 1);
-        if (e.kind() == ConsoleEntry.Kind.EVENT && (e.event() == VehicleEvent.WORKFLOW_DONE
-                || e.event() == VehicleEvent.WORKFLOW_DONE_WITH_ERRORS || e.event() == VehicleEvent.WORKFLOW_FAILED)) {
+        if (e.kind() == ConsoleEntry.Kind.EVENT && e.event().endsWorkflow()) {
             model.notice(vehicle + " " + e.event() + (e.text().isEmpty() ? "" : ": " + e.text()),
                     e.event() != VehicleEvent.WORKFLOW_DONE);
         }

@@ -5,9 +5,10 @@ import org.ripv.messages.SessionState;
 
 /**
  * Brings a vehicle's call state ({@code ?mailboxes}, {@code ?status}) up to date with the console
- * entries pushed since, the way the server derives it (docs/sessions.md "State"): SURFACED → on
- * call (one more call), DIVED → dived, LINK_LOST → lost; every entry from the vehicle (not
- * commands, locks, workflows or LINK_LOST) is a contact. So badges change the moment an event
+ * entries pushed since, the way the server derives it (docs/sessions.md "State"), by the rules
+ * both share ({@link org.ripv.messages.VehicleEvent#callState}, {@link ConsoleEntry#isContact}):
+ * SURFACED → on call (one more call), DIVED → dived, LINK_LOST → lost; every entry from the
+ * vehicle (not commands, locks, workflows or LINK_LOST) is a contact. So badges change the moment an event
  * arrives, not at the next refresh.
  *
  * <p>What is news is decided by the console's order, not by the clock: the server numbers every
@@ -31,21 +32,13 @@ public final class SessionStates {
         SessionState.State st = s == null ? SessionState.State.UNKNOWN : s.state();
         long contact = s == null ? 0 : s.lastContact();
         int calls = s == null ? 0 : s.calls();
-        boolean fromVehicle = e.kind() != ConsoleEntry.Kind.COMMAND;
+        boolean fromVehicle = e.isContact();
         if (e.kind() == ConsoleEntry.Kind.EVENT) {
-            switch (e.event()) {
-                case SURFACED -> {
-                    st = SessionState.State.ON_CALL;
-                    calls++;
-                }
-                case DIVED -> st = SessionState.State.DIVED;
-                case LINK_LOST -> {
-                    st = SessionState.State.LOST;
-                    fromVehicle = false;
-                }
-                case LOCK_TAKEN, LOCK_RELEASED, WORKFLOW_DONE, WORKFLOW_FAILED, WORKFLOW_DONE_WITH_ERRORS, INGEST_WAITING,
-                        INGEST_RELEASED, PLAN_CHANGE, INGEST_REFUSED, INGEST_REPEATED -> fromVehicle = false;
-                default -> { }
+            if (e.event().callState() != null) {
+                st = e.event().callState();
+            }
+            if (e.event().startsCall()) {
+                calls++;
             }
         }
         if (!fromVehicle && st == (s == null ? SessionState.State.UNKNOWN : s.state())) {

@@ -33,7 +33,6 @@ import org.ripv.client.managers.ConsoleModel;
 import org.ripv.client.managers.GuiManager;
 import org.ripv.client.managers.WorkflowModel;
 import org.ripv.messages.ConsoleEntry;
-import org.ripv.messages.VehicleEvent;
 
 /**
  * One vehicle MailBox's workflow queue and receipts (docs/workflows.md), opened from the MAM
@@ -398,8 +397,7 @@ public final class WorkflowDialog extends JDialog {
     /** A workflow's progress line ("workflow 1 'x.wf': step 2/4 …") or a WORKFLOW_DONE / _DONE_WITH_ERRORS / _FAILED event. */
     static boolean isWorkflow(ConsoleEntry e) {
         return e.kind() == ConsoleEntry.Kind.EVENT
-                ? e.event() == VehicleEvent.WORKFLOW_DONE || e.event() == VehicleEvent.WORKFLOW_FAILED
-                        || e.event() == VehicleEvent.WORKFLOW_DONE_WITH_ERRORS
+                ? e.event().endsWorkflow()
                 : e.kind() == ConsoleEntry.Kind.COMMAND && e.text().startsWith("workflow ");
     }
 

@@ -1,10 +1,12 @@
 package org.ripv.server.clients;
 
+import java.io.Closeable;
 import java.io.IOException;
 import java.nio.channels.ClosedChannelException;
 import java.nio.channels.ServerSocketChannel;
 import java.nio.channels.SocketChannel;
 import java.util.Collection;
+import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.ConcurrentHashMap;
@@ -140,7 +142,7 @@ public final class ClientAcceptor {
      * its own, given an id, admitted by the gate like any connection (the browser's address),
      * marked logged in as the user the web log-in checked — from here on a client like any other.
      */
-    SocketHandler adopt(SocketHandler.Peer page, String user, java.util.List<String> roles) throws IOException {
+    SocketHandler adopt(SocketHandler.Peer page, String user, List<String> roles) throws IOException {
         String id = newClientId();
         SocketHandler h = SocketHandler.inProcess(id, page, dispatch);
         if (!running || !gate.admit(id, page.address(), h::close)) {
@@ -181,7 +183,7 @@ public final class ClientAcceptor {
         loops.close();
     }
 
-    private static void closeQuietly(java.io.Closeable c) {
+    private static void closeQuietly(Closeable c) {
         try {
             c.close();
         } catch (IOException ignored) {

@@ -7,7 +7,7 @@ import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
 import org.ripv.messages.VehicleEvent;
-import org.ripv.server.RIPVServer;
+import org.ripv.server.lock.OperatorLock;
 import org.ripv.server.session.ConsoleHub;
 
 /**
@@ -17,15 +17,15 @@ import org.ripv.server.session.ConsoleHub;
  */
 public final class LockExpiries {
     private final ScheduledExecutorService timers;
-    private final Map<String, RIPVServer.OperatorLock> locks;
+    private final Map<String, OperatorLock> locks;
     private final ConsoleHub console;
     private final Consumer<String> released;
     private final Map<String, Timer> pending = new ConcurrentHashMap<>();
 
-    private record Timer(RIPVServer.OperatorLock lock, ScheduledFuture<?> future) {}
+    private record Timer(OperatorLock lock, ScheduledFuture<?> future) {}
 
     /** @param released told the MailBox whose lock ran out (paused workflows look again) */
-    LockExpiries(ScheduledExecutorService timers, Map<String, RIPVServer.OperatorLock> locks, ConsoleHub console,
+    LockExpiries(ScheduledExecutorService timers, Map<String, OperatorLock> locks, ConsoleHub console,
                  Consumer<String> released) {
         this.timers = timers;
         this.locks = locks;
@@ -34,7 +34,7 @@ public final class LockExpiries {
     }
 
     /** An operator took (or renewed) the lock on a MailBox: it is released at its end unless it changes first. */
-    void taken(String mailbox, RIPVServer.OperatorLock lock) {
+    void taken(String mailbox, OperatorLock lock) {
         long delay = Math.max(0, lock.untilMillis() - System.currentTimeMillis()) + 1;
         ScheduledFuture<?> f = timers.schedule(() -> expire(mailbox, lock), delay, TimeUnit.MILLISECONDS);
         Timer old = pending.put(mailbox, new Timer(lock, f));
@@ -43,7 +43,7 @@ public final class LockExpiries {
         }
     }
 
-    private void expire(String mailbox, RIPVServer.OperatorLock lock) {
+    private void expire(String mailbox, OperatorLock lock) {
         pending.computeIfPresent(mailbox, (k, t) -> t.lock() == lock ? null : t);
         // Only this very lock: one unlocked, renewed or taken over since is no longer ours to end.
         if (locks.remove(mailbox, lock)) {

@@ -4,19 +4,25 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.Map;
 import java.util.Optional;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.function.Consumer;
 import java.util.function.Function;
 import java.util.function.Supplier;
 import org.ripv.messages.OutgoingServerMessage;
+import org.ripv.messages.Status;
 import org.ripv.messages.VehicleEvent;
-import org.ripv.server.RIPVServer;
 import org.ripv.server.SessionOptions;
 import org.ripv.server.handlers.SocketHandler;
+import org.ripv.server.lock.OperatorLock;
 import org.ripv.server.notify.Notifier;
 import org.ripv.server.notify.NotifyCommands;
 import org.ripv.server.permit.PermitFile;
+import org.ripv.server.requests.ServerReplies;
 import org.ripv.server.session.ConsoleCommands;
 import org.ripv.server.session.ConsoleHub;
 import org.ripv.server.session.Outlet;
+import org.ripv.server.session.Rights;
+import org.ripv.server.store.StateStore;
 import org.ripv.wire.FrameCodec;
 
 /**
@@ -34,7 +40,7 @@ public final class ServerSessions implements AutoCloseable {
     private final org.ripv.server.surfacing.SurfacingCommands surfacingCommands;
     private LockExpiries lockExpiries;
 
-    public ServerSessions(Path dataDir, org.ripv.server.store.StateStore store, SessionOptions options, Supplier<PermitFile> permits,
+    public ServerSessions(Path dataDir, StateStore store, SessionOptions options, Supplier<PermitFile> permits,
                    Function<String, Optional<SocketHandler>> clients, FrameCodec codec) throws IOException {
         // A MailBox's transcript keeps at most four files' worth a day (256 MiB by default).
         console = new ConsoleHub(dataDir.resolve("transcripts"), store, options.keepDays(),
@@ -43,12 +49,12 @@ public final class ServerSessions implements AutoCloseable {
                 options.notifyBackoff(), options.notifyTimeout(), options.webhooks());
         console.onEvent(notifier::accept);
         consoleCommands = new ConsoleCommands(console, permits, id -> clients.apply(id).map(this::outlet),
-                RIPVServer.SERVER_SERVICE);
-        notifyCommands = new NotifyCommands(notifier, RIPVServer.SERVER_SERVICE);
+                ServerReplies.SERVICE);
+        notifyCommands = new NotifyCommands(notifier, ServerReplies.SERVICE);
         // Every surface dialog becomes a call record, alerts and overdue calls (docs/surfacings.md).
         surfacings = new org.ripv.server.surfacing.Surfacings(store, dataDir.resolve("surfacing-alerts.conf"), console::serverEntry);
         console.onTaken(surfacings::accept);
-        surfacingCommands = new org.ripv.server.surfacing.SurfacingCommands(surfacings, permits, RIPVServer.SERVER_SERVICE);
+        surfacingCommands = new org.ripv.server.surfacing.SurfacingCommands(surfacings, permits, ServerReplies.SERVICE);
     }
 
     /** Counts the replies a watch sends itself (they do not pass the Post Office's outbox) as final (issue 33 item 10). */
@@ -68,7 +74,7 @@ public final class ServerSessions implements AutoCloseable {
             @Override
             public void send(OutgoingServerMessage reply) {
                 WaitingRequests w = waiting;
-                if (w != null && reply.footer().status() != org.ripv.messages.Status.PROGRESS) {
+                if (w != null && reply.footer().status() != Status.PROGRESS) {
                     w.done(h.clientId(), reply.header());
                 }
                 h.send(reply);
@@ -82,13 +88,13 @@ public final class ServerSessions implements AutoCloseable {
     }
 
     /** Operator locks that run out are released with an event ({@link LockExpiries}). */
-    public void expireLocks(java.util.concurrent.ScheduledExecutorService timers, Map<String, RIPVServer.OperatorLock> locks,
-                     java.util.function.Consumer<String> released) {
+    public void expireLocks(ScheduledExecutorService timers, Map<String, OperatorLock> locks,
+                     Consumer<String> released) {
         lockExpiries = new LockExpiries(timers, locks, console, released);
     }
 
     /** An operator took or renewed the lock on a MailBox ({@code ?lock}). */
-    public void lockTaken(String mailbox, RIPVServer.OperatorLock lock) {
+    public void lockTaken(String mailbox, OperatorLock lock) {
         if (lockExpiries != null) {
             lockExpiries.taken(mailbox, lock);
         }
@@ -100,7 +106,7 @@ public final class ServerSessions implements AutoCloseable {
      */
     public void permitsChanged(PermitFile rules) {
         console.recheck((user, mailbox) -> {
-            String why = org.ripv.server.session.Rights.whyNotRead(rules, user, mailbox);
+            String why = Rights.whyNotRead(rules, user, mailbox);
             return why == null ? null : why + "; the permit file changed";
         });
     }
@@ -127,7 +133,7 @@ public final class ServerSessions implements AutoCloseable {
 
     /** A client left: its watches go, and its locks are released (an event each). */
     /** @return true when the client held operator locks (now released) */
-    public boolean clientClosed(String clientId, Map<String, RIPVServer.OperatorLock> locks) {
+    public boolean clientClosed(String clientId, Map<String, OperatorLock> locks) {
         console.clientClosed(clientId);
         return locks.entrySet().removeIf(e -> {
             boolean mine = e.getValue().clientId().equals(clientId);

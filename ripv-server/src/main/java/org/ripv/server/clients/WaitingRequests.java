@@ -1,5 +1,6 @@
 package org.ripv.server.clients;
 
+import java.util.HashMap;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import org.ripv.messages.Header;
@@ -20,7 +21,7 @@ public final class WaitingRequests {
 
     /** One client's waiting requests by message id (a client may reuse an id: each use counts). */
     private static final class Waiting {
-        final Map<Long, Integer> byId = new java.util.HashMap<>();
+        final Map<Long, Integer> byId = new HashMap<>();
         int all;
         int raised;
     }

@@ -1,6 +1,5 @@
 package org.ripv.server.dataloop;
 
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -16,6 +15,7 @@ import org.ripv.messages.Result;
 import org.ripv.messages.Status;
 import org.ripv.naming.MailboxAddress;
 import org.ripv.naming.Handles;
+import org.ripv.slocum.SlocumFiles;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -28,7 +28,6 @@ import org.slf4j.LoggerFactory;
  */
 public final class DataLoop {
     private static final Logger log = LoggerFactory.getLogger(DataLoop.class);
-    static final byte[] DBA_LABEL = "dbd_label: DBD_ASC(dinkum_binary_data_ascii)file".getBytes(StandardCharsets.US_ASCII);
 
     /**
      * The role the server's own ingest runs with: the DatabaseServer lets {@code db-writer} write
@@ -154,16 +153,7 @@ public final class DataLoop {
 
     /** True when a file starts with the DBA label line. */
     static boolean isDba(byte[] data) {
-        if (data.length <= DBA_LABEL.length) {
-            return false;
-        }
-        for (int i = 0; i < DBA_LABEL.length; i++) {
-            if (data[i] != DBA_LABEL[i]) {
-                return false;
-            }
-        }
-        byte next = data[DBA_LABEL.length];
-        return next == '\n' || next == '\r' || next == ' ';
+        return SlocumFiles.isDba(data);
     }
 
     /**
@@ -172,24 +162,12 @@ public final class DataLoop {
      * {@code .scd}) and sensor-list cache files ({@code CRC.cac}), docs/slocum.md.
      */
     static boolean isSlocumBinary(String name, byte[] data) {
-        String n = name.substring(Math.max(name.lastIndexOf('/'), name.lastIndexOf('\\')) + 1).toLowerCase(java.util.Locale.ROOT);
-        if (n.matches("[0-9a-f]{8}\\.cac") || n.matches(".*\\.[a-z]cd") && data.length > 0) {
-            return true;
-        }
-        String head = new String(data, 0, Math.min(data.length, 80), StandardCharsets.ISO_8859_1);
-        return head.startsWith("dbd_label:") && head.lines().findFirst().orElse("").contains("DBD(dinkum_binary_data)file");
+        return SlocumFiles.isCacheName(name) || SlocumFiles.isCompressedName(SlocumFiles.baseName(name)) && data.length > 0
+                || SlocumFiles.hasBinaryLabel(data);
     }
 
     /** The glider's name from the header's {@code filename:} tag (before the first '-'), or null. */
     static String vehicle(byte[] data) {
-        String head = new String(data, 0, Math.min(data.length, 4096), StandardCharsets.ISO_8859_1);
-        for (String line : head.split("\r?\n")) {
-            if (line.startsWith("filename:") || line.startsWith("full_filename:")) {
-                String f = line.substring(line.indexOf(':') + 1).strip();
-                int dash = f.indexOf('-');
-                return dash > 0 ? f.substring(0, dash) : f;
-            }
-        }
-        return null;
+        return SlocumFiles.vehicle(data);
     }
 }

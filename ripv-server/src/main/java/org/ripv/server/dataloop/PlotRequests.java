@@ -11,6 +11,7 @@ import java.util.Collections;
 import java.util.List;
 import java.util.Locale;
 import java.util.function.Consumer;
+import java.util.function.Supplier;
 import java.util.regex.Pattern;
 import org.ripv.messages.Attachment;
 import org.ripv.messages.ErrorCode;
@@ -37,9 +38,9 @@ final class PlotRequests {
     private static final DateTimeFormatter SQL_TIME = DateTimeFormatter.ofPattern("yyyy-MM-dd HH:mm:ss");
 
     private final ServiceCalls calls;
-    private final java.util.function.Supplier<String> defaultDatabase;
+    private final Supplier<String> defaultDatabase;
 
-    PlotRequests(ServiceCalls calls, java.util.function.Supplier<String> defaultDatabase) {
+    PlotRequests(ServiceCalls calls, Supplier<String> defaultDatabase) {
         this.calls = calls;
         this.defaultDatabase = defaultDatabase;
     }

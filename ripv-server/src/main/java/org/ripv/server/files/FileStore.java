@@ -13,15 +13,20 @@ import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
 import java.nio.file.attribute.BasicFileAttributes;
+import java.security.MessageDigest;
+import java.security.NoSuchAlgorithmException;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.HexFormat;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.Properties;
 import java.util.concurrent.ConcurrentHashMap;
 import org.ripv.files.PrivateFiles;
 import org.ripv.messages.FileListing;
+import org.ripv.naming.MailboxAddress;
+import org.slf4j.LoggerFactory;
 
 /**
  * The server's upload directory (files from clients) and download directory (files from
@@ -496,9 +501,9 @@ public final class FileStore {
      * hash of the whole address, so it stays unique.
      */
     public static String folderFor(String mailbox) {
-        org.ripv.naming.MailboxAddress a;
+        MailboxAddress a;
         try {
-            a = org.ripv.naming.MailboxAddress.parse(mailbox);
+            a = MailboxAddress.parse(mailbox);
         } catch (RuntimeException e) {
             return folderName(mailbox);
         }
@@ -518,9 +523,20 @@ public final class FileStore {
 
     private static byte[] sha256(String s) {
         try {
-            return java.security.MessageDigest.getInstance("SHA-256").digest(s.getBytes(java.nio.charset.StandardCharsets.UTF_8));
-        } catch (java.security.NoSuchAlgorithmException e) {
+            return MessageDigest.getInstance("SHA-256").digest(s.getBytes(StandardCharsets.UTF_8));
+        } catch (NoSuchAlgorithmException e) {
             throw new IllegalStateException("SHA-256 is part of every JDK", e);
+        }
+    }
+
+    /** {@link #adopt} for each MailBox a service lists as it registers; a folder that cannot be made is logged, not fatal. */
+    public void adoptAll(List<String> mailboxes) {
+        for (String mb : mailboxes) {
+            try {
+                adopt(mb);
+            } catch (IOException | RuntimeException e) {
+                LoggerFactory.getLogger(FileStore.class).warn("could not make the download folder of {}: {}", mb, e.toString());
+            }
         }
     }
 
@@ -534,14 +550,14 @@ public final class FileStore {
         if (!Files.isDirectory(dir)) {
             String handle;
             try {
-                handle = org.ripv.naming.MailboxAddress.parse(mailbox).handle();
+                handle = MailboxAddress.parse(mailbox).handle();
             } catch (RuntimeException e) {
                 handle = null;
             }
             Path old = handle == null ? null : downloadDir.resolve(folderName(handle));
             if (old != null && !old.equals(dir) && Files.isDirectory(old) && !Files.exists(old.resolve(OWNER_FILE))) {
                 Files.move(old, dir, StandardCopyOption.ATOMIC_MOVE);
-                org.slf4j.LoggerFactory.getLogger(FileStore.class).warn("moved download/{}/ (from before each MailBox's folder"
+                LoggerFactory.getLogger(FileStore.class).warn("moved download/{}/ (from before each MailBox's folder"
                         + " was unique to its address) to download/{}/ for {}; if two services had a MailBox {}, their files"
                         + " were mixed there before this version", old.getFileName(), dir.getFileName(), mailbox, handle);
             }
@@ -551,7 +567,7 @@ public final class FileStore {
         if (!Files.exists(mark)) {
             Path tmp = PrivateFiles.createTempFile(downloadDir.resolve(PARTIAL), "mb-", ".part");
             try {
-                Files.writeString(tmp, mailbox + "\n", java.nio.charset.StandardCharsets.UTF_8);
+                Files.writeString(tmp, mailbox + "\n", StandardCharsets.UTF_8);
                 Files.move(tmp, mark, StandardCopyOption.ATOMIC_MOVE);
             } finally {
                 Files.deleteIfExists(tmp);
@@ -565,21 +581,21 @@ public final class FileStore {
      * folder holds), or empty for a loose file or a folder from before folders were per address:
      * rights on a download follow this MailBox (issue 23, item 5).
      */
-    public java.util.Optional<String> mailboxOf(String downloadName) throws IOException {
+    public Optional<String> mailboxOf(String downloadName) throws IOException {
         Path p = downloadPath(downloadName);
         Path folder = p.getParent();
         if (folder == null || folder.equals(downloadDir)) {
-            return java.util.Optional.empty();
+            return Optional.empty();
         }
         Path mark = folder.resolve(OWNER_FILE);
         if (!Files.isRegularFile(mark)) {
-            return java.util.Optional.empty();
+            return Optional.empty();
         }
-        String m = Files.readString(mark, java.nio.charset.StandardCharsets.UTF_8).strip();
+        String m = Files.readString(mark, StandardCharsets.UTF_8).strip();
         try {
-            return java.util.Optional.of(org.ripv.naming.MailboxAddress.parse(m).toString());
+            return Optional.of(MailboxAddress.parse(m).toString());
         } catch (RuntimeException e) {
-            return java.util.Optional.empty();
+            return Optional.empty();
         }
     }
 

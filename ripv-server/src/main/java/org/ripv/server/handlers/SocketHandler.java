@@ -5,9 +5,11 @@ import java.io.DataInputStream;
 import java.io.DataOutputStream;
 import java.io.EOFException;
 import java.io.IOException;
+import java.net.InetAddress;
 import java.net.SocketException;
 import java.nio.ByteBuffer;
 import java.util.List;
+import java.util.Objects;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
@@ -59,7 +61,7 @@ public final class SocketHandler implements Connection.Receiver {
         void close();
 
         /** The peer's address, the key of per-address limits. */
-        java.net.InetAddress address();
+        InetAddress address();
     }
 
     /** What the server does with a client's requests. */
@@ -128,7 +130,7 @@ public final class SocketHandler implements Connection.Receiver {
      * {@code peer}. From the Post Office's side it is a client like any other.
      */
     public static SocketHandler inProcess(String clientId, Peer peer, Dispatcher dispatcher) {
-        return new SocketHandler(clientId, java.util.Objects.requireNonNull(peer, "peer"), dispatcher);
+        return new SocketHandler(clientId, Objects.requireNonNull(peer, "peer"), dispatcher);
     }
 
     /** Starts reading (the TLS handshake first); the greeting must come within the read timeout. */
@@ -196,7 +198,7 @@ public final class SocketHandler implements Connection.Receiver {
     }
 
     /** The peer's IP address, the key of per-address limits. */
-    public java.net.InetAddress remoteInetAddress() {
+    public InetAddress remoteInetAddress() {
         return peer != null ? peer.address() : connection.remoteInetAddress();
     }
 

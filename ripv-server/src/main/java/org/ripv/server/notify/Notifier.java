@@ -10,20 +10,24 @@ import java.security.SecureRandom;
 import java.time.Duration;
 import java.time.Instant;
 import java.util.ArrayList;
+import java.util.Date;
 import java.util.HexFormat;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Optional;
 import java.util.Properties;
 import java.util.Set;
 import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CompletionException;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.ThreadFactory;
 import java.util.concurrent.ThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
@@ -104,7 +108,7 @@ public final class Notifier implements AutoCloseable {
         load();
     }
 
-    private static java.util.concurrent.ThreadFactory named(String name) {
+    private static ThreadFactory named(String name) {
         AtomicInteger n = new AtomicInteger();
         return r -> {
             Thread t = new Thread(r, name + "-" + n.incrementAndGet());
@@ -228,7 +232,7 @@ public final class Notifier implements AutoCloseable {
     }
 
     private void load() throws IOException {
-        java.util.Optional<StateStore.Stored> stored = store.loadSubscriptions();
+        Optional<StateStore.Stored> stored = store.loadSubscriptions();
         if (stored.isEmpty()) {
             return;
         }
@@ -360,7 +364,7 @@ public final class Notifier implements AutoCloseable {
         }
         client.sendAsync(req, HttpResponse.BodyHandlers.discarding()).whenComplete((resp, err) -> {
             if (err != null) {
-                Throwable c = err instanceof java.util.concurrent.CompletionException && err.getCause() != null ? err.getCause() : err;
+                Throwable c = err instanceof CompletionException && err.getCause() != null ? err.getCause() : err;
                 failed(s, n, attempt, c.getClass().getSimpleName() + (c.getMessage() == null ? "" : ": " + c.getMessage()), true,
                         done);
             } else if (resp.statusCode() / 100 == 2) {
@@ -388,7 +392,7 @@ public final class Notifier implements AutoCloseable {
             m.setRecipient(Message.RecipientType.TO, oneMailbox(s.target));
             m.setSubject("[RIPV] " + vehicle(n.event().mailbox()) + " " + n.event().event(), "UTF-8");
             m.setText(mailBody(n), "UTF-8");
-            m.setSentDate(new java.util.Date());
+            m.setSentDate(new Date());
             if (smtp.user() != null) {
                 Transport.send(m, smtp.user(), smtp.password());
             } else {

@@ -1,10 +1,12 @@
 package org.ripv.server.notify;
 
+import java.util.Arrays;
 import java.util.EnumSet;
 import java.util.LinkedHashMap;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
+import java.util.concurrent.CompletableFuture;
 import java.util.regex.Pattern;
 import org.ripv.messages.NotifyList;
 import org.ripv.messages.VehicleEvent;
@@ -24,7 +26,7 @@ final class Subscription {
     private final Pattern pattern;
     private volatile String lastResult = "never used";
     /** The end of this subscription's chain of deliveries (guarded by the subscription). */
-    java.util.concurrent.CompletableFuture<Void> tail = java.util.concurrent.CompletableFuture.completedFuture(null);
+    CompletableFuture<Void> tail = CompletableFuture.completedFuture(null);
 
     Subscription(String id, String user, Channel channel, String target, Set<VehicleEvent> events, boolean allEvents,
                  String glob) {
@@ -101,7 +103,7 @@ final class Subscription {
                 out.add(VehicleEvent.valueOf(n));
             } catch (IllegalArgumentException e) {
                 throw new IllegalArgumentException("unknown event '" + name.trim() + "'; events are "
-                        + String.join(",", java.util.Arrays.stream(VehicleEvent.values()).map(Enum::name).toList()) + " or all");
+                        + String.join(",", Arrays.stream(VehicleEvent.values()).map(Enum::name).toList()) + " or all");
             }
         }
         if (out.isEmpty()) {

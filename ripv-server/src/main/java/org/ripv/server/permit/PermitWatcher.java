@@ -3,6 +3,9 @@ package org.ripv.server.permit;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.function.Consumer;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -16,7 +19,7 @@ public final class PermitWatcher {
     private final Path file;
     private volatile PermitFile current;
     private volatile long stamp;
-    private final java.util.List<java.util.function.Consumer<PermitFile>> listeners = new java.util.concurrent.CopyOnWriteArrayList<>();
+    private final List<Consumer<PermitFile>> listeners = new CopyOnWriteArrayList<>();
 
     /** Loads the file, writing the template when there is none yet. */
     public PermitWatcher(Path file) throws IOException {
@@ -32,7 +35,7 @@ public final class PermitWatcher {
      * Runs {@code listener} with the new rules after each successful reload (rights already granted,
      * such as watches, are checked again by it; docs/permit.md). A listener must not block.
      */
-    public void onChange(java.util.function.Consumer<PermitFile> listener) {
+    public void onChange(Consumer<PermitFile> listener) {
         listeners.add(listener);
     }
 
@@ -41,7 +44,7 @@ public final class PermitWatcher {
         PermitFile loaded = PermitFile.load(file);
         current = loaded;
         stamp = stamp(file);
-        for (java.util.function.Consumer<PermitFile> l : listeners) {
+        for (Consumer<PermitFile> l : listeners) {
             try {
                 l.accept(loaded);
             } catch (RuntimeException e) {

@@ -51,7 +51,7 @@ public final class PendingRequests {
     }
 
     public static String key(Header h) {
-        return h.origin().clientId() + "#" + h.messageId();
+        return h.requestKey();
     }
 
     /** Starts tracking a request; false when one with the same id is already pending. */

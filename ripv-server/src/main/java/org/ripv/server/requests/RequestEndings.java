@@ -1,5 +1,9 @@
 package org.ripv.server.requests;
 
+import java.net.NoRouteToHostException;
+import java.net.SocketTimeoutException;
+import java.rmi.ConnectException;
+import java.rmi.NoSuchObjectException;
 import java.rmi.RemoteException;
 import java.time.Duration;
 import java.util.List;
@@ -13,7 +17,6 @@ import org.ripv.messages.Ids;
 import org.ripv.messages.IncomingServerMessage;
 import org.ripv.messages.IncomingServiceMessage;
 import org.ripv.messages.OutgoingServerMessage;
-import org.ripv.server.RIPVServer;
 import org.ripv.server.services.ServiceReference;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -40,7 +43,7 @@ public final class RequestEndings {
     }
 
     private void error(Header h, String sid, ErrorCode code, String text) {
-        reply.accept(new IncomingServerMessage(h).reply(Footer.error(sid, code, text).via(RIPVServer.SERVER_SERVICE)));
+        reply.accept(new IncomingServerMessage(h).reply(Footer.error(sid, code, text).via(ServerReplies.SERVICE)));
     }
 
     /** A request whose call to its service failed. */
@@ -58,9 +61,9 @@ public final class RequestEndings {
     /** True when a call failed before any byte of it could leave (no connection): it surely did not arrive. */
     static boolean neverConnected(Throwable e) {
         for (Throwable t = e; t != null; t = t.getCause() == t ? null : t.getCause()) {
-            if (t instanceof java.rmi.ConnectException || t instanceof java.net.ConnectException
-                    || t instanceof java.net.SocketTimeoutException && String.valueOf(t.getMessage()).startsWith("could not reach")
-                    || t instanceof java.rmi.NoSuchObjectException || t instanceof java.net.NoRouteToHostException) {
+            if (t instanceof ConnectException || t instanceof java.net.ConnectException
+                    || t instanceof SocketTimeoutException && String.valueOf(t.getMessage()).startsWith("could not reach")
+                    || t instanceof NoSuchObjectException || t instanceof NoRouteToHostException) {
                 return true;
             }
         }

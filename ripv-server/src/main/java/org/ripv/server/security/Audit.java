@@ -1,5 +1,10 @@
 package org.ripv.server.security;
 
+import java.util.Arrays;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.CopyOnWriteArrayList;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -11,7 +16,7 @@ import org.slf4j.LoggerFactory;
  */
 public final class Audit {
     private static final Logger AUDIT = LoggerFactory.getLogger("ripv.audit");
-    private static final java.util.List<Trail> TRAILS = new java.util.concurrent.CopyOnWriteArrayList<>();
+    private static final List<Trail> TRAILS = new CopyOnWriteArrayList<>();
 
     /** Where audit lines are kept beyond the log; must not block (the store's {@code AuditTrail} queues). */
     public interface Trail {
@@ -41,7 +46,7 @@ public final class Audit {
         TRAILS.forEach(t -> t.record(warn, line));
     }
 
-    private static final java.util.Map<String, long[]> LIMITED = new java.util.concurrent.ConcurrentHashMap<>();
+    private static final Map<String, long[]> LIMITED = new ConcurrentHashMap<>();
 
     /**
      * As {@link #log} at WARN, but at most one line per {@code key} every 10 s, with how many were
@@ -63,7 +68,7 @@ public final class Audit {
         if (LIMITED.size() > 10_000) {
             LIMITED.clear();
         }
-        Object[] kv = java.util.Arrays.copyOf(keyValues, keyValues.length + 2);
+        Object[] kv = Arrays.copyOf(keyValues, keyValues.length + 2);
         kv[keyValues.length] = "repeated";
         kv[keyValues.length + 1] = skipped;
         log(true, event, kv);

@@ -4,8 +4,11 @@ import java.time.Duration;
 import java.time.Instant;
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.function.LongSupplier;
 
 /**
@@ -59,11 +62,11 @@ public final class LoginThrottle {
     private final Policy policy;
     private final LongSupplier clock;
     private final Map<String, State> states = new HashMap<>();
-    private final Map<String, java.util.LinkedHashSet<String>> known = new java.util.LinkedHashMap<>(16, 0.75f, true) {
+    private final Map<String, LinkedHashSet<String>> known = new LinkedHashMap<>(16, 0.75f, true) {
         private static final long serialVersionUID = 1L;
 
         @Override
-        protected boolean removeEldestEntry(Map.Entry<String, java.util.LinkedHashSet<String>> eldest) {
+        protected boolean removeEldestEntry(Map.Entry<String, LinkedHashSet<String>> eldest) {
             return size() > MAX_ENTRIES;
         }
     };
@@ -113,7 +116,7 @@ public final class LoginThrottle {
     }
 
     private boolean isKnown(String user, String address) {
-        java.util.Set<String> k = known.get(user);
+        Set<String> k = known.get(user);
         return k != null && k.contains(address);
     }
 
@@ -185,7 +188,7 @@ public final class LoginThrottle {
     public synchronized void success(String user, String address) {
         states.remove(userKey(user));
         states.remove(pairKey(user, address));
-        java.util.LinkedHashSet<String> k = known.computeIfAbsent(user, x -> new java.util.LinkedHashSet<>());
+        LinkedHashSet<String> k = known.computeIfAbsent(user, x -> new LinkedHashSet<>());
         k.remove(address);
         k.add(address);
         if (k.size() > KNOWN_PER_USER) {

@@ -15,6 +15,7 @@ import org.ripv.messages.ErrorCode;
 import org.ripv.messages.Footer;
 import org.ripv.messages.Ids;
 import org.ripv.messages.IncomingServerMessage;
+import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.SessionInfo;
 import org.ripv.server.handlers.SocketHandler;
 import org.ripv.server.permit.PermitFile;
@@ -201,7 +202,7 @@ public final class Logins implements AutoCloseable {
         return Math.max(1, (b.left().toMillis() + 999) / 1000);
     }
 
-    private static org.ripv.messages.OutgoingServerMessage refusal(IncomingServerMessage request, ErrorCode code, String text) {
+    private static OutgoingServerMessage refusal(IncomingServerMessage request, ErrorCode code, String text) {
         return request.reply(Footer.error(Ids.FID_LOGIN, code, text));
     }
 }

@@ -5,6 +5,7 @@ import java.rmi.Remote;
 import java.rmi.RemoteException;
 import java.rmi.registry.LocateRegistry;
 import java.rmi.registry.Registry;
+import java.rmi.server.RMIClientSocketFactory;
 import java.rmi.server.RMIServerSocketFactory;
 import org.ripv.rmi.GenericRMIInterface;
 import org.slf4j.Logger;
@@ -46,7 +47,7 @@ public final class RegistryGuard {
     }
 
     /** Creates the registry (remote binds refused). */
-    public static Registry create(int port, java.rmi.server.RMIClientSocketFactory callSockets, RMIServerSocketFactory sockets)
+    public static Registry create(int port, RMIClientSocketFactory callSockets, RMIServerSocketFactory sockets)
             throws RemoteException {
         install();
         return LocateRegistry.createRegistry(port, callSockets, sockets);

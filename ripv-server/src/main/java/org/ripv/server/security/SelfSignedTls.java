@@ -12,11 +12,13 @@ import java.security.KeyStore;
 import java.security.SecureRandom;
 import java.security.cert.Certificate;
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.HexFormat;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import javax.net.ssl.KeyManagerFactory;
 import javax.net.ssl.SSLContext;
+import org.ripv.naming.Handles;
 import org.ripv.security.Fingerprint;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -51,7 +53,7 @@ public final class SelfSignedTls {
             KeyStore store = KeyStore.getInstance("PKCS12");
             store.load(in, password);
             Certificate cert = null;
-            for (String alias : java.util.Collections.list(store.aliases())) {
+            for (String alias : Collections.list(store.aliases())) {
                 if (store.isKeyEntry(alias)) {
                     cert = store.getCertificate(alias);
                     break;
@@ -102,7 +104,7 @@ public final class SelfSignedTls {
     }
 
     private static String commonName() {
-        String h = org.ripv.naming.Handles.localHost();
+        String h = Handles.localHost();
         return h.matches("[A-Za-z0-9.\\-]{1,200}") ? h : "ripv";
     }
 

@@ -6,6 +6,7 @@ import java.rmi.Remote;
 import java.security.GeneralSecurityException;
 import java.security.MessageDigest;
 import java.security.SecureRandom;
+import java.util.Arrays;
 import java.util.HashMap;
 import java.util.HexFormat;
 import java.util.Map;
@@ -74,7 +75,7 @@ public final class ServiceChallenges {
         }
         byte[] nv = HexFormat.of().parseHex(w[0]);
         long expires = (ByteBuffer.wrap(nv).getInt() & 0xffffffffL) * 1000;
-        byte[] tag = java.util.Arrays.copyOfRange(nv, 8, 16);
+        byte[] tag = Arrays.copyOfRange(nv, 8, 16);
         if (!MessageDigest.isEqual(tag, tag(w[1], nv)) || expires < System.currentTimeMillis() || isUsed(w[0])) {
             Audit.log(true, "register-refused", "service", serviceName, "reason", "unknown-or-used-challenge");
             throw new SecurityException("the registration's challenge is unknown, used or expired; register again");
@@ -115,7 +116,7 @@ public final class ServiceChallenges {
             mac.init(new SecretKeySpec(key, "HmacSHA256"));
             mac.update(serviceNonce.getBytes(StandardCharsets.US_ASCII));
             mac.update(serverNonce, 0, 8);
-            return java.util.Arrays.copyOf(mac.doFinal(), 8);
+            return Arrays.copyOf(mac.doFinal(), 8);
         } catch (GeneralSecurityException e) {
             throw new IllegalStateException("HmacSHA256 is part of every JDK", e);
         }

@@ -1,5 +1,6 @@
 package org.ripv.server.security;
 
+import java.util.Arrays;
 import java.util.List;
 import java.util.function.Supplier;
 import org.ripv.naming.MailboxAddress;
@@ -22,7 +23,7 @@ public final class WebLogins implements WebAccess {
     @Override
     public Result login(String user, char[] password, String address) {
         if (user.isEmpty() || user.length() > 64) {
-            java.util.Arrays.fill(password, '\0');
+            Arrays.fill(password, '\0');
             return Result.refused("wrong user name or password");
         }
         Logins.Check c = logins.check(user, password, address, "web");

@@ -6,6 +6,7 @@ import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
+import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
@@ -30,7 +31,7 @@ public final class ServiceLiveness {
     /** A service removed for failing its checks (or refused at registration: {@code refused}), and why. */
     public record Lost(String why, Instant when, boolean refused) {}
 
-    private final Map<String, ServiceReference> services;
+    private final ServiceRegistry services;
     private final ExecutorService checks;
     private final ExecutorService queries;
     private final ScheduledExecutorService timers;
@@ -39,7 +40,7 @@ public final class ServiceLiveness {
     private final BiConsumer<ServiceReference, String> drop;
     private final Map<String, Lost> lost = new ConcurrentHashMap<>();
 
-    public ServiceLiveness(Map<String, ServiceReference> services, ExecutorService checks, ExecutorService queries,
+    public ServiceLiveness(ServiceRegistry services, ExecutorService checks, ExecutorService queries,
                     ScheduledExecutorService timers, Duration interval, BiConsumer<ServiceReference, String> drop) {
         this.services = services;
         this.checks = checks;
@@ -54,7 +55,7 @@ public final class ServiceLiveness {
 
     /** Checks every registered service (the server's timer calls this each interval). */
     public void checkAll() {
-        for (ServiceReference ref : services.values()) {
+        for (ServiceReference ref : services.all()) {
             soon(ref);
         }
     }
@@ -64,7 +65,7 @@ public final class ServiceLiveness {
         if (!checks.isShutdown()) {
             try {
                 checks.execute(() -> check(ref));
-            } catch (java.util.concurrent.RejectedExecutionException ignored) {
+            } catch (RejectedExecutionException ignored) {
                 // stopping
             }
         }
@@ -77,7 +78,7 @@ public final class ServiceLiveness {
 
     /** A registration refused because the server cannot call the service back: {@code ?services} says so. */
     public void refused(String name, String why) {
-        if (!services.containsKey(name)) {
+        if (!services.isListed(name)) {
             lost.put(name, new Lost(why, Instant.now(), true));
         }
     }
@@ -115,7 +116,7 @@ public final class ServiceLiveness {
     private void failed(ServiceReference ref) {
         int failures = ref.failedChecks.incrementAndGet();
         String why = ref.problem();
-        if (failures >= FAILED_CHECKS_TO_REMOVE && services.remove(ref.descriptor().name(), ref)) {
+        if (failures >= FAILED_CHECKS_TO_REMOVE && services.remove(ref)) {
             log.warn("{} is gone: {}; removed it from the service list", ref, why);
             lost.put(ref.descriptor().name(), new Lost(why, Instant.now(), false));
             drop.accept(ref, "went away (" + why + ")");

@@ -1,5 +1,8 @@
 package org.ripv.server.services;
 
+import java.lang.reflect.Proxy;
+import java.net.SocketTimeoutException;
+import java.rmi.ConnectException;
 import java.rmi.RemoteException;
 import java.time.Duration;
 import java.time.Instant;
@@ -11,6 +14,8 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.Executor;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
+import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.regex.Matcher;
@@ -21,7 +26,6 @@ import org.ripv.messages.MailboxStatus;
 import org.ripv.messages.ServiceDescriptor;
 import org.ripv.naming.ServiceName;
 import org.ripv.rmi.GenericRMIInterface;
-import org.ripv.server.requests.PendingRequests;
 
 /**
  * The server's handle on one registered service (thesis: ServiceReference): its descriptor,
@@ -50,14 +54,14 @@ public final class ServiceReference {
     private final long order;
     /** Liveness: failed checks in a row, and whether a check is under way. */
     final AtomicInteger failedChecks = new AtomicInteger();
-    final java.util.concurrent.atomic.AtomicBoolean checking = new java.util.concurrent.atomic.AtomicBoolean();
+    final AtomicBoolean checking = new AtomicBoolean();
     /** The MailBox query under way, which every asker shares (one call per service at a time). */
     private final AtomicReference<CompletableFuture<List<MailboxStatus>>> query = new AtomicReference<>();
     private volatile String problem = "";
     /** When the sender's call under way began (0: none): a call stuck for long marks a path that is gone. */
     private volatile long callingSince;
     /** A call stuck this long (past any connect deadline) means the requests behind it should not wait. */
-    private static final long STUCK_NANOS = java.util.concurrent.TimeUnit.MILLISECONDS.toNanos(
+    private static final long STUCK_NANOS = TimeUnit.MILLISECONDS.toNanos(
             Long.getLong("ripv.service.stuckMillis", 3_000));
     private volatile Instant problemSince;
     private volatile boolean closed;
@@ -87,7 +91,7 @@ public final class ServiceReference {
         if (m.find()) {
             return m.group(1);
         }
-        return stub instanceof java.lang.reflect.Proxy && !s.contains("RemoteObjectInvocationHandler") ? s : "?";
+        return stub instanceof Proxy && !s.contains("RemoteObjectInvocationHandler") ? s : "?";
     }
 
     public ServiceDescriptor descriptor() {
@@ -121,16 +125,16 @@ public final class ServiceReference {
             return;
         }
         if (stuck()) {
-            onFailure.failed(this, request, new java.rmi.ConnectException(problem));
+            onFailure.failed(this, request, new ConnectException(problem));
             return;
         }
-        undelivered.add(PendingRequests.key(request.header()));
+        undelivered.add(request.header().requestKey());
         queue.add(request);
     }
 
     /** True while the request has not reached the service (queued here, or in a call under way). */
     public boolean undelivered(Header h) {
-        return undelivered.contains(PendingRequests.key(h));
+        return undelivered.contains(h.requestKey());
     }
 
     private void sendLoop() {
@@ -150,11 +154,11 @@ public final class ServiceReference {
                     stub.serviceRequests(token, List.copyOf(batch));
                 }
                 callingSince = 0;
-                batch.forEach(r -> undelivered.remove(PendingRequests.key(r.header())));
+                batch.forEach(r -> undelivered.remove(r.header().requestKey()));
                 healthy();
             } catch (RemoteException | RuntimeException e) {
                 callingSince = 0;
-                batch.forEach(r -> undelivered.remove(PendingRequests.key(r.header())));
+                batch.forEach(r -> undelivered.remove(r.header().requestKey()));
                 trouble(e);
                 batch.forEach(r -> onFailure.failed(this, r, e));
             }
@@ -162,7 +166,7 @@ public final class ServiceReference {
         }
         List<IncomingServiceMessage> left = new ArrayList<>();
         queue.drainTo(left);
-        left.forEach(r -> undelivered.remove(PendingRequests.key(r.header())));
+        left.forEach(r -> undelivered.remove(r.header().requestKey()));
         left.forEach(r -> onFailure.failed(this, r, new RemoteException(descriptor.name() + " is no longer registered")));
     }
 
@@ -171,7 +175,7 @@ public final class ServiceReference {
         boolean removed = queue.removeIf(r -> r.header().messageId() == h.messageId()
                 && r.header().origin().clientId().equals(h.origin().clientId()));
         if (removed) {
-            undelivered.remove(PendingRequests.key(h));
+            undelivered.remove(h.requestKey());
         }
         return removed;
     }
@@ -185,7 +189,7 @@ public final class ServiceReference {
     }
 
     /** Asks the service to stop a request that is running; true when its handler took the cancel. */
-    public boolean cancel(org.ripv.messages.Header h) throws RemoteException {
+    public boolean cancel(Header h) throws RemoteException {
         return stub.cancel(token, h.mailboxAddress(), h.origin().clientId(), h.messageId());
     }
 
@@ -263,8 +267,8 @@ public final class ServiceReference {
             List<IncomingServiceMessage> waiting = new ArrayList<>();
             queue.drainTo(waiting);
             for (IncomingServiceMessage r : waiting) {
-                undelivered.remove(PendingRequests.key(r.header()));
-                onFailure.failed(this, r, new java.rmi.ConnectException(why));
+                undelivered.remove(r.header().requestKey());
+                onFailure.failed(this, r, new ConnectException(why));
             }
         }
     }
@@ -290,7 +294,7 @@ public final class ServiceReference {
         while (t.getCause() != null && t.getCause() != t) {
             t = t.getCause();
         }
-        if (t instanceof java.util.concurrent.TimeoutException) {
+        if (t instanceof TimeoutException) {
             return "no answer within the deadline";
         }
         String m = t.getMessage() == null ? t.getClass().getSimpleName() : t.getMessage();
@@ -298,7 +302,7 @@ public final class ServiceReference {
         if (at >= 0 && m.indexOf(": ", at) > 0) {
             return m.substring(m.indexOf(": ", at) + 2); // "timed out after 3000 ms" from DeadlineSocketFactory
         }
-        if (t instanceof java.net.SocketTimeoutException) {
+        if (t instanceof SocketTimeoutException) {
             return "no answer: " + m;
         }
         return m;

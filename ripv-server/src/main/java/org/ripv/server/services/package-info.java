@@ -1,11 +1,11 @@
 /**
- * The server's side of its services (thesis: ServiceReference, figure 5.3): the handle on each
- * registered service with its own sender thread, the liveness checks that drop a service that no
+ * The server's side of its services (thesis: ServiceReference, figure 5.3): the services
+ * registered now ({@link org.ripv.server.services.ServiceRegistry}), the handle on each with its
+ * own sender thread, admission (a service is called back before it is listed, and a late
+ * registration never replaces a newer one), the liveness checks that drop a service that no
  * longer answers, the shared secret a service proves it knows, and the RMI socket factory that
  * binds the registry and the server's remote object to the configured address. They live apart
  * from the client side because they fail differently: a service is a remote peer on RMI that
- * may hang or vanish, and nothing here may hold up a client or another service. Registration
- * itself ({@code ServiceAdmission}) and the remote object ({@code ServerRemote}) stay with
- * RIPVServer, as they reach into its service table and secret, which it keeps to itself.
+ * may hang or vanish, and nothing here may hold up a client or another service.
  */
 package org.ripv.server.services;

@@ -10,11 +10,15 @@ import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.function.BiFunction;
 import java.util.function.Consumer;
 import org.ripv.messages.ConsoleEntry;
+import org.ripv.messages.Message;
 import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.SessionState;
 import org.ripv.messages.VehicleEvent;
+import org.ripv.naming.MailboxAddress;
+import org.ripv.server.store.StateStore;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -40,7 +44,7 @@ public final class ConsoleHub implements AutoCloseable {
 
     /** Turns a message into a frame's body (the server's codec). */
     public interface Encoder {
-        byte[] encode(org.ripv.messages.Message m) throws IOException;
+        byte[] encode(Message m) throws IOException;
     }
 
     private final Encoder encoder;
@@ -62,12 +66,12 @@ public final class ConsoleHub implements AutoCloseable {
      * @param keepDays     transcript entries older than this many days are deleted
      * @param encoder      encodes a push once for all the watchers that are up to date
      */
-    public ConsoleHub(Path transcripts, org.ripv.server.store.StateStore store, int keepDays, Encoder encoder) throws IOException {
+    public ConsoleHub(Path transcripts, StateStore store, int keepDays, Encoder encoder) throws IOException {
         this(transcripts, store, keepDays, 0, encoder);
     }
 
     /** As above, keeping at most {@code dayCap} bytes of one MailBox's transcript a day (0: no cap). */
-    public ConsoleHub(Path transcripts, org.ripv.server.store.StateStore store, int keepDays, long dayCap, Encoder encoder)
+    public ConsoleHub(Path transcripts, StateStore store, int keepDays, long dayCap, Encoder encoder)
             throws IOException {
         this.encoder = encoder;
         this.transcript = new Transcript(transcripts, store, keepDays, dayCap);
@@ -123,7 +127,7 @@ public final class ConsoleHub implements AutoCloseable {
 
     private static boolean wellFormed(String mailbox) {
         try {
-            org.ripv.naming.MailboxAddress.parse(mailbox);
+            MailboxAddress.parse(mailbox);
             return true;
         } catch (IllegalArgumentException e) {
             return false;
@@ -278,7 +282,7 @@ public final class ConsoleHub implements AutoCloseable {
      * outlet first, so the client sees the replay before any live entry. Returns null, or why not.
      */
     public String watch(String clientId, String user, String mailbox, Outlet outlet,
-                        java.util.function.BiFunction<SessionState, List<ConsoleEntry>, OutgoingServerMessage> reply) {
+                        BiFunction<SessionState, List<ConsoleEntry>, OutgoingServerMessage> reply) {
         synchronized (order) {
             Set<Watcher> mine = byClient.computeIfAbsent(clientId, k -> ConcurrentHashMap.newKeySet());
             if (mine.stream().anyMatch(w -> w.mailbox.equals(mailbox))) {
@@ -347,7 +351,7 @@ public final class ConsoleHub implements AutoCloseable {
      * @param whyNotRead null when the user (first argument) may read the MailBox (second), else why not
      * @return how many watches ended
      */
-    public int recheck(java.util.function.BiFunction<String, String, String> whyNotRead) {
+    public int recheck(BiFunction<String, String, String> whyNotRead) {
         int ended = 0;
         synchronized (order) {
             for (Map.Entry<String, Set<Watcher>> e : byClient.entrySet()) {

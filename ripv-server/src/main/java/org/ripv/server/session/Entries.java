@@ -1,10 +1,12 @@
 package org.ripv.server.session;
 
 import java.time.Instant;
+import java.time.format.DateTimeParseException;
 import java.util.LinkedHashMap;
 import java.util.Locale;
 import java.util.Map;
 import org.ripv.messages.ConsoleEntry;
+import org.ripv.messages.ConsoleLines;
 import org.ripv.messages.VehicleEvent;
 
 /**
@@ -50,7 +52,7 @@ public final class Entries {
         long time;
         try {
             time = Instant.parse(string(m, "time")).toEpochMilli();
-        } catch (java.time.format.DateTimeParseException e) {
+        } catch (DateTimeParseException e) {
             throw new IllegalArgumentException("bad time");
         }
         ConsoleEntry.Kind kind = ConsoleEntry.Kind.valueOf(string(m, "kind").toUpperCase(Locale.ROOT));
@@ -73,13 +75,6 @@ public final class Entries {
 
     /** The entry for people: {@code 2026-11-23T14:02:03Z ru29 [alice] > GPS Location ...}. */
     public static String toText(ConsoleEntry e) {
-        String t = Instant.ofEpochMilli(e.time()).toString();
-        return switch (e.kind()) {
-            case LINE -> t + "  " + e.text();
-            case COMMAND -> t + "  " + (e.user().isEmpty() ? "" : "[" + e.user() + "] ") + "> " + e.text();
-            case TRANSFER -> t + "  ~ " + e.text();
-            case EVENT -> t + "  * " + e.event() + (e.text().isEmpty() ? "" : " " + e.text())
-                    + (e.lat() != null && e.lon() != null ? String.format(Locale.ROOT, " (%.5f, %.5f)", e.lat(), e.lon()) : "");
-        };
+        return ConsoleLines.withInstantNoEventUser(e);
     }
 }

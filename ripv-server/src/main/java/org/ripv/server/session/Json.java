@@ -1,168 +1,107 @@
 package org.ripv.server.session;
 
+import com.fasterxml.jackson.core.JsonFactory;
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.core.SerializableString;
+import com.fasterxml.jackson.core.io.CharacterEscapes;
+import com.fasterxml.jackson.core.io.SerializedString;
+import com.fasterxml.jackson.core.json.JsonWriteFeature;
+import com.fasterxml.jackson.databind.DeserializationFeature;
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import java.util.Iterator;
 import java.util.LinkedHashMap;
 import java.util.Map;
-import org.ripv.json.JsonWriter;
 
 /**
- * Flat JSON objects (strings, numbers, booleans, null) for the transcript and subscription
- * files: one object per line, written by {@link JsonWriter} and read back without a library. Parsing is strict and
- * treats the line as hostile: anything else is an {@link IllegalArgumentException}.
+ * Flat JSON objects (strings, numbers, booleans, null) for the transcript, vehicle-state and
+ * subscription files, one object per line, through Jackson. Written as RIPV always wrote them:
+ * every control character, DEL, the C1 controls and U+2028/2029 escaped (lower-case hex), so one
+ * object is always one line that is safe on a terminal; NaN and infinities become null. Read
+ * strictly, the line treated as hostile: anything but one flat object is an
+ * {@link IllegalArgumentException}.
  */
 public final class Json {
+    private static final ObjectMapper MAPPER = mapper();
+
     private Json() {}
+
+    private static ObjectMapper mapper() {
+        JsonFactory f = JsonFactory.builder().disable(JsonWriteFeature.WRITE_HEX_UPPER_CASE).build();
+        f.setCharacterEscapes(new LineSafe());
+        return new ObjectMapper(f).enable(DeserializationFeature.FAIL_ON_TRAILING_TOKENS);
+    }
+
+    /** JSON's own escapes, plus DEL, C1 and the Unicode line separators: JSON lines reach terminals. */
+    private static final class LineSafe extends CharacterEscapes {
+        private static final long serialVersionUID = 1L;
+        private final int[] codes = standardAsciiEscapesForJSON();
+
+        LineSafe() {
+            codes['\b'] = ESCAPE_STANDARD; // as \u0008, not \b: the files have always said it so
+            codes['\f'] = ESCAPE_STANDARD;
+            codes[0x7f] = ESCAPE_STANDARD;
+        }
+
+        @Override
+        public int[] getEscapeCodesForAscii() {
+            return codes;
+        }
+
+        @Override
+        public SerializableString getEscapeSequence(int ch) {
+            return ch >= 0x80 && ch <= 0x9f || ch == 0x2028 || ch == 0x2029
+                    ? new SerializedString(String.format("\\u%04x", ch)) : null;
+        }
+    }
 
     /** Writes a flat object; values are String, Number, Boolean or null. */
     public static String write(Map<String, ?> fields) {
-        return JsonWriter.write(fields);
+        Map<String, Object> finite = new LinkedHashMap<>();
+        fields.forEach((k, v) -> finite.put(k, v instanceof Double d && !Double.isFinite(d)
+                || v instanceof Float f && !Float.isFinite(f) ? null : v));
+        try {
+            return MAPPER.writeValueAsString(finite);
+        } catch (JsonProcessingException e) {
+            throw new IllegalArgumentException("cannot write " + fields.keySet() + " as JSON: " + e.getOriginalMessage(), e);
+        }
     }
 
-    public static void quote(StringBuilder b, String s) {
-        JsonWriter.quote(b, s);
-    }
-
-    /** Reads a flat object: values come back as String, Double/Long, Boolean or null. */
+    /** Reads a flat object: values come back as String, Long (or Double), Boolean or null. */
     public static Map<String, Object> parse(String line) {
-        Parser p = new Parser(line);
-        Map<String, Object> out = p.object();
-        p.skipSpace();
-        if (p.i != line.length()) {
-            throw new IllegalArgumentException("trailing characters at " + p.i);
+        JsonNode root;
+        try {
+            root = MAPPER.readTree(line);
+        } catch (JsonProcessingException e) {
+            throw new IllegalArgumentException(e.getOriginalMessage(), e);
+        }
+        if (root == null || !root.isObject()) {
+            throw new IllegalArgumentException("not a JSON object");
+        }
+        Map<String, Object> out = new LinkedHashMap<>();
+        for (Iterator<Map.Entry<String, JsonNode>> it = root.fields(); it.hasNext(); ) {
+            Map.Entry<String, JsonNode> e = it.next();
+            out.put(e.getKey(), value(e.getKey(), e.getValue()));
         }
         return out;
     }
 
-    private static final class Parser {
-        private final String s;
-        private int i;
-
-        Parser(String s) {
-            this.s = s;
+    private static Object value(String key, JsonNode v) {
+        if (v.isNull()) {
+            return null;
         }
-
-        void skipSpace() {
-            while (i < s.length() && Character.isWhitespace(s.charAt(i))) {
-                i++;
-            }
+        if (v.isTextual()) {
+            return v.textValue();
         }
-
-        char next() {
-            if (i >= s.length()) {
-                throw new IllegalArgumentException("unexpected end");
-            }
-            return s.charAt(i++);
+        if (v.isBoolean()) {
+            return v.booleanValue();
         }
-
-        void expect(char c) {
-            skipSpace();
-            if (next() != c) {
-                throw new IllegalArgumentException("expected '" + c + "' at " + (i - 1));
-            }
+        if (v.isIntegralNumber()) {
+            return v.canConvertToLong() ? (Object) v.longValue() : (Object) v.doubleValue();
         }
-
-        Map<String, Object> object() {
-            Map<String, Object> m = new LinkedHashMap<>();
-            expect('{');
-            skipSpace();
-            if (i < s.length() && s.charAt(i) == '}') {
-                i++;
-                return m;
-            }
-            while (true) {
-                skipSpace();
-                String key = string();
-                expect(':');
-                skipSpace();
-                m.put(key, value());
-                skipSpace();
-                char c = next();
-                if (c == '}') {
-                    return m;
-                }
-                if (c != ',') {
-                    throw new IllegalArgumentException("expected ',' or '}' at " + (i - 1));
-                }
-            }
+        if (v.isNumber()) {
+            return v.doubleValue();
         }
-
-        Object value() {
-            if (i >= s.length()) {
-                throw new IllegalArgumentException("unexpected end");
-            }
-            char c = s.charAt(i);
-            if (c == '"') {
-                return string();
-            }
-            if (s.startsWith("null", i)) {
-                i += 4;
-                return null;
-            }
-            if (s.startsWith("true", i)) {
-                i += 4;
-                return Boolean.TRUE;
-            }
-            if (s.startsWith("false", i)) {
-                i += 5;
-                return Boolean.FALSE;
-            }
-            int start = i;
-            while (i < s.length() && "+-0123456789.eE".indexOf(s.charAt(i)) >= 0) {
-                i++;
-            }
-            String n = s.substring(start, i);
-            if (n.isEmpty() || n.length() > 40) {
-                throw new IllegalArgumentException("bad value at " + start);
-            }
-            try {
-                if (n.matches("-?\\d{1,19}")) {
-                    try {
-                        return Long.parseLong(n);
-                    } catch (NumberFormatException tooBig) {
-                        return Double.parseDouble(n);
-                    }
-                }
-                return Double.parseDouble(n);
-            } catch (NumberFormatException e) {
-                throw new IllegalArgumentException("bad number '" + n + "'");
-            }
-        }
-
-        String string() {
-            if (next() != '"') {
-                throw new IllegalArgumentException("expected a string at " + (i - 1));
-            }
-            StringBuilder b = new StringBuilder();
-            while (true) {
-                char c = next();
-                if (c == '"') {
-                    return b.toString();
-                }
-                if (c != '\\') {
-                    b.append(c);
-                    continue;
-                }
-                char e = next();
-                switch (e) {
-                    case '"', '\\', '/' -> b.append(e);
-                    case 'n' -> b.append('\n');
-                    case 'r' -> b.append('\r');
-                    case 't' -> b.append('\t');
-                    case 'b' -> b.append('\b');
-                    case 'f' -> b.append('\f');
-                    case 'u' -> {
-                        if (i + 4 > s.length()) {
-                            throw new IllegalArgumentException("short \\u escape");
-                        }
-                        try {
-                            b.append((char) Integer.parseInt(s.substring(i, i + 4), 16));
-                        } catch (NumberFormatException x) {
-                            throw new IllegalArgumentException("bad \\u escape");
-                        }
-                        i += 4;
-                    }
-                    default -> throw new IllegalArgumentException("bad escape \\" + e);
-                }
-            }
-        }
+        throw new IllegalArgumentException("'" + key + "' is not a string, number, boolean or null");
     }
 }

@@ -8,8 +8,12 @@ import java.time.Instant;
 import java.time.LocalDate;
 import java.time.ZoneOffset;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
+import org.ripv.files.PrivateFiles;
 import org.ripv.messages.ConsoleEntry;
+import org.ripv.retry.Backoff;
 import org.ripv.server.store.BatchWriter;
 import org.ripv.server.store.EmbeddedStateStore;
 import org.ripv.server.store.StateStore;
@@ -41,7 +45,7 @@ public final class Transcript implements AutoCloseable {
     /** The most bytes one MailBox's transcript takes in one UTC day; 0: no cap. */
     private final long dayCap;
     /** What each MailBox wrote today, and what was cut: the writer thread's alone. */
-    private final java.util.Map<String, DayUse> today = new java.util.HashMap<>();
+    private final Map<String, DayUse> today = new HashMap<>();
 
     private static final class DayUse {
         LocalDate day;
@@ -92,7 +96,7 @@ public final class Transcript implements AutoCloseable {
         this.store = store;
         this.ownsStore = ownsStore;
         this.keepDays = Math.max(1, keepDays);
-        org.ripv.files.PrivateFiles.createDirectories(root); // owner-only whatever the umask (issue 23, item 13)
+        PrivateFiles.createDirectories(root); // owner-only whatever the umask (issue 23, item 13)
         this.writer = new BatchWriter<>("ripv-transcript-writer", QUEUE, 4096, new BatchWriter.Sink<>() {
             @Override
             public void started() {
@@ -209,7 +213,7 @@ public final class Transcript implements AutoCloseable {
             return;
         }
         long giveUp = System.nanoTime() + RETRY_FOR.toNanos();
-        long wait = 500;
+        Backoff backoff = new Backoff(Duration.ofMillis(500), Duration.ofMillis(8000));
         for (int attempt = 1; ; attempt++) {
             try {
                 store.appendTranscript(lines);
@@ -218,6 +222,7 @@ public final class Transcript implements AutoCloseable {
                 }
                 return;
             } catch (IOException | RuntimeException x) {
+                long wait = backoff.nextMillis();
                 if (writer.isClosed() || System.nanoTime() + wait * 1_000_000 > giveUp) {
                     log.warn("transcript: could not store {} entries, they are lost: {}", lines.size(), x.toString());
                     return;
@@ -237,7 +242,6 @@ public final class Transcript implements AutoCloseable {
                     }
                     return;
                 }
-                wait = Math.min(wait * 2, 8000);
             }
         }
     }

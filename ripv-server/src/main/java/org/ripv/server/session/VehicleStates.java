@@ -5,6 +5,7 @@ import java.util.ArrayDeque;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.concurrent.ConcurrentHashMap;
 import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.SessionState;
@@ -126,7 +127,7 @@ final class VehicleStates {
             if (v.recent.size() > RECENT) {
                 v.recent.removeFirst();
             }
-            if (isContact(e)) {
+            if (e.isContact()) {
                 v.lastContact = Math.max(v.lastContact, e.time());
             }
             if (e.kind() == ConsoleEntry.Kind.LINE) {
@@ -142,21 +143,12 @@ final class VehicleStates {
             }
             if (e.kind() == ConsoleEntry.Kind.EVENT) {
                 v.lastEvent = e.event();
-                switch (e.event()) {
-                    case SURFACED -> {
-                        v.state = State.ON_CALL;
-                        v.calls++;
-                        v.diveAt = 0;
-                    }
-                    case DIVED -> {
-                        v.state = State.DIVED;
-                        v.diveAt = 0;
-                    }
-                    case LINK_LOST -> {
-                        v.state = State.LOST;
-                        v.diveAt = 0;
-                    }
-                    default -> { }
+                if (e.event().callState() != null) {
+                    v.state = e.event().callState();
+                    v.diveAt = 0; // a new call, its end or the link lost: no countdown runs
+                }
+                if (e.event().startsCall()) {
+                    v.calls++;
                 }
                 save = true;
             }
@@ -165,17 +157,6 @@ final class VehicleStates {
             save(e.mailbox(), v);
         }
         return save;
-    }
-
-    private static boolean isContact(ConsoleEntry e) {
-        return switch (e.kind()) {
-            case LINE, TRANSFER -> true;
-            case COMMAND -> false;
-            case EVENT -> switch (e.event()) {
-                case SURFACED, DIVED, ALERT, TRANSFER_DONE, TRANSFER_FAILED -> true;
-                default -> false;
-            };
-        };
     }
 
     /** The MailBoxes of a service (by address prefix) that are on call now. */
@@ -225,7 +206,7 @@ final class VehicleStates {
     /** Reads the saved state of a MailBox not seen since the server started. */
     private Vehicle load(String mailbox) {
         try {
-            java.util.Optional<String> saved = store.loadVehicleState(mailbox);
+            Optional<String> saved = store.loadVehicleState(mailbox);
             if (saved.isEmpty()) {
                 return null;
             }

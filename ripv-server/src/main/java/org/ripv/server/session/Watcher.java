@@ -6,6 +6,7 @@ import java.util.ArrayList;
 import java.util.List;
 import org.ripv.messages.ConsoleBatch;
 import org.ripv.messages.ConsoleEntry;
+import org.ripv.messages.ErrorCode;
 import org.ripv.messages.Footer;
 import org.ripv.messages.Header;
 import org.ripv.messages.IdBadge;
@@ -142,7 +143,7 @@ final class Watcher {
                 null, null, null);
         OutgoingServerMessage m = message(mailbox, List.of(line), 0);
         outlet.send(new OutgoingServerMessage(m.header(), Footer.error(Ids.FID_CONSOLE,
-                org.ripv.messages.ErrorCode.FORBIDDEN, text).withResult(m.footer().result())));
+                ErrorCode.FORBIDDEN, text).withResult(m.footer().result())));
     }
 
     synchronized int backlog() {

@@ -1,5 +1,6 @@
 package org.ripv.server.standby;
 
+import java.io.IOException;
 import java.sql.Connection;
 import java.sql.DriverManager;
 import java.sql.PreparedStatement;
@@ -108,7 +109,7 @@ public final class Leadership implements AutoCloseable {
     public void awaitLead() throws InterruptedException {
         try {
             awaitLead(false);
-        } catch (java.io.IOException e) {
+        } catch (IOException e) {
             throw new IllegalStateException(e); // not thrown without failFast
         }
     }
@@ -120,7 +121,7 @@ public final class Leadership implements AutoCloseable {
      *
      * @throws java.io.IOException with failFast, when the first try cannot reach the database
      */
-    public void awaitLead(boolean failFast) throws InterruptedException, java.io.IOException {
+    public void awaitLead(boolean failFast) throws InterruptedException, IOException {
         String said = null;
         boolean first = true;
         while (!closed) {
@@ -136,7 +137,7 @@ public final class Leadership implements AutoCloseable {
             } catch (SQLException e) {
                 drop();
                 if (first && failFast) {
-                    throw new java.io.IOException("cannot use the state database " + shown + ": " + e.getMessage(), e);
+                    throw new IOException("cannot use the state database " + shown + ": " + e.getMessage(), e);
                 }
                 why = "standing by: cannot reach the state database " + shown + " (" + e.getMessage() + "); serving nothing";
             }

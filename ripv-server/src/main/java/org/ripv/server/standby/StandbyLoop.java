@@ -2,6 +2,8 @@ package org.ripv.server.standby;
 
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutionException;
+import java.util.concurrent.TimeUnit;
+import java.util.function.Consumer;
 import java.util.function.Supplier;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -24,7 +26,7 @@ public final class StandbyLoop<S extends AutoCloseable> {
 
     private final Supplier<Leadership> leads;
     private final Opener<S> opener;
-    private final java.util.function.Consumer<S> serving;
+    private final Consumer<S> serving;
     private final CountDownLatch stopped = new CountDownLatch(1);
     private volatile boolean stopping;
     private volatile Leadership lead;
@@ -35,7 +37,7 @@ public final class StandbyLoop<S extends AutoCloseable> {
      * @param opener  starts serving
      * @param serving told each time serving has started (the launcher's "ready" line)
      */
-    public StandbyLoop(Supplier<Leadership> leads, Opener<S> opener, java.util.function.Consumer<S> serving) {
+    public StandbyLoop(Supplier<Leadership> leads, Opener<S> opener, Consumer<S> serving) {
         this.leads = leads;
         this.opener = opener;
         this.serving = serving;
@@ -115,7 +117,7 @@ public final class StandbyLoop<S extends AutoCloseable> {
             l.close();
         }
         try {
-            stopped.await(java.util.concurrent.TimeUnit.SECONDS.toMillis(30), java.util.concurrent.TimeUnit.MILLISECONDS);
+            stopped.await(TimeUnit.SECONDS.toMillis(30), TimeUnit.MILLISECONDS);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }

@@ -1,6 +1,7 @@
 package org.ripv.server.standby;
 
 import java.time.Duration;
+import java.util.function.Supplier;
 import org.ripv.server.store.StoreLocation;
 import picocli.CommandLine.Option;
 
@@ -16,7 +17,7 @@ public final class StandbyOptions {
     long checkMillis = 1000;
 
     /** A new claim on the lead in the state database, for this server named {@code me} to the others. */
-    public java.util.function.Supplier<Leadership> leads(StoreLocation db, String me) {
+    public Supplier<Leadership> leads(StoreLocation db, String me) {
         if (checkMillis < 100 || checkMillis > 10_000) {
             throw new IllegalArgumentException("--lead-check takes 100 to 10000 ms, not " + checkMillis);
         }

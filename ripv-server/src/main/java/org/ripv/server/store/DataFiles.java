@@ -5,6 +5,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.Files;
+import java.nio.file.LinkOption;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.nio.file.attribute.PosixFilePermissions;
@@ -12,6 +13,7 @@ import java.security.MessageDigest;
 import java.security.NoSuchAlgorithmException;
 import java.util.HexFormat;
 import java.util.Locale;
+import org.ripv.files.PrivateFiles;
 
 /**
  * Owner-only directories and files written whole: a temporary file, then an atomic move; and the
@@ -23,7 +25,7 @@ public final class DataFiles {
 
     /** An owner-only directory, and every directory made on the way owner-only too (workflows/ of workflows/queues). */
     public static Path directory(Path dir) throws IOException {
-        org.ripv.files.PrivateFiles.createDirectories(dir);
+        PrivateFiles.createDirectories(dir);
         ownerOnly(dir, "rwx------");
         return dir;
     }
@@ -34,7 +36,7 @@ public final class DataFiles {
      * audit log 0644, workflows/ 0755). Symbolic links are left alone.
      */
     public static void tighten(Path root) throws IOException {
-        if (!Files.isDirectory(root, java.nio.file.LinkOption.NOFOLLOW_LINKS) || org.ripv.files.PrivateFiles.isShared(root)) {
+        if (!Files.isDirectory(root, LinkOption.NOFOLLOW_LINKS) || PrivateFiles.isShared(root)) {
             return; // a shared folder (/tmp) holds others' files: never walked
         }
         try (var all = Files.walk(root)) {
@@ -72,7 +74,7 @@ public final class DataFiles {
     }
 
     private static void ownerOnly(Path p, String mode) {
-        if (org.ripv.files.PrivateFiles.isShared(p)) {
+        if (PrivateFiles.isShared(p)) {
             return; // never a shared folder such as /tmp (PrivateFiles.restrict says why)
         }
         try {

@@ -2,6 +2,7 @@ package org.ripv.server.store;
 
 import java.io.BufferedWriter;
 import java.io.IOException;
+import java.io.OutputStreamWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
@@ -10,11 +11,13 @@ import java.nio.file.StandardOpenOption;
 import java.time.Instant;
 import java.time.LocalDate;
 import java.time.ZoneOffset;
+import java.time.format.DateTimeParseException;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
 import java.util.stream.Stream;
+import org.ripv.files.PrivateFiles;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -316,7 +319,7 @@ public final class EmbeddedStateStore implements StateStore {
                             out.close();
                         }
                         day = d;
-                        out = new java.io.BufferedWriter(new java.io.OutputStreamWriter(org.ripv.files.PrivateFiles.newOutputStream(
+                        out = new BufferedWriter(new OutputStreamWriter(PrivateFiles.newOutputStream(
                                 dir.resolve(d + ".log"), StandardOpenOption.CREATE, StandardOpenOption.APPEND, StandardOpenOption.WRITE),
                                 StandardCharsets.UTF_8));
                     }
@@ -357,7 +360,7 @@ public final class EmbeddedStateStore implements StateStore {
                 long time;
                 try {
                     time = Instant.parse(parts[0]).toEpochMilli();
-                } catch (java.time.format.DateTimeParseException e) {
+                } catch (DateTimeParseException e) {
                     continue;
                 }
                 if (time < sinceMillis) {

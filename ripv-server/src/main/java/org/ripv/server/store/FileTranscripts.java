@@ -25,6 +25,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import org.ripv.files.PrivateFiles;
 import org.ripv.server.store.StateStore.TranscriptLine;
 import org.ripv.server.store.StateStore.TranscriptPage;
 import org.slf4j.Logger;
@@ -129,7 +130,7 @@ final class FileTranscripts {
             open.remove(mailbox);
         }
         Path dir = dirOf(root, mailbox);
-        org.ripv.files.PrivateFiles.createDirectories(dir); // owner-only whatever the umask (issue 23, item 13)
+        PrivateFiles.createDirectories(dir); // owner-only whatever the umask (issue 23, item 13)
         Path file = dir.resolve(day + ".jsonl");
         int n = 0;
         while (Files.exists(file) && Files.size(file) + need > maxFileBytes) {
@@ -137,7 +138,7 @@ final class FileTranscripts {
             file = dir.resolve(day + "." + n + ".jsonl");
         }
         long size = Files.exists(file) ? Files.size(file) : 0;
-        BufferedWriter w = new BufferedWriter(new OutputStreamWriter(org.ripv.files.PrivateFiles.newOutputStream(file, StandardOpenOption.CREATE,
+        BufferedWriter w = new BufferedWriter(new OutputStreamWriter(PrivateFiles.newOutputStream(file, StandardOpenOption.CREATE,
                 StandardOpenOption.APPEND, StandardOpenOption.WRITE), StandardCharsets.UTF_8), 16 * 1024);
         Open fresh = new Open(file, w, day, size);
         open.put(mailbox, fresh);

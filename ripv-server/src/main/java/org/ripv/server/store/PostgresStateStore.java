@@ -1,6 +1,7 @@
 package org.ripv.server.store;
 
 import java.io.IOException;
+import java.sql.BatchUpdateException;
 import java.sql.Connection;
 import java.sql.PreparedStatement;
 import java.sql.ResultSet;
@@ -147,7 +148,7 @@ public final class PostgresStateStore implements StateStore {
      * text, in the log), so its first cause stands for it.
      */
     static String reason(SQLException e) {
-        SQLException cause = e instanceof java.sql.BatchUpdateException && e.getNextException() != null ? e.getNextException() : e;
+        SQLException cause = e instanceof BatchUpdateException && e.getNextException() != null ? e.getNextException() : e;
         String m = String.valueOf(cause.getMessage());
         return (m.length() > 300 ? m.substring(0, 300) + "..." : m) + (cause.getSQLState() == null ? "" : " (SQLSTATE " + cause.getSQLState() + ")");
     }

@@ -3,6 +3,7 @@ package org.ripv.server.store;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Path;
+import org.ripv.launch.Secrets;
 import picocli.CommandLine.Option;
 
 /** The {@code ripv server} options that choose the state store (a picocli mixin). */
@@ -29,7 +30,7 @@ public final class StateStoreOptions {
         String u = user != null ? user : System.getenv("RIPV_STATE_DB_USER");
         String pw;
         try {
-            pw = org.ripv.launch.Secrets.resolve(null, passwordFile, "RIPV_STATE_DB_PASSWORD", "--state-db-password",
+            pw = Secrets.resolve(null, passwordFile, "RIPV_STATE_DB_PASSWORD", "--state-db-password",
                     u != null && !u.isEmpty(), err);
         } catch (IOException e) {
             throw new IOException("cannot read --state-db-password-file " + passwordFile + ": " + e, e);

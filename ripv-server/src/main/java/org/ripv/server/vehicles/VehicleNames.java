@@ -5,6 +5,7 @@ import java.util.Collection;
 import java.util.List;
 import java.util.Locale;
 import java.util.TreeSet;
+import org.ripv.commands.SingleLineCommand;
 import org.ripv.naming.MailboxAddress;
 
 /**
@@ -102,6 +103,6 @@ public final class VehicleNames {
 
     /** The word as quoted in an error: short, and nothing that could pass for a line of its own. */
     private static String shown(String word) {
-        return org.ripv.commands.SingleLineCommand.shown(word);
+        return SingleLineCommand.shown(word);
     }
 }

@@ -1,5 +1,6 @@
 package org.ripv.server.web;
 
+import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import java.io.IOException;
@@ -8,6 +9,7 @@ import java.net.InetSocketAddress;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.eclipse.jetty.websocket.api.Callback;
 import org.eclipse.jetty.websocket.api.Session;
+import org.ripv.messages.Attachment;
 import org.ripv.messages.Header;
 import org.ripv.messages.IncomingServerMessage;
 import org.ripv.messages.OutgoingServerMessage;
@@ -87,11 +89,11 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
             if (c != null) {
                 Header h = Header.request(m.path("id").asLong(), m.path("mailbox").asText(""), m.path("body").asText(""),
                         Priority.parse(m.path("priority").asText("normal")));
-                org.ripv.messages.Attachment chunk = FileChunks.attachment(m);
+                Attachment chunk = FileChunks.attachment(m);
                 c.received(new IncomingServerMessage(chunk == null ? h : h.withAttachment(chunk)));
             }
         } catch (IOException | IllegalArgumentException e) {
-            sendText("{\"type\":\"error\",\"text\":" + quote("could not send: " + e.getMessage()) + "}", null);
+            sendText(error("could not send: " + e.getMessage()), null);
         }
     }
 
@@ -199,11 +201,12 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
         }
     }
 
-    private static String quote(String s) {
+    /** What a page is told when its message could not be sent: {@code {"type":"error","text":...}}. */
+    private static String error(String text) {
         try {
-            return JSON.writeValueAsString(s);
-        } catch (com.fasterxml.jackson.core.JsonProcessingException e) {
-            return "\"\"";
+            return JSON.writeValueAsString(JSON.createObjectNode().put("type", "error").put("text", text));
+        } catch (JsonProcessingException e) {
+            throw new IllegalStateException("an error could not be written as JSON", e);
         }
     }
 

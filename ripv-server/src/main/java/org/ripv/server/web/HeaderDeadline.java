@@ -5,10 +5,12 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
 import org.eclipse.jetty.io.Connection;
 import org.eclipse.jetty.server.Handler;
 import org.eclipse.jetty.server.Request;
 import org.eclipse.jetty.server.Response;
+import org.eclipse.jetty.server.internal.HttpConnection;
 import org.eclipse.jetty.util.Callback;
 
 /**
@@ -30,12 +32,12 @@ final class HeaderDeadline extends Handler.Wrapper implements Connection.Listene
 
     @Override
     public void onOpened(Connection connection) {
-        if (!(connection instanceof org.eclipse.jetty.server.internal.HttpConnection)) {
+        if (!(connection instanceof HttpConnection)) {
             return; // the TLS layer beneath: closing the HTTP connection's end point closes it too
         }
         waiting.put(connection, timer.schedule(() -> {
             if (waiting.remove(connection) != null) {
-                connection.getEndPoint().close(new java.util.concurrent.TimeoutException("no request headers within " + millis + " ms"));
+                connection.getEndPoint().close(new TimeoutException("no request headers within " + millis + " ms"));
             }
         }, millis, TimeUnit.MILLISECONDS));
     }

@@ -2,8 +2,10 @@ package org.ripv.server.web;
 
 import com.fasterxml.jackson.databind.ObjectMapper;
 import java.nio.charset.StandardCharsets;
+import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.Map;
+import java.util.concurrent.CompletableFuture;
 import org.eclipse.jetty.http.HttpHeader;
 import org.eclipse.jetty.io.Content;
 import org.eclipse.jetty.server.Handler;
@@ -36,7 +38,7 @@ final class LoginHandler extends Handler.Abstract {
         this.access = access;
         this.sessions = sessions;
         this.secure = secure;
-        this.pageSettings = java.util.Collections.unmodifiableMap(new LinkedHashMap<>(pageSettings));
+        this.pageSettings = Collections.unmodifiableMap(new LinkedHashMap<>(pageSettings));
     }
 
     @Override
@@ -132,10 +134,10 @@ final class LoginHandler extends Handler.Abstract {
     }
 
     /** The form's fields, read without holding a thread while a slow body arrives; at most {@link #MAX_FORM_BYTES}. */
-    private static java.util.concurrent.CompletableFuture<Fields> form(Request request) {
+    private static CompletableFuture<Fields> form(Request request) {
         long length = request.getLength();
         if (length < 0 || length > MAX_FORM_BYTES) {
-            return java.util.concurrent.CompletableFuture.failedFuture(
+            return CompletableFuture.failedFuture(
                     new IllegalArgumentException("a form of " + (length < 0 ? "unknown length" : length + " bytes") + "; at most " + MAX_FORM_BYTES + " are read"));
         }
         return Content.Source.asStringAsync(request, StandardCharsets.UTF_8).thenApply(body -> {
@@ -152,7 +154,7 @@ final class LoginHandler extends Handler.Abstract {
     private void session(Request request, Response response, Callback callback) throws Exception {
         Session s = sessions.find(request);
         if (s == null) {
-            Pages.send(response, callback, 401, "application/json", "{\"error\":\"log in first\"}");
+            Pages.send(response, callback, 401, "application/json", json.writeValueAsString(Map.of("error", "log in first")));
             return;
         }
         Map<String, Object> m = new LinkedHashMap<>(pageSettings);

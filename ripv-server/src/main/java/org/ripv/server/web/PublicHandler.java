@@ -1,5 +1,6 @@
 package org.ripv.server.web;
 
+import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import java.util.LinkedHashMap;
 import java.util.Map;
@@ -45,7 +46,7 @@ final class PublicHandler extends Handler.Abstract {
         fleet.vehicles().whenComplete((vehicles, failure) -> {
             if (failure != null) {
                 log.info("public view: {}", failure.toString());
-                Pages.send(response, callback, 503, "application/json", "{\"error\":\"the vehicles could not be read now; try again\"}");
+                Pages.send(response, callback, 503, "application/json", error("the vehicles could not be read now; try again"));
                 return;
             }
             Map<String, Object> m = new LinkedHashMap<>();
@@ -53,10 +54,15 @@ final class PublicHandler extends Handler.Abstract {
             m.put("vehicles", vehicles);
             try {
                 Pages.send(response, callback, 200, "application/json", json.writeValueAsString(m));
-            } catch (com.fasterxml.jackson.core.JsonProcessingException e) {
-                Pages.send(response, callback, 500, "application/json", "{\"error\":\"could not write the vehicles\"}");
+            } catch (JsonProcessingException e) {
+                Pages.send(response, callback, 500, "application/json", error("could not write the vehicles"));
             }
         });
         return true;
+    }
+
+    /** {@code {"error":TEXT}}, written by the same mapper (a constant text: it cannot fail to write). */
+    private String error(String text) {
+        return json.createObjectNode().put("error", text).toString();
     }
 }

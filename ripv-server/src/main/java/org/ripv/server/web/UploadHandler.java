@@ -7,7 +7,10 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashSet;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
+import java.util.Map;
 import java.util.Set;
 import java.util.UUID;
 import org.eclipse.jetty.http.HttpHeader;
@@ -18,7 +21,10 @@ import org.eclipse.jetty.server.Handler;
 import org.eclipse.jetty.server.Request;
 import org.eclipse.jetty.server.Response;
 import org.eclipse.jetty.util.Callback;
+import org.ripv.files.PrivateFiles;
+import org.ripv.server.files.FileExistsException;
 import org.ripv.server.files.FileNames;
+import org.ripv.server.files.FileTooLargeException;
 import org.ripv.server.web.WebSessions.Session;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -78,14 +84,14 @@ final class UploadHandler extends Handler.Abstract {
                     + " (use the upload form). Nothing was saved.");
             return true;
         }
-        Path parking = org.ripv.files.PrivateFiles.createDirectories(uploadDir.resolve(".ripv-form")); // 0700, as the rest
+        Path parking = PrivateFiles.createDirectories(uploadDir.resolve(".ripv-form")); // 0700, as the rest
         MultiPartConfig config = new MultiPartConfig.Builder().location(parking).maxParts(MAX_PARTS)
                 .maxSize(maxUploadBytes + FORM_OVERHEAD).maxPartSize(maxUploadBytes).maxMemoryPartSize(16 * 1024)
                 .maxHeadersSize(8 * 1024).build();
         MultiPartFormData.from(request, request, type, config).whenComplete((parts, failure) -> {
             if (failure != null) {
                 String why = String.valueOf(failure.getMessage());
-                boolean big = why.toLowerCase(java.util.Locale.ROOT).contains("max");
+                boolean big = why.toLowerCase(Locale.ROOT).contains("max");
                 Pages.fail(response, callback, big ? 413 : 400, big ? "Upload too large" : "Bad form data", (big
                         ? "The files are over this server's limit of " + maxUploadBytes + " bytes per upload (" + why + ")."
                         : "The form could not be read: " + why + ".") + " None of the files were saved.");
@@ -175,22 +181,22 @@ final class UploadHandler extends Handler.Abstract {
         // rules (quota, owners, never over another file) to all of them at once.
         List<Path> parked = new ArrayList<>();
         try {
-            java.util.Map<String, Path> byName = new java.util.LinkedHashMap<>();
+            Map<String, Path> byName = new LinkedHashMap<>();
             for (MultiPart.Part p : files) {
                 Path tmp = uploadDir.resolve(".ripv-form").resolve(UUID.randomUUID() + ".part");
                 parked.add(tmp);
                 p.writeTo(tmp); // inside the 0700 parking folder; owner-only before it is linked in
-                org.ripv.files.PrivateFiles.restrict(tmp);
+                PrivateFiles.restrict(tmp);
                 byName.put(p.getFileName(), tmp);
             }
             List<String> stored;
             try {
                 stored = store.store(s.user, byName);
-            } catch (org.ripv.server.files.FileExistsException e) {
+            } catch (FileExistsException e) {
                 discard(parked);
                 Pages.fail(response, callback, 409, "File exists", e.getMessage() + " The web page never replaces a file. None of the files were saved.");
                 return;
-            } catch (org.ripv.server.files.FileTooLargeException e) {
+            } catch (FileTooLargeException e) {
                 discard(parked);
                 Pages.fail(response, callback, 413, "Over your quota", e.getMessage() + ". None of the files were saved.");
                 return;

@@ -1,15 +1,21 @@
 package org.ripv.server.web;
 
 import java.io.IOException;
+import java.net.InetAddress;
 import java.net.InetSocketAddress;
+import java.net.URI;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
+import java.util.ArrayList;
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.Objects;
+import java.util.Set;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.TimeUnit;
 import java.util.function.Supplier;
 import javax.net.ssl.SSLContext;
 import org.eclipse.jetty.http.HttpVersion;
@@ -180,7 +186,7 @@ public final class WebConsole implements AutoCloseable {
             return t;
         });
         // An expired log-in's pages are closed within this, not only at their next request (issue 33 item 10).
-        timer.scheduleWithFixedDelay(sessions::sweep, SWEEP.toMillis(), SWEEP.toMillis(), java.util.concurrent.TimeUnit.MILLISECONDS);
+        timer.scheduleWithFixedDelay(sessions::sweep, SWEEP.toMillis(), SWEEP.toMillis(), TimeUnit.MILLISECONDS);
         HeaderDeadline deadline = new HeaderDeadline(null, HEADER_DEADLINE.toMillis(), timer);
         c.addBean(deadline);
         Handler served = new SecurityHeaders(handlers(s), options.tls() != null, tileOrigin(options.mapTiles()));
@@ -216,7 +222,7 @@ public final class WebConsole implements AutoCloseable {
         webjars.setBaseResource(resources.newClassLoaderResource("META-INF/resources/webjars/"));
         webjars.setDirAllowed(false);
         ContextHandler webjarContext = new ContextHandler(webjars, "/webjars");
-        java.util.List<Handler> chain = new java.util.ArrayList<>();
+        List<Handler> chain = new ArrayList<>();
         chain.add(new LandingHandler(options.status(), options.clientJar(), options.clientPort(), tls, sessions, options.access() != null,
                 options.uploads() && options.access() != null ? options.maxUploadBytes() : 0));
         if (options.access() != null) {
@@ -257,8 +263,8 @@ public final class WebConsole implements AutoCloseable {
                     return null;
                 }
                 // The browser's address, for the gate's per-address rules and the log lines.
-                java.net.InetAddress from = request.getConnectionMetaData().getRemoteSocketAddress() instanceof InetSocketAddress a
-                        && a.getAddress() != null ? a.getAddress() : java.net.InetAddress.getLoopbackAddress();
+                InetAddress from = request.getConnectionMetaData().getRemoteSocketAddress() instanceof InetSocketAddress a
+                        && a.getAddress() != null ? a.getAddress() : InetAddress.getLoopbackAddress();
                 return new ConsoleSocket(sessions, login, options.door(), pushJson, from);
             });
         });
@@ -270,7 +276,7 @@ public final class WebConsole implements AutoCloseable {
         if (template == null) {
             return null;
         }
-        java.net.URI u = java.net.URI.create(template.replaceAll("\\{[a-z]}", "0"));
+        URI u = URI.create(template.replaceAll("\\{[a-z]}", "0"));
         return u.getScheme() + "://" + u.getAuthority();
     }
 
@@ -287,7 +293,7 @@ public final class WebConsole implements AutoCloseable {
      * The permit file changed (issue 33 item 4): the sessions of {@code ended} users end (their pages
      * close); users in {@code roles} keep their sessions with the new roles.
      */
-    public void usersChanged(java.util.Set<String> ended, Map<String, java.util.List<String>> roles) {
+    public void usersChanged(Set<String> ended, Map<String, List<String>> roles) {
         sessions.usersChanged(ended, roles);
     }
 

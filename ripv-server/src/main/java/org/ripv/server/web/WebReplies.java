@@ -1,7 +1,10 @@
 package org.ripv.server.web;
 
+import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.util.List;
+import org.ripv.messages.ChartData;
 import org.ripv.messages.FileBundle;
 import org.ripv.messages.FileData;
 import org.ripv.messages.ImageResult;
@@ -35,7 +38,7 @@ final class WebReplies {
         }
         try {
             return json.writeValueAsString(n);
-        } catch (com.fasterxml.jackson.core.JsonProcessingException e) {
+        } catch (JsonProcessingException e) {
             throw new IllegalStateException("a reply could not be written as JSON", e);
         }
     }
@@ -57,8 +60,8 @@ final class WebReplies {
     record FileSummary(String name, long bytes) {}
 
     /** A plot without its JPEG, with the numbers it was drawn from (null from Octave or MATLAB) for the page's chart. */
-    record Picture(String name, long bytes, org.ripv.messages.ChartData chart) {}
+    record Picture(String name, long bytes, ChartData chart) {}
 
     /** The files a bundle carried, without their bytes. */
-    record Files(java.util.List<FileSummary> files) {}
+    record Files(List<FileSummary> files) {}
 }

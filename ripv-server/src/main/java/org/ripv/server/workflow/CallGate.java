@@ -3,6 +3,7 @@ package org.ripv.server.workflow;
 import java.util.Date;
 import java.util.concurrent.locks.Condition;
 import java.util.concurrent.locks.ReentrantLock;
+import java.util.function.LongSupplier;
 import org.ripv.messages.VehicleEvent;
 
 /**
@@ -50,7 +51,7 @@ final class CallGate {
      * Checks, and while the check says wait, sleeps until woken or {@code untilMillis()} (epoch ms).
      * Returns the check's answer, or {@code interrupted} when the thread is interrupted.
      */
-    <T> T await(Check<T> check, java.util.function.LongSupplier untilMillis, T interrupted) {
+    <T> T await(Check<T> check, LongSupplier untilMillis, T interrupted) {
         lock.lock();
         try {
             while (true) {

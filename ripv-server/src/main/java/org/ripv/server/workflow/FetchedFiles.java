@@ -3,6 +3,7 @@ package org.ripv.server.workflow;
 import java.io.IOException;
 import java.io.StringReader;
 import java.io.StringWriter;
+import java.util.Optional;
 import java.util.Properties;
 import org.ripv.server.store.StateStore;
 
@@ -20,7 +21,7 @@ final class FetchedFiles {
 
     private Properties read(String mailbox) throws IOException {
         Properties p = new Properties();
-        java.util.Optional<String> text = store.loadFetched(mailbox);
+        Optional<String> text = store.loadFetched(mailbox);
         if (text.isPresent()) {
             p.load(new StringReader(text.get()));
         }

@@ -1,5 +1,7 @@
 package org.ripv.server.workflow;
 
+import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.util.Optional;
 
 /**
@@ -61,8 +63,8 @@ final class LockTurn {
                 paused = true;
                 try {
                     workflows.queues.update(mailbox, e.id(), q -> q.with(QueuedWorkflow.State.PAUSED, step, ""));
-                } catch (java.io.IOException x) {
-                    throw new java.io.UncheckedIOException(x);
+                } catch (IOException x) {
+                    throw new UncheckedIOException(x);
                 }
                 workflows.announce(mailbox, e.owner(), "workflow " + e.id() + " '" + e.file() + "': paused before step "
                         + (step + 1) + ": " + (other == null ? "the lock is taken"

@@ -5,6 +5,7 @@ import java.nio.file.Path;
 import java.util.List;
 import org.ripv.server.store.EmbeddedStateStore;
 import org.ripv.server.store.StateStore;
+import org.ripv.text.Printable;
 
 /**
  * The receipts of every run, kept in the server's {@link StateStore} (embedded: one owner-only
@@ -29,7 +30,7 @@ final class Receipts {
     void write(Receipt r) throws IOException {
         // A notify text or a vehicle's reply may hold ESC, BEL or C1 (CSI, OSC): stored escaped, so `cat` of a receipt
         // file is text, never a terminal command (issue 33 item 10); line feeds and tabs stay.
-        store.saveReceipt(r.mailbox, r.fileName(), org.ripv.text.Printable.escape(r.render()), KEEP);
+        store.saveReceipt(r.mailbox, r.fileName(), Printable.escape(r.render()), KEEP);
     }
 
     /** The last {@code n} receipts of a MailBox, oldest first. */

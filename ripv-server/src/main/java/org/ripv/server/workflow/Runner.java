@@ -8,6 +8,7 @@ import java.util.Optional;
 import java.util.Set;
 import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.VehicleEvent;
+import org.ripv.patterns.UserPattern;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -150,7 +151,7 @@ final class Runner implements Runnable {
                 }
                 // A wait-for listens from before the step is shown as running, so no line slips past it.
                 Workflows.LineWaiter waiter = step.kind() == Step.Kind.WAIT_FOR
-                        ? workflows.waitFor(mailbox, org.ripv.patterns.UserPattern.compile("wait-for", step.text()).pattern()) : null;
+                        ? workflows.waitFor(mailbox, UserPattern.compile("wait-for", step.text()).pattern()) : null;
                 long t0;
                 Outcome o;
                 try {

@@ -1,6 +1,7 @@
 package org.ripv.server.workflow;
 
 import java.io.IOException;
+import java.nio.ByteBuffer;
 import java.nio.charset.CharacterCodingException;
 import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
@@ -273,7 +274,7 @@ final class WorkflowCommands {
         byte[] bytes = workflows.host.files().readUpload(name);
         try {
             return StandardCharsets.UTF_8.newDecoder().onMalformedInput(CodingErrorAction.REPORT)
-                    .onUnmappableCharacter(CodingErrorAction.REPORT).decode(java.nio.ByteBuffer.wrap(bytes)).toString();
+                    .onUnmappableCharacter(CodingErrorAction.REPORT).decode(ByteBuffer.wrap(bytes)).toString();
         } catch (CharacterCodingException e) {
             throw new WorkflowException(name, 0, "not UTF-8 text: a workflow file is text (docs/workflows.md)");
         }

@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.function.Predicate;
 import com.google.re2j.Pattern;
+import org.ripv.patterns.UserPattern;
 import org.ripv.server.files.FileNames;
 
 /**
@@ -240,7 +241,7 @@ public final class WorkflowParser {
         }
         try {
             // RE2/J: linear time, so no user's pattern stalls a thread (issue 23, item 3).
-            return org.ripv.patterns.UserPattern.compile("bad " + what + " regex", re).pattern();
+            return UserPattern.compile("bad " + what + " regex", re).pattern();
         } catch (IllegalArgumentException e) {
             throw new WorkflowException(file, n, e.getMessage());
         }

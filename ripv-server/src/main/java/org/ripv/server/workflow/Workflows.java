@@ -4,10 +4,15 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.ArrayBlockingQueue;
+import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
+import java.util.concurrent.RejectedExecutionException;
+import java.util.concurrent.ThreadPoolExecutor;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import com.google.re2j.Pattern;
 import org.ripv.messages.ConsoleEntry;
@@ -19,6 +24,7 @@ import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.Status;
 import org.ripv.messages.VehicleEvent;
 import org.ripv.server.files.FileNames;
+import org.ripv.server.store.StateStore;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -46,8 +52,8 @@ public final class Workflows implements AutoCloseable {
      * RMI thread carries every MailBox of the service, and no user's pattern may hold it (issue 23,
      * item 3). One thread, a bounded queue; lines beyond it are not matched and the drop is logged.
      */
-    private final java.util.concurrent.ThreadPoolExecutor lineMatcher = new java.util.concurrent.ThreadPoolExecutor(1, 1,
-            0, java.util.concurrent.TimeUnit.MILLISECONDS, new java.util.concurrent.ArrayBlockingQueue<>(4_096), r -> {
+    private final ThreadPoolExecutor lineMatcher = new ThreadPoolExecutor(1, 1,
+            0, TimeUnit.MILLISECONDS, new ArrayBlockingQueue<>(4_096), r -> {
                 Thread t = new Thread(r, "ripv-wait-for");
                 t.setDaemon(true);
                 return t;
@@ -61,13 +67,13 @@ public final class Workflows implements AutoCloseable {
     private volatile boolean closed;
 
     /** Someone waiting for a vehicle line ({@code wait-for}). */
-    record LineWaiter(String mailbox, Pattern regex, java.util.concurrent.CompletableFuture<String> seen) {}
+    record LineWaiter(String mailbox, Pattern regex, CompletableFuture<String> seen) {}
 
     /**
      * @param store where queues, receipts and the fetched-file lists are kept (the server's state store)
      * @param host  the server
      */
-    public Workflows(org.ripv.server.store.StateStore store, WorkflowHost host) throws IOException {
+    public Workflows(StateStore store, WorkflowHost host) throws IOException {
         this.host = host;
         this.queues = new WorkflowQueues(store);
         this.receipts = new Receipts(store);
@@ -202,7 +208,7 @@ public final class Workflows implements AutoCloseable {
                     log.warn("{}: cannot list what the call brought: {}", mailbox, x.toString());
                 }
             });
-        } catch (java.util.concurrent.RejectedExecutionException x) {
+        } catch (RejectedExecutionException x) {
             // stopping
         }
     }
@@ -246,7 +252,7 @@ public final class Workflows implements AutoCloseable {
     }
 
     LineWaiter waitFor(String mailbox, Pattern regex) {
-        LineWaiter w = new LineWaiter(mailbox, regex, new java.util.concurrent.CompletableFuture<>());
+        LineWaiter w = new LineWaiter(mailbox, regex, new CompletableFuture<>());
         waiters.add(w);
         return w;
     }
@@ -353,7 +359,7 @@ public final class Workflows implements AutoCloseable {
         lineMatcher.shutdownNow();
         threads.shutdown();
         try {
-            if (!threads.awaitTermination(2, java.util.concurrent.TimeUnit.SECONDS)) {
+            if (!threads.awaitTermination(2, TimeUnit.SECONDS)) {
                 threads.shutdownNow();
             }
         } catch (InterruptedException e) {

@@ -11,6 +11,7 @@ import java.util.Map;
 import java.util.Set;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import org.ripv.slocum.SlocumFiles;
 
 /**
  * A strict, streaming reader of Slocum DBA files ({@code dbd2asc} output, merged {@code .mrg}):
@@ -35,7 +36,7 @@ import java.util.regex.Pattern;
  */
 public final class DbaReader implements Cycles {
     /** The first line of every DBA file. */
-    public static final String LABEL = "dbd_label: DBD_ASC(dinkum_binary_data_ascii)file";
+    public static final String LABEL = SlocumFiles.DBA_LABEL;
     static final int MAX_HEADER_LINE = 4096;
     static final int MAX_TAGS = 1000;
     static final int MAX_SENSORS = 100_000;
@@ -73,17 +74,7 @@ public final class DbaReader implements Cycles {
 
     /** True when {@code start} (a file's first bytes) begins with the DBA label line. */
     public static boolean looksLikeDba(byte[] start) {
-        byte[] label = LABEL.getBytes(StandardCharsets.US_ASCII);
-        if (start.length < label.length + 1) {
-            return false;
-        }
-        for (int i = 0; i < label.length; i++) {
-            if (start[i] != label[i]) {
-                return false;
-            }
-        }
-        byte next = start[label.length];
-        return next == '\n' || next == '\r' || next == ' ' || next == '\t';
+        return SlocumFiles.isDba(start);
     }
 
     private Map<String, String> readTags() throws IOException, DbaFormatException {

@@ -2,10 +2,10 @@ package org.ripv.services.ingest;
 
 import java.io.IOException;
 import java.io.InputStream;
-import java.util.Locale;
 import net.jpountz.lz4.LZ4Exception;
 import net.jpountz.lz4.LZ4Factory;
 import net.jpountz.lz4.LZ4SafeDecompressor;
+import org.ripv.slocum.SlocumFiles;
 
 /**
  * The plain bytes of a compressed Slocum file ({@code .scd}, {@code .tcd}, {@code .dcd},
@@ -41,9 +41,7 @@ public final class Lz4BlockInputStream extends InputStream {
 
     /** True for the compressed extensions: the middle letter of a three-letter Slocum extension is 'c'. */
     public static boolean isCompressedName(String name) {
-        String n = name.toLowerCase(Locale.ROOT);
-        int dot = n.lastIndexOf('.');
-        return dot >= 0 && n.length() - dot == 4 && n.charAt(dot + 2) == 'c' && n.charAt(dot + 3) == 'd';
+        return SlocumFiles.isCompressedName(name);
     }
 
     @Override

@@ -11,6 +11,7 @@ import java.util.Locale;
 import java.util.Optional;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
+import org.ripv.slocum.SlocumFiles;
 
 /**
  * The shore's copy of the glider's sensor-list cache: one {@code CRC.cac} file a list, named by
@@ -42,13 +43,12 @@ public final class SensorListCache {
 
     /** True for a name such as {@code 6b016a2e.cac} or {@code 00CDA96E.CAC}. */
     public static boolean isCacheName(String name) {
-        String n = baseName(name).toLowerCase(Locale.ROOT);
-        return n.endsWith(".cac") && CRC.matcher(n.substring(0, n.length() - 4)).matches();
+        return SlocumFiles.isCacheName(name);
     }
 
     /** The name without a folder ({@code TTY1/6B016A2E.CAC} as the server stores fetched files). */
     static String baseName(String name) {
-        return name.substring(Math.max(name.lastIndexOf('/'), name.lastIndexOf('\\')) + 1);
+        return SlocumFiles.baseName(name);
     }
 
     /**

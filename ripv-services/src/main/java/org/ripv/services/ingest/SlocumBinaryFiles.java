@@ -6,32 +6,16 @@ import java.io.IOException;
 import java.io.OutputStreamWriter;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
+import org.ripv.slocum.SlocumFiles;
 
 /** Binary files on their way into {@link DbaIngest}: recognised by content or name, decoded cycle by cycle. */
 public final class SlocumBinaryFiles {
-    private static final byte[] LABEL = "dbd_label:".getBytes(StandardCharsets.US_ASCII);
-
     private SlocumBinaryFiles() {}
 
     /** True for a plain binary file (its first line is the binary label) or a compressed one by its name. */
     public static boolean isBinary(String name, byte[] data) {
-        if (Lz4BlockInputStream.isCompressedName(name)) {
-            return true;
-        }
-        if (data.length < 64) {
-            return SlocumBinaryReader.isBinaryName(name);
-        }
-        for (int i = 0; i < LABEL.length; i++) {
-            if (data[i] != LABEL[i]) {
-                return SlocumBinaryReader.isBinaryName(name);
-            }
-        }
-        int end = 0;
-        while (end < Math.min(data.length, 128) && data[end] != '\n') {
-            end++;
-        }
-        return new String(data, 0, end, StandardCharsets.ISO_8859_1).contains(SlocumBinaryReader.LABEL)
-                || SlocumBinaryReader.isBinaryName(name);
+        return SlocumFiles.isCompressedName(name) || data.length >= 64 && SlocumFiles.hasBinaryLabel(data)
+                || SlocumFiles.isBinaryName(name);
     }
 
     /**

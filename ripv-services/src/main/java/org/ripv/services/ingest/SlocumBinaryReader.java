@@ -10,6 +10,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import java.util.regex.Pattern;
+import org.ripv.slocum.SlocumFiles;
 
 /**
  * A strict, streaming decoder of Slocum binary data files ({@code .sbd}, {@code .tbd},
@@ -39,7 +40,7 @@ import java.util.regex.Pattern;
  */
 public final class SlocumBinaryReader implements AutoCloseable {
     /** The label line's value in every binary file. */
-    public static final String LABEL = "DBD(dinkum_binary_data)file";
+    public static final String LABEL = SlocumFiles.BINARY_LABEL;
     /** The only encoding the files in the field use (every glider firmware since the 2000s writes 5). */
     public static final int ENCODING = 5;
     static final int MAX_LINE = 512;
@@ -148,8 +149,7 @@ public final class SlocumBinaryReader implements AutoCloseable {
 
     /** True for the names of Slocum binary data files, plain or compressed ({@code .sbd}, {@code .tcd}, …). */
     public static boolean isBinaryName(String name) {
-        String n = name.toLowerCase(Locale.ROOT);
-        return n.matches(".*\\.[a-z][bc]d") && !n.endsWith(".mrg");
+        return SlocumFiles.isBinaryName(name);
     }
 
     /** The header's tags in file order. */

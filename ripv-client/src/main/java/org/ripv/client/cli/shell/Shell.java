@@ -23,6 +23,7 @@ import org.ripv.client.cli.CliSession;
 import org.ripv.client.cli.Reconnect;
 import org.ripv.client.handlers.ClientSocketHandler;
 import org.ripv.naming.MailboxAddress;
+import org.ripv.retry.Backoff;
 
 /**
  * The interactive {@code ripv cli} on a terminal: a prompt with user, server and MailBox
@@ -127,7 +128,7 @@ public final class Shell {
         }
         err.println("The connection to " + lost + " was lost; logging in again...");
         long end = System.nanoTime() + RECONNECT_FOR.toNanos();
-        long wait = 500;
+        Backoff backoff = new Backoff(Duration.ofMillis(500), Duration.ofMillis(5000));
         Exception last = null;
         while (System.nanoTime() < end) {
             try {
@@ -149,12 +150,11 @@ public final class Shell {
                 last = e;
             }
             try {
-                Thread.sleep(wait);
+                Thread.sleep(backoff.nextMillis());
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
                 break;
             }
-            wait = Math.min(wait * 2, 5000);
         }
         err.println("Error: could not log in again within " + RECONNECT_FOR.toSeconds() + " s"
                 + (last == null ? "" : ": " + last.getMessage()));

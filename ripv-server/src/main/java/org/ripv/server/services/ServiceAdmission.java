@@ -1,16 +1,25 @@
-package org.ripv.server;
+package org.ripv.server.services;
 
 import java.rmi.RemoteException;
 import java.rmi.ServerError;
 import java.rmi.ServerException;
 import java.security.SecureRandom;
+import java.time.Duration;
 import java.util.HexFormat;
 import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CompletionException;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.Executor;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
+import java.util.function.BiConsumer;
+import org.ripv.messages.MailboxStatus;
 import org.ripv.messages.ServiceDescriptor;
 import org.ripv.naming.NameTaken;
 import org.ripv.naming.ServiceName;
 import org.ripv.rmi.GenericRMIInterface;
-import org.ripv.server.services.ServiceReference;
+import org.ripv.server.session.ConsoleHub;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -22,14 +31,46 @@ import org.slf4j.LoggerFactory;
  * replace, or another running service holds the name: a second process of one name is refused
  * ({@link NameTaken}) while the first answers its heartbeat, and takes over only once it does not.
  */
-final class ServiceAdmission {
+public final class ServiceAdmission {
     private static final Logger log = LoggerFactory.getLogger(ServiceAdmission.class);
     private static final SecureRandom RANDOM = new SecureRandom();
     /** How long the call-back at registration may take. */
-    static final java.time.Duration CALLBACK_DEADLINE =
-            java.time.Duration.ofMillis(Long.getLong("ripv.service.callbackMillis", 5_000));
+    public static final Duration CALLBACK_DEADLINE =
+            Duration.ofMillis(Long.getLong("ripv.service.callbackMillis", 5_000));
 
-    private ServiceAdmission() {}
+    /** What the server does once a service's MailBoxes are known after it registered. */
+    @FunctionalInterface
+    public interface Arrival {
+        /**
+         * @param name    the service's full name
+         * @param started when the service instance started (its descriptor says)
+         * @param boxes   the MailBoxes it lists that no other service claims
+         */
+        void online(String name, long started, List<String> boxes);
+    }
+
+    private final ServiceRegistry registry;
+    private final ServiceLiveness liveness;
+    private final Executor checkers;
+    private final ServiceReference.Failure undeliverable;
+    private final BiConsumer<ServiceReference, String> drop;
+    private final Arrival arrival;
+
+    /**
+     * @param checkers      where the call-back and the MailBox listing run
+     * @param undeliverable told of a request whose call to its service failed
+     * @param drop          told of a registration replaced by a new one of the same service
+     * @param arrival       told of the MailBoxes a newly registered service lists
+     */
+    public ServiceAdmission(ServiceRegistry registry, ServiceLiveness liveness, Executor checkers,
+                            ServiceReference.Failure undeliverable, BiConsumer<ServiceReference, String> drop, Arrival arrival) {
+        this.registry = registry;
+        this.liveness = liveness;
+        this.checkers = checkers;
+        this.undeliverable = undeliverable;
+        this.drop = drop;
+        this.arrival = arrival;
+    }
 
     /**
      * Calls the service back, then registers it.
@@ -37,47 +78,42 @@ final class ServiceAdmission {
      * @return the session token
      * @throws IllegalStateException when the service cannot be reached or a newer registration won
      */
-    static String admit(RIPVServer server, ServiceDescriptor d, GenericRMIInterface service) {
+    public String admit(ServiceDescriptor d, GenericRMIInterface service) {
         byte[] t = new byte[24];
         RANDOM.nextBytes(t);
-        return admit(server, d, service, HexFormat.of().formatHex(t));
+        return admit(d, service, HexFormat.of().formatHex(t));
     }
 
-    /** As {@link #admit(RIPVServer, ServiceDescriptor, GenericRMIInterface)} with the session token both sides derived. */
-    static String admit(RIPVServer server, ServiceDescriptor d, GenericRMIInterface service, String token) {
+    /** As {@link #admit(ServiceDescriptor, GenericRMIInterface)} with the session token both sides derived. */
+    public String admit(ServiceDescriptor d, GenericRMIInterface service, String token) {
         if (d == null || service == null) {
             throw new IllegalArgumentException("a registration needs a descriptor and the service's stub");
         }
         ServiceName.parse(d.name());
         try {
-            callBack(d, service, server.checkers());
+            callBack(d, service, checkers);
         } catch (IllegalStateException e) {
-            server.liveness().refused(d.name(), "cannot call it back at " + ServiceReference.addressOf(service));
+            liveness.refused(d.name(), "cannot call it back at " + ServiceReference.addressOf(service));
             throw e;
         }
-        refuseIfHeld(server, d);
-        ServiceReference ref = new ServiceReference(d, service, token, server::undeliverable,
-                d.registration());
-        ServiceReference[] replaced = new ServiceReference[1];
-        ServiceReference now = server.serviceMap().compute(d.name(), (name, old) -> {
-            if (old != null && d.registration() != 0 && old.order() > d.registration()) {
-                return old; // a newer registration of this service is in force
-            }
-            replaced[0] = old;
-            return ref;
-        });
+        refuseIfHeld(d);
+        ServiceReference ref = new ServiceReference(d, service, token, undeliverable, d.registration());
+        // a newer registration of this service in force stays
+        ServiceRegistry.Replacement r = registry.put(ref,
+                (old, young) -> d.registration() != 0 && old.order() > d.registration() ? old : young);
+        ServiceReference now = r.now();
         if (now != ref) {
             ref.close();
             log.warn("refused a late registration of {} (attempt of {}; the one in force began at {})", d.name(),
                     d.registration(), now.order());
             throw new IllegalStateException("superseded: a newer registration of " + d.name() + " is in force");
         }
-        if (replaced[0] != null) {
-            server.drop(replaced[0], "registered again");
+        if (r.replaced() != null) {
+            drop.accept(r.replaced(), "registered again");
         }
-        server.liveness().registered(d.name());
+        liveness.registered(d.name());
         log.info("{} registered from {} ({})", ref, ref.address(), d.description());
-        reconcileCalls(server, ref, d.started());
+        reconcileCalls(ref, d.started());
         return ref.token();
     }
 
@@ -86,13 +122,13 @@ final class ServiceAdmission {
      * still answers; one that does not answer is taken over. The same instance registering again
      * (a heartbeat the server did not know, a restarted server) is not held back.
      */
-    private static void refuseIfHeld(RIPVServer server, ServiceDescriptor d) {
-        ServiceReference old = server.serviceMap().get(d.name());
+    private void refuseIfHeld(ServiceDescriptor d) {
+        ServiceReference old = registry.find(d.name()).orElse(null);
         if (old == null || d.started() == 0 || old.descriptor().started() == 0 || old.descriptor().started() == d.started()) {
             return;
         }
         try {
-            callBack(old.descriptor(), old.stub(), server.checkers());
+            callBack(old.descriptor(), old.stub(), checkers);
         } catch (IllegalStateException gone) {
             log.warn("{}: the service registered at {} no longer answers; the new registration takes over the name",
                     d.name(), old.address());
@@ -100,7 +136,7 @@ final class ServiceAdmission {
         }
         String why = NameTaken.refusal(d.name(), old.address(), old.order(), old.descriptor().started());
         log.warn("refused a second service named {}: {}", d.name(), why);
-        server.liveness().refused(d.name(), "its name is held by the running service at " + old.address());
+        liveness.refused(d.name(), "its name is held by the running service at " + old.address());
         throw new IllegalStateException(why);
     }
 
@@ -111,25 +147,11 @@ final class ServiceAdmission {
      * together, say), so those calls are lost; the queued workflows of calls still open (a
      * server started again, or a standby that took over, while the service kept running) run now.
      */
-    /** Moves download folders from before they were per address to each MailBox's own (FileStore#adopt). */
-    private static void adoptFolders(RIPVServer server, List<String> boxes) {
-        for (String mb : boxes) {
-            try {
-                server.files().adopt(mb);
-            } catch (java.io.IOException | RuntimeException e) {
-                log.warn("could not make the download folder of {}: {}", mb, e.toString());
-            }
-        }
-    }
-
-    private static void reconcileCalls(RIPVServer server, ServiceReference ref, long started) {
+    private void reconcileCalls(ServiceReference ref, long started) {
         String name = ref.descriptor().name();
-        ref.mailboxes(server.checkers(), CALLBACK_DEADLINE).thenAccept(list -> {
-            List<String> boxes = org.ripv.server.session.ConsoleHub.claimed(name,
-                    list.stream().map(org.ripv.messages.MailboxStatus::address).toList());
-            server.workflows().onConsole(name, server.sessions().console().serviceStarted(name, started, boxes));
-            server.workflows().serviceOnline(boxes);
-            adoptFolders(server, boxes);
+        ref.mailboxes(checkers, CALLBACK_DEADLINE).thenAccept(list -> {
+            List<String> boxes = ConsoleHub.claimed(name, list.stream().map(MailboxStatus::address).toList());
+            arrival.online(name, started, boxes);
         }).exceptionally(e -> {
             log.info("could not list the MailBoxes of {} to square its calls with it: {}", name, e.toString());
             return null;
@@ -141,24 +163,24 @@ final class ServiceAdmission {
      * itself will do), within {@link #CALLBACK_DEADLINE} — well inside the service's own wait for
      * the registration to return.
      */
-    static void callBack(ServiceDescriptor d, GenericRMIInterface service, java.util.concurrent.Executor pool) {
+    static void callBack(ServiceDescriptor d, GenericRMIInterface service, Executor pool) {
         String address = ServiceReference.addressOf(service);
-        java.util.concurrent.CompletableFuture<Boolean> probe = java.util.concurrent.CompletableFuture.supplyAsync(() -> {
+        CompletableFuture<Boolean> probe = CompletableFuture.supplyAsync(() -> {
             try {
                 return service.heartbeat("probe");
             } catch (RemoteException e) {
-                throw new java.util.concurrent.CompletionException(e);
+                throw new CompletionException(e);
             }
         }, pool);
         try {
-            probe.get(CALLBACK_DEADLINE.toMillis(), java.util.concurrent.TimeUnit.MILLISECONDS);
-        } catch (java.util.concurrent.TimeoutException e) {
+            probe.get(CALLBACK_DEADLINE.toMillis(), TimeUnit.MILLISECONDS);
+        } catch (TimeoutException e) {
             probe.cancel(true);
             throw refused(d, address, "timed out after " + CALLBACK_DEADLINE.toMillis() + " ms");
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             throw refused(d, address, "interrupted");
-        } catch (java.util.concurrent.ExecutionException e) {
+        } catch (ExecutionException e) {
             Throwable t = e.getCause();
             if (t instanceof ServerException || t instanceof ServerError || t instanceof UnsupportedOperationException
                     || t instanceof SecurityException) {
@@ -174,7 +196,7 @@ final class ServiceAdmission {
     }
 
     /** What the service prints: the address tried and what to set. */
-    static String refusal(String name, String address, String why) {
+    public static String refusal(String name, String address, String why) {
         String port = address.contains(":") ? address.substring(address.lastIndexOf(':') + 1) : "its export port";
         return "the server could not call " + name + " back at " + address + " (" + why + "). The server must reach the"
                 + " service there: set --host to a name or address of this host that the server can reach, fix the port"

@@ -1,4 +1,4 @@
-package org.ripv.server;
+package org.ripv.server.requests;
 
 import java.io.IOException;
 import java.util.List;
@@ -8,6 +8,7 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Consumer;
+import java.util.function.Supplier;
 import org.ripv.messages.Attachment;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.Footer;
@@ -22,34 +23,47 @@ import org.ripv.messages.TableResult;
 import org.ripv.naming.MailboxAddress;
 import org.ripv.naming.MalformedNameException;
 import org.ripv.server.dataloop.ServiceCalls;
+import org.ripv.server.files.DownloadAttachments;
+import org.ripv.server.files.DownloadRights;
+import org.ripv.server.files.FileStore;
+import org.ripv.server.permit.PermitFile;
+import org.ripv.server.permit.SecurityRefusal;
 import org.ripv.server.services.ServiceReference;
+import org.ripv.server.services.ServiceRegistry;
 
 /**
  * The server's own requests to services ({@link ServiceCalls}): forwarded like a client's, with
- * client id {@code 000000}; {@link RIPVServer#reply} hands their replies here instead of to a socket.
+ * client id {@code 000000}; the server's outbox hands their replies here instead of to a socket.
  */
-final class InternalCalls implements ServiceCalls {
+public final class InternalCalls implements ServiceCalls {
     /** One of our requests: its future, its progress reports, and the pages of a table it is receiving. */
     private record Waiter(CompletableFuture<Footer> done, Consumer<Footer> progress, TablePages pages) {}
 
-    private final RIPVServer server;
+    private final ServiceRegistry services;
+    private final Supplier<PermitFile> permits;
+    private final FileStore files;
+    private final RequestForwarder forwarder;
     private final AtomicLong ids = new AtomicLong();
     private final Map<Long, Waiter> waiting = new ConcurrentHashMap<>();
 
-    InternalCalls(RIPVServer server) {
-        this.server = server;
+    public InternalCalls(ServiceRegistry services, Supplier<PermitFile> permits, FileStore files, RequestForwarder forwarder) {
+        this.services = services;
+        this.permits = permits;
+        this.files = files;
+        this.forwarder = forwarder;
     }
 
     @Override
     public List<String> services(String sid) {
-        return server.services().stream().filter(r -> r.descriptor().sid().equals(sid)).map(r -> r.descriptor().name()).toList();
+        return services.all().stream().filter(r -> r.descriptor().sid().equals(sid)).map(r -> r.descriptor().name()).toList();
     }
 
     @Override
     public boolean permitted(String user, String mailbox, String body) {
         try {
             MailboxAddress a = MailboxAddress.parse(mailbox);
-            return server.permits().user(user).map(u -> server.permits().decide(u, a.service().service(), a.handle(), body)
+            PermitFile p = permits.get();
+            return p.user(user).map(u -> p.decide(u, a.service().service(), a.handle(), body)
                     .allowed()).orElse(false);
         } catch (MalformedNameException e) {
             return false;
@@ -67,7 +81,7 @@ final class InternalCalls implements ServiceCalls {
             done.complete(Footer.error(Ids.FID_NONE, ErrorCode.UNKNOWN_MAILBOX, e.getMessage()));
             return done;
         }
-        Optional<ServiceReference> ref = server.service(address.service().toString());
+        Optional<ServiceReference> ref = services.find(address.service().toString());
         if (ref.isEmpty()) {
             done.complete(Footer.error(Ids.FID_NONE, ErrorCode.UNKNOWN_SERVICE, "no service " + address.service()
                     + " is registered"));
@@ -76,9 +90,9 @@ final class InternalCalls implements ServiceCalls {
         Attachment a = attachment;
         if (a == null) {
             try {
-                a = DownloadAttachments.forCommand(server.files(), ref.get().descriptor(), body,
-                        name -> DownloadRights.check(server.files(), server.permits(), user, name));
-            } catch (ServerCommands.SecurityRefusal e) {
+                a = DownloadAttachments.forCommand(files, ref.get().descriptor(), body,
+                        name -> DownloadRights.check(files, permits.get(), user, name));
+            } catch (SecurityRefusal e) {
                 done.complete(Footer.error(ref.get().descriptor().sid(), ErrorCode.FORBIDDEN, e.getMessage()));
                 return done;
             } catch (IOException | IllegalArgumentException e) {
@@ -90,12 +104,12 @@ final class InternalCalls implements ServiceCalls {
         waiting.put(id, new Waiter(done, progress == null ? f -> { } : progress, new TablePages()));
         Header h = new Header(id, new IdBadge(IdBadge.SERVER.clientId(), user), roles, ref.get().descriptor().name(), mailbox,
                 body, Priority.NORMAL, a);
-        server.forward(ref.get(), new IncomingServiceMessage(h));
+        forwarder.forward(ref.get(), new IncomingServiceMessage(h));
         return done;
     }
 
     /** Takes a reply meant for one of our requests; false when it is a client's. */
-    boolean accept(OutgoingServerMessage reply) {
+    public boolean accept(OutgoingServerMessage reply) {
         if (!reply.header().origin().clientId().equals(IdBadge.SERVER.clientId())) {
             return false;
         }

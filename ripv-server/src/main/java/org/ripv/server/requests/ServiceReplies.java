@@ -1,8 +1,11 @@
-package org.ripv.server;
+package org.ripv.server.requests;
 
 import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
+import java.util.function.Consumer;
+import java.util.function.Function;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.FileBundle;
 import org.ripv.messages.FileData;
@@ -14,10 +17,14 @@ import org.ripv.messages.IncomingServerMessage;
 import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.OutgoingServiceMessage;
 import org.ripv.messages.Result;
+import org.ripv.messages.Status;
 import org.ripv.messages.TablePages;
+import org.ripv.server.dataloop.DataLoop;
+import org.ripv.server.files.FileStore;
+import org.ripv.server.handlers.SocketHandler;
 import org.ripv.server.paging.PageRelay;
-import org.ripv.server.requests.PendingRequests;
 import org.ripv.server.services.ServiceReference;
+import org.ripv.server.workflow.Workflows;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -26,15 +33,35 @@ import org.slf4j.LoggerFactory;
  * request the server forwarded, and any files in it are stored in the download directory before
  * the reply is posted to the RIPV Post Office's outbox for its client.
  */
-final class ServiceReplies {
+public final class ServiceReplies {
     private static final Logger log = LoggerFactory.getLogger(ServiceReplies.class);
 
     /** Pages of query results on their way to clients (issue 38); its threads end when idle, so one serves every server in the JVM. */
     private static final PageRelay PAGES = new PageRelay();
 
-    private ServiceReplies() {}
+    private final PendingRequests pending;
+    private final RequestCancels cancels;
+    private final FileStore files;
+    private final DataLoop dataLoop;
+    private final Consumer<OutgoingServerMessage> outbox;
+    private final Function<String, Optional<SocketHandler>> clients;
 
-    static void accept(RIPVServer server, ServiceReference ref, OutgoingServiceMessage reply, PendingRequests pending) {
+    /**
+     * @param dataLoop takes the replies whose files go to the database first
+     * @param outbox   where the replies go (the Post Office's outbox)
+     */
+    public ServiceReplies(PendingRequests pending, RequestCancels cancels, FileStore files, DataLoop dataLoop,
+                          Consumer<OutgoingServerMessage> outbox, Function<String, Optional<SocketHandler>> clients) {
+        this.pending = pending;
+        this.cancels = cancels;
+        this.files = files;
+        this.dataLoop = dataLoop;
+        this.outbox = outbox;
+        this.clients = clients;
+    }
+
+    /** A reply from {@code ref}, as its service called it back. */
+    public void accept(ServiceReference ref, OutgoingServiceMessage reply) {
         String service = ref.descriptor().name();
         PendingRequests.Pending p = reply.status().isFinal() ? pending.complete(reply.header(), service)
                 : pending.touch(reply.header(), service);
@@ -48,18 +75,18 @@ final class ServiceReplies {
             f = new Footer(ref.descriptor().sid(), f.status(), f.errorCode(), f.route(), f.replyText(), f.result());
         }
         Result sent = f.result();
-        f = store(server, f, folderOf(p.header().mailboxAddress()));
-        f = server.cancels().judge(p, f);
+        f = store(f, folderOf(p.header().mailboxAddress()));
+        f = cancels.judge(p, f);
         // Route by the header the server sent, never by what the service wrote back.
-        OutgoingServerMessage out = new IncomingServerMessage(p.header()).reply(f.via(RIPVServer.SERVER_SERVICE));
+        OutgoingServerMessage out = new IncomingServerMessage(p.header()).reply(f.via(ServerReplies.SERVICE));
         if (TablePages.isPage(f)) {
             String clientId = p.header().origin().clientId();
-            PAGES.relay(out, ref, server::client, IdBadge.SERVER.clientId().equals(clientId)
-                    || org.ripv.server.workflow.Workflows.isWorkflowClient(clientId), server::reply);
+            PAGES.relay(out, ref, clients, IdBadge.SERVER.clientId().equals(clientId) || Workflows.isWorkflowClient(clientId),
+                    outbox);
             return;
         }
-        if (!server.dataLoop().downloaded(out, sent, server::reply)) { // DBA files go to the database first
-            server.reply(out);
+        if (!dataLoop.downloaded(out, sent, outbox)) { // DBA files go to the database first
+            outbox.accept(out);
         }
     }
 
@@ -72,31 +99,31 @@ final class ServiceReplies {
      * Writes files from a reply into the MailBox's folder of the download directory and replaces
      * their bytes with a listing of the names they are fetched by ({@code FOLDER/NAME}).
      */
-    private static Footer store(RIPVServer server, Footer f, String folder) {
+    private Footer store(Footer f, String folder) {
         Result r = f.result();
-        List<FileData> files = r instanceof FileData d ? List.of(d) : r instanceof FileBundle b ? b.files() : List.of();
+        List<FileData> parts = r instanceof FileData d ? List.of(d) : r instanceof FileBundle b ? b.files() : List.of();
         try {
             if (r instanceof ImageResult img) {
-                String as = server.files().storeDownload(folder, img.name(), img.jpeg());
+                String as = files.storeDownload(folder, img.name(), img.jpeg());
                 return f.withText(storedAs(f.replyText(), List.of(as)));
             }
-            if (files.isEmpty()) {
+            if (parts.isEmpty()) {
                 return f;
             }
             List<FileListing.Entry> stored = new ArrayList<>();
             List<String> names = new ArrayList<>();
-            for (FileData d : files) {
+            for (FileData d : parts) {
                 if (d.offset() != 0 || !d.isLast()) {
                     throw new IOException("a service sent part of '" + d.name() + "' where a whole file belongs");
                 }
-                String as = server.files().storeDownload(folder, d.name(), d.data());
+                String as = files.storeDownload(folder, d.name(), d.data());
                 names.add(as);
                 stored.add(new FileListing.Entry(as, d.data().length, System.currentTimeMillis()));
             }
             return f.withText(storedAs(f.replyText(), names)).withResult(new FileListing("download", stored));
         } catch (IOException | IllegalArgumentException e) {
             log.warn("could not store a file from a reply: {}", e.getMessage());
-            return new Footer(f.serviceId(), org.ripv.messages.Status.ERROR, ErrorCode.TRANSFER_FAILED, f.route(),
+            return new Footer(f.serviceId(), Status.ERROR, ErrorCode.TRANSFER_FAILED, f.route(),
                     (f.replyText().isEmpty() ? "" : f.replyText() + "\n") + "the server could not store the file: " + e.getMessage(),
                     null);
         }

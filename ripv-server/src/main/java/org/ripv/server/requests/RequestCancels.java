@@ -1,9 +1,11 @@
-package org.ripv.server;
+package org.ripv.server.requests;
 
 import java.rmi.RemoteException;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.function.Consumer;
+import java.util.function.Supplier;
 import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.Footer;
@@ -13,8 +15,8 @@ import org.ripv.messages.IncomingServerMessage;
 import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.Status;
 import org.ripv.server.permit.PermitFile;
-import org.ripv.server.requests.PendingRequests;
 import org.ripv.server.services.ServiceReference;
+import org.ripv.server.services.ServiceRegistry;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -25,10 +27,14 @@ import org.slf4j.LoggerFactory;
  * CANCELLED naming who cancelled. The user who sent a request may cancel it; cancelling anyone
  * else's needs a permit rule allowing the {@code ?cancel} command on RIPVServer.
  */
-final class RequestCancels {
+public final class RequestCancels {
     private static final Logger log = LoggerFactory.getLogger(RequestCancels.class);
 
-    private final RIPVServer server;
+    private final PendingRequests pending;
+    private final ServiceRegistry services;
+    private final Supplier<PermitFile> permits;
+    private final Consumer<OutgoingServerMessage> outbox;
+    private final Consumer<ConsoleEntry> console;
     /** Requests someone asked to cancel while they ran, by pending key: who asked, and when. */
     private final Map<String, Asked> cancelledBy = new ConcurrentHashMap<>();
     /** A cancel whose request then ended another way (timeout, service gone) is forgotten after this. */
@@ -36,15 +42,24 @@ final class RequestCancels {
 
     private record Asked(String user, long at) {}
 
-    RequestCancels(RIPVServer server) {
-        this.server = server;
+    /**
+     * @param outbox  where the server's replies go (the Post Office's outbox)
+     * @param console where the server's own console entries go (who cancelled what)
+     */
+    public RequestCancels(PendingRequests pending, ServiceRegistry services, Supplier<PermitFile> permits,
+                          Consumer<OutgoingServerMessage> outbox, Consumer<ConsoleEntry> console) {
+        this.pending = pending;
+        this.services = services;
+        this.permits = permits;
+        this.outbox = outbox;
+        this.console = console;
     }
 
     /** What the canceller hears back. */
-    record Outcome(boolean ok, ErrorCode code, String text) {}
+    public record Outcome(boolean ok, ErrorCode code, String text) {}
 
     /** Runs {@code ?cancel}; off the Post Office's thread (it may call the service). */
-    OutgoingServerMessage command(IncomingServerMessage request) {
+    public OutgoingServerMessage command(IncomingServerMessage request) {
         String[] w = request.header().body().trim().split("\\s+");
         String user = request.header().origin().user();
         if (w.length < 2 || w.length > 3) {
@@ -58,13 +73,13 @@ final class RequestCancels {
         }
         PendingRequests.Pending p;
         if (w.length == 3) {
-            p = server.pending().get(w[2], id);
+            p = pending.get(w[2], id);
         } else {
-            p = server.pending().get(request.header().origin().clientId(), id);
+            p = pending.get(request.header().origin().clientId(), id);
             if (p == null) {
-                List<PendingRequests.Pending> mine = server.pending().withMessageId(id).stream()
+                List<PendingRequests.Pending> mine = pending.withMessageId(id).stream()
                         .filter(x -> x.header().origin().user().equals(user)).toList();
-                List<PendingRequests.Pending> any = mine.isEmpty() ? server.pending().withMessageId(id) : mine;
+                List<PendingRequests.Pending> any = mine.isEmpty() ? pending.withMessageId(id) : mine;
                 if (any.size() > 1) {
                     return error(request, ErrorCode.BAD_REQUEST, any.size() + " requests #" + id + " are running, from clients "
                             + any.stream().map(x -> x.header().origin().clientId()).toList() + "; say which: ?cancel " + id
@@ -79,8 +94,8 @@ final class RequestCancels {
         }
         String owner = p.header().origin().user();
         if (!owner.equals(user)) {
-            PermitFile permits = server.permits();
-            PermitFile.Decision d = permits.user(user).map(u -> permits.decide(u, RIPVServer.SERVER_SERVICE, "",
+            PermitFile permits = this.permits.get();
+            PermitFile.Decision d = permits.user(user).map(u -> permits.decide(u, ServerReplies.SERVICE, "",
                     request.header().body().trim())).orElse(new PermitFile.Decision(false, "not in the permit file"));
             if (!d.allowed()) {
                 return error(request, ErrorCode.FORBIDDEN, "request #" + id + " is " + owner + "'s; user '" + user
@@ -88,20 +103,20 @@ final class RequestCancels {
             }
         }
         Outcome o = cancel(p, user);
-        return o.ok() ? request.reply(Footer.ok(Ids.FID_CANCEL, o.text(), null).via(RIPVServer.SERVER_SERVICE))
+        return o.ok() ? request.reply(Footer.ok(Ids.FID_CANCEL, o.text(), null).via(ServerReplies.SERVICE))
                 : error(request, o.code(), o.text());
     }
 
     /** Cancels a request by its sender's client id and message id (a workflow step that timed out). */
-    Outcome cancel(String clientId, long messageId, String byUser) {
-        PendingRequests.Pending p = server.pending().get(clientId, messageId);
+    public Outcome cancel(String clientId, long messageId, String byUser) {
+        PendingRequests.Pending p = pending.get(clientId, messageId);
         return p == null ? new Outcome(false, ErrorCode.BAD_REQUEST, "not pending") : cancel(p, byUser);
     }
 
     private Outcome cancel(PendingRequests.Pending p, String byUser) {
         Header h = p.header();
         String what = "#" + h.messageId() + " '" + Header.abbreviate(h.body()) + "' on " + h.mailboxAddress();
-        ServiceReference ref = server.service(p.service()).orElse(null);
+        ServiceReference ref = services.find(p.service()).orElse(null);
         if (ref == null) {
             return new Outcome(false, ErrorCode.SERVICE_GONE, p.service() + " is no longer registered");
         }
@@ -112,10 +127,10 @@ final class RequestCancels {
         try {
             if (ref.withdraw(h)) {
                 cancelledBy.remove(key);
-                if (server.pending().complete(h, p.service()) != null) {
-                    server.reply(new IncomingServerMessage(h).reply(Footer.error(ref.descriptor().sid(), ErrorCode.CANCELLED,
+                if (pending.complete(h, p.service()) != null) {
+                    outbox.accept(new IncomingServerMessage(h).reply(Footer.error(ref.descriptor().sid(), ErrorCode.CANCELLED,
                             "'" + Header.abbreviate(h.body()) + "' was cancelled by " + byUser + " before it ran")
-                            .via(RIPVServer.SERVER_SERVICE)));
+                            .via(ServerReplies.SERVICE)));
                 }
                 log.info("{} cancelled {} of {} before it ran", byUser, what, h.origin().user());
                 transcript(h, byUser, "before it ran");
@@ -140,7 +155,7 @@ final class RequestCancels {
     /** The MailBox's console and transcript say who cancelled what, and whose it was. */
     private void transcript(Header h, String byUser, String when) {
         try {
-            server.publishServerEntry(ConsoleEntry.command(h.mailboxAddress(), byUser, "?cancel #" + h.messageId() + " '"
+            console.accept(ConsoleEntry.command(h.mailboxAddress(), byUser, "?cancel #" + h.messageId() + " '"
                     + Header.abbreviate(h.body()) + "' of " + h.origin().user() + " (" + when + ")"));
         } catch (RuntimeException e) {
             log.warn("could not note the cancel of #{} in the console of {}: {}", h.messageId(), h.mailboxAddress(), e.toString());
@@ -148,7 +163,7 @@ final class RequestCancels {
     }
 
     /** A final reply to a request someone cancelled: an ERROR becomes CANCELLED and names them. */
-    Footer judge(PendingRequests.Pending p, Footer f) {
+    public Footer judge(PendingRequests.Pending p, Footer f) {
         if (!f.status().isFinal()) {
             return f;
         }
@@ -163,6 +178,6 @@ final class RequestCancels {
     }
 
     private static OutgoingServerMessage error(IncomingServerMessage request, ErrorCode code, String text) {
-        return request.reply(Footer.error(Ids.FID_CANCEL, code, text).via(RIPVServer.SERVER_SERVICE));
+        return request.reply(Footer.error(Ids.FID_CANCEL, code, text).via(ServerReplies.SERVICE));
     }
 }

@@ -1,4 +1,4 @@
-package org.ripv.server;
+package org.ripv.server.files;
 
 import java.io.IOException;
 import java.util.ArrayList;
@@ -6,8 +6,6 @@ import java.util.List;
 import java.util.Locale;
 import org.ripv.messages.Attachment;
 import org.ripv.messages.ServiceDescriptor;
-import org.ripv.server.files.FileStore;
-import org.ripv.server.files.FileTooLargeException;
 
 /**
  * Attaches download-directory files to a command whose first word is one of the service's
@@ -15,7 +13,7 @@ import org.ripv.server.files.FileTooLargeException;
  * every argument up to the first {@code option=value} names a file, and all of them travel as one
  * {@link Attachment#bundle}.
  */
-final class DownloadAttachments {
+public final class DownloadAttachments {
     /** The most one command may attach, all files together. */
     static final long MAX_TOTAL = 256L * 1024 * 1024;
     static final int MAX_FILES = 1000;
@@ -24,12 +22,12 @@ final class DownloadAttachments {
 
     /** The requester's right to one file ({@link DownloadRights}). */
     @FunctionalInterface
-    interface Check {
+    public interface Check {
         void check(String name) throws IOException;
     }
 
     /** The bundle for {@code body}, or null when its first word is no download prefix of the service. */
-    static Attachment forCommand(FileStore files, ServiceDescriptor d, String body, Check rights) throws IOException {
+    public static Attachment forCommand(FileStore files, ServiceDescriptor d, String body, Check rights) throws IOException {
         if (d.downloadPrefixes().isEmpty() || !startsWithPrefix(body, d.downloadPrefixes())) {
             return null; // most commands: decided without splitting the body
         }

@@ -1,4 +1,4 @@
-package org.ripv.server;
+package org.ripv.server.commands;
 
 import java.time.Duration;
 
@@ -7,7 +7,10 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CompletionException;
+import java.util.concurrent.Executor;
 import java.util.concurrent.TimeoutException;
+import java.util.function.Consumer;
+import java.util.function.Supplier;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.Footer;
 import org.ripv.messages.Ids;
@@ -18,8 +21,15 @@ import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.ServiceDescriptor;
 import org.ripv.messages.ServiceList;
 import org.ripv.naming.MailboxAddress;
+import org.ripv.server.lock.OperatorLock;
+import org.ripv.server.permit.PermitFile;
+import org.ripv.server.requests.ServerReplies;
 import org.ripv.server.services.ServiceReference;
 import org.ripv.server.services.ServiceLiveness;
+import org.ripv.server.services.ServiceRegistry;
+import org.ripv.server.session.ConsoleCommands;
+import org.ripv.server.session.ConsoleHub;
+import org.ripv.server.session.Rights;
 
 /**
  * The server commands that ask services: {@code ?mailboxes} asks every service at once, each
@@ -28,17 +38,32 @@ import org.ripv.server.services.ServiceLiveness;
  * services with their health as the last call or check found it, and those recently lost. None
  * holds a thread while it waits: the reply is composed when the last answer or deadline comes.
  */
-final class ServiceQueries {
-    private final RIPVServer server;
+public final class ServiceQueries {
+    private final ServiceRegistry services;
+    private final ServiceLiveness liveness;
+    private final Executor checkers;
+    private final Supplier<PermitFile> permits;
+    private final Map<String, OperatorLock> locks;
+    private final ConsoleHub console;
+    private final Consumer<OutgoingServerMessage> outbox;
     private final Duration deadline;
 
-    ServiceQueries(RIPVServer server) {
-        this(server, ServiceLiveness.QUERY_DEADLINE);
-    }
-
-    ServiceQueries(RIPVServer server, Duration deadline) {
-        this.server = server;
-        this.deadline = deadline;
+    /**
+     * @param checkers where the calls to services run
+     * @param locks    the operator locks, shown beside each MailBox
+     * @param console  the vehicles' call state, shown beside each MailBox
+     * @param outbox   where the replies go (the Post Office's outbox)
+     */
+    public ServiceQueries(ServiceRegistry services, ServiceLiveness liveness, Executor checkers, Supplier<PermitFile> permits,
+                          Map<String, OperatorLock> locks, ConsoleHub console, Consumer<OutgoingServerMessage> outbox) {
+        this.services = services;
+        this.liveness = liveness;
+        this.checkers = checkers;
+        this.permits = permits;
+        this.locks = locks;
+        this.console = console;
+        this.outbox = outbox;
+        this.deadline = ServiceLiveness.QUERY_DEADLINE;
     }
 
     /** One service's answer: its MailBoxes, or why there are none. */
@@ -47,18 +72,18 @@ final class ServiceQueries {
     /** Asks every registered service for its MailBoxes, each with the deadline; completes when all have answered or failed. */
     private List<CompletableFuture<Answer>> askAll() {
         List<CompletableFuture<Answer>> asks = new ArrayList<>();
-        for (ServiceReference ref : server.services()) {
-            asks.add(ref.mailboxes(server.checkers(), deadline)
+        for (ServiceReference ref : services.all()) {
+            asks.add(ref.mailboxes(checkers, deadline)
                     .handle((boxes, e) -> new Answer(ref, boxes, e == null ? null : failure(ref, e))));
         }
         return asks;
     }
 
     /** The MailBoxes the services list now, and the services that did not answer in time. */
-    record Known(List<String> addresses, List<String> notAnswering) {}
+    public record Known(List<String> addresses, List<String> notAnswering) {}
 
     /** {@link Known}, to resolve vehicle names ({@link org.ripv.server.vehicles.VehicleNames}); never fails. */
-    CompletableFuture<Known> known() {
+    public CompletableFuture<Known> known() {
         List<CompletableFuture<Answer>> asks = askAll();
         return CompletableFuture.allOf(asks.toArray(CompletableFuture[]::new)).handle((v, e) -> {
             List<String> addresses = new ArrayList<>();
@@ -75,7 +100,7 @@ final class ServiceQueries {
         });
     }
 
-    void mailboxes(IncomingServerMessage request) {
+    public void mailboxes(IncomingServerMessage request) {
         List<CompletableFuture<Answer>> asks = askAll();
         CompletableFuture.allOf(asks.toArray(CompletableFuture[]::new)).whenComplete((v, e) -> {
             List<MailboxStatus> all = new ArrayList<>();
@@ -87,13 +112,13 @@ final class ServiceQueries {
                     continue;
                 }
                 for (MailboxStatus s : a.boxes()) {
-                    MailboxStatus withLock = readable(request, server.withLock(s));
+                    MailboxStatus withLock = readable(request, withLock(s));
                     all.add(withLock);
-                    text.append(ServerCommands.describe(withLock)).append('\n');
+                    text.append(describe(withLock)).append('\n');
                 }
             }
-            server.reply(request.reply(Footer.ok(Ids.FID_MAILBOXES, all.size() + " mailbox(es)\n" + text.toString().stripTrailing(),
-                    new MailboxList(all)).via(RIPVServer.SERVER_SERVICE)));
+            outbox.accept(request.reply(Footer.ok(Ids.FID_MAILBOXES, all.size() + " mailbox(es)\n" + text.toString().stripTrailing(),
+                    new MailboxList(all)).via(ServerReplies.SERVICE)));
         });
     }
 
@@ -103,7 +128,7 @@ final class ServiceQueries {
      * its console (issue 23, item 11).
      */
     private MailboxStatus readable(IncomingServerMessage request, MailboxStatus s) {
-        if (org.ripv.server.session.Rights.mayRead(server.permits(), request.header().origin().user(), s.address())) {
+        if (Rights.mayRead(permits.get(), request.header().origin().user(), s.address())) {
             return s;
         }
         return new MailboxStatus(s.address(), false, HIDDEN, false, "", null, "");
@@ -112,40 +137,40 @@ final class ServiceQueries {
     /** The detail shown instead of a MailBox's state to a user without the read right. */
     static final String HIDDEN = "state hidden: reading this MailBox needs the ?read right (docs/permit.md)";
 
-    void status(IncomingServerMessage request, MailboxAddress address) {
-        String why = org.ripv.server.session.Rights.whyNotRead(server.permits(), request.header().origin().user(), address.toString());
+    public void status(IncomingServerMessage request, MailboxAddress address) {
+        String why = Rights.whyNotRead(permits.get(), request.header().origin().user(), address.toString());
         if (why != null) {
-            server.reply(ServerTaskManager.error(request, Ids.FID_STATUS, ErrorCode.FORBIDDEN, why));
+            outbox.accept(ServerReplies.error(request, Ids.FID_STATUS, ErrorCode.FORBIDDEN, why));
             return;
         }
-        ServiceReference ref = server.service(address.service().toString()).orElse(null);
+        ServiceReference ref = services.find(address.service().toString()).orElse(null);
         if (ref == null) {
-            server.reply(ServerTaskManager.error(request, Ids.FID_STATUS, ErrorCode.UNKNOWN_SERVICE,
+            outbox.accept(ServerReplies.error(request, Ids.FID_STATUS, ErrorCode.UNKNOWN_SERVICE,
                     "no service " + address.service() + " is registered"));
             return;
         }
-        ref.mailboxes(server.checkers(), deadline).whenComplete((boxes, e) -> {
+        ref.mailboxes(checkers, deadline).whenComplete((boxes, e) -> {
             if (e != null) {
-                server.reply(ServerTaskManager.error(request, Ids.FID_STATUS, ErrorCode.SERVICE_GONE,
+                outbox.accept(ServerReplies.error(request, Ids.FID_STATUS, ErrorCode.SERVICE_GONE,
                         address.service() + " is " + failure(ref, e)));
                 return;
             }
             for (MailboxStatus s : boxes) {
                 if (s.address().equals(address.toString())) {
-                    MailboxStatus withLock = server.withLock(s);
-                    server.reply(request.reply(Footer.ok(Ids.FID_STATUS, ServerCommands.describe(withLock), withLock)
-                            .via(RIPVServer.SERVER_SERVICE)));
+                    MailboxStatus withLock = withLock(s);
+                    outbox.accept(request.reply(Footer.ok(Ids.FID_STATUS, describe(withLock), withLock)
+                            .via(ServerReplies.SERVICE)));
                     return;
                 }
             }
-            server.reply(ServerTaskManager.error(request, Ids.FID_STATUS, ErrorCode.UNKNOWN_MAILBOX,
+            outbox.accept(ServerReplies.error(request, Ids.FID_STATUS, ErrorCode.UNKNOWN_MAILBOX,
                     "no MailBox " + address + " at " + address.service() + "; ?mailboxes lists them"));
         });
     }
 
     /** {@code ?services}: no calls, only what calls and checks have found. */
-    OutgoingServerMessage services(IncomingServerMessage request) {
-        List<ServiceReference> refs = server.services();
+    public OutgoingServerMessage services(IncomingServerMessage request) {
+        List<ServiceReference> refs = services.all();
         List<ServiceDescriptor> list = refs.stream().map(ServiceReference::descriptor).toList();
         StringBuilder b = new StringBuilder(list.size() + " service(s) registered");
         for (ServiceReference r : refs) {
@@ -157,14 +182,14 @@ final class ServiceQueries {
                 b.append("\n    NOT ANSWERING since ").append(r.problemSince()).append(": ").append(problem);
             }
         }
-        for (Map.Entry<String, ServiceLiveness.Lost> e : server.liveness().lost().entrySet()) {
-            if (server.service(e.getKey()).isEmpty()) {
+        for (Map.Entry<String, ServiceLiveness.Lost> e : liveness.lost().entrySet()) {
+            if (services.find(e.getKey()).isEmpty()) {
                 ServiceLiveness.Lost l = e.getValue();
                 b.append('\n').append(e.getKey()).append(l.refused() ? "  REFUSED at " : "  LOST at ").append(l.when()).append(": ")
                         .append(l.why()).append(l.refused() ? " (its registration; it keeps trying)" : " (removed until it registers again)");
             }
         }
-        return request.reply(Footer.ok(Ids.FID_SERVICES, b.toString(), new ServiceList(list)).via(RIPVServer.SERVER_SERVICE));
+        return request.reply(Footer.ok(Ids.FID_SERVICES, b.toString(), new ServiceList(list)).via(ServerReplies.SERVICE));
     }
 
     private String failure(ServiceReference ref, Throwable e) {
@@ -176,4 +201,24 @@ final class ServiceQueries {
         return "not answering (" + ServiceReference.why(t, ref.address()) + " at " + ref.address() + ")";
     }
 
+
+    /** Current MailBox status with the operator lock and the vehicle's call state added. */
+    private MailboxStatus withLock(MailboxStatus s) {
+        OperatorLock l = locks.get(s.address());
+        MailboxStatus withState = s.withSession(console.state(s.address()));
+        return l == null || l.expired() ? withState : withState.withLock(l.user());
+    }
+
+    /** One line of {@code ?mailboxes} and the text of {@code ?status}. */
+    static String describe(MailboxStatus s) {
+        if (HIDDEN.equals(s.detail())) {
+            return s.address() + ": " + s.detail();
+        }
+        String what = !s.running().isEmpty() ? "busy: " + s.running()
+                : (s.available() ? "available" : "not available") + (s.busy() ? ", busy" : "");
+        return s.address() + ": " + what
+                + (s.lockedBy().isEmpty() ? "" : ", locked by " + s.lockedBy())
+                + (s.detail().isEmpty() ? "" : " (" + s.detail() + ")")
+                + (s.session() == null ? "" : "; vehicle " + ConsoleCommands.describeState(s.session()));
+    }
 }

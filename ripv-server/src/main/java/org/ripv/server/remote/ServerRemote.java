@@ -1,14 +1,18 @@
-package org.ripv.server;
+package org.ripv.server.remote;
 
 import java.util.List;
+import java.util.function.BiConsumer;
 import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.IncomingServiceMessage;
 import org.ripv.messages.MailboxStatus;
 import org.ripv.messages.OutgoingServiceMessage;
 import org.ripv.messages.ServiceDescriptor;
 import org.ripv.rmi.GenericRMIInterface;
+import org.ripv.server.requests.ServiceReplies;
 import org.ripv.server.security.ServiceChallenges;
+import org.ripv.server.services.ServiceAdmission;
 import org.ripv.server.services.ServiceReference;
+import org.ripv.server.services.ServiceRegistry;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -18,46 +22,56 @@ import org.slf4j.LoggerFactory;
  * replies called back by services, and their heartbeats. Every call but {@code register}
  * must carry the token the registration handed out.
  */
-final class ServerRemote implements GenericRMIInterface {
+public final class ServerRemote implements GenericRMIInterface {
     private static final Logger log = LoggerFactory.getLogger(ServerRemote.class);
 
-    private final RIPVServer server;
+    private final ServiceChallenges challenges;
+    private final ServiceAdmission admission;
+    private final ServiceRegistry services;
+    private final ServiceReplies replies;
+    private final BiConsumer<ServiceReference, List<ConsoleEntry>> console;
 
-    ServerRemote(RIPVServer server) {
-        this.server = server;
+    /**
+     * @param console takes the console entries a service published for its MailBoxes
+     */
+    public ServerRemote(ServiceChallenges challenges, ServiceAdmission admission, ServiceRegistry services,
+                        ServiceReplies replies, BiConsumer<ServiceReference, List<ConsoleEntry>> console) {
+        this.challenges = challenges;
+        this.admission = admission;
+        this.services = services;
+        this.replies = replies;
+        this.console = console;
     }
 
     @Override
     public String challenge(String serviceNonce) {
-        return server.security().challenges().challenge(serviceNonce);
+        return challenges.challenge(serviceNonce);
     }
 
     @Override
     public String register(ServiceDescriptor d, GenericRMIInterface service, String proof) {
-        ServiceChallenges.Accepted accepted = server.security().challenges().verify(proof, d == null ? null : d.name(), service);
-        ServiceAdmission.admit(server, d, service, accepted.token());
+        ServiceChallenges.Accepted accepted = challenges.verify(proof, d == null ? null : d.name(), service);
+        admission.admit(d, service, accepted.token());
         return accepted.confirmation();
     }
 
     @Override
     public void serviceReply(String token, OutgoingServiceMessage reply) {
-        ServiceReference ref = server.serviceMap().values().stream().filter(r -> r.token().equals(token)).findFirst()
-                .orElseThrow(() -> new SecurityException("unknown session token: register first"));
-        ServiceReplies.accept(server, ref, reply, server.pending());
+        replies.accept(byToken(token), reply);
     }
 
     @Override
     public void serviceReplies(String token, List<OutgoingServiceMessage> replies) {
-        ServiceReference ref = server.serviceMap().values().stream().filter(r -> r.token().equals(token)).findFirst()
-                .orElseThrow(() -> new SecurityException("unknown session token: register first"));
+        ServiceReference ref = byToken(token);
+        ServiceReplies accepting = this.replies;
         for (OutgoingServiceMessage reply : replies) {
-            ServiceReplies.accept(server, ref, reply, server.pending());
+            accepting.accept(ref, reply);
         }
     }
 
     @Override
     public void console(String token, List<ConsoleEntry> entries) {
-        server.console(byToken(token), entries);
+        console.accept(byToken(token), entries);
     }
 
     @Override
@@ -67,7 +81,7 @@ final class ServerRemote implements GenericRMIInterface {
 
     @Override
     public boolean heartbeat(String token) {
-        return server.serviceMap().values().stream().anyMatch(r -> r.token().equals(token));
+        return services.byToken(token).isPresent();
     }
 
     @Override
@@ -91,7 +105,6 @@ final class ServerRemote implements GenericRMIInterface {
     }
 
     private ServiceReference byToken(String token) {
-        return server.serviceMap().values().stream().filter(r -> r.token().equals(token)).findFirst()
-                .orElseThrow(() -> new SecurityException("unknown session token: register first"));
+        return services.byToken(token).orElseThrow(() -> new SecurityException("unknown session token: register first"));
     }
 }

@@ -1,9 +1,9 @@
-package org.ripv.server;
+package org.ripv.server.files;
 
 import java.io.IOException;
 import java.util.Optional;
-import org.ripv.server.files.FileStore;
 import org.ripv.server.permit.PermitFile;
+import org.ripv.server.permit.SecurityRefusal;
 import org.ripv.server.session.Rights;
 
 /**
@@ -14,22 +14,22 @@ import org.ripv.server.session.Rights;
  * DataVisServer only attached another vehicle's download). Loose files, and folders not yet
  * claimed by a MailBox since the upgrade, need the {@code ?download} gate only.
  */
-final class DownloadRights {
+public final class DownloadRights {
     private DownloadRights() {}
 
     /**
      * Refuses a file the user may not have.
      *
-     * @throws ServerCommands.SecurityRefusal quoting the file, its MailBox and the rule that decided
+     * @throws SecurityRefusal quoting the file, its MailBox and the rule that decided
      */
-    static void check(FileStore files, PermitFile permits, String user, String name) throws IOException {
+    public static void check(FileStore files, PermitFile permits, String user, String name) throws IOException {
         Optional<String> mailbox = files.mailboxOf(name);
         if (mailbox.isEmpty()) {
             return;
         }
         String why = Rights.whyNotRead(permits, user, mailbox.get());
         if (why != null) {
-            throw new ServerCommands.SecurityRefusal("'" + name + "' came from " + mailbox.get() + ", and " + why
+            throw new SecurityRefusal("'" + name + "' came from " + mailbox.get() + ", and " + why
                     + "; a download needs the ?read right on the MailBox it came from (docs/permit.md)");
         }
     }

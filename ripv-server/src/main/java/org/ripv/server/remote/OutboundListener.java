@@ -1,4 +1,4 @@
-package org.ripv.server;
+package org.ripv.server.remote;
 
 import java.io.BufferedInputStream;
 import java.io.BufferedOutputStream;
@@ -9,11 +9,13 @@ import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
+import java.rmi.RemoteException;
 import java.time.Duration;
 import java.util.List;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.Semaphore;
+import java.util.function.BiConsumer;
 import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.IncomingServiceMessage;
 import org.ripv.messages.MailboxStatus;
@@ -25,7 +27,9 @@ import org.ripv.outbound.OutboundHandshake;
 import org.ripv.outbound.OutboundLimits;
 import org.ripv.rmi.DeadlineSocketFactory;
 import org.ripv.rmi.GenericRMIInterface;
+import org.ripv.server.services.ServiceAdmission;
 import org.ripv.server.services.ServiceReference;
+import org.ripv.server.services.ServiceRegistry;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -37,20 +41,33 @@ import org.slf4j.LoggerFactory;
  * goes through the same {@link ServiceAdmission} as over RMI. When the connection ends, the
  * service is dropped at once (its pending requests fail) and may connect again.
  */
-final class OutboundListener implements AutoCloseable {
+public final class OutboundListener implements AutoCloseable {
     private static final Logger log = LoggerFactory.getLogger(OutboundListener.class);
     /** Handshakes under way at once: a flood of idle connections cannot tie up more. */
     private static final int MAX_HANDSHAKES = 32;
 
-    private final RIPVServer server;
+    private final String secret;
+    private final ServiceRegistry services;
+    private final ServiceAdmission admission;
+    private final BiConsumer<ServiceReference, String> drop;
     private final GenericRMIInterface remote;
     private final ServerSocket listener;
     private final Semaphore handshakes = new Semaphore(MAX_HANDSHAKES);
     private final Set<CallChannel> channels = ConcurrentHashMap.newKeySet();
     private volatile boolean open = true;
 
-    OutboundListener(RIPVServer server, GenericRMIInterface remote, InetAddress bind, int port) throws IOException {
-        this.server = server;
+    /**
+     * @param secret the service secret both ends prove they know
+     * @param drop   told of a service whose outbound connection ended (its pending requests fail)
+     * @param remote the server's side of the interface, which the service calls
+     */
+    public OutboundListener(String secret, ServiceRegistry services, ServiceAdmission admission,
+                            BiConsumer<ServiceReference, String> drop, GenericRMIInterface remote, InetAddress bind, int port)
+            throws IOException {
+        this.secret = secret;
+        this.services = services;
+        this.admission = admission;
+        this.drop = drop;
         this.remote = remote;
         ServerSocket s = new ServerSocket();
         s.setReuseAddress(true);
@@ -66,7 +83,7 @@ final class OutboundListener implements AutoCloseable {
         t.start();
     }
 
-    int port() {
+    public int port() {
         return listener.getLocalPort();
     }
 
@@ -104,7 +121,7 @@ final class OutboundListener implements AutoCloseable {
             s.setSoTimeout(OutboundLimits.HANDSHAKE_MILLIS);
             DataInputStream in = new DataInputStream(new BufferedInputStream(s.getInputStream()));
             DataOutputStream out = new DataOutputStream(new BufferedOutputStream(s.getOutputStream()));
-            String name = OutboundHandshake.server(in, out, server.secret());
+            String name = OutboundHandshake.server(in, out, secret);
             ServiceName.parse(name);
             int deadline = DeadlineSocketFactory.fromSystem().readMillis();
             Side side = new Side(name);
@@ -113,10 +130,10 @@ final class OutboundListener implements AutoCloseable {
             channels.add(c);
             c.closed().thenAccept(why -> {
                 channels.remove(c);
-                ServiceReference ref = server.serviceMap().get(name);
-                if (ref != null && ref.stub() == c.remote() && server.serviceMap().remove(name, ref)) {
+                ServiceReference ref = services.find(name).orElse(null);
+                if (ref != null && ref.stub() == c.remote() && services.remove(ref)) {
                     log.warn("{}: its outbound connection from {} closed ({})", ref, peer, why);
-                    server.drop(ref, "closed its outbound connection (" + why + ")");
+                    drop.accept(ref, "closed its outbound connection (" + why + ")");
                 }
             });
             log.info("outbound connection from {} for {}", peer, name);
@@ -171,47 +188,48 @@ final class OutboundListener implements AutoCloseable {
                 throw new SecurityException("this connection proved the secret for " + name + ", not for "
                         + (d == null ? "nothing" : d.name()));
             }
-            return ServiceAdmission.admit(server, d, channel.remote());
+            return admission.admit(d, channel.remote());
         }
 
         @Override
-        public void serviceReply(String token, OutgoingServiceMessage reply) throws java.rmi.RemoteException {
+        public void serviceReply(String token, OutgoingServiceMessage reply) throws RemoteException {
             remote.serviceReply(token, reply);
         }
 
         @Override
-        public void serviceReplies(String token, List<OutgoingServiceMessage> replies) throws java.rmi.RemoteException {
+        public void serviceReplies(String token, List<OutgoingServiceMessage> replies) throws RemoteException {
             remote.serviceReplies(token, replies);
         }
 
         @Override
-        public void console(String token, List<ConsoleEntry> entries) throws java.rmi.RemoteException {
+        public void console(String token, List<ConsoleEntry> entries) throws RemoteException {
             remote.console(token, entries);
         }
 
         @Override
-        public boolean heartbeat(String token) throws java.rmi.RemoteException {
+        public boolean heartbeat(String token) throws RemoteException {
             return remote.heartbeat(token);
         }
 
+        // What the server does not take from any service, it does not take over this connection either.
         @Override
-        public void serviceRequest(String token, IncomingServiceMessage request) {
-            throw new UnsupportedOperationException("the RIPVServer takes no service requests");
+        public void serviceRequest(String token, IncomingServiceMessage request) throws RemoteException {
+            remote.serviceRequest(token, request);
         }
 
         @Override
-        public void serviceRequests(String token, List<IncomingServiceMessage> requests) {
-            throw new UnsupportedOperationException("the RIPVServer takes no service requests");
+        public void serviceRequests(String token, List<IncomingServiceMessage> requests) throws RemoteException {
+            remote.serviceRequests(token, requests);
         }
 
         @Override
-        public boolean withdraw(String token, String mailbox, String clientId, long messageId) {
-            throw new UnsupportedOperationException("the RIPVServer runs no service MailBoxes");
+        public boolean withdraw(String token, String mailbox, String clientId, long messageId) throws RemoteException {
+            return remote.withdraw(token, mailbox, clientId, messageId);
         }
 
         @Override
-        public List<MailboxStatus> mailboxes(String token) {
-            throw new UnsupportedOperationException("ask ?mailboxes over the client socket");
+        public List<MailboxStatus> mailboxes(String token) throws RemoteException {
+            return remote.mailboxes(token);
         }
     }
 }
