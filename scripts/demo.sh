@@ -196,11 +196,6 @@ secret="$DEMO/server/service.secret"
 for s in "$ROOT"/docs/samples/*.dat "$ROOT"/docs/samples/*.wf "$ROOT"/docs/samples/*.ma "$ROOT"/scripts/demo-data/*.wf; do
   [ -f "$s" ] && [ ! -f "$DEMO/server/upload/$(basename "$s")" ] && cp "$s" "$DEMO/server/upload/"
 done
-# The glider carries real Slocum files and their sensor-list caches (scripts/demo-data/README.md).
-mkdir -p "$DEMO/glider"
-for s in "$ROOT"/scripts/demo-data/glider/*; do
-  [ -f "$DEMO/glider/$(basename "$s")" ] || cp "$s" "$DEMO/glider/"
-done
 
 echo "demo: starting the SerialPortServer (glider $GLIDER_NAME calls in on port $GLIDER), DatabaseServer and DataVisServer" >&2
 "$JAVA" "${USER_HOME[@]}" -Dripv.host=localhost -jar "$(jar ripv-services)" serial --server "$HERE:$REGISTRY" --secret-file "$secret" \
@@ -251,9 +246,13 @@ if [ ! -f "$DEMO/server/.demo-fetch-queued" ]; then
   fi
 fi
 
+# The glider carries its sample logs (made in an empty folder) and, from --files, real Slocum files with
+# their sensor-list caches (scripts/demo-data/README.md): copying those into the folder first left it
+# without the logs the sample workflows fetch.
 echo "demo: the simulated glider $GLIDER_NAME calls in for $SURFACE s, dives for $DIVE s, and calls again" >&2
 "$JAVA" "${USER_HOME[@]}" -jar "$(jar ripv-services)" simulator --call "$HERE:$GLIDER" --name "$GLIDER_NAME" \
   --dive-seconds "$DIVE" --surface-seconds "$SURFACE" --dir "$DEMO/glider" --dialog "$GLIDER_DIALOG" \
+  --files "$ROOT/scripts/demo-data/glider" \
   ${GLIDER_LINE[@]+"${GLIDER_LINE[@]}"} >"$DEMO/logs/simulator.log" 2>&1 &
 pids+=($!)
 

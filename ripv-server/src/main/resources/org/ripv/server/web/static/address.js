@@ -7,6 +7,8 @@ export const HOST = '[A-Za-z0-9._:%\\-]{1,253}';
 export const HANDLE = '[A-Za-z0-9][A-Za-z0-9._\\-]{0,127}';
 
 const MAILBOX = new RegExp(`^<${SERVICE}>::<${HOST}>${HANDLE}$`);
+// A vehicle's own name (glider1): one word the server resolves to its MailBox, as the CLI's commands take it.
+const VEHICLE = new RegExp(`^${HANDLE}$`);
 const SERVICE_NAME = new RegExp(`^(?:${SERVICE}|<${SERVICE}>::<${HOST}>)$`);
 // White space, C0/C1 controls, DEL, line and paragraph separators, bidi controls: nothing a word of a command may hold.
 const NOT_A_WORD = /[\s\u0000-\u001f\u007f-\u009f\u2028\u2029\u202a-\u202e\u2066-\u2069]/u;
@@ -31,9 +33,11 @@ export class NotAName extends Error {}
 export function mailboxFromUrl(search = location.search) {
   const m = new URLSearchParams(search).get('m');
   if (m === null || m === '') return { mailbox: '', handle: '' };
+  if (VEHICLE.test(m)) return { mailbox: m, handle: m };
   if (!isMailbox(m)) {
     throw new NotAName(`'${m.length > 120 ? `${m.substring(0, 120)}…` : m}' is not a valid MailBox name (expected one address`
-      + ' like <SerialPortServer>::<host>glider1, no spaces); nothing was sent. Open the vehicle from the fleet page.');
+      + ' like <SerialPortServer>::<host>glider1, or a vehicle\'s name like glider1, no spaces); nothing was sent.'
+      + ' Open the vehicle from the fleet page.');
   }
   return { mailbox: m, handle: m.substring(m.lastIndexOf('>') + 1) };
 }
