@@ -179,7 +179,9 @@ public final class CallsBench implements Callable<Integer> {
             s.setTcpNoDelay(true);
             OutputStream out = s.getOutputStream();
             out.write(("\r\nGlider " + name + " at surface.\r\nVehicle Name: " + name
-                    + "\r\nGPS Location:  4137.994 N -7032.188 E measured 26.0 secs ago\r\n").getBytes(StandardCharsets.US_ASCII));
+                    + "\r\nGPS Location:  4137.994 N -7032.188 E measured 26.0 secs ago"
+                    // the dialog's end, as a glider's: a caller that hangs up inside its dialog dropped the call (LINK_LOST)
+                    + "\r\nHit Control-C within 30 seconds to abort the mission\r\n").getBytes(StandardCharsets.US_ASCII));
             long end = System.nanoTime() + surface.toNanos();
             long period = 1_000_000_000L / linesPerSecond;
             long next = System.nanoTime();
