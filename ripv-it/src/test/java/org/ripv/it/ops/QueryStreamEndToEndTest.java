@@ -140,7 +140,10 @@ class QueryStreamEndToEndTest {
             assertThat(((TableResult) next.footer().result()).rows().get(0)[0]).isEqualTo(Integer.toString(ROWS));
             assertThat(Duration.ofNanos(System.nanoTime() - t1)).as("the MailBox was free: the statement had stopped")
                     .isLessThan(Duration.ofSeconds(30));
-            assertThat(log("database")).contains("cancelled while sending its rows");
+            // The cancel's interrupt reaches the query either while it waits for its reader ('cancelled while sending
+            // its rows') or inside Derby, which closes the connection ("cancelled: Connection closed by unknown
+            // interrupt"; the next command reconnects): both stopped the statement, as the free MailBox above shows.
+            assertThat(log("database")).containsPattern("'SELECT a\\.n, b\\.label FROM wide a, wide b' cancelled( while sending its rows|: )");
             assertThat(server.isAlive() && service.isAlive()).isTrue();
         }
     }
