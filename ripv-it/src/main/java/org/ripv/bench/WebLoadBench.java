@@ -118,11 +118,11 @@ public final class WebLoadBench {
             System.out.printf(Locale.ROOT, "%n%-58s %12s %12s %14s%n", "page (median of " + (runs - 1) + " loads; max)", "rows drawn ms",
                     "all shown ms", "CPU ms per load");
             System.out.printf(Locale.ROOT, "%-58s %12.0f %12s %14.1f   (loads ms %s)%n",
-                    "fleet page, " + vehicles + " vehicles, live", median(live.listed), median(live.shown) + " (" + max(live.shown) + ")",
+                    "fleet page, " + vehicles + " vehicles, live", median(live.listed), String.format(Locale.ROOT, "%.0f (%.0f)", median(live.shown), max(live.shown)),
                     live.cpuMillis, Arrays.toString(live.shown));
             System.out.printf(Locale.ROOT, "%-58s %12.0f %12s %14.1f   (loads ms %s)%n",
                     "floor: the same page static (" + html.length() / 1024 + " KiB and its style sheet)", median(floor.listed),
-                    median(floor.shown) + " (" + max(floor.shown) + ")", floor.cpuMillis, Arrays.toString(floor.shown));
+                    String.format(Locale.ROOT, "%.0f (%.0f)", median(floor.shown), max(floor.shown)), floor.cpuMillis, Arrays.toString(floor.shown));
             System.out.println(CpuClock.ratioLine("fleet page load (server, fleet service, browser)", live.cpuMillis * 1e3,
                     floor.cpuMillis * 1e3, median(live.shown) / Math.max(1e-3, median(floor.shown)))
                     + " (floor: the same page static in the same browser)");
