@@ -17,15 +17,16 @@ import org.junit.platform.launcher.TestIdentifier;
 /**
  * Writes each test class's own wall time, from its start to its end (its {@code @BeforeAll} and
  * {@code @AfterAll} included), to {@code target/class-times.txt}: one line per class,
- * {@code SECONDS CLASS START END RESULT}. Surefire's reports cannot be trusted for this once
- * classes run concurrently (issue 38): they file some test cases under another class that ran
- * at the same time. Registered for every module that has ripv-common's test-jar
+ * {@code SECONDS CLASS START END RESULT}, RESULT {@code TESTS_FAILED} when a test of it failed.
+ * Surefire's reports cannot be trusted for this once classes run concurrently (issue 38): they
+ * file some test cases under another class that ran at the same time. Registered for every module that has ripv-common's test-jar
  * ({@code META-INF/services}).
  */
 public final class ClassTimes implements TestExecutionListener {
     private static final Path FILE = Path.of("target", "class-times.txt");
     private final Map<String, Long> started = new ConcurrentHashMap<>();
     private final Map<String, Instant> startedAt = new ConcurrentHashMap<>();
+    private final java.util.Set<String> failed = ConcurrentHashMap.newKeySet();
 
     @Override
     public void executionStarted(TestIdentifier id) {
@@ -37,13 +38,17 @@ public final class ClassTimes implements TestExecutionListener {
 
     @Override
     public void executionFinished(TestIdentifier id, TestExecutionResult result) {
+        if (result.getStatus() != TestExecutionResult.Status.SUCCESSFUL
+                && id.getSource().orElse(null) instanceof org.junit.platform.engine.support.descriptor.MethodSource m) {
+            failed.add(m.getClassName()); // the class itself succeeds when only its tests fail
+        }
         Long t0 = started.remove(id.getUniqueId());
         Instant at = startedAt.remove(id.getUniqueId());
         if (t0 == null || !(id.getSource().orElse(null) instanceof ClassSource c)) {
             return;
         }
         String line = String.format(Locale.ROOT, "%.1f %s %s %s %s%n", (System.nanoTime() - t0) / 1e9, c.getClassName(), at,
-                Instant.now(), result.getStatus());
+                Instant.now(), failed.remove(c.getClassName()) ? "TESTS_FAILED" : result.getStatus());
         synchronized (ClassTimes.class) {
             try {
                 Files.createDirectories(FILE.getParent());

@@ -35,7 +35,6 @@ import org.ripv.service.ConsoleTap;
 import org.ripv.services.serial.LinkSettings;
 import org.ripv.services.serial.SerialPortServer;
 import org.ripv.services.simulator.GliderSimulator;
-import org.junit.jupiter.api.parallel.Isolated;
 
 /**
  * Issue 15 point 5: a server keeping its state in PostgreSQL ({@code --state-db}) stops, and a
@@ -45,7 +44,6 @@ import org.junit.jupiter.api.parallel.Isolated;
  * the queued workflow runs on the next call, and the audit trail holds both servers' log-ins.
  * Needs RIPV_PG_URL (skipped without it, a failure under RIPV_REQUIRE_TOOLS=1).
  */
-@Isolated // failed beside other classes at load ~25 (issue 38): the last two history entries came in another order
 class StateStoreRestartTest {
     static final Duration T = Duration.ofSeconds(60);
 
