@@ -100,7 +100,12 @@ public final class Delivery implements AutoCloseable {
 
     /** A file the ingest stored; made into profiles and pushed on the deployment's thread. */
     public void arrived(String name, byte[] data, SensorListCache cache) {
-        worker.execute(() -> receive(Path.of(name).getFileName().toString(), data, cache));
+        try {
+            worker.execute(() -> receive(Path.of(name).getFileName().toString(), data, cache));
+        } catch (java.util.concurrent.RejectedExecutionException e) {
+            // the service is stopping: the file is stored; its profiles are made when it arrives again
+            log.warn("DAC delivery of {} is stopped: {} not taken", deployment.glider(), name);
+        }
     }
 
     /** Waits until every arrival so far is handled (tests, and a clean stop). */

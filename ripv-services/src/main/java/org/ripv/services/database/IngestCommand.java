@@ -222,7 +222,12 @@ final class IngestCommand {
             throws IOException, SQLException, DbaFormatException, org.ripv.services.ingest.SlocumFormatException {
         if (SlocumArrivals.isBinary(f)) {
             DbaIngest.Outcome o = ingest.ingest(f.name(), DbaIngest.sha256(f.data()), () -> slocum.open(f), user);
-            deliveries.arrived(f.name(), f.data(), slocum.cache());
+            try {
+                deliveries.arrived(f.name(), f.data(), slocum.cache());
+            } catch (RuntimeException e) {
+                // the DAC delivery is a consumer of what was stored: it never changes the ingest's verdict
+                log.warn("{}: the DAC delivery did not take {}: {}", target.handle(), f.name(), e.toString());
+            }
             return o;
         }
         return ingest.ingest(f.name(), f.data(), user);
