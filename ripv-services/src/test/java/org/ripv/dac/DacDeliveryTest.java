@@ -98,8 +98,34 @@ class DacDeliveryTest {
             assertThat(json).containsEntry("glider", "rosie_713").containsEntry("counts", Map.of("sent", 10, "replaced", 10));
             assertThat((List<?>) json.get("profiles")).hasSize(20);
             assertThat(String.valueOf(json.get("newest_profile"))).endsWith("_delayed.nc");
+            // the real-time files once more, after the delayed ones: nothing made or sent
+            arrive(d, DacFixtures.raw(SEG + ".tbd"));
+            arrive(d, DacFixtures.raw(SEG + ".sbd"));
+            settle(d);
+            assertThat(names(sshd.drop())).hasSize(20);
+            assertThat(names(dir.resolve("dac/profiles"))).hasSize(10).allMatch(n -> n.endsWith("_delayed.nc"));
             assertThat(d.status(List.of())).contains(sent.get(0) + "  real-time dive, 24 samples, 0.2 to 141.3 dbar, QC temperature 23 good 1 suspect").contains("replaced (by "
                     + sent.get(0).replace("_rt.nc", "_delayed.nc") + " (the real-time file was sent before))");
+        }
+    }
+
+    @Test
+    void aRealTimeFileArrivingAfterItsDelayedModeOneIsNotMade(@TempDir Path dir, @TempDir Path ssh, @TempDir Path in) throws Exception {
+        try (LoopbackSshd sshd = LoopbackSshd.start(ssh);
+             Deliveries d = Deliveries.start(List.of(deployment(dir, sshd.url(), "key", sshd.key().toString(),
+                     "known_hosts", sshd.knownHosts().toString())))) {
+            SensorListCache cache = new SensorListCache(DacFixtures.cache());
+            Path dbd = in.resolve(SEG + ".dbd");
+            Path ebd = in.resolve(SEG + ".ebd");
+            Files.write(dbd, org.ripv.services.ingest.SlocumEncoder.recode(Files.readAllBytes(DacFixtures.raw(SEG + ".sbd")), cache, "dbd", List.of(), (r, n) -> { }));
+            Files.write(ebd, org.ripv.services.ingest.SlocumEncoder.recode(Files.readAllBytes(DacFixtures.raw(SEG + ".tbd")), cache, "ebd", List.of(), (r, n) -> { }));
+            arrive(d, dbd);
+            arrive(d, ebd);
+            arrive(d, DacFixtures.raw(SEG + ".sbd"));
+            arrive(d, DacFixtures.raw(SEG + ".tbd"));
+            settle(d);
+            assertThat(names(sshd.drop())).hasSize(10).allMatch(n -> n.endsWith("_delayed.nc"));
+            assertThat(d.status(List.of())).contains("10 profiles (10 sent)").doesNotContain("_rt.nc");
         }
     }
 

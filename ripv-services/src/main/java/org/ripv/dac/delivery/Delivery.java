@@ -155,8 +155,8 @@ public final class Delivery implements AutoCloseable {
             int added = 0;
             for (DacRun.Made m : r.made()) {
                 String name = ProfileWriter.fileName(m.profile());
-                if (state.has(name)) {
-                    continue; // made from an earlier arrival of this segment: a profile is made once
+                if (state.has(name) || state.has(name.replace("_rt.nc", "_delayed.nc"))) {
+                    continue; // made before (a profile is made once), or its delayed-mode file is there already
                 }
                 added++;
                 double[] p = m.profile().pressure();
