@@ -233,6 +233,13 @@ class DacDeliveryEndToEndTest {
             Map<String, Object> state = (Map<String, Object>) m.readValue(text, List.class).get(0);
             assertThat(state).containsEntry("glider", "rosie_713").containsEntry("counts", Map.of("sent", 10));
             assertThat(((Number) state.get("seconds_since_newest_profile")).longValue()).isGreaterThan(0);
+            // usage errors and an unknown glider: refused with the reason, the service keeps answering
+            assertThat(cli("?dac")).isNotZero();
+            assertThat(out()).contains("usage: ?dac MAILBOX [GLIDER] [--json]");
+            assertThat(cli("?dac " + db + " nobody")).isNotZero();
+            assertThat(out()).contains("no DAC deployment of nobody here");
+            assertThat(cli("?dac " + db + " rosie_713")).as(out()).isZero();
+            assertThat(out()).contains("10 profiles (10 sent)");
             // every file once in the ledger, sent
             assertThat(Files.readAllLines(dacDir.resolve("dac/dac-ledger.tsv")).stream().filter(l -> l.contains("\tsent\t")))
                     .hasSize(10);
