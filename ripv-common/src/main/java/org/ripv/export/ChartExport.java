@@ -5,7 +5,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import org.ripv.json.JsonWriter;
+import org.ripv.json.Json;
 import org.ripv.messages.ChartData;
 
 /**
@@ -66,7 +66,7 @@ public final class ChartExport {
             m.put("label", c.newest().label());
             doc.put("newest", m);
         }
-        return JsonWriter.write(doc) + "\n";
+        return Json.write(doc) + "\n";
     }
 
     /** A number as written in CSV: integral values without ".0", a gap empty. */

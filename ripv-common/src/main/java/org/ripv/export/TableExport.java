@@ -7,7 +7,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
-import org.ripv.json.JsonWriter;
+import org.ripv.json.Json;
 import org.ripv.messages.TableResult;
 
 /**
@@ -75,7 +75,7 @@ public final class TableExport {
         doc.put("types", t.types());
         doc.put("truncated", t.truncated());
         doc.put("rows", rows);
-        return JsonWriter.write(doc) + "\n";
+        return Json.write(doc) + "\n";
     }
 
     /** A number for a numeric column (as the database wrote it, exactly), else the text; null stays null. */

@@ -224,7 +224,8 @@ public final class RIPVServer implements AutoCloseable {
                 this::reply, admit::route);
         box = postOffice.open(POST_OFFICE, new ServerTaskManager(commands::run, admit, workflows::reply, waiting, this::client,
                 this::reply));
-        dispatch = new ClientDispatch(security.logins(), waiting, this::deliver, this::clientClosed);
+        dispatch = new ClientDispatch(security.logins(), commands.commands()::servedBeforeLogin, waiting, this::deliver,
+                this::clientClosed);
         publicVehicles = publicNames == null ? null : new PublicVehicles(
                 () -> queries.known().thenApply(ServiceQueries.Known::addresses), console, checkers, publicNames);
 

@@ -15,7 +15,7 @@ import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicReference;
 import org.ripv.client.handlers.ClientSocketHandler;
-import org.ripv.json.JsonWriter;
+import org.ripv.json.Json;
 import org.ripv.messages.ConsoleBatch;
 import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.ConsoleLines;
@@ -185,7 +185,7 @@ public final class ConsoleFollower implements ClientSocketHandler.Listener {
                         continue;
                     }
                     // a vehicle's bytes and others' text are data: escaped, never terminal controls (issue 23, item 8)
-                    out.println(json ? JsonWriter.write(toMap(e)) : org.ripv.text.Printable.oneLine(toText(e)));
+                    out.println(json ? Json.write(toMap(e)) : org.ripv.text.Printable.oneLine(toText(e)));
                 }
                 out.flush();
             }

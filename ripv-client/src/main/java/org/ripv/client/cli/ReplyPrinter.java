@@ -6,7 +6,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import org.ripv.json.JsonWriter;
+import org.ripv.json.Json;
 import org.ripv.messages.FileListing;
 import org.ripv.messages.ImageResult;
 import org.ripv.messages.MailboxList;
@@ -38,7 +38,7 @@ final class ReplyPrinter {
 
     void print(OutgoingServerMessage reply) {
         if (json) {
-            out.println(JsonWriter.write(toMap(reply)));
+            out.println(Json.write(toMap(reply)));
             return;
         }
         var f = reply.footer();

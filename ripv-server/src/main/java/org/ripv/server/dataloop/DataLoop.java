@@ -46,13 +46,13 @@ public final class DataLoop {
     }
 
     /**
-     * Takes over a plot from data ({@code vis:sql}, {@code vis:track}, {@code vis:depth},
-     * {@code vis:profile}) sent to a DataVisServer MailBox; false for anything else.
+     * Takes over a plot from data (a {@link PlotKind}: {@code vis:sql}, {@code vis:track},
+     * {@code vis:depth}, {@code vis:profile}) sent to a DataVisServer MailBox; false for anything else.
      *
      * @param sid the addressed service's SID
      */
     public boolean plot(IncomingServerMessage request, String sid, String mailbox, Consumer<OutgoingServerMessage> send) {
-        if (!sid.equals(Ids.SID_DATAVIS) || !PlotRequests.isPlot(request.header().body())) {
+        if (!sid.equals(Ids.SID_DATAVIS) || PlotKind.of(request.header().body()).isEmpty()) {
             return false;
         }
         return plots.handle(request, mailbox, send);
@@ -64,11 +64,10 @@ public final class DataLoop {
      * since a mistyped one is the likelier mistake; otherwise {@code noFile} as it is.
      */
     public static String noSuchFile(String sid, String body, String noFile) {
-        String b = body.strip();
-        if (!sid.equals(Ids.SID_DATAVIS) || !b.regionMatches(true, 0, "vis:", 0, 4)) {
+        String word = PlotKind.visWord(body);
+        if (!sid.equals(Ids.SID_DATAVIS) || word == null) {
             return noFile;
         }
-        String word = b.substring(4).split("\\s+", 2)[0];
         return word.isEmpty() || word.equalsIgnoreCase("file") ? noFile : PlotRequests.notAPlot(word, noFile);
     }
 

@@ -45,7 +45,7 @@ import org.ripv.messages.VehicleEvent;
 import org.ripv.server.permit.PermitFile;
 import org.ripv.server.session.ConsoleHub;
 import org.ripv.server.session.Entries;
-import org.ripv.server.session.Json;
+import org.ripv.json.Json;
 import org.ripv.server.session.Rights;
 import org.ripv.server.store.StateStore;
 import org.slf4j.Logger;

@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.ConcurrentHashMap;
+import org.ripv.json.Json;
 import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.SessionState;
 import org.ripv.messages.SessionState.State;

@@ -1,12 +1,14 @@
 package org.ripv.server.surfacing;
 
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.databind.ObjectMapper;
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
 import java.util.function.Supplier;
+import org.ripv.commands.OptionValues;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.Footer;
 import org.ripv.messages.IncomingServerMessage;
@@ -15,6 +17,8 @@ import org.ripv.messages.TableResult;
 import org.ripv.naming.MailboxAddress;
 import org.ripv.server.permit.PermitFile;
 import org.ripv.server.session.Rights;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
 
 /**
  * {@code ?surfacings MAILBOX [--last N] [--json]}: a vehicle's call records, oldest first, as a
@@ -23,11 +27,10 @@ import org.ripv.server.session.Rights;
  */
 public final class SurfacingCommands {
     static final int DEFAULT_LAST = 20;
-    static final int MAX_LAST = 1000;
     private final Surfacings surfacings;
     private final Supplier<PermitFile> permits;
     private final String via;
-    private final com.fasterxml.jackson.databind.ObjectMapper json = new com.fasterxml.jackson.databind.ObjectMapper();
+    private final ObjectMapper json = new ObjectMapper();
 
     public SurfacingCommands(Surfacings surfacings, Supplier<PermitFile> permits, String via) {
         this.surfacings = surfacings;
@@ -35,42 +38,25 @@ public final class SurfacingCommands {
         this.via = via;
     }
 
-    public static String usage() {
-        return "?surfacings MAILBOX [--last N] [--json]";
+    /** The words of {@code ?surfacings}, read by picocli through the server's command table. */
+    public static final class Options {
+        @Parameters(index = "0", paramLabel = "MAILBOX")
+        String mailbox;
+        @Option(names = "--last", paramLabel = "N", converter = OptionValues.Last.class)
+        int last = DEFAULT_LAST;
+        @Option(names = "--json")
+        boolean json;
     }
 
-    public OutgoingServerMessage run(IncomingServerMessage request, String fid, String[] w) {
-        if (w.length < 2) {
-            return error(request, fid, ErrorCode.BAD_REQUEST, "usage: " + usage());
-        }
+    public OutgoingServerMessage run(IncomingServerMessage request, String fid, Options options) {
         String mailbox;
         try {
-            mailbox = MailboxAddress.parse(w[1]).toString();
+            mailbox = MailboxAddress.parse(options.mailbox).toString();
         } catch (IllegalArgumentException e) {
             return error(request, fid, ErrorCode.UNKNOWN_MAILBOX, e.getMessage());
         }
-        int last = DEFAULT_LAST;
-        boolean asJson = false;
-        for (int i = 2; i < w.length; i++) {
-            switch (w[i].toLowerCase(Locale.ROOT)) {
-                case "--json" -> asJson = true;
-                case "--last" -> {
-                    String value = i + 1 < w.length ? w[++i] : "";
-                    try {
-                        last = Integer.parseInt(value);
-                    } catch (NumberFormatException e) {
-                        last = -1;
-                    }
-                    if (last < 1 || last > MAX_LAST) {
-                        return error(request, fid, ErrorCode.BAD_REQUEST, "--last takes a whole number from 1 to " + MAX_LAST
-                                + ", not '" + value + "'");
-                    }
-                }
-                default -> {
-                    return error(request, fid, ErrorCode.BAD_REQUEST, "unknown option '" + w[i] + "'; usage: " + usage());
-                }
-            }
-        }
+        int last = options.last;
+        boolean asJson = options.json;
         String why = Rights.whyNotRead(permits.get(), request.header().origin().user(), mailbox);
         if (why != null) {
             return error(request, fid, ErrorCode.FORBIDDEN, why);
@@ -92,7 +78,7 @@ public final class SurfacingCommands {
         if (asJson) {
             try {
                 text = json.writeValueAsString(records);
-            } catch (com.fasterxml.jackson.core.JsonProcessingException e) {
+            } catch (JsonProcessingException e) {
                 return error(request, fid, ErrorCode.INTERNAL, "call records could not be written as JSON: " + e.getMessage());
             }
         } else {

@@ -11,7 +11,8 @@ import java.util.Set;
  * current MailBox. The CLI's own words (listed under a group of their own, {@link #group}), the server's {@code ?} commands, MailBox names after
  * {@code use} (and {@code ?status}, {@code ?lock}, {@code ?unlock}), the service's commands, files
  * of the download directory after {@code get}, of the upload directory after an attach prefix
- * ({@code vis:NAME}). Local files after {@code put} are the terminal's business ({@link Shell}).
+ * ({@code vis:NAME}), a server command's options (as {@code ?help} lists them). Local files after
+ * {@code put} are the terminal's business ({@link Shell}).
  */
 final class Completions {
     static final List<String> LOCAL = org.ripv.client.cli.CliSession.OWN_WORDS;
@@ -56,6 +57,8 @@ final class Completions {
         } else if (index == 1 && first.equals("?delete")) {
             out.addAll(facts.uploads());
             out.addAll(facts.downloads());
+        } else if (first.startsWith("?") && index >= 1 && current.startsWith("-")) {
+            out.addAll(facts.serverOptions(first)); // from the server's command table, by way of ?help
         } else if (first.equals("put") && index >= 2) {
             out.addAll(List.of("--replace", "--keep"));
         } else if (!mailbox.isEmpty()) {
@@ -80,6 +83,28 @@ final class Completions {
             }
         }
         return out;
+    }
+
+    /**
+     * The options {@code ?help} shows on the line of {@code command} ({@code ?history MAILBOX
+     * [--last N] [--since ISO-TIME]} gives {@code --last}, {@code --since}): the server writes
+     * that line from the command's options, so what Tab offers is what the server parses.
+     */
+    static List<String> optionsIn(String help, String command) {
+        Set<String> out = new LinkedHashSet<>();
+        for (String line : help.split("\n")) {
+            String[] w = line.strip().split("\\s+");
+            if (!w[0].equalsIgnoreCase(command)) {
+                continue;
+            }
+            for (String word : w) {
+                String option = word.replaceAll("^[\\[(|]+|[\\])|,]+$", "");
+                if (option.matches("--[a-z][a-z0-9-]*")) {
+                    out.add(option);
+                }
+            }
+        }
+        return new ArrayList<>(out);
     }
 
     /**

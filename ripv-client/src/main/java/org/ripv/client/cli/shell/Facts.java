@@ -7,6 +7,11 @@ interface Facts {
     /** The server's {@code ?} commands, e.g. {@code ?mailboxes}. */
     List<String> serverCommands();
 
+    /** The options ({@code --last}) a server command's line in {@code ?help} names: the server's command table. */
+    default List<String> serverOptions(String command) {
+        return List.of();
+    }
+
     /** Every MailBox's full address. */
     List<String> mailboxes();
 

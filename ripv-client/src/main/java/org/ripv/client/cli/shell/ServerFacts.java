@@ -50,6 +50,12 @@ final class ServerFacts implements Facts {
     }
 
     @Override
+    public List<String> serverOptions(String command) {
+        return Completions.optionsIn(String.join("\n", cached("?help lines", Long.MAX_VALUE, "", "?help",
+                r -> List.of(r.footer().replyText().split("\n")))), command);
+    }
+
+    @Override
     public List<String> mailboxes() {
         return cached("?mailboxes", LIST_MILLIS, "", "?mailboxes", r -> {
             List<String> out = new ArrayList<>();
