@@ -55,16 +55,7 @@ public final class OptionValues {
     public static final class Last implements ITypeConverter<Integer> {
         @Override
         public Integer convert(String s) {
-            int n;
-            try {
-                n = Integer.parseInt(s);
-            } catch (NumberFormatException e) {
-                n = 0;
-            }
-            if (n < 1 || n > MAX_LAST) {
-                throw new TypeConversionException("--last takes a whole number from 1 to " + MAX_LAST + ", not '" + s + "'");
-            }
-            return n;
+            return count(s, MAX_LAST, "from 1 to " + MAX_LAST);
         }
     }
 
@@ -72,16 +63,21 @@ public final class OptionValues {
     public static final class Count implements ITypeConverter<Integer> {
         @Override
         public Integer convert(String s) {
-            int n;
-            try {
-                n = Integer.parseInt(s);
-            } catch (NumberFormatException e) {
-                n = 0;
-            }
-            if (n < 1) {
-                throw new TypeConversionException("--last takes a whole number from 1, not '" + s + "'");
-            }
-            return n;
+            return count(s, Integer.MAX_VALUE, "from 1");
         }
+    }
+
+    /** A whole number from 1 to {@code max}, or picocli's conversion error in the words of {@code --last}. */
+    private static int count(String s, int max, String range) {
+        int n;
+        try {
+            n = Integer.parseInt(s);
+        } catch (NumberFormatException e) {
+            n = 0;
+        }
+        if (n < 1 || n > max) {
+            throw new TypeConversionException("--last takes a whole number " + range + ", not '" + s + "'");
+        }
+        return n;
     }
 }

@@ -16,16 +16,19 @@ import org.ripv.messages.Footer;
 import org.ripv.messages.Ids;
 import org.ripv.messages.IncomingServerMessage;
 import org.ripv.messages.OutgoingServerMessage;
+import org.ripv.messages.Result;
 import org.ripv.messages.TableResult;
 import org.ripv.messages.VehicleEvent;
 import org.ripv.messages.ConsoleEntry;
 import org.ripv.naming.MailboxAddress;
 import org.ripv.plans.BehaviorFile;
 import org.ripv.plans.BehaviorFileReader;
+import org.ripv.plans.Forecast;
 import org.ripv.plans.PlanCheck;
 import org.ripv.plans.PlanLimits;
 import org.ripv.plans.PlanTable;
 import org.ripv.plans.Waypoint;
+import org.ripv.server.files.FileExistsException;
 import org.ripv.server.files.FileNames;
 import org.ripv.server.files.FileStore;
 import org.ripv.server.files.ToVehicleFolder;
@@ -135,8 +138,8 @@ final class PlanCommands {
             Fixes.Fix before = fixes.previous(mailbox).orElse(null);
             double seconds = before == null ? 0 : (fix.time() - before.time()) / 1000.0;
             if (before != null && seconds >= 60) {
-                double d = org.ripv.plans.Forecast.distance(before.lat(), before.lon(), fix.lat(), fix.lon());
-                double b = Math.toRadians(org.ripv.plans.Forecast.bearing(before.lat(), before.lon(), fix.lat(), fix.lon()));
+                double d = Forecast.distance(before.lat(), before.lon(), fix.lat(), fix.lon());
+                double b = Math.toRadians(Forecast.bearing(before.lat(), before.lon(), fix.lat(), fix.lon()));
                 double east = d / seconds * Math.sin(b) - cur.east();
                 double north = d / seconds * Math.cos(b) - cur.north();
                 speed = Math.hypot(east, north);
@@ -151,18 +154,18 @@ final class PlanCommands {
                 speedWhy = "speed " + ASSUMED_SPEED + " m/s (assumed: fewer than two fixes a minute apart, or no way made)";
             }
         }
-        List<org.ripv.plans.Forecast.Leg> legs = org.ripv.plans.Forecast.legs(c.file(), fix.lat(), fix.lon(),
+        List<Forecast.Leg> legs = Forecast.legs(c.file(), fix.lat(), fix.lon(),
                 Instant.ofEpochMilli(fix.time()), speed, cur.east(), cur.north());
         String basis = String.format(Locale.ROOT, "of %s for %s from its fix at %s (%.5f, %.5f); %s; %s", name, mailbox,
                 Instant.ofEpochMilli(fix.time()), fix.lat(), fix.lon(), speedWhy, currentWhy);
         List<String[]> rows = new ArrayList<>();
-        for (org.ripv.plans.Forecast.Leg l : legs) {
+        for (Forecast.Leg l : legs) {
             rows.add(new String[] {Integer.toString(l.n()), String.format(Locale.ROOT, "%.5f", l.lat()),
                     String.format(Locale.ROOT, "%.5f", l.lon()), String.format(Locale.ROOT, "%.1f", l.legMetres()),
                     String.format(Locale.ROOT, "%.1f", l.bearing()), String.format(Locale.ROOT, "%.1f", l.totalMetres()),
                     l.eta() == null ? null : l.eta().toString()});
         }
-        return ok(request, Ids.FID_PLAN, org.ripv.plans.Forecast.render(legs, basis), new TableResult("?plan forecast " + name,
+        return ok(request, Ids.FID_PLAN, Forecast.render(legs, basis), new TableResult("?plan forecast " + name,
                 List.of("n", "lat", "lon", "leg_m", "bearing", "total_m", "eta"),
                 List.of("INTEGER", "DOUBLE", "DOUBLE", "DOUBLE", "DOUBLE", "DOUBLE", "VARCHAR"), rows, false));
     }
@@ -244,7 +247,7 @@ final class PlanCommands {
         }
         String staged = ToVehicleFolder.DIR + "/" + folder + "/" + as;
         if (Files.exists(host.files().uploadPath(staged))) {
-            throw new org.ripv.server.files.FileExistsException(as + " waits to go to " + mailbox + " already (" + staged
+            throw new FileExistsException(as + " waits to go to " + mailbox + " already (" + staged
                     + ", ?changes " + mailbox + "); nothing was staged: ?delete " + staged + " first to send another in its place");
         }
         long id = book.nextId();
@@ -364,7 +367,7 @@ final class PlanCommands {
         }
     }
 
-    static OutgoingServerMessage ok(IncomingServerMessage request, String fid, String text, org.ripv.messages.Result result) {
+    static OutgoingServerMessage ok(IncomingServerMessage request, String fid, String text, Result result) {
         return request.reply(Footer.ok(fid, text, result).via(SERVER));
     }
 

@@ -5,6 +5,7 @@ import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.function.Function;
 
@@ -135,6 +136,6 @@ final class Overdue {
         if (s < 7200) {
             return s / 60 + " min";
         }
-        return String.format(java.util.Locale.ROOT, "%d h %02d min", s / 3600, s / 60 % 60);
+        return String.format(Locale.ROOT, "%d h %02d min", s / 3600, s / 60 % 60);
     }
 }

@@ -4,6 +4,7 @@ import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.core.type.TypeReference;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -19,6 +20,7 @@ import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.VehicleEvent;
 import org.ripv.naming.MailboxAddress;
 import org.ripv.server.store.StateStore;
+import org.ripv.surfacing.CallInterval;
 import org.ripv.surfacing.SurfaceDialogParser;
 import org.ripv.surfacing.Surfacing;
 import org.slf4j.Logger;
@@ -179,7 +181,7 @@ public final class Surfacings implements AutoCloseable {
         }
         if (e.event() == VehicleEvent.SURFACED) {
             String back = overdue.called(e.mailbox(), e.time(),
-                    org.ripv.surfacing.CallInterval.announced(e.text()).orElse(null));
+                    CallInterval.announced(e.text()).orElse(null));
             if (back != null) {
                 publish(e.mailbox(), VehicleEvent.OVERDUE, back, e.lat(), e.lon());
             }
@@ -243,7 +245,7 @@ public final class Surfacings implements AutoCloseable {
                 }
             }
         } catch (IOException x) {
-            throw new java.io.UncheckedIOException(x);
+            throw new UncheckedIOException(x);
         }
         return out;
     }
