@@ -9,7 +9,8 @@ import java.util.Set;
 /**
  * Tab completion for the CLI's lines: the word being typed, given the words before it and the
  * current MailBox. The CLI's own words (listed under a group of their own, {@link #group}), the server's {@code ?} commands, MailBox names after
- * {@code use} (and {@code ?status}, {@code ?lock}, {@code ?unlock}), the service's commands, files
+ * {@code use} and after every server command whose {@code ?help} line names a MAILBOX first (the
+ * server writes those lines from its command table), the service's commands, files
  * of the download directory after {@code get}, of the upload directory after an attach prefix
  * ({@code vis:NAME}), a server command's options (as {@code ?help} lists them). Local files after
  * {@code put} are the terminal's business ({@link Shell}).
@@ -46,7 +47,7 @@ final class Completions {
                 out.addAll(facts.serviceCommands(mailbox));
                 out.addAll(attached(current, mailbox));
             }
-        } else if (index == 1 && TAKES_MAILBOX.contains(first)) {
+        } else if (index == 1 && (TAKES_MAILBOX.contains(first) || first.startsWith("?") && facts.serverTakesMailbox(first))) {
             out.addAll(facts.mailboxes());
         } else if (index == 1 && first.equals("send") && !mailbox.isEmpty()) {
             out.addAll(facts.serviceCommands(mailbox)); // what follows send is the MailBox's
@@ -105,6 +106,17 @@ final class Completions {
             }
         }
         return new ArrayList<>(out);
+    }
+
+    /** Whether {@code ?help}'s line of {@code command} names a MailBox as its first word ({@code MAILBOX} or {@code [MAILBOX]}). */
+    static boolean takesMailboxIn(String help, String command) {
+        for (String line : help.split("\n")) {
+            String[] w = line.strip().split("\\s+");
+            if (w[0].equalsIgnoreCase(command)) {
+                return w.length > 1 && w[1].replaceAll("[\\[\\]]", "").equals("MAILBOX");
+            }
+        }
+        return false;
     }
 
     /**

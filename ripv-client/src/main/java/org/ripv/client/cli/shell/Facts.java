@@ -12,6 +12,11 @@ interface Facts {
         return List.of();
     }
 
+    /** Whether a server command's first word is a MailBox, as its line in {@code ?help} says ({@code ?history MAILBOX ...}). */
+    default boolean serverTakesMailbox(String command) {
+        return false;
+    }
+
     /** Every MailBox's full address. */
     List<String> mailboxes();
 

@@ -97,6 +97,9 @@ class CompletionsTest {
         assertThat(Completions.optionsIn(help, "?history")).containsExactly("--last", "--since");
         assertThat(Completions.optionsIn(help, "?SURFACINGS")).containsExactly("--last", "--json");
         assertThat(Completions.optionsIn(help, "?ping")).isEmpty();
+        assertThat(Completions.takesMailboxIn(help, "?history")).isTrue();
+        assertThat(Completions.takesMailboxIn(help, "?ping")).isFalse();
+        assertThat(Completions.takesMailboxIn("  ?changes [MAILBOX]  each change  [FID 1]", "?changes")).isTrue();
         Facts withOptions = new Facts() {
             @Override
             public List<String> serverCommands() {
@@ -109,8 +112,13 @@ class CompletionsTest {
             }
 
             @Override
+            public boolean serverTakesMailbox(String command) {
+                return Completions.takesMailboxIn(help, command);
+            }
+
+            @Override
             public List<String> mailboxes() {
-                return List.of();
+                return List.of("<SerialPortServer>::<shore>ru29");
             }
 
             @Override
@@ -135,5 +143,7 @@ class CompletionsTest {
         };
         assertThat(new Completions(withOptions).candidates(List.of("?history", "ru29", "--"), 2, ""))
                 .containsExactly("--last", "--since");
+        assertThat(new Completions(withOptions).candidates(List.of("?surfacings", ""), 1, ""))
+                .containsExactly("<SerialPortServer>::<shore>ru29");
     }
 }
