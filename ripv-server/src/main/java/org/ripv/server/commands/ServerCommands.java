@@ -40,6 +40,8 @@ import org.ripv.server.surfacing.SurfacingCommands;
 import org.ripv.server.vehicles.MailboxArgument;
 import org.ripv.server.vehicles.VehicleNames;
 import org.ripv.server.workflow.Workflows;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
 
 /**
  * The server's own {@code ?} commands (Appendix B and docs/protocol.md): {@link #table} names
@@ -151,6 +153,8 @@ public final class ServerCommands {
                         "its call records: one per surfacing (docs/surfacings.md)",
                         c -> parts.sessions().surfacingCommands().run(c.request(), c.command().fid(),
                                 c.options(SurfacingCommands.Options.class))).onFileWork())
+                .add(ServerCommand.parsed("?dac", Ids.FID_DAC, Dac::new,
+                        "a DatabaseServer's DAC deliveries: profiles, QC, what was pushed, what failed and why (docs/dac.md)", this::dac))
                 .add(ServerCommand.open("?cancel", Ids.FID_CANCEL, "?cancel MESSAGE-ID [CLIENT-ID]",
                         "stop a request that is queued or running", c -> {
                             checkers.execute(() -> outbox.accept(parts.cancels().command(c.request())));
@@ -298,6 +302,30 @@ public final class ServerCommands {
 
     private OutgoingServerMessage consoleCommand(Call c) throws IOException {
         return parts.sessions().consoleCommands().run(c.request(), c.command().fid(), c.words());
+    }
+
+    /** The words of {@code ?dac}, read by picocli through the command table. */
+    static final class Dac {
+        @Parameters(index = "0", paramLabel = "MAILBOX")
+        String mailbox;
+        @Parameters(index = "1", arity = "0..1", paramLabel = "GLIDER")
+        String glider;
+        @Option(names = "--json")
+        boolean json;
+    }
+
+    /**
+     * {@code ?dac MAILBOX [GLIDER] [--json]}: asks the DatabaseServer MailBox for its deliveries
+     * ({@code dac:status}), as the user's own command, so the permit file and the service's answer
+     * are those of any command to it.
+     */
+    private OutgoingServerMessage dac(Call c) {
+        Dac d = c.options(Dac.class);
+        MailboxAddress.parse(d.mailbox);
+        String body = "dac:status" + (d.glider == null ? "" : " " + d.glider) + (d.json ? " --json" : "");
+        Header h = c.request().header();
+        return route.apply(new IncomingServerMessage(new Header(h.messageId(), h.origin(), h.roles(),
+                h.serviceDestination(), d.mailbox, body, h.priority(), null)));
     }
 
     /**
