@@ -25,8 +25,11 @@ import org.ripv.plans.Forecast;
  * speed made good is the speed over ground.
  */
 public final class CallOutlook {
-    /** Fixes closer in time than this give no speed (a GPS fix wanders by metres). */
-    public static final Duration MIN_FIX_GAP = Duration.ofMinutes(1);
+    /**
+     * Fixes closer in time than this give no speed: two fixes of one surfacing, seconds apart, are
+     * mostly the GPS's own wander. Calls are usually hours apart; a simulator's, seconds.
+     */
+    public static final Duration MIN_FIX_GAP = Duration.ofSeconds(5);
     /** Calls whose intervals teach the expected one. */
     public static final int LEARN_FROM = 5;
     /** The trend series, in the order the vehicle page charts them. */
