@@ -174,8 +174,10 @@ class SurfacingsBrowserTest {
             wait.until(x -> "true".equals(x.findElement(By.tagName("body")).getAttribute("data-ready")));
             String row = "tr[data-address='" + GLIDER1 + "']";
             wait.until(x -> !x.findElements(By.cssSelector(row + " .badge.abort")).isEmpty());
-            assertThat(text(b, row + " .badge.abort")).contains("MS_ABORT_OVERDEPTH");
-            assertThat(text(b, row + " .badge.leak")).isEqualTo("leak 1.21 V");
+            assertThat(text(b, row + " .badge.abort")).isEqualTo("abort"); // the second call's, not new since
+            assertThat(attr(b, row + " .badge.abort", "title")).startsWith("last abort: MS_ABORT_OVERDEPTH (dive_to: depth 1012.3");
+            assertThat(text(b, row + " .badge.leak")).isEqualTo("leak");
+            assertThat(attr(b, row + " .badge.leak", "title")).isEqualTo("leak detect 1.21 V");
             assertThat(text(b, row + " .because")).isIn("Surface interval [1]", "Abort [MS_ABORT_OVERDEPTH]");
             assertThat(text(b, row + " .battery")).matches("1\\d\\.\\d\\d V");
             assertThat(text(b, row + " .next-call")).matches("next \\d{4}-\\d\\d-\\d\\d \\d\\d:\\d\\d:\\d\\d UTC \\((in|.* late).*\\)");

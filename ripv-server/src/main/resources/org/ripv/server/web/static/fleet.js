@@ -42,14 +42,15 @@ function row(address, v, label) {
   if (a) { // beside the call state, so a phone (which hides the later columns) shows it too
     const ab = document.createElement('span');
     ab.className = `badge abort${a.fresh ? '' : ' old'}`;
-    ab.textContent = a.text;
-    ab.title = a.detail;
+    ab.textContent = a.fresh ? 'new abort' : 'abort';
+    ab.title = `${a.text} (${a.detail})`; // the cause in full on the vehicle page
     state.append(' ', ab);
   }
   if (last?.leak === true) {
     const lk = document.createElement('span');
     lk.className = 'badge leak';
-    lk.textContent = `leak ${Number(last.leak_v).toFixed(2)} V`;
+    lk.textContent = 'leak';
+    lk.title = `leak detect ${Number(last.leak_v).toFixed(2)} V`;
     state.append(' ', lk);
   }
   const cells = [ago(v.lastContact), v.lat == null ? '—' : `${v.lat.toFixed(4)}, ${v.lon.toFixed(4)}`, '', String(v.calls ?? 0), v.latest || ''];
