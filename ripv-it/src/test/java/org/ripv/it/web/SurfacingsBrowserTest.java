@@ -54,7 +54,7 @@ class SurfacingsBrowserTest {
         sys.launch("serial", null, "-Dripv.host=localhost", "-jar", LaunchedWeb.jar("ripv-services"), "serial", "--server",
                 "127.0.0.1:" + sys.registry, "--secret-file", sys.data.resolve("service.secret").toString(), "--carrier", "ignore",
                 "--no-enumerate", "--work", dir.resolve("work").toString(),
-                "--link", "listen://127.0.0.1:" + link + ",name=glider1,prompt-regex=GliderDOS[^>]*>|C:\\\\>,line-ending=cr");
+                "--link", "listen://127.0.0.1:" + link + ",name=glider1,prompt-regex=Glider[Dd][Oo][Ss] [A-Z] -?[0-9]+ >|C:\\\\>,line-ending=cr");
         sys.waitFor("the SerialPortServer's MailBoxes", () -> sys.log("serial").contains("MailBoxes:"));
         glider = sys.launch("glider1", null, "-jar", LaunchedWeb.jar("ripv-services"), "simulator", "--call", "127.0.0.1:" + link,
                 "--name", "glider1", "--dialog", "gliderdos", "--surface-seconds", "3", "--dive-seconds", "3",

@@ -183,6 +183,9 @@ class SurfacingsTest {
         Map<String, Object> o = surfacings.outlook(RU29, surfacings.last(RU29, 20));
         assertThat(o).containsEntry("interval_s", 3600L).containsEntry("interval_from", "learned from its last 2 intervals")
                 .containsEntry("next_call_utc", java.time.Instant.ofEpochMilli(t0 + 3 * 3_600_000L + 1).toString());
+        assertThat(SurfacingCommands.words(o)).startsWith("next call: " + o.get("next_call_utc")
+                + " (every 3600 s, learned from its last 2 intervals)").contains("\nwaypoint 38.81000, -74.22333: ") // fw7's c_wpt 3848.6, -7413.4
+                .contains(" km at ").contains(" from the last fix");
         Thread.sleep(300);
         assertThat(events).isEmpty(); // long overdue before the restart: the server that ran then said so
     }
