@@ -59,8 +59,12 @@ function row(address, v, label) {
   const lastCall = tr.children[4];
   lastCall.className = 'last-call';
   const part = (cls, text) => { const sp = document.createElement('span'); sp.className = cls; sp.textContent = text; return sp; };
-  lastCall.append(part('because', last?.because || '—'), ' · ', part('battery', last?.battery_v == null ? '—' : `${Number(last.battery_v).toFixed(2)} V`),
-    document.createElement('br'), part('next-call', c?.outlook?.next_call_utc ? `next ${nextCallShort(c.outlook)}` : 'next call not known'));
+  if (last) { // a MailBox that printed no surface dialog (a service, a PicoDOS glider) has nothing to say here
+    lastCall.append(part('because', last.because || '—'), ' · ', part('battery', last.battery_v == null ? '—' : `${Number(last.battery_v).toFixed(2)} V`),
+      document.createElement('br'), part('next-call', c.outlook?.next_call_utc ? `next ${nextCallShort(c.outlook)}` : 'next call not known yet'));
+  } else {
+    lastCall.textContent = '—';
+  }
   tr.children[2].className = 'ago';
   tr.children[2].dataset.time = String(v.lastContact || 0);
   tr.children[2].title = utc(v.lastContact); // the time itself, as every page writes it

@@ -2,7 +2,7 @@
 // --outlook` (docs/surfacings.md#the-outlook). The server does the arithmetic (CallOutlook); this only words it, so the
 // fleet and vehicle pages show the same thing. No DOM here.
 import { command } from './address.js';
-import { utc } from './time.js';
+import { utc, day, clock } from './time.js';
 
 /** Calls the pages ask for: enough for trends and the track, bounded. */
 export const CALLS = 200;
@@ -39,11 +39,12 @@ export function nextCall(o, now = Date.now()) {
   return `${utc(at)} (${when}; every ${span(o.interval_s * 1000)}, ${o.interval_from})`;
 }
 
-/** The next call, short (the fleet's cell): "2026-11-28 09:16:46 UTC (in 4 s)"; its basis in nextCall. */
+/** The next call, short (the fleet's cell): "09:16:46 UTC (in 4 s)", the day too when it is not today's; its basis in nextCall. */
 export function nextCallShort(o, now = Date.now()) {
   if (!o?.next_call_utc) return 'not known';
   const at = Date.parse(o.next_call_utc);
-  return `${utc(at)} (${at >= now ? `in ${span(at - now)}` : `${span(now - at)} late`})`;
+  const when = day(at) === day(now) ? `${clock(at)} UTC` : utc(at);
+  return `${when} (${at >= now ? `in ${span(at - now)}` : `${span(now - at)} late`})`;
 }
 
 /** The waypoint in words: where, how far and which way from the last fix, and when the glider gets there. */
