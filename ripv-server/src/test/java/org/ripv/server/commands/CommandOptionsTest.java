@@ -37,7 +37,7 @@ class CommandOptionsTest {
         assertThat(ServerCommand.parsed("?audit", "1", AuditCommand.Options::new, "", c -> null).usage())
                 .isEqualTo("?audit [--last N] [--since ISO-TIME]");
         assertThat(ServerCommand.parsed("?surfacings", "1", SurfacingCommands.Options::new, "", c -> null).usage())
-                .isEqualTo("?surfacings MAILBOX [--last N] [--json]");
+                .isEqualTo("?surfacings MAILBOX [--last N] [--json] [--outlook]");
         assertThat(ServerCommand.parsed("?dac", "1", ServerCommands.Dac::new, "", c -> null).usage())
                 .isEqualTo("?dac MAILBOX [GLIDER] [--json]");
         assertThat(ServerCommand.open("?ping", "1", "?ping", "", c -> null).optionNames()).isEmpty();
