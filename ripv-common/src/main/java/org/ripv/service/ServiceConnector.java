@@ -1,19 +1,37 @@
 package org.ripv.service;
 
+import java.io.BufferedInputStream;
+import java.io.BufferedOutputStream;
+import java.io.DataInputStream;
+import java.io.DataOutputStream;
+import java.io.IOException;
+import java.net.InetSocketAddress;
+import java.net.Socket;
+import java.net.SocketTimeoutException;
 import java.rmi.NotBoundException;
 import java.rmi.RemoteException;
 import java.rmi.registry.Registry;
+import java.rmi.server.RMIServerSocketFactory;
 import java.time.Duration;
 import java.util.List;
+import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.ExecutionException;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Consumer;
 import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.IncomingServiceMessage;
 import org.ripv.messages.MailboxStatus;
 import org.ripv.messages.OutgoingServiceMessage;
 import org.ripv.messages.ServiceDescriptor;
+import org.ripv.naming.NameTaken;
+import org.ripv.outbound.CallChannel;
+import org.ripv.outbound.OutboundHandshake;
+import org.ripv.outbound.OutboundLimits;
+import org.ripv.rmi.DeadlineSocketFactory;
 import org.ripv.rmi.GenericRMIInterface;
 import org.ripv.rmi.RmiSupport;
 import org.ripv.security.ServiceProof;
@@ -41,20 +59,20 @@ public final class ServiceConnector implements AutoCloseable {
     private volatile CountDownLatch registered = new CountDownLatch(1);
     private volatile boolean warnedAway;
     private volatile boolean warnedImpostor;
-    private static final java.util.concurrent.atomic.AtomicLong STAMPS = new java.util.concurrent.atomic.AtomicLong();
-    private volatile java.util.function.Consumer<String> printer = m -> { };
+    private static final AtomicLong STAMPS = new AtomicLong();
+    private volatile Consumer<String> printer = m -> { };
     private volatile String lastNotice;
-    private volatile org.ripv.outbound.CallChannel channel;
+    private volatile CallChannel channel;
     /** Guards the window in which the server knows the new token and this side does not yet. */
     private final Object tokenLock = new Object();
     private boolean registering;
-    private final java.util.concurrent.CompletableFuture<String> fatal = new java.util.concurrent.CompletableFuture<>();
+    private final CompletableFuture<String> fatal = new CompletableFuture<>();
     /** Registrations in a row that a retry cannot mend (only the timer thread counts them). */
     private int unmendable;
     /** Which of {@code options.servers()} this service uses (or tries) now. */
     private volatile int current;
 
-    private ServiceConnector(RIPVService service, ServiceOptions options, java.rmi.server.RMIServerSocketFactory sockets)
+    private ServiceConnector(RIPVService service, ServiceOptions options, RMIServerSocketFactory sockets)
             throws RemoteException {
         this.service = service;
         this.options = options;
@@ -80,7 +98,7 @@ public final class ServiceConnector implements AutoCloseable {
      * through {@code sockets} (null: RMI's default, all addresses).
      */
     public static ServiceConnector connect(RIPVService service, ServiceOptions options,
-                                           java.rmi.server.RMIServerSocketFactory sockets) throws Exception {
+                                           RMIServerSocketFactory sockets) throws Exception {
         RmiSupport.configure(10_000, 30_000);
         service.start();
         ServiceConnector c = new ServiceConnector(service, options, sockets);
@@ -103,7 +121,7 @@ public final class ServiceConnector implements AutoCloseable {
     public String awaitFailure() throws InterruptedException {
         try {
             return fatal.get();
-        } catch (java.util.concurrent.ExecutionException e) {
+        } catch (ExecutionException e) {
             return e.getCause().toString();
         }
     }
@@ -150,7 +168,7 @@ public final class ServiceConnector implements AutoCloseable {
             }
             lost();
         } catch (IllegalStateException e) {
-            if (org.ripv.naming.NameTaken.is(e.getMessage()) && options.giveUpAfter() > 0) {
+            if (NameTaken.is(e.getMessage()) && options.giveUpAfter() > 0) {
                 // another running service holds the name: stop rather than contend for it (--retry-forever waits for it to go)
                 log.error("{}: the server refused the registration: {}", service.name(), e.getMessage());
                 fatal.complete("the server at " + where() + " refused the registration: " + e.getMessage());
@@ -250,7 +268,7 @@ public final class ServiceConnector implements AutoCloseable {
     }
 
     /** Where refusals the service can fix are printed besides the log (a launcher's standard error). */
-    public void onNotice(java.util.function.Consumer<String> printer) {
+    public void onNotice(Consumer<String> printer) {
         this.printer = printer == null ? m -> { } : printer;
         String last = lastNotice;
         if (last != null) {
@@ -343,21 +361,21 @@ public final class ServiceConnector implements AutoCloseable {
      * server: the next heartbeat connects and registers again.
      */
     private GenericRMIInterface openChannel() throws RemoteException {
-        org.ripv.outbound.CallChannel old = channel;
+        CallChannel old = channel;
         if (old != null) {
             old.close();
         }
-        java.net.Socket socket = new java.net.Socket();
+        Socket socket = new Socket();
         String where = host() + ":" + options.outboundPort();
         try {
-            org.ripv.rmi.DeadlineSocketFactory f = org.ripv.rmi.DeadlineSocketFactory.fromSystem();
-            socket.connect(new java.net.InetSocketAddress(host(), options.outboundPort()), f.connectMillis());
+            DeadlineSocketFactory f = DeadlineSocketFactory.fromSystem();
+            socket.connect(new InetSocketAddress(host(), options.outboundPort()), f.connectMillis());
             socket.setSoTimeout(Math.max(f.readMillis(), 5_000));
-            java.io.DataInputStream in = new java.io.DataInputStream(new java.io.BufferedInputStream(socket.getInputStream()));
-            java.io.DataOutputStream out = new java.io.DataOutputStream(new java.io.BufferedOutputStream(socket.getOutputStream()));
-            org.ripv.outbound.OutboundHandshake.service(in, out, options.secret(), service.descriptor().name());
-            org.ripv.outbound.CallChannel c = new org.ripv.outbound.CallChannel(socket, where, remote,
-                    org.ripv.outbound.OutboundLimits.MAX_FRAME, java.time.Duration.ofMillis(Math.max(f.readMillis(), 5_000)));
+            DataInputStream in = new DataInputStream(new BufferedInputStream(socket.getInputStream()));
+            DataOutputStream out = new DataOutputStream(new BufferedOutputStream(socket.getOutputStream()));
+            OutboundHandshake.service(in, out, options.secret(), service.descriptor().name());
+            CallChannel c = new CallChannel(socket, where, remote,
+                    OutboundLimits.MAX_FRAME, Duration.ofMillis(Math.max(f.readMillis(), 5_000)));
             c.closed().thenAccept(why -> {
                 if (token != null && server == c.remote() && !fatal.isDone()) {
                     log.warn("{}: the outbound connection to {} closed ({}); connecting again", service.name(), where, why);
@@ -366,10 +384,10 @@ public final class ServiceConnector implements AutoCloseable {
             });
             channel = c;
             return c.remote();
-        } catch (java.net.SocketTimeoutException e) {
+        } catch (SocketTimeoutException e) {
             close(socket);
             throw new RemoteException("could not reach the server's outbound port " + where + ": timed out", e);
-        } catch (java.io.IOException e) {
+        } catch (IOException e) {
             close(socket);
             throw new RemoteException("could not connect to the server's outbound port " + where + ": " + e.getMessage(), e);
         } catch (RuntimeException e) {
@@ -378,10 +396,10 @@ public final class ServiceConnector implements AutoCloseable {
         }
     }
 
-    private static void close(java.net.Socket s) {
+    private static void close(Socket s) {
         try {
             s.close();
-        } catch (java.io.IOException ignored) {
+        } catch (IOException ignored) {
             // closing anyway
         }
     }
@@ -445,7 +463,7 @@ public final class ServiceConnector implements AutoCloseable {
     public void close() {
         fatal.complete("closed");
         timer.shutdownNow();
-        org.ripv.outbound.CallChannel c = channel;
+        CallChannel c = channel;
         if (c != null) {
             c.close();
         }

@@ -17,6 +17,7 @@ import org.jfree.chart.axis.ValueAxis;
 import org.jfree.chart.labels.StandardXYToolTipGenerator;
 import org.jfree.chart.plot.XYPlot;
 import org.jfree.chart.renderer.xy.XYLineAndShapeRenderer;
+import org.jfree.data.Range;
 import org.jfree.data.xy.DefaultXYDataset;
 import org.ripv.export.SvgChart;
 import org.ripv.messages.ChartData;
@@ -154,8 +155,8 @@ public final class Charts {
      */
     public static byte[] svg(JFreeChart chart, ChartData data, int width, int height) {
         XYPlot plot = chart.getXYPlot();
-        org.jfree.data.Range x = plot.getDomainAxis().getRange();
-        org.jfree.data.Range y = plot.getRangeAxis().getRange();
+        Range x = plot.getDomainAxis().getRange();
+        Range y = plot.getRangeAxis().getRange();
         SvgChart.View view = new SvgChart.View(x.getLowerBound(), x.getUpperBound(), y.getLowerBound(), y.getUpperBound(),
                 width, height);
         return SvgChart.svg(data, view).getBytes(StandardCharsets.UTF_8);

@@ -9,6 +9,7 @@ import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Supplier;
 import org.ripv.client.handlers.ClientSocketHandler;
 import org.ripv.client.handlers.RipvErrorException;
+import org.ripv.messages.ErrorCode;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -61,7 +62,7 @@ final class Transfers {
                 finish(t, Transfer.State.DONE, "uploaded " + name + " to the server's upload directory");
                 requests.background("?ulfiles");
             } catch (RipvErrorException e) {
-                if (e.reply().footer().errorCode() == org.ripv.messages.ErrorCode.FILE_EXISTS) {
+                if (e.reply().footer().errorCode() == ErrorCode.FILE_EXISTS) {
                     ui.execute(() -> t.nameTaken(true)); // the FIM panel asks: keep both, replace or cancel
                 }
                 finish(t, Transfer.State.FAILED, "upload of " + name + " refused: " + Failures.describe(e));

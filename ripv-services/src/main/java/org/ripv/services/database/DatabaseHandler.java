@@ -10,6 +10,7 @@ import java.sql.Statement;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.Objects;
 import java.util.Properties;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.TableResult;
@@ -18,6 +19,7 @@ import org.ripv.service.Availability;
 import org.ripv.service.CommandHandler;
 import org.ripv.service.Reply;
 import org.ripv.service.Request;
+import org.ripv.services.ingest.IngestLimits;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -70,7 +72,7 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
     private volatile boolean cancelRequested;
     /** True while an ingest runs (it has no one statement to cancel: it looks at cancelRequested between rows). */
     private boolean ingesting;
-    private org.ripv.services.ingest.IngestLimits ingestLimits = org.ripv.services.ingest.IngestLimits.defaults();
+    private IngestLimits ingestLimits = IngestLimits.defaults();
 
     public DatabaseHandler(DatabaseTarget target, QueryLimits limits) {
         this(target, limits, IngestNotices.NONE);
@@ -85,8 +87,8 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
     }
 
     /** Sets how much one ingested file may hold ({@code --ingest-max-bytes}, {@code --ingest-max-rows}). */
-    public DatabaseHandler withIngestLimits(org.ripv.services.ingest.IngestLimits limits) {
-        this.ingestLimits = java.util.Objects.requireNonNull(limits, "limits");
+    public DatabaseHandler withIngestLimits(IngestLimits limits) {
+        this.ingestLimits = Objects.requireNonNull(limits, "limits");
         return this;
     }
 

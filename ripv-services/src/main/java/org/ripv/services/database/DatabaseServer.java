@@ -9,6 +9,7 @@ import java.util.Set;
 import org.ripv.messages.Ids;
 import org.ripv.naming.Handles;
 import org.ripv.service.RIPVService;
+import org.ripv.services.ingest.IngestLimits;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -38,7 +39,7 @@ public final class DatabaseServer extends RIPVService {
     private final List<DatabaseTarget> targets;
     private final QueryLimits limits;
     private final List<DatabaseHandler> handlers = new ArrayList<>();
-    private volatile org.ripv.services.ingest.IngestLimits ingestLimits = org.ripv.services.ingest.IngestLimits.defaults();
+    private volatile IngestLimits ingestLimits = IngestLimits.defaults();
 
     public DatabaseServer(String host, List<DatabaseTarget> targets, QueryLimits limits) {
         super(NAME, Ids.SID_DATABASE, host);
@@ -56,7 +57,7 @@ public final class DatabaseServer extends RIPVService {
     }
 
     /** How much one ingested file may hold (issue 33 item 8); set before the service starts. */
-    public DatabaseServer withIngestLimits(org.ripv.services.ingest.IngestLimits limits) {
+    public DatabaseServer withIngestLimits(IngestLimits limits) {
         this.ingestLimits = Objects.requireNonNull(limits, "limits");
         return this;
     }

@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.ripv.messages.ChartData;
+import org.slf4j.LoggerFactory;
 
 /**
  * Builds the {@link ChartData} a client redraws interactively from the same data file a worker
@@ -78,7 +79,7 @@ final class ChartDataBuilder {
         try {
             return build(data, checked);
         } catch (IOException | DataFormatException | RuntimeException e) {
-            org.slf4j.LoggerFactory.getLogger(ChartDataBuilder.class).warn("no chart data for the reply: {}", e.toString());
+            LoggerFactory.getLogger(ChartDataBuilder.class).warn("no chart data for the reply: {}", e.toString());
             return null;
         }
     }

@@ -28,6 +28,7 @@ import org.jfree.chart.plot.PlotOrientation;
 import org.jfree.chart.plot.XYPlot;
 import org.jfree.chart.renderer.xy.XYLineAndShapeRenderer;
 import org.jfree.data.xy.DefaultXYDataset;
+import org.slf4j.LoggerFactory;
 
 /**
  * The built-in worker's drawing: a data file to a JFreeChart line plot to JPEG bytes.
@@ -122,7 +123,7 @@ public final class PlotRenderer {
             style(chart, 1);
             jpeg(chart, 200, 150);
         } catch (IOException | RuntimeException e) {
-            org.slf4j.LoggerFactory.getLogger(PlotRenderer.class).debug("warm-up plot failed: {}", e.toString());
+            LoggerFactory.getLogger(PlotRenderer.class).debug("warm-up plot failed: {}", e.toString());
         }
     }
 

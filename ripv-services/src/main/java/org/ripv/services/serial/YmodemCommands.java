@@ -1,5 +1,6 @@
 package org.ripv.services.serial;
 
+import java.io.EOFException;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -91,7 +92,7 @@ final class YmodemCommands {
             console.event(VehicleEvent.TRANSFER_DONE, r.text() + " for " + request.user());
             return r;
         } catch (ServiceException | IOException e) {
-            if (!(e instanceof java.io.EOFException)) {
+            if (!(e instanceof EOFException)) {
                 resync(c);
             }
             String why = e.getMessage();

@@ -6,8 +6,10 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Supplier;
 import org.ripv.exceptions.ServiceException;
 import org.ripv.files.PrivateFiles;
 import org.ripv.messages.ErrorCode;
@@ -95,7 +97,7 @@ final class ZmodemCommands {
      * event. A ZMODEM failure or a dropped call is a TRANSFER_FAILED error ending with {@code after}
      * (which parts wait for the next call).
      */
-    private Reply transfer(Connection c, Request request, Exchange exchange, java.util.function.Supplier<String> after)
+    private Reply transfer(Connection c, Request request, Exchange exchange, Supplier<String> after)
             throws IOException, ServiceException {
         c.listen();
         c.binary(true);
@@ -126,7 +128,7 @@ final class ZmodemCommands {
         }
     }
 
-    private ServiceException failed(Request request, String why, java.util.function.Supplier<String> after) {
+    private ServiceException failed(Request request, String why, Supplier<String> after) {
         console.transfer(request.user(), "transfer failed: " + why);
         console.event(VehicleEvent.TRANSFER_FAILED, "'" + request.command() + "' for " + request.user() + ": " + why);
         return new ServiceException(ErrorCode.TRANSFER_FAILED, "ZMODEM transfer failed: " + why + after.get());
@@ -245,7 +247,7 @@ final class ZmodemCommands {
 
     private static void deleteTree(Path dir) {
         try (var walk = Files.walk(dir)) {
-            walk.sorted(java.util.Comparator.reverseOrder()).forEach(p -> {
+            walk.sorted(Comparator.reverseOrder()).forEach(p -> {
                 try {
                     Files.deleteIfExists(p);
                 } catch (IOException e) {

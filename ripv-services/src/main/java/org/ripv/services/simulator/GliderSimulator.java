@@ -2,6 +2,7 @@ package org.ripv.services.simulator;
 
 import java.io.EOFException;
 import java.io.IOException;
+import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
@@ -10,6 +11,7 @@ import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
+import java.time.Instant;
 import java.time.LocalDateTime;
 import java.time.ZoneId;
 import java.time.format.DateTimeFormatter;
@@ -17,8 +19,10 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Random;
+import java.util.Set;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
+import java.util.function.LongFunction;
 import org.ripv.services.serial.Link;
 import org.ripv.services.serial.LinkSettings;
 import org.ripv.services.serial.SerialLink;
@@ -63,7 +67,7 @@ public final class GliderSimulator implements AutoCloseable {
     private int port;
     private volatile int calls;
     private Thread thread;
-    private java.net.InetAddress bindAddress = java.net.InetAddress.getLoopbackAddress();
+    private InetAddress bindAddress = InetAddress.getLoopbackAddress();
     /** Null: the PicoDOS prompt at once (the default); else the Slocum surface dialog and GliderDOS. */
     private volatile GliderDos gliderDos;
     private volatile SurfaceTrouble trouble = SurfaceTrouble.NONE;
@@ -149,7 +153,7 @@ public final class GliderSimulator implements AutoCloseable {
      * The address {@link #listen} binds to: loopback unless set (a simulated vehicle is for this
      * machine; {@code --bind} widens it). Null means every interface. Call before {@code listen}.
      */
-    public synchronized GliderSimulator bindTo(java.net.InetAddress address) {
+    public synchronized GliderSimulator bindTo(InetAddress address) {
         this.bindAddress = address;
         return this;
     }
@@ -170,7 +174,7 @@ public final class GliderSimulator implements AutoCloseable {
      * Trouble on demand in the GliderDOS dialog: an abort on each of {@code abortCalls} (1 for the
      * first call), a leak from call {@code leakFrom} on (0: none). Call before {@code call}.
      */
-    public synchronized GliderSimulator trouble(java.util.Set<Integer> abortCalls, int leakFrom) {
+    public synchronized GliderSimulator trouble(Set<Integer> abortCalls, int leakFrom) {
         this.trouble = new SurfaceTrouble(abortCalls, leakFrom);
         return this;
     }
@@ -317,7 +321,7 @@ public final class GliderSimulator implements AutoCloseable {
                     calls++;
                     ShellLink shell = new ShellLink(link);
                     if (gliderDos == null) {
-                        say(shell, dialog.text(calls, java.time.Instant.now(), "SIM.MI", plan.dialogLines()) + PROMPT);
+                        say(shell, dialog.text(calls, Instant.now(), "SIM.MI", plan.dialogLines()) + PROMPT);
                         converse(shell, System.nanoTime() + surfaceTime.toNanos(), dialog::chatter, 0);
                         submerged = true;
                         say(shell, "\r\nHanging up: diving for " + diveTime.toSeconds() + " s\r\n");
@@ -357,7 +361,7 @@ public final class GliderSimulator implements AutoCloseable {
         GliderDos g = gliderDos;
         g.surfaced();
         pendingEnd = null;
-        say(shell, dialog.fullText(calls, java.time.Instant.now(), g.mission(), plan.waypointLines() + g.reportLines(), trouble));
+        say(shell, dialog.fullText(calls, Instant.now(), g.mission(), plan.waypointLines() + g.reportLines(), trouble));
         SurfaceCountdown.Answer a = SurfaceCountdown.run(shell, surfaceWait, surfaceWait, dir);
         if (a == SurfaceCountdown.Answer.CONTROL_C) {
             say(shell, g.prompt());
@@ -400,7 +404,7 @@ public final class GliderSimulator implements AutoCloseable {
      * line has been idle a while, as a vehicle's own output. With {@code renew} (nanoseconds), each
      * command moves {@code until} to that long after it: a time without input, as GliderDOS has.
      */
-    private boolean converse(ShellLink shell, long until, java.util.function.LongFunction<String> chatter, long renew)
+    private boolean converse(ShellLink shell, long until, LongFunction<String> chatter, long renew)
             throws IOException {
         StringBuilder line = new StringBuilder();
         byte[] buf = new byte[1024];

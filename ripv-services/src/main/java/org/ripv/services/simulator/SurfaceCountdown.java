@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
+import java.util.Locale;
 
 /**
  * The wait after a Slocum's surface dialog: it counts down, saying so every 10 s, and listens
@@ -79,7 +80,7 @@ final class SurfaceCountdown {
 
     private static long mafiles(Path dir) throws IOException {
         try (var list = Files.list(dir)) {
-            return list.filter(p -> p.getFileName().toString().toLowerCase(java.util.Locale.ROOT).endsWith(".ma")).count();
+            return list.filter(p -> p.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".ma")).count();
         }
     }
 }
