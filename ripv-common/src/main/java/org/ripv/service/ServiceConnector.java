@@ -1,37 +1,20 @@
 package org.ripv.service;
 
-import java.io.BufferedInputStream;
-import java.io.BufferedOutputStream;
-import java.io.DataInputStream;
-import java.io.DataOutputStream;
-import java.io.IOException;
-import java.net.InetSocketAddress;
-import java.net.Socket;
-import java.net.SocketTimeoutException;
 import java.rmi.NotBoundException;
 import java.rmi.RemoteException;
 import java.rmi.registry.Registry;
 import java.rmi.server.RMIServerSocketFactory;
 import java.time.Duration;
-import java.util.List;
 import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Consumer;
-import org.ripv.messages.ConsoleEntry;
-import org.ripv.messages.IncomingServiceMessage;
-import org.ripv.messages.MailboxStatus;
-import org.ripv.messages.OutgoingServiceMessage;
 import org.ripv.messages.ServiceDescriptor;
 import org.ripv.naming.NameTaken;
 import org.ripv.outbound.CallChannel;
-import org.ripv.outbound.OutboundHandshake;
-import org.ripv.outbound.OutboundLimits;
-import org.ripv.rmi.DeadlineSocketFactory;
 import org.ripv.rmi.GenericRMIInterface;
 import org.ripv.rmi.RmiSupport;
 import org.ripv.security.ServiceProof;
@@ -51,21 +34,16 @@ public final class ServiceConnector implements AutoCloseable {
 
     private final RIPVService service;
     private final ServiceOptions options;
-    private final Remote remote = new Remote();
+    private final ServiceSession session = new ServiceSession();
+    private final ServiceRemote remote;
     private final GenericRMIInterface stub;
     private final ScheduledExecutorService timer;
-    private volatile GenericRMIInterface server;
-    private volatile String token;
-    private volatile CountDownLatch registered = new CountDownLatch(1);
     private volatile boolean warnedAway;
     private volatile boolean warnedImpostor;
     private static final AtomicLong STAMPS = new AtomicLong();
     private volatile Consumer<String> printer = m -> { };
     private volatile String lastNotice;
     private volatile CallChannel channel;
-    /** Guards the window in which the server knows the new token and this side does not yet. */
-    private final Object tokenLock = new Object();
-    private boolean registering;
     private final CompletableFuture<String> fatal = new CompletableFuture<>();
     /** Registrations in a row that a retry cannot mend (only the timer thread counts them). */
     private int unmendable;
@@ -76,6 +54,7 @@ public final class ServiceConnector implements AutoCloseable {
             throws RemoteException {
         this.service = service;
         this.options = options;
+        this.remote = new ServiceRemote(service, session);
         // Outbound-only: nothing listens here; the server's calls come back over our own connection.
         this.stub = options.outbound() ? null : RmiSupport.export(remote, options.exportPort(), sockets);
         this.timer = Executors.newSingleThreadScheduledExecutor(r -> {
@@ -102,7 +81,7 @@ public final class ServiceConnector implements AutoCloseable {
         RmiSupport.configure(10_000, 30_000);
         service.start();
         ServiceConnector c = new ServiceConnector(service, options, sockets);
-        service.replyTo(c.new Sink());
+        service.replyTo(c.session.sink());
         c.timer.execute(c::tick);
         c.timer.scheduleWithFixedDelay(c::tick, options.heartbeat().toMillis(), options.heartbeat().toMillis(),
                 TimeUnit.MILLISECONDS);
@@ -111,7 +90,7 @@ public final class ServiceConnector implements AutoCloseable {
 
     /** Waits until the service is registered; false when the time ran out. */
     public boolean awaitRegistered(Duration timeout) throws InterruptedException {
-        return registered.await(timeout.toMillis(), TimeUnit.MILLISECONDS);
+        return session.awaitRegistered(timeout);
     }
 
     /**
@@ -127,13 +106,13 @@ public final class ServiceConnector implements AutoCloseable {
     }
 
     public boolean isRegistered() {
-        return token != null;
+        return session.isRegistered();
     }
 
     private void tick() {
         try {
-            String t = token;
-            if (t != null && server.heartbeat(t)) {
+            String t = session.token();
+            if (t != null && session.server().heartbeat(t)) {
                 return;
             }
             if (t != null) {
@@ -142,7 +121,7 @@ public final class ServiceConnector implements AutoCloseable {
             }
             registerAny();
         } catch (RemoteException | NotBoundException e) {
-            if (token != null) {
+            if (session.isRegistered()) {
                 log.warn("{}: lost the server at {} ({}); will register again when it{} is back", service.name(),
                         where(), e.getClass().getSimpleName(), options.servers().size() > 1 ? " or another of " + options.servers() : "");
                 lost();
@@ -290,10 +269,7 @@ public final class ServiceConnector implements AutoCloseable {
     }
 
     private void lost() {
-        token = null;
-        if (registered.getCount() == 0) {
-            registered = new CountDownLatch(1);
-        }
+        session.lost();
     }
 
     private void register() throws RemoteException, NotBoundException {
@@ -318,9 +294,7 @@ public final class ServiceConnector implements AutoCloseable {
             }
         }
         String t = null;
-        synchronized (tokenLock) {
-            registering = true;
-        }
+        session.registering();
         try {
             if (options.outbound()) {
                 // Over an outbound connection the handshake has proven the secret both ways: it is never sent.
@@ -335,22 +309,12 @@ public final class ServiceConnector implements AutoCloseable {
                 t = ServiceProof.token(secret, mine, answer[0]);
             }
         } finally {
-            synchronized (tokenLock) {
-                // With the token, in one step: a server call waiting in check() must never see the
-                // registration over and the token not yet set (it was refused as "unknown").
-                if (t != null) {
-                    server = s;
-                    token = t;
-                }
-                registering = false;
-                tokenLock.notifyAll();
-            }
+            session.registered(s, t);
         }
         warnedAway = false;
         warnedImpostor = false;
         unmendable = 0;
         lastNotice = null;
-        registered.countDown();
         log.info("{} registered with the RIPVServer at {}{}{}", d.name(), where(), options.servers().position(current),
                 options.outbound() ? " (outbound only)" : "");
     }
@@ -365,43 +329,16 @@ public final class ServiceConnector implements AutoCloseable {
         if (old != null) {
             old.close();
         }
-        Socket socket = new Socket();
         String where = host() + ":" + options.outboundPort();
-        try {
-            DeadlineSocketFactory f = DeadlineSocketFactory.fromSystem();
-            socket.connect(new InetSocketAddress(host(), options.outboundPort()), f.connectMillis());
-            socket.setSoTimeout(Math.max(f.readMillis(), 5_000));
-            DataInputStream in = new DataInputStream(new BufferedInputStream(socket.getInputStream()));
-            DataOutputStream out = new DataOutputStream(new BufferedOutputStream(socket.getOutputStream()));
-            OutboundHandshake.service(in, out, options.secret(), service.descriptor().name());
-            CallChannel c = new CallChannel(socket, where, remote,
-                    OutboundLimits.MAX_FRAME, Duration.ofMillis(Math.max(f.readMillis(), 5_000)));
-            c.closed().thenAccept(why -> {
-                if (token != null && server == c.remote() && !fatal.isDone()) {
-                    log.warn("{}: the outbound connection to {} closed ({}); connecting again", service.name(), where, why);
-                    lost();
-                }
-            });
-            channel = c;
-            return c.remote();
-        } catch (SocketTimeoutException e) {
-            close(socket);
-            throw new RemoteException("could not reach the server's outbound port " + where + ": timed out", e);
-        } catch (IOException e) {
-            close(socket);
-            throw new RemoteException("could not connect to the server's outbound port " + where + ": " + e.getMessage(), e);
-        } catch (RuntimeException e) {
-            close(socket);
-            throw e;
-        }
-    }
-
-    private static void close(Socket s) {
-        try {
-            s.close();
-        } catch (IOException ignored) {
-            // closing anyway
-        }
+        CallChannel c = OutboundDial.open(host(), options.outboundPort(), options.secret(), service.descriptor().name(), remote);
+        c.closed().thenAccept(why -> {
+            if (session.isRegistered() && session.server() == c.remote() && !fatal.isDone()) {
+                log.warn("{}: the outbound connection to {} closed ({}); connecting again", service.name(), where, why);
+                lost();
+            }
+        });
+        channel = c;
+        return c.remote();
     }
 
     private static String[] answer(String a) {
@@ -418,46 +355,6 @@ public final class ServiceConnector implements AutoCloseable {
         }
     }
 
-    /** Sends replies to the server over RMI. */
-    private final class Sink implements ReplySink {
-        @Override
-        public void reply(OutgoingServiceMessage reply) throws Exception {
-            server().serviceReply(token(), reply);
-        }
-
-        @Override
-        public void replies(List<OutgoingServiceMessage> replies) throws Exception {
-            server().serviceReplies(token(), replies);
-        }
-
-        @Override
-        public void console(List<ConsoleEntry> entries) throws Exception {
-            server().console(token(), entries);
-        }
-
-        /** The server calls {@code more} when a page went out to the client's socket. */
-        @Override
-        public boolean pacesPages() {
-            return true;
-        }
-
-        private GenericRMIInterface server() throws RemoteException {
-            GenericRMIInterface s = server;
-            if (s == null || token == null) {
-                throw new RemoteException("not registered with a server");
-            }
-            return s;
-        }
-
-        private String token() throws RemoteException {
-            String t = token;
-            if (t == null) {
-                throw new RemoteException("not registered with a server");
-            }
-            return t;
-        }
-    }
-
     /** Stops checking in and withdraws the service's RMI object. The service itself keeps running. */
     @Override
     public void close() {
@@ -470,94 +367,6 @@ public final class ServiceConnector implements AutoCloseable {
         if (stub != null) {
             RmiSupport.unexport(remote);
         }
-        token = null;
-    }
-
-    /** The service's side of {@link GenericRMIInterface}. */
-    private final class Remote implements GenericRMIInterface {
-        private void check(String t) throws RemoteException {
-            synchronized (tokenLock) {
-                // The server may call as soon as it has registered us, before register() returned here.
-                long end = System.nanoTime() + 5_000_000_000L;
-                while (registering && (token == null || !token.equals(t)) && System.nanoTime() < end) {
-                    try {
-                        tokenLock.wait(100);
-                    } catch (InterruptedException e) {
-                        Thread.currentThread().interrupt();
-                        break;
-                    }
-                }
-                if (token == null || !token.equals(t)) {
-                    throw new RemoteException("unknown session token: register first");
-                }
-            }
-        }
-
-        @Override
-        public void serviceRequest(String t, IncomingServiceMessage request) throws RemoteException {
-            check(t);
-            service.accept(request);
-        }
-
-        @Override
-        public void serviceRequests(String t, List<IncomingServiceMessage> requests) throws RemoteException {
-            check(t);
-            requests.forEach(service::accept);
-        }
-
-        @Override
-        public boolean withdraw(String t, String mailbox, String clientId, long messageId) throws RemoteException {
-            check(t);
-            return service.withdraw(mailbox, clientId, messageId);
-        }
-
-        @Override
-        public boolean cancel(String t, String mailbox, String clientId, long messageId) throws RemoteException {
-            check(t);
-            return service.cancel(mailbox, clientId, messageId);
-        }
-
-        @Override
-        public boolean more(String t, String mailbox, String clientId, long messageId) throws RemoteException {
-            check(t);
-            return service.pageTaken(mailbox, clientId, messageId);
-        }
-
-        @Override
-        public List<MailboxStatus> mailboxes(String t) throws RemoteException {
-            check(t);
-            return service.mailboxes();
-        }
-
-        @Override
-        public String challenge(String nonce) {
-            throw new UnsupportedOperationException("a service does not take registrations");
-        }
-
-        @Override
-        public String register(ServiceDescriptor d, GenericRMIInterface s, String proof) {
-            throw new UnsupportedOperationException("a service does not take registrations");
-        }
-
-        @Override
-        public void serviceReply(String t, OutgoingServiceMessage reply) {
-            throw new UnsupportedOperationException("a service does not take replies");
-        }
-
-        @Override
-        public void serviceReplies(String t, List<OutgoingServiceMessage> replies) {
-            throw new UnsupportedOperationException("a service does not take replies");
-        }
-
-        /** The server's call-back probe at registration: answering at all proves the server reaches us. */
-        @Override
-        public boolean heartbeat(String t) {
-            return true;
-        }
-
-        @Override
-        public void console(String t, List<ConsoleEntry> entries) {
-            throw new UnsupportedOperationException("a service does not take console entries");
-        }
+        session.lost();
     }
 }
