@@ -296,7 +296,7 @@ public final class PlotPanel extends JPanel {
         int h = Math.max(300, chartPanel.getHeight());
         return switch (f) {
             case PNG -> Charts.png(chart, w, h);
-            case SVG -> Charts.svg(chart, data, w, h);
+            case SVG -> Charts.svg(chart, w, h);
             case CSV -> ChartExport.csv(data).getBytes(StandardCharsets.UTF_8);
             case JSON -> ChartExport.json(data).getBytes(StandardCharsets.UTF_8);
             case JPEG -> throw new IllegalStateException();

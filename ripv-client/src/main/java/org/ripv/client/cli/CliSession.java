@@ -15,10 +15,11 @@ import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 import java.util.function.Consumer;
+import org.jfree.chart.JFreeChart;
+import org.ripv.charts.ChartRenderer;
 import org.ripv.client.handlers.ClientSocketHandler;
 import org.ripv.client.handlers.RipvErrorException;
 import org.ripv.export.ChartExport;
-import org.ripv.export.SvgChart;
 import org.ripv.export.TableExport;
 import org.ripv.messages.ChartData;
 import org.ripv.messages.ErrorCode;
@@ -310,7 +311,7 @@ public final class CliSession {
     /**
      * {@code export csv|json FILE}: the last table received, or a plot's data when one came after
      * it, to a local file ({@link org.ripv.export.TableExport}, {@link org.ripv.export.ChartExport});
-     * {@code export svg FILE}: that plot as a picture of all its data ({@link org.ripv.export.SvgChart}).
+     * {@code export svg FILE}: that plot as a picture of all its data ({@link ChartRenderer}, 900 x 560).
      */
     private void export(String args) throws IOException {
         String[] a = args.isEmpty() ? new String[0] : args.split("\\s+", 2);
@@ -326,8 +327,9 @@ public final class CliSession {
                 return;
             }
             Path file = Path.of(a[1]);
-            Files.writeString(file, SvgChart.svg(lastChart, SvgChart.View.fit(lastChart, 900, 560)),
-                    StandardCharsets.UTF_8);
+            JFreeChart chart = ChartRenderer.chart(lastChart);
+            ChartRenderer.fitPicture(chart, lastChart.kind(), 900, 560);
+            Files.write(file, ChartRenderer.svg(chart, 900, 560));
             local("exported the plot (" + lastChart.series().size() + " series, " + lastChart.points() + " points) as svg to " + file);
             return;
         }

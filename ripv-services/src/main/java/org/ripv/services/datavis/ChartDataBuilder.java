@@ -6,6 +6,7 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import org.ripv.charts.ChartRenderer;
 import org.ripv.messages.ChartData;
 import org.slf4j.LoggerFactory;
 
@@ -62,7 +63,7 @@ final class ChartDataBuilder {
         }
         ChartData.Mark newest = null;
         if (kind == ChartData.Kind.TRACK && Double.isFinite(r.lastX()) && Double.isFinite(r.lastY())) {
-            newest = new ChartData.Mark(r.lastX(), r.lastY(), labels.mark() == null ? "newest fix" : labels.mark());
+            newest = new ChartData.Mark(r.lastX(), r.lastY(), labels.mark() == null ? ChartRenderer.NEWEST_FIX : labels.mark());
         }
         return new ChartData(kind, labels.title(), labels.xLabel(), labels.yLabel(), series, newest, checked.rows(),
                 r.reduced());
