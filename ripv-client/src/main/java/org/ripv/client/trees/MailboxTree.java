@@ -6,8 +6,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.function.Consumer;
-import javax.swing.JTree;
-import javax.swing.Timer;
 import javax.swing.ToolTipManager;
 import javax.swing.tree.DefaultMutableTreeNode;
 import javax.swing.tree.DefaultTreeModel;
@@ -22,7 +20,7 @@ import org.ripv.messages.SessionState;
  * showing its handle and whether it is available, busy or locked. Picking a MailBox makes it the
  * COM panel's target (the GuiManager then asks {@code ?status}).
  */
-public final class MailboxTree extends JTree {
+public final class MailboxTree extends TickingTree {
     private final DefaultMutableTreeNode root;
     private final DefaultTreeModel treeModel;
     private final String service;
@@ -131,28 +129,9 @@ public final class MailboxTree extends JTree {
     }
 
     /** Re-words every node, so times since last contact stay current. */
+    @Override
     public void tick() {
-        int[] idx = new int[root.getChildCount()];
-        for (int k = 0; k < idx.length; k++) {
-            idx[k] = k;
-        }
-        if (idx.length > 0) {
-            treeModel.nodesChanged(root, idx);
-        }
-    }
-
-    private final Timer ticker = new Timer(30_000, e -> tick());
-
-    @Override
-    public void addNotify() {
-        super.addNotify();
-        ticker.start();
-    }
-
-    @Override
-    public void removeNotify() {
-        ticker.stop();
-        super.removeNotify();
+        childrenChanged(treeModel, root);
     }
 
     @Override

@@ -6,12 +6,9 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.function.BiConsumer;
 import java.util.function.Consumer;
-import javax.swing.JTree;
-import javax.swing.Timer;
 import javax.swing.ToolTipManager;
 import javax.swing.tree.DefaultMutableTreeNode;
 import javax.swing.tree.DefaultTreeModel;
-import javax.swing.tree.TreeNode;
 import javax.swing.tree.TreePath;
 import javax.swing.tree.TreeSelectionModel;
 import org.ripv.client.managers.ClientModel;
@@ -25,7 +22,7 @@ import org.ripv.messages.ServiceDescriptor;
  * root, one node per service with its description as a tooltip. Picking a service brings its
  * tab to the front. Rebuilt from the {@link ClientModel} on the event thread.
  */
-public final class ServiceTree extends JTree {
+public final class ServiceTree extends TickingTree {
     private final DefaultMutableTreeNode root = new DefaultMutableTreeNode("RIPVServer");
     private final DefaultTreeModel treeModel = new DefaultTreeModel(root);
     private boolean rebuilding;
@@ -56,11 +53,7 @@ public final class ServiceTree extends JTree {
                 onVehicle.accept(v.service(), v.status().address());
             }
         });
-        // "last contact N min ago" moves on by itself.
-        ticker = new Timer(30_000, e -> tick());
     }
-
-    private final Timer ticker;
 
     /**
      * A vehicle MailBox under its service (one whose server state is known: it has published
@@ -78,29 +71,11 @@ public final class ServiceTree extends JTree {
     }
 
     /** Re-words every node, so times since last contact stay current. */
+    @Override
     public void tick() {
         for (int i = 0; i < root.getChildCount(); i++) {
-            TreeNode n = root.getChildAt(i);
-            int[] idx = new int[n.getChildCount()];
-            for (int k = 0; k < idx.length; k++) {
-                idx[k] = k;
-            }
-            if (idx.length > 0) {
-                treeModel.nodesChanged(n, idx);
-            }
+            childrenChanged(treeModel, root.getChildAt(i));
         }
-    }
-
-    @Override
-    public void addNotify() {
-        super.addNotify();
-        ticker.start();
-    }
-
-    @Override
-    public void removeNotify() {
-        ticker.stop();
-        super.removeNotify();
     }
 
     /** A service node; shows as its name. */

@@ -266,34 +266,17 @@ final class ChartDataBuilder {
                 double[] py = new double[5];
                 int k = 0;
                 if (firstRow >= 0) {
-                    k = insert(rowsOf, px, py, k, firstRow, firstX, firstY);
-                    k = insert(rowsOf, px, py, k, minRow, minX, minY);
-                    k = insert(rowsOf, px, py, k, maxRow, maxX, maxY);
-                    k = insert(rowsOf, px, py, k, lastRow, lastX, lastY);
+                    k = BucketPoints.insert(rowsOf, px, py, k, firstRow, firstX, firstY);
+                    k = BucketPoints.insert(rowsOf, px, py, k, minRow, minX, minY);
+                    k = BucketPoints.insert(rowsOf, px, py, k, maxRow, maxX, maxY);
+                    k = BucketPoints.insert(rowsOf, px, py, k, lastRow, lastX, lastY);
                 }
                 if (gapRow >= 0) {
-                    k = insert(rowsOf, px, py, k, gapRow, k > 0 ? px[k - 1] : Double.NaN, Double.NaN);
+                    k = BucketPoints.insert(rowsOf, px, py, k, gapRow, k > 0 ? px[k - 1] : Double.NaN, Double.NaN);
                 }
                 for (int j = 0; j < k; j++) {
                     r.put(s, px[j], py[j]);
                 }
-            }
-
-            private static int insert(long[] rowsOf, double[] px, double[] py, int k, long row, double x, double y) {
-                int j = 0;
-                while (j < k && rowsOf[j] < row) {
-                    j++;
-                }
-                if (j < k && rowsOf[j] == row) {
-                    return k;
-                }
-                System.arraycopy(rowsOf, j, rowsOf, j + 1, k - j);
-                System.arraycopy(px, j, px, j + 1, k - j);
-                System.arraycopy(py, j, py, j + 1, k - j);
-                rowsOf[j] = row;
-                px[j] = x;
-                py[j] = y;
-                return k + 1;
             }
         }
     }

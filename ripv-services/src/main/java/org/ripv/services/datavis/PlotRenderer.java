@@ -234,10 +234,10 @@ public final class PlotRenderer {
             for (int b = 0; b < buckets; b++) {
                 int k = 0;
                 if (firstI[s][b] >= 0) {
-                    k = put(idx, px, py, k, firstI[s][b], firstX[s][b], firstY[s][b]);
-                    k = put(idx, px, py, k, minI[s][b], minX[s][b], minY[s][b]);
-                    k = put(idx, px, py, k, maxI[s][b], maxX[s][b], maxY[s][b]);
-                    k = put(idx, px, py, k, lastI[s][b], lastX[s][b], lastY[s][b]);
+                    k = BucketPoints.insert(idx, px, py, k, firstI[s][b], firstX[s][b], firstY[s][b]);
+                    k = BucketPoints.insert(idx, px, py, k, minI[s][b], minX[s][b], minY[s][b]);
+                    k = BucketPoints.insert(idx, px, py, k, maxI[s][b], maxX[s][b], maxY[s][b]);
+                    k = BucketPoints.insert(idx, px, py, k, lastI[s][b], lastX[s][b], lastY[s][b]);
                 }
                 long gap = gapI[s][b];
                 boolean gapDone = gap < 0;
@@ -256,24 +256,6 @@ public final class PlotRenderer {
                 }
             }
             return new double[][] {Arrays.copyOf(xs, n), Arrays.copyOf(ys, n)};
-        }
-
-        /** Adds a point unless its row is there already, keeping the points in row order. */
-        private static int put(long[] idx, double[] px, double[] py, int k, long i, double x, double y) {
-            int j = 0;
-            while (j < k && idx[j] < i) {
-                j++;
-            }
-            if (j < k && idx[j] == i) {
-                return k;
-            }
-            System.arraycopy(idx, j, idx, j + 1, k - j);
-            System.arraycopy(px, j, px, j + 1, k - j);
-            System.arraycopy(py, j, py, j + 1, k - j);
-            idx[j] = i;
-            px[j] = x;
-            py[j] = y;
-            return k + 1;
         }
     }
 }

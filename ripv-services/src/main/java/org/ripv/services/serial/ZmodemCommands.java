@@ -6,7 +6,6 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.Comparator;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Supplier;
@@ -18,8 +17,8 @@ import org.ripv.messages.FileData;
 import org.ripv.messages.VehicleEvent;
 import org.ripv.service.Reply;
 import org.ripv.service.Request;
+import org.ripv.services.serial.ymodem.DirectorySink;
 import org.ripv.services.serial.ymodem.AskedNames;
-import org.ripv.services.serial.ymodem.FileHeader;
 import org.ripv.services.serial.ymodem.FileNames;
 import org.ripv.services.serial.ymodem.SendFile;
 import org.ripv.services.serial.ymodem.TransferListener;
@@ -151,7 +150,7 @@ final class ZmodemCommands {
             return transfer(c, request, () -> receive(c, request, names, vehicleCommand, store, dir),
                     () -> kept(store, names));
         } finally {
-            deleteTree(dir);
+            DirectorySink.deleteTree(dir);
         }
     }
 
@@ -243,19 +242,5 @@ final class ZmodemCommands {
     private void write(Connection c, String vehicleCommand) throws IOException {
         c.write((vehicleCommand + settings.lineEnding()).getBytes(StandardCharsets.ISO_8859_1));
         c.flush();
-    }
-
-    private static void deleteTree(Path dir) {
-        try (var walk = Files.walk(dir)) {
-            walk.sorted(Comparator.reverseOrder()).forEach(p -> {
-                try {
-                    Files.deleteIfExists(p);
-                } catch (IOException e) {
-                    log.warn("could not delete {}: {}", p, e.toString());
-                }
-            });
-        } catch (IOException e) {
-            // never created
-        }
     }
 }

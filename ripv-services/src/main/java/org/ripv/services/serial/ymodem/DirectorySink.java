@@ -58,6 +58,24 @@ public final class DirectorySink implements FileSink {
         }
     }
 
+    /** Deletes a transfer's directory and all in it (what is left of a transfer); a failure is logged, not thrown. */
+    public static void deleteTree(Path dir) {
+        if (!Files.exists(dir)) {
+            return;
+        }
+        try (var walk = Files.walk(dir)) {
+            walk.sorted(Comparator.reverseOrder()).forEach(p -> {
+                try {
+                    Files.deleteIfExists(p);
+                } catch (IOException e) {
+                    log.warn("could not delete {}: {}", p, e.toString());
+                }
+            });
+        } catch (IOException e) {
+            log.warn("could not clean {}: {}", dir, e.toString());
+        }
+    }
+
     @Override
     public OutputStream begin(FileHeader file) throws IOException {
         String name = FileNames.requirePlain(file.name());
