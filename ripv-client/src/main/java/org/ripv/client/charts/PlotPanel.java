@@ -36,6 +36,7 @@ import org.jfree.chart.plot.XYPlot;
 import org.jfree.data.Range;
 import org.ripv.client.managers.GuiManager;
 import org.ripv.client.managers.ServiceModel;
+import org.ripv.client.panels.Buttons;
 import org.ripv.client.panels.ImagePanel;
 import org.ripv.export.ChartExport;
 import org.ripv.messages.ChartData;
@@ -92,15 +93,10 @@ public final class PlotPanel extends JPanel {
         readout.setName("chartReadout");
         caption.setName("chartCaption");
 
-        JButton reset = new JButton("Reset zoom");
-        reset.setName("resetZoomButton");
-        reset.setMnemonic(KeyEvent.VK_Z);
-        reset.setToolTipText("Show all the data again (0 on the chart)");
-        reset.addActionListener(e -> resetZoom());
-        JButton save = new JButton("Save as…");
-        save.setName("saveChartButton");
-        save.setMnemonic(KeyEvent.VK_A);
-        save.setToolTipText("The chart as PNG or SVG, its data as CSV or JSON, or the JPEG as it arrived");
+        JButton reset = Buttons.button("Reset zoom", KeyEvent.VK_Z, "resetZoomButton",
+                "Show all the data again (0 on the chart)", e -> resetZoom());
+        JButton save = Buttons.button("Save as…", KeyEvent.VK_A, "saveChartButton",
+                "The chart as PNG or SVG, its data as CSV or JSON, or the JPEG as it arrived");
         JPopupMenu formats = new JPopupMenu();
         for (Format f : Format.values()) {
             JMenuItem item = new JMenuItem(switch (f) {

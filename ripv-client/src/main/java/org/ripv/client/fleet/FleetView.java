@@ -34,6 +34,7 @@ import javax.swing.table.AbstractTableModel;
 import javax.swing.table.DefaultTableCellRenderer;
 import org.ripv.client.managers.GuiManager;
 import org.ripv.client.managers.ServiceModel;
+import org.ripv.client.panels.Buttons;
 import org.ripv.export.TableExport;
 import org.ripv.messages.Ids;
 import org.ripv.messages.MailboxStatus;
@@ -93,13 +94,15 @@ public final class FleetView {
         table.getColumnModel().getColumn(4).setCellRenderer(degrees);
         table.getColumnModel().getColumn(5).setCellRenderer(degrees);
         status.setName("fleetStatus");
-        JButton refresh = button("Refresh", KeyEvent.VK_R, "fleetRefresh", "Ask the database and the server again (also every minute)");
+        JButton refresh = Buttons.button("Refresh", KeyEvent.VK_R, "fleetRefresh",
+                "Ask the database and the server again (also every minute)");
         refresh.addActionListener(e -> refresh());
-        JButton plot = button("Plot track", KeyEvent.VK_P, "fleetPlot", "vis:track VEHICLE in the DataVisServer's tab");
+        JButton plot = Buttons.button("Plot track", KeyEvent.VK_P, "fleetPlot",
+                "vis:track VEHICLE in the DataVisServer's tab");
         plot.addActionListener(e -> plotSelected());
-        JButton csv = button("Export CSV", KeyEvent.VK_C, "fleetCsv", "This table as CSV");
+        JButton csv = Buttons.button("Export CSV", KeyEvent.VK_C, "fleetCsv", "This table as CSV");
         csv.addActionListener(e -> export(false));
-        JButton json = button("Export JSON", KeyEvent.VK_J, "fleetJson", "This table as JSON");
+        JButton json = Buttons.button("Export JSON", KeyEvent.VK_J, "fleetJson", "This table as JSON");
         json.addActionListener(e -> export(true));
         JPanel buttons = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 0));
         for (JButton b : List.of(refresh, plot, csv, json)) {
@@ -126,14 +129,6 @@ public final class FleetView {
                 refreshTimer.stop();
             }
         });
-    }
-
-    private static JButton button(String text, int mnemonic, String name, String tip) {
-        JButton b = new JButton(text);
-        b.setMnemonic(mnemonic);
-        b.setName(name);
-        b.setToolTipText(tip);
-        return b;
     }
 
     /** Shows the window and asks for the data. */

@@ -37,6 +37,7 @@ import org.ripv.client.managers.ClientModel;
 import org.ripv.client.managers.ClientModel.Connection;
 import org.ripv.client.managers.GuiManager;
 import org.ripv.client.managers.ServiceModel;
+import org.ripv.client.panels.Buttons;
 import org.ripv.client.panels.Colors;
 import org.ripv.client.panels.LoginDialog;
 import org.ripv.client.panels.ServiceLayoutPanel;
@@ -100,11 +101,8 @@ public final class RIPVClient {
             }
         });
 
-        JButton refresh = new JButton("Refresh");
-        refresh.setName("selRefresh");
-        refresh.setMnemonic(KeyEvent.VK_R);
-        refresh.setToolTipText("Ask the server for its services again (?services); also every 15 s");
-        refresh.addActionListener(e -> manager.refresh());
+        JButton refresh = Buttons.button("Refresh", KeyEvent.VK_R, "selRefresh",
+                "Ask the server for its services again (?services); also every 15 s", e -> manager.refresh());
         JPanel sel = new JPanel(new BorderLayout(2, 2));
         sel.setBorder(BorderFactory.createTitledBorder("SEL — services"));
         sel.add(new JScrollPane(serviceTree), BorderLayout.CENTER);

@@ -107,11 +107,8 @@ public final class ComPanel extends JPanel {
         send.setMnemonic(KeyEvent.VK_N);
         send.setName("sendButton");
         send.addActionListener(e -> send());
-        JButton clear = new JButton("Clear");
-        clear.setMnemonic(KeyEvent.VK_E);
-        clear.setName("clearButton");
-        clear.setToolTipText("Empty the reply area (Alt+E)");
-        clear.addActionListener(e -> manager.clearTranscript(service));
+        JButton clear = Buttons.button("Clear", KeyEvent.VK_E, "clearButton",
+                "Empty the reply area (Alt+E)", e -> manager.clearTranscript(service));
 
         JPanel line = new JPanel(new BorderLayout(4, 0));
         JLabel commandLabel = new JLabel("Command:");

@@ -51,21 +51,12 @@ public final class DatabasePanel extends JPanel {
         setBorder(BorderFactory.createTitledBorder("DAB — query results"));
         tabs.setName("queryTabs");
 
-        JButton copy = new JButton("Copy");
-        copy.setMnemonic(KeyEvent.VK_Y);
-        copy.setName("copyButton");
-        copy.setToolTipText("Copy the selected rows (all rows when none is selected) as tab-separated text");
-        copy.addActionListener(e -> copy());
-        JButton export = new JButton("Export CSV");
-        export.setMnemonic(KeyEvent.VK_X);
-        export.setName("exportButton");
-        export.setToolTipText("Save this tab's table as a CSV file");
-        export.addActionListener(e -> export(false));
-        JButton json = new JButton("Export JSON");
-        json.setMnemonic(KeyEvent.VK_J);
-        json.setName("exportJsonButton");
-        json.setToolTipText("Save this tab's table as JSON: numbers as numbers, NULL as null");
-        json.addActionListener(e -> export(true));
+        JButton copy = Buttons.button("Copy", KeyEvent.VK_Y, "copyButton",
+                "Copy the selected rows (all rows when none is selected) as tab-separated text", e -> copy());
+        JButton export = Buttons.button("Export CSV", KeyEvent.VK_X, "exportButton",
+                "Save this tab's table as a CSV file", e -> export(false));
+        JButton json = Buttons.button("Export JSON", KeyEvent.VK_J, "exportJsonButton",
+                "Save this tab's table as JSON: numbers as numbers, NULL as null", e -> export(true));
         JButton close = new JButton("Close");
         close.setMnemonic(KeyEvent.VK_W);
         close.setToolTipText("Close this tab");

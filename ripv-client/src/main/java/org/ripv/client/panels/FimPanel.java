@@ -2,7 +2,6 @@ package org.ripv.client.panels;
 
 import java.awt.BorderLayout;
 import java.awt.Dimension;
-import java.awt.FlowLayout;
 import java.awt.GridLayout;
 import java.awt.event.ActionEvent;
 import java.awt.event.KeyEvent;
@@ -57,31 +56,16 @@ public final class FimPanel extends JPanel {
         scroll.setPreferredSize(new Dimension(260, 140));
         add(scroll, BorderLayout.CENTER);
 
-        JButton ul = new JButton("UL");
-        ul.setName("ulButton");
-        ul.setMnemonic(KeyEvent.VK_U);
-        ul.setToolTipText("UL: upload a file from this computer to the server's upload directory");
-        ul.addActionListener(e -> chooseUpload());
-        JButton dl = new JButton("DL");
-        dl.setName("dlButton");
-        dl.setMnemonic(KeyEvent.VK_D);
-        dl.setToolTipText("DL: download the selected file from the server to this computer");
-        dl.addActionListener(e -> chooseDownload());
-        JButton refresh = new JButton("Refresh");
-        refresh.setName("fimRefresh");
-        refresh.setMnemonic(KeyEvent.VK_I);
-        refresh.setToolTipText("List the server's upload and download directories again (?ulfiles, ?dlfiles)");
-        refresh.addActionListener(e -> manager.refreshFiles());
-        JButton delete = new JButton("Delete");
-        delete.setName("deleteButton");
-        delete.setMnemonic(KeyEvent.VK_T);
-        delete.setToolTipText("Delete the selected file from the server's store (?delete NAME; needs the right)");
-        delete.addActionListener(e -> confirmDelete());
-        JButton clear = new JButton("Clear done");
-        clear.setName("clearDoneButton");
-        clear.setMnemonic(KeyEvent.VK_O);
-        clear.setToolTipText("Remove finished transfers from the list");
-        clear.addActionListener(e -> manager.clearFinishedTransfers());
+        JButton ul = Buttons.button("UL", KeyEvent.VK_U, "ulButton",
+                "UL: upload a file from this computer to the server's upload directory", e -> chooseUpload());
+        JButton dl = Buttons.button("DL", KeyEvent.VK_D, "dlButton",
+                "DL: download the selected file from the server to this computer", e -> chooseDownload());
+        JButton refresh = Buttons.button("Refresh", KeyEvent.VK_I, "fimRefresh",
+                "List the server's upload and download directories again (?ulfiles, ?dlfiles)", e -> manager.refreshFiles());
+        JButton delete = Buttons.button("Delete", KeyEvent.VK_T, "deleteButton",
+                "Delete the selected file from the server's store (?delete NAME; needs the right)", e -> confirmDelete());
+        JButton clear = Buttons.button("Clear done", KeyEvent.VK_O, "clearDoneButton",
+                "Remove finished transfers from the list", e -> manager.clearFinishedTransfers());
         // Two rows of buttons: one row is clipped in a quadrant of a 1280-pixel window.
         JPanel buttons = new JPanel(new GridLayout(0, 3, 4, 2));
         buttons.add(ul);

@@ -60,11 +60,8 @@ public final class ImagePanel extends JPanel {
             fit.setSelected(false);
             relayout();
         });
-        JButton save = new JButton("Save");
-        save.setName("saveImageButton");
-        save.setMnemonic(KeyEvent.VK_A);
-        save.setToolTipText("Save the JPEG on this computer");
-        save.addActionListener(e -> save());
+        JButton save = Buttons.button("Save", KeyEvent.VK_A, "saveImageButton",
+                "Save the JPEG on this computer", e -> save());
         JPanel buttons = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 0));
         buttons.add(fit);
         buttons.add(in);

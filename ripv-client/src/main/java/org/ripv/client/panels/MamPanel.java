@@ -35,11 +35,8 @@ public final class MamPanel extends JPanel {
         scroll.setPreferredSize(new Dimension(260, 120));
         add(scroll, BorderLayout.CENTER);
 
-        JButton refresh = new JButton("Refresh");
-        refresh.setName("mamRefresh");
-        refresh.setMnemonic(KeyEvent.VK_H);
-        refresh.setToolTipText("Ask the server again for the services and their MailBoxes (?services, ?mailboxes)");
-        refresh.addActionListener(e -> manager.refreshServices());
+        JButton refresh = Buttons.button("Refresh", KeyEvent.VK_H, "mamRefresh",
+                "Ask the server again for the services and their MailBoxes (?services, ?mailboxes)", e -> manager.refreshServices());
         lock.setName("lockButton");
         lock.setMnemonic(KeyEvent.VK_L);
         lock.setToolTipText("Hold the target MailBox for yourself so others cannot command it meanwhile (?lock)");

@@ -178,14 +178,17 @@ public final class WorkflowDialog extends JDialog {
         for (int i = 0; i < widths.length; i++) {
             queueTable.getColumnModel().getColumn(i).setPreferredWidth(widths[i]);
         }
-        JButton refresh = button("Refresh", KeyEvent.VK_F, "queueRefresh", "Ask the server again (?queue, ?receipts)");
+        JButton refresh = Buttons.button("Refresh", KeyEvent.VK_F, "queueRefresh",
+                "Ask the server again (?queue, ?receipts)");
         refresh.addActionListener(e -> refresh());
-        JButton add = button("Add file…", KeyEvent.VK_A, "queueAddFile",
+        JButton add = Buttons.button("Add file…", KeyEvent.VK_A, "queueAddFile",
                 "Upload a workflow file from this computer and queue it (?queue add)");
         add.addActionListener(e -> chooseFile());
-        JButton remove = button("Remove", KeyEvent.VK_M, "queueRemove", "Remove the selected workflow (?queue remove)");
+        JButton remove = Buttons.button("Remove", KeyEvent.VK_M, "queueRemove",
+                "Remove the selected workflow (?queue remove)");
         remove.addActionListener(e -> removeSelected());
-        JButton clear = button("Clear", KeyEvent.VK_L, "queueClear", "Remove every workflow of this MailBox (?queue clear)");
+        JButton clear = Buttons.button("Clear", KeyEvent.VK_L, "queueClear",
+                "Remove every workflow of this MailBox (?queue clear)");
         clear.addActionListener(e -> {
             if (JOptionPane.showConfirmDialog(this, "Remove every workflow queued for " + handle(mailbox) + "?",
                     "Clear the queue", JOptionPane.OK_CANCEL_OPTION, JOptionPane.WARNING_MESSAGE) == JOptionPane.OK_OPTION) {
@@ -239,7 +242,8 @@ public final class WorkflowDialog extends JDialog {
         JSplitPane split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, new JScrollPane(receiptList), new JScrollPane(receiptText));
         split.setResizeWeight(0.4);
         split.setBorder(null);
-        JButton refresh = button("Refresh", KeyEvent.VK_H, "receiptsRefresh", "Ask the server again (?receipts --last N)");
+        JButton refresh = Buttons.button("Refresh", KeyEvent.VK_H, "receiptsRefresh",
+                "Ask the server again (?receipts --last N)");
         refresh.addActionListener(e -> refresh());
         JPanel buttons = row("Last:", KeyEvent.VK_T, last, refresh);
         JPanel p = new JPanel(new BorderLayout(4, 4));
@@ -259,14 +263,6 @@ public final class WorkflowDialog extends JDialog {
         row.add(field);
         row.add(button);
         return row;
-    }
-
-    static JButton button(String text, int mnemonic, String name, String tip) {
-        JButton b = new JButton(text);
-        b.setMnemonic(mnemonic);
-        b.setName(name);
-        b.setToolTipText(tip);
-        return b;
     }
 
     /** Asks the server for the queue and the receipts. */
