@@ -6,11 +6,9 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.function.Consumer;
-import javax.swing.ToolTipManager;
 import javax.swing.tree.DefaultMutableTreeNode;
 import javax.swing.tree.DefaultTreeModel;
 import javax.swing.tree.TreePath;
-import javax.swing.tree.TreeSelectionModel;
 import org.ripv.client.managers.ConsoleModel;
 import org.ripv.messages.MailboxStatus;
 import org.ripv.messages.SessionState;
@@ -50,17 +48,13 @@ public final class MailboxTree extends TickingTree {
 
     /** @param onSelect told of the full address of the MailBox the operator picked */
     public MailboxTree(String service, Consumer<String> onSelect) {
+        super("mailboxTree");
         this.service = service;
         this.root = new DefaultMutableTreeNode(service);
         this.treeModel = new DefaultTreeModel(root);
         setModel(treeModel);
-        setName("mailboxTree");
-        getSelectionModel().setSelectionMode(TreeSelectionModel.SINGLE_TREE_SELECTION);
-        ToolTipManager.sharedInstance().registerComponent(this);
         addTreeSelectionListener(e -> {
-            if (!rebuilding && e.getNewLeadSelectionPath() != null
-                    && e.getNewLeadSelectionPath().getLastPathComponent() instanceof DefaultMutableTreeNode n
-                    && n.getUserObject() instanceof Item item) {
+            if (!rebuilding && picked(e) instanceof Item item) {
                 onSelect.accept(item.status().address());
             }
         });

@@ -6,11 +6,9 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.function.BiConsumer;
 import java.util.function.Consumer;
-import javax.swing.ToolTipManager;
 import javax.swing.tree.DefaultMutableTreeNode;
 import javax.swing.tree.DefaultTreeModel;
 import javax.swing.tree.TreePath;
-import javax.swing.tree.TreeSelectionModel;
 import org.ripv.client.managers.ClientModel;
 import org.ripv.client.managers.ConsoleModel;
 import org.ripv.client.managers.ServiceModel;
@@ -37,19 +35,14 @@ public final class ServiceTree extends TickingTree {
      * @param onVehicle told of the service and MailBox when the operator picks a vehicle under a service
      */
     public ServiceTree(Consumer<String> onSelect, BiConsumer<String, String> onVehicle) {
+        super("serviceTree");
         setModel(treeModel);
-        setName("serviceTree");
         setRootVisible(true);
-        getSelectionModel().setSelectionMode(TreeSelectionModel.SINGLE_TREE_SELECTION);
-        ToolTipManager.sharedInstance().registerComponent(this);
         addTreeSelectionListener(e -> {
-            if (!rebuilding && e.getNewLeadSelectionPath() != null
-                    && e.getNewLeadSelectionPath().getLastPathComponent() instanceof DefaultMutableTreeNode n
-                    && n.getUserObject() instanceof Item item) {
+            Object picked = rebuilding ? null : picked(e);
+            if (picked instanceof Item item) {
                 onSelect.accept(item.descriptor().name());
-            } else if (!rebuilding && e.getNewLeadSelectionPath() != null
-                    && e.getNewLeadSelectionPath().getLastPathComponent() instanceof DefaultMutableTreeNode n
-                    && n.getUserObject() instanceof Vehicle v) {
+            } else if (picked instanceof Vehicle v) {
                 onVehicle.accept(v.service(), v.status().address());
             }
         });
