@@ -29,8 +29,9 @@ import org.slf4j.LoggerFactory;
  *
  * <p>It serves one connection at a time, on a TCP port ({@link #listen}) or on a serial device
  * or pseudo-terminal ({@link #attach}), or calls a shore station again and again ({@link #call})
- * with a {@link SurfaceDialog} on each call. Its files live in one directory. {@code zs} and
- * {@code zr} run lrzsz ({@link Lrzsz}). {@link #speakGliderDos} makes each call a Slocum's
+ * with a {@link SurfaceDialog} on each call. This class is how the vehicle is reached and when
+ * it is away; what it answers once reached is its {@link GliderShell}, whose files live in one
+ * directory. {@code zs} and {@code zr} run lrzsz ({@link Lrzsz}). {@link #speakGliderDos} makes each call a Slocum's
  * surfacing ({@link SurfaceCountdown}, {@link GliderDos}); {@link #overLine} makes TCP calls
  * Iridium-like ({@link IridiumLine}).
  */
