@@ -296,18 +296,31 @@ final class GliderShell {
         return b.toString();
     }
 
-    private void send(ShellLink shell, String[] words) throws IOException {
+    /** The files {@code verb NAME...} names, or null when it names none or one that is not there (said). */
+    private List<Path> files(ShellLink shell, String[] words, String verb) throws IOException {
         if (words.length < 2) {
-            shell.say("usage: ys NAME...\r\n");
-            return;
+            shell.say("usage: " + verb + " NAME...\r\n");
+            return null;
         }
-        List<SendFile> files = new ArrayList<>();
+        List<Path> files = new ArrayList<>();
         for (int i = 1; i < words.length; i++) {
             Path p = resolve(words[i]);
             if (p == null) {
                 shell.say("File not found - " + words[i] + "\r\n");
-                return;
+                return null;
             }
+            files.add(p);
+        }
+        return files;
+    }
+
+    private void send(ShellLink shell, String[] words) throws IOException {
+        List<Path> paths = files(shell, words, "ys");
+        if (paths == null) {
+            return;
+        }
+        List<SendFile> files = new ArrayList<>();
+        for (Path p : paths) {
             files.add(SendFile.of(p));
         }
         try {
@@ -320,17 +333,12 @@ final class GliderShell {
 
     /** {@code zs NAME...}: lrzsz's sz sends the files (names matched without regard to case). */
     private void zsend(ShellLink shell, String[] words) throws IOException {
-        if (words.length < 2) {
-            shell.say("usage: zs NAME...\r\n");
+        List<Path> paths = files(shell, words, "zs");
+        if (paths == null) {
             return;
         }
         List<String> names = new ArrayList<>();
-        for (int i = 1; i < words.length; i++) {
-            Path p = resolve(words[i]);
-            if (p == null) {
-                shell.say("File not found - " + words[i] + "\r\n");
-                return;
-            }
+        for (Path p : paths) {
             names.add(p.getFileName().toString());
         }
         shell.say("\r\n" + Lrzsz.send(shell, dir, names) + "\r\n");
