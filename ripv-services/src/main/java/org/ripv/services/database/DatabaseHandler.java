@@ -12,6 +12,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Objects;
 import java.util.Properties;
+import org.ripv.dac.delivery.Deliveries;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.TableResult;
 import org.ripv.messages.UpdateCount;
@@ -73,6 +74,7 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
     /** True while an ingest runs (it has no one statement to cancel: it looks at cancelRequested between rows). */
     private boolean ingesting;
     private IngestLimits ingestLimits = IngestLimits.defaults();
+    private Deliveries deliveries = Deliveries.NONE;
 
     public DatabaseHandler(DatabaseTarget target, QueryLimits limits) {
         this(target, limits, IngestNotices.NONE);
@@ -92,6 +94,13 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
         return this;
     }
 
+    /** Hands every Slocum file ingested here to the DAC deployments, and answers {@code dac:status} from them. */
+    DatabaseHandler withDeliveries(Deliveries deliveries) {
+        this.deliveries = Objects.requireNonNull(deliveries, "deliveries");
+        ingest.deliverTo(deliveries);
+        return this;
+    }
+
     /** Loads the driver and opens the owner connection now, so a bad URL shows at start. */
     public void connect() throws SQLException {
         connection(false);
@@ -101,6 +110,13 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
     public Reply execute(Request request) {
         if (IngestCommand.matches(request.command())) {
             return ingest(request);
+        }
+        if (Deliveries.matches(request.command())) {
+            try {
+                return Reply.ok(deliveries.status(request.arguments()));
+            } catch (IllegalArgumentException e) {
+                return Reply.error(ErrorCode.BAD_REQUEST, e.getMessage());
+            }
         }
         if (ViewQuery.appliesTo(request.roles())) {
             // a view user: one SELECT from one view, read-only, under a short time limit (issue 33 item 6)

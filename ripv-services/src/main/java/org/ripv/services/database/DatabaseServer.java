@@ -6,6 +6,7 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Objects;
 import java.util.Set;
+import org.ripv.dac.delivery.Deliveries;
 import org.ripv.messages.Ids;
 import org.ripv.naming.Handles;
 import org.ripv.service.RIPVService;
@@ -40,6 +41,7 @@ public final class DatabaseServer extends RIPVService {
     private final QueryLimits limits;
     private final List<DatabaseHandler> handlers = new ArrayList<>();
     private volatile IngestLimits ingestLimits = IngestLimits.defaults();
+    private volatile Deliveries deliveries = Deliveries.NONE;
 
     public DatabaseServer(String host, List<DatabaseTarget> targets, QueryLimits limits) {
         super(NAME, Ids.SID_DATABASE, host);
@@ -62,6 +64,12 @@ public final class DatabaseServer extends RIPVService {
         return this;
     }
 
+    /** The DAC deployments that get every Slocum file ingested here (issue 37, {@code --dac}); set before the service starts. */
+    public DatabaseServer withDeliveries(Deliveries deliveries) {
+        this.deliveries = Objects.requireNonNull(deliveries, "deliveries");
+        return this;
+    }
+
     /** The MailBox handles for {@code n} databases: TTY1, TTY2, ... (COM1, COM2, ... on Windows). */
     public static List<String> handles(int n) {
         String first = Handles.platformDefault();
@@ -77,7 +85,8 @@ public final class DatabaseServer extends RIPVService {
     protected void open() {
         for (DatabaseTarget t : targets) {
             DatabaseHandler h = new DatabaseHandler(t, limits,
-                    IngestNotices.publishing(name().mailbox(t.handle()).toString(), this::publish)).withIngestLimits(ingestLimits);
+                    IngestNotices.publishing(name().mailbox(t.handle()).toString(), this::publish)).withIngestLimits(ingestLimits)
+                    .withDeliveries(deliveries);
             try {
                 h.connect();
             } catch (SQLException e) {
@@ -95,6 +104,7 @@ public final class DatabaseServer extends RIPVService {
             h.close();
         }
         handlers.clear();
+        deliveries.close();
     }
 
     @Override
