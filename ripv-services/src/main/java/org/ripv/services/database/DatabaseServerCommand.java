@@ -7,6 +7,8 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.Callable;
+import org.ripv.dac.DacException;
+import org.ripv.dac.delivery.Deliveries;
 import org.ripv.launch.Secrets;
 import org.ripv.service.ServiceLaunchOptions;
 import org.ripv.launch.Launchers;
@@ -135,8 +137,8 @@ public final class DatabaseServerCommand implements Callable<Integer> {
     }
 
     /** The DAC deployments of {@code --dac}, read and checked before the service registers. */
-    org.ripv.dac.delivery.Deliveries deliveries() throws org.ripv.dac.DacException, IOException {
-        return dac.isEmpty() ? org.ripv.dac.delivery.Deliveries.NONE : org.ripv.dac.delivery.Deliveries.start(dac);
+    Deliveries deliveries() throws DacException, IOException {
+        return dac.isEmpty() ? Deliveries.NONE : Deliveries.start(dac);
     }
 
     /** Where launch warnings go (standard error; injectable for tests). */
@@ -150,10 +152,10 @@ public final class DatabaseServerCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         String host = launch.hostName();
-        org.ripv.dac.delivery.Deliveries deliveries;
+        Deliveries deliveries;
         try {
             deliveries = deliveries();
-        } catch (org.ripv.dac.DacException | IOException e) {
+        } catch (DacException | IOException e) {
             System.err.println("Error: the DAC deployment is refused: " + e.getMessage());
             return 1;
         }

@@ -11,6 +11,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
 import java.util.function.BooleanSupplier;
+import org.ripv.dac.delivery.Deliveries;
 import org.ripv.messages.Attachment;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.Progress;
@@ -70,7 +71,7 @@ final class IngestCommand {
     private final IngestNotices notices;
     private boolean schemaChecked;
     /** The DAC deployments each stored Slocum binary file goes to (issue 37 item 4). */
-    private volatile org.ripv.dac.delivery.Deliveries deliveries = org.ripv.dac.delivery.Deliveries.NONE;
+    private volatile Deliveries deliveries = Deliveries.NONE;
     /** The files waiting for a sensor-list cache, as {@code ?status} shows them; empty when none. */
     private volatile String waiting = "";
 
@@ -102,7 +103,7 @@ final class IngestCommand {
         }
     }
 
-    void deliverTo(org.ripv.dac.delivery.Deliveries deliveries) {
+    void deliverTo(Deliveries deliveries) {
         this.deliveries = deliveries;
     }
 
