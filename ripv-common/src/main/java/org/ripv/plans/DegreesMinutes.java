@@ -1,6 +1,7 @@
 package org.ripv.plans;
 
 import java.math.BigDecimal;
+import java.util.Locale;
 import java.util.regex.Pattern;
 
 /**
@@ -34,7 +35,7 @@ final class DegreesMinutes {
         double deg = degrees.doubleValue() + minutes.doubleValue() / 60.0;
         int max = latitude ? 90 : 180;
         if (deg > max) {
-            throw new IllegalArgumentException(what + " '" + text + "' is " + String.format(java.util.Locale.ROOT, "%.5f", deg)
+            throw new IllegalArgumentException(what + " '" + text + "' is " + String.format(Locale.ROOT, "%.5f", deg)
                     + "°, over " + max + "°");
         }
         return v.signum() < 0 ? -deg : deg;

@@ -1,5 +1,6 @@
 package org.ripv.plans;
 
+import java.math.BigDecimal;
 import java.util.Map;
 
 /**
@@ -26,7 +27,7 @@ public record SurfacingFacts(String mailbox, long time, Map<String, Double> sens
             return null;
         }
         try {
-            return DegreesMinutes.degrees(java.math.BigDecimal.valueOf(v).toPlainString(), latitude);
+            return DegreesMinutes.degrees(BigDecimal.valueOf(v).toPlainString(), latitude);
         } catch (IllegalArgumentException e) {
             return null; // Slocum's no-value (69696969) and other nonsense: no waypoint shown
         }
