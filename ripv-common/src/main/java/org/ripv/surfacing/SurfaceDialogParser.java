@@ -227,6 +227,22 @@ public final class SurfaceDialogParser {
         }
     }
 
+    /**
+     * One {@code sensor:NAME(UNITS)=VALUE} line read on its own, as the dialog reads it, for a
+     * line outside any dialog (a {@code put}'s echo {@code sensor:NAME=VALUE}); the name as printed.
+     */
+    public static java.util.Optional<Surfacing.Sensor> sensorLine(String line) {
+        if (line == null || line.length() > MAX_LINE) {
+            return java.util.Optional.empty();
+        }
+        Matcher m = SENSOR.matcher(line.strip());
+        if (!m.matches()) {
+            return java.util.Optional.empty();
+        }
+        return java.util.Optional.of(new Surfacing.Sensor(m.group(1), m.group(2) == null ? "" : m.group(2), m.group(3),
+                number(m.group(3)), number(m.group(4))));
+    }
+
     static Double number(String s) {
         if (s == null || !NUMBER.matcher(s).matches()) {
             return null;

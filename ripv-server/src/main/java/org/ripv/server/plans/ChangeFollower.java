@@ -17,9 +17,10 @@ import java.util.regex.Pattern;
 
 import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.VehicleEvent;
-import org.ripv.plans.SensorLine;
 import org.ripv.plans.SurfacingFacts;
 import org.ripv.server.files.FileStore;
+import org.ripv.surfacing.SurfaceDialogParser;
+import org.ripv.surfacing.Surfacing;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -38,6 +39,8 @@ final class ChangeFollower {
     static final int SURFACINGS = 2;
     /** How close a dialog's waypoint must be to a file's: 2e-4° is 22 m, far above the dialog's 0.001' rounding. */
     static final double WAYPOINT_DEGREES = 2e-4;
+    /** Sensor lines kept per call (a put's echo among them). */
+    static final int MAX_SENSORS = 500;
     private static final Pattern SENT = Pattern.compile("to-vehicle: sent (\\S+) \\(.*; moved to (to-vehicle/[^ ]+/sent/[^ ]+) \\(receipt.*",
             Pattern.DOTALL);
     private static final Pattern WORKFLOW = Pattern.compile("workflow (\\d+) '.*", Pattern.DOTALL);
@@ -99,17 +102,18 @@ final class ChangeFollower {
     }
 
     private void line(ConsoleEntry e) throws IOException {
-        SensorLine s = SensorLine.parse(e.text()).orElse(null);
-        if (s == null) {
+        Surfacing.Sensor s = SurfaceDialogParser.sensorLine(e.text()).orElse(null);
+        if (s == null || s.value() == null) {
             return;
         }
+        String name = s.name().toLowerCase(Locale.ROOT);
         Map<String, Double> call = echoes.get(e.mailbox());
-        if (call != null && call.size() < DialogWindow.MAX_SENSORS) {
-            call.put(s.name(), s.value());
+        if (call != null && call.size() < MAX_SENSORS) {
+            call.put(name, s.value());
         }
         for (Change c : book.of(e.mailbox())) {
-            if (c.kind() == Change.Kind.SET && c.state() == Change.State.SENT && c.target().equals(s.name()) && same(s.value(), c.value())) {
-                move(c, Change.State.RECEIVED, e.time(), "the vehicle echoed sensor:" + s.name() + "=" + c.value());
+            if (c.kind() == Change.Kind.SET && c.state() == Change.State.SENT && c.target().equals(name) && same(s.value(), c.value())) {
+                move(c, Change.State.RECEIVED, e.time(), "the vehicle echoed sensor:" + name + "=" + c.value());
             }
         }
     }

@@ -5,8 +5,8 @@
  * sent, received and in effect (or not in effect, an ALERT) by what the vehicle's console shows.
  *
  * <p>It sees the server only through {@link org.ripv.server.plans.PlanHost}. The follower's
- * input per surfacing is {@link org.ripv.plans.SurfacingFacts}; {@link org.ripv.server.plans.DialogWindow}
- * makes them from the console's {@code sensor:} lines until a surface-dialog parser feeds them
- * ({@link org.ripv.server.plans.Plans#surfacing}).
+ * input per surfacing is {@link org.ripv.plans.SurfacingFacts}, made from the dialog the
+ * surfacing parser read ({@code org.ripv.server.surfacing.Surfacings} hands each to
+ * {@link org.ripv.server.plans.Plans#surfacing(String, long, org.ripv.surfacing.Surfacing)}).
  */
 package org.ripv.server.plans;

@@ -118,18 +118,18 @@ class ChangeFollowerTest {
     }
 
     @Test
-    void sensorLinesAndSurfacingFactsReadTheDialogsWaypointAsDegreesAndMinutes() {
-        DialogWindow w = new DialogWindow();
-        assertThat(w.take(at(900, ConsoleEntry.line(M, "   sensor:c_wpt_lat(lat)=4136.000")))).isEmpty(); // just before SURFACED
-        assertThat(w.take(at(1000, ConsoleEntry.event(M, VehicleEvent.SURFACED, "call 1", null, null)))).isEmpty();
-        w.take(at(1100, ConsoleEntry.line(M, "   sensor:c_wpt_lon(lon)=-7024.000")));
-        w.take(at(1200, ConsoleEntry.line(M, "   sensor:c_wpt_lon(lon)=-7000.000"))); // an echo later in the call
-        w.take(at(1300, ConsoleEntry.line(M, "sensor:m_battery(volts)=15.1 trailing")));
-        SurfacingFacts f = w.take(at(2000, ConsoleEntry.event(M, VehicleEvent.DIVED, "hung up", null, null))).orElseThrow();
+    void theParsedDialogsSensorsMakeTheFactsWithTheWaypointAsDegreesAndMinutes() {
+        java.util.List<org.ripv.surfacing.Surfacing> got = new ArrayList<>();
+        org.ripv.surfacing.SurfaceDialogParser p = new org.ripv.surfacing.SurfaceDialogParser(got::add);
+        p.feed("Glider ru29 at surface.\r\nBecause:Surface interval [1]\r\n   sensor:c_wpt_lat(lat)=4136.000\r\n"
+                + "   sensor:C_WPT_LON(lon)=-7024.000    12.0 secs ago\r\n   sensor:m_battery(volts)=15.1\r\n"
+                + "Hit Control-C within 10 seconds to abort the mission\r\n");
+        assertThat(got).hasSize(1);
+        SurfacingFacts f = Plans.facts(M, 1000, got.get(0));
         assertThat(f.time()).isEqualTo(1000);
         assertThat(f.wptLat()).isCloseTo(41.6, org.assertj.core.data.Offset.offset(1e-9));
         assertThat(f.wptLon()).isCloseTo(-70.4, org.assertj.core.data.Offset.offset(1e-9));
-        assertThat(f.sensors()).doesNotContainKey("m_battery");
+        assertThat(f.sensors()).containsEntry("m_battery", 15.1);
         assertThat(SurfacingFacts.of(M, 0, Map.of("c_wpt_lat", 69696969.0)).wptLat()).isNull();
     }
 }
