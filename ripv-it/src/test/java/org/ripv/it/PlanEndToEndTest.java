@@ -32,7 +32,9 @@ import org.ripv.testing.Tools;
  * parameter ({@code ?plan MAILBOX set}). On the next call both files arrive byte for byte and the
  * put is echoed (sent, received); the call after that, the dialog's {@code c_wpt_lat/lon} is a
  * waypoint of goto_l10.ma and {@code sensor:c_dive_target_depth} shows 30 (in effect), while
- * goto_l12.ma shows nowhere: after two surfacings it is not in effect, with an ALERT.
+ * goto_l12.ma shows nowhere: after two surfacings it is not in effect, with an ALERT. A file sent
+ * as {@code goto_l15.ma} and taken back ({@code ?delete}) before the call is cancelled and never
+ * reaches the glider.
  */
 class PlanEndToEndTest {
     static final Path ROOT = LaunchedJars.ROOT;
@@ -136,6 +138,12 @@ class PlanEndToEndTest {
                 .isEqualTo(ErrorCode.FILE_EXISTS);
         assertThat(call(alice, "?changes " + mailbox).footer().replyText()).contains("3 change(s) for " + mailbox)
                 .contains("   1  queued         goto_l10.ma (from goto_l11.ma)").contains("   3  queued         put c_dive_target_depth 30");
+        // a staged file taken back before the call: its change is cancelled at once, and nothing of it reaches the glider
+        assertThat(call(alice, "?plan " + mailbox + " send goto_l13.ma as goto_l15.ma").footer().replyText()).contains("change 4: ");
+        OutgoingServerMessage delete = call(alice, "?delete to-vehicle/" + folder + "/goto_l15.ma");
+        assertThat(delete.status()).as(delete.footer().replyText()).isEqualTo(Status.OK);
+        assertThat(call(alice, "?changes " + mailbox).footer().replyText()).contains("   4  cancelled      goto_l15.ma (from goto_l13.ma)")
+                .contains("the staged file to-vehicle/" + folder + "/goto_l15.ma was deleted before a call took it");
 
         // the glider calls: 12 s at the surface, 2 s dives
         Path glider = Files.createDirectories(dir.resolve("glider"));
@@ -146,6 +154,7 @@ class PlanEndToEndTest {
         String changes = awaitChanges(alice, mailbox, "   1  in effect", 150);
         assertThat(Files.readString(glider.resolve("goto_l10.ma"), StandardCharsets.US_ASCII)).isEqualTo(GOTO);
         assertThat(Files.readString(glider.resolve("goto_l12.ma"), StandardCharsets.US_ASCII)).isEqualTo(OTHER);
+        assertThat(glider.resolve("goto_l15.ma")).doesNotExist();
         changes = awaitChanges(alice, mailbox, "   3  in effect", 60);
         assertThat(changes).contains("c_wpt_lat/lon 41.30417, -70.59667 is waypoint 1")
                 .contains("sensor:c_dive_target_depth=30");
@@ -158,7 +167,8 @@ class PlanEndToEndTest {
                 .contains("change 1 goto_l10.ma (from goto_l11.ma): received: the vehicle's dir lists goto_l10.ma with its size; sha256 "
                         + sha256(GOTO))
                 .contains("change 3 put c_dive_target_depth 30: received: the vehicle echoed sensor:c_dive_target_depth=30")
-                .contains("change 2 goto_l12.ma (from goto_l13.ma) is not in effect");
+                .contains("change 2 goto_l12.ma (from goto_l13.ma) is not in effect")
+                .contains("change 4 goto_l15.ma (from goto_l13.ma): cancelled: the staged file");
         assertThat(history.lines().filter(l -> l.contains("ALERT") && l.contains("change 2 goto_l12.ma"))).hasSize(1);
         // item 5: the forecast from the simulated glider's last fix (calls under a minute apart: the assumed speed)
         OutgoingServerMessage forecast = call(alice, "?plan ru29 forecast goto_l11.ma");

@@ -317,14 +317,14 @@ final class PlanCommands {
         for (Change c : list) {
             long since = Math.max(Math.max(c.queuedAt(), c.sentAt()), Math.max(c.receivedAt(), c.settledAt()));
             String[] row = {Long.toString(c.id()), c.mailbox(), c.what(), c.state().word(), Instant.ofEpochMilli(since).toString(),
-                    c.user(), c.sha256(), c.detail()};
+                    c.user(), c.sha256(), c.detail(), Instant.ofEpochMilli(c.queuedAt()).toString()};
             rows.add(row);
             b.append(String.format(Locale.ROOT, "%n%4d  %-14s %s  [%s since %s, by %s]%n      %s", c.id(), c.state().word(), c.what(),
                     w.length == 1 ? c.mailbox() : "", row[4], c.user(), c.detail()).replace("[ since", "[since"));
         }
         return ok(request, Ids.FID_CHANGES, b.toString(), new TableResult("?changes", List.of("id", "mailbox", "change", "state",
-                "since", "user", "sha256", "detail"), List.of("INTEGER", "VARCHAR", "VARCHAR", "VARCHAR", "VARCHAR", "VARCHAR",
-                "VARCHAR", "VARCHAR"), rows, false));
+                "since", "user", "sha256", "detail", "queued"), List.of("INTEGER", "VARCHAR", "VARCHAR", "VARCHAR", "VARCHAR",
+                "VARCHAR", "VARCHAR", "VARCHAR", "VARCHAR"), rows, false));
     }
 
     private void event(Change c, String text) {

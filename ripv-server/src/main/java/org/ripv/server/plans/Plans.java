@@ -105,6 +105,15 @@ public final class Plans implements AutoCloseable {
 
     /** {@code ?changes [MAILBOX]}. */
     public OutgoingServerMessage changesCommand(IncomingServerMessage request) throws IOException {
+        // a staged file deleted or replaced since the last call shows as cancelled at once, not only on the next call
+        try {
+            thread.submit(() -> follower.sweep(null)).get(2, TimeUnit.SECONDS);
+        } catch (java.util.concurrent.ExecutionException | java.util.concurrent.TimeoutException
+                 | java.util.concurrent.RejectedExecutionException e) {
+            log.debug("plans: the sweep of staged files did not finish: {}", e.toString());
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
         return answer(request, Ids.FID_CHANGES, () -> commands.changes(request));
     }
 
