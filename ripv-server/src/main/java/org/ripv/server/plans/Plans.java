@@ -41,7 +41,7 @@ public final class Plans implements AutoCloseable {
 
     public Plans(PlanHost host, Path dir) throws IOException {
         this.book = new ChangeBook(dir);
-        this.commands = new PlanCommands(host, book, PlanLimits.DEFAULT, fixes);
+        this.commands = new PlanCommands(host, book, PlanLimits.DEFAULT, fixes, new PlanVersions(dir.resolve("history")));
         this.follower = new ChangeFollower(book, host.files(), host::publish);
         this.thread = new ThreadPoolExecutor(1, 1, 0, TimeUnit.SECONDS, new ArrayBlockingQueue<>(10_000), r -> {
             Thread t = new Thread(r, "ripv-plans");
