@@ -69,6 +69,8 @@ function drawPlanMap() {
   drawMap(canvas, fix ? [{ name: handle, track: [[fix.lat, fix.lon]] }] : [], [currentLayer(model), proposedLayer(model, view, () => selected)],
     handle, fitted);
   canvas.dataset.waypoints = String(model.points().length);
+  // where each proposed waypoint was drawn (CSS pixels from the canvas's top left): what a pointer can grab
+  canvas.dataset.dots = JSON.stringify(view.dots.map((d) => [d.i, Math.round(d.px), Math.round(d.py)]));
 }
 
 model.onChange((what, from) => {
@@ -131,7 +133,7 @@ async function save(e) {
   // checked, and kept as the next version of NAME with its diff against the last version sent
   const r = await po.send('', `?plan ${mailbox} save ${saved} as ${name}`);
   say($('save-status'), r.status === 'ERROR' ? { ...r, text: `${saved} was saved but does not pass the check` }
-    : { ...r, text: `saved and checked: ${r.text.split('\n')[0]}` });
+    : { ...r, text: `saved and checked: ${r.text.split('\n')[1]} — ${r.text.split('\n')[0]}` });
   showProblems(r);
   if (r.status === 'ERROR') $('diff').hidden = true; else showDiff($('diff'), r.text);
   $('send').disabled = r.status === 'ERROR';
