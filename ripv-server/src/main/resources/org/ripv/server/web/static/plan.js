@@ -112,7 +112,7 @@ async function load(e) {
 
 /** A diff as ?plan save and ?plan history print it: "+ " and "- " lines coloured. */
 function showDiff(pre, text) {
-  const at = text.search(/^(diff against|no earlier version)/m);
+  const at = text.search(/diff against version |no earlier version of /);
   const lines = at < 0 ? [] : text.slice(at).split('\n');
   pre.replaceChildren(...lines.map((l, i) => el('span', `${l}\n`, i > 0 && /^[+-] /.test(l) ? { class: l[0] === '+' ? 'add' : 'del' } : {})));
   pre.hidden = lines.length === 0;
