@@ -65,7 +65,7 @@ case "$GLIDER_DIALOG" in
   picodos) LINK_PROMPT="" ;;
   # GliderDOS's prompt and PicoDOS's; the default alert= leaves the countdown and ABORT HISTORY
   # alone, and the server reads each surface dialog for aborts, leaks, … (docs/surfacings.md)
-  gliderdos) LINK_PROMPT=",prompt-regex=GliderDOS[^>]*>|C:\\\\>" ;;
+  gliderdos) LINK_PROMPT=",prompt-regex=Glider[Dd][Oo][Ss] [A-Z] -?[0-9]+ >|C:\\\\>" ;;
   *) echo "demo: RIPV_GLIDER_DIALOG '$GLIDER_DIALOG' is neither picodos nor gliderdos" >&2; exit 2 ;;
 esac
 case "${RIPV_GLIDER_LINE:-}" in

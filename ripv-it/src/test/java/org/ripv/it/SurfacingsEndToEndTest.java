@@ -69,7 +69,7 @@ class SurfacingsEndToEndTest {
         Path serviceLog = dir.resolve("serial.log");
         jars.launch(serviceLog, "service", "serial", "--server", "localhost:" + sys.server().registryPort(), "--secret-file",
                 secret.toString(), "--no-enumerate", "--work", dir.resolve("work").toString(), "--link",
-                "listen://127.0.0.1:" + port + ",name=ru29,idle-timeout=1000" + linkOptions + ",prompt-regex=GliderDOS [^>]*>|C:\\\\>");
+                "listen://127.0.0.1:" + port + ",name=ru29,idle-timeout=1000" + linkOptions + ",prompt-regex=Glider[Dd][Oo][Ss] [A-Z] -?[0-9]+ >|C:\\\\>");
         long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
         while (sys.server().serviceCount() == 0) {
             assertThat(System.nanoTime() < end).as("the SerialPortServer registered; its log: " + Files.readString(serviceLog)).isTrue();

@@ -37,7 +37,7 @@ class GliderDosKeysTest {
     @Test
     void keysFromRipvDriveTheSurfaceDialog() throws Exception {
         LinkSettings link = SimulatorOverTcpTest.settings("listen://127.0.0.1:0")
-                .withPrompt(Pattern.compile("GliderDOS [^>]*>|C:\\\\>")).withIdleTimeout(Duration.ofSeconds(2));
+                .withPrompt(Pattern.compile("Glider[Dd][Oo][Ss] [A-Z] -?[0-9]+ >|C:\\\\>")).withIdleTimeout(Duration.ofSeconds(2));
         serial = SerialPortServer.withCalls("testhost", List.of(new VehicleLink(link, CallSettings.defaults().withName("ru29"))),
                 null, false, tmp.resolve("work"));
         serial.start();
