@@ -5,7 +5,6 @@ import { vehicleName } from './names.js';
 // A vehicle is { name, track: [fix] }, a fix { lat, lon, t, gps } or a [lat, lon] pair (a GPS fix, as the public view
 // sends). `layers` are drawn last, each called with (g, { x(lon), y(lat), w, h }): room for currents and waypoints.
 // `focus` names the vehicle the map is fitted to (the others still drawn where they fall); none: every vehicle.
-// `extent` adds [lat, lon] places the fit must take in too (a plan's waypoints).
 
 /** A fix in one form: [lat, lon] pairs are GPS fixes. */
 export function fix(p) {
@@ -16,7 +15,7 @@ export function colour(i) {
   return `hsl(${(i * 67) % 360} 70% 38%)`;
 }
 
-export function drawMap(canvas, vehicles, layers = [], focus = '', extent = []) {
+export function drawMap(canvas, vehicles, layers = [], focus = '') {
   const css = getComputedStyle(document.documentElement);
   const ink = (name, fallback) => css.getPropertyValue(name).trim() || fallback;
   const box = canvas.getBoundingClientRect();
@@ -30,7 +29,9 @@ export function drawMap(canvas, vehicles, layers = [], focus = '', extent = []) 
   g.fillRect(0, 0, w, h);
   const tracks = vehicles.map((v) => ({ name: v.name, fixes: v.track.map(fix) }));
   const points = tracks.flatMap((v) => v.fixes);
-  const fitted = [...(tracks.find((v) => v.name === focus && v.fixes.length)?.fixes || points), ...extent.map(fix)];
+  const inView = (v) => [...v.track.map(fix), ...(v.also || [])];
+  const mine = vehicles.find((v) => v.name === focus && v.track.length);
+  const fitted = mine ? inView(mine) : vehicles.flatMap(inView);
 
   // Bounds with equal distances across and up (a degree of longitude is cos(lat) of one of latitude).
   let [minLat, maxLat, minLon, maxLon] = [-60, 60, -180, 180];

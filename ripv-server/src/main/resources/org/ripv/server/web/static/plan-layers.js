@@ -1,4 +1,4 @@
-// Map layers of a vehicle's plan for map.js's drawMap(canvas, vehicles, layers, focus, extent): the goto list the glider
+// Map layers of a vehicle's plan for map.js's drawMap(canvas, vehicles, layers, focus): the goto list the glider
 // runs (grey, dashed, open squares; a ring on the waypoint its last dialog steered for) and the proposed one (solid, in
 // the accent colour, numbered dots a pilot drags). Each layer is (g, { x, y, w, h }); the proposed layer keeps the
 // projection it was drawn with, so a pointer on the canvas maps back to a latitude and longitude (drawMap's projection
@@ -42,7 +42,7 @@ function numbered(g, text, px, py, colour) {
 }
 
 /** The list the glider runs, the waypoint it heads for, and its last fix. */
-export function currentLayer(model) {
+export function gliderLayer(model) {
   return (g, { x, y }) => {
     const c = model.current;
     const grey = ink('--muted', '#666');

@@ -108,10 +108,11 @@ export class PlanModel {
         && Number.isFinite(p.lat) && Number.isFinite(p.lon) && Math.abs(p.lat) <= 90 && Math.abs(p.lon) <= 180);
   }
 
-  /** Every place the map should show: the proposed and current lists, the heading and the fix. */
+  /** Every place the map should show ({ lat, lon }): the proposed and current lists, the heading and the fix. */
   extent() {
     const c = this.current;
-    return [...this.points(), ...c.waypoints, ...(c.heading ? [c.heading] : []), ...(c.fix ? [c.fix] : [])].map((p) => [p.lat, p.lon]);
+    return [...this.points(), ...c.waypoints, ...(c.heading ? [c.heading] : []), ...(c.fix ? [c.fix] : [])]
+      .map((p) => ({ lat: p.lat, lon: p.lon }));
   }
 
   /** The file the proposed list makes, as the glider reads it. */

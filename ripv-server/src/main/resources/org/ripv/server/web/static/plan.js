@@ -10,7 +10,7 @@ import { rights } from './rights.js';
 import { command } from './address.js';
 import { drawMap } from './map.js';
 import { PlanModel } from './plan-model.js';
-import { PlanView, currentLayer, proposedLayer, dragEditor } from './plan-layers.js';
+import { PlanView, gliderLayer, proposedLayer, dragEditor } from './plan-layers.js';
 import { utcText } from './time.js';
 
 const { mailbox, handle } = mailboxParam();
@@ -66,8 +66,9 @@ function drawPlanMap() {
   const canvas = $('plan-map');
   if (!view.dragging) fitted = model.extent();
   const fix = model.current.fix;
-  drawMap(canvas, fix ? [{ name: handle, track: [[fix.lat, fix.lon]] }] : [], [currentLayer(model), proposedLayer(model, view, () => selected)],
-    handle, fitted);
+  // the vehicle's `also`: places kept in view that are not its track (both lists, the waypoint it heads for)
+  drawMap(canvas, [{ name: handle, track: fix ? [[fix.lat, fix.lon]] : [], also: fitted }],
+    [gliderLayer(model), proposedLayer(model, view, () => selected)], handle);
   canvas.dataset.waypoints = String(model.points().length);
   // where each proposed waypoint was drawn (CSS pixels from the canvas's top left): what a pointer can grab
   canvas.dataset.dots = JSON.stringify(view.dots.map((d) => [d.i, Math.round(d.px), Math.round(d.py)]));
