@@ -176,8 +176,8 @@ class PlanEditorBrowserTest {
             assertThat(text(b, "forecast-text")).startsWith("forecast of goto_l11(1).ma for " + glider);
 
             // The map: what the glider runs (the file in effect, the waypoint its dialog heads for) beside the proposed list.
-            wait.until(d -> text(d, "current-status").contains("heading for 41.31000, -70.55000"));
-            assertThat(text(b, "current-status")).contains("goto list: goto_l10.ma, change 1, in effect since");
+            wait.withMessage(() -> "on the glider: " + text(b, "current-status")).until(d -> text(d, "current-status")
+                    .contains("heading for 41.31000, -70.55000") && text(d, "current-status").contains("goto list: goto_l10.ma, change 1, in effect since"));
             WebElement map = b.findElement(By.id("plan-map"));
             assertThat(map.getAttribute("data-waypoints")).isEqualTo("2");
             // drag waypoint 1 (the one the glider heads for) 60 px right and 40 px down

@@ -93,8 +93,8 @@ public final class Plans implements AutoCloseable {
     /** One surfacing's facts (from {@link #surfacing(String, long, Surfacing)}, or a test). */
     public void surfacing(SurfacingFacts facts) {
         thread.execute(() -> {
+            follower.judge(facts); // first: whoever sees the new heading (?plan current) sees the verdict it brought too
             fixes.take(facts);
-            follower.judge(facts);
         });
     }
 

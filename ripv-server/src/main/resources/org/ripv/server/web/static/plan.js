@@ -220,13 +220,11 @@ if (!may[SEND]) $('save-card').hidden = true;
 if (!may[SET]) $('set-card').hidden = true;
 // A change's state moves with PLAN_CHANGE events on the MailBox's console stream.
 po.onPush = (m) => {
-  if (m.result?.kind === 'ConsoleBatch' && m.result.mailbox === mailbox && m.result.entries.some((x) => x.event === 'PLAN_CHANGE')) {
-    listChanges();
-  }
-  // a new dialog moves what the glider heads for
-  if (m.result?.kind === 'ConsoleBatch' && m.result.mailbox === mailbox && m.result.entries.some((x) => x.event === 'DIVED')) {
-    loadCurrent();
-  }
+  if (m.result?.kind !== 'ConsoleBatch' || m.result.mailbox !== mailbox) return;
+  const changed = m.result.entries.some((x) => x.event === 'PLAN_CHANGE');
+  if (changed) listChanges();
+  // a new dialog moves what the glider heads for; a change in effect is the list it runs
+  if (changed || m.result.entries.some((x) => x.event === 'DIVED')) loadCurrent();
 };
 renderBargs();
 drawPlanMap();
