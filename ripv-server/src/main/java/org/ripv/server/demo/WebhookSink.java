@@ -20,12 +20,17 @@ import picocli.CommandLine.Option;
  * loopback only and prints one line per POST ({@code TIME POST PATH BODY}) on standard output,
  * which the demo writes to {@code logs/webhooks.log}, so that {@code ?notify add webhook
  * http://127.0.0.1:N/ ...} can be tried without a service on the Internet. A body over
- * {@value #MAX_BODY} bytes is cut; anything but POST gets 405.
+ * {@value #MAX_BODY} bytes is cut; anything but POST gets 405. Whatever reaches the port is
+ * hostile (any local process may post): control characters are printed as a backslash, {@code u}
+ * and four hex digits, so a body cannot move the cursor or recolour the terminal of a pilot reading
+ * the log; and {@value #THREADS} threads serve, so a connection that never sends its request holds
+ * one of them, not the sink.
  */
 @Command(name = "webhook-sink", mixinStandardHelpOptions = true,
         description = "The demo's webhook receiver: prints each POST it gets on 127.0.0.1:PORT, one line each.")
 public final class WebhookSink implements Callable<Integer> {
     static final int MAX_BODY = 64 * 1024;
+    static final int THREADS = 4;
 
     @Option(names = "--port", required = true, description = "The loopback port to listen on (0: any free one).")
     int port;
@@ -44,7 +49,11 @@ public final class WebhookSink implements Callable<Integer> {
     HttpServer start() throws IOException {
         HttpServer server = HttpServer.create(new InetSocketAddress(InetAddress.getLoopbackAddress(), port), 16);
         server.createContext("/", this::handle);
-        server.setExecutor(Executors.newSingleThreadExecutor(r -> new Thread(r, "ripv-webhook-sink")));
+        server.setExecutor(Executors.newFixedThreadPool(THREADS, r -> {
+            Thread t = new Thread(r, "ripv-webhook-sink");
+            t.setDaemon(true);
+            return t;
+        }));
         server.start();
         return server;
     }
@@ -68,12 +77,25 @@ public final class WebhookSink implements Callable<Integer> {
             try (InputStream in = x.getRequestBody()) {
                 body = in.readNBytes(MAX_BODY);
             }
-            String text = new String(body, StandardCharsets.UTF_8).replace('\n', ' ').replace('\r', ' ');
+            String text = printable(new String(body, StandardCharsets.UTF_8).replace('\n', ' ').replace('\r', ' '));
             synchronized (out) {
-                out.println(Instant.now() + " POST " + x.getRequestURI().getPath() + " " + text);
+                out.println(Instant.now() + " POST " + printable(x.getRequestURI().getPath()) + " " + text);
                 out.flush();
             }
             x.sendResponseHeaders(204, -1);
         }
+    }
+
+    /** {@code text} with each control character (C0, DEL, C1) written as a backslash, {@code u} and four hex digits. */
+    static String printable(String text) {
+        StringBuilder b = new StringBuilder(text.length());
+        text.codePoints().forEach(c -> {
+            if (Character.getType(c) == Character.CONTROL) {
+                b.append(String.format("\\u%04x", c));
+            } else {
+                b.appendCodePoint(c);
+            }
+        });
+        return b.toString();
     }
 }
