@@ -75,7 +75,7 @@ export function gliderLayer(model) {
 
 /** The proposed list, numbered as the glider counts (0 to N-1); records where each dot went into `view`. */
 export function proposedLayer(model, view, selected = () => -1) {
-  return (g, { x, y }) => {
+  return (g, { x, y, h }) => {
     Object.assign(view, inverse(x, y));
     const colour = ink('--accent', '#0b57d0');
     const pts = model.points();
@@ -92,16 +92,17 @@ export function proposedLayer(model, view, selected = () => -1) {
       numbered(g, `${d.i}`, d.px, d.py, colour);
     }
     g.restore();
-    legend(g, colour);
+    legend(g, colour, h);
   };
 }
 
-function legend(g, colour) {
+/** Above map.js's own legend (bottom left), clear of the vehicle's name and the grid's labels at the top. */
+function legend(g, colour, h) {
   g.save();
   g.font = '13px system-ui, sans-serif';
   const text = [['proposed', colour, false], ['on the glider', ink('--muted', '#666'), true]];
   let px = 8;
-  const py = 34;
+  const py = h - 34;
   g.fillStyle = ink('--card', '#fff'); g.globalAlpha = 0.85; g.fillRect(4, py - 14, 230, 20); g.globalAlpha = 1;
   for (const [t, c, dashed] of text) {
     g.strokeStyle = c; g.lineWidth = 2; g.setLineDash(dashed ? [6, 4] : []);
