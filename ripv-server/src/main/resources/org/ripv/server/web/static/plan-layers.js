@@ -75,7 +75,7 @@ export function gliderLayer(model) {
 
 /** The proposed list, numbered as the glider counts (0 to N-1); records where each dot went into `view`. */
 export function proposedLayer(model, view, selected = () => -1) {
-  return (g, { x, y, h }) => {
+  return (g, { x, y }) => {
     Object.assign(view, inverse(x, y));
     const colour = ink('--accent', '#0b57d0');
     const pts = model.points();
@@ -92,26 +92,7 @@ export function proposedLayer(model, view, selected = () => -1) {
       numbered(g, `${d.i}`, d.px, d.py, colour);
     }
     g.restore();
-    legend(g, colour, h);
   };
-}
-
-/** Above map.js's own legend (bottom left), clear of the vehicle's name and the grid's labels at the top. */
-function legend(g, colour, h) {
-  g.save();
-  g.font = '13px system-ui, sans-serif';
-  const text = [['proposed', colour, false], ['on the glider', ink('--muted', '#666'), true]];
-  let px = 8;
-  const py = h - 34;
-  g.fillStyle = ink('--card', '#fff'); g.globalAlpha = 0.85; g.fillRect(4, py - 14, 230, 20); g.globalAlpha = 1;
-  for (const [t, c, dashed] of text) {
-    g.strokeStyle = c; g.lineWidth = 2; g.setLineDash(dashed ? [6, 4] : []);
-    g.beginPath(); g.moveTo(px, py - 4); g.lineTo(px + 18, py - 4); g.stroke();
-    g.setLineDash([]);
-    g.fillStyle = ink('--fg', '#222'); g.fillText(t, px + 22, py);
-    px += 32 + g.measureText(t).width;
-  }
-  g.restore();
 }
 
 /**
