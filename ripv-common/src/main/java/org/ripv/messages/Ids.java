@@ -62,6 +62,8 @@ public final class Ids {
     public static final String FID_CHANGES = "555811";
     /** {@code ?key MAILBOX KEY}: one control key to a vehicle (docs/serial.md#control-keys). */
     public static final String FID_KEY = "555720";
+    /** {@code ?dac MAILBOX}: a DatabaseServer's IOOS Glider DAC deliveries (docs/dac.md). */
+    public static final String FID_DAC = "555820";
     /** Replies to a message the server could not attribute to any command or service. */
     public static final String FID_NONE = "000000";
 

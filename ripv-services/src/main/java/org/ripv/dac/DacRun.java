@@ -14,7 +14,11 @@ import java.util.Map;
  */
 public final class DacRun {
     /** What was written, one line a profile, and whether every file passed the check. */
-    public record Result(List<Path> written, List<String> lines, boolean allPassed) {
+    public record Result(List<Path> written, List<String> lines, boolean allPassed, List<Made> made) {
+    }
+
+    /** One profile's file: where it is ({@code NAME.failed} when it failed the check), its check, its QC summary and line. */
+    public record Made(Profile profile, Path file, ProfileChecker.Report report, String qc, String line) {
     }
 
     private final SegmentReader reader;
@@ -36,6 +40,7 @@ public final class DacRun {
         }
         List<Path> written = new ArrayList<>();
         List<String> lines = new ArrayList<>();
+        List<Made> made = new ArrayList<>();
         boolean ok = true;
         for (Profile p : all) {
             ProfileChecker.Report[] report = new ProfileChecker.Report[1];
@@ -51,11 +56,12 @@ public final class DacRun {
                 ok = false;
                 lines.add(f.getFileName() + ": FAILS the DAC check, kept, not for sending: " + String.join("; ", r.failures()));
             }
+            made.add(new Made(p, f, r, qc, lines.get(lines.size() - 1)));
         }
         if (all.isEmpty()) {
             lines.add("no profile: no dive or climb spans more than the minimum depth with enough samples");
         }
-        return new Result(written, lines, ok);
+        return new Result(written, lines, ok, made);
     }
 
     /** ", QC temperature 120 good 3 suspect ..." from the primary flags. */

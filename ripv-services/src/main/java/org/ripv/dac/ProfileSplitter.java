@@ -28,9 +28,13 @@ public final class ProfileSplitter {
     private final int minSamples;
     private final int filterLength;
 
+    public static final double DEFAULT_MIN_DEPTH_SPAN = 10;
+    public static final int DEFAULT_MIN_SAMPLES = 14;
+    public static final int DEFAULT_FILTER = 7;
+
     /** pyglider's defaults: 10 dbar, 14 samples, a 7-sample filter. */
     public static ProfileSplitter defaults() {
-        return new ProfileSplitter(10, 14, 7);
+        return new ProfileSplitter(DEFAULT_MIN_DEPTH_SPAN, DEFAULT_MIN_SAMPLES, DEFAULT_FILTER);
     }
 
     public ProfileSplitter(double minDepthSpan, int minSamples, int filterLength) {

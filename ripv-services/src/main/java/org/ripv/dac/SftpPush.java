@@ -27,7 +27,7 @@ import org.apache.sshd.sftp.client.SftpClientFactory;
  * already sent (same name, same bytes) is not sent again; a failed connection is retried with
  * back-off (1 s, 2 s, 4 s …).
  */
-public final class SftpPush {
+public final class SftpPush implements ProfilePush {
     /** One file's outcome. */
     public record Outcome(Path file, String status, String detail) {
     }
@@ -58,6 +58,7 @@ public final class SftpPush {
         this.firstBackoff = firstBackoff;
     }
 
+    @Override
     public List<Outcome> push(List<Path> files) throws IOException, InterruptedException {
         String dest = destination.toString();
         List<Outcome> out = new ArrayList<>();

@@ -35,8 +35,38 @@ final class DacFixtures {
         return shared().resolve("realtime_raw").resolve(name);
     }
 
-    static Path cache() {
-        return shared().resolve("cac");
+    private static Path cacheCopy;
+
+    /**
+     * A copy of the shared sensor-list cache, one per test JVM: decoding a file that carries its own
+     * list (the recoded .dbd/.ebd, the edited .tbd) keeps that list in the cache, and the shared data
+     * must stay as it was (it once gained three stray .cac files on every run).
+     */
+    static synchronized Path cache() {
+        if (cacheCopy == null) {
+            try {
+                Path copy = Files.createTempDirectory("ripv-dac-cac-");
+                try (var files = Files.list(shared().resolve("cac"))) {
+                    for (Path f : files.toList()) {
+                        Files.copy(f, copy.resolve(f.getFileName()));
+                    }
+                }
+                Runtime.getRuntime().addShutdownHook(new Thread(() -> {
+                    try (var files = Files.list(copy)) {
+                        for (Path f : files.toList()) {
+                            Files.deleteIfExists(f);
+                        }
+                        Files.deleteIfExists(copy);
+                    } catch (IOException ignored) {
+                        // a temp folder left behind is harmless
+                    }
+                }));
+                cacheCopy = copy;
+            } catch (IOException e) {
+                throw new java.io.UncheckedIOException("cannot copy the shared sensor-list cache", e);
+            }
+        }
+        return cacheCopy;
     }
 
     static Path meta() {

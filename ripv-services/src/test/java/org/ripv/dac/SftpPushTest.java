@@ -1,21 +1,17 @@
 package org.ripv.dac;
 
 import static org.assertj.core.api.Assertions.assertThat;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
-import java.io.IOException;
-import java.net.ServerSocket;
-import java.net.Socket;
 import java.net.URI;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
-import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.ripv.services.ingest.SensorListCache;
+import org.ripv.testing.LoopbackSshd;
 
 /**
  * {@link SftpPush} against Debian's OpenSSH server, started by the test on a loopback port with a
@@ -24,13 +20,12 @@ import org.ripv.services.ingest.SensorListCache;
  * unknown host key: refused, nothing sent; a file that fails the DAC check: kept, not sent.
  */
 class SftpPushTest {
-    Process sshd;
+    LoopbackSshd sshd;
 
     @AfterEach
     void stop() throws InterruptedException {
         if (sshd != null) {
-            sshd.destroy();
-            sshd.waitFor(10, TimeUnit.SECONDS);
+            sshd.close();
         }
     }
 
@@ -38,41 +33,8 @@ class SftpPushTest {
     }
 
     Server start(Path dir) throws Exception {
-        assumeTrue(Files.isExecutable(Path.of("/usr/sbin/sshd")), "Debian's openssh-server is not installed");
-        String user = System.getProperty("user.name");
-        if (user.equals("root")) {
-            Files.createDirectories(Path.of("/run/sshd")); // sshd's privilege-separation folder, which a fresh container lacks
-        }
-        DacFixtures.run(dir, "ssh-keygen", "-q", "-t", "ecdsa", "-N", "", "-f", dir.resolve("host_key").toString());
-        DacFixtures.run(dir, "ssh-keygen", "-q", "-t", "ecdsa", "-N", "", "-f", dir.resolve("client_key").toString());
-        Files.copy(dir.resolve("client_key.pub"), dir.resolve("authorized_keys"));
-        int port;
-        try (ServerSocket s = new ServerSocket(0)) {
-            port = s.getLocalPort();
-        }
-        Path drop = Files.createDirectories(dir.resolve("drop"));
-        Path config = dir.resolve("sshd_config");
-        Files.writeString(config, String.join("\n",
-                "Port " + port, "ListenAddress 127.0.0.1", "HostKey " + dir.resolve("host_key"),
-                "AuthorizedKeysFile " + dir.resolve("authorized_keys"), "PasswordAuthentication no",
-                "KbdInteractiveAuthentication no", "PubkeyAuthentication yes", "UsePAM no", "StrictModes no",
-                "PermitRootLogin prohibit-password", "PidFile " + dir.resolve("sshd.pid"), "Subsystem sftp internal-sftp", ""));
-        sshd = new ProcessBuilder("/usr/sbin/sshd", "-D", "-e", "-f", config.toString())
-                .redirectErrorStream(true).redirectOutput(dir.resolve("sshd.log").toFile()).start();
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
-        while (true) {
-            try (Socket s = new Socket("127.0.0.1", port)) {
-                break;
-            } catch (IOException notYet) {
-                assertThat(sshd.isAlive()).as(Files.readString(dir.resolve("sshd.log"))).isTrue();
-                assertThat(System.nanoTime()).as("sshd listening").isLessThan(deadline);
-                Thread.sleep(100);
-            }
-        }
-        String hostKey = Files.readString(dir.resolve("host_key.pub")).trim();
-        Path known = dir.resolve("known_hosts");
-        Files.writeString(known, "[127.0.0.1]:" + port + " " + hostKey.substring(0, hostKey.lastIndexOf(' ')) + "\n");
-        return new Server(port, drop, dir.resolve("client_key"), known, user);
+        sshd = LoopbackSshd.start(dir);
+        return new Server(sshd.port(), sshd.drop(), sshd.key(), sshd.knownHosts(), System.getProperty("user.name"));
     }
 
     List<Path> profiles(Path out) throws Exception {

@@ -147,6 +147,8 @@ public final class ServerCommands {
                 .add(ServerCommand.open("?surfacings", Ids.FID_SURFACINGS, SurfacingCommands.usage(),
                         "its call records: one per surfacing (docs/surfacings.md)",
                         c -> parts.sessions().surfacingCommands().run(c.request(), c.command().fid(), c.words())).onFileWork())
+                .add(ServerCommand.open("?dac", Ids.FID_DAC, "?dac MAILBOX [GLIDER] [--json]",
+                        "a DatabaseServer's DAC deliveries: profiles, QC, what was pushed, what failed and why (docs/dac.md)", this::dac))
                 .add(ServerCommand.open("?cancel", Ids.FID_CANCEL, "?cancel MESSAGE-ID [CLIENT-ID]",
                         "stop a request that is queued or running", c -> {
                             checkers.execute(() -> outbox.accept(parts.cancels().command(c.request())));
@@ -298,6 +300,26 @@ public final class ServerCommands {
      * same checks as any command (the permit file decides on {@code ?key KEY}, so each key is a
      * right of its own; the operator lock holds), and the link's own list of keys decides last.
      */
+    /**
+     * {@code ?dac MAILBOX [GLIDER] [--json]}: asks the DatabaseServer MailBox for its deliveries
+     * ({@code dac:status}), as the user's own command, so the permit file and the service's answer
+     * are those of any command to it.
+     */
+    private OutgoingServerMessage dac(Call c) {
+        String[] w = c.words();
+        if (w.length < 2 || w.length > 4) {
+            throw new IllegalArgumentException("usage: ?dac MAILBOX [GLIDER] [--json], e.g. ?dac <DatabaseServer>::<host>TTY1 --json");
+        }
+        MailboxAddress.parse(w[1]);
+        StringBuilder body = new StringBuilder("dac:status");
+        for (int i = 2; i < w.length; i++) {
+            body.append(' ').append(w[i]);
+        }
+        Header h = c.request().header();
+        return route.apply(new IncomingServerMessage(new Header(h.messageId(), h.origin(), h.roles(),
+                h.serviceDestination(), w[1], body.toString(), h.priority(), null)));
+    }
+
     private OutgoingServerMessage key(Call c) {
         String[] w = c.words();
         if (w.length != 3) {

@@ -71,6 +71,7 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
     /** True while an ingest runs (it has no one statement to cancel: it looks at cancelRequested between rows). */
     private boolean ingesting;
     private org.ripv.services.ingest.IngestLimits ingestLimits = org.ripv.services.ingest.IngestLimits.defaults();
+    private org.ripv.dac.delivery.Deliveries deliveries = org.ripv.dac.delivery.Deliveries.NONE;
 
     public DatabaseHandler(DatabaseTarget target, QueryLimits limits) {
         this(target, limits, IngestNotices.NONE);
@@ -90,6 +91,13 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
         return this;
     }
 
+    /** Hands every Slocum file ingested here to the DAC deployments, and answers {@code dac:status} from them. */
+    DatabaseHandler withDeliveries(org.ripv.dac.delivery.Deliveries deliveries) {
+        this.deliveries = java.util.Objects.requireNonNull(deliveries, "deliveries");
+        ingest.deliverTo(deliveries);
+        return this;
+    }
+
     /** Loads the driver and opens the owner connection now, so a bad URL shows at start. */
     public void connect() throws SQLException {
         connection(false);
@@ -99,6 +107,13 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
     public Reply execute(Request request) {
         if (IngestCommand.matches(request.command())) {
             return ingest(request);
+        }
+        if (org.ripv.dac.delivery.Deliveries.matches(request.command())) {
+            try {
+                return Reply.ok(deliveries.status(request.arguments()));
+            } catch (IllegalArgumentException e) {
+                return Reply.error(ErrorCode.BAD_REQUEST, e.getMessage());
+            }
         }
         if (ViewQuery.appliesTo(request.roles())) {
             // a view user: one SELECT from one view, read-only, under a short time limit (issue 33 item 6)

@@ -39,6 +39,7 @@ public final class DatabaseServer extends RIPVService {
     private final QueryLimits limits;
     private final List<DatabaseHandler> handlers = new ArrayList<>();
     private volatile org.ripv.services.ingest.IngestLimits ingestLimits = org.ripv.services.ingest.IngestLimits.defaults();
+    private volatile org.ripv.dac.delivery.Deliveries deliveries = org.ripv.dac.delivery.Deliveries.NONE;
 
     public DatabaseServer(String host, List<DatabaseTarget> targets, QueryLimits limits) {
         super(NAME, Ids.SID_DATABASE, host);
@@ -61,6 +62,12 @@ public final class DatabaseServer extends RIPVService {
         return this;
     }
 
+    /** The DAC deployments that get every Slocum file ingested here (issue 37, {@code --dac}); set before the service starts. */
+    public DatabaseServer withDeliveries(org.ripv.dac.delivery.Deliveries deliveries) {
+        this.deliveries = Objects.requireNonNull(deliveries, "deliveries");
+        return this;
+    }
+
     /** The MailBox handles for {@code n} databases: TTY1, TTY2, ... (COM1, COM2, ... on Windows). */
     public static List<String> handles(int n) {
         String first = Handles.platformDefault();
@@ -76,7 +83,8 @@ public final class DatabaseServer extends RIPVService {
     protected void open() {
         for (DatabaseTarget t : targets) {
             DatabaseHandler h = new DatabaseHandler(t, limits,
-                    IngestNotices.publishing(name().mailbox(t.handle()).toString(), this::publish)).withIngestLimits(ingestLimits);
+                    IngestNotices.publishing(name().mailbox(t.handle()).toString(), this::publish)).withIngestLimits(ingestLimits)
+                    .withDeliveries(deliveries);
             try {
                 h.connect();
             } catch (SQLException e) {
@@ -94,6 +102,7 @@ public final class DatabaseServer extends RIPVService {
             h.close();
         }
         handlers.clear();
+        deliveries.close();
     }
 
     @Override

@@ -63,6 +63,11 @@ public final class DatabaseServerCommand implements Callable<Integer> {
             description = "Rows (cycles) one ingested file may hold; a larger one is refused, nothing of it stored (default: ${DEFAULT-VALUE}).")
     long ingestMaxRows;
 
+    @Option(names = "--dac", paramLabel = "FILE",
+            description = "A DAC deployment (JSON: glider, metadata, qc, destination …, docs/dac.md): its glider's Slocum files become"
+                    + " IOOS DAC profile files as they are ingested, checked and pushed. Repeat for more gliders.")
+    List<Path> dac = new ArrayList<>();
+
     /** One database's connection settings. */
     static final class Database {
         @Option(names = "--driver", paramLabel = "CLASS",
@@ -126,6 +131,11 @@ public final class DatabaseServerCommand implements Callable<Integer> {
                 ingestMaxRows));
     }
 
+    /** The DAC deployments of {@code --dac}, read and checked before the service registers. */
+    org.ripv.dac.delivery.Deliveries deliveries() throws org.ripv.dac.DacException, IOException {
+        return dac.isEmpty() ? org.ripv.dac.delivery.Deliveries.NONE : org.ripv.dac.delivery.Deliveries.start(dac);
+    }
+
     /** Where launch warnings go (standard error; injectable for tests). */
     java.io.PrintStream err = System.err;
 
@@ -137,12 +147,24 @@ public final class DatabaseServerCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         String host = launch.hostName();
+        org.ripv.dac.delivery.Deliveries deliveries;
+        try {
+            deliveries = deliveries();
+        } catch (org.ripv.dac.DacException | IOException e) {
+            System.err.println("Error: the DAC deployment is refused: " + e.getMessage());
+            return 1;
+        }
         DatabaseServer service;
         try {
-            service = build(host);
+            service = build(host).withDeliveries(deliveries);
         } catch (Exception e) {
+            deliveries.close();
             System.err.println("Error: cannot open the database: " + e.getMessage());
             return 1;
+        }
+        for (var d : deliveries.all()) {
+            System.out.println("DAC deployment of " + d.deployment().glider() + " -> " + d.deployment().where()
+                    + " (folder " + d.deployment().folder() + ")");
         }
         for (DatabaseTarget t : service.targets()) {
             System.out.println(service.name() + t.handle() + " -> " + t.safeUrl());

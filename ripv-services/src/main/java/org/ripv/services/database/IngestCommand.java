@@ -63,6 +63,8 @@ final class IngestCommand {
     private final SlocumArrivals slocum;
     private final IngestNotices notices;
     private boolean schemaChecked;
+    /** The DAC deployments each stored Slocum binary file goes to (issue 37 item 4). */
+    private volatile org.ripv.dac.delivery.Deliveries deliveries = org.ripv.dac.delivery.Deliveries.NONE;
     /** The files waiting for a sensor-list cache, as {@code ?status} shows them; empty when none. */
     private volatile String waiting = "";
 
@@ -92,6 +94,10 @@ final class IngestCommand {
         } catch (IOException e) {
             waiting = "cannot list the files waiting for sensor lists: " + e.getMessage();
         }
+    }
+
+    void deliverTo(org.ripv.dac.delivery.Deliveries deliveries) {
+        this.deliveries = deliveries;
     }
 
     /** True when a command line is {@code ingest ...}. */
@@ -215,7 +221,14 @@ final class IngestCommand {
     private DbaIngest.Outcome store(DbaIngest ingest, Attachment f, String user)
             throws IOException, SQLException, DbaFormatException, org.ripv.services.ingest.SlocumFormatException {
         if (SlocumArrivals.isBinary(f)) {
-            return ingest.ingest(f.name(), DbaIngest.sha256(f.data()), () -> slocum.open(f), user);
+            DbaIngest.Outcome o = ingest.ingest(f.name(), DbaIngest.sha256(f.data()), () -> slocum.open(f), user);
+            try {
+                deliveries.arrived(f.name(), f.data(), slocum.cache());
+            } catch (RuntimeException e) {
+                // the DAC delivery is a consumer of what was stored: it never changes the ingest's verdict
+                log.warn("{}: the DAC delivery did not take {}: {}", target.handle(), f.name(), e.toString());
+            }
+            return o;
         }
         return ingest.ingest(f.name(), f.data(), user);
     }

@@ -5,6 +5,7 @@ import { session, PostOffice, bar } from './postoffice.js';
 import { tableElement, csv, download } from './table.js';
 import { drawChart, chartCsv, chartPng, chartSize } from './chart.js';
 import { command, NotAName } from './address.js';
+import { dacView } from './dac.js';
 
 const s = await session();
 bar(s);
@@ -30,6 +31,7 @@ const databases = addresses.filter((a) => a.startsWith('<DatabaseServer>'));
 const plotters = addresses.filter((a) => a.startsWith('<DataVisServer>'));
 fill($('database'), databases);
 fill($('datavis'), plotters);
+fill($('dac-database'), databases);
 $('state').textContent = databases.length
   ? `${databases.length} database(s), ${plotters.length} plotter(s).`
   : 'No DatabaseServer is registered: start one (ripv service database).';
@@ -109,3 +111,44 @@ $('chart-form').addEventListener('submit', async (e) => {
 });
 // A phone turned, a window resized: the chart follows the page's width.
 window.addEventListener('resize', () => { if (plot) plot.setSize(chartSize($('chart'))); });
+
+// The DAC deliveries of the chosen DatabaseServer: what the service's own state says (?dac MAILBOX --json).
+async function showDac() {
+  const db = $('dac-database').value;
+  if (!db) { $('dac-state').textContent = 'No DatabaseServer.'; return; }
+  $('dac-state').textContent = 'Asking…';
+  const r = await po.send('', `?dac ${db} --json`);
+  if (r.status === 'ERROR') {
+    $('dac-state').textContent = `Error: ${r.text} [${r.error}]`;
+    $('dac-deployments').replaceChildren();
+    return;
+  }
+  let view;
+  try {
+    view = dacView(JSON.parse(r.text));
+  } catch (e) {
+    $('dac-state').textContent = `The service's answer is not the deliveries' JSON: ${e.message}`;
+    return;
+  }
+  $('dac-state').textContent = view.length ? `${view.length} deployment(s).` : 'No DAC deployment on this DatabaseServer (docs/dac.md: --dac FILE).';
+  $('dac-deployments').replaceChildren(...view.map((v) => {
+    const box = document.createElement('div');
+    box.className = 'dac-deployment';
+    const h = document.createElement('h3');
+    h.textContent = v.title;
+    const p = document.createElement('p');
+    p.className = 'dac-summary';
+    p.textContent = v.summary;
+    const scroll = document.createElement('div');
+    scroll.className = 'scroll';
+    scroll.append(tableElement(v.table));
+    const notes = document.createElement('ul');
+    notes.className = 'dac-notes';
+    notes.replaceChildren(...v.notes.map((n) => { const li = document.createElement('li'); li.textContent = n; return li; }));
+    box.append(h, p, scroll, notes);
+    return box;
+  }));
+}
+$('dac-refresh').addEventListener('click', showDac);
+$('dac-database').addEventListener('change', showDac);
+if (databases.length) showDac();
