@@ -69,7 +69,7 @@ public final class Forecast {
     }
 
     /** The glider's speed along a track of bearing {@code b} (degrees true); 0 or less when it cannot make it good. */
-    static double groundSpeed(double b, double speed, double currentE, double currentN) {
+    public static double groundSpeed(double b, double speed, double currentE, double currentN) {
         double r = Math.toRadians(b);
         double along = currentE * Math.sin(r) + currentN * Math.cos(r);
         double cross = currentE * Math.cos(r) - currentN * Math.sin(r);

@@ -17,9 +17,12 @@ import org.ripv.server.permit.PermitFile;
 import org.ripv.server.session.Rights;
 
 /**
- * {@code ?surfacings MAILBOX [--last N] [--json]}: a vehicle's call records, oldest first, as a
- * table (the named columns, then every other surface sensor by name) or, with {@code --json}, one
- * JSON object per record by those names. Needs the read right, as {@code ?history} does.
+ * {@code ?surfacings MAILBOX [--last N] [--json] [--outlook]}: a vehicle's call records, oldest
+ * first, as a table (the named columns, then every other surface sensor by name) or, with
+ * {@code --json}, one JSON object per record by those names. {@code --outlook} adds what the
+ * records say comes next ({@link org.ripv.surfacing.CallOutlook}: the next call, the waypoint's
+ * distance, bearing and ETA, the trends); with {@code --json} the answer is then
+ * {@code {"records": […], "outlook": {…}}}. Needs the read right, as {@code ?history} does.
  */
 public final class SurfacingCommands {
     static final int DEFAULT_LAST = 20;
@@ -36,7 +39,7 @@ public final class SurfacingCommands {
     }
 
     public static String usage() {
-        return "?surfacings MAILBOX [--last N] [--json]";
+        return "?surfacings MAILBOX [--last N] [--json] [--outlook]";
     }
 
     public OutgoingServerMessage run(IncomingServerMessage request, String fid, String[] w) {
@@ -51,9 +54,11 @@ public final class SurfacingCommands {
         }
         int last = DEFAULT_LAST;
         boolean asJson = false;
+        boolean outlook = false;
         for (int i = 2; i < w.length; i++) {
             switch (w[i].toLowerCase(Locale.ROOT)) {
                 case "--json" -> asJson = true;
+                case "--outlook" -> outlook = true;
                 case "--last" -> {
                     String value = i + 1 < w.length ? w[++i] : "";
                     try {
@@ -88,18 +93,47 @@ public final class SurfacingCommands {
         }
         TableResult table = new TableResult("?surfacings " + mailbox, columns, columns.stream().map(CallRecord::type).toList(),
                 rows, false);
+        Map<String, Object> ahead = outlook ? surfacings.outlook(mailbox, records) : null;
         String text;
         if (asJson) {
             try {
-                text = json.writeValueAsString(records);
+                text = json.writeValueAsString(outlook ? Map.of("records", records, "outlook", ahead) : records);
             } catch (com.fasterxml.jackson.core.JsonProcessingException e) {
                 return error(request, fid, ErrorCode.INTERNAL, "call records could not be written as JSON: " + e.getMessage());
             }
         } else {
             text = records.size() + " call record" + (records.size() == 1 ? "" : "s") + " of " + mailbox + ", oldest first"
-                    + (records.isEmpty() ? " (no surface dialog read from it yet)" : "\n" + render(columns, rows));
+                    + (records.isEmpty() ? " (no surface dialog read from it yet)" : "\n" + render(columns, rows))
+                    + (outlook ? "\n" + words(ahead) : "");
         }
         return request.reply(Footer.ok(fid, text, table).via(via));
+    }
+
+    /** The outlook for people: the next call, the waypoint and the way made good to it. */
+    static String words(Map<String, Object> o) {
+        StringBuilder b = new StringBuilder();
+        b.append("next call: ").append(o.get("next_call_utc") == null ? "not known (no interval set or learned yet)"
+                : o.get("next_call_utc") + " (every " + o.get("interval_s") + " s, " + o.get("interval_from") + ")");
+        if (o.get("sog_mps") != null) {
+            b.append(String.format(Locale.ROOT, "%nover ground: %.3f m/s toward %.0f°", o.get("sog_mps"), o.get("cog_deg")));
+        }
+        if (o.get("current_mps") != null) {
+            b.append(String.format(Locale.ROOT, "%ndepth-averaged current: %.3f m/s toward %.0f°", o.get("current_mps"),
+                    o.get("current_toward_deg")));
+        }
+        if (o.get("wpt_lat") == null) {
+            b.append("\nwaypoint: not shown (no c_wpt_lat/c_wpt_lon)");
+        } else {
+            b.append(String.format(Locale.ROOT, "%nwaypoint %.5f, %.5f", o.get("wpt_lat"), o.get("wpt_lon")));
+            if (o.get("wpt_distance_m") != null) {
+                b.append(String.format(Locale.ROOT, ": %.2f km at %.0f° from the last fix", (Double) o.get("wpt_distance_m") / 1000,
+                        o.get("wpt_bearing_deg")));
+            }
+            b.append(o.get("wpt_eta_utc") != null ? ", ETA " + o.get("wpt_eta_utc") + String.format(Locale.ROOT,
+                    " (%.3f m/s made good)", o.get("wpt_made_good_mps"))
+                    : o.get("wpt_made_good_mps") != null ? ", no ETA: the glider does not make way toward it" : ", no ETA: no speed over ground yet");
+        }
+        return b.toString();
     }
 
     /** The named columns, then every other column the records have, in the order first seen. */
