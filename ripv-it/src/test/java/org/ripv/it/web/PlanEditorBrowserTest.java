@@ -219,6 +219,10 @@ class PlanEditorBrowserTest {
             wait.withMessage(() -> "pending: " + text(b, "vehicles")).until(d ->
                     d.findElements(By.cssSelector("section.vehicle-changes tr[data-id='3']")).isEmpty());
             assertThat(text(b, "status")).startsWith("0 pending change(s)");
+            // the vehicle's own map draws the goto list it runs too
+            b.get("https://127.0.0.1:" + http + "/vehicle.html?m=" + java.net.URLEncoder.encode(glider, StandardCharsets.UTF_8));
+            wait.withMessage(() -> "the vehicle's track map: " + b.findElement(By.id("track")).getAttribute("data-plan-waypoints"))
+                    .until(d -> "2".equals(d.findElement(By.id("track")).getAttribute("data-plan-waypoints")));
             b.get("https://127.0.0.1:" + http + "/plan.html?m=" + java.net.URLEncoder.encode(glider, StandardCharsets.UTF_8));
             wait.until(d -> "true".equals(d.findElement(By.tagName("body")).getAttribute("data-ready")));
             wait.withMessage(() -> "changes: " + text(b, "changes")).until(d ->

@@ -70,6 +70,7 @@ export function gliderLayer(model) {
       }
     }
     g.restore();
+    g.canvas.dataset.planWaypoints = String(c.waypoints.length);
   };
 }
 
