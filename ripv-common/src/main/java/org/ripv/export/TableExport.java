@@ -2,6 +2,7 @@ package org.ripv.export;
 
 import java.math.BigDecimal;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
@@ -28,7 +29,7 @@ public final class TableExport {
         StringBuilder b = new StringBuilder();
         line(b, t.columns());
         for (String[] row : t.rows()) {
-            line(b, java.util.Arrays.asList(row));
+            line(b, Arrays.asList(row));
         }
         return b.toString();
     }

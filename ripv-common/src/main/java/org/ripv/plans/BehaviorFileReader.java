@@ -3,6 +3,7 @@ package org.ripv.plans;
 import java.io.ByteArrayInputStream;
 import java.io.IOException;
 import java.io.InputStream;
+import java.nio.charset.StandardCharsets;
 import java.security.MessageDigest;
 import java.security.NoSuchAlgorithmException;
 import java.util.ArrayList;
@@ -138,8 +139,8 @@ public final class BehaviorFileReader {
             }
         }
         int codeEnd = comment < 0 ? len : comment;
-        String code = new String(bytes, 0, codeEnd, java.nio.charset.StandardCharsets.US_ASCII).trim();
-        String remark = comment < 0 ? "" : new String(bytes, comment + 1, len - comment - 1, java.nio.charset.StandardCharsets.ISO_8859_1).trim();
+        String code = new String(bytes, 0, codeEnd, StandardCharsets.US_ASCII).trim();
+        String remark = comment < 0 ? "" : new String(bytes, comment + 1, len - comment - 1, StandardCharsets.ISO_8859_1).trim();
         if (!code.isEmpty()) {
             code(lineNo, code, remark);
         }

@@ -2,14 +2,16 @@ package org.ripv.server.plans;
 
 import java.io.IOException;
 import java.io.InputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.time.Instant;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.Optional;
 import java.util.regex.Pattern;
 
 import org.ripv.messages.ErrorCode;
@@ -176,7 +178,7 @@ final class PlanCommands {
     }
 
     private String diffText(String mailbox, String as, PlanVersions.Version v, byte[] bytes) throws IOException {
-        java.util.Optional<PlanVersions.Version> sent = versions.lastSentBefore(mailbox, as, v.n());
+        Optional<PlanVersions.Version> sent = versions.lastSentBefore(mailbox, as, v.n());
         if (sent.isEmpty()) {
             return "no earlier version of " + as + " was sent: all of it is new";
         }
@@ -274,7 +276,7 @@ final class PlanCommands {
         Path newest = null;
         long at = Long.MIN_VALUE;
         int looked = 0;
-        try (java.nio.file.DirectoryStream<Path> files = Files.newDirectoryStream(folder)) {
+        try (DirectoryStream<Path> files = Files.newDirectoryStream(folder)) {
             for (Path p : files) {
                 if (++looked > 10_000) {
                     break;

@@ -8,8 +8,11 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.ArrayBlockingQueue;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
 
 import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.ErrorCode;
@@ -108,8 +111,8 @@ public final class Plans implements AutoCloseable {
         // a staged file deleted or replaced since the last call shows as cancelled at once, not only on the next call
         try {
             thread.submit(() -> follower.sweep(null)).get(2, TimeUnit.SECONDS);
-        } catch (java.util.concurrent.ExecutionException | java.util.concurrent.TimeoutException
-                 | java.util.concurrent.RejectedExecutionException e) {
+        } catch (ExecutionException | TimeoutException
+                 | RejectedExecutionException e) {
             log.debug("plans: the sweep of staged files did not finish: {}", e.toString());
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();

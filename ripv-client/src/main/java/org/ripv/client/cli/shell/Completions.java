@@ -5,6 +5,7 @@ import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Locale;
 import java.util.Set;
+import org.ripv.client.cli.CliSession;
 
 /**
  * Tab completion for the CLI's lines: the word being typed, given the words before it and the
@@ -14,7 +15,7 @@ import java.util.Set;
  * ({@code vis:NAME}). Local files after {@code put} are the terminal's business ({@link Shell}).
  */
 final class Completions {
-    static final List<String> LOCAL = org.ripv.client.cli.CliSession.OWN_WORDS;
+    static final List<String> LOCAL = CliSession.OWN_WORDS;
     /** The group Tab lists the CLI's own words under, apart from the server's and the MailBox's commands. */
     static final String OWN_GROUP = "the CLI's own words (send LINE sends a line starting with one to the vehicle)";
     /** What Tab shows beside each of the CLI's own words. */
