@@ -1,6 +1,7 @@
 package org.ripv.assistants;
 
 import org.ripv.managers.TaskManager;
+import org.ripv.messages.Header;
 import org.ripv.messages.Message;
 import org.ripv.post.MailBox;
 import org.ripv.post.MailBoxes;
@@ -41,7 +42,7 @@ public final class InboxAssistantThread<I extends Message, O extends Message> ex
                     manager.failed(box, request, t);
                     break;
                 }
-                log.warn("{}: command '{}' failed", box.address(), org.ripv.messages.Header.abbreviate(request.header().body()), t);
+                log.warn("{}: command '{}' failed", box.address(), Header.abbreviate(request.header().body()), t);
                 manager.failed(box, request, t);
             } finally {
                 MailBoxes.giveBackKey(box);

@@ -1,5 +1,7 @@
 package org.ripv.assistants;
 
+import java.util.ArrayList;
+import java.util.List;
 import org.ripv.managers.TaskManager;
 import org.ripv.messages.Message;
 import org.ripv.post.MailBox;
@@ -27,7 +29,7 @@ public final class OutboxAssistantThread<I extends Message, O extends Message> e
 
     @Override
     public void run() {
-        java.util.List<O> batch = new java.util.ArrayList<>();
+        List<O> batch = new ArrayList<>();
         while (true) {
             O reply;
             try {

@@ -4,8 +4,9 @@ import java.time.Instant;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
-import org.ripv.json.JsonWriter;
+import org.ripv.json.Json;
 import org.ripv.messages.ChartData;
 
 /**
@@ -42,7 +43,7 @@ public final class ChartExport {
     public static String json(ChartData c) {
         Map<String, Object> doc = new LinkedHashMap<>();
         doc.put("title", c.title());
-        doc.put("kind", c.kind().name().toLowerCase(java.util.Locale.ROOT));
+        doc.put("kind", c.kind().name().toLowerCase(Locale.ROOT));
         doc.put("xLabel", c.xLabel());
         doc.put("yLabel", c.yLabel());
         doc.put("xIsEpochMillis", c.kind().timeAxis());
@@ -66,7 +67,7 @@ public final class ChartExport {
             m.put("label", c.newest().label());
             doc.put("newest", m);
         }
-        return JsonWriter.write(doc) + "\n";
+        return Json.write(doc) + "\n";
     }
 
     /** A number as written in CSV: integral values without ".0", a gap empty. */

@@ -2,12 +2,13 @@ package org.ripv.export;
 
 import java.math.BigDecimal;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
-import org.ripv.json.JsonWriter;
+import org.ripv.json.Json;
 import org.ripv.messages.TableResult;
 
 /**
@@ -28,7 +29,7 @@ public final class TableExport {
         StringBuilder b = new StringBuilder();
         line(b, t.columns());
         for (String[] row : t.rows()) {
-            line(b, java.util.Arrays.asList(row));
+            line(b, Arrays.asList(row));
         }
         return b.toString();
     }
@@ -75,7 +76,7 @@ public final class TableExport {
         doc.put("types", t.types());
         doc.put("truncated", t.truncated());
         doc.put("rows", rows);
-        return JsonWriter.write(doc) + "\n";
+        return Json.write(doc) + "\n";
     }
 
     /** A number for a numeric column (as the database wrote it, exactly), else the text; null stays null. */

@@ -1,6 +1,6 @@
 /**
- * Query results and chart data as CSV (RFC 4180) and JSON files, and a chart as an SVG picture
- * drawn from its data ({@link org.ripv.export.SvgChart}), the same for the CLI's
- * {@code export csv|json|svg FILE} and the GUI's export buttons (JSON through {@link org.ripv.json.JsonWriter}).
+ * Query results and chart data as CSV (RFC 4180) and JSON files, the same for the CLI's
+ * {@code export csv|json FILE} and the GUI's export buttons (JSON through {@link org.ripv.json.Json}).
+ * Charts as pictures (PNG, SVG) are drawn by {@link org.ripv.charts.ChartRenderer}.
  */
 package org.ripv.export;

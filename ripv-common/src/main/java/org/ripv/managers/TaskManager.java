@@ -1,5 +1,6 @@
 package org.ripv.managers;
 
+import java.util.List;
 import org.ripv.messages.Message;
 import org.ripv.post.MailBox;
 
@@ -26,7 +27,7 @@ public abstract class TaskManager<I extends Message, O extends Message> {
      * delivers them one by one; a TaskManager whose delivery has a per-call cost (an RMI call)
      * sends them at once.
      */
-    public void parseFooters(MailBox<I, O> box, java.util.List<O> replies) {
+    public void parseFooters(MailBox<I, O> box, List<O> replies) {
         for (O reply : replies) {
             try {
                 parseFooter(box, reply);

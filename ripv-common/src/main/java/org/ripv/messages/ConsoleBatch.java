@@ -1,5 +1,6 @@
 package org.ripv.messages;
 
+import java.io.Serial;
 import java.util.List;
 import java.util.Objects;
 
@@ -21,7 +22,7 @@ public record ConsoleBatch(String mailbox, List<ConsoleEntry> entries, long skip
     }
 
     /** Travels as one packed array ({@link PackedConsole}), not an object per entry and field. */
-    @java.io.Serial
+    @Serial
     private Object writeReplace() {
         return new PackedConsole(this);
     }

@@ -1,5 +1,6 @@
 package org.ripv.messages;
 
+import java.io.Serializable;
 import java.util.List;
 
 /** A directory listing (the server's upload or download directory, a vehicle's files). */
@@ -10,5 +11,5 @@ public record FileListing(String directory, List<Entry> files) implements Result
     }
 
     /** One file: its name, size in bytes and last modification (epoch milliseconds). */
-    public record Entry(String name, long size, long modified) implements java.io.Serializable {}
+    public record Entry(String name, long size, long modified) implements Serializable {}
 }

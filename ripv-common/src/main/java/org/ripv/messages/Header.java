@@ -3,6 +3,7 @@ package org.ripv.messages;
 import java.io.Serializable;
 import java.util.List;
 import java.util.Objects;
+import org.ripv.commands.SingleLineCommand;
 
 /**
  * The addressing half of a {@link Message}: who sent it, where it goes and what it asks.
@@ -72,6 +73,6 @@ public record Header(long messageId, IdBadge origin, List<String> roles, String 
      * made visible ({@code \r}, {@code ^C}) so that no value can forge a log line.
      */
     public static String abbreviate(String s) {
-        return org.ripv.commands.SingleLineCommand.shown(s);
+        return SingleLineCommand.shown(s);
     }
 }

@@ -5,7 +5,9 @@ import java.io.IOException;
 import java.io.InvalidObjectException;
 import java.io.ObjectInputFilter;
 import java.io.ObjectOutputStream;
+import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.List;
 
 /**
  * The Java-serialized form of a message without attachment or typed result — nearly every
@@ -54,10 +56,10 @@ public final class SerializedMessages {
     }
 
     /** Messages whose data takes one short block, one long block, and several. */
-    private static java.util.List<Message> samples() {
-        java.util.List<Message> out = new java.util.ArrayList<>();
+    private static List<Message> samples() {
+        List<Message> out = new ArrayList<>();
         for (int size : new int[] {3, 300, 3000}) {
-            out.add(new OutgoingServerMessage(new Header(7, new IdBadge("100001", "u"), java.util.List.of("r"), "<S>::<h>",
+            out.add(new OutgoingServerMessage(new Header(7, new IdBadge("100001", "u"), List.of("r"), "<S>::<h>",
                     "<S>::<h>X", "dir ü" + "x".repeat(size), Priority.URGENT, null), Footer.ok("100100", "text", null).via("<S>::<h>")));
         }
         return out;

@@ -1,5 +1,6 @@
 package org.ripv.messages;
 
+import java.io.Serializable;
 import java.util.List;
 import java.util.Objects;
 
@@ -26,7 +27,7 @@ import java.util.Objects;
 public record ServiceDescriptor(String name, String sid, String description, String panel,
                                 List<String> attachPrefixes, List<String> downloadPrefixes, long registration,
                                 long started)
-        implements java.io.Serializable {
+        implements Serializable {
     public ServiceDescriptor {
         Objects.requireNonNull(name, "name");
         Ids.require(sid);

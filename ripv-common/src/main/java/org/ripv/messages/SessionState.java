@@ -1,6 +1,7 @@
 package org.ripv.messages;
 
 import java.io.Serializable;
+import java.util.Locale;
 
 /**
  * What the server knows of a vehicle MailBox's calls, derived from the events its service
@@ -28,7 +29,7 @@ public record SessionState(State state, long lastContact, Double lat, Double lon
 
         /** Lower case with a space, for people: {@code on call}. */
         public String words() {
-            return name().toLowerCase(java.util.Locale.ROOT).replace('_', ' ');
+            return name().toLowerCase(Locale.ROOT).replace('_', ' ');
         }
     }
 

@@ -1,5 +1,6 @@
 package org.ripv.messages;
 
+import java.io.Serial;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
@@ -28,7 +29,7 @@ public record TableResult(String query, List<String> columns, List<String> types
     }
 
     /** Travels as one packed byte array rather than an object per cell ({@link PackedTable}). */
-    @java.io.Serial
+    @Serial
     private Object writeReplace() {
         return new PackedTable(this);
     }

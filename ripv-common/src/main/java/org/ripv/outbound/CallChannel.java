@@ -6,6 +6,7 @@ import java.io.ByteArrayInputStream;
 import java.io.ByteArrayOutputStream;
 import java.io.DataInputStream;
 import java.io.DataOutputStream;
+import java.io.EOFException;
 import java.io.IOException;
 import java.io.ObjectInputStream;
 import java.io.ObjectOutputStream;
@@ -211,7 +212,7 @@ public final class CallChannel implements AutoCloseable {
                     default -> throw new ProtocolException("unknown frame kind " + f[1]);
                 }
             }
-        } catch (java.io.EOFException e) {
+        } catch (EOFException e) {
             close("the other side closed the connection");
         } catch (IOException e) {
             close(e.getMessage());

@@ -1,5 +1,6 @@
 package org.ripv.patterns;
 
+import com.google.re2j.Matcher;
 import com.google.re2j.Pattern;
 import com.google.re2j.PatternSyntaxException;
 
@@ -50,7 +51,7 @@ public record UserPattern(String text, Pattern pattern) {
     }
 
     /** A matcher, for groups. */
-    public com.google.re2j.Matcher matcher(CharSequence s) {
+    public Matcher matcher(CharSequence s) {
         return pattern.matcher(s);
     }
 

@@ -3,6 +3,7 @@ package org.ripv.plans;
 import java.io.ByteArrayInputStream;
 import java.io.IOException;
 import java.io.InputStream;
+import java.nio.charset.StandardCharsets;
 import java.security.MessageDigest;
 import java.security.NoSuchAlgorithmException;
 import java.util.ArrayList;
@@ -13,6 +14,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import org.ripv.surfacing.DegreesMinutes;
 
 /**
  * Reads a behaviour file line by line as the glider does, collecting every problem with its
@@ -137,8 +139,8 @@ public final class BehaviorFileReader {
             }
         }
         int codeEnd = comment < 0 ? len : comment;
-        String code = new String(bytes, 0, codeEnd, java.nio.charset.StandardCharsets.US_ASCII).trim();
-        String remark = comment < 0 ? "" : new String(bytes, comment + 1, len - comment - 1, java.nio.charset.StandardCharsets.ISO_8859_1).trim();
+        String code = new String(bytes, 0, codeEnd, StandardCharsets.US_ASCII).trim();
+        String remark = comment < 0 ? "" : new String(bytes, comment + 1, len - comment - 1, StandardCharsets.ISO_8859_1).trim();
         if (!code.isEmpty()) {
             code(lineNo, code, remark);
         }
@@ -262,7 +264,7 @@ public final class BehaviorFileReader {
         double v = Double.parseDouble(value);
         if (units.equalsIgnoreCase("lat") || units.equalsIgnoreCase("lon")) {
             try {
-                DegreesMinutes.degrees(value, units.equalsIgnoreCase("lat"));
+                DegreesMinutes.parse(value, units.equalsIgnoreCase("lat"));
             } catch (IllegalArgumentException e) {
                 problem(lineNo, "b_arg " + argName + ": " + e.getMessage());
                 return;
@@ -290,8 +292,8 @@ public final class BehaviorFileReader {
             return; // counted, not kept: a billion waypoints cost a counter
         }
         try {
-            double lon = DegreesMinutes.degrees(words[0], false);
-            double lat = DegreesMinutes.degrees(words[1], true);
+            double lon = DegreesMinutes.parse(words[0], false);
+            double lat = DegreesMinutes.parse(words[1], true);
             waypoints.add(new Waypoint(waypointCount - 1, lineNo, words[0], words[1], lat, lon, remark));
         } catch (IllegalArgumentException e) {
             problem(lineNo, e.getMessage());

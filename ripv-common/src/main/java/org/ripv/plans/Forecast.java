@@ -2,6 +2,7 @@ package org.ripv.plans;
 
 import java.time.Duration;
 import java.time.Instant;
+import java.time.temporal.ChronoUnit;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
@@ -69,7 +70,7 @@ public final class Forecast {
     }
 
     /** The glider's speed along a track of bearing {@code b} (degrees true); 0 or less when it cannot make it good. */
-    static double groundSpeed(double b, double speed, double currentE, double currentN) {
+    public static double groundSpeed(double b, double speed, double currentE, double currentN) {
         double r = Math.toRadians(b);
         double along = currentE * Math.sin(r) + currentN * Math.cos(r);
         double cross = currentE * Math.cos(r) - currentN * Math.sin(r);
@@ -126,7 +127,7 @@ public final class Forecast {
             b.append(String.format(Locale.ROOT, "%n%4d  %10.5f  %11.5f  %8.2f  %6.0f°  %9.2f  %6.3f  %s", l.n(), l.lat(), l.lon(),
                     l.legMetres() / 1000, l.bearing(), l.totalMetres() / 1000, l.groundSpeed(),
                     l.eta() == null ? "not reachable: the current is stronger than the glider on this leg or one before"
-                            : l.eta().truncatedTo(java.time.temporal.ChronoUnit.SECONDS).toString()));
+                            : l.eta().truncatedTo(ChronoUnit.SECONDS).toString()));
         }
         return b.toString();
     }

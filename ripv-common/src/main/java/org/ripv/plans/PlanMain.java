@@ -5,11 +5,14 @@ import java.io.InputStream;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Instant;
 import java.util.List;
+import java.util.Locale;
 import java.util.concurrent.Callable;
 
 import org.ripv.launch.Launchers;
 
+import org.ripv.launch.Version;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -21,7 +24,7 @@ import picocli.CommandLine.Parameters;
  * standard error. Exit codes: 0 every file passed, 1 a file was refused or could not be read,
  * 2 a bad command line.
  */
-@Command(name = "ripv plan", mixinStandardHelpOptions = true, versionProvider = org.ripv.launch.Version.Provider.class,
+@Command(name = "ripv plan", mixinStandardHelpOptions = true, versionProvider = Version.Provider.class,
         description = "Slocum behaviour files (.ma) read as the glider reads them (docs/plans.md).",
         subcommands = {PlanMain.Check.class, PlanMain.ForecastCommand.class},
         exitCodeListHeading = "%nExit codes:%n",
@@ -91,8 +94,8 @@ public final class PlanMain implements Callable<Integer> {
                 spec.commandLine().getErr().println("Error: " + name + " is a " + c.file().behavior() + " file: no waypoints");
                 return 1;
             }
-            List<Forecast.Leg> legs = Forecast.legs(c.file(), at[0], at[1], java.time.Instant.now(), speed, cur[0], cur[1]);
-            spec.commandLine().getOut().println(Forecast.render(legs, String.format(java.util.Locale.ROOT,
+            List<Forecast.Leg> legs = Forecast.legs(c.file(), at[0], at[1], Instant.now(), speed, cur[0], cur[1]);
+            spec.commandLine().getOut().println(Forecast.render(legs, String.format(Locale.ROOT,
                     "of %s from %.5f, %.5f at %.3f m/s, current %.3f east %.3f north", name, at[0], at[1], speed, cur[0], cur[1])));
             return 0;
         }

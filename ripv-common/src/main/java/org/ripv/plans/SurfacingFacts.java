@@ -1,6 +1,9 @@
 package org.ripv.plans;
 
+import java.math.BigDecimal;
 import java.util.Map;
+
+import org.ripv.surfacing.DegreesMinutes;
 
 /**
  * What one surfacing's dialog showed, as the change follower needs it: the sensors it printed
@@ -26,7 +29,7 @@ public record SurfacingFacts(String mailbox, long time, Map<String, Double> sens
             return null;
         }
         try {
-            return DegreesMinutes.degrees(java.math.BigDecimal.valueOf(v).toPlainString(), latitude);
+            return DegreesMinutes.parse(BigDecimal.valueOf(v).toPlainString(), latitude);
         } catch (IllegalArgumentException e) {
             return null; // Slocum's no-value (69696969) and other nonsense: no waypoint shown
         }

@@ -1,11 +1,13 @@
 package org.ripv.post;
 
 import java.util.ArrayDeque;
+import java.util.Collection;
 import java.util.Objects;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.Condition;
 import java.util.concurrent.locks.ReentrantLock;
+import java.util.function.Predicate;
 import org.ripv.messages.Message;
 import org.ripv.messages.Priority;
 
@@ -133,7 +135,7 @@ public final class MailBox<I extends Message, O extends Message> {
     }
 
     /** Removes the first waiting request that matches; true when one was removed. */
-    public boolean remove(java.util.function.Predicate<? super I> which) {
+    public boolean remove(Predicate<? super I> which) {
         lock.lock();
         try {
             for (ArrayDeque<I> inbox : inboxes) {
@@ -168,7 +170,7 @@ public final class MailBox<I extends Message, O extends Message> {
     }
 
     /** Moves up to {@code max} replies that are already waiting into {@code into}, without blocking. */
-    public int drainReplies(java.util.Collection<? super O> into, int max) {
+    public int drainReplies(Collection<? super O> into, int max) {
         return outbox.drainTo(into, max);
     }
 

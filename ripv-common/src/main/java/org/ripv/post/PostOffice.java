@@ -1,9 +1,11 @@
 package org.ripv.post;
 
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.ConcurrentSkipListMap;
+import java.util.concurrent.TimeUnit;
 import org.ripv.assistants.InboxAssistantThread;
 import org.ripv.assistants.OutboxAssistantThread;
 import org.ripv.managers.TaskManager;
@@ -68,10 +70,10 @@ public final class PostOffice<I extends Message, O extends Message> {
         }
         s.inbox().shutdown(2000);
         s.outbox().shutdown(2000);
-        List<I> left = new java.util.ArrayList<>();
+        List<I> left = new ArrayList<>();
         I m;
         try {
-            while ((m = s.box().pollNext(0, java.util.concurrent.TimeUnit.MILLISECONDS)) != null) {
+            while ((m = s.box().pollNext(0, TimeUnit.MILLISECONDS)) != null) {
                 left.add(m);
             }
         } catch (InterruptedException e) {

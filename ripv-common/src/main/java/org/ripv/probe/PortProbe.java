@@ -15,6 +15,7 @@ import java.time.Duration;
 import java.util.Arrays;
 import javax.net.ssl.SSLContext;
 import javax.net.ssl.SSLSocket;
+import javax.net.ssl.SSLSocketFactory;
 import javax.net.ssl.TrustManager;
 import javax.net.ssl.X509TrustManager;
 import org.ripv.wire.FrameCodec;
@@ -133,7 +134,7 @@ public final class PortProbe {
      * is and sends nothing secret (a GET of / and the RIPV greeting), so there is nothing to
      * protect; the real connection checks the certificate as before.
      */
-    private static javax.net.ssl.SSLSocketFactory anyCertificate() throws IOException {
+    private static SSLSocketFactory anyCertificate() throws IOException {
         try {
             SSLContext c = SSLContext.getInstance("TLS");
             c.init(null, new TrustManager[] {new X509TrustManager() {

@@ -1,7 +1,17 @@
 package org.ripv.rmi;
 
+import java.io.IOException;
+import java.io.ObjectInputFilter;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.net.ServerSocket;
+import java.net.UnknownHostException;
 import java.rmi.NoSuchObjectException;
 import java.rmi.RemoteException;
+import java.rmi.registry.LocateRegistry;
+import java.rmi.registry.Registry;
+import java.rmi.server.ExportException;
+import java.rmi.server.RMIServerSocketFactory;
 import java.rmi.server.UnicastRemoteObject;
 import org.ripv.wire.WireFilter;
 
@@ -41,12 +51,12 @@ public final class RmiSupport {
      * first or an object stream was made before (the JVM then allows no factory).
      */
     public static synchronized boolean filterProcess() {
-        if (java.io.ObjectInputFilter.Config.getSerialFilterFactory() instanceof RmiStreamFilters) {
+        if (ObjectInputFilter.Config.getSerialFilterFactory() instanceof RmiStreamFilters) {
             return true;
         }
         try {
-            java.io.ObjectInputFilter.Config.setSerialFilterFactory(new RmiStreamFilters(
-                    java.io.ObjectInputFilter.Config.getSerialFilterFactory(), WireFilter.forProcess(MAX_RMI_BYTES)));
+            ObjectInputFilter.Config.setSerialFilterFactory(new RmiStreamFilters(
+                    ObjectInputFilter.Config.getSerialFilterFactory(), WireFilter.forProcess(MAX_RMI_BYTES)));
             return true;
         } catch (IllegalStateException e) {
             return false;
@@ -70,17 +80,17 @@ public final class RmiSupport {
         if (bind.isEmpty() || bind.equals("*")) {
             return export(object, port, null);
         }
-        java.net.InetAddress address;
+        InetAddress address;
         try {
-            address = java.net.InetAddress.getByName(bind);
-        } catch (java.net.UnknownHostException e) {
-            throw new java.rmi.server.ExportException("cannot listen on '" + bind + "' (" + BIND_PROPERTY + "): unknown address", e);
+            address = InetAddress.getByName(bind);
+        } catch (UnknownHostException e) {
+            throw new ExportException("cannot listen on '" + bind + "' (" + BIND_PROPERTY + "): unknown address", e);
         }
         return export(object, port, new BoundSockets(address));
     }
 
     /** As {@link #export(GenericRMIInterface, int)}, listening through {@code sockets} (null: RMI's default). */
-    public static GenericRMIInterface export(GenericRMIInterface object, int port, java.rmi.server.RMIServerSocketFactory sockets)
+    public static GenericRMIInterface export(GenericRMIInterface object, int port, RMIServerSocketFactory sockets)
             throws RemoteException {
         return (GenericRMIInterface) UnicastRemoteObject.exportObject(object, port, DeadlineSocketFactory.fromSystem(), sockets,
                 WireFilter.forRmi(MAX_RMI_BYTES));
@@ -90,17 +100,17 @@ public final class RmiSupport {
      * The RMI registry at host:port, reached through a {@link DeadlineSocketFactory}: a lookup
      * on an unreachable host fails within the connect deadline instead of minutes.
      */
-    public static java.rmi.registry.Registry registry(String host, int port) throws RemoteException {
-        return java.rmi.registry.LocateRegistry.getRegistry(host, port, DeadlineSocketFactory.fromSystem());
+    public static Registry registry(String host, int port) throws RemoteException {
+        return LocateRegistry.getRegistry(host, port, DeadlineSocketFactory.fromSystem());
     }
 
     /** Server sockets on one address; equal factories share a port. */
-    private record BoundSockets(java.net.InetAddress address) implements java.rmi.server.RMIServerSocketFactory {
+    private record BoundSockets(InetAddress address) implements RMIServerSocketFactory {
         @Override
-        public java.net.ServerSocket createServerSocket(int port) throws java.io.IOException {
-            java.net.ServerSocket s = new java.net.ServerSocket();
+        public ServerSocket createServerSocket(int port) throws IOException {
+            ServerSocket s = new ServerSocket();
             s.setReuseAddress(true);
-            s.bind(new java.net.InetSocketAddress(address, port), 128);
+            s.bind(new InetSocketAddress(address, port), 128);
             return s;
         }
     }

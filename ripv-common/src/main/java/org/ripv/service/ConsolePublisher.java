@@ -5,6 +5,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Supplier;
@@ -37,8 +38,8 @@ final class ConsolePublisher {
     private final BlockingQueue<ConsoleEntry> queue;
     private final AtomicLong queuedChars = new AtomicLong();
     private final Supplier<ReplySink> sink;
-    private final java.util.concurrent.ConcurrentHashMap<String, AtomicLong> skipped =
-            new java.util.concurrent.ConcurrentHashMap<>();
+    private final ConcurrentHashMap<String, AtomicLong> skipped =
+            new ConcurrentHashMap<>();
     private volatile boolean anySkipped;
     private final Thread thread;
 

@@ -1,5 +1,7 @@
 package org.ripv.service;
 
+import java.util.List;
+import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.OutgoingServiceMessage;
 
 /** Where a service's replies go: the server over RMI, or a test in the same JVM. */
@@ -8,7 +10,7 @@ public interface ReplySink {
     void reply(OutgoingServiceMessage reply) throws Exception;
 
     /** Several replies at once, in order; the default sends them one by one. */
-    default void replies(java.util.List<OutgoingServiceMessage> replies) throws Exception {
+    default void replies(List<OutgoingServiceMessage> replies) throws Exception {
         for (OutgoingServiceMessage r : replies) {
             reply(r);
         }
@@ -24,6 +26,6 @@ public interface ReplySink {
     }
 
     /** Console entries the service published ({@code RIPVService.publish}); the default drops them. */
-    default void console(java.util.List<org.ripv.messages.ConsoleEntry> entries) throws Exception {
+    default void console(List<ConsoleEntry> entries) throws Exception {
     }
 }

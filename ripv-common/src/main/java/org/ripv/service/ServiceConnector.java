@@ -3,17 +3,18 @@ package org.ripv.service;
 import java.rmi.NotBoundException;
 import java.rmi.RemoteException;
 import java.rmi.registry.Registry;
+import java.rmi.server.RMIServerSocketFactory;
 import java.time.Duration;
-import java.util.List;
-import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ExecutionException;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
-import org.ripv.messages.ConsoleEntry;
-import org.ripv.messages.IncomingServiceMessage;
-import org.ripv.messages.MailboxStatus;
-import org.ripv.messages.OutgoingServiceMessage;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Consumer;
 import org.ripv.messages.ServiceDescriptor;
+import org.ripv.naming.NameTaken;
+import org.ripv.outbound.CallChannel;
 import org.ripv.rmi.GenericRMIInterface;
 import org.ripv.rmi.RmiSupport;
 import org.ripv.security.ServiceProof;
@@ -33,31 +34,27 @@ public final class ServiceConnector implements AutoCloseable {
 
     private final RIPVService service;
     private final ServiceOptions options;
-    private final Remote remote = new Remote();
+    private final ServiceSession session = new ServiceSession();
+    private final ServiceRemote remote;
     private final GenericRMIInterface stub;
     private final ScheduledExecutorService timer;
-    private volatile GenericRMIInterface server;
-    private volatile String token;
-    private volatile CountDownLatch registered = new CountDownLatch(1);
     private volatile boolean warnedAway;
     private volatile boolean warnedImpostor;
-    private static final java.util.concurrent.atomic.AtomicLong STAMPS = new java.util.concurrent.atomic.AtomicLong();
-    private volatile java.util.function.Consumer<String> printer = m -> { };
+    private static final AtomicLong STAMPS = new AtomicLong();
+    private volatile Consumer<String> printer = m -> { };
     private volatile String lastNotice;
-    private volatile org.ripv.outbound.CallChannel channel;
-    /** Guards the window in which the server knows the new token and this side does not yet. */
-    private final Object tokenLock = new Object();
-    private boolean registering;
-    private final java.util.concurrent.CompletableFuture<String> fatal = new java.util.concurrent.CompletableFuture<>();
+    private volatile CallChannel channel;
+    private final CompletableFuture<String> fatal = new CompletableFuture<>();
     /** Registrations in a row that a retry cannot mend (only the timer thread counts them). */
     private int unmendable;
     /** Which of {@code options.servers()} this service uses (or tries) now. */
     private volatile int current;
 
-    private ServiceConnector(RIPVService service, ServiceOptions options, java.rmi.server.RMIServerSocketFactory sockets)
+    private ServiceConnector(RIPVService service, ServiceOptions options, RMIServerSocketFactory sockets)
             throws RemoteException {
         this.service = service;
         this.options = options;
+        this.remote = new ServiceRemote(service, session);
         // Outbound-only: nothing listens here; the server's calls come back over our own connection.
         this.stub = options.outbound() ? null : RmiSupport.export(remote, options.exportPort(), sockets);
         this.timer = Executors.newSingleThreadScheduledExecutor(r -> {
@@ -80,11 +77,11 @@ public final class ServiceConnector implements AutoCloseable {
      * through {@code sockets} (null: RMI's default, all addresses).
      */
     public static ServiceConnector connect(RIPVService service, ServiceOptions options,
-                                           java.rmi.server.RMIServerSocketFactory sockets) throws Exception {
+                                           RMIServerSocketFactory sockets) throws Exception {
         RmiSupport.configure(10_000, 30_000);
         service.start();
         ServiceConnector c = new ServiceConnector(service, options, sockets);
-        service.replyTo(c.new Sink());
+        service.replyTo(c.session.sink());
         c.timer.execute(c::tick);
         c.timer.scheduleWithFixedDelay(c::tick, options.heartbeat().toMillis(), options.heartbeat().toMillis(),
                 TimeUnit.MILLISECONDS);
@@ -93,7 +90,7 @@ public final class ServiceConnector implements AutoCloseable {
 
     /** Waits until the service is registered; false when the time ran out. */
     public boolean awaitRegistered(Duration timeout) throws InterruptedException {
-        return registered.await(timeout.toMillis(), TimeUnit.MILLISECONDS);
+        return session.awaitRegistered(timeout);
     }
 
     /**
@@ -103,19 +100,19 @@ public final class ServiceConnector implements AutoCloseable {
     public String awaitFailure() throws InterruptedException {
         try {
             return fatal.get();
-        } catch (java.util.concurrent.ExecutionException e) {
+        } catch (ExecutionException e) {
             return e.getCause().toString();
         }
     }
 
     public boolean isRegistered() {
-        return token != null;
+        return session.isRegistered();
     }
 
     private void tick() {
         try {
-            String t = token;
-            if (t != null && server.heartbeat(t)) {
+            String t = session.token();
+            if (t != null && session.server().heartbeat(t)) {
                 return;
             }
             if (t != null) {
@@ -124,7 +121,7 @@ public final class ServiceConnector implements AutoCloseable {
             }
             registerAny();
         } catch (RemoteException | NotBoundException e) {
-            if (token != null) {
+            if (session.isRegistered()) {
                 log.warn("{}: lost the server at {} ({}); will register again when it{} is back", service.name(),
                         where(), e.getClass().getSimpleName(), options.servers().size() > 1 ? " or another of " + options.servers() : "");
                 lost();
@@ -150,7 +147,7 @@ public final class ServiceConnector implements AutoCloseable {
             }
             lost();
         } catch (IllegalStateException e) {
-            if (org.ripv.naming.NameTaken.is(e.getMessage()) && options.giveUpAfter() > 0) {
+            if (NameTaken.is(e.getMessage()) && options.giveUpAfter() > 0) {
                 // another running service holds the name: stop rather than contend for it (--retry-forever waits for it to go)
                 log.error("{}: the server refused the registration: {}", service.name(), e.getMessage());
                 fatal.complete("the server at " + where() + " refused the registration: " + e.getMessage());
@@ -250,7 +247,7 @@ public final class ServiceConnector implements AutoCloseable {
     }
 
     /** Where refusals the service can fix are printed besides the log (a launcher's standard error). */
-    public void onNotice(java.util.function.Consumer<String> printer) {
+    public void onNotice(Consumer<String> printer) {
         this.printer = printer == null ? m -> { } : printer;
         String last = lastNotice;
         if (last != null) {
@@ -272,10 +269,7 @@ public final class ServiceConnector implements AutoCloseable {
     }
 
     private void lost() {
-        token = null;
-        if (registered.getCount() == 0) {
-            registered = new CountDownLatch(1);
-        }
+        session.lost();
     }
 
     private void register() throws RemoteException, NotBoundException {
@@ -300,9 +294,7 @@ public final class ServiceConnector implements AutoCloseable {
             }
         }
         String t = null;
-        synchronized (tokenLock) {
-            registering = true;
-        }
+        session.registering();
         try {
             if (options.outbound()) {
                 // Over an outbound connection the handshake has proven the secret both ways: it is never sent.
@@ -317,22 +309,12 @@ public final class ServiceConnector implements AutoCloseable {
                 t = ServiceProof.token(secret, mine, answer[0]);
             }
         } finally {
-            synchronized (tokenLock) {
-                // With the token, in one step: a server call waiting in check() must never see the
-                // registration over and the token not yet set (it was refused as "unknown").
-                if (t != null) {
-                    server = s;
-                    token = t;
-                }
-                registering = false;
-                tokenLock.notifyAll();
-            }
+            session.registered(s, t);
         }
         warnedAway = false;
         warnedImpostor = false;
         unmendable = 0;
         lastNotice = null;
-        registered.countDown();
         log.info("{} registered with the RIPVServer at {}{}{}", d.name(), where(), options.servers().position(current),
                 options.outbound() ? " (outbound only)" : "");
     }
@@ -343,47 +325,20 @@ public final class ServiceConnector implements AutoCloseable {
      * server: the next heartbeat connects and registers again.
      */
     private GenericRMIInterface openChannel() throws RemoteException {
-        org.ripv.outbound.CallChannel old = channel;
+        CallChannel old = channel;
         if (old != null) {
             old.close();
         }
-        java.net.Socket socket = new java.net.Socket();
         String where = host() + ":" + options.outboundPort();
-        try {
-            org.ripv.rmi.DeadlineSocketFactory f = org.ripv.rmi.DeadlineSocketFactory.fromSystem();
-            socket.connect(new java.net.InetSocketAddress(host(), options.outboundPort()), f.connectMillis());
-            socket.setSoTimeout(Math.max(f.readMillis(), 5_000));
-            java.io.DataInputStream in = new java.io.DataInputStream(new java.io.BufferedInputStream(socket.getInputStream()));
-            java.io.DataOutputStream out = new java.io.DataOutputStream(new java.io.BufferedOutputStream(socket.getOutputStream()));
-            org.ripv.outbound.OutboundHandshake.service(in, out, options.secret(), service.descriptor().name());
-            org.ripv.outbound.CallChannel c = new org.ripv.outbound.CallChannel(socket, where, remote,
-                    org.ripv.outbound.OutboundLimits.MAX_FRAME, java.time.Duration.ofMillis(Math.max(f.readMillis(), 5_000)));
-            c.closed().thenAccept(why -> {
-                if (token != null && server == c.remote() && !fatal.isDone()) {
-                    log.warn("{}: the outbound connection to {} closed ({}); connecting again", service.name(), where, why);
-                    lost();
-                }
-            });
-            channel = c;
-            return c.remote();
-        } catch (java.net.SocketTimeoutException e) {
-            close(socket);
-            throw new RemoteException("could not reach the server's outbound port " + where + ": timed out", e);
-        } catch (java.io.IOException e) {
-            close(socket);
-            throw new RemoteException("could not connect to the server's outbound port " + where + ": " + e.getMessage(), e);
-        } catch (RuntimeException e) {
-            close(socket);
-            throw e;
-        }
-    }
-
-    private static void close(java.net.Socket s) {
-        try {
-            s.close();
-        } catch (java.io.IOException ignored) {
-            // closing anyway
-        }
+        CallChannel c = OutboundDial.open(host(), options.outboundPort(), options.secret(), service.descriptor().name(), remote);
+        c.closed().thenAccept(why -> {
+            if (session.isRegistered() && session.server() == c.remote() && !fatal.isDone()) {
+                log.warn("{}: the outbound connection to {} closed ({}); connecting again", service.name(), where, why);
+                lost();
+            }
+        });
+        channel = c;
+        return c.remote();
     }
 
     private static String[] answer(String a) {
@@ -400,146 +355,18 @@ public final class ServiceConnector implements AutoCloseable {
         }
     }
 
-    /** Sends replies to the server over RMI. */
-    private final class Sink implements ReplySink {
-        @Override
-        public void reply(OutgoingServiceMessage reply) throws Exception {
-            server().serviceReply(token(), reply);
-        }
-
-        @Override
-        public void replies(List<OutgoingServiceMessage> replies) throws Exception {
-            server().serviceReplies(token(), replies);
-        }
-
-        @Override
-        public void console(List<ConsoleEntry> entries) throws Exception {
-            server().console(token(), entries);
-        }
-
-        /** The server calls {@code more} when a page went out to the client's socket. */
-        @Override
-        public boolean pacesPages() {
-            return true;
-        }
-
-        private GenericRMIInterface server() throws RemoteException {
-            GenericRMIInterface s = server;
-            if (s == null || token == null) {
-                throw new RemoteException("not registered with a server");
-            }
-            return s;
-        }
-
-        private String token() throws RemoteException {
-            String t = token;
-            if (t == null) {
-                throw new RemoteException("not registered with a server");
-            }
-            return t;
-        }
-    }
-
     /** Stops checking in and withdraws the service's RMI object. The service itself keeps running. */
     @Override
     public void close() {
         fatal.complete("closed");
         timer.shutdownNow();
-        org.ripv.outbound.CallChannel c = channel;
+        CallChannel c = channel;
         if (c != null) {
             c.close();
         }
         if (stub != null) {
             RmiSupport.unexport(remote);
         }
-        token = null;
-    }
-
-    /** The service's side of {@link GenericRMIInterface}. */
-    private final class Remote implements GenericRMIInterface {
-        private void check(String t) throws RemoteException {
-            synchronized (tokenLock) {
-                // The server may call as soon as it has registered us, before register() returned here.
-                long end = System.nanoTime() + 5_000_000_000L;
-                while (registering && (token == null || !token.equals(t)) && System.nanoTime() < end) {
-                    try {
-                        tokenLock.wait(100);
-                    } catch (InterruptedException e) {
-                        Thread.currentThread().interrupt();
-                        break;
-                    }
-                }
-                if (token == null || !token.equals(t)) {
-                    throw new RemoteException("unknown session token: register first");
-                }
-            }
-        }
-
-        @Override
-        public void serviceRequest(String t, IncomingServiceMessage request) throws RemoteException {
-            check(t);
-            service.accept(request);
-        }
-
-        @Override
-        public void serviceRequests(String t, List<IncomingServiceMessage> requests) throws RemoteException {
-            check(t);
-            requests.forEach(service::accept);
-        }
-
-        @Override
-        public boolean withdraw(String t, String mailbox, String clientId, long messageId) throws RemoteException {
-            check(t);
-            return service.withdraw(mailbox, clientId, messageId);
-        }
-
-        @Override
-        public boolean cancel(String t, String mailbox, String clientId, long messageId) throws RemoteException {
-            check(t);
-            return service.cancel(mailbox, clientId, messageId);
-        }
-
-        @Override
-        public boolean more(String t, String mailbox, String clientId, long messageId) throws RemoteException {
-            check(t);
-            return service.pageTaken(mailbox, clientId, messageId);
-        }
-
-        @Override
-        public List<MailboxStatus> mailboxes(String t) throws RemoteException {
-            check(t);
-            return service.mailboxes();
-        }
-
-        @Override
-        public String challenge(String nonce) {
-            throw new UnsupportedOperationException("a service does not take registrations");
-        }
-
-        @Override
-        public String register(ServiceDescriptor d, GenericRMIInterface s, String proof) {
-            throw new UnsupportedOperationException("a service does not take registrations");
-        }
-
-        @Override
-        public void serviceReply(String t, OutgoingServiceMessage reply) {
-            throw new UnsupportedOperationException("a service does not take replies");
-        }
-
-        @Override
-        public void serviceReplies(String t, List<OutgoingServiceMessage> replies) {
-            throw new UnsupportedOperationException("a service does not take replies");
-        }
-
-        /** The server's call-back probe at registration: answering at all proves the server reaches us. */
-        @Override
-        public boolean heartbeat(String t) {
-            return true;
-        }
-
-        @Override
-        public void console(String t, List<ConsoleEntry> entries) {
-            throw new UnsupportedOperationException("a service does not take console entries");
-        }
+        session.lost();
     }
 }

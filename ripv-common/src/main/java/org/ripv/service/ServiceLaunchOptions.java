@@ -1,8 +1,19 @@
 package org.ripv.service;
 
+import java.io.IOException;
+import java.io.PrintStream;
+import java.net.DatagramSocket;
+import java.net.InetAddress;
+import java.net.NetworkInterface;
 import java.nio.file.Path;
 import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.atomic.AtomicBoolean;
+import org.ripv.failover.ServerList;
 import org.ripv.naming.Handles;
+import org.ripv.rmi.DeadlineSocketFactory;
+import org.ripv.rmi.RmiSupport;
 import picocli.CommandLine.Option;
 
 /**
@@ -37,7 +48,7 @@ public final class ServiceLaunchOptions {
     static final int TRIES = 5;
 
     /** Where launch messages go (standard error; injectable for tests). */
-    java.io.PrintStream err = System.err;
+    PrintStream err = System.err;
 
     @Option(names = "--export-port", paramLabel = "PORT", defaultValue = "0",
             description = "The port this service's RMI object listens on (default: any free port; fix it for firewalls).")
@@ -73,7 +84,7 @@ public final class ServiceLaunchOptions {
      * their arguments through this before parsing, since {@code --server} is required.
      */
     public static String[] thesisForm(String[] args) {
-        java.util.List<String> out = new java.util.ArrayList<>(java.util.List.of(args));
+        List<String> out = new ArrayList<>(List.of(args));
         boolean hasServer = out.stream().anyMatch(a -> a.equals("--server") || a.startsWith("--server="));
         if (!hasServer) {
             for (int i = 0; i < out.size(); i++) {
@@ -98,14 +109,14 @@ public final class ServiceLaunchOptions {
      * refuses it for good. What every service launcher's {@code call()} returns.
      */
     public int serve(RIPVService service) throws Exception {
-        if (!org.ripv.rmi.RmiSupport.filterProcess()) {
+        if (!RmiSupport.filterProcess()) {
             err.println("Warning: RMI replies in this process are not filtered: an object stream was made before the"
                     + " launcher could install RIPV's filter factory (call RmiSupport.filterProcess() first in main)");
         }
         applyBind();
         ServiceConnector connector = ServiceConnector.connect(service, toOptions());
         connector.onNotice(err::println);
-        java.util.concurrent.atomic.AtomicBoolean stopping = new java.util.concurrent.atomic.AtomicBoolean();
+        AtomicBoolean stopping = new AtomicBoolean();
         Thread hook = new Thread(() -> {
             stopping.set(true);
             service.stop();    // first: running commands end and the last replies reach the server
@@ -131,44 +142,44 @@ public final class ServiceLaunchOptions {
      * machine is not reachable from any other. The server calls back to that address unless
      * {@code --host} names another.
      */
-    void applyBind() throws java.io.IOException {
+    void applyBind() throws IOException {
         String address = bind;
         if (address == null && (host == null || host.isBlank())) {
-            address = routeTo(org.ripv.failover.ServerList.parse(server, ServiceOptions.DEFAULT_REGISTRY_PORT).first().host())
+            address = routeTo(ServerList.parse(server, ServiceOptions.DEFAULT_REGISTRY_PORT).first().host())
                     .getHostAddress();
         }
         if (address == null || address.isBlank() || address.equals("*")) {
             return;
         }
-        System.setProperty(org.ripv.rmi.RmiSupport.BIND_PROPERTY, address);
+        System.setProperty(RmiSupport.BIND_PROPERTY, address);
         if (host == null || host.isBlank()) {
             System.setProperty("java.rmi.server.hostname", address);
         }
     }
 
     /** The local address packets to {@code serverHost} leave from: loopback for this machine. */
-    static java.net.InetAddress routeTo(String serverHost) throws java.io.IOException {
-        java.net.InetAddress server = java.net.InetAddress.getByName(serverHost);
-        if (server.isLoopbackAddress() || java.net.NetworkInterface.getByInetAddress(server) != null) {
-            return java.net.InetAddress.getLoopbackAddress();
+    static InetAddress routeTo(String serverHost) throws IOException {
+        InetAddress server = InetAddress.getByName(serverHost);
+        if (server.isLoopbackAddress() || NetworkInterface.getByInetAddress(server) != null) {
+            return InetAddress.getLoopbackAddress();
         }
-        try (java.net.DatagramSocket probe = new java.net.DatagramSocket()) {
+        try (DatagramSocket probe = new DatagramSocket()) {
             probe.connect(server, 9); // no packet is sent: this only asks the routing table
-            java.net.InetAddress local = probe.getLocalAddress();
-            return local == null || local.isAnyLocalAddress() ? java.net.InetAddress.getLoopbackAddress() : local;
+            InetAddress local = probe.getLocalAddress();
+            return local == null || local.isAnyLocalAddress() ? InetAddress.getLoopbackAddress() : local;
         }
     }
 
-    public ServiceOptions toOptions() throws java.io.IOException {
-        org.ripv.failover.ServerList servers = org.ripv.failover.ServerList.parse(server, ServiceOptions.DEFAULT_REGISTRY_PORT);
+    public ServiceOptions toOptions() throws IOException {
+        ServerList servers = ServerList.parse(server, ServiceOptions.DEFAULT_REGISTRY_PORT);
         if (outboundPort == 0 || outboundPort > 65535 || outboundPort < -1) {
             throw new IllegalArgumentException("--outbound-only takes the server's outbound port, 1 to 65535, not " + outboundPort);
         }
         if (rmiConnectTimeout < 1 || rmiReadTimeout < 1) {
             throw new IllegalArgumentException("RMI timeouts must be at least 1 ms");
         }
-        System.setProperty(org.ripv.rmi.DeadlineSocketFactory.CONNECT_PROPERTY, Integer.toString(rmiConnectTimeout));
-        System.setProperty(org.ripv.rmi.DeadlineSocketFactory.READ_PROPERTY, Integer.toString(rmiReadTimeout));
+        System.setProperty(DeadlineSocketFactory.CONNECT_PROPERTY, Integer.toString(rmiConnectTimeout));
+        System.setProperty(DeadlineSocketFactory.READ_PROPERTY, Integer.toString(rmiReadTimeout));
         return new ServiceOptions(servers.first().host(), servers.first().port(), ServiceOptions.resolveSecret(secretFile),
                 exportPort, Duration.ofSeconds(3), outboundPort).withServers(servers).givingUpAfter(retryForever ? 0 : TRIES);
     }

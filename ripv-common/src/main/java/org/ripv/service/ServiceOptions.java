@@ -6,6 +6,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.Objects;
+import org.ripv.failover.ServerList;
 
 /**
  * Where a service finds its server and how it proves it may register.
@@ -24,7 +25,7 @@ import java.util.Objects;
  *                     0: it keeps trying (the launchers give up after 5 unless {@code --retry-forever})
  */
 public record ServiceOptions(String serverHost, int registryPort, String secret, int exportPort, Duration heartbeat,
-                             int outboundPort, org.ripv.failover.ServerList servers, int giveUpAfter) {
+                             int outboundPort, ServerList servers, int giveUpAfter) {
     public static final int DEFAULT_REGISTRY_PORT = 1099;
     /** The server's port for services in outbound-only mode. */
     public static final int DEFAULT_OUTBOUND_PORT = 4446;
@@ -46,7 +47,7 @@ public record ServiceOptions(String serverHost, int registryPort, String secret,
     }
 
     /** The same with a list of servers to try in turn (an active server and its standbys); the first becomes serverHost. */
-    public ServiceOptions withServers(org.ripv.failover.ServerList list) {
+    public ServiceOptions withServers(ServerList list) {
         return new ServiceOptions(list.first().host(), list.first().port(), secret, exportPort, heartbeat, outboundPort, list,
                 giveUpAfter);
     }
@@ -70,7 +71,7 @@ public record ServiceOptions(String serverHost, int registryPort, String secret,
         if (giveUpAfter < 0) {
             throw new IllegalArgumentException("giveUpAfter is a number of tries, 0 for never, not " + giveUpAfter);
         }
-        servers = servers == null ? org.ripv.failover.ServerList.of(serverHost, registryPort) : servers;
+        servers = servers == null ? ServerList.of(serverHost, registryPort) : servers;
     }
 
     public static ServiceOptions of(String serverHost, int registryPort, String secret) {

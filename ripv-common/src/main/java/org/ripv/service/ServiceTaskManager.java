@@ -1,11 +1,14 @@
 package org.ripv.service;
 
+import java.util.List;
 import org.ripv.exceptions.ServiceException;
 import org.ripv.managers.TaskManager;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.Footer;
 import org.ripv.messages.IncomingServiceMessage;
 import org.ripv.messages.OutgoingServiceMessage;
+import org.ripv.messages.Status;
+import org.ripv.messages.TablePages;
 import org.ripv.post.MailBox;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -46,7 +49,7 @@ final class ServiceTaskManager extends TaskManager<IncomingServiceMessage, Outgo
         if (r == null) {
             throw new IllegalStateException("the handler of " + box.address() + " returned no reply");
         }
-        ErrorCode code = wasCancelled && r.status() == org.ripv.messages.Status.ERROR ? ErrorCode.CANCELLED : r.code();
+        ErrorCode code = wasCancelled && r.status() == Status.ERROR ? ErrorCode.CANCELLED : r.code();
         box.post(request.reply(new Footer(service.sid(), r.status(), code, null, r.text(), r.result())
                 .via(service.name().toString())));
     }
@@ -82,7 +85,7 @@ final class ServiceTaskManager extends TaskManager<IncomingServiceMessage, Outgo
 
     /** For a sink that does not pace pages, handing a page over is the reader taking it. */
     private void handedOver(OutgoingServiceMessage reply) {
-        if (org.ripv.messages.TablePages.isPage(reply.footer()) && !service.sink().pacesPages()) {
+        if (TablePages.isPage(reply.footer()) && !service.sink().pacesPages()) {
             pageTaken(reply.header().origin().clientId(), reply.header().messageId());
         }
     }
@@ -95,9 +98,9 @@ final class ServiceTaskManager extends TaskManager<IncomingServiceMessage, Outgo
     }
 
     @Override
-    public void parseFooters(MailBox<IncomingServiceMessage, OutgoingServiceMessage> box, java.util.List<OutgoingServiceMessage> replies) {
+    public void parseFooters(MailBox<IncomingServiceMessage, OutgoingServiceMessage> box, List<OutgoingServiceMessage> replies) {
         try {
-            service.sink().replies(java.util.List.copyOf(replies));
+            service.sink().replies(List.copyOf(replies));
             replies.forEach(this::handedOver);
         } catch (Exception e) {
             replies.forEach(r -> undeliverable(box, r, e));

@@ -1,5 +1,6 @@
 package org.ripv.service;
 
+import java.rmi.ConnectIOException;
 import java.time.Duration;
 import org.ripv.probe.PortProbe;
 
@@ -10,7 +11,7 @@ final class WrongRegistryPort {
     /** True when what answered at the registry's address does not speak RMI at all (JRMP). */
     static boolean notARegistry(Exception e) {
         for (Throwable t = e; t != null; t = t.getCause()) {
-            if (t instanceof java.rmi.ConnectIOException && String.valueOf(t.getMessage()).contains("non-JRMP")) {
+            if (t instanceof ConnectIOException && String.valueOf(t.getMessage()).contains("non-JRMP")) {
                 return true;
             }
         }

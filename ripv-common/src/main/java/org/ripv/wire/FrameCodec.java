@@ -6,6 +6,7 @@ import java.io.DataInputStream;
 import java.io.DataOutputStream;
 import java.io.EOFException;
 import java.io.IOException;
+import java.io.InvalidObjectException;
 import java.io.ObjectInputStream;
 import java.io.ObjectOutputStream;
 import java.io.OutputStream;
@@ -125,7 +126,7 @@ public final class FrameCodec {
             if (plain != null) {
                 return plain;
             }
-        } catch (java.io.InvalidObjectException | RuntimeException e) {
+        } catch (InvalidObjectException | RuntimeException e) {
             throw new ProtocolException("rejected a malformed or disallowed message: " + e, e);
         }
         try (ObjectInputStream ois = new ObjectInputStream(new ByteArrayInputStream(body))) {

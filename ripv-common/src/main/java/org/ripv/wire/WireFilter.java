@@ -2,6 +2,7 @@ package org.ripv.wire;
 
 import java.io.ObjectInputFilter;
 import java.lang.reflect.Proxy;
+import java.rmi.Remote;
 import java.util.Set;
 
 /**
@@ -112,7 +113,7 @@ public final class WireFilter implements ObjectInputFilter {
         }
         if (Proxy.isProxyClass(c)) {
             for (Class<?> i : c.getInterfaces()) {
-                if (!i.getName().equals(REMOTE_INTERFACE) && i != java.rmi.Remote.class) {
+                if (!i.getName().equals(REMOTE_INTERFACE) && i != Remote.class) {
                     return false;
                 }
             }

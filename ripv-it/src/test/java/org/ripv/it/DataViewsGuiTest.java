@@ -154,7 +154,7 @@ class DataViewsGuiTest {
         assertThat(code).as(said).isNotZero(); // the last export: a table is no plot
         assertThat(said).contains("exported the plot's data (1 series,").contains("exported the plot (1 series,")
                 .contains("no plot to export as SVG");
-        assertThat(Files.readString(svg)).startsWith("<?xml").contains("depth of unit_363").contains("<polyline");
+        assertThat(Files.readString(svg)).startsWith("<?xml").contains("depth of unit_363").contains("<path");
         assertThat(dir.resolve("table.svg")).doesNotExist();
         assertThat(Files.readString(json)).startsWith("{\"title\":\"depth of unit_363\",\"kind\":\"depth\"")
                 .contains("\"unit\":\"m\"");
@@ -256,7 +256,7 @@ class DataViewsGuiTest {
             });
             waitUntil(() -> Files.exists(svg) && Files.exists(csv));
             assertThat(Files.readString(svg, StandardCharsets.UTF_8)).contains("<svg").contains("depth of cp_388")
-                    .contains("<polyline").contains("depth (m)");
+                    .contains("<path").contains("depth (m)");
             assertThat(Files.readAllLines(csv).get(0)).isEqualTo("series,unit,x,time_utc,y");
 
             // The Fleet window by its key.

@@ -210,6 +210,7 @@ public final class RIPVServer implements AutoCloseable {
                 services, checkers, permitFile, locks, cancels));
         plans = new Plans(new PlanBridge(files, permitFile, this::publishServerEntry, workflows::queueGenerated),
                 config.dataDir().resolve("plans"));
+        sessions.surfacings().onSurfacing(plans::surfacing); // plans judge changes by the parsed dialogs
         sessions.expireLocks(timers, locks, mailbox -> workflows.lockReleased(mailbox));
         permits.onChange(sessions::permitsChanged);
         internalCalls = new InternalCalls(services, permitFile, files, forwarder);
@@ -224,7 +225,8 @@ public final class RIPVServer implements AutoCloseable {
                 this::reply, admit::route);
         box = postOffice.open(POST_OFFICE, new ServerTaskManager(commands::run, admit, workflows::reply, waiting, this::client,
                 this::reply));
-        dispatch = new ClientDispatch(security.logins(), waiting, this::deliver, this::clientClosed);
+        dispatch = new ClientDispatch(security.logins(), commands.commands()::servedBeforeLogin, waiting, this::deliver,
+                this::clientClosed);
         publicVehicles = publicNames == null ? null : new PublicVehicles(
                 () -> queries.known().thenApply(ServiceQueries.Known::addresses), console, checkers, publicNames);
 

@@ -18,6 +18,7 @@ import javax.net.ssl.SSLContext;
 import org.ripv.naming.Handles;
 import org.ripv.rmi.DeadlineSocketFactory;
 import org.ripv.rmi.RmiSupport;
+import org.ripv.server.demo.WebhookSink;
 import org.ripv.server.lock.DataDirLock;
 import org.ripv.server.notify.Smtp;
 import org.ripv.server.notify.WebhookTargets;
@@ -43,7 +44,7 @@ import picocli.CommandLine.Parameters;
  */
 @Command(name = "ripv", mixinStandardHelpOptions = true,
         description = "The RIPV broker, and its user administration.",
-        subcommands = {ServerMain.Serve.class, ServerMain.Passwd.class, org.ripv.server.demo.WebhookSink.class})
+        subcommands = {ServerMain.Serve.class, ServerMain.Passwd.class, WebhookSink.class})
 public final class ServerMain implements Callable<Integer> {
 
     @Override

@@ -2,12 +2,16 @@ package org.ripv.services;
 
 import java.io.PrintStream;
 import java.util.Arrays;
+import org.ripv.dac.DacCommand;
+import org.ripv.launch.Version;
+import org.ripv.rmi.RmiSupport;
 import org.ripv.service.ServiceLaunchOptions;
 import org.ripv.services.database.DatabaseServerCommand;
 import org.ripv.services.datavis.DataVisServerCommand;
 import org.ripv.services.serial.SerialPortServerCommand;
 import org.ripv.services.simulator.SimulatorCommand;
 import org.ripv.launch.Launchers;
+import org.ripv.services.slocum.SlocumCommand;
 import picocli.CommandLine;
 
 /**
@@ -33,7 +37,7 @@ public final class ServicesMain {
             return args.length == 0 ? 2 : 0;
         }
         if (args[0].equals("--version") || args[0].equals("-V")) {
-            System.out.println(org.ripv.launch.Version.line());
+            System.out.println(Version.line());
             return 0;
         }
         String[] rest = Arrays.copyOfRange(args, 1, args.length);
@@ -47,9 +51,9 @@ public final class ServicesMain {
             case "simulator":
                 return execute(new SimulatorCommand(), "ripv simulator", rest);
             case "slocum":
-                return execute(new org.ripv.services.slocum.SlocumCommand(), "ripv slocum", rest);
+                return execute(new SlocumCommand(), "ripv slocum", rest);
             case "dac":
-                return execute(new org.ripv.dac.DacCommand(), "ripv dac", rest);
+                return execute(new DacCommand(), "ripv dac", rest);
             default:
                 err.println("Error: unknown service '" + args[0] + "'");
                 err.println(USAGE);
@@ -64,7 +68,7 @@ public final class ServicesMain {
 
     public static void main(String[] args) {
         // Before anything makes an object stream: the JVM takes a filter factory only until then.
-        org.ripv.rmi.RmiSupport.filterProcess();
+        RmiSupport.filterProcess();
         System.exit(run(System.err, args));
     }
 }

@@ -2,11 +2,16 @@ package org.ripv.client.charts;
 
 import java.awt.BorderLayout;
 import java.awt.CardLayout;
+import java.awt.Component;
 import java.awt.FlowLayout;
+import java.awt.Point;
 import java.awt.event.ActionEvent;
+import java.awt.event.ComponentAdapter;
+import java.awt.event.ComponentEvent;
 import java.awt.event.KeyEvent;
 import java.awt.geom.Point2D;
 import java.awt.geom.Rectangle2D;
+import java.io.File;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
@@ -17,17 +22,21 @@ import javax.swing.JButton;
 import javax.swing.JComponent;
 import javax.swing.JFileChooser;
 import javax.swing.JLabel;
+import javax.swing.JMenu;
 import javax.swing.JMenuItem;
 import javax.swing.JPanel;
 import javax.swing.JPopupMenu;
 import javax.swing.KeyStroke;
+import javax.swing.SwingUtilities;
 import org.jfree.chart.ChartMouseEvent;
 import org.jfree.chart.ChartMouseListener;
 import org.jfree.chart.ChartPanel;
 import org.jfree.chart.JFreeChart;
 import org.jfree.chart.plot.XYPlot;
+import org.jfree.data.Range;
 import org.ripv.client.managers.GuiManager;
 import org.ripv.client.managers.ServiceModel;
+import org.ripv.client.panels.Buttons;
 import org.ripv.client.panels.ImagePanel;
 import org.ripv.export.ChartExport;
 import org.ripv.messages.ChartData;
@@ -84,15 +93,10 @@ public final class PlotPanel extends JPanel {
         readout.setName("chartReadout");
         caption.setName("chartCaption");
 
-        JButton reset = new JButton("Reset zoom");
-        reset.setName("resetZoomButton");
-        reset.setMnemonic(KeyEvent.VK_Z);
-        reset.setToolTipText("Show all the data again (0 on the chart)");
-        reset.addActionListener(e -> resetZoom());
-        JButton save = new JButton("Save as…");
-        save.setName("saveChartButton");
-        save.setMnemonic(KeyEvent.VK_A);
-        save.setToolTipText("The chart as PNG or SVG, its data as CSV or JSON, or the JPEG as it arrived");
+        JButton reset = Buttons.button("Reset zoom", KeyEvent.VK_Z, "resetZoomButton",
+                "Show all the data again (0 on the chart)", e -> resetZoom());
+        JButton save = Buttons.button("Save as…", KeyEvent.VK_A, "saveChartButton",
+                "The chart as PNG or SVG, its data as CSV or JSON, or the JPEG as it arrived");
         JPopupMenu formats = new JPopupMenu();
         for (Format f : Format.values()) {
             JMenuItem item = new JMenuItem(switch (f) {
@@ -124,9 +128,9 @@ public final class PlotPanel extends JPanel {
         add(image, "image");
         add(chartCard, "chart");
         cards.show(this, "image");
-        chartPanel.addComponentListener(new java.awt.event.ComponentAdapter() {
+        chartPanel.addComponentListener(new ComponentAdapter() {
             @Override
-            public void componentResized(java.awt.event.ComponentEvent e) {
+            public void componentResized(ComponentEvent e) {
                 if (chart != null && data.kind() == ChartData.Kind.TRACK && isAutoRange()) {
                     fitTrack();
                 }
@@ -139,9 +143,9 @@ public final class PlotPanel extends JPanel {
     /** JFreeChart's right-click "Save as" offers SVG only with JFreeSVG (GPL, not shipped): offer ours there. */
     private void svgInChartMenu() {
         JPopupMenu menu = chartPanel.getPopupMenu();
-        for (java.awt.Component c : menu == null ? new java.awt.Component[0] : menu.getComponents()) {
-            if (c instanceof javax.swing.JMenu sub) {
-                for (java.awt.Component i : sub.getMenuComponents()) {
+        for (Component c : menu == null ? new Component[0] : menu.getComponents()) {
+            if (c instanceof JMenu sub) {
+                for (Component i : sub.getMenuComponents()) {
                     if (i instanceof JMenuItem png && "SAVE_AS_PNG".equals(png.getActionCommand())) {
                         JMenuItem svg = new JMenuItem("SVG...");
                         svg.setName("chartMenu-svg");
@@ -189,12 +193,12 @@ public final class PlotPanel extends JPanel {
         XYPlot plot = chart.getXYPlot();
         trackZoomed = true;
         if (fx != 0) {
-            org.jfree.data.Range r = plot.getDomainAxis().getRange();
+            Range r = plot.getDomainAxis().getRange();
             plot.getDomainAxis().setRange(r.getLowerBound() + fx * r.getLength(), r.getUpperBound() + fx * r.getLength());
         }
         if (fy != 0) {
             double f = plot.getRangeAxis().isInverted() ? -fy : fy;
-            org.jfree.data.Range r = plot.getRangeAxis().getRange();
+            Range r = plot.getRangeAxis().getRange();
             plot.getRangeAxis().setRange(r.getLowerBound() + f * r.getLength(), r.getUpperBound() + f * r.getLength());
         }
     }
@@ -230,7 +234,7 @@ public final class PlotPanel extends JPanel {
     }
 
     /** The point nearest to a point of the chart panel (its own coordinates), or null. */
-    public Readout readoutAt(java.awt.Point p) {
+    public Readout readoutAt(Point p) {
         if (chart == null) {
             return null;
         }
@@ -260,7 +264,7 @@ public final class PlotPanel extends JPanel {
         }
         String base = picture.result().name().replaceFirst("(?i)\\.jpe?g$", "");
         JFileChooser chooser = new JFileChooser();
-        chooser.setSelectedFile(new java.io.File(base + "." + (f == Format.JPEG ? "jpg" : f.name().toLowerCase(Locale.ROOT))));
+        chooser.setSelectedFile(new File(base + "." + (f == Format.JPEG ? "jpg" : f.name().toLowerCase(Locale.ROOT))));
         if (chooser.showSaveDialog(this) == JFileChooser.APPROVE_OPTION) {
             export(f, chooser.getSelectedFile().toPath());
         }
@@ -288,7 +292,7 @@ public final class PlotPanel extends JPanel {
         int h = Math.max(300, chartPanel.getHeight());
         return switch (f) {
             case PNG -> Charts.png(chart, w, h);
-            case SVG -> Charts.svg(chart, data, w, h);
+            case SVG -> Charts.svg(chart, w, h);
             case CSV -> ChartExport.csv(data).getBytes(StandardCharsets.UTF_8);
             case JSON -> ChartExport.json(data).getBytes(StandardCharsets.UTF_8);
             case JPEG -> throw new IllegalStateException();
@@ -318,7 +322,7 @@ public final class PlotPanel extends JPanel {
                 + (data.reduced() ? " of " + data.rows() + " rows (reduced)" : ""));
         cards.show(this, "chart");
         if (data.kind() == ChartData.Kind.TRACK) {
-            javax.swing.SwingUtilities.invokeLater(this::fitTrack); // once the panel knows its data area
+            SwingUtilities.invokeLater(this::fitTrack); // once the panel knows its data area
         }
     }
 

@@ -1,6 +1,7 @@
 package org.ripv.client.cli;
 
 import java.io.BufferedReader;
+import java.io.Console;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.InputStreamReader;
@@ -9,12 +10,16 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
+import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.Callable;
+import javax.net.SocketFactory;
 import org.ripv.client.handlers.ClientSocketHandler;
+import org.ripv.client.handlers.Failover;
 import org.ripv.client.handlers.RipvErrorException;
 import org.ripv.client.handlers.Tls;
 import org.ripv.client.cli.shell.Shell;
+import org.ripv.failover.ServerList;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
@@ -86,9 +91,9 @@ public final class CliCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws IOException {
-        org.ripv.failover.ServerList servers;
+        ServerList servers;
         try {
-            servers = org.ripv.failover.ServerList.parse(server, 4444);
+            servers = ServerList.parse(server, 4444);
         } catch (IllegalArgumentException e) {
             err.println("Error: " + e.getMessage());
             return 2;
@@ -110,7 +115,7 @@ public final class CliCommand implements Callable<Integer> {
             return 2;
         }
         ClientSocketHandler client;
-        javax.net.SocketFactory trusted;
+        SocketFactory trusted;
         try {
             trusted = truststore != null ? Tls.socketFactory(truststore, truststorePassword.toCharArray()) : null;
             client = connect(servers, trusted);
@@ -128,7 +133,7 @@ public final class CliCommand implements Callable<Integer> {
                 err.println("Error: log-in refused: " + e.getMessage());
                 return EXIT_NO_SESSION;
             } finally {
-                java.util.Arrays.fill(pw, '\0');
+                Arrays.fill(pw, '\0');
             }
             CliSession session = new CliSession(client, out, err, json, Duration.ofSeconds(timeout));
             Reconnect reconnect = again == null ? null : () -> {
@@ -141,7 +146,7 @@ public final class CliCommand implements Callable<Integer> {
                     c.close();
                     throw e;
                 } finally {
-                    java.util.Arrays.fill(p, '\0');
+                    Arrays.fill(p, '\0');
                 }
             };
             try {
@@ -179,17 +184,17 @@ public final class CliCommand implements Callable<Integer> {
             return session.anyError() ? EXIT_ERROR_REPLY : 0;
         } finally {
             if (again != null) {
-                java.util.Arrays.fill(again, '\0');
+                Arrays.fill(again, '\0');
             }
         }
     }
 
     /** Connects to the first server of the list that answers; a standby is trusted only as Tls#trustOnFirstUse says for lists. */
-    private ClientSocketHandler connect(org.ripv.failover.ServerList servers, javax.net.SocketFactory trusted) throws IOException {
-        return new org.ripv.client.handlers.Failover(servers, err::println).connect((h, p) -> ClientSocketHandler.connect(h, p,
-                plain ? javax.net.SocketFactory.getDefault() : trusted != null ? trusted
+    private ClientSocketHandler connect(ServerList servers, SocketFactory trusted) throws IOException {
+        return new Failover(servers, err::println).connect((h, p) -> ClientSocketHandler.connect(h, p,
+                plain ? SocketFactory.getDefault() : trusted != null ? trusted
                         : Tls.trustOnFirstUse(h, p, knownHosts != null ? knownHosts : Tls.defaultKnownHosts(), err::println, servers),
-                servers.size() > 1 ? org.ripv.client.handlers.Failover.CONNECT : Duration.ofSeconds(10)));
+                servers.size() > 1 ? Failover.CONNECT : Duration.ofSeconds(10)));
     }
 
     /** A person at a terminal, with no --exec lines and nothing to --follow: the interactive CLI. */
@@ -210,7 +215,7 @@ public final class CliCommand implements Callable<Integer> {
         if (env != null) {
             return env.toCharArray();
         }
-        java.io.Console console = in == System.in ? System.console() : null;
+        Console console = in == System.in ? System.console() : null;
         return console == null ? null : console.readPassword("Password for %s@%s: ", user, host);
     }
 }

@@ -2,23 +2,36 @@ package org.ripv.client.cli;
 
 import java.io.IOException;
 import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
 import java.util.concurrent.CancellationException;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
+import java.util.function.Consumer;
+import org.jfree.chart.JFreeChart;
+import org.ripv.charts.ChartRenderer;
 import org.ripv.client.handlers.ClientSocketHandler;
 import org.ripv.client.handlers.RipvErrorException;
+import org.ripv.export.ChartExport;
+import org.ripv.export.TableExport;
+import org.ripv.messages.ChartData;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.Footer;
 import org.ripv.messages.Header;
 import org.ripv.messages.Ids;
+import org.ripv.messages.ImageResult;
+import org.ripv.messages.MailboxList;
 import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.Priority;
 import org.ripv.messages.Status;
+import org.ripv.messages.TableResult;
 import org.ripv.naming.MailboxAddress;
 
 /**
@@ -43,9 +56,9 @@ public final class CliSession {
     private String mailbox = "";
     private Priority priority = Priority.NORMAL;
     private boolean anyError;
-    private org.ripv.messages.TableResult lastTable;
+    private TableResult lastTable;
     /** A plot's data, when it came after the last table (export writes whichever came last). */
-    private org.ripv.messages.ChartData lastChart;
+    private ChartData lastChart;
     /** The request being waited for, so that {@link #cancel()} can end the wait. */
     private volatile CompletableFuture<OutgoingServerMessage> waiting;
     /** The message id of the request being waited for, 0 for none (what {@code ?cancel} names). */
@@ -70,7 +83,7 @@ public final class CliSession {
     }
 
     /** The first words that make a line the CLI's own (a vehicle command with one of them needs {@code send}). */
-    public static final java.util.List<String> OWN_WORDS = java.util.List.of("use", "priority", "put", "get", "export", "key",
+    public static final List<String> OWN_WORDS = List.of("use", "priority", "put", "get", "export", "key",
             "send", "help", "quit", "exit");
 
     /** The help of the CLI's own lines. */
@@ -122,7 +135,7 @@ public final class CliSession {
             case "priority" -> {
                 try {
                     priority = Priority.parse(rest);
-                    local("priority " + priority.name().toLowerCase(java.util.Locale.ROOT));
+                    local("priority " + priority.name().toLowerCase(Locale.ROOT));
                 } catch (IllegalArgumentException e) {
                     localError(ErrorCode.BAD_REQUEST, e.getMessage());
                 }
@@ -203,8 +216,8 @@ public final class CliSession {
         if (r == null) {
             return null;
         }
-        java.util.List<String> matches = new java.util.ArrayList<>();
-        if (r.footer().result() instanceof org.ripv.messages.MailboxList list) {
+        List<String> matches = new ArrayList<>();
+        if (r.footer().result() instanceof MailboxList list) {
             for (var s : list.mailboxes()) {
                 try {
                     if (MailboxAddress.parse(s.address()).handle().equals(handle)) {
@@ -227,10 +240,10 @@ public final class CliSession {
     private void send(String box, String body) throws IOException {
         OutgoingServerMessage reply = await(box, body, printer::print);
         if (reply != null) {
-            if (reply.footer().result() instanceof org.ripv.messages.TableResult t) {
+            if (reply.footer().result() instanceof TableResult t) {
                 lastTable = t;
                 lastChart = null;
-            } else if (reply.footer().result() instanceof org.ripv.messages.ImageResult img && img.chart() != null) {
+            } else if (reply.footer().result() instanceof ImageResult img && img.chart() != null) {
                 lastChart = img.chart();
             }
             print(reply);
@@ -238,9 +251,9 @@ public final class CliSession {
     }
 
     /** Sends and waits for the final reply; null when {@link #cancel()} ended the wait (said so). */
-    private OutgoingServerMessage await(String box, String body, java.util.function.Consumer<OutgoingServerMessage> progress)
+    private OutgoingServerMessage await(String box, String body, Consumer<OutgoingServerMessage> progress)
             throws IOException {
-        org.ripv.messages.Header h = Header.request(client.nextId(), box, body, priority);
+        Header h = Header.request(client.nextId(), box, body, priority);
         waitingId = h.messageId();
         try {
             return await(client.send(h, progress), body);
@@ -298,7 +311,7 @@ public final class CliSession {
     /**
      * {@code export csv|json FILE}: the last table received, or a plot's data when one came after
      * it, to a local file ({@link org.ripv.export.TableExport}, {@link org.ripv.export.ChartExport});
-     * {@code export svg FILE}: that plot as a picture of all its data ({@link org.ripv.export.SvgChart}).
+     * {@code export svg FILE}: that plot as a picture of all its data ({@link ChartRenderer}, 900 x 560).
      */
     private void export(String args) throws IOException {
         String[] a = args.isEmpty() ? new String[0] : args.split("\\s+", 2);
@@ -314,33 +327,34 @@ public final class CliSession {
                 return;
             }
             Path file = Path.of(a[1]);
-            Files.writeString(file, org.ripv.export.SvgChart.svg(lastChart, org.ripv.export.SvgChart.View.fit(lastChart, 900, 560)),
-                    java.nio.charset.StandardCharsets.UTF_8);
+            JFreeChart chart = ChartRenderer.chart(lastChart);
+            ChartRenderer.fitPicture(chart, lastChart.kind(), 900, 560);
+            Files.write(file, ChartRenderer.svg(chart, 900, 560));
             local("exported the plot (" + lastChart.series().size() + " series, " + lastChart.points() + " points) as svg to " + file);
             return;
         }
         if (lastChart != null) {
             boolean csv = a[0].equalsIgnoreCase("csv");
             Path file = Path.of(a[1]);
-            Files.writeString(file, csv ? org.ripv.export.ChartExport.csv(lastChart) : org.ripv.export.ChartExport.json(lastChart),
-                    java.nio.charset.StandardCharsets.UTF_8);
+            Files.writeString(file, csv ? ChartExport.csv(lastChart) : ChartExport.json(lastChart),
+                    StandardCharsets.UTF_8);
             local("exported the plot's data (" + lastChart.series().size() + " series, " + lastChart.points() + " points) as "
-                    + a[0].toLowerCase(java.util.Locale.ROOT) + " to " + file);
+                    + a[0].toLowerCase(Locale.ROOT) + " to " + file);
             return;
         }
         if (lastTable == null) {
             localError(ErrorCode.BAD_REQUEST, "no query result to export yet: run a SELECT first");
             return;
         }
-        String text = a[0].equalsIgnoreCase("csv") ? org.ripv.export.TableExport.csv(lastTable)
-                : org.ripv.export.TableExport.json(lastTable);
+        String text = a[0].equalsIgnoreCase("csv") ? TableExport.csv(lastTable)
+                : TableExport.json(lastTable);
         Path file = Path.of(a[1]);
-        Files.writeString(file, text, java.nio.charset.StandardCharsets.UTF_8);
-        local("exported " + lastTable.rows().size() + " rows as " + a[0].toLowerCase(java.util.Locale.ROOT) + " to " + file);
+        Files.writeString(file, text, StandardCharsets.UTF_8);
+        local("exported " + lastTable.rows().size() + " rows as " + a[0].toLowerCase(Locale.ROOT) + " to " + file);
     }
 
     private void put(String args) throws IOException {
-        java.util.List<String> words = new java.util.ArrayList<>(java.util.List.of(args.isEmpty() ? new String[0] : args.split("\\s+")));
+        List<String> words = new ArrayList<>(List.of(args.isEmpty() ? new String[0] : args.split("\\s+")));
         ClientSocketHandler.IfExists ifExists = ClientSocketHandler.IfExists.ASK;
         if (words.remove("--replace")) {
             ifExists = ClientSocketHandler.IfExists.REPLACE;

@@ -15,7 +15,7 @@ import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicReference;
 import org.ripv.client.handlers.ClientSocketHandler;
-import org.ripv.json.JsonWriter;
+import org.ripv.json.Json;
 import org.ripv.messages.ConsoleBatch;
 import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.ConsoleLines;
@@ -24,6 +24,7 @@ import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.Priority;
 import org.ripv.messages.Status;
 import org.ripv.retry.Backoff;
+import org.ripv.text.Printable;
 
 /**
  * {@code ripv cli ... --follow MAILBOX}: watches a MailBox and prints its console — the recent
@@ -121,7 +122,7 @@ public final class ConsoleFollower implements ClientSocketHandler.Listener {
                 return ExitCodes.ERROR_REPLY;
             }
             if (!json) {
-                err.println(org.ripv.text.Printable.escape(r.footer().replyText()) + "; Ctrl-C stops");
+                err.println(Printable.escape(r.footer().replyText()) + "; Ctrl-C stops");
             }
             ended.await();
             if (stopped.getCount() == 0) {
@@ -185,7 +186,7 @@ public final class ConsoleFollower implements ClientSocketHandler.Listener {
                         continue;
                     }
                     // a vehicle's bytes and others' text are data: escaped, never terminal controls (issue 23, item 8)
-                    out.println(json ? JsonWriter.write(toMap(e)) : org.ripv.text.Printable.oneLine(toText(e)));
+                    out.println(json ? Json.write(toMap(e)) : Printable.oneLine(toText(e)));
                 }
                 out.flush();
             }

@@ -6,7 +6,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import org.ripv.json.JsonWriter;
+import org.ripv.json.Json;
 import org.ripv.messages.FileListing;
 import org.ripv.messages.ImageResult;
 import org.ripv.messages.MailboxList;
@@ -20,6 +20,7 @@ import org.ripv.messages.SessionInfo;
 import org.ripv.messages.Status;
 import org.ripv.messages.TableResult;
 import org.ripv.messages.UpdateCount;
+import org.ripv.text.Printable;
 
 /** Prints replies for people (text, aligned tables) or for scripts (one JSON object per line). */
 final class ReplyPrinter {
@@ -38,20 +39,20 @@ final class ReplyPrinter {
 
     void print(OutgoingServerMessage reply) {
         if (json) {
-            out.println(JsonWriter.write(toMap(reply)));
+            out.println(Json.write(toMap(reply)));
             return;
         }
         var f = reply.footer();
         // Text from vehicles and users (?history, workflow names, notify text) is data: printed
         // escaped, so no ESC, BEL or C1 control in it reaches this terminal (issue 23, item 8).
-        String text = org.ripv.text.Printable.escape(f.replyText());
+        String text = Printable.escape(f.replyText());
         if (f.status() == Status.ERROR) {
             err.println("Error: " + text + " [" + f.errorCode() + ", " + f.serviceId() + "]");
             return;
         }
         if (f.status() == Status.PROGRESS) {
             if (f.result() instanceof Progress p) {
-                err.println("  ... " + org.ripv.text.Printable.escape(progressLine(p)));
+                err.println("  ... " + Printable.escape(progressLine(p)));
             } else {
                 err.println("  ... " + text);
             }
@@ -61,13 +62,13 @@ final class ReplyPrinter {
             if (!text.isEmpty()) {
                 out.println(text);
             }
-            out.print(org.ripv.text.Printable.escape(table(t)));
+            out.print(Printable.escape(table(t)));
         } else if (f.result() instanceof ImageResult img) {
-            out.println(text.isEmpty() ? "image " + org.ripv.text.Printable.escape(img.name()) + " (" + img.jpeg().length + " bytes)" : text);
+            out.println(text.isEmpty() ? "image " + Printable.escape(img.name()) + " (" + img.jpeg().length + " bytes)" : text);
         } else if (!text.isEmpty()) {
             out.println(text);
         } else if (f.result() != null) {
-            out.println(org.ripv.text.Printable.escape(String.valueOf(f.result())));
+            out.println(Printable.escape(String.valueOf(f.result())));
         }
     }
 

@@ -5,6 +5,9 @@ import java.awt.Dialog;
 import java.awt.FlowLayout;
 import java.awt.Window;
 import java.awt.event.KeyEvent;
+import java.awt.event.WindowAdapter;
+import java.awt.event.WindowEvent;
+import java.io.File;
 import java.nio.charset.StandardCharsets;
 import java.time.Instant;
 import java.time.ZoneOffset;
@@ -24,14 +27,19 @@ import javax.swing.JPanel;
 import javax.swing.JScrollPane;
 import javax.swing.JTable;
 import javax.swing.KeyStroke;
+import javax.swing.SwingConstants;
 import javax.swing.SwingUtilities;
 import javax.swing.Timer;
 import javax.swing.table.AbstractTableModel;
+import javax.swing.table.DefaultTableCellRenderer;
 import org.ripv.client.managers.GuiManager;
 import org.ripv.client.managers.ServiceModel;
+import org.ripv.client.panels.Buttons;
 import org.ripv.export.TableExport;
+import org.ripv.messages.Ids;
 import org.ripv.messages.MailboxStatus;
 import org.ripv.messages.OutgoingServerMessage;
+import org.ripv.messages.SessionState;
 import org.ripv.messages.Status;
 import org.ripv.messages.TableResult;
 
@@ -76,23 +84,25 @@ public final class FleetView {
         for (int c = 0; c < widths.length; c++) {
             table.getColumnModel().getColumn(c).setPreferredWidth(widths[c]);
         }
-        javax.swing.table.DefaultTableCellRenderer degrees = new javax.swing.table.DefaultTableCellRenderer() {
+        DefaultTableCellRenderer degrees = new DefaultTableCellRenderer() {
             @Override
             protected void setValue(Object value) {
                 setText(value instanceof Double d ? String.format(Locale.ROOT, "%.5f", d) : "—");
             }
         };
-        degrees.setHorizontalAlignment(javax.swing.SwingConstants.RIGHT);
+        degrees.setHorizontalAlignment(SwingConstants.RIGHT);
         table.getColumnModel().getColumn(4).setCellRenderer(degrees);
         table.getColumnModel().getColumn(5).setCellRenderer(degrees);
         status.setName("fleetStatus");
-        JButton refresh = button("Refresh", KeyEvent.VK_R, "fleetRefresh", "Ask the database and the server again (also every minute)");
+        JButton refresh = Buttons.button("Refresh", KeyEvent.VK_R, "fleetRefresh",
+                "Ask the database and the server again (also every minute)");
         refresh.addActionListener(e -> refresh());
-        JButton plot = button("Plot track", KeyEvent.VK_P, "fleetPlot", "vis:track VEHICLE in the DataVisServer's tab");
+        JButton plot = Buttons.button("Plot track", KeyEvent.VK_P, "fleetPlot",
+                "vis:track VEHICLE in the DataVisServer's tab");
         plot.addActionListener(e -> plotSelected());
-        JButton csv = button("Export CSV", KeyEvent.VK_C, "fleetCsv", "This table as CSV");
+        JButton csv = Buttons.button("Export CSV", KeyEvent.VK_C, "fleetCsv", "This table as CSV");
         csv.addActionListener(e -> export(false));
-        JButton json = button("Export JSON", KeyEvent.VK_J, "fleetJson", "This table as JSON");
+        JButton json = Buttons.button("Export JSON", KeyEvent.VK_J, "fleetJson", "This table as JSON");
         json.addActionListener(e -> export(true));
         JPanel buttons = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 0));
         for (JButton b : List.of(refresh, plot, csv, json)) {
@@ -112,21 +122,13 @@ public final class FleetView {
         dialog.setLocationRelativeTo(owner);
         tick = new Timer(10_000, e -> rows.fireTableRowsUpdated(0, Math.max(0, rows.getRowCount() - 1)));
         refreshTimer = new Timer(60_000, e -> refresh());
-        dialog.addWindowListener(new java.awt.event.WindowAdapter() {
+        dialog.addWindowListener(new WindowAdapter() {
             @Override
-            public void windowClosed(java.awt.event.WindowEvent e) {
+            public void windowClosed(WindowEvent e) {
                 tick.stop();
                 refreshTimer.stop();
             }
         });
-    }
-
-    private static JButton button(String text, int mnemonic, String name, String tip) {
-        JButton b = new JButton(text);
-        b.setMnemonic(mnemonic);
-        b.setName(name);
-        b.setToolTipText(tip);
-        return b;
     }
 
     /** Shows the window and asks for the data. */
@@ -159,11 +161,11 @@ public final class FleetView {
         List<MailboxStatus> mailboxes = new ArrayList<>();
         String database = null;
         for (ServiceModel s : manager.model().services()) {
-            boolean vehicles = org.ripv.messages.Ids.SID_SERIAL.equals(s.descriptor().sid());
+            boolean vehicles = Ids.SID_SERIAL.equals(s.descriptor().sid());
             for (MailboxStatus m : s.mailboxes()) {
                 // A SerialPortServer MailBox is a vehicle even before it has said anything (no session yet).
-                mailboxes.add(m.session() == null && vehicles ? m.withSession(new org.ripv.messages.SessionState(
-                        org.ripv.messages.SessionState.State.UNKNOWN, 0, null, null, 0, null)) : m);
+                mailboxes.add(m.session() == null && vehicles ? m.withSession(new SessionState(
+                        SessionState.State.UNKNOWN, 0, null, null, 0, null)) : m);
             }
             if (database == null && "DAB".equals(s.panel()) && !s.mailboxes().isEmpty()) {
                 database = s.mailboxes().get(0).address();
@@ -251,7 +253,7 @@ public final class FleetView {
 
     private void export(boolean json) {
         JFileChooser chooser = new JFileChooser();
-        chooser.setSelectedFile(new java.io.File(json ? "fleet.json" : "fleet.csv"));
+        chooser.setSelectedFile(new File(json ? "fleet.json" : "fleet.csv"));
         if (chooser.showSaveDialog(dialog) == JFileChooser.APPROVE_OPTION) {
             TableResult t = asTable();
             manager.save(chooser.getSelectedFile().toPath(),

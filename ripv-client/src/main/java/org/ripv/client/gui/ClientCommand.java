@@ -1,8 +1,11 @@
 package org.ripv.client.gui;
 
+import java.awt.AWTError;
 import java.awt.GraphicsEnvironment;
+import java.awt.HeadlessException;
 import java.io.IOException;
 import java.io.PrintStream;
+import java.lang.reflect.InvocationTargetException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -10,6 +13,9 @@ import java.util.concurrent.Callable;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.prefs.Preferences;
 import javax.swing.SwingUtilities;
+import org.ripv.client.cli.PasswordFile;
+import org.ripv.client.handlers.ClientSocketHandler;
+import org.ripv.client.handlers.Tls;
 import org.ripv.client.managers.ClientModel;
 import org.ripv.client.managers.GuiManager;
 import org.ripv.client.panels.HostPort;
@@ -85,7 +91,7 @@ public final class ClientCommand implements Callable<Integer> {
         char[] pw = null;
         if (passwordFile != null) {
             try {
-                pw = org.ripv.client.cli.PasswordFile.read(passwordFile);
+                pw = PasswordFile.read(passwordFile);
             } catch (IOException e) {
                 err.println("Error: " + e.getMessage());
                 return 1;
@@ -99,17 +105,17 @@ public final class ClientCommand implements Callable<Integer> {
             return EXIT_USAGE;
         }
         if (knownHosts != null) {
-            System.setProperty(org.ripv.client.handlers.Tls.KNOWN_HOSTS_PROPERTY, knownHosts.toString());
+            System.setProperty(Tls.KNOWN_HOSTS_PROPERTY, knownHosts.toString());
         }
         RIPVClient client;
         try {
             client = open(server, user, pw, plain);
-        } catch (java.awt.AWTError | java.awt.HeadlessException e) {
+        } catch (AWTError | HeadlessException e) {
             // DISPLAY is set but no X server answers there.
             noDisplay(e.getMessage());
             return EXIT_USAGE;
-        } catch (java.lang.reflect.InvocationTargetException e) {
-            if (e.getCause() instanceof java.awt.AWTError || e.getCause() instanceof java.awt.HeadlessException) {
+        } catch (InvocationTargetException e) {
+            if (e.getCause() instanceof AWTError || e.getCause() instanceof HeadlessException) {
                 noDisplay(e.getCause().getMessage());
                 return EXIT_USAGE;
             }
@@ -142,7 +148,7 @@ public final class ClientCommand implements Callable<Integer> {
             Preferences prefs = Preferences.userNodeForPackage(RIPVClient.class);
             Theme.saved(prefs).install(); // the theme chosen last time (View menu)
             GuiManager manager = plain ? new GuiManager(new ClientModel(), SwingUtilities::invokeLater,
-                    org.ripv.client.handlers.ClientSocketHandler::connectPlain, GuiManager.Timings.DEFAULT)
+                    ClientSocketHandler::connectPlain, GuiManager.Timings.DEFAULT)
                     : new GuiManager(new ClientModel());
             RIPVClient client = new RIPVClient(manager, prefs);
             client.show();
@@ -154,7 +160,7 @@ public final class ClientCommand implements Callable<Integer> {
 
     /** The first line of the file, without its line end. */
     static char[] readPassword(Path file) throws IOException {
-        return org.ripv.client.cli.PasswordFile.read(file);
+        return PasswordFile.read(file);
     }
 
     public static void main(String[] args) {

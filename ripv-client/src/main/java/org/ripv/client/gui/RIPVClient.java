@@ -3,14 +3,20 @@ package org.ripv.client.gui;
 import java.awt.BorderLayout;
 import java.awt.Color;
 import java.awt.Dimension;
+import java.awt.Rectangle;
+import java.awt.Toolkit;
+import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
 import java.awt.event.WindowAdapter;
 import java.awt.event.WindowEvent;
 import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.CountDownLatch;
 import java.util.prefs.Preferences;
 import javax.swing.BorderFactory;
+import javax.swing.ButtonGroup;
 import javax.swing.JButton;
 import javax.swing.JFrame;
 import javax.swing.JLabel;
@@ -18,16 +24,21 @@ import javax.swing.JMenu;
 import javax.swing.JMenuBar;
 import javax.swing.JMenuItem;
 import javax.swing.JPanel;
+import javax.swing.JRadioButtonMenuItem;
 import javax.swing.JScrollPane;
 import javax.swing.JSplitPane;
 import javax.swing.JTabbedPane;
 import javax.swing.KeyStroke;
 import javax.swing.SwingUtilities;
 import javax.swing.UIManager;
+import org.ripv.client.fleet.FleetView;
+import org.ripv.client.layout.QuadrantMenu;
 import org.ripv.client.managers.ClientModel;
 import org.ripv.client.managers.ClientModel.Connection;
 import org.ripv.client.managers.GuiManager;
 import org.ripv.client.managers.ServiceModel;
+import org.ripv.client.panels.Buttons;
+import org.ripv.client.panels.Colors;
 import org.ripv.client.panels.LoginDialog;
 import org.ripv.client.panels.ServiceLayoutPanel;
 import org.ripv.client.trees.ServiceTree;
@@ -67,7 +78,7 @@ public final class RIPVClient {
     private boolean syncing;
     /** Whether the window has shown the service the model chose to open on (the first vehicle's). */
     private boolean opened;
-    private org.ripv.client.fleet.FleetView fleetView;
+    private FleetView fleetView;
     private long lastFocusRefresh;
 
     public RIPVClient(GuiManager manager, Preferences prefs) {
@@ -90,11 +101,8 @@ public final class RIPVClient {
             }
         });
 
-        JButton refresh = new JButton("Refresh");
-        refresh.setName("selRefresh");
-        refresh.setMnemonic(KeyEvent.VK_R);
-        refresh.setToolTipText("Ask the server for its services again (?services); also every 15 s");
-        refresh.addActionListener(e -> manager.refresh());
+        JButton refresh = Buttons.button("Refresh", KeyEvent.VK_R, "selRefresh",
+                "Ask the server for its services again (?services); also every 15 s", e -> manager.refresh());
         JPanel sel = new JPanel(new BorderLayout(2, 2));
         sel.setBorder(BorderFactory.createTitledBorder("SEL — services"));
         sel.add(new JScrollPane(serviceTree), BorderLayout.CENTER);
@@ -108,7 +116,7 @@ public final class RIPVClient {
         split.setResizeWeight(0.0);
         split.setContinuousLayout(true);
         // A sensible first size that pack() keeps, shrunk to fit small screens.
-        Dimension screen = java.awt.Toolkit.getDefaultToolkit().getScreenSize();
+        Dimension screen = Toolkit.getDefaultToolkit().getScreenSize();
         split.setPreferredSize(new Dimension(Math.min(1360, screen.width - 40), Math.min(820, screen.height - 120)));
 
         banner.setName("connectionBanner");
@@ -169,7 +177,7 @@ public final class RIPVClient {
         refresh.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_F5, 0));
         refresh.addActionListener(e -> manager.refresh());
         JMenuItem quit = new JMenuItem("Quit", KeyEvent.VK_Q);
-        quit.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_Q, java.awt.event.InputEvent.CTRL_DOWN_MASK));
+        quit.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_Q, InputEvent.CTRL_DOWN_MASK));
         quit.addActionListener(e -> frame.dispose());
         server.add(login);
         server.add(logout);
@@ -185,11 +193,11 @@ public final class RIPVClient {
     private JMenu viewMenu() {
         JMenu view = new JMenu("View");
         view.setMnemonic(KeyEvent.VK_V);
-        javax.swing.ButtonGroup themes = new javax.swing.ButtonGroup();
+        ButtonGroup themes = new ButtonGroup();
         for (Theme t : Theme.values()) {
-            javax.swing.JRadioButtonMenuItem item = new javax.swing.JRadioButtonMenuItem(
+            JRadioButtonMenuItem item = new JRadioButtonMenuItem(
                     t == Theme.LIGHT ? "Light theme" : "Dark theme", Theme.saved(prefs) == t);
-            item.setName("theme-" + t.name().toLowerCase(java.util.Locale.ROOT));
+            item.setName("theme-" + t.name().toLowerCase(Locale.ROOT));
             item.setMnemonic(t == Theme.LIGHT ? KeyEvent.VK_L : KeyEvent.VK_D);
             item.addActionListener(e -> t.choose(prefs));
             themes.add(item);
@@ -197,56 +205,56 @@ public final class RIPVClient {
         }
         view.addSeparator();
         JMenuItem services = new JMenuItem("Services (SEL)", KeyEvent.VK_S);
-        services.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_1, java.awt.event.InputEvent.ALT_DOWN_MASK));
+        services.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_1, InputEvent.ALT_DOWN_MASK));
         services.addActionListener(e -> serviceTree.requestFocusInWindow());
         JMenuItem commandLine = new JMenuItem("Command line (COM)", KeyEvent.VK_C);
-        commandLine.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_2, java.awt.event.InputEvent.ALT_DOWN_MASK));
+        commandLine.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_2, InputEvent.ALT_DOWN_MASK));
         commandLine.addActionListener(e -> {
             if (tabs.getSelectedComponent() instanceof ServiceLayoutPanel p) {
                 p.com().focusCommand();
             }
         });
         JMenuItem mailboxes = new JMenuItem("MailBoxes (MAM)", KeyEvent.VK_M);
-        mailboxes.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_3, java.awt.event.InputEvent.ALT_DOWN_MASK));
+        mailboxes.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_3, InputEvent.ALT_DOWN_MASK));
         mailboxes.addActionListener(e -> {
             if (tabs.getSelectedComponent() instanceof ServiceLayoutPanel p) {
                 p.mam().tree().requestFocusInWindow();
             }
         });
         JMenuItem files = new JMenuItem("Files (FIM)", KeyEvent.VK_F);
-        files.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_4, java.awt.event.InputEvent.ALT_DOWN_MASK));
+        files.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_4, InputEvent.ALT_DOWN_MASK));
         files.addActionListener(e -> {
             if (tabs.getSelectedComponent() instanceof ServiceLayoutPanel p) {
                 p.fim().tree().requestFocusInWindow();
             }
         });
         JMenuItem next = new JMenuItem("Next service tab", KeyEvent.VK_N);
-        next.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_PAGE_DOWN, java.awt.event.InputEvent.CTRL_DOWN_MASK));
+        next.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_PAGE_DOWN, InputEvent.CTRL_DOWN_MASK));
         next.addActionListener(e -> {
             if (tabs.getTabCount() > 0) {
                 tabs.setSelectedIndex((tabs.getSelectedIndex() + 1) % tabs.getTabCount());
             }
         });
-        for (JMenuItem i : java.util.List.of(services, commandLine, mailboxes, files, next)) {
+        for (JMenuItem i : List.of(services, commandLine, mailboxes, files, next)) {
             view.add(i);
         }
         view.addSeparator();
-        org.ripv.client.layout.QuadrantMenu.items(() -> tabs.getSelectedComponent() instanceof ServiceLayoutPanel p
+        QuadrantMenu.items(() -> tabs.getSelectedComponent() instanceof ServiceLayoutPanel p
                 ? p.quadrants() : null).forEach(view::add);
         view.addSeparator();
         JMenuItem fleet = new JMenuItem("Fleet...", KeyEvent.VK_T);
         fleet.setName("fleetMenu");
-        fleet.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_F, java.awt.event.InputEvent.CTRL_DOWN_MASK
-                | java.awt.event.InputEvent.SHIFT_DOWN_MASK));
+        fleet.setAccelerator(KeyStroke.getKeyStroke(KeyEvent.VK_F, InputEvent.CTRL_DOWN_MASK
+                | InputEvent.SHIFT_DOWN_MASK));
         fleet.addActionListener(e -> showFleet());
         view.add(fleet);
         return view;
     }
 
     /** Opens the Fleet window (or brings it to the front) and refreshes it. */
-    public org.ripv.client.fleet.FleetView showFleet() {
+    public FleetView showFleet() {
         if (fleetView == null || !fleetView.dialog().isDisplayable()) {
-            fleetView = new org.ripv.client.fleet.FleetView(frame, manager);
+            fleetView = new FleetView(frame, manager);
         }
         fleetView.show();
         fleetView.dialog().toFront();
@@ -314,7 +322,7 @@ public final class RIPVClient {
             case NOTICE -> {
                 // The latest message only, on one line; the whole of it in the tooltip.
                 status.setText(model.notice().isEmpty() ? " " : model.notice());
-                status.setForeground(model.noticeIsError() ? org.ripv.client.panels.Colors.error() : UIManager.getColor("Label.foreground"));
+                status.setForeground(model.noticeIsError() ? Colors.error() : UIManager.getColor("Label.foreground"));
                 status.setToolTipText(model.noticeDetail().isEmpty() ? null : model.noticeDetail());
             }
             default -> {
@@ -393,8 +401,8 @@ public final class RIPVClient {
     }
 
     private void restoreLayout() {
-        java.awt.Rectangle screen = frame.getGraphicsConfiguration().getBounds();
-        java.awt.Rectangle b = saved.fitted(screen);
+        Rectangle screen = frame.getGraphicsConfiguration().getBounds();
+        Rectangle b = saved.fitted(screen);
         if (b != null) {
             // Before the window has a peer, so the platform takes these bounds as they are.
             frame.setBounds(b);

@@ -1,6 +1,7 @@
 package org.ripv.client.gui;
 
 import java.util.Locale;
+import java.util.Map;
 import java.util.prefs.Preferences;
 import javax.swing.UIManager;
 import com.formdev.flatlaf.FlatDarkLaf;
@@ -25,7 +26,7 @@ public enum Theme {
     /** Installs the look and feel; before the window exists, or followed by {@link #applyToOpenWindows()}. */
     public void install() {
         // Underline every mnemonic all the time, not only while Alt is held: keyboard users see them.
-        FlatLaf.setGlobalExtraDefaults(java.util.Map.of("Component.hideMnemonics", "false"));
+        FlatLaf.setGlobalExtraDefaults(Map.of("Component.hideMnemonics", "false"));
         if (this == DARK) {
             FlatDarkLaf.setup();
         } else {

@@ -7,6 +7,7 @@ import java.io.DataOutputStream;
 import java.io.EOFException;
 import java.io.IOException;
 import java.io.InputStream;
+import java.net.ConnectException;
 import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.nio.charset.StandardCharsets;
@@ -14,6 +15,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.time.Duration;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.CompletableFuture;
@@ -25,9 +27,14 @@ import java.util.concurrent.TimeoutException;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Consumer;
 import javax.net.SocketFactory;
+import javax.net.ssl.SSLException;
+import javax.net.ssl.SSLParameters;
+import javax.net.ssl.SSLSocket;
+import org.ripv.failover.ServerList;
 import org.ripv.messages.Attachment;
 import org.ripv.messages.FileData;
 import org.ripv.messages.Header;
+import org.ripv.messages.IdBadge;
 import org.ripv.messages.IncomingServerMessage;
 import org.ripv.messages.Message;
 import org.ripv.messages.OutgoingServerMessage;
@@ -128,27 +135,27 @@ public final class ClientSocketHandler implements AutoCloseable {
     }
 
     /** One Failover per list, so that reconnects start with the server that answered last. */
-    private static final java.util.Map<String, Failover> FAILOVERS = new java.util.concurrent.ConcurrentHashMap<>();
+    private static final Map<String, Failover> FAILOVERS = new ConcurrentHashMap<>();
 
     private static Failover failover(String list, int defaultPort) {
         return FAILOVERS.computeIfAbsent(list + "|" + defaultPort,
-                k -> new Failover(org.ripv.failover.ServerList.parse(list, defaultPort), null));
+                k -> new Failover(ServerList.parse(list, defaultPort), null));
     }
 
     /** Connects with the given socket factory (an {@code SSLSocketFactory} for TLS). */
     public static ClientSocketHandler connect(String host, int port, SocketFactory factory, Duration timeout)
             throws IOException {
         Socket s = factory.createSocket();
-        if (s instanceof javax.net.ssl.SSLSocket tls) {
+        if (s instanceof SSLSocket tls) {
             // Check that the certificate names the host we asked for, not only that a CA signed it.
-            javax.net.ssl.SSLParameters p = tls.getSSLParameters();
+            SSLParameters p = tls.getSSLParameters();
             p.setEndpointIdentificationAlgorithm("HTTPS");
             tls.setSSLParameters(p);
         }
         try {
             s.setTcpNoDelay(true);
             s.connect(new InetSocketAddress(host, port), (int) timeout.toMillis());
-        } catch (java.net.ConnectException e) {
+        } catch (ConnectException e) {
             s.close();
             throw new IOException("nothing listens on " + host + ":" + port + " (" + e.getMessage()
                     + "): is the server running, and is " + port + " its client port (4444 unless started with --port)?", e);
@@ -159,7 +166,7 @@ public final class ClientSocketHandler implements AutoCloseable {
         try {
             // A short connect deadline (a server list) must not cut a slow first handshake or greeting short.
             s.setSoTimeout((int) Math.max(timeout.toMillis(), 10_000));
-            if (s instanceof javax.net.ssl.SSLSocket tls) {
+            if (s instanceof SSLSocket tls) {
                 handshake(tls);
             }
             return new ClientSocketHandler(s, host + ":" + port, FrameCodec.DEFAULT_MAX_FRAME);
@@ -168,7 +175,7 @@ public final class ClientSocketHandler implements AutoCloseable {
             throw e;
         } catch (IOException e) {
             s.close();
-            throw WrongPort.explain(host, port, s instanceof javax.net.ssl.SSLSocket, e);
+            throw WrongPort.explain(host, port, s instanceof SSLSocket, e);
         } catch (RuntimeException e) {
             s.close();
             throw e;
@@ -176,10 +183,10 @@ public final class ClientSocketHandler implements AutoCloseable {
     }
 
     /** Runs the TLS handshake now, so that a refused certificate says why in plain words. */
-    private static void handshake(javax.net.ssl.SSLSocket tls) throws IOException {
+    private static void handshake(SSLSocket tls) throws IOException {
         try {
             tls.startHandshake();
-        } catch (javax.net.ssl.SSLException e) {
+        } catch (SSLException e) {
             for (Throwable t = e; t != null; t = t.getCause()) {
                 if (t instanceof Tls.ChangedCertificateException changed) {
                     throw new Tls.RefusedCertificate(changed.getMessage(), e);
@@ -226,10 +233,10 @@ public final class ClientSocketHandler implements AutoCloseable {
      */
     public SessionInfo login(String user, char[] password) throws IOException, RipvErrorException {
         byte[] pw = new String(password).getBytes(StandardCharsets.UTF_8);
-        Header h = new Header(nextId(), new org.ripv.messages.IdBadge("000000", user), List.of(), "", "",
+        Header h = new Header(nextId(), new IdBadge("000000", user), List.of(), "", "",
                 "?login " + user, Priority.URGENT, new Attachment("password", pw));
         OutgoingServerMessage r = await(send(h, null), Duration.ofSeconds(30));
-        java.util.Arrays.fill(pw, (byte) 0);
+        Arrays.fill(pw, (byte) 0);
         if (r.status() == Status.ERROR) {
             throw new RipvErrorException(r);
         }
@@ -340,7 +347,7 @@ public final class ClientSocketHandler implements AutoCloseable {
             OutgoingServerMessage last = null;
             do {
                 byte[] chunk = file.readNBytes((int) Math.min(CHUNK, total - offset));
-                Header h = new Header(nextId(), new org.ripv.messages.IdBadge("000000", ""), List.of(), "", "",
+                Header h = new Header(nextId(), new IdBadge("000000", ""), List.of(), "", "",
                         "?upload " + remoteName + " " + offset + " " + total + suffix, Priority.NORMAL,
                         new Attachment(remoteName, chunk));
                 last = await(send(h, null), Duration.ofMinutes(2));

@@ -1,7 +1,9 @@
 package org.ripv.client.handlers;
 
 import java.io.IOException;
+import java.time.Duration;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.List;
 import java.util.function.Consumer;
 import org.ripv.failover.ServerList;
@@ -21,7 +23,7 @@ public final class Failover {
      * How long each server of a list may take to accept the connection: a dead or cut-off one
      * must not hold up the others for the usual 10 s (the TLS handshake still gets 10 s).
      */
-    public static final java.time.Duration CONNECT = java.time.Duration.ofSeconds(3);
+    public static final Duration CONNECT = Duration.ofSeconds(3);
 
     /** Opens one connection. */
     @FunctionalInterface
@@ -63,7 +65,7 @@ public final class Failover {
             order.add((from + i) % n);
         }
         synchronized (failedIn) {
-            order.sort(java.util.Comparator.comparingLong(i -> failedIn[i])); // stable: ties keep the rotation
+            order.sort(Comparator.comparingLong(i -> failedIn[i])); // stable: ties keep the rotation
         }
         List<String> failures = new ArrayList<>();
         IOException first = null;

@@ -12,8 +12,11 @@ import java.security.GeneralSecurityException;
 import java.security.KeyStore;
 import java.security.cert.CertificateException;
 import java.security.cert.X509Certificate;
+import java.util.ArrayList;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Locale;
+import java.util.Set;
 import java.util.function.Consumer;
 import javax.net.SocketFactory;
 import javax.net.ssl.SSLContext;
@@ -22,6 +25,7 @@ import javax.net.ssl.SSLSocketFactory;
 import javax.net.ssl.TrustManager;
 import javax.net.ssl.TrustManagerFactory;
 import javax.net.ssl.X509ExtendedTrustManager;
+import org.ripv.failover.ServerList;
 import org.ripv.security.Fingerprint;
 
 /**
@@ -124,8 +128,8 @@ public final class Tls {
      * @param servers the whole list, or null for a single server
      */
     public static SocketFactory trustOnFirstUse(String host, int port, Path knownHosts, Consumer<String> notices,
-                                                org.ripv.failover.ServerList servers) throws IOException {
-        List<String> group = new java.util.ArrayList<>();
+                                                ServerList servers) throws IOException {
+        List<String> group = new ArrayList<>();
         String self = key(host, port);
         if (servers != null) {
             for (int i = 0; i < servers.size(); i++) {
@@ -185,8 +189,8 @@ public final class Tls {
                         throw new ChangedCertificateException(changed(i + 1, w[1], offered));
                     }
                 }
-                java.util.Set<String> pinnedPeers = new java.util.LinkedHashSet<>();
-                java.util.Set<String> peerNames = new java.util.LinkedHashSet<>();
+                Set<String> pinnedPeers = new LinkedHashSet<>();
+                Set<String> peerNames = new LinkedHashSet<>();
                 for (String line : lines) {
                     String[] w = line.trim().split("\\s+");
                     if (w.length >= 2 && group.contains(w[0])) {

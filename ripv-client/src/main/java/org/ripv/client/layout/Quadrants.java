@@ -7,11 +7,13 @@ import java.awt.KeyboardFocusManager;
 import java.awt.event.MouseAdapter;
 import java.awt.event.MouseEvent;
 import java.util.EnumMap;
+import java.util.Locale;
 import java.util.Map;
 import javax.swing.JComponent;
 import javax.swing.JPanel;
 import javax.swing.JSplitPane;
 import javax.swing.SwingUtilities;
+import javax.swing.border.TitledBorder;
 import org.ripv.client.layout.QuadrantState.Dividers;
 import org.ripv.client.layout.QuadrantState.Quadrant;
 
@@ -59,7 +61,7 @@ public final class Quadrants {
             e.getValue().addMouseListener(twice);
             // A quadrant made of cards (DAV: chart or picture) has its titles one level down.
             for (Component child : e.getValue().getComponents()) {
-                if (child instanceof JComponent j && j.getBorder() instanceof javax.swing.border.TitledBorder) {
+                if (child instanceof JComponent j && j.getBorder() instanceof TitledBorder) {
                     j.addMouseListener(twice);
                 }
             }
@@ -117,7 +119,7 @@ public final class Quadrants {
             if (parent instanceof JSplitPane s) {
                 boolean first = s.getLeftComponent() == c;
                 JPanel hole = new JPanel();
-                hole.setName("maximised-" + q.name().toLowerCase(java.util.Locale.ROOT));
+                hole.setName("maximised-" + q.name().toLowerCase(Locale.ROOT));
                 if (first) {
                     s.setLeftComponent(hole);
                 } else {

@@ -5,6 +5,8 @@ import java.util.List;
 import org.ripv.client.managers.ClientModel.Connection;
 import org.ripv.client.managers.ClientModel.FileArea;
 import org.ripv.client.managers.ServiceModel.LineKind;
+import org.ripv.messages.ConsoleBatch;
+import org.ripv.messages.ErrorCode;
 import org.ripv.messages.FileListing;
 import org.ripv.messages.ImageResult;
 import org.ripv.messages.MailboxStatus;
@@ -69,11 +71,11 @@ public interface GuiInterface {
      * Console entries of a watched MailBox ({@code ?watch} 555700 replay, pushes 555790);
      * {@code live} is false for the replay, so old events raise no desktop notification.
      */
-    default void showConsole(org.ripv.messages.ConsoleBatch batch, boolean live) {
+    default void showConsole(ConsoleBatch batch, boolean live) {
     }
 
     /** Transcript entries ({@code ?history}, 555702) to put before a console's lines. */
-    default void showHistory(org.ripv.messages.ConsoleBatch batch) {
+    default void showHistory(ConsoleBatch batch) {
     }
 
     /** A request of a service tab was sent and runs until its final reply (COM shows it with Cancel). */
@@ -88,6 +90,6 @@ public interface GuiInterface {
      * A running request ended: its final reply came ({@code code} null for OK, else the error's
      * code, e.g. {@code CANCELLED}), or it failed without one.
      */
-    default void requestEnded(String service, long messageId, org.ripv.messages.ErrorCode code) {
+    default void requestEnded(String service, long messageId, ErrorCode code) {
     }
 }

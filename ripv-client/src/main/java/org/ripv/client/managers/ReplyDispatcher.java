@@ -7,6 +7,8 @@ import javax.imageio.ImageIO;
 import org.ripv.client.managers.ClientModel.FileArea;
 import org.ripv.client.managers.Requests.Origin;
 import org.ripv.client.managers.ServiceModel.LineKind;
+import org.ripv.messages.ConsoleBatch;
+import org.ripv.messages.ErrorCode;
 import org.ripv.messages.FileListing;
 import org.ripv.messages.Footer;
 import org.ripv.messages.Header;
@@ -109,13 +111,13 @@ final class ReplyDispatcher {
                 }
             }
             case Ids.FID_HISTORY -> {
-                if (result instanceof org.ripv.messages.ConsoleBatch b && origin == null) {
+                if (result instanceof ConsoleBatch b && origin == null) {
                     gui.showHistory(b); // the console panel's Older button (typed ?history stays in COM)
                     return;
                 }
             }
             case Ids.FID_CONSOLE, Ids.FID_WATCH -> {
-                if (result instanceof org.ripv.messages.ConsoleBatch b) {
+                if (result instanceof ConsoleBatch b) {
                     gui.showConsole(b, f.serviceId().equals(Ids.FID_CONSOLE));
                 }
                 if (!echo) {
@@ -177,7 +179,7 @@ final class ReplyDispatcher {
         String full = text + " [" + f.errorCode() + " " + f.errorCode().number() + "]";
         String service = serviceOf(reply.header(), origin == null ? null : origin.service());
         log.info("error reply to '{}': {}", reply.header().body(), full);
-        if (service != null && f.errorCode() == org.ripv.messages.ErrorCode.CANCELLED) {
+        if (service != null && f.errorCode() == ErrorCode.CANCELLED) {
             // Not a failure: someone stopped it on purpose, and the line says who.
             gui.showReply(service, LineKind.NOTICE, "cancelled '" + reply.header().body() + "': " + text);
         } else if (service != null) {

@@ -2,13 +2,18 @@ package org.ripv.client.managers;
 
 import java.io.IOException;
 import java.util.Map;
+import java.util.Set;
+import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.Executor;
+import java.util.function.BiConsumer;
 import java.util.function.Supplier;
 import org.ripv.client.handlers.ClientSocketHandler;
 import org.ripv.client.managers.ServiceModel.LineKind;
 import org.ripv.messages.Header;
+import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.Priority;
+import org.ripv.messages.Status;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -26,7 +31,7 @@ final class Requests {
     private final GuiInterface gui;
     private final Map<Long, Origin> origins = new ConcurrentHashMap<>();
     /** Requests whose replies go to their caller only (see {@link #ask}), not to the panels. */
-    private final java.util.Set<Long> quiet = ConcurrentHashMap.newKeySet();
+    private final Set<Long> quiet = ConcurrentHashMap.newKeySet();
 
     Requests(ClientModel model, Executor io, Supplier<ClientSocketHandler> conn, GuiInterface gui) {
         this.model = model;
@@ -68,7 +73,7 @@ final class Requests {
                 h.send("", command, Priority.NORMAL, null).whenComplete((reply, e) -> {
                     if (e != null) {
                         gui.showNotice("'" + command + "' got no reply: " + Failures.describe(e), true);
-                    } else if (reply.status() != org.ripv.messages.Status.ERROR) {
+                    } else if (reply.status() != Status.ERROR) {
                         gui.showNotice(reply.footer().replyText().isBlank() ? command + ": done" : reply.footer().replyText(), false);
                         after.run();
                     }
@@ -84,7 +89,7 @@ final class Requests {
      * {@code then}, on the reader or an I/O thread. ERROR replies also reach the status bar
      * through dispatch.
      */
-    void call(String command, java.util.function.BiConsumer<org.ripv.messages.OutgoingServerMessage, Throwable> then) {
+    void call(String command, BiConsumer<OutgoingServerMessage, Throwable> then) {
         io.execute(() -> {
             ClientSocketHandler h = conn.get();
             if (h == null) {
@@ -143,9 +148,9 @@ final class Requests {
      * Sends a request whose final reply only completes the returned future (the Fleet view's
      * queries): dispatch leaves it alone, so no DAB tab opens for it. Any thread.
      */
-    java.util.concurrent.CompletableFuture<org.ripv.messages.OutgoingServerMessage> ask(String mailbox, String body) {
-        java.util.concurrent.CompletableFuture<org.ripv.messages.OutgoingServerMessage> out =
-                new java.util.concurrent.CompletableFuture<>();
+    CompletableFuture<OutgoingServerMessage> ask(String mailbox, String body) {
+        CompletableFuture<OutgoingServerMessage> out =
+                new CompletableFuture<>();
         io.execute(() -> {
             ClientSocketHandler h = conn.get();
             if (h == null) {

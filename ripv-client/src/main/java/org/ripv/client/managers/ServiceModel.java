@@ -3,12 +3,18 @@ package org.ripv.client.managers;
 import java.awt.image.BufferedImage;
 import java.util.ArrayList;
 import java.util.Collections;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.ImageResult;
 import org.ripv.messages.MailboxStatus;
 import org.ripv.messages.Priority;
 import org.ripv.messages.Progress;
 import org.ripv.messages.ServiceDescriptor;
+import org.ripv.messages.SessionState;
 import org.ripv.messages.TableResult;
 
 /**
@@ -62,10 +68,10 @@ public final class ServiceModel {
     private Priority priority = Priority.NORMAL;
     private String serviceStatus = "";
     /** Command-line history per MailBox (the key "" for lines typed with no MailBox picked). */
-    private final java.util.Map<String, List<String>> histories = new java.util.HashMap<>();
+    private final Map<String, List<String>> histories = new HashMap<>();
     private final List<Line> transcript = new ArrayList<>();
     private Progress progress;
-    private final java.util.LinkedHashMap<Long, Running> running = new java.util.LinkedHashMap<>();
+    private final LinkedHashMap<Long, Running> running = new LinkedHashMap<>();
     private final List<TableResult> tables = new ArrayList<>();
     private Picture picture;
     private long transcriptRevision;
@@ -205,21 +211,21 @@ public final class ServiceModel {
      * Brings the MailBoxes' call state up to date with console entries pushed since the last
      * {@code ?mailboxes} ({@link SessionStates}); true when a badge changed.
      */
-    boolean console(String mailbox, List<org.ripv.messages.ConsoleEntry> entries) {
+    boolean console(String mailbox, List<ConsoleEntry> entries) {
         for (int i = 0; i < mailboxes.size(); i++) {
             MailboxStatus m = mailboxes.get(i);
             if (m.address().equals(mailbox)) {
-                org.ripv.messages.SessionState st = m.session();
-                for (org.ripv.messages.ConsoleEntry e : entries) {
+                SessionState st = m.session();
+                for (ConsoleEntry e : entries) {
                     st = SessionStates.apply(st, e);
                 }
-                if (java.util.Objects.equals(st, m.session())) {
+                if (Objects.equals(st, m.session())) {
                     return false;
                 }
                 boolean moved = m.session() == null || st.state() != m.session().state();
                 // A call event supersedes the service's last words on availability until it is asked again:
                 // on a call the vehicle takes commands, dived or lost it does not.
-                mailboxes.set(i, moved ? new MailboxStatus(m.address(), st.state() == org.ripv.messages.SessionState.State.ON_CALL,
+                mailboxes.set(i, moved ? new MailboxStatus(m.address(), st.state() == SessionState.State.ON_CALL,
                         "", m.busy(), m.lockedBy(), st, m.running()) : m.withSession(st));
                 if (mailbox.equals(target)) {
                     serviceStatus = describe(mailboxes.get(i)); // SS and the badge say the same state
@@ -327,10 +333,10 @@ public final class ServiceModel {
      * the service's detail say why.
      */
     static String describe(MailboxStatus s) {
-        org.ripv.messages.SessionState v = s.session();
+        SessionState v = s.session();
         StringBuilder b;
-        if (v != null && v.state() != org.ripv.messages.SessionState.State.UNKNOWN) {
-            boolean onCall = v.state() == org.ripv.messages.SessionState.State.ON_CALL;
+        if (v != null && v.state() != SessionState.State.UNKNOWN) {
+            boolean onCall = v.state() == SessionState.State.ON_CALL;
             b = new StringBuilder(onCall && s.available() ? "available" : "not available");
             b.append(" (").append(v.state().words()).append(", ").append(v.calls()).append(v.calls() == 1 ? " call" : " calls")
                     .append(" this run");

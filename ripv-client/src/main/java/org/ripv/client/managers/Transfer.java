@@ -1,7 +1,9 @@
 package org.ripv.client.managers;
 
 import java.nio.file.Path;
+import java.util.Locale;
 import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.function.LongSupplier;
 
 /**
  * One file moving between the operator's computer and the server (FIM panel's progress bars).
@@ -24,7 +26,7 @@ public final class Transfer {
     private long total;
     private State state = State.RUNNING;
     private String detail = "";
-    private final java.util.function.LongSupplier clock;
+    private final LongSupplier clock;
     private long startNanos = -1;
     private long lastNanos;
     private boolean nameTaken;
@@ -35,7 +37,7 @@ public final class Transfer {
     }
 
     /** With the clock rate and ETA are measured by (tests give their own). */
-    Transfer(long id, Direction direction, String name, Path local, long total, java.util.function.LongSupplier nanoClock) {
+    Transfer(long id, Direction direction, String name, Path local, long total, LongSupplier nanoClock) {
         this.id = id;
         this.direction = direction;
         this.name = name;
@@ -64,7 +66,7 @@ public final class Transfer {
     /** "45%  1.2 MB / 2.6 MB  310 KB/s  0:05 left": what the FIM progress bar says. */
     public String progressText() {
         if (finished()) {
-            return state.name().toLowerCase(java.util.Locale.ROOT);
+            return state.name().toLowerCase(Locale.ROOT);
         }
         if (percent() < 0) {
             return "starting";
@@ -75,7 +77,7 @@ public final class Transfer {
         }
         long eta = etaSeconds();
         if (eta >= 0) {
-            b.append("  ").append(eta / 60).append(':').append(String.format(java.util.Locale.ROOT, "%02d", eta % 60)).append(" left");
+            b.append("  ").append(eta / 60).append(':').append(String.format(Locale.ROOT, "%02d", eta % 60)).append(" left");
         }
         return b.toString();
     }
@@ -86,9 +88,9 @@ public final class Transfer {
             return bytes + " B";
         }
         if (bytes < 1024 * 1024) {
-            return String.format(java.util.Locale.ROOT, "%.0f KB", bytes / 1024.0);
+            return String.format(Locale.ROOT, "%.0f KB", bytes / 1024.0);
         }
-        return String.format(java.util.Locale.ROOT, "%.1f MB", bytes / (1024.0 * 1024));
+        return String.format(Locale.ROOT, "%.1f MB", bytes / (1024.0 * 1024));
     }
 
     /** An upload the server refused because the store has a file of that name (FILE_EXISTS). */

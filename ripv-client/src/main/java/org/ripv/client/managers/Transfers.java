@@ -6,9 +6,12 @@ import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.util.concurrent.Executor;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Consumer;
 import java.util.function.Supplier;
 import org.ripv.client.handlers.ClientSocketHandler;
 import org.ripv.client.handlers.RipvErrorException;
+import org.ripv.client.handlers.TransferListener;
+import org.ripv.messages.ErrorCode;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -39,36 +42,18 @@ final class Transfers {
     Transfer upload(Path local, ClientSocketHandler.IfExists ifExists) {
         String name = local.getFileName() == null ? local.toString() : local.getFileName().toString();
         Transfer t = new Transfer(transferIds.incrementAndGet(), Transfer.Direction.UPLOAD, name, local, -1);
-        model.addTransfer(t);
-        io.execute(() -> {
-            ClientSocketHandler h = conn.get();
-            try {
-                if (h == null) {
-                    throw new IOException("not connected to a server");
-                }
-                long total = Files.size(local);
-                ui.execute(() -> {
-                    t.progress(0, total);
-                    model.transferChanged(t);
-                });
-                h.upload(local, name, ifExists, (done, all) -> {
-                    ui.execute(() -> {
-                        t.progress(done, all);
-                        model.transferChanged(t);
-                    });
-                    return !t.cancelRequested();
-                });
-                finish(t, Transfer.State.DONE, "uploaded " + name + " to the server's upload directory");
-                requests.background("?ulfiles");
-            } catch (RipvErrorException e) {
-                if (e.reply().footer().errorCode() == org.ripv.messages.ErrorCode.FILE_EXISTS) {
-                    ui.execute(() -> t.nameTaken(true)); // the FIM panel asks: keep both, replace or cancel
-                }
-                finish(t, Transfer.State.FAILED, "upload of " + name + " refused: " + Failures.describe(e));
-            } catch (IOException | RuntimeException e) {
-                finish(t, t.cancelRequested() ? Transfer.State.CANCELLED : Transfer.State.FAILED,
-                        (t.cancelRequested() ? "upload of " + name + " cancelled" : "upload of " + name
-                                + " failed: " + Failures.describe(e)));
+        run(t, "upload of " + name, h -> {
+            long total = Files.size(local);
+            ui.execute(() -> {
+                t.progress(0, total);
+                model.transferChanged(t);
+            });
+            h.upload(local, name, ifExists, progressOf(t));
+            finish(t, Transfer.State.DONE, "uploaded " + name + " to the server's upload directory");
+            requests.background("?ulfiles");
+        }, e -> {
+            if (e.reply().footer().errorCode() == ErrorCode.FILE_EXISTS) {
+                ui.execute(() -> t.nameTaken(true)); // the FIM panel asks: keep both, replace or cancel
             }
         });
         return t;
@@ -77,6 +62,24 @@ final class Transfers {
     /** See {@link GuiManager#download}; on the UI thread. */
     Transfer download(String name, Path localDir) {
         Transfer t = new Transfer(transferIds.incrementAndGet(), Transfer.Direction.DOWNLOAD, name, localDir, -1);
+        run(t, "download of " + name, h -> {
+            Path saved = h.download(name, localDir, progressOf(t));
+            finish(t, Transfer.State.DONE, "downloaded " + name + " to " + saved);
+        }, e -> { });
+        return t;
+    }
+
+    /** What a transfer does with the connection. */
+    @FunctionalInterface
+    private interface Work {
+        void run(ClientSocketHandler h) throws IOException, RipvErrorException;
+    }
+
+    /**
+     * Shows the transfer and runs it on the I/O thread; a refusal ({@code refused} is told first),
+     * a failure or a cancel ends it with words that say which.
+     */
+    private void run(Transfer t, String what, Work work, Consumer<RipvErrorException> refused) {
         model.addTransfer(t);
         io.execute(() -> {
             ClientSocketHandler h = conn.get();
@@ -84,23 +87,31 @@ final class Transfers {
                 if (h == null) {
                     throw new IOException("not connected to a server");
                 }
-                Path saved = h.download(name, localDir, (done, all) -> {
-                    ui.execute(() -> {
-                        t.progress(done, all);
-                        model.transferChanged(t);
-                    });
-                    return !t.cancelRequested();
-                });
-                finish(t, Transfer.State.DONE, "downloaded " + name + " to " + saved);
+                work.run(h);
             } catch (RipvErrorException e) {
-                finish(t, Transfer.State.FAILED, "download of " + name + " refused: " + Failures.describe(e));
+                refused.accept(e);
+                finish(t, Transfer.State.FAILED, what + " refused: " + Failures.describe(e));
             } catch (IOException | RuntimeException e) {
-                finish(t, t.cancelRequested() ? Transfer.State.CANCELLED : Transfer.State.FAILED,
-                        t.cancelRequested() ? "download of " + name + " cancelled" : "download of " + name
-                                + " failed: " + Failures.describe(e));
+                ended(t, what, e);
             }
         });
-        return t;
+    }
+
+    /** Shows a transfer's progress as it goes; false (stop) once the operator cancelled it. */
+    private TransferListener progressOf(Transfer t) {
+        return (done, all) -> {
+            ui.execute(() -> {
+                t.progress(done, all);
+                model.transferChanged(t);
+            });
+            return !t.cancelRequested();
+        };
+    }
+
+    /** A transfer that ended by an exception: cancelled if the operator asked, else failed. */
+    private void ended(Transfer t, String what, Exception e) {
+        finish(t, t.cancelRequested() ? Transfer.State.CANCELLED : Transfer.State.FAILED,
+                t.cancelRequested() ? what + " cancelled" : what + " failed: " + Failures.describe(e));
     }
 
     private void finish(Transfer t, Transfer.State state, String text) {

@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.concurrent.Executor;
 import java.util.function.Supplier;
 import org.ripv.client.handlers.ClientSocketHandler;
@@ -129,7 +130,7 @@ final class WorkflowActions {
 
     /** Sends a change; its answer is the outcome, and the queue and receipts are asked again. */
     private void change(ClientSocketHandler h, String mailbox, String command) throws IOException {
-        OutgoingServerMessage r = h.call("", command, Priority.NORMAL, java.time.Duration.ofSeconds(60), null);
+        OutgoingServerMessage r = h.call("", command, Priority.NORMAL, Duration.ofSeconds(60), null);
         boolean error = r.status() == Status.ERROR;
         String text = r.footer().replyText();
         String first = text.lines().findFirst().orElse(error ? "refused" : "done");
@@ -138,7 +139,7 @@ final class WorkflowActions {
     }
 
     private OutgoingServerMessage call(String command) throws IOException {
-        return connection().call("", command, Priority.NORMAL, java.time.Duration.ofSeconds(60), null);
+        return connection().call("", command, Priority.NORMAL, Duration.ofSeconds(60), null);
     }
 
     private ClientSocketHandler connection() throws IOException {

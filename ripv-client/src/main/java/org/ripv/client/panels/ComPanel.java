@@ -1,12 +1,18 @@
 package org.ripv.client.panels;
 
 import java.awt.BorderLayout;
+import java.awt.Dimension;
+import java.awt.FlowLayout;
 import java.awt.Font;
 import java.awt.GridBagConstraints;
 import java.awt.GridBagLayout;
 import java.awt.Insets;
+import java.awt.event.ActionEvent;
 import java.awt.event.KeyAdapter;
 import java.awt.event.KeyEvent;
+import java.util.List;
+import java.util.Locale;
+import javax.swing.AbstractAction;
 import javax.swing.BorderFactory;
 import javax.swing.JButton;
 import javax.swing.JComboBox;
@@ -15,7 +21,11 @@ import javax.swing.JPanel;
 import javax.swing.JScrollPane;
 import javax.swing.JTextArea;
 import javax.swing.JTextField;
+import javax.swing.KeyStroke;
+import javax.swing.SwingUtilities;
+import javax.swing.UIManager;
 import org.ripv.client.managers.GuiManager;
+import org.ripv.client.managers.ProgressText;
 import org.ripv.client.managers.ServiceModel;
 import org.ripv.messages.Priority;
 import org.ripv.messages.Progress;
@@ -41,7 +51,7 @@ public final class ComPanel extends JPanel {
     private long shownRevision = -1;
     private String shownTarget;
     private boolean updating;
-    private java.util.List<ServiceModel.Running> shownRunning = java.util.List.of();
+    private List<ServiceModel.Running> shownRunning = List.of();
 
     public ComPanel(String service, GuiManager manager) {
         super(new BorderLayout(4, 4));
@@ -64,7 +74,7 @@ public final class ComPanel extends JPanel {
         replies.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
         replies.setToolTipText("RA: the Reply Area — replies, errors and progress");
         JScrollPane scroll = new JScrollPane(replies);
-        scroll.setPreferredSize(new java.awt.Dimension(420, 180));
+        scroll.setPreferredSize(new Dimension(420, 180));
 
         command.setName("commandField");
         command.setToolTipText("Command for the MailBox (dir, SQL, vis:FILE) or ?server command; Enter sends, Up/Down recall");
@@ -97,11 +107,8 @@ public final class ComPanel extends JPanel {
         send.setMnemonic(KeyEvent.VK_N);
         send.setName("sendButton");
         send.addActionListener(e -> send());
-        JButton clear = new JButton("Clear");
-        clear.setMnemonic(KeyEvent.VK_E);
-        clear.setName("clearButton");
-        clear.setToolTipText("Empty the reply area (Alt+E)");
-        clear.addActionListener(e -> manager.clearTranscript(service));
+        JButton clear = Buttons.button("Clear", KeyEvent.VK_E, "clearButton",
+                "Empty the reply area (Alt+E)", e -> manager.clearTranscript(service));
 
         JPanel line = new JPanel(new BorderLayout(4, 0));
         JLabel commandLabel = new JLabel("Command:");
@@ -109,7 +116,7 @@ public final class ComPanel extends JPanel {
         commandLabel.setLabelFor(command);
         line.add(commandLabel, BorderLayout.WEST);
         line.add(command, BorderLayout.CENTER);
-        JPanel buttons = new JPanel(new java.awt.FlowLayout(java.awt.FlowLayout.RIGHT, 4, 0));
+        JPanel buttons = new JPanel(new FlowLayout(FlowLayout.RIGHT, 4, 0));
         buttons.add(priorityKey);
         buttons.add(priority);
         buttons.add(send);
@@ -118,12 +125,12 @@ public final class ComPanel extends JPanel {
 
         running.setVisible(false);
         // Escape anywhere in COM cancels the newest running request, as its Cancel button does.
-        getInputMap(WHEN_ANCESTOR_OF_FOCUSED_COMPONENT).put(javax.swing.KeyStroke.getKeyStroke(KeyEvent.VK_ESCAPE, 0),
+        getInputMap(WHEN_ANCESTOR_OF_FOCUSED_COMPONENT).put(KeyStroke.getKeyStroke(KeyEvent.VK_ESCAPE, 0),
                 "ripv-cancel");
-        getActionMap().put("ripv-cancel", new javax.swing.AbstractAction() {
+        getActionMap().put("ripv-cancel", new AbstractAction() {
             @Override
-            public void actionPerformed(java.awt.event.ActionEvent e) {
-                java.util.List<ServiceModel.Running> now = shownRunning;
+            public void actionPerformed(ActionEvent e) {
+                List<ServiceModel.Running> now = shownRunning;
                 if (!now.isEmpty()) {
                     manager.cancel(service, now.get(now.size() - 1).messageId());
                 }
@@ -177,7 +184,7 @@ public final class ComPanel extends JPanel {
         try {
             talkingTo.setText(m.target().isEmpty() ? "(no MailBox picked)" : m.target());
             lastAction.setText(m.lastAction().isEmpty() ? " " : m.lastAction());
-            priorityLabel.setText(m.priority().name().toLowerCase(java.util.Locale.ROOT) + " (" + m.priority().level() + ")");
+            priorityLabel.setText(m.priority().name().toLowerCase(Locale.ROOT) + " (" + m.priority().level() + ")");
             priority.setSelectedItem(m.priority());
             serviceStatus.setText(m.serviceStatus().isEmpty() ? " " : m.serviceStatus());
             colourStatus();
@@ -206,7 +213,7 @@ public final class ComPanel extends JPanel {
     /** SS in red when the MailBox cannot take commands, in the current theme's red. */
     private void colourStatus() {
         serviceStatus.setForeground(serviceStatus.getText().startsWith("not") ? Colors.error()
-                : javax.swing.UIManager.getColor("Label.foreground"));
+                : UIManager.getColor("Label.foreground"));
     }
 
     /** A theme change: SS takes the new theme's red (it was set for the old one). */
@@ -214,7 +221,7 @@ public final class ComPanel extends JPanel {
     public void updateUI() {
         super.updateUI();
         if (serviceStatus != null) {
-            javax.swing.SwingUtilities.invokeLater(this::colourStatus); // after the labels took the new look
+            SwingUtilities.invokeLater(this::colourStatus); // after the labels took the new look
         }
     }
 
@@ -224,17 +231,17 @@ public final class ComPanel extends JPanel {
 
     /** "ymodem:get LOG  12 KB / 64 KB  1 KB/s  0:52 left": the COM progress bar's words. */
     static String progressText(Progress p) {
-        return org.ripv.client.managers.ProgressText.of(p);
+        return ProgressText.of(p);
     }
 
     /** The running requests' progress bars' words, oldest first. */
-    public java.util.List<String> runningTexts() {
+    public List<String> runningTexts() {
         return running.texts();
     }
 
     /** Puts the keyboard focus in the command line (when its tab is shown). */
     public void focusCommand() {
-        javax.swing.SwingUtilities.invokeLater(command::requestFocusInWindow);
+        SwingUtilities.invokeLater(command::requestFocusInWindow);
     }
 
     /** What the command line holds. */

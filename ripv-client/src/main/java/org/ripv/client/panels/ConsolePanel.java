@@ -1,9 +1,12 @@
 package org.ripv.client.panels;
 
 import java.awt.BorderLayout;
+import java.awt.FlowLayout;
 import java.awt.Font;
 import java.time.Instant;
 import java.util.List;
+import java.util.Locale;
+import java.util.Objects;
 import javax.swing.BorderFactory;
 import javax.swing.JButton;
 import javax.swing.JLabel;
@@ -18,6 +21,7 @@ import org.ripv.client.managers.ClientModel;
 import org.ripv.client.managers.ConsoleModel;
 import org.ripv.client.managers.GuiManager;
 import org.ripv.client.managers.ServiceModel;
+import org.ripv.client.managers.SessionStates;
 import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.MailboxStatus;
 import org.ripv.messages.SessionState;
@@ -75,7 +79,7 @@ public final class ConsolePanel extends JPanel {
         older.setToolTipText("Fetch earlier lines from the server's transcript (?history)");
         older.addActionListener(e -> manager.loadHistory(mailbox));
         JPanel top = new JPanel(new BorderLayout(4, 0));
-        JPanel tools = new JPanel(new java.awt.FlowLayout(java.awt.FlowLayout.RIGHT, 4, 0));
+        JPanel tools = new JPanel(new FlowLayout(FlowLayout.RIGHT, 4, 0));
         tools.add(matches);
         tools.add(new JLabel("Find:"));
         tools.add(search);
@@ -96,15 +100,15 @@ public final class ConsolePanel extends JPanel {
     }
 
     /** The keys a Slocum pilot presses at surfacing; the link decides which it allows (docs/serial.md#control-keys). */
-    static final java.util.List<String> KEYS = java.util.List.of("ctrl-c", "ctrl-r", "ctrl-e", "ctrl-f");
+    static final List<String> KEYS = List.of("ctrl-c", "ctrl-r", "ctrl-e", "ctrl-f");
 
     /** A button per key: each sends {@code ?key MAILBOX KEY}, whose reply (the vehicle's answer) shows in the COM panel. */
     private JPanel keyBar(GuiManager manager) {
-        JPanel bar = new JPanel(new java.awt.FlowLayout(java.awt.FlowLayout.LEFT, 4, 0));
+        JPanel bar = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 0));
         bar.setName("consoleKeys");
         bar.add(new JLabel("Send key:"));
         for (String key : KEYS) {
-            JButton b = new JButton("Ctrl-" + key.substring(5).toUpperCase(java.util.Locale.ROOT));
+            JButton b = new JButton("Ctrl-" + key.substring(5).toUpperCase(Locale.ROOT));
             b.setName("key-" + key);
             b.setToolTipText("Press " + b.getText() + " on the vehicle (?key MAILBOX " + key + ")");
             b.addActionListener(e -> {
@@ -121,7 +125,7 @@ public final class ConsolePanel extends JPanel {
     public void update(ServiceModel m) {
         String target = m.target();
         serverState = m.mailboxes().stream().filter(s -> s.address().equals(target)).map(MailboxStatus::session)
-                .filter(java.util.Objects::nonNull).findFirst().orElse(null);
+                .filter(Objects::nonNull).findFirst().orElse(null);
         if (!target.equals(mailbox)) {
             mailbox = target;
             shownRevision = -1;
@@ -139,12 +143,12 @@ public final class ConsolePanel extends JPanel {
         if (rev != shownRevision) {
             shownRevision = rev;
             StringBuilder b = new StringBuilder();
-            String find = search.getText().strip().toLowerCase(java.util.Locale.ROOT);
+            String find = search.getText().strip().toLowerCase(Locale.ROOT);
             List<ConsoleEntry> all = model.console().entries(mailbox);
             int shown = 0;
             for (ConsoleEntry e : all) {
                 String line = ConsoleModel.text(e);
-                if (find.isEmpty() || line.toLowerCase(java.util.Locale.ROOT).contains(find)) {
+                if (find.isEmpty() || line.toLowerCase(Locale.ROOT).contains(find)) {
                     b.append(line).append('\n');
                     shown++;
                 }
@@ -160,7 +164,7 @@ public final class ConsolePanel extends JPanel {
     SessionState state() {
         SessionState s = serverState;
         for (ConsoleEntry e : model.console().entries(mailbox)) {
-            s = org.ripv.client.managers.SessionStates.apply(s, e);
+            s = SessionStates.apply(s, e);
         }
         return s;
     }

@@ -2,8 +2,12 @@ package org.ripv.client.panels;
 
 import java.awt.BorderLayout;
 import java.awt.FlowLayout;
+import java.awt.FontMetrics;
 import java.awt.Toolkit;
 import java.awt.datatransfer.StringSelection;
+import java.awt.event.KeyEvent;
+import java.io.File;
+import java.math.BigDecimal;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.List;
@@ -21,6 +25,7 @@ import javax.swing.table.AbstractTableModel;
 import javax.swing.table.TableRowSorter;
 import org.ripv.client.managers.GuiManager;
 import org.ripv.client.managers.ServiceModel;
+import org.ripv.export.TableExport;
 import org.ripv.messages.TableResult;
 
 /**
@@ -46,23 +51,14 @@ public final class DatabasePanel extends JPanel {
         setBorder(BorderFactory.createTitledBorder("DAB — query results"));
         tabs.setName("queryTabs");
 
-        JButton copy = new JButton("Copy");
-        copy.setMnemonic(java.awt.event.KeyEvent.VK_Y);
-        copy.setName("copyButton");
-        copy.setToolTipText("Copy the selected rows (all rows when none is selected) as tab-separated text");
-        copy.addActionListener(e -> copy());
-        JButton export = new JButton("Export CSV");
-        export.setMnemonic(java.awt.event.KeyEvent.VK_X);
-        export.setName("exportButton");
-        export.setToolTipText("Save this tab's table as a CSV file");
-        export.addActionListener(e -> export(false));
-        JButton json = new JButton("Export JSON");
-        json.setMnemonic(java.awt.event.KeyEvent.VK_J);
-        json.setName("exportJsonButton");
-        json.setToolTipText("Save this tab's table as JSON: numbers as numbers, NULL as null");
-        json.addActionListener(e -> export(true));
+        JButton copy = Buttons.button("Copy", KeyEvent.VK_Y, "copyButton",
+                "Copy the selected rows (all rows when none is selected) as tab-separated text", e -> copy());
+        JButton export = Buttons.button("Export CSV", KeyEvent.VK_X, "exportButton",
+                "Save this tab's table as a CSV file", e -> export(false));
+        JButton json = Buttons.button("Export JSON", KeyEvent.VK_J, "exportJsonButton",
+                "Save this tab's table as JSON: numbers as numbers, NULL as null", e -> export(true));
         JButton close = new JButton("Close");
-        close.setMnemonic(java.awt.event.KeyEvent.VK_W);
+        close.setMnemonic(KeyEvent.VK_W);
         close.setToolTipText("Close this tab");
         close.addActionListener(e -> {
             int i = tabs.getSelectedIndex();
@@ -115,7 +111,7 @@ public final class DatabasePanel extends JPanel {
         table.setAutoResizeMode(JTable.AUTO_RESIZE_OFF);
         table.setFillsViewportHeight(true);
         // Widths from the header and the first rows' text, so short tables need no dragging.
-        java.awt.FontMetrics fm = table.getFontMetrics(table.getFont());
+        FontMetrics fm = table.getFontMetrics(table.getFont());
         for (int c = 0; c < t.columns().size(); c++) {
             int w = fm.stringWidth(t.columns().get(c)) + 24;
             for (int r = 0; r < Math.min(50, t.rows().size()); r++) {
@@ -164,7 +160,7 @@ public final class DatabasePanel extends JPanel {
         TableResult r = shown.get(i);
         JFileChooser chooser = new JFileChooser();
         chooser.setDialogTitle("Export " + title(r.query()) + (json ? " as JSON" : " as CSV"));
-        chooser.setSelectedFile(new java.io.File("query-" + (i + 1) + (json ? ".json" : ".csv")));
+        chooser.setSelectedFile(new File("query-" + (i + 1) + (json ? ".json" : ".csv")));
         if (chooser.showSaveDialog(this) == JFileChooser.APPROVE_OPTION) {
             manager.save(chooser.getSelectedFile().toPath(), exported(i, json));
         }
@@ -173,7 +169,7 @@ public final class DatabasePanel extends JPanel {
     /** What Export CSV / Export JSON write for a tab ({@link org.ripv.export.TableExport}, shared with the CLI). */
     public byte[] exported(int tab, boolean json) {
         TableResult r = shown.get(tab);
-        return (json ? org.ripv.export.TableExport.json(r) : TableText.csv(r)).getBytes(StandardCharsets.UTF_8);
+        return (json ? TableExport.json(r) : TableText.csv(r)).getBytes(StandardCharsets.UTF_8);
     }
 
     /** A read-only table model over a {@link TableResult}; numeric SQL types sort as numbers. */
@@ -198,9 +194,9 @@ public final class DatabasePanel extends JPanel {
             }
         }
 
-        private static java.math.BigDecimal parse(String s) {
+        private static BigDecimal parse(String s) {
             try {
-                return new java.math.BigDecimal(s.trim());
+                return new BigDecimal(s.trim());
             } catch (NumberFormatException e) {
                 return null;
             }
@@ -223,7 +219,7 @@ public final class DatabasePanel extends JPanel {
 
         @Override
         public Class<?> getColumnClass(int column) {
-            return numeric[column] ? java.math.BigDecimal.class : String.class;
+            return numeric[column] ? BigDecimal.class : String.class;
         }
 
         @Override

@@ -1,20 +1,31 @@
 package org.ripv.client.panels;
 
 import java.awt.BorderLayout;
-import java.awt.FlowLayout;
+import java.awt.Dimension;
+import java.awt.GridLayout;
+import java.awt.event.ActionEvent;
+import java.awt.event.KeyEvent;
 import java.awt.event.MouseAdapter;
 import java.awt.event.MouseEvent;
 import java.nio.file.Path;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.Map;
+import java.util.Set;
+import javax.swing.AbstractAction;
+import javax.swing.Action;
 import javax.swing.BorderFactory;
 import javax.swing.BoxLayout;
 import javax.swing.JButton;
 import javax.swing.JFileChooser;
 import javax.swing.JLabel;
+import javax.swing.JOptionPane;
 import javax.swing.JPanel;
 import javax.swing.JProgressBar;
 import javax.swing.JScrollPane;
+import javax.swing.KeyStroke;
+import javax.swing.SwingUtilities;
+import org.ripv.client.handlers.ClientSocketHandler;
 import org.ripv.client.managers.ClientModel;
 import org.ripv.client.managers.ClientModel.FileArea;
 import org.ripv.client.managers.GuiManager;
@@ -42,36 +53,21 @@ public final class FimPanel extends JPanel {
         setName("fim");
         setBorder(BorderFactory.createTitledBorder("FIM — files on the server"));
         JScrollPane scroll = new JScrollPane(tree);
-        scroll.setPreferredSize(new java.awt.Dimension(260, 140));
+        scroll.setPreferredSize(new Dimension(260, 140));
         add(scroll, BorderLayout.CENTER);
 
-        JButton ul = new JButton("UL");
-        ul.setName("ulButton");
-        ul.setMnemonic(java.awt.event.KeyEvent.VK_U);
-        ul.setToolTipText("UL: upload a file from this computer to the server's upload directory");
-        ul.addActionListener(e -> chooseUpload());
-        JButton dl = new JButton("DL");
-        dl.setName("dlButton");
-        dl.setMnemonic(java.awt.event.KeyEvent.VK_D);
-        dl.setToolTipText("DL: download the selected file from the server to this computer");
-        dl.addActionListener(e -> chooseDownload());
-        JButton refresh = new JButton("Refresh");
-        refresh.setName("fimRefresh");
-        refresh.setMnemonic(java.awt.event.KeyEvent.VK_I);
-        refresh.setToolTipText("List the server's upload and download directories again (?ulfiles, ?dlfiles)");
-        refresh.addActionListener(e -> manager.refreshFiles());
-        JButton delete = new JButton("Delete");
-        delete.setName("deleteButton");
-        delete.setMnemonic(java.awt.event.KeyEvent.VK_T);
-        delete.setToolTipText("Delete the selected file from the server's store (?delete NAME; needs the right)");
-        delete.addActionListener(e -> confirmDelete());
-        JButton clear = new JButton("Clear done");
-        clear.setName("clearDoneButton");
-        clear.setMnemonic(java.awt.event.KeyEvent.VK_O);
-        clear.setToolTipText("Remove finished transfers from the list");
-        clear.addActionListener(e -> manager.clearFinishedTransfers());
+        JButton ul = Buttons.button("UL", KeyEvent.VK_U, "ulButton",
+                "UL: upload a file from this computer to the server's upload directory", e -> chooseUpload());
+        JButton dl = Buttons.button("DL", KeyEvent.VK_D, "dlButton",
+                "DL: download the selected file from the server to this computer", e -> chooseDownload());
+        JButton refresh = Buttons.button("Refresh", KeyEvent.VK_I, "fimRefresh",
+                "List the server's upload and download directories again (?ulfiles, ?dlfiles)", e -> manager.refreshFiles());
+        JButton delete = Buttons.button("Delete", KeyEvent.VK_T, "deleteButton",
+                "Delete the selected file from the server's store (?delete NAME; needs the right)", e -> confirmDelete());
+        JButton clear = Buttons.button("Clear done", KeyEvent.VK_O, "clearDoneButton",
+                "Remove finished transfers from the list", e -> manager.clearFinishedTransfers());
         // Two rows of buttons: one row is clipped in a quadrant of a 1280-pixel window.
-        JPanel buttons = new JPanel(new java.awt.GridLayout(0, 3, 4, 2));
+        JPanel buttons = new JPanel(new GridLayout(0, 3, 4, 2));
         buttons.add(ul);
         buttons.add(dl);
         buttons.add(delete);
@@ -79,9 +75,9 @@ public final class FimPanel extends JPanel {
         buttons.add(clear);
 
         // Enter on a downloaded file downloads it, Delete deletes: the tree works without a mouse.
-        tree.getInputMap().put(javax.swing.KeyStroke.getKeyStroke(java.awt.event.KeyEvent.VK_ENTER, 0), "ripv-download");
+        tree.getInputMap().put(KeyStroke.getKeyStroke(KeyEvent.VK_ENTER, 0), "ripv-download");
         tree.getActionMap().put("ripv-download", action(this::chooseDownload));
-        tree.getInputMap().put(javax.swing.KeyStroke.getKeyStroke(java.awt.event.KeyEvent.VK_DELETE, 0), "ripv-delete");
+        tree.getInputMap().put(KeyStroke.getKeyStroke(KeyEvent.VK_DELETE, 0), "ripv-delete");
         tree.getActionMap().put("ripv-delete", action(this::confirmDelete));
         tree.addMouseListener(new MouseAdapter() {
             @Override
@@ -100,10 +96,10 @@ public final class FimPanel extends JPanel {
         add(south, BorderLayout.SOUTH);
     }
 
-    private static javax.swing.Action action(Runnable r) {
-        return new javax.swing.AbstractAction() {
+    private static Action action(Runnable r) {
+        return new AbstractAction() {
             @Override
-            public void actionPerformed(java.awt.event.ActionEvent e) {
+            public void actionPerformed(ActionEvent e) {
                 r.run();
             }
         };
@@ -115,11 +111,11 @@ public final class FimPanel extends JPanel {
             manager.showNotice("pick a file in the FIM tree first, then Delete", true);
             return;
         }
-        int answer = javax.swing.JOptionPane.showConfirmDialog(this,
+        int answer = JOptionPane.showConfirmDialog(this,
                 "Delete " + f.entry().name() + " from the server's " + (f.area() == FileArea.UPLOAD ? "upload" : "download")
-                        + " directory, for every user?", "Delete a file on the server", javax.swing.JOptionPane.OK_CANCEL_OPTION,
-                javax.swing.JOptionPane.WARNING_MESSAGE);
-        if (answer == javax.swing.JOptionPane.OK_OPTION) {
+                        + " directory, for every user?", "Delete a file on the server", JOptionPane.OK_CANCEL_OPTION,
+                JOptionPane.WARNING_MESSAGE);
+        if (answer == JOptionPane.OK_OPTION) {
             manager.deleteFile(f.entry().name());
         }
     }
@@ -127,15 +123,15 @@ public final class FimPanel extends JPanel {
     /** The store has a file of that name: keep both, replace it, or leave it. */
     private void askAboutTakenName(Transfer t) {
         Object[] options = {"Keep both", "Replace", "Cancel"};
-        int answer = javax.swing.JOptionPane.showOptionDialog(this,
+        int answer = JOptionPane.showOptionDialog(this,
                 "The server's upload directory already has a file named " + t.name() + ".\n"
                         + "Keep both (yours is stored under a new name), replace it (needs the right), or cancel?",
-                "File exists", javax.swing.JOptionPane.DEFAULT_OPTION, javax.swing.JOptionPane.QUESTION_MESSAGE, null,
+                "File exists", JOptionPane.DEFAULT_OPTION, JOptionPane.QUESTION_MESSAGE, null,
                 options, options[0]);
         if (answer == 0) {
-            manager.upload(t.local(), org.ripv.client.handlers.ClientSocketHandler.IfExists.KEEP);
+            manager.upload(t.local(), ClientSocketHandler.IfExists.KEEP);
         } else if (answer == 1) {
-            manager.upload(t.local(), org.ripv.client.handlers.ClientSocketHandler.IfExists.REPLACE);
+            manager.upload(t.local(), ClientSocketHandler.IfExists.REPLACE);
         }
     }
 
@@ -176,7 +172,7 @@ public final class FimPanel extends JPanel {
 
     /** Repaints the transfers; on the event thread. */
     public void updateTransfers(ClientModel model) {
-        java.util.Set<Long> seen = new java.util.HashSet<>();
+        Set<Long> seen = new HashSet<>();
         for (Transfer t : model.transfers()) {
             seen.add(t.id());
             Row r = rows.computeIfAbsent(t.id(), id -> newRow(t));
@@ -184,7 +180,7 @@ public final class FimPanel extends JPanel {
             r.bar().setValue(Math.max(0, t.percent()));
             r.bar().setString(t.progressText());
             if (t.nameTaken() && isShowing() && t.claimQuestion()) {
-                javax.swing.SwingUtilities.invokeLater(() -> askAboutTakenName(t));
+                SwingUtilities.invokeLater(() -> askAboutTakenName(t));
             }
             r.label().setToolTipText(t.detail().isEmpty() ? null : t.detail());
             r.bar().setToolTipText(t.detail().isEmpty() ? null : t.detail());

@@ -1,5 +1,7 @@
 package org.ripv.client.panels;
 
+import org.ripv.failover.ServerList;
+
 /** A {@code host[:port]} as operators type it; IPv6 literals go in brackets ({@code [::1]:4444}). */
 public record HostPort(String host, int port) {
     public HostPort {
@@ -22,7 +24,7 @@ public record HostPort(String host, int port) {
             throw new IllegalArgumentException("enter a server as host or host:port");
         }
         if (t.indexOf(',') >= 0) {
-            return new HostPort(org.ripv.failover.ServerList.parse(t, defaultPort).toString(), defaultPort);
+            return new HostPort(ServerList.parse(t, defaultPort).toString(), defaultPort);
         }
         String host = t;
         String port = null;

@@ -6,7 +6,11 @@ import java.awt.FlowLayout;
 import java.awt.Graphics;
 import java.awt.Graphics2D;
 import java.awt.RenderingHints;
+import java.awt.event.ComponentAdapter;
+import java.awt.event.ComponentEvent;
+import java.awt.event.KeyEvent;
 import java.awt.image.BufferedImage;
+import java.io.File;
 import javax.swing.BorderFactory;
 import javax.swing.JButton;
 import javax.swing.JFileChooser;
@@ -38,16 +42,16 @@ public final class ImagePanel extends JPanel {
         setBorder(BorderFactory.createTitledBorder("DAV — plots"));
         canvas.setName("imageCanvas");
         fit.setName("fitButton");
-        fit.setMnemonic(java.awt.event.KeyEvent.VK_F);
+        fit.setMnemonic(KeyEvent.VK_F);
         fit.setToolTipText("Scale the plot to fit the panel");
         fit.addActionListener(e -> relayout());
         JButton in = new JButton("+");
         in.setToolTipText("Zoom in (Alt+=)");
-        in.setMnemonic(java.awt.event.KeyEvent.VK_EQUALS);
+        in.setMnemonic(KeyEvent.VK_EQUALS);
         in.addActionListener(e -> zoomBy(1.25));
         JButton out = new JButton("−");
         out.setToolTipText("Zoom out (Alt+-)");
-        out.setMnemonic(java.awt.event.KeyEvent.VK_MINUS);
+        out.setMnemonic(KeyEvent.VK_MINUS);
         out.addActionListener(e -> zoomBy(0.8));
         JButton one = new JButton("1:1");
         one.setToolTipText("Actual size");
@@ -56,11 +60,8 @@ public final class ImagePanel extends JPanel {
             fit.setSelected(false);
             relayout();
         });
-        JButton save = new JButton("Save");
-        save.setName("saveImageButton");
-        save.setMnemonic(java.awt.event.KeyEvent.VK_A);
-        save.setToolTipText("Save the JPEG on this computer");
-        save.addActionListener(e -> save());
+        JButton save = Buttons.button("Save", KeyEvent.VK_A, "saveImageButton",
+                "Save the JPEG on this computer", e -> save());
         JPanel buttons = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 0));
         buttons.add(fit);
         buttons.add(in);
@@ -71,9 +72,9 @@ public final class ImagePanel extends JPanel {
         south.add(caption, BorderLayout.CENTER);
         south.add(buttons, BorderLayout.SOUTH);
         scroll.setPreferredSize(new Dimension(420, 260));
-        scroll.addComponentListener(new java.awt.event.ComponentAdapter() {
+        scroll.addComponentListener(new ComponentAdapter() {
             @Override
-            public void componentResized(java.awt.event.ComponentEvent e) {
+            public void componentResized(ComponentEvent e) {
                 if (fit.isSelected()) {
                     relayout();
                 }
@@ -118,7 +119,7 @@ public final class ImagePanel extends JPanel {
             return;
         }
         JFileChooser chooser = new JFileChooser();
-        chooser.setSelectedFile(new java.io.File(picture.result().name()));
+        chooser.setSelectedFile(new File(picture.result().name()));
         if (chooser.showSaveDialog(this) == JFileChooser.APPROVE_OPTION) {
             manager.save(chooser.getSelectedFile().toPath(), picture.result().jpeg().clone());
         }

@@ -2,13 +2,16 @@ package org.ripv.client.panels;
 
 import java.awt.BorderLayout;
 import java.awt.Color;
+import java.awt.Component;
 import java.awt.FlowLayout;
 import java.awt.Frame;
 import java.awt.GridBagConstraints;
 import java.awt.GridBagLayout;
 import java.awt.Insets;
+import java.net.ConnectException;
 import java.util.Arrays;
 import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CompletionException;
 import java.util.prefs.Preferences;
 import javax.swing.BorderFactory;
 import javax.swing.JButton;
@@ -18,6 +21,7 @@ import javax.swing.JPanel;
 import javax.swing.JPasswordField;
 import javax.swing.JTextField;
 import javax.swing.SwingUtilities;
+import javax.swing.UIManager;
 import org.ripv.messages.SessionInfo;
 
 /**
@@ -85,7 +89,7 @@ public final class LoginDialog extends JDialog {
         setLocationRelativeTo(owner);
     }
 
-    private static void row(JPanel p, int y, String label, java.awt.Component field) {
+    private static void row(JPanel p, int y, String label, Component field) {
         GridBagConstraints c = new GridBagConstraints();
         c.gridx = 0;
         c.gridy = y;
@@ -127,15 +131,15 @@ public final class LoginDialog extends JDialog {
         }
         char[] pw = password.getPassword();
         ok.setEnabled(false);
-        message.setForeground(javax.swing.UIManager.getColor("Label.foreground"));
+        message.setForeground(UIManager.getColor("Label.foreground"));
         message.setText("connecting to " + hp + "...");
         CompletableFuture<SessionInfo> f = action.logIn(hp.host(), hp.port(), u, pw);
         Arrays.fill(pw, '\0');
         f.whenComplete((s, e) -> SwingUtilities.invokeLater(() -> {
             ok.setEnabled(true);
             if (e != null) {
-                Throwable t = e instanceof java.util.concurrent.CompletionException && e.getCause() != null ? e.getCause() : e;
-                error(t instanceof java.net.ConnectException ? "cannot reach " + hp + ": connection refused"
+                Throwable t = e instanceof CompletionException && e.getCause() != null ? e.getCause() : e;
+                error(t instanceof ConnectException ? "cannot reach " + hp + ": connection refused"
                         : t.getMessage() == null ? t.toString() : t.getMessage());
                 password.setText("");
                 password.requestFocusInWindow();

@@ -1,10 +1,14 @@
 package org.ripv.client.panels;
 
 import java.awt.BorderLayout;
+import java.awt.Dimension;
+import java.awt.GridLayout;
+import java.awt.event.KeyEvent;
 import javax.swing.BorderFactory;
 import javax.swing.JButton;
 import javax.swing.JPanel;
 import javax.swing.JScrollPane;
+import javax.swing.SwingUtilities;
 import org.ripv.client.managers.GuiManager;
 import org.ripv.client.managers.ServiceModel;
 import org.ripv.client.trees.MailboxTree;
@@ -28,28 +32,25 @@ public final class MamPanel extends JPanel {
         setBorder(BorderFactory.createTitledBorder("MAM — mailboxes"));
         tree = new MailboxTree(service, mailbox -> manager.selectMailbox(service, mailbox));
         JScrollPane scroll = new JScrollPane(tree);
-        scroll.setPreferredSize(new java.awt.Dimension(260, 120));
+        scroll.setPreferredSize(new Dimension(260, 120));
         add(scroll, BorderLayout.CENTER);
 
-        JButton refresh = new JButton("Refresh");
-        refresh.setName("mamRefresh");
-        refresh.setMnemonic(java.awt.event.KeyEvent.VK_H);
-        refresh.setToolTipText("Ask the server again for the services and their MailBoxes (?services, ?mailboxes)");
-        refresh.addActionListener(e -> manager.refreshServices());
+        JButton refresh = Buttons.button("Refresh", KeyEvent.VK_H, "mamRefresh",
+                "Ask the server again for the services and their MailBoxes (?services, ?mailboxes)", e -> manager.refreshServices());
         lock.setName("lockButton");
-        lock.setMnemonic(java.awt.event.KeyEvent.VK_L);
+        lock.setMnemonic(KeyEvent.VK_L);
         lock.setToolTipText("Hold the target MailBox for yourself so others cannot command it meanwhile (?lock)");
         lock.addActionListener(e -> manager.sendCommand(service, "?lock " + target));
         unlock.setName("unlockButton");
-        unlock.setMnemonic(java.awt.event.KeyEvent.VK_K);
+        unlock.setMnemonic(KeyEvent.VK_K);
         unlock.setToolTipText("Release your lock on the target MailBox (?unlock)");
         unlock.addActionListener(e -> manager.sendCommand(service, "?unlock " + target));
         queue.setName("queueButton");
-        queue.setMnemonic(java.awt.event.KeyEvent.VK_Q);
+        queue.setMnemonic(KeyEvent.VK_Q);
         queue.setToolTipText("The target MailBox's workflow queue and receipts: list, add (a file or written here), remove, clear");
         queue.addActionListener(e -> openWorkflows(manager));
         // Two rows, so every button shows in a narrow quadrant (1280×800) as FIM's do.
-        JPanel buttons = new JPanel(new java.awt.GridLayout(2, 2, 4, 2));
+        JPanel buttons = new JPanel(new GridLayout(2, 2, 4, 2));
         buttons.add(refresh);
         buttons.add(queue);
         buttons.add(lock);
@@ -75,7 +76,7 @@ public final class MamPanel extends JPanel {
             if (workflows != null) {
                 workflows.dispose();
             }
-            workflows = new WorkflowDialog(javax.swing.SwingUtilities.getWindowAncestor(this), manager, target);
+            workflows = new WorkflowDialog(SwingUtilities.getWindowAncestor(this), manager, target);
         }
         workflows.setVisible(true);
         workflows.toFront();

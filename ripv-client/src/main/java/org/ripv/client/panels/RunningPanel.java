@@ -1,9 +1,11 @@
 package org.ripv.client.panels;
 
 import java.awt.BorderLayout;
+import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import javax.swing.BorderFactory;
 import javax.swing.BoxLayout;
 import javax.swing.JButton;
@@ -41,7 +43,7 @@ final class RunningPanel extends JPanel {
     /** Shows the tab's running requests; on the event thread. */
     void update(ServiceModel m) {
         shown = m.running();
-        java.util.Set<Long> seen = new java.util.HashSet<>();
+        Set<Long> seen = new HashSet<>();
         for (ServiceModel.Running r : shown) {
             seen.add(r.messageId());
             Row row = rows.computeIfAbsent(r.messageId(), id -> newRow(id, r.command()));

@@ -1,7 +1,12 @@
 package org.ripv.client.panels;
 
+import java.awt.BorderLayout;
+import java.awt.Dimension;
 import javax.swing.JComponent;
 import javax.swing.JPanel;
+import javax.swing.JSplitPane;
+import org.ripv.client.charts.PlotPanel;
+import org.ripv.client.layout.Quadrants;
 import org.ripv.client.managers.ClientModel;
 import org.ripv.client.managers.GuiManager;
 import org.ripv.client.managers.ServiceModel;
@@ -15,19 +20,19 @@ import org.ripv.client.managers.ServiceModel;
  * Tab goes through them in the same order in every tab: COM, the fourth panel, MAM, FIM.
  */
 public final class ServiceLayoutPanel extends JPanel {
-    private final javax.swing.JSplitPane columns;
-    private final javax.swing.JSplitPane left;
-    private final javax.swing.JSplitPane right;
+    private final JSplitPane columns;
+    private final JSplitPane left;
+    private final JSplitPane right;
     private final String service;
     private final String kind;
     private final ComPanel com;
     private final MamPanel mam;
     private final FimPanel fim;
     private final DatabasePanel dab;
-    private final org.ripv.client.charts.PlotPanel plot;
+    private final PlotPanel plot;
     private final ImagePanel dav;
     private final ConsolePanel console;
-    private final org.ripv.client.layout.Quadrants quadrants;
+    private final Quadrants quadrants;
 
     public ServiceLayoutPanel(ServiceModel model, GuiManager manager) {
         this(model, manager, null);
@@ -35,7 +40,7 @@ public final class ServiceLayoutPanel extends JPanel {
 
     /** With {@code client} given, a service without a fourth panel gets the live console there. */
     public ServiceLayoutPanel(ServiceModel model, GuiManager manager, ClientModel client) {
-        super(new java.awt.BorderLayout());
+        super(new BorderLayout());
         this.service = model.name();
         this.kind = model.panel();
         setName("service:" + service);
@@ -43,7 +48,7 @@ public final class ServiceLayoutPanel extends JPanel {
         mam = new MamPanel(service, manager);
         fim = new FimPanel(manager);
         dab = "DAB".equals(kind) ? new DatabasePanel(service, manager) : null;
-        plot = "DAV".equals(kind) ? new org.ripv.client.charts.PlotPanel(manager) : null; // the chart, or the JPEG
+        plot = "DAV".equals(kind) ? new PlotPanel(manager) : null; // the chart, or the JPEG
         dav = plot == null ? null : plot.image();
         console = dab == null && dav == null && client != null ? new ConsolePanel(service, client, manager) : null;
         JComponent fourth = dab != null ? dab : plot != null ? plot : console;
@@ -57,20 +62,20 @@ public final class ServiceLayoutPanel extends JPanel {
             fix(fourth, 560, 260);
         }
         // Left column wider than the right; rows share the height.
-        left = fourth == null ? null : split(javax.swing.JSplitPane.VERTICAL_SPLIT, com, fourth, 0.5, "leftSplit");
-        right = split(javax.swing.JSplitPane.VERTICAL_SPLIT, mam, fim, 0.45, "rightSplit");
-        columns = split(javax.swing.JSplitPane.HORIZONTAL_SPLIT, left != null ? left : com, right, 0.65, "columnSplit");
-        add(columns, java.awt.BorderLayout.CENTER);
-        quadrants = new org.ripv.client.layout.Quadrants(this, columns, left, right, com, fourth, mam, fim);
+        left = fourth == null ? null : split(JSplitPane.VERTICAL_SPLIT, com, fourth, 0.5, "leftSplit");
+        right = split(JSplitPane.VERTICAL_SPLIT, mam, fim, 0.45, "rightSplit");
+        columns = split(JSplitPane.HORIZONTAL_SPLIT, left != null ? left : com, right, 0.65, "columnSplit");
+        add(columns, BorderLayout.CENTER);
+        quadrants = new Quadrants(this, columns, left, right, com, fourth, mam, fim);
     }
 
     /** Enlarging, maximising and restoring this tab's quadrants (View menu, Ctrl+Shift+E / M / R). */
-    public org.ripv.client.layout.Quadrants quadrants() {
+    public Quadrants quadrants() {
         return quadrants;
     }
 
-    private static javax.swing.JSplitPane split(int orientation, JComponent a, JComponent b, double weight, String name) {
-        javax.swing.JSplitPane s = new javax.swing.JSplitPane(orientation, true, a, b);
+    private static JSplitPane split(int orientation, JComponent a, JComponent b, double weight, String name) {
+        JSplitPane s = new JSplitPane(orientation, true, a, b);
         s.setName(name);
         s.setResizeWeight(weight);
         s.setOneTouchExpandable(true);
@@ -100,8 +105,8 @@ public final class ServiceLayoutPanel extends JPanel {
     }
 
     private static void fix(JComponent c, int w, int h) {
-        c.setPreferredSize(new java.awt.Dimension(w, h));
-        c.setMinimumSize(new java.awt.Dimension(w / 2, h / 2));
+        c.setPreferredSize(new Dimension(w, h));
+        c.setMinimumSize(new Dimension(w / 2, h / 2));
     }
 
 
@@ -193,7 +198,7 @@ public final class ServiceLayoutPanel extends JPanel {
     }
 
     /** The DAV panel (interactive chart, or the JPEG), or null. */
-    public org.ripv.client.charts.PlotPanel plot() {
+    public PlotPanel plot() {
         return plot;
     }
 }

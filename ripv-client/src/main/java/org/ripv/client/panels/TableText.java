@@ -2,6 +2,7 @@ package org.ripv.client.panels;
 
 import java.util.List;
 import javax.swing.JTable;
+import org.ripv.export.TableExport;
 import org.ripv.messages.TableResult;
 
 /** Renders a query's rows as CSV (RFC 4180) for export, and as tab-separated text for the clipboard. */
@@ -10,12 +11,12 @@ public final class TableText {
 
     /** The whole table, header first, CRLF line ends, SQL NULL as an empty field ({@link org.ripv.export.TableExport}). */
     public static String csv(TableResult t) {
-        return org.ripv.export.TableExport.csv(t);
+        return TableExport.csv(t);
     }
 
     /** One CSV field, quoted when it needs it. */
     public static String csvField(String v) {
-        return org.ripv.export.TableExport.field(v);
+        return TableExport.field(v);
     }
 
     /** The selected rows (all when none is selected) as TSV with a header line, in view order. */

@@ -1,16 +1,26 @@
 package org.ripv.client.panels;
 
 import java.awt.BorderLayout;
+import java.awt.Component;
+import java.awt.Container;
 import java.awt.Dimension;
 import java.awt.FlowLayout;
 import java.awt.Font;
 import java.awt.Window;
 import java.awt.event.KeyEvent;
+import java.io.IOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Collections;
+import java.util.HashSet;
 import java.util.List;
+import java.util.Set;
+import java.util.function.Consumer;
 import javax.swing.BorderFactory;
+import javax.swing.DefaultListCellRenderer;
 import javax.swing.DefaultListModel;
 import javax.swing.JButton;
+import javax.swing.JComponent;
 import javax.swing.JDialog;
 import javax.swing.JFileChooser;
 import javax.swing.JLabel;
@@ -25,6 +35,7 @@ import javax.swing.JTable;
 import javax.swing.JTextArea;
 import javax.swing.ListSelectionModel;
 import javax.swing.SpinnerNumberModel;
+import javax.swing.SwingUtilities;
 import javax.swing.UIManager;
 import javax.swing.table.AbstractTableModel;
 import org.ripv.client.handlers.ClientSocketHandler.IfExists;
@@ -71,12 +82,12 @@ public final class WorkflowDialog extends JDialog {
     private final WorkflowModel.Listener queueListener;
     private final ConsoleModel.Listener consoleListener;
     /** What "Keep both" or "Replace" does after the server said the name is taken. */
-    private java.util.function.Consumer<IfExists> retry;
+    private Consumer<IfExists> retry;
     private String lastWorkflowEntry = "";
     /** The file Add file… sent last: a refused one is opened in the editor, at the line at fault. */
     private Path sentFile;
     /** Names this window uploaded: sending one again (a mended workflow) replaces it without asking. */
-    private final java.util.Set<String> uploadedHere = new java.util.HashSet<>();
+    private final Set<String> uploadedHere = new HashSet<>();
 
     public WorkflowDialog(Window owner, GuiManager manager, String mailbox) {
         super(owner, "Workflows — " + handle(mailbox), ModalityType.MODELESS);
@@ -140,15 +151,15 @@ public final class WorkflowDialog extends JDialog {
         render();
         consoleChanged();
         refresh();
-        javax.swing.SwingUtilities.invokeLater(() -> split(tabs));
+        SwingUtilities.invokeLater(() -> split(tabs));
     }
 
     /** Receipts: the list takes 40 % once the window has its size. */
-    private static void split(java.awt.Container c) {
-        for (java.awt.Component x : c.getComponents()) {
+    private static void split(Container c) {
+        for (Component x : c.getComponents()) {
             if (x instanceof JSplitPane s && s.getOrientation() == JSplitPane.HORIZONTAL_SPLIT) {
                 s.setDividerLocation(0.4);
-            } else if (x instanceof java.awt.Container inner) {
+            } else if (x instanceof Container inner) {
                 split(inner);
             }
         }
@@ -167,14 +178,17 @@ public final class WorkflowDialog extends JDialog {
         for (int i = 0; i < widths.length; i++) {
             queueTable.getColumnModel().getColumn(i).setPreferredWidth(widths[i]);
         }
-        JButton refresh = button("Refresh", KeyEvent.VK_F, "queueRefresh", "Ask the server again (?queue, ?receipts)");
+        JButton refresh = Buttons.button("Refresh", KeyEvent.VK_F, "queueRefresh",
+                "Ask the server again (?queue, ?receipts)");
         refresh.addActionListener(e -> refresh());
-        JButton add = button("Add file…", KeyEvent.VK_A, "queueAddFile",
+        JButton add = Buttons.button("Add file…", KeyEvent.VK_A, "queueAddFile",
                 "Upload a workflow file from this computer and queue it (?queue add)");
         add.addActionListener(e -> chooseFile());
-        JButton remove = button("Remove", KeyEvent.VK_M, "queueRemove", "Remove the selected workflow (?queue remove)");
+        JButton remove = Buttons.button("Remove", KeyEvent.VK_M, "queueRemove",
+                "Remove the selected workflow (?queue remove)");
         remove.addActionListener(e -> removeSelected());
-        JButton clear = button("Clear", KeyEvent.VK_L, "queueClear", "Remove every workflow of this MailBox (?queue clear)");
+        JButton clear = Buttons.button("Clear", KeyEvent.VK_L, "queueClear",
+                "Remove every workflow of this MailBox (?queue clear)");
         clear.addActionListener(e -> {
             if (JOptionPane.showConfirmDialog(this, "Remove every workflow queued for " + handle(mailbox) + "?",
                     "Clear the queue", JOptionPane.OK_CANCEL_OPTION, JOptionPane.WARNING_MESSAGE) == JOptionPane.OK_OPTION) {
@@ -206,11 +220,11 @@ public final class WorkflowDialog extends JDialog {
     private JPanel receiptsTab() {
         receiptList.setName("receiptList");
         receiptList.setSelectionMode(ListSelectionModel.SINGLE_SELECTION);
-        receiptList.setCellRenderer(new javax.swing.DefaultListCellRenderer() {
+        receiptList.setCellRenderer(new DefaultListCellRenderer() {
             @Override
-            public java.awt.Component getListCellRendererComponent(javax.swing.JList<?> list, Object value, int index,
+            public Component getListCellRendererComponent(JList<?> list, Object value, int index,
                                                                    boolean selected, boolean focus) {
-                java.awt.Component c = super.getListCellRendererComponent(list, value, index, selected, focus);
+                Component c = super.getListCellRendererComponent(list, value, index, selected, focus);
                 if (!selected && value instanceof WorkflowModel.Receipt r && r.hadErrors()) {
                     c.setForeground(Colors.error()); // DONE_WITH_ERRORS must not read like DONE
                 }
@@ -228,7 +242,8 @@ public final class WorkflowDialog extends JDialog {
         JSplitPane split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, new JScrollPane(receiptList), new JScrollPane(receiptText));
         split.setResizeWeight(0.4);
         split.setBorder(null);
-        JButton refresh = button("Refresh", KeyEvent.VK_H, "receiptsRefresh", "Ask the server again (?receipts --last N)");
+        JButton refresh = Buttons.button("Refresh", KeyEvent.VK_H, "receiptsRefresh",
+                "Ask the server again (?receipts --last N)");
         refresh.addActionListener(e -> refresh());
         JPanel buttons = row("Last:", KeyEvent.VK_T, last, refresh);
         JPanel p = new JPanel(new BorderLayout(4, 4));
@@ -239,7 +254,7 @@ public final class WorkflowDialog extends JDialog {
     }
 
     /** A row: a label with its mnemonic, the field it names, and a button. */
-    static JPanel row(String label, int mnemonic, javax.swing.JComponent field, JButton button) {
+    static JPanel row(String label, int mnemonic, JComponent field, JButton button) {
         JLabel l = new JLabel(label);
         l.setDisplayedMnemonic(mnemonic);
         l.setLabelFor(field);
@@ -248,14 +263,6 @@ public final class WorkflowDialog extends JDialog {
         row.add(field);
         row.add(button);
         return row;
-    }
-
-    static JButton button(String text, int mnemonic, String name, String tip) {
-        JButton b = new JButton(text);
-        b.setMnemonic(mnemonic);
-        b.setName(name);
-        b.setToolTipText(tip);
-        return b;
     }
 
     /** Asks the server for the queue and the receipts. */
@@ -333,9 +340,9 @@ public final class WorkflowDialog extends JDialog {
         if (!q.refusals().isEmpty() && sentFile != null) {
             // A refused file from disk: open it in the editor to mend it there.
             try {
-                editorText(sentFile.getFileName().toString(), java.nio.file.Files.readString(sentFile));
+                editorText(sentFile.getFileName().toString(), Files.readString(sentFile));
                 tabs.setSelectedIndex(1);
-            } catch (java.io.IOException | RuntimeException e) {
+            } catch (IOException | RuntimeException e) {
                 outcome(q.outcome() + " (and " + sentFile + " cannot be read again: " + e.getMessage() + ")", true);
             }
             sentFile = null;
@@ -346,7 +353,7 @@ public final class WorkflowDialog extends JDialog {
         WorkflowModel.Receipt shown = receiptList.getSelectedValue();
         if (!receipts.isEmpty() || !q.receipts().isEmpty()) {
             List<WorkflowModel.Receipt> now = q.receipts();
-            if (!now.equals(java.util.Collections.list(receipts.elements()))) {
+            if (!now.equals(Collections.list(receipts.elements()))) {
                 receipts.clear();
                 now.forEach(receipts::addElement);
                 int keep = shown == null ? -1 : now.indexOf(shown);
@@ -354,13 +361,13 @@ public final class WorkflowDialog extends JDialog {
             }
         }
         if (!q.nameTaken().isEmpty() && retry != null && isShowing()) {
-            java.util.function.Consumer<IfExists> again = retry;
+            Consumer<IfExists> again = retry;
             retry = null;
-            javax.swing.SwingUtilities.invokeLater(() -> askAboutTakenName(q.nameTaken(), again));
+            SwingUtilities.invokeLater(() -> askAboutTakenName(q.nameTaken(), again));
         }
     }
 
-    private void askAboutTakenName(String taken, java.util.function.Consumer<IfExists> again) {
+    private void askAboutTakenName(String taken, Consumer<IfExists> again) {
         Object[] options = {"Keep both", "Replace", "Cancel"};
         int answer = JOptionPane.showOptionDialog(this, "The server's upload directory already has a file named " + taken + ".\n"
                         + "Keep both (yours is stored under a new name and that one is queued), replace it (needs the right), or cancel?",
@@ -430,7 +437,7 @@ public final class WorkflowDialog extends JDialog {
     }
 
     public List<String> refusalTexts() {
-        return java.util.Collections.list(refusals.elements()).stream().map(Object::toString).toList();
+        return Collections.list(refusals.elements()).stream().map(Object::toString).toList();
     }
 
     /** The editor line marked as refused (1-based), or 0. */
@@ -443,7 +450,7 @@ public final class WorkflowDialog extends JDialog {
     }
 
     public List<String> receiptTitles() {
-        return java.util.Collections.list(receipts.elements()).stream().map(Object::toString).toList();
+        return Collections.list(receipts.elements()).stream().map(Object::toString).toList();
     }
 
     public int queueRows() {

@@ -61,7 +61,7 @@ final class WorkflowEditor extends JPanel {
         edited();
         JScrollPane scroll = new JScrollPane(editor);
         scroll.setRowHeaderView(lineNumbers);
-        JButton button = WorkflowDialog.button("Upload and queue", KeyEvent.VK_U, "queueText",
+        JButton button = Buttons.button("Upload and queue", KeyEvent.VK_U, "queueText",
                 "Upload the text as NAME and queue it for this MailBox (?upload, then ?queue add)");
         button.addActionListener(e -> queue.run());
         JPanel top = WorkflowDialog.row("Name:", KeyEvent.VK_N, name, button);

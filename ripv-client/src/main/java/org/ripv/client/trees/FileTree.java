@@ -1,7 +1,10 @@
 package org.ripv.client.trees;
 
+import java.awt.event.MouseEvent;
 import java.text.SimpleDateFormat;
+import java.util.ArrayList;
 import java.util.Date;
+import java.util.List;
 import java.util.Locale;
 import javax.swing.JTree;
 import javax.swing.ToolTipManager;
@@ -82,8 +85,8 @@ public final class FileTree extends JTree {
     }
 
     /** Names listed under one directory. */
-    public java.util.List<String> names(FileArea area) {
-        java.util.List<String> out = new java.util.ArrayList<>();
+    public List<String> names(FileArea area) {
+        List<String> out = new ArrayList<>();
         for (int i = 0; i < root.getChildCount(); i++) {
             DefaultMutableTreeNode dir = (DefaultMutableTreeNode) root.getChildAt(i);
             if (((Dir) dir.getUserObject()).area() == area) {
@@ -112,7 +115,7 @@ public final class FileTree extends JTree {
     }
 
     @Override
-    public String getToolTipText(java.awt.event.MouseEvent e) {
+    public String getToolTipText(MouseEvent e) {
         TreePath p = getPathForLocation(e.getX(), e.getY());
         if (p != null && p.getLastPathComponent() instanceof DefaultMutableTreeNode n) {
             if (n.getUserObject() instanceof File f) {

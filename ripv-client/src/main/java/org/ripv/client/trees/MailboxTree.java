@@ -1,21 +1,24 @@
 package org.ripv.client.trees;
 
+import java.awt.event.MouseEvent;
+import java.time.Instant;
+import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 import java.util.function.Consumer;
-import javax.swing.JTree;
-import javax.swing.ToolTipManager;
 import javax.swing.tree.DefaultMutableTreeNode;
 import javax.swing.tree.DefaultTreeModel;
 import javax.swing.tree.TreePath;
-import javax.swing.tree.TreeSelectionModel;
+import org.ripv.client.managers.ConsoleModel;
 import org.ripv.messages.MailboxStatus;
+import org.ripv.messages.SessionState;
 
 /**
  * The MAM panel's tree (thesis 4.1.3.2): the service at the root, one node per MailBox, each
  * showing its handle and whether it is available, busy or locked. Picking a MailBox makes it the
  * COM panel's target (the GuiManager then asks {@code ?status}).
  */
-public final class MailboxTree extends JTree {
+public final class MailboxTree extends TickingTree {
     private final DefaultMutableTreeNode root;
     private final DefaultTreeModel treeModel;
     private final String service;
@@ -37,7 +40,7 @@ public final class MailboxTree extends JTree {
                 s += "  [locked by " + status.lockedBy() + "]";
             }
             if (status.session() != null) {
-                s += "  " + org.ripv.client.managers.ConsoleModel.badge(status.session(), java.time.Instant.now());
+                s += "  " + ConsoleModel.badge(status.session(), Instant.now());
             }
             return s;
         }
@@ -45,17 +48,13 @@ public final class MailboxTree extends JTree {
 
     /** @param onSelect told of the full address of the MailBox the operator picked */
     public MailboxTree(String service, Consumer<String> onSelect) {
+        super("mailboxTree");
         this.service = service;
         this.root = new DefaultMutableTreeNode(service);
         this.treeModel = new DefaultTreeModel(root);
         setModel(treeModel);
-        setName("mailboxTree");
-        getSelectionModel().setSelectionMode(TreeSelectionModel.SINGLE_TREE_SELECTION);
-        ToolTipManager.sharedInstance().registerComponent(this);
         addTreeSelectionListener(e -> {
-            if (!rebuilding && e.getNewLeadSelectionPath() != null
-                    && e.getNewLeadSelectionPath().getLastPathComponent() instanceof DefaultMutableTreeNode n
-                    && n.getUserObject() instanceof Item item) {
+            if (!rebuilding && picked(e) instanceof Item item) {
                 onSelect.accept(item.status().address());
             }
         });
@@ -88,7 +87,7 @@ public final class MailboxTree extends JTree {
 
     /** The handles shown, in order. */
     public List<String> handles() {
-        java.util.List<String> out = new java.util.ArrayList<>();
+        List<String> out = new ArrayList<>();
         for (int i = 0; i < root.getChildCount(); i++) {
             out.add(((Item) ((DefaultMutableTreeNode) root.getChildAt(i)).getUserObject()).handle());
         }
@@ -109,47 +108,28 @@ public final class MailboxTree extends JTree {
 
     /** "on call, last contact 2026-…Z, at 41.63323, -70.53647, 3 calls this run": a vehicle node's tooltip. */
     public static String sessionTip(MailboxStatus s) {
-        org.ripv.messages.SessionState st = s.session();
+        SessionState st = s.session();
         if (st == null) {
             return "";
         }
         StringBuilder b = new StringBuilder(st.state().words());
         if (st.lastContact() > 0) {
-            b.append(", last contact ").append(java.time.Instant.ofEpochMilli(st.lastContact()));
+            b.append(", last contact ").append(Instant.ofEpochMilli(st.lastContact()));
         }
         if (st.hasPosition()) {
-            b.append(String.format(java.util.Locale.ROOT, ", at %.5f, %.5f", st.lat(), st.lon()));
+            b.append(String.format(Locale.ROOT, ", at %.5f, %.5f", st.lat(), st.lon()));
         }
         return b.append(", ").append(st.calls()).append(st.calls() == 1 ? " call" : " calls").append(" this run").toString();
     }
 
     /** Re-words every node, so times since last contact stay current. */
+    @Override
     public void tick() {
-        int[] idx = new int[root.getChildCount()];
-        for (int k = 0; k < idx.length; k++) {
-            idx[k] = k;
-        }
-        if (idx.length > 0) {
-            treeModel.nodesChanged(root, idx);
-        }
-    }
-
-    private final javax.swing.Timer ticker = new javax.swing.Timer(30_000, e -> tick());
-
-    @Override
-    public void addNotify() {
-        super.addNotify();
-        ticker.start();
+        childrenChanged(treeModel, root);
     }
 
     @Override
-    public void removeNotify() {
-        ticker.stop();
-        super.removeNotify();
-    }
-
-    @Override
-    public String getToolTipText(java.awt.event.MouseEvent e) {
+    public String getToolTipText(MouseEvent e) {
         TreePath p = getPathForLocation(e.getX(), e.getY());
         if (p != null && p.getLastPathComponent() instanceof DefaultMutableTreeNode n && n.getUserObject() instanceof Item i) {
             MailboxStatus s = i.status();

@@ -1,14 +1,18 @@
 package org.ripv.client.trees;
 
+import java.awt.event.MouseEvent;
+import java.time.Instant;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.BiConsumer;
 import java.util.function.Consumer;
-import javax.swing.JTree;
-import javax.swing.ToolTipManager;
 import javax.swing.tree.DefaultMutableTreeNode;
 import javax.swing.tree.DefaultTreeModel;
 import javax.swing.tree.TreePath;
-import javax.swing.tree.TreeSelectionModel;
 import org.ripv.client.managers.ClientModel;
+import org.ripv.client.managers.ConsoleModel;
 import org.ripv.client.managers.ServiceModel;
+import org.ripv.messages.MailboxStatus;
 import org.ripv.messages.ServiceDescriptor;
 
 /**
@@ -16,7 +20,7 @@ import org.ripv.messages.ServiceDescriptor;
  * root, one node per service with its description as a tooltip. Picking a service brings its
  * tab to the front. Rebuilt from the {@link ClientModel} on the event thread.
  */
-public final class ServiceTree extends JTree {
+public final class ServiceTree extends TickingTree {
     private final DefaultMutableTreeNode root = new DefaultMutableTreeNode("RIPVServer");
     private final DefaultTreeModel treeModel = new DefaultTreeModel(root);
     private boolean rebuilding;
@@ -30,68 +34,41 @@ public final class ServiceTree extends JTree {
      * @param onSelect  told of the service the operator picked
      * @param onVehicle told of the service and MailBox when the operator picks a vehicle under a service
      */
-    public ServiceTree(Consumer<String> onSelect, java.util.function.BiConsumer<String, String> onVehicle) {
+    public ServiceTree(Consumer<String> onSelect, BiConsumer<String, String> onVehicle) {
+        super("serviceTree");
         setModel(treeModel);
-        setName("serviceTree");
         setRootVisible(true);
-        getSelectionModel().setSelectionMode(TreeSelectionModel.SINGLE_TREE_SELECTION);
-        ToolTipManager.sharedInstance().registerComponent(this);
         addTreeSelectionListener(e -> {
-            if (!rebuilding && e.getNewLeadSelectionPath() != null
-                    && e.getNewLeadSelectionPath().getLastPathComponent() instanceof DefaultMutableTreeNode n
-                    && n.getUserObject() instanceof Item item) {
+            Object picked = rebuilding ? null : picked(e);
+            if (picked instanceof Item item) {
                 onSelect.accept(item.descriptor().name());
-            } else if (!rebuilding && e.getNewLeadSelectionPath() != null
-                    && e.getNewLeadSelectionPath().getLastPathComponent() instanceof DefaultMutableTreeNode n
-                    && n.getUserObject() instanceof Vehicle v) {
+            } else if (picked instanceof Vehicle v) {
                 onVehicle.accept(v.service(), v.status().address());
             }
         });
-        // "last contact N min ago" moves on by itself.
-        ticker = new javax.swing.Timer(30_000, e -> tick());
     }
-
-    private final javax.swing.Timer ticker;
 
     /**
      * A vehicle MailBox under its service (one whose server state is known: it has published
      * console events): its handle, state badge and time since last contact.
      */
-    public record Vehicle(String service, org.ripv.messages.MailboxStatus status) {
+    public record Vehicle(String service, MailboxStatus status) {
         public String handle() {
             return status.address().startsWith(service) ? status.address().substring(service.length()) : status.address();
         }
 
         @Override
         public String toString() {
-            return handle() + "  " + org.ripv.client.managers.ConsoleModel.badge(status.session(), java.time.Instant.now());
+            return handle() + "  " + ConsoleModel.badge(status.session(), Instant.now());
         }
     }
 
     /** Re-words every node, so times since last contact stay current. */
+    @Override
     public void tick() {
         for (int i = 0; i < root.getChildCount(); i++) {
-            javax.swing.tree.TreeNode n = root.getChildAt(i);
-            int[] idx = new int[n.getChildCount()];
-            for (int k = 0; k < idx.length; k++) {
-                idx[k] = k;
-            }
-            if (idx.length > 0) {
-                treeModel.nodesChanged(n, idx);
-            }
+            childrenChanged(treeModel, root.getChildAt(i));
         }
-    }
-
-    @Override
-    public void addNotify() {
-        super.addNotify();
-        ticker.start();
-    }
-
-    @Override
-    public void removeNotify() {
-        ticker.stop();
-        super.removeNotify();
     }
 
     /** A service node; shows as its name. */
@@ -111,14 +88,14 @@ public final class ServiceTree extends JTree {
             root.setUserObject(model.server().isEmpty() ? "RIPVServer" : "RIPVServer " + model.server());
             root.removeAllChildren();
             DefaultMutableTreeNode keep = null;
-            java.util.List<DefaultMutableTreeNode> withVehicles = new java.util.ArrayList<>();
+            List<DefaultMutableTreeNode> withVehicles = new ArrayList<>();
             for (ServiceModel s : model.services()) {
                 DefaultMutableTreeNode n = new DefaultMutableTreeNode(new Item(s.descriptor()), true);
                 root.add(n);
                 if (s.name().equals(selected)) {
                     keep = n;
                 }
-                for (org.ripv.messages.MailboxStatus m : s.mailboxes()) {
+                for (MailboxStatus m : s.mailboxes()) {
                     if (m.session() != null) {
                         DefaultMutableTreeNode v = new DefaultMutableTreeNode(new Vehicle(s.name(), m), false);
                         n.add(v);
@@ -181,8 +158,8 @@ public final class ServiceTree extends JTree {
     }
 
     /** The vehicle nodes' words under a service, in order ("ru29  ● on call · last contact 3 min ago"). */
-    public java.util.List<String> vehicles(String service) {
-        java.util.List<String> out = new java.util.ArrayList<>();
+    public List<String> vehicles(String service) {
+        List<String> out = new ArrayList<>();
         for (int i = 0; i < root.getChildCount(); i++) {
             DefaultMutableTreeNode n = (DefaultMutableTreeNode) root.getChildAt(i);
             if (((Item) n.getUserObject()).descriptor().name().equals(service)) {
@@ -195,8 +172,8 @@ public final class ServiceTree extends JTree {
     }
 
     /** The services shown, in order. */
-    public java.util.List<String> services() {
-        java.util.List<String> names = new java.util.ArrayList<>();
+    public List<String> services() {
+        List<String> names = new ArrayList<>();
         for (int i = 0; i < root.getChildCount(); i++) {
             names.add(((Item) ((DefaultMutableTreeNode) root.getChildAt(i)).getUserObject()).descriptor().name());
         }
@@ -204,7 +181,7 @@ public final class ServiceTree extends JTree {
     }
 
     @Override
-    public String getToolTipText(java.awt.event.MouseEvent e) {
+    public String getToolTipText(MouseEvent e) {
         TreePath p = getPathForLocation(e.getX(), e.getY());
         if (p != null && p.getLastPathComponent() instanceof DefaultMutableTreeNode n && n.getUserObject() instanceof Item i) {
             ServiceDescriptor d = i.descriptor();

@@ -28,6 +28,9 @@ public final class LaunchedWeb implements AutoCloseable {
     public final int http;
     private final LaunchedProcesses processes;
     private final java.util.concurrent.atomic.AtomicInteger browsers = new java.util.concurrent.atomic.AtomicInteger();
+    private String[] serverArgs;
+    private Process server;
+    private int restarts;
 
     /** Users as NAME:ROLES (each with {@link WebConsoleBrowserTest#PASSWORD}); extra permit lines appended after them. */
     public LaunchedWeb(Path dir, List<String> users, List<String> permitLines, String... serverOptions) throws Exception {
@@ -50,7 +53,27 @@ public final class LaunchedWeb implements AutoCloseable {
         List<String> args = new ArrayList<>(List.of("-jar", jar("ripv-server"), "server", "--data", data.toString(), "--port",
                 String.valueOf(port), "--registry-port", String.valueOf(registry), "--http-port", String.valueOf(http), "--bind", "127.0.0.1"));
         args.addAll(List.of(serverOptions));
-        launch("server", null, args.toArray(String[]::new));
+        serverArgs = args.toArray(String[]::new);
+        server = launch("server", null, serverArgs);
+        waitForWebConsole();
+    }
+
+    /** Stops the server (as a restart does: SIGTERM, then forcibly after 10 s) and starts it again on the same data and ports. */
+    public void restartServer() throws Exception {
+        server.destroy();
+        if (!server.waitFor(10, java.util.concurrent.TimeUnit.SECONDS)) {
+            server.destroyForcibly().waitFor();
+        }
+        server = launch("server-" + (++restarts + 1), null, serverArgs);
+        waitForWebConsole();
+    }
+
+    /** The log of the server running now. */
+    public String serverLog() {
+        return log(restarts == 0 ? "server" : "server-" + (restarts + 1));
+    }
+
+    private void waitForWebConsole() throws InterruptedException {
         waitFor("the server's web console", () -> {
             try (Socket s = new Socket(InetAddress.getLoopbackAddress(), http)) {
                 return true;

@@ -17,17 +17,20 @@ import org.ripv.server.security.Logins;
  */
 public final class ClientDispatch implements SocketHandler.Dispatcher {
     private final Logins logins;
+    private final Predicate<String> beforeLogin;
     private final WaitingRequests waiting;
     private final Predicate<IncomingServerMessage> postOffice;
     private final Consumer<SocketHandler> closed;
 
     /**
+     * @param beforeLogin the lines served before log-in (the command table's {@code ?help} and {@code ?ping})
      * @param postOffice delivers a request to the RIPV Post Office; false when it is full
      * @param closed     forgets a closed connection everywhere it left state (pending requests, uploads, locks…)
      */
-    public ClientDispatch(Logins logins, WaitingRequests waiting, Predicate<IncomingServerMessage> postOffice,
-                          Consumer<SocketHandler> closed) {
+    public ClientDispatch(Logins logins, Predicate<String> beforeLogin, WaitingRequests waiting,
+                          Predicate<IncomingServerMessage> postOffice, Consumer<SocketHandler> closed) {
         this.logins = logins;
+        this.beforeLogin = beforeLogin;
         this.waiting = waiting;
         this.postOffice = postOffice;
         this.closed = closed;
@@ -41,7 +44,7 @@ public final class ClientDispatch implements SocketHandler.Dispatcher {
             logins.loginLater(client, request); // PBKDF2 on the log-in pool, never on this selector thread
             return;
         }
-        if (!client.isLoggedIn() && !body.equals("?help") && !body.equals("?ping")) {
+        if (!client.isLoggedIn() && !beforeLogin.test(body)) {
             client.send(request.reply(Footer.error(Ids.FID_LOGIN, ErrorCode.NOT_LOGGED_IN,
                     "log in first (?login USER with the password), then send '" + Header.abbreviate(body) + "'")));
             return;

@@ -23,6 +23,8 @@ import org.ripv.server.session.ConsoleHub;
 import org.ripv.server.session.Outlet;
 import org.ripv.server.session.Rights;
 import org.ripv.server.store.StateStore;
+import org.ripv.server.surfacing.SurfacingCommands;
+import org.ripv.server.surfacing.Surfacings;
 import org.ripv.wire.FrameCodec;
 
 /**
@@ -36,8 +38,8 @@ public final class ServerSessions implements AutoCloseable {
     private final Notifier notifier;
     private final ConsoleCommands consoleCommands;
     private final NotifyCommands notifyCommands;
-    private final org.ripv.server.surfacing.Surfacings surfacings;
-    private final org.ripv.server.surfacing.SurfacingCommands surfacingCommands;
+    private final Surfacings surfacings;
+    private final SurfacingCommands surfacingCommands;
     private LockExpiries lockExpiries;
 
     public ServerSessions(Path dataDir, StateStore store, SessionOptions options, Supplier<PermitFile> permits,
@@ -52,9 +54,9 @@ public final class ServerSessions implements AutoCloseable {
                 ServerReplies.SERVICE);
         notifyCommands = new NotifyCommands(notifier, ServerReplies.SERVICE);
         // Every surface dialog becomes a call record, alerts and overdue calls (docs/surfacings.md).
-        surfacings = new org.ripv.server.surfacing.Surfacings(store, dataDir.resolve("surfacing-alerts.conf"), console::serverEntry);
+        surfacings = new Surfacings(store, dataDir.resolve("surfacing-alerts.conf"), console::serverEntry);
         console.onTaken(surfacings::accept);
-        surfacingCommands = new org.ripv.server.surfacing.SurfacingCommands(surfacings, permits, ServerReplies.SERVICE);
+        surfacingCommands = new SurfacingCommands(surfacings, permits, ServerReplies.SERVICE);
     }
 
     /** Counts the replies a watch sends itself (they do not pass the Post Office's outbox) as final (issue 33 item 10). */
@@ -123,11 +125,11 @@ public final class ServerSessions implements AutoCloseable {
         return notifyCommands;
     }
 
-    public org.ripv.server.surfacing.SurfacingCommands surfacingCommands() {
+    public SurfacingCommands surfacingCommands() {
         return surfacingCommands;
     }
 
-    public org.ripv.server.surfacing.Surfacings surfacings() {
+    public Surfacings surfacings() {
         return surfacings;
     }
 

@@ -10,9 +10,20 @@ import org.ripv.server.requests.ServerReplies;
 /**
  * One run of a server command: the request, the command it names, the line's words (word 0 is
  * the command; a vehicle name already replaced by its MailBox's address) and, for a gated
- * command, the user as the permit file knows them.
+ * command, the user as the permit file knows them; for a command with options, the line parsed
+ * into its options object ({@link ServerCommand#options}).
  */
-public record Call(IncomingServerMessage request, ServerCommand command, String[] words, PermitFile.User user) {
+public record Call(IncomingServerMessage request, ServerCommand command, String[] words, PermitFile.User user, Object options) {
+    /** A call of a command without options. */
+    public Call(IncomingServerMessage request, ServerCommand command, String[] words, PermitFile.User user) {
+        this(request, command, words, user, null);
+    }
+
+    /** The line as the command's options class read it. */
+    public <T> T options(Class<T> type) {
+        return type.cast(options);
+    }
+
     /** Who sent it. */
     public String userName() {
         return request.header().origin().user();

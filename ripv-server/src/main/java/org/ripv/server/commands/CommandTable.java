@@ -30,6 +30,11 @@ public final class CommandTable {
         return Optional.ofNullable(commands.get(word.toLowerCase(Locale.ROOT)));
     }
 
+    /** Whether a line is served to a connection before log-in: the bare word of such a command. */
+    public boolean servedBeforeLogin(String line) {
+        return find(line.trim()).map(ServerCommand::beforeLogin).orElse(false);
+    }
+
     public Collection<ServerCommand> all() {
         return commands.values();
     }

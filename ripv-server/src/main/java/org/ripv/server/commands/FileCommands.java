@@ -9,6 +9,7 @@ import org.ripv.messages.FileData;
 import org.ripv.messages.FileListing;
 import org.ripv.messages.IncomingServerMessage;
 import org.ripv.messages.OutgoingServerMessage;
+import org.ripv.server.files.DownloadChunk;
 import org.ripv.server.files.DownloadRights;
 import org.ripv.server.files.FileStore;
 import org.ripv.server.files.ToVehicleFolder;
@@ -107,9 +108,9 @@ final class FileCommands {
         DownloadRights.check(files, permits.get(), c.userName(), w[1]);
         long offset = Call.number(w[2], "OFFSET");
         int length = (int) Math.min(MAX_DOWNLOAD_CHUNK, Call.number(w[3], "LENGTH"));
-        Object[] chunk = files.readDownload(w[1], offset, length);
-        byte[] data = (byte[]) chunk[1];
-        long total = (Long) chunk[0];
+        DownloadChunk chunk = files.readDownload(w[1], offset, length);
+        byte[] data = chunk.data();
+        long total = chunk.total();
         return c.ok("bytes " + offset + ".." + (offset + data.length) + " of " + total + " of " + w[1],
                 new FileData(w[1], offset, total, data));
     }

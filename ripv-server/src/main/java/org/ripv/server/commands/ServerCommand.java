@@ -1,13 +1,28 @@
 package org.ripv.server.commands;
 
 import java.io.IOException;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.function.Supplier;
 import org.ripv.messages.OutgoingServerMessage;
+import picocli.CommandLine;
+import picocli.CommandLine.Model.ArgSpec;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Model.OptionSpec;
+import picocli.CommandLine.Model.PositionalParamSpec;
+import picocli.CommandLine.ParameterException;
 
 /**
  * One of the server's own {@code ?} commands, named once: its word, FID, usage and help (what
- * {@code ?help} lists, and what the clients complete from it), whether the permit file must allow
- * it first ({@code gated}: a rule for service RIPVServer whose command pattern matches the line),
- * where it runs, and what it does.
+ * {@code ?help} lists, and what the clients complete from it), its options, whether the permit
+ * file must allow it first ({@code gated}: a rule for service RIPVServer whose command pattern
+ * matches the line), where it runs, and what it does.
+ *
+ * <p>A command with {@code options} declares its words after the command word as a picocli class
+ * ({@code @Parameters} and {@code @Option} fields): the line is parsed into a fresh instance before
+ * the handler runs ({@link Call#options}), a bad line is refused with picocli's own words and the
+ * usage, and the usage {@code ?help} shows is written from the same class.
  *
  * @param word    the command word, lower case ({@code ?lock})
  * @param fid     the FID its replies carry
@@ -16,8 +31,11 @@ import org.ripv.messages.OutgoingServerMessage;
  * @param gated   the permit file must allow the whole line for RIPVServer before it runs
  * @param runs    on the Post Office's thread, or on the file workers (disk work)
  * @param handler what it does
+ * @param options makes a fresh picocli-annotated object for the words after the command word, or null
+ * @param beforeLogin the bare word is served to a connection that has not logged in yet ({@code ?help}, {@code ?ping})
  */
-public record ServerCommand(String word, String fid, String usage, String help, boolean gated, Runs runs, Handler handler) {
+public record ServerCommand(String word, String fid, String usage, String help, boolean gated, Runs runs, Handler handler,
+                            Supplier<?> options, boolean beforeLogin) {
     /** Where a command runs. */
     public enum Runs {
         /** On the Post Office's thread: quick, or hands its work to a pool of its own. */
@@ -39,16 +57,86 @@ public record ServerCommand(String word, String fid, String usage, String help, 
 
     /** A command that runs at once and needs no right but log-in. */
     public static ServerCommand open(String word, String fid, String usage, String help, Handler handler) {
-        return new ServerCommand(word, fid, usage, help, false, Runs.AT_ONCE, handler);
+        return new ServerCommand(word, fid, usage, help, false, Runs.AT_ONCE, handler, null, false);
+    }
+
+    /**
+     * A command whose words after the command word are the picocli class {@code options} makes;
+     * its usage is written from that class.
+     */
+    public static ServerCommand parsed(String word, String fid, Supplier<?> options, String help, Handler handler) {
+        return new ServerCommand(word, fid, usage(word, options), help, false, Runs.AT_ONCE, handler, options, false);
     }
 
     /** The same command, gated by the permit file. */
     public ServerCommand needsRight() {
-        return new ServerCommand(word, fid, usage, help, true, runs, handler);
+        return new ServerCommand(word, fid, usage, help, true, runs, handler, options, beforeLogin);
     }
 
     /** The same command, run on the file workers. */
     public ServerCommand onFileWork() {
-        return new ServerCommand(word, fid, usage, help, gated, Runs.FILE_WORK, handler);
+        return new ServerCommand(word, fid, usage, help, gated, Runs.FILE_WORK, handler, options, beforeLogin);
+    }
+
+    /** The same command, its bare word served before log-in. */
+    public ServerCommand servedBeforeLogin() {
+        return new ServerCommand(word, fid, usage, help, gated, runs, handler, options, true);
+    }
+
+    /** The options (as {@code --last}) {@code ?help} shows for this command: what the clients complete. */
+    public List<String> optionNames() {
+        if (options == null) {
+            return List.of();
+        }
+        return spec(options.get()).options().stream().map(OptionSpec::longestName).toList();
+    }
+
+    /**
+     * The words after the command word, parsed into a fresh options object; null for a command
+     * without options.
+     *
+     * @throws IllegalArgumentException picocli's reason and the usage
+     */
+    Object parse(String[] words) {
+        if (options == null) {
+            return null;
+        }
+        Object parsed = options.get();
+        CommandLine line = new CommandLine(spec(parsed));
+        try {
+            line.parseArgs(Arrays.copyOfRange(words, 1, words.length));
+        } catch (ParameterException e) {
+            throw new IllegalArgumentException(e.getMessage() + "; usage: " + usage, e);
+        }
+        return parsed;
+    }
+
+    /**
+     * A line from a client is hostile: no {@code @file} expansion (it would read the server's
+     * disk), no abbreviations, options in any case as the command words are.
+     */
+    private static CommandSpec spec(Object options) {
+        CommandSpec spec = CommandSpec.forAnnotatedObject(options);
+        spec.parser().expandAtFiles(false).abbreviatedOptionsAllowed(false).caseInsensitiveEnumValuesAllowed(true);
+        spec.optionsCaseInsensitive(true);
+        return spec;
+    }
+
+    /** {@code ?history MAILBOX [--last N] [--since ISO-TIME]}: the word, the positional words, then the options. */
+    private static String usage(String word, Supplier<?> options) {
+        CommandSpec spec = CommandSpec.forAnnotatedObject(options.get());
+        List<String> parts = new ArrayList<>(List.of(word));
+        for (PositionalParamSpec p : spec.positionalParameters()) {
+            parts.add(p.required() ? label(p) : "[" + label(p) + "]");
+        }
+        for (OptionSpec o : spec.options()) {
+            String text = o.longestName() + (o.arity().max() > 0 ? " " + label(o) : "");
+            parts.add(o.required() ? text : "[" + text + "]");
+        }
+        return String.join(" ", parts);
+    }
+
+    private static String label(ArgSpec a) {
+        return a.paramLabel().replaceAll("^<|>$", "");
     }
 }

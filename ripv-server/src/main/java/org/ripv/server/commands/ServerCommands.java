@@ -31,6 +31,7 @@ import org.ripv.server.requests.ServerReplies;
 import org.ripv.server.security.LoginThrottle;
 import org.ripv.server.security.SecurityCommands;
 import org.ripv.server.services.ServiceRegistry;
+import org.ripv.server.session.ConsoleCommands;
 import org.ripv.server.session.ConsoleHub;
 import org.ripv.server.store.AuditCommand;
 import org.ripv.server.store.AuditTrail;
@@ -39,6 +40,8 @@ import org.ripv.server.surfacing.SurfacingCommands;
 import org.ripv.server.vehicles.MailboxArgument;
 import org.ripv.server.vehicles.VehicleNames;
 import org.ripv.server.workflow.Workflows;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
 
 /**
  * The server's own {@code ?} commands (Appendix B and docs/protocol.md): {@link #table} names
@@ -80,8 +83,10 @@ public final class ServerCommands {
 
     /**
      * Every server command, in the order {@code ?help} lists them. To add one: a line here (word,
-     * FID from {@link Ids}, usage, help, {@code .needsRight()} when the permit file must allow it,
-     * {@code .onFileWork()} when it touches the disk) and its handler, best in a class of its own.
+     * FID from {@link Ids}, usage — or, for a command with options, {@code parsed} and its picocli
+     * options class, from which the usage is written — help, {@code .needsRight()} when the permit
+     * file must allow it, {@code .onFileWork()} when it touches the disk) and its handler, best in a
+     * class of its own.
      */
     private CommandTable table(Executor checkers) {
         FileCommands files = new FileCommands(parts.files(), parts.permits());
@@ -89,8 +94,9 @@ public final class ServerCommands {
                 parts.workflows()::lockReleased);
         ServiceQueries queries = parts.queries();
         return new CommandTable()
-                .add(ServerCommand.open("?help", Ids.FID_HELP, "?help", "this list", c -> c.ok(this.table.help(), null)))
-                .add(ServerCommand.open("?ping", Ids.FID_PING, "?ping", "answers pong", c -> c.ok("pong", null)))
+                .add(ServerCommand.open("?help", Ids.FID_HELP, "?help", "this list", c -> c.ok(this.table.help(), null))
+                        .servedBeforeLogin())
+                .add(ServerCommand.open("?ping", Ids.FID_PING, "?ping", "answers pong", c -> c.ok("pong", null)).servedBeforeLogin())
                 .add(ServerCommand.open("?whoami", Ids.FID_WHOAMI, "?whoami", "your client id, user and roles", this::whoami))
                 .add(ServerCommand.open("?dldir", Ids.FID_DLDIR, "?dldir", "the download directory (files from services)",
                         files::dldir))
@@ -133,19 +139,23 @@ public final class ServerCommands {
                 .add(ServerCommand.open("?queue", Ids.FID_QUEUE, "?queue MAILBOX | add MAILBOX NAME [--typed] | remove MAILBOX ID | clear MAILBOX",
                         "the workflows queued for a vehicle's next call (docs/workflows.md)",
                         c -> parts.workflows().queueCommand(c.request())).onFileWork())
-                .add(ServerCommand.open("?receipts", Ids.FID_RECEIPTS, "?receipts MAILBOX [--last N]",
-                        "what the last workflow runs did", c -> parts.workflows().receiptsCommand(c.request())).onFileWork())
+                .add(ServerCommand.parsed("?receipts", Ids.FID_RECEIPTS, Workflows.ReceiptOptions::new,
+                        "what the last workflow runs did", c -> parts.workflows().receiptsCommand(c.request(),
+                                c.options(Workflows.ReceiptOptions.class))).onFileWork())
                 .add(ServerCommand.open("?plan", Ids.FID_PLAN,
-                        "?plan MAILBOX check FILE | send FILE [as NAME] | set NAME VALUE | forecast FILE [SPEED]",
-                        "check a Slocum behaviour file (.ma), send it on the next call, queue a put, or forecast its legs (docs/plans.md)",
+                        "?plan MAILBOX check FILE | send FILE [as NAME] | set NAME VALUE | forecast FILE [SPEED] | save FILE [as NAME]"
+                                + " | history NAME [N] | current",
+                        "check a Slocum behaviour file (.ma), send it on the next call, queue a put, forecast its legs, keep its versions,"
+                                + " or show the goto list the glider runs (docs/plans.md)",
                         c -> parts.plans().planCommand(c.request())).onFileWork())
                 .add(ServerCommand.open("?changes", Ids.FID_CHANGES, "?changes [MAILBOX]",
-                        "each change sent to a vehicle: queued, sent, received, in effect or not",
+                        "each change sent to a vehicle: queued, sent, received, in effect or not, or cancelled",
                         c -> parts.plans().changesCommand(c.request())).onFileWork())
-                .add(ServerCommand.open("?surfacings", Ids.FID_SURFACINGS, SurfacingCommands.usage(),
+                .add(ServerCommand.parsed("?surfacings", Ids.FID_SURFACINGS, SurfacingCommands.Options::new,
                         "its call records: one per surfacing (docs/surfacings.md)",
-                        c -> parts.sessions().surfacingCommands().run(c.request(), c.command().fid(), c.words())).onFileWork())
-                .add(ServerCommand.open("?dac", Ids.FID_DAC, "?dac MAILBOX [GLIDER] [--json]",
+                        c -> parts.sessions().surfacingCommands().run(c.request(), c.command().fid(),
+                                c.options(SurfacingCommands.Options.class))).onFileWork())
+                .add(ServerCommand.parsed("?dac", Ids.FID_DAC, Dac::new,
                         "a DatabaseServer's DAC deliveries: profiles, QC, what was pushed, what failed and why (docs/dac.md)", this::dac))
                 .add(ServerCommand.open("?cancel", Ids.FID_CANCEL, "?cancel MESSAGE-ID [CLIENT-ID]",
                         "stop a request that is queued or running", c -> {
@@ -157,12 +167,14 @@ public final class ServerCommands {
                 .add(ServerCommand.open("?watch", Ids.FID_WATCH, "?watch MAILBOX", "follow a MailBox's console: lines, commands, events",
                         this::consoleCommand))
                 .add(ServerCommand.open("?unwatch", Ids.FID_UNWATCH, "?unwatch MAILBOX", "stop following it", this::consoleCommand))
-                .add(ServerCommand.open("?history", Ids.FID_HISTORY, "?history MAILBOX [--last N] [--since ISO-TIME]", "its transcript",
-                        this::consoleCommand).onFileWork())
+                .add(ServerCommand.parsed("?history", Ids.FID_HISTORY, ConsoleCommands.History::new, "its transcript",
+                        c -> parts.sessions().consoleCommands().history(c.request(), c.command().fid(),
+                                c.options(ConsoleCommands.History.class))).onFileWork())
                 .add(ServerCommand.open("?notify", Ids.FID_NOTIFY, "?notify add|list|remove ...", "e-mail or webhook on vehicle events",
                         c -> parts.sessions().notifyCommands().run(c.request(), c.command().fid(), c.words())).onFileWork())
-                .add(ServerCommand.open("?audit", Ids.FID_AUDIT, "?audit [--last N] [--since ISO-TIME]", "the audit trail (needs a right)",
-                        c -> AuditCommand.run(c.request(), c.command().fid(), c.words(), parts.audit(), parts.store()))
+                .add(ServerCommand.parsed("?audit", Ids.FID_AUDIT, AuditCommand.Options::new, "the audit trail (needs a right)",
+                        c -> AuditCommand.run(c.request(), c.command().fid(), c.options(AuditCommand.Options.class), parts.audit(),
+                                parts.store()))
                         .needsRight().onFileWork())
                 .add(ServerCommand.open("?logout", Ids.FID_LOGOUT, "?logout", "end the session and close the connection", c -> {
                     parts.clients().apply(c.clientId()).ifPresent(h -> {
@@ -251,7 +263,8 @@ public final class ServerCommands {
     private void runNow(IncomingServerMessage request, ServerCommand c, String[] w) {
         try {
             PermitFile.User user = c.gated() ? permit(request, c) : null;
-            OutgoingServerMessage reply = c.handler().run(new Call(request, c, w, user));
+            Object options = c.parse(w);
+            OutgoingServerMessage reply = c.handler().run(new Call(request, c, w, user, options));
             if (reply != null) {
                 outbox.accept(reply);
             }
@@ -293,31 +306,35 @@ public final class ServerCommands {
         return parts.sessions().consoleCommands().run(c.request(), c.command().fid(), c.words());
     }
 
-    /**
-     * {@code ?key MAILBOX KEY}: goes to the MailBox as the command {@code ?key KEY}, through the
-     * same checks as any command (the permit file decides on {@code ?key KEY}, so each key is a
-     * right of its own; the operator lock holds), and the link's own list of keys decides last.
-     */
+    /** The words of {@code ?dac}, read by picocli through the command table. */
+    static final class Dac {
+        @Parameters(index = "0", paramLabel = "MAILBOX")
+        String mailbox;
+        @Parameters(index = "1", arity = "0..1", paramLabel = "GLIDER")
+        String glider;
+        @Option(names = "--json")
+        boolean json;
+    }
+
     /**
      * {@code ?dac MAILBOX [GLIDER] [--json]}: asks the DatabaseServer MailBox for its deliveries
      * ({@code dac:status}), as the user's own command, so the permit file and the service's answer
      * are those of any command to it.
      */
     private OutgoingServerMessage dac(Call c) {
-        String[] w = c.words();
-        if (w.length < 2 || w.length > 4) {
-            throw new IllegalArgumentException("usage: ?dac MAILBOX [GLIDER] [--json], e.g. ?dac <DatabaseServer>::<host>TTY1 --json");
-        }
-        MailboxAddress.parse(w[1]);
-        StringBuilder body = new StringBuilder("dac:status");
-        for (int i = 2; i < w.length; i++) {
-            body.append(' ').append(w[i]);
-        }
+        Dac d = c.options(Dac.class);
+        MailboxAddress.parse(d.mailbox);
+        String body = "dac:status" + (d.glider == null ? "" : " " + d.glider) + (d.json ? " --json" : "");
         Header h = c.request().header();
         return route.apply(new IncomingServerMessage(new Header(h.messageId(), h.origin(), h.roles(),
-                h.serviceDestination(), w[1], body.toString(), h.priority(), null)));
+                h.serviceDestination(), d.mailbox, body, h.priority(), null)));
     }
 
+    /**
+     * {@code ?key MAILBOX KEY}: goes to the MailBox as the command {@code ?key KEY}, through the
+     * same checks as any command (the permit file decides on {@code ?key KEY}, so each key is a
+     * right of its own; the operator lock holds), and the link's own list of keys decides last.
+     */
     private OutgoingServerMessage key(Call c) {
         String[] w = c.words();
         if (w.length != 3) {

@@ -4,6 +4,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Consumer;
+import org.ripv.messages.Attachment;
 import org.ripv.messages.FileBundle;
 import org.ripv.messages.FileData;
 import org.ripv.messages.FileListing;
@@ -24,7 +25,10 @@ import org.slf4j.LoggerFactory;
  * line, not their names) in the download directory, the server sends {@code ingest NAME...} to a
  * DatabaseServer MailBox on the fetching user's behalf, tells that user (PROGRESS), and adds the
  * result to the download's own OK reply, which stays OK whatever the ingest made of the files
- * ({@link IngestVerdict}). On by default, per vehicle ({@link IngestSettings}).
+ * ({@link IngestVerdict}). On by default, per vehicle ({@link IngestSettings}). The files go to the
+ * DatabaseServer as the bytes the SerialPortServer's reply brought: the server stores its copy for
+ * the user and never reads it back to ingest it; it still decides whether the user may have each
+ * file ({@link ServiceCalls#whyNotDownload}) and records the ingest in the reply.
  */
 public final class DataLoop {
     private static final Logger log = LoggerFactory.getLogger(DataLoop.class);
@@ -46,13 +50,13 @@ public final class DataLoop {
     }
 
     /**
-     * Takes over a plot from data ({@code vis:sql}, {@code vis:track}, {@code vis:depth},
-     * {@code vis:profile}) sent to a DataVisServer MailBox; false for anything else.
+     * Takes over a plot from data (a {@link PlotKind}: {@code vis:sql}, {@code vis:track},
+     * {@code vis:depth}, {@code vis:profile}) sent to a DataVisServer MailBox; false for anything else.
      *
      * @param sid the addressed service's SID
      */
     public boolean plot(IncomingServerMessage request, String sid, String mailbox, Consumer<OutgoingServerMessage> send) {
-        if (!sid.equals(Ids.SID_DATAVIS) || !PlotRequests.isPlot(request.header().body())) {
+        if (!sid.equals(Ids.SID_DATAVIS) || PlotKind.of(request.header().body()).isEmpty()) {
             return false;
         }
         return plots.handle(request, mailbox, send);
@@ -64,11 +68,10 @@ public final class DataLoop {
      * since a mistyped one is the likelier mistake; otherwise {@code noFile} as it is.
      */
     public static String noSuchFile(String sid, String body, String noFile) {
-        String b = body.strip();
-        if (!sid.equals(Ids.SID_DATAVIS) || !b.regionMatches(true, 0, "vis:", 0, 4)) {
+        String word = PlotKind.visWord(body);
+        if (!sid.equals(Ids.SID_DATAVIS) || word == null) {
             return noFile;
         }
-        String word = b.substring(4).split("\\s+", 2)[0];
         return word.isEmpty() || word.equalsIgnoreCase("file") ? noFile : PlotRequests.notAPlot(word, noFile);
     }
 
@@ -92,10 +95,12 @@ public final class DataLoop {
         }
         String handle = handle(reply.header().mailboxAddress());
         List<String> names = new ArrayList<>();
+        List<Attachment> bytes = new ArrayList<>();
         for (int i = 0; i < files.size(); i++) {
             FileData f = files.get(i);
             if ((isDba(f.data()) || isSlocumBinary(f.name(), f.data())) && settings.enabled(vehicle(f.data()), handle)) {
                 names.add(stored.get(i).name());
+                bytes.add(new Attachment(stored.get(i).name(), f.data()));
             }
         }
         if (names.isEmpty()) {
@@ -109,9 +114,17 @@ public final class DataLoop {
             send.accept(IngestVerdict.notIngested(reply, fetched, "not ingested: no DatabaseServer is registered"));
             return true;
         }
+        for (String name : names) {
+            String why = calls.whyNotDownload(user, name); // the server decides rights, as for a client's ingest NAME
+            if (why != null) {
+                send.accept(IngestVerdict.notIngested(reply, fetched, "not ingested (FORBIDDEN): " + why));
+                return true;
+            }
+        }
         String what = names.size() == 1 ? names.get(0) : names.size() + " Slocum files";
         send.accept(progress(reply, "ingesting " + what + " into " + database));
-        calls.call(database, "ingest " + String.join(" ", names), user, List.of(INGEST_ROLE), null, f -> { })
+        // The bytes the service just sent go on as they are: the stored copy is the user's, never read back for this.
+        calls.call(database, "ingest " + String.join(" ", names), user, List.of(INGEST_ROLE), Attachment.bundle(bytes), f -> { })
                 .whenComplete((f, e) -> {
                     OutgoingServerMessage verdict;
                     if (e != null) {

@@ -13,6 +13,7 @@ import java.util.Locale;
 import java.util.function.Consumer;
 import java.util.function.Supplier;
 import java.util.regex.Pattern;
+import java.util.stream.Stream;
 import org.ripv.messages.Attachment;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.Footer;
@@ -50,14 +51,6 @@ final class PlotRequests {
         Plan(String kind, String sql, String output, List<String> labels, String vehicle, String database) {
             this(kind, sql, output, labels, vehicle, database, null);
         }
-    }
-
-    /** True when the body is one of the server-orchestrated plots. */
-    static boolean isPlot(String body) {
-        String b = body.strip().toLowerCase(Locale.ROOT);
-        return b.startsWith("vis:sql ") || b.startsWith("vis:track ") || b.startsWith("vis:depth ")
-                || b.startsWith("vis:profile ") || b.equals("vis:sql") || b.equals("vis:track") || b.equals("vis:depth")
-                || b.equals("vis:profile");
     }
 
     boolean handle(IncomingServerMessage request, String visMailbox, Consumer<OutgoingServerMessage> send) {
@@ -194,8 +187,8 @@ final class PlotRequests {
     }
 
     /** The plot commands, for a {@code vis:} word that is neither one of them nor an uploaded file. */
-    static final List<String> COMMANDS = List.of("vis:track VEHICLE", "vis:depth VEHICLE", "vis:profile VEHICLE SENSOR",
-            "vis:sql SELECT x, y FROM ...", "vis:file NAME x=COLUMN y=COLUMN", "vis:NAME (a data file in the upload directory)");
+    static final List<String> COMMANDS = Stream.concat(Stream.of(PlotKind.values()).map(k -> k.usage),
+            Stream.of("vis:file NAME x=COLUMN y=COLUMN", "vis:NAME (a data file in the upload directory)")).toList();
 
     /**
      * The error for {@code vis:WORD} when there is no uploaded file WORD: a typo of a plot command
@@ -203,7 +196,7 @@ final class PlotRequests {
      */
     static String notAPlot(String word, String noFile) {
         String near = null;
-        for (String k : List.of("track", "depth", "profile", "sql", "file")) {
+        for (String k : Stream.concat(Stream.of(PlotKind.values()).map(p -> p.word), Stream.of("file")).toList()) {
             if (Typos.near(word.toLowerCase(Locale.ROOT), k)) {
                 near = k;
             }
@@ -213,11 +206,12 @@ final class PlotRequests {
     }
 
     Plan parse(String body) {
-        int colon = body.indexOf(':');
-        String rest = body.substring(colon + 1);
-        String kind = rest.split("\\s+", 2)[0].toLowerCase(Locale.ROOT);
+        PlotKind plot = PlotKind.of(body).orElseThrow(() -> new IllegalArgumentException("unknown plot " + body.strip()
+                .split("\\s+", 2)[0] + "; the plot commands are: " + String.join(", ", COMMANDS)));
+        String kind = plot.word;
+        String rest = body.strip().substring("vis:".length());
         String args = rest.substring(kind.length()).strip();
-        if (kind.equals("sql")) {
+        if (plot == PlotKind.SQL) {
             if (args.isEmpty()) {
                 throw new IllegalArgumentException("usage: vis:sql SELECT x, y1 [, y2 ...] FROM ... (the first column"
                         + " against the others)");
@@ -250,7 +244,7 @@ final class PlotRequests {
                 words.add(w);
             }
         }
-        int wanted = kind.equals("profile") ? 2 : 1;
+        int wanted = plot.words;
         if (words.size() != wanted) {
             throw new IllegalArgumentException("usage: vis:" + kind + " VEHICLE" + (wanted == 2 ? " SENSOR" : "")
                     + " [since=2016-01-13T00:00:00Z] [db=MAILBOX] [out=NAME]");
@@ -261,16 +255,16 @@ final class PlotRequests {
         }
         String database = db != null ? db : defaultDatabase.get();
         String when = since == null ? "" : " AND time_utc >= CAST('" + since + "' AS TIMESTAMP)";
-        return switch (kind) {
-            case "track" -> new Plan(kind, newestFixSql(vehicle, since), out != null ? out : "track-" + vehicle,
+        return switch (plot) {
+            case TRACK -> new Plan(kind, newestFixSql(vehicle, since), out != null ? out : "track-" + vehicle,
                     List.of("title: track of " + vehicle + (since == null ? "" : " since " + since + " UTC"),
                             "xlabel: longitude (degrees east)", "ylabel: latitude (degrees north)", "legend: positions",
                             "plot: track", "size: 800x800"), vehicle, database, since);
-            case "depth" -> new Plan(kind, "SELECT time_utc, depth FROM depths WHERE vehicle = '" + vehicle + "'"
+            case DEPTH -> new Plan(kind, "SELECT time_utc, depth FROM depths WHERE vehicle = '" + vehicle + "'"
                     + " AND source = 'm_depth'" + when + " ORDER BY time_utc DESC", out != null ? out : "depth-" + vehicle,
                     List.of("title: depth of " + vehicle, "xlabel: time (UTC)", "ylabel: depth (m)", "legend: m_depth",
                             "plot: depth"), vehicle, database);
-            case "profile" -> {
+            case PROFILE -> {
                 String sensor = words.get(1);
                 if (!SENSOR.matcher(sensor).matches()) {
                     throw new IllegalArgumentException("'" + sensor + "' is not a sensor name");
@@ -283,7 +277,7 @@ final class PlotRequests {
                         List.of("title: " + sensor + " of " + vehicle + " against depth", "xlabel: " + sensor,
                                 "ylabel: depth (m)", "legend: " + sensor, "plot: profile"), vehicle, database);
             }
-            default -> throw new IllegalArgumentException("unknown plot vis:" + kind);
+            case SQL -> throw new IllegalStateException("vis:sql is planned above");
         };
     }
 

@@ -15,6 +15,13 @@ public interface ServiceCalls {
     /** The full names ({@code <DatabaseServer>::<host>}) of the registered services with this SID, sorted. */
     List<String> services(String sid);
 
+    /**
+     * Why {@code user} may not have a file of the download directory ({@code FOLDER/NAME}), or null
+     * when they may: the rule a command that names the file is held to ({@code DownloadRights}),
+     * decided without reading the file.
+     */
+    String whyNotDownload(String user, String downloadName);
+
     /** Whether the permit file lets {@code user} send {@code body} to {@code mailbox}. */
     boolean permitted(String user, String mailbox, String body);
 

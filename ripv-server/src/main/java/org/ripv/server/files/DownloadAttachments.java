@@ -45,12 +45,12 @@ public final class DownloadAttachments {
                 break; // options follow the names
             }
             rights.check(words[i]); // before a byte is read: the requester's right to this file
-            long size = (Long) files.readDownload(words[i], 0, 0)[0];
+            long size = files.readDownload(words[i], 0, 0).total();
             total += size;
             if (total > MAX_TOTAL) {
                 throw new FileTooLargeException("the files named come to more than " + MAX_TOTAL + " bytes; name fewer at a time");
             }
-            out.add(new Attachment(words[i], (byte[]) files.readDownload(words[i], 0, (int) size)[1]));
+            out.add(new Attachment(words[i], files.readDownload(words[i], 0, (int) size).data()));
         }
         return Attachment.bundle(out);
     }

@@ -10,7 +10,7 @@ import java.util.concurrent.CompletableFuture;
 import java.util.regex.Pattern;
 import org.ripv.messages.NotifyList;
 import org.ripv.messages.VehicleEvent;
-import org.ripv.server.session.Json;
+import org.ripv.json.Json;
 
 /** One user's subscription: a channel, a target, the events and a MailBox glob; and how it last went. */
 final class Subscription {

@@ -13,6 +13,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
+import java.util.regex.Pattern;
 
 /**
  * Who may log in and what each may do (docs/permit.md). A line-oriented text file:
@@ -222,7 +223,7 @@ public final class PermitFile {
             }
             boolean every = r.command().pattern().equals(".*");
             // A rule about '?' commands (?read, ?key ctrl-c) is no command line's worth: those have controls of their own.
-            if (r.allow() && (every || !r.command().pattern().startsWith(java.util.regex.Pattern.quote("?")))) {
+            if (r.allow() && (every || !r.command().pattern().startsWith(Pattern.quote("?")))) {
                 return true;
             }
             if (!r.allow() && every) {

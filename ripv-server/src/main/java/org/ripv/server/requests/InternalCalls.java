@@ -59,6 +59,16 @@ public final class InternalCalls implements ServiceCalls {
     }
 
     @Override
+    public String whyNotDownload(String user, String downloadName) {
+        try {
+            DownloadRights.check(files, permits.get(), user, downloadName);
+            return null;
+        } catch (IOException | IllegalArgumentException e) { // a SecurityRefusal is one
+            return e.getMessage();
+        }
+    }
+
+    @Override
     public boolean permitted(String user, String mailbox, String body) {
         try {
             MailboxAddress a = MailboxAddress.parse(mailbox);

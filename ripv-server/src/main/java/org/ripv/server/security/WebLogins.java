@@ -1,7 +1,9 @@
 package org.ripv.server.security;
 
 import java.util.Arrays;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.function.Supplier;
 import org.ripv.naming.MailboxAddress;
 import org.ripv.server.permit.PermitFile;
@@ -47,7 +49,7 @@ public final class WebLogins implements WebAccess {
     @Override
     public Rights rights(String user, String mailbox, List<String> commands) {
         PermitFile p = permits.get();
-        java.util.Map<String, Boolean> each = new java.util.LinkedHashMap<>();
+        Map<String, Boolean> each = new LinkedHashMap<>();
         PermitFile.User u = p.user(user).orElse(null);
         String service = "RIPVServer";
         String handle = "";

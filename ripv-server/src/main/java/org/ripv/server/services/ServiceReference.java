@@ -194,7 +194,7 @@ public final class ServiceReference {
     }
 
     /** Tells the service a page of a request's table went out to its client: the next may come. */
-    public boolean more(org.ripv.messages.Header h) throws RemoteException {
+    public boolean more(Header h) throws RemoteException {
         return stub.more(token, h.mailboxAddress(), h.origin().clientId(), h.messageId());
     }
 

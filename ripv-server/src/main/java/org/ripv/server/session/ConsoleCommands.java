@@ -2,15 +2,12 @@ package org.ripv.server.session;
 
 import java.io.IOException;
 import java.time.Instant;
-import java.time.LocalDate;
-import java.time.LocalDateTime;
-import java.time.ZoneOffset;
-import java.time.format.DateTimeParseException;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
 import java.util.function.Function;
 import java.util.function.Supplier;
+import org.ripv.commands.OptionValues;
 import org.ripv.messages.ConsoleBatch;
 import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.ErrorCode;
@@ -20,10 +17,12 @@ import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.SessionState;
 import org.ripv.naming.MailboxAddress;
 import org.ripv.server.permit.PermitFile;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
 
 /**
  * The server commands of the live console: {@code ?watch MAILBOX}, {@code ?unwatch MAILBOX},
- * {@code ?history MAILBOX [--last N] [--since ISO-TIME]}. Each returns its reply, or null when
+ * {@code ?history MAILBOX [--last N] [--since ISO-TIME]} (its words read by picocli, {@link History}). Each returns its reply, or null when
  * it sent it itself ({@code ?watch}, whose reply must precede the first push).
  */
 public final class ConsoleCommands {
@@ -40,7 +39,7 @@ public final class ConsoleCommands {
         this.via = via;
     }
 
-    /** Runs one of the three commands; {@code w} is the command line split on white space. */
+    /** Runs {@code ?watch} or {@code ?unwatch}; {@code w} is the command line split on white space. */
     public OutgoingServerMessage run(IncomingServerMessage request, String fid, String[] w) throws IOException {
         String user = request.header().origin().user();
         String clientId = request.header().origin().clientId();
@@ -77,46 +76,31 @@ public final class ConsoleCommands {
                 return request.reply(Footer.ok(fid, was ? "stopped watching " + mailbox : "was not watching " + mailbox, null)
                         .via(via));
             }
-            case "?history" -> {
-                return history(request, fid, w, user, mailbox);
-            }
             default -> throw new IllegalArgumentException("not a console command: " + w[0]);
         }
     }
 
-    private OutgoingServerMessage history(IncomingServerMessage request, String fid, String[] w, String user, String mailbox)
-            throws IOException {
-        int last = 0;
-        Instant since = null;
-        for (int i = 2; i < w.length; i++) {
-            String opt = w[i];
-            if (i + 1 >= w.length) {
-                return error(request, fid, ErrorCode.BAD_REQUEST, opt + " needs a value; usage: " + usage("?history"));
-            }
-            String value = w[++i];
-            switch (opt) {
-                case "--last" -> {
-                    try {
-                        last = Integer.parseInt(value);
-                    } catch (NumberFormatException e) {
-                        last = -1;
-                    }
-                    if (last < 1) {
-                        return error(request, fid, ErrorCode.BAD_REQUEST, "--last takes a whole number from 1, not '" + value + "'");
-                    }
-                }
-                case "--since" -> {
-                    since = time(value);
-                    if (since == null) {
-                        return error(request, fid, ErrorCode.BAD_REQUEST, "--since takes an ISO-8601 time such as "
-                                + "2026-11-23T14:00:00Z (or a date), not '" + value + "'");
-                    }
-                }
-                default -> {
-                    return error(request, fid, ErrorCode.BAD_REQUEST, "unknown option '" + opt + "'; usage: " + usage("?history"));
-                }
-            }
+    /** The words of {@code ?history}, read by picocli through the server's command table. */
+    public static final class History {
+        @Parameters(index = "0", paramLabel = "MAILBOX")
+        String mailbox;
+        @Option(names = "--last", paramLabel = "N", converter = OptionValues.Count.class)
+        int last;
+        @Option(names = "--since", paramLabel = "ISO-TIME", converter = OptionValues.IsoTime.class)
+        Instant since;
+    }
+
+    /** {@code ?history MAILBOX [--last N] [--since ISO-TIME]}, its words already read. */
+    public OutgoingServerMessage history(IncomingServerMessage request, String fid, History h) throws IOException {
+        String user = request.header().origin().user();
+        String mailbox;
+        try {
+            mailbox = MailboxAddress.parse(h.mailbox).toString();
+        } catch (IllegalArgumentException e) {
+            return error(request, fid, ErrorCode.UNKNOWN_MAILBOX, e.getMessage());
         }
+        int last = h.last;
+        Instant since = h.since;
         String why = Rights.whyNotRead(permits.get(), user, mailbox);
         if (why != null) {
             return error(request, fid, ErrorCode.FORBIDDEN, why);
@@ -145,25 +129,6 @@ public final class ConsoleCommands {
         return request.reply(Footer.ok(fid, b.toString(), new ConsoleBatch(mailbox, page.entries(), 0, page.more())).via(via));
     }
 
-    /** An ISO-8601 instant, a local date-time taken as UTC, or a date (its start, UTC); null when none. */
-    static Instant time(String s) {
-        try {
-            return Instant.parse(s);
-        } catch (DateTimeParseException ignored) {
-            // try the shorter forms
-        }
-        try {
-            return LocalDateTime.parse(s).toInstant(ZoneOffset.UTC);
-        } catch (DateTimeParseException ignored) {
-            // try a date
-        }
-        try {
-            return LocalDate.parse(s).atStartOfDay(ZoneOffset.UTC).toInstant();
-        } catch (DateTimeParseException e) {
-            return null;
-        }
-    }
-
     static String describe(SessionState s) {
         if (s == null) {
             return " (nothing heard from it yet)";
@@ -181,8 +146,7 @@ public final class ConsoleCommands {
     private static String usage(String word) {
         return switch (word) {
             case "?watch" -> "?watch MAILBOX";
-            case "?unwatch" -> "?unwatch MAILBOX";
-            default -> "?history MAILBOX [--last N] [--since ISO-TIME]";
+            default -> "?unwatch MAILBOX";
         };
     }
 

@@ -5,6 +5,7 @@ import java.time.format.DateTimeParseException;
 import java.util.LinkedHashMap;
 import java.util.Locale;
 import java.util.Map;
+import org.ripv.json.Json;
 import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.ConsoleLines;
 import org.ripv.messages.VehicleEvent;

@@ -7,12 +7,14 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.ConcurrentHashMap;
+import org.ripv.json.Json;
 import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.SessionState;
 import org.ripv.messages.SessionState.State;
 import org.ripv.messages.VehicleEvent;
 import org.ripv.server.store.BatchWriter;
 import org.ripv.server.store.StateStore;
+import org.ripv.surfacing.SurfaceDialogParser;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -131,7 +133,7 @@ final class VehicleStates {
                 v.lastContact = Math.max(v.lastContact, e.time());
             }
             if (e.kind() == ConsoleEntry.Kind.LINE) {
-                long seconds = org.ripv.surfacing.SurfaceDialogParser.countdownSeconds(e.text());
+                long seconds = SurfaceDialogParser.countdownSeconds(e.text());
                 if (seconds >= 0 && seconds <= 86_400) {
                     v.diveAt = e.time() + seconds * 1000; // "dives in N s" on every page from the state
                 }

@@ -32,6 +32,7 @@ import org.slf4j.LoggerFactory;
  * DATA/notify/subscriptions.jsonl                      notification subscriptions
  * DATA/audit/YYYY-MM-DD.log                            the audit trail: TIME LEVEL event key=value ...
  * DATA/surfacings/KEY.jsonl                            call records, one JSON line per surfacing
+ * DATA/surfacings/KEY.mailbox                          the MailBox address those records are of
  * </pre>
  * Documents are written whole through a temporary file and an atomic move. Directories are made
  * when first written.
@@ -129,6 +130,10 @@ public final class EmbeddedStateStore implements StateStore {
             if (!Files.exists(f)) {
                 DataFiles.create(f, "");
             }
+            Path name = f.resolveSibling(DataFiles.key(mailbox) + ".mailbox");
+            if (!Files.exists(name)) { // the file's key cannot be read back into the address
+                DataFiles.write(name, mailbox);
+            }
             try (BufferedWriter w = Files.newBufferedWriter(f, StandardCharsets.UTF_8, StandardOpenOption.APPEND)) {
                 w.write(json);
                 w.write('\n');
@@ -147,6 +152,24 @@ public final class EmbeddedStateStore implements StateStore {
         synchronized (surfacingLock) {
             Path f = surfacings().resolve(DataFiles.key(mailbox) + ".jsonl");
             return Files.exists(f) ? readLast(f, n) : List.of();
+        }
+    }
+
+    @Override
+    public List<String> surfacingMailboxes() throws IOException {
+        synchronized (surfacingLock) {
+            List<String> out = new ArrayList<>();
+            if (!Files.isDirectory(surfacings())) {
+                return out;
+            }
+            try (Stream<Path> files = Files.list(surfacings())) {
+                for (Path p : (Iterable<Path>) files.filter(p -> p.getFileName().toString().endsWith(".mailbox"))::iterator) {
+                    if (Files.size(p) <= 1000) {
+                        out.add(Files.readString(p, StandardCharsets.UTF_8).strip());
+                    }
+                }
+            }
+            return out;
         }
     }
 

@@ -325,6 +325,20 @@ public final class PostgresStateStore implements StateStore {
         });
     }
 
+    @Override
+    public List<String> surfacingMailboxes() throws IOException {
+        return run("list the MailBoxes with call records", c -> {
+            List<String> out = new ArrayList<>();
+            try (PreparedStatement ps = c.prepareStatement("SELECT DISTINCT mailbox FROM ripv_surfacing");
+                 ResultSet rs = ps.executeQuery()) {
+                while (rs.next()) {
+                    out.add(rs.getString(1));
+                }
+            }
+            return out;
+        });
+    }
+
     // ---- receipts ----
 
     @Override

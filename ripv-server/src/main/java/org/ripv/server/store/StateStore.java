@@ -83,6 +83,9 @@ public interface StateStore extends AutoCloseable {
     /** The MailBox's last {@code n} call records, oldest first. */
     List<String> lastSurfacings(String mailbox, int n) throws IOException;
 
+    /** The MailBoxes that have call records (so the server knows their calls after a restart). */
+    List<String> surfacingMailboxes() throws IOException;
+
     // ---- workflows ----
 
     /** Replaces a MailBox's workflow queue document. */

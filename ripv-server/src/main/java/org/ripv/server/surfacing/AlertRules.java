@@ -13,6 +13,8 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Objects;
+import org.ripv.surfacing.CallInterval;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -92,7 +94,7 @@ final class AlertRules {
         looked = nanos;
         try {
             FileTime now = Files.exists(file) ? Files.getLastModifiedTime(file) : null;
-            if (java.util.Objects.equals(now, read)) {
+            if (Objects.equals(now, read)) {
                 return;
             }
             read = now;
@@ -165,6 +167,6 @@ final class AlertRules {
 
     /** {@code 90s}, {@code 10m}, {@code 2h}, {@code 1d}, or ISO-8601 ({@code PT2H}); positive. */
     static Duration duration(String s) {
-        return org.ripv.surfacing.CallInterval.parse(s);
+        return CallInterval.parse(s);
     }
 }

@@ -5,6 +5,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Objects;
 import org.ripv.surfacing.Surfacing;
 
 /**
@@ -108,7 +109,7 @@ final class CallRecord {
             return true;
         }
         if (a.total() != n.longValue()) {
-            return a.total() > n.longValue() || !java.util.Objects.equals(a.time(), previous.get("abort_time"));
+            return a.total() > n.longValue() || !Objects.equals(a.time(), previous.get("abort_time"));
         }
         return a.time() != null && previous.get("abort_time") != null && !a.time().equals(previous.get("abort_time"));
     }

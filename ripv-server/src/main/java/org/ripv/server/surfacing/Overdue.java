@@ -5,21 +5,27 @@ import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.function.Function;
+import org.ripv.surfacing.CallOutlook;
 
 /**
  * Which vehicles are late: each call's start is noted; a vehicle not on a call whose last call
  * began longer ago than its expected interval plus a grace is overdue, once, until it calls again.
- * The interval is the vehicle's {@code overdue} rule, or the median of its last
- * {@link #LEARN_FROM} intervals between calls (learned from at least two). Only the worker thread
- * of {@link Surfacings} uses it.
+ * The interval is the link's {@code overdue=}, the vehicle's {@code overdue} rule, or what its
+ * calls taught ({@link CallOutlook#learned}). A vehicle's calls before the server started are
+ * its stored call records' times ({@link #seed}), so a restart forgets nothing it learned. The
+ * worker thread of {@link Surfacings} drives it; {@link #expected} answers commands.
  */
 final class Overdue {
-    static final int LEARN_FROM = 5;
+    static final int LEARN_FROM = CallOutlook.LEARN_FROM;
 
     /** A vehicle that is late now, or that called after being late. */
     record Late(String mailbox, String text) {}
+
+    /** The interval a vehicle is expected to call at, and what it comes from, in words. */
+    record Expected(Duration every, String from) {}
 
     private static final class Calls {
         final ArrayDeque<Long> starts = new ArrayDeque<>();
@@ -41,7 +47,7 @@ final class Overdue {
      * A call began at {@code time}; {@code announced} is the link's interval its SURFACED gave (or
      * null). Returns the text to publish when it was overdue, else null.
      */
-    String called(String mailbox, long time, Duration announced) {
+    synchronized String called(String mailbox, long time, Duration announced) {
         Calls c = vehicles.computeIfAbsent(mailbox, k -> new Calls());
         c.announced = announced;
         String back = null;
@@ -58,7 +64,7 @@ final class Overdue {
     }
 
     /** The call ended (dived, or lost). */
-    void ended(String mailbox) {
+    synchronized void ended(String mailbox) {
         Calls c = vehicles.get(mailbox);
         if (c != null) {
             c.onCall = false;
@@ -66,7 +72,7 @@ final class Overdue {
     }
 
     /** Vehicles that have become late by {@code now}. */
-    List<Late> check(long now) {
+    synchronized List<Late> check(long now) {
         List<Late> out = new ArrayList<>();
         vehicles.forEach((mailbox, c) -> {
             if (c.onCall || c.late || c.starts.isEmpty()) {
@@ -81,16 +87,14 @@ final class Overdue {
             if (now >= c.due) {
                 c.late = true;
                 out.add(new Late(mailbox, "no call for " + words(Duration.ofMillis(now - c.starts.getLast()))
-                        + "; expected every " + words(every) + (c.announced != null ? " (its link's overdue=)"
-                        : t.overdue() != null ? " (its overdue rule)"
-                        : " (learned from its last " + (c.starts.size() - 1) + " intervals)") + " + " + words(t.grace()) + " grace"));
+                        + "; expected every " + words(every) + " (" + from(c, t) + ") + " + words(t.grace()) + " grace"));
             }
         });
         return out;
     }
 
     /** How long the worker may wait before a vehicle could become late (at most a minute). */
-    long waitMillis(long now) {
+    synchronized long waitMillis(long now) {
         long soonest = now + 60_000;
         for (Map.Entry<String, Calls> e : vehicles.entrySet()) {
             Calls c = e.getValue();
@@ -108,23 +112,48 @@ final class Overdue {
 
     /** The link's {@code overdue=}, else the rules file's, else what its calls taught. */
     private static Duration interval(Calls c, AlertRules.Thresholds t) {
-        return c.announced != null ? c.announced : t.overdue() != null ? t.overdue() : learned(c);
+        return c.announced != null ? c.announced : t.overdue() != null ? t.overdue() : CallOutlook.learned(List.copyOf(c.starts));
     }
 
-    private static Duration learned(Calls c) {
-        if (c.starts.size() < 3) {
-            return null;
+    private static String from(Calls c, AlertRules.Thresholds t) {
+        return c.announced != null ? "its link's overdue=" : t.overdue() != null ? "its overdue rule"
+                : "learned from its last " + (c.starts.size() - 1) + " intervals";
+    }
+
+    /**
+     * The calls a vehicle made before the server started (its call records' start times, oldest
+     * first), so its interval is known at once. A vehicle already due before {@code now} was told
+     * OVERDUE by the server that ran then: it is not told again until it has called.
+     */
+    synchronized void seed(String mailbox, List<Long> starts, long now) {
+        if (starts.isEmpty() || vehicles.containsKey(mailbox)) {
+            return;
         }
-        List<Long> gaps = new ArrayList<>();
-        Long before = null;
-        for (long s : c.starts) {
-            if (before != null) {
-                gaps.add(s - before);
-            }
-            before = s;
+        Calls c = new Calls();
+        starts.subList(Math.max(0, starts.size() - LEARN_FROM - 1), starts.size()).forEach(c.starts::addLast);
+        AlertRules.Thresholds t = thresholds.apply(mailbox);
+        Duration every = interval(c, t);
+        if (every != null) {
+            c.due = c.starts.getLast() + every.toMillis() + t.grace().toMillis();
+            c.late = c.due <= now;
         }
-        gaps.sort(null);
-        return Duration.ofMillis(gaps.get(gaps.size() / 2));
+        vehicles.put(mailbox, c);
+    }
+
+    /** Whether the vehicle's calls are known here (seeded or seen since the start). */
+    synchronized boolean knows(String mailbox) {
+        return vehicles.containsKey(mailbox);
+    }
+
+    /** The interval the vehicle is expected to call at now, or null when nothing sets or taught one. */
+    synchronized Expected expected(String mailbox) {
+        Calls c = vehicles.get(mailbox);
+        AlertRules.Thresholds t = thresholds.apply(mailbox);
+        if (c == null) {
+            return t.overdue() == null ? null : new Expected(t.overdue(), "its overdue rule");
+        }
+        Duration every = interval(c, t);
+        return every == null ? null : new Expected(every, from(c, t));
     }
 
     static String words(Duration d) {
@@ -135,6 +164,6 @@ final class Overdue {
         if (s < 7200) {
             return s / 60 + " min";
         }
-        return String.format(java.util.Locale.ROOT, "%d h %02d min", s / 3600, s / 60 % 60);
+        return String.format(Locale.ROOT, "%d h %02d min", s / 3600, s / 60 % 60);
     }
 }

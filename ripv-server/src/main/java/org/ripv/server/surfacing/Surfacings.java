@@ -4,6 +4,7 @@ import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.core.type.TypeReference;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -19,6 +20,8 @@ import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.VehicleEvent;
 import org.ripv.naming.MailboxAddress;
 import org.ripv.server.store.StateStore;
+import org.ripv.surfacing.CallInterval;
+import org.ripv.surfacing.CallOutlook;
 import org.ripv.surfacing.SurfaceDialogParser;
 import org.ripv.surfacing.Surfacing;
 import org.slf4j.Logger;
@@ -40,6 +43,14 @@ public final class Surfacings implements AutoCloseable {
     static final int MAX_VEHICLES = 10_000;
     private static final TypeReference<LinkedHashMap<String, Object>> MAP = new TypeReference<>() {};
 
+    /** A parsed surface dialog, for a part that reads dialogs (the plans' change follower). */
+    @FunctionalInterface
+    public interface Reader {
+        /** Called on {@code ripv-surfacings}; {@code time} is when the dialog began (epoch ms). Must not block. */
+        void surfacing(String mailbox, long time, Surfacing dialog);
+    }
+
+    private volatile Reader reader = (m, t, s) -> { };
     private final StateStore store;
     private final AlertRules rules;
     private final Consumer<ConsoleEntry> events;
@@ -120,6 +131,11 @@ public final class Surfacings implements AutoCloseable {
         return rules.of(mailbox, name);
     }
 
+    /** Where each parsed dialog goes besides its call record. */
+    public void onSurfacing(Reader r) {
+        this.reader = r;
+    }
+
     /** Entries the server took; never waits. */
     public void accept(List<ConsoleEntry> taken) {
         for (ConsoleEntry e : taken) {
@@ -141,6 +157,7 @@ public final class Surfacings implements AutoCloseable {
     }
 
     private void work() {
+        seedAll();
         while (!closed) {
             try {
                 ConsoleEntry e = queue.poll(overdue.waitMillis(System.currentTimeMillis()), TimeUnit.MILLISECONDS);
@@ -178,8 +195,11 @@ public final class Surfacings implements AutoCloseable {
             v.parser.end(); // the call's end ends a dialog under way (SURFACED comes in the middle of one, after its fix)
         }
         if (e.event() == VehicleEvent.SURFACED) {
+            if (!overdue.knows(e.mailbox())) {
+                overdue.seed(e.mailbox(), callTimes(e.mailbox()), e.time()); // its calls before this server started
+            }
             String back = overdue.called(e.mailbox(), e.time(),
-                    org.ripv.surfacing.CallInterval.announced(e.text()).orElse(null));
+                    CallInterval.announced(e.text()).orElse(null));
             if (back != null) {
                 publish(e.mailbox(), VehicleEvent.OVERDUE, back, e.lat(), e.lon());
             }
@@ -200,6 +220,11 @@ public final class Surfacings implements AutoCloseable {
             store.appendSurfacing(v.mailbox, time, json.writeValueAsString(rec), KEEP);
         } catch (IOException | RuntimeException x) {
             log.warn("could not keep the call record of {}: {}", v.mailbox, x.toString());
+        }
+        try {
+            reader.surfacing(v.mailbox, time, s);
+        } catch (RuntimeException x) {
+            log.warn("a reader of {}'s surface dialog failed: {}", v.mailbox, x.toString());
         }
         Double lat = s.gps() == null ? null : s.gps().lat();
         Double lon = s.gps() == null ? null : s.gps().lon();
@@ -243,9 +268,72 @@ public final class Surfacings implements AutoCloseable {
                 }
             }
         } catch (IOException x) {
-            throw new java.io.UncheckedIOException(x);
+            throw new UncheckedIOException(x);
         }
         return out;
+    }
+
+    /**
+     * Every vehicle whose call records the store keeps: its calls' times, so its learned interval
+     * and OVERDUE survive a restart (a vehicle already due before now was told by the server then).
+     */
+    private void seedAll() {
+        long now = System.currentTimeMillis();
+        try {
+            List<String> mailboxes = store.surfacingMailboxes();
+            for (String m : mailboxes.subList(0, Math.min(mailboxes.size(), MAX_VEHICLES))) {
+                overdue.seed(m, callTimes(m), now);
+            }
+        } catch (IOException | RuntimeException x) {
+            log.warn("could not read which vehicles called before: {}; their call intervals are learned afresh", x.toString());
+        }
+    }
+
+    /** The start times of the vehicle's last stored calls, oldest first. */
+    private List<Long> callTimes(String mailbox) {
+        try {
+            List<Long> out = new ArrayList<>();
+            for (Map<String, Object> r : last(mailbox, Overdue.LEARN_FROM + 1)) {
+                Long t = time(r);
+                if (t != null) {
+                    out.add(t);
+                }
+            }
+            return out;
+        } catch (RuntimeException x) {
+            log.warn("could not read the calls of {}: {}", mailbox, x.toString());
+            return List.of();
+        }
+    }
+
+    private static Long time(Map<String, Object> r) {
+        try {
+            return r.get("time_utc") instanceof String t ? java.time.Instant.parse(t).toEpochMilli() : null;
+        } catch (java.time.format.DateTimeParseException x) {
+            return null;
+        }
+    }
+
+    /**
+     * What the vehicle's call records say comes next ({@link CallOutlook}): the records given
+     * (oldest first) with the interval it is expected to call at — its link's, its rule's, or
+     * learned from its calls (here, or from the records when it has not called since the start).
+     */
+    public Map<String, Object> outlook(String mailbox, List<Map<String, Object>> records) {
+        Overdue.Expected e = overdue.expected(mailbox);
+        if (e == null) {
+            List<Long> times = new ArrayList<>();
+            records.forEach(r -> {
+                Long t = time(r);
+                if (t != null) {
+                    times.add(t);
+                }
+            });
+            java.time.Duration learned = CallOutlook.learned(times);
+            int n = Math.min(times.size(), Overdue.LEARN_FROM + 1) - 1;
+            e = learned == null ? null : new Overdue.Expected(learned, "learned from its last " + n + " intervals");
+        }
+        return CallOutlook.of(records, e == null ? null : e.every(), e == null ? null : e.from());
     }
 
     /** Waits (at most 5 s) until what was accepted so far has been read (tests). */

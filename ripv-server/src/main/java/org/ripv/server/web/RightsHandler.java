@@ -43,7 +43,7 @@ final class RightsHandler extends Handler.Abstract {
         }
         WebSessions.Session s = sessions.find(request);
         if (s == null) {
-            Pages.send(response, callback, 401, "application/json", "{\"error\":\"log in first\"}");
+            Pages.send(response, callback, 401, "application/json", json.writeValueAsString(Map.of("error", "log in first")));
             return true;
         }
         Fields query = Request.extractQueryParameters(request);
@@ -51,8 +51,8 @@ final class RightsHandler extends Handler.Abstract {
         List<String> commands = query.getValuesOrEmpty("c");
         if (commands.size() > MAX_COMMANDS || mailbox.length() > MAX_LENGTH
                 || commands.stream().anyMatch(c -> c.length() > MAX_LENGTH)) {
-            Pages.send(response, callback, 400, "application/json", "{\"error\":\"at most " + MAX_COMMANDS
-                    + " commands of at most " + MAX_LENGTH + " characters\"}");
+            Pages.send(response, callback, 400, "application/json", json.writeValueAsString(Map.of("error",
+                    "at most " + MAX_COMMANDS + " commands of at most " + MAX_LENGTH + " characters")));
             return true;
         }
         WebAccess.Rights r = access.rights(s.user, mailbox, commands);

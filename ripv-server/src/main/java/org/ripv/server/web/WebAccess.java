@@ -1,6 +1,7 @@
 package org.ripv.server.web;
 
 import java.util.List;
+import java.util.Map;
 
 /**
  * Who may log in on the web console and upload: the client port's users, PBKDF2, throttle and
@@ -32,7 +33,7 @@ public interface WebAccess {
      * @param send     whether some command may go to the MailBox at all (a command line is worth showing)
      * @param commands each command asked about, allowed or not
      */
-    record Rights(boolean send, java.util.Map<String, Boolean> commands) {}
+    record Rights(boolean send, Map<String, Boolean> commands) {}
 
     /**
      * The user's rights on a MailBox ({@code ""}: the server's own commands, {@code ?lock ...}), for

@@ -140,26 +140,13 @@ final class WorkflowCommands {
     }
 
     /** {@code ?receipts MAILBOX [--last N]}. */
-    OutgoingServerMessage receipts(IncomingServerMessage request) throws IOException {
-        return answer(request, Ids.FID_RECEIPTS, this::receiptsOrRefuse);
+    OutgoingServerMessage receipts(IncomingServerMessage request, Workflows.ReceiptOptions options) throws IOException {
+        return answer(request, Ids.FID_RECEIPTS, r -> receiptsOrRefuse(r, options));
     }
 
-    private OutgoingServerMessage receiptsOrRefuse(IncomingServerMessage request) throws IOException {
-        String[] w = request.header().body().trim().split("\\s+");
-        int n = 5;
-        if (w.length == 4 && w[2].equals("--last")) {
-            try {
-                n = Integer.parseInt(w[3]);
-            } catch (NumberFormatException e) {
-                n = -1;
-            }
-            if (n < 1 || n > 1000) {
-                throw new IllegalArgumentException("--last takes 1 to 1000, got '" + w[3] + "'");
-            }
-        } else {
-            usage(w.length == 2, "?receipts MAILBOX [--last N]");
-        }
-        String mailbox = address(w[1]);
+    private OutgoingServerMessage receiptsOrRefuse(IncomingServerMessage request, Workflows.ReceiptOptions options) throws IOException {
+        int n = options.last;
+        String mailbox = address(options.mailbox);
         mayRead(request.header().origin().user(), mailbox);
         List<String> last = workflows.receipts.last(mailbox, n);
         if (last.isEmpty()) {

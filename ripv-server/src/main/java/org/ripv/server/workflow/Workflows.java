@@ -15,6 +15,7 @@ import java.util.concurrent.ThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import com.google.re2j.Pattern;
+import org.ripv.commands.OptionValues;
 import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.Footer;
@@ -27,6 +28,8 @@ import org.ripv.server.files.FileNames;
 import org.ripv.server.store.StateStore;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
 
 /**
  * The workflow facility as the server sees it: the {@code ?queue} and {@code ?receipts}
@@ -299,9 +302,18 @@ public final class Workflows implements AutoCloseable {
         return commands.queueGenerated(mailbox, user, label, source);
     }
 
+    /** The words of {@code ?receipts}, read by picocli through the server's command table. */
+    public static final class ReceiptOptions {
+        @Parameters(index = "0", paramLabel = "MAILBOX")
+        String mailbox;
+        @Option(names = "--last", paramLabel = "N", converter = OptionValues.Last.class)
+        int last = 5;
+    }
+
     /** {@code ?receipts MAILBOX [--last N]}. */
-    public OutgoingServerMessage receiptsCommand(IncomingServerMessage request) throws IOException {
-        return commands.receipts(request);
+    public OutgoingServerMessage receiptsCommand(IncomingServerMessage request, ReceiptOptions options)
+            throws IOException {
+        return commands.receipts(request, options);
     }
 
     /** True while the MailBox's vehicle is on a call (the live console's call state: {@link WorkflowHost#onCall}). */

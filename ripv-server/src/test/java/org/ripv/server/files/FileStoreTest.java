@@ -47,9 +47,9 @@ class FileStoreTest {
     void downloadsAreReadInBoundedChunks() throws Exception {
         FileStore s = new FileStore(dir.resolve("up"), dir.resolve("down"), 100);
         assertThat(s.storeDownload("ttyV0", "log.txt", "0123456789".getBytes())).isEqualTo("ttyV0/log.txt");
-        Object[] chunk = s.readDownload("ttyV0/log.txt", 4, 3);
-        assertThat((Long) chunk[0]).isEqualTo(10);
-        assertThat(new String((byte[]) chunk[1])).isEqualTo("456");
+        DownloadChunk chunk = s.readDownload("ttyV0/log.txt", 4, 3);
+        assertThat(chunk.total()).isEqualTo(10);
+        assertThat(new String(chunk.data())).isEqualTo("456");
         assertThatThrownBy(() -> s.readDownload("log.txt", 11, 3)).hasMessageContaining("outside");
         assertThatThrownBy(() -> s.readDownload("missing", 0, 3)).hasMessageContaining("no file 'missing'");
     }
@@ -60,9 +60,9 @@ class FileStoreTest {
         s.storeDownload("ttyV0", "MISSION1.LOG", "zero".getBytes());
         s.storeDownload("ttyV1", "MISSION1.LOG", "one".getBytes());
         s.storeDownload("ttyV1", "ONLY.LOG", "only".getBytes());
-        assertThat(new String((byte[]) s.readDownload("ttyV0/MISSION1.LOG", 0, 100)[1])).isEqualTo("zero");
-        assertThat(new String((byte[]) s.readDownload("ttyV1/MISSION1.LOG", 0, 100)[1])).isEqualTo("one");
-        assertThat(new String((byte[]) s.readDownload("ONLY.LOG", 0, 100)[1])).isEqualTo("only");
+        assertThat(new String(s.readDownload("ttyV0/MISSION1.LOG", 0, 100).data())).isEqualTo("zero");
+        assertThat(new String(s.readDownload("ttyV1/MISSION1.LOG", 0, 100).data())).isEqualTo("one");
+        assertThat(new String(s.readDownload("ONLY.LOG", 0, 100).data())).isEqualTo("only");
         assertThatThrownBy(() -> s.readDownload("MISSION1.LOG", 0, 100)).hasMessageContaining("ttyV0/MISSION1.LOG, ttyV1/MISSION1.LOG");
         assertThat(s.listDownloads().files()).extracting(e -> e.name())
                 .containsExactly("ttyV0/MISSION1.LOG", "ttyV1/MISSION1.LOG", "ttyV1/ONLY.LOG");

@@ -172,6 +172,11 @@ class AdmissionStepsTest {
             }
 
             @Override
+            public String whyNotDownload(String user, String downloadName) {
+                return null;
+            }
+
+            @Override
             public java.util.concurrent.CompletableFuture<org.ripv.messages.Footer> call(String mailbox, String body, String user,
                     List<String> roles, org.ripv.messages.Attachment attachment,
                     java.util.function.Consumer<org.ripv.messages.Footer> progress) {

@@ -8,6 +8,7 @@ import java.util.Map;
 import net.jqwik.api.ForAll;
 import net.jqwik.api.Property;
 import org.junit.jupiter.api.Test;
+import org.ripv.json.Json;
 import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.VehicleEvent;
 

@@ -220,6 +220,7 @@ class StateStoreContractTest {
         assertThat(s.lastSurfacings(A, 3)).extracting(x -> x.substring(0, 8)).containsExactly("{\"n\":22,", "{\"n\":23,", "{\"n\":24,");
         assertThat(s.lastSurfacings(B, 3)).containsExactly("{\"n\":\"other\"}");
         assertThat(s.lastSurfacings("<X>::<none>", 3)).isEmpty();
+        assertThat(s.surfacingMailboxes()).containsExactlyInAnyOrder(A, B); // a restarted server knows whose calls it kept
         assertThatThrownBy(() -> open(Kind.EMBEDDED).appendSurfacing(A, T0, "{}\n{}", 10))
                 .isInstanceOf(IllegalArgumentException.class);
     }

@@ -167,4 +167,46 @@ class SurfacingsTest {
         assertThat(o.check(7_200_000 + 3_600_000 + 700_000)).singleElement().extracting(Overdue.Late::text).asString()
                 .contains("expected every 60 min (learned from its last 2 intervals) + 10 min grace");
     }
+
+    @Test
+    void aRestartedServerKnowsTheLearnedIntervalAndTheNextCall() throws Exception {
+        start();
+        long t0 = 1_700_000_000_000L;
+        for (int i = 0; i < 3; i++) {
+            call("fw7-surface-interval.txt", t0 + i * 3_600_000L);
+        }
+        surfacings.close();
+        store.close();
+        assertThat(events).extracting(ConsoleEntry::event).containsExactly(VehicleEvent.OVERDUE); // the first server said it
+        events.clear();
+        start(); // a new server on the same state store
+        Map<String, Object> o = surfacings.outlook(RU29, surfacings.last(RU29, 20));
+        assertThat(o).containsEntry("interval_s", 3600L).containsEntry("interval_from", "learned from its last 2 intervals")
+                .containsEntry("next_call_utc", java.time.Instant.ofEpochMilli(t0 + 3 * 3_600_000L + 1).toString());
+        assertThat(SurfacingCommands.words(o)).startsWith("next call: " + o.get("next_call_utc")
+                + " (every 3600 s, learned from its last 2 intervals)").contains("\nwaypoint 38.81000, -74.22333: ") // fw7's c_wpt 3848.6, -7413.4
+                .contains(" km at ").contains(" from the last fix");
+        Thread.sleep(300);
+        assertThat(events).isEmpty(); // long overdue before the restart: the server that ran then said so
+    }
+
+    @Test
+    void aVehicleDueAfterTheRestartIsOverdueByWhatItsStoredCallsTaught() throws Exception {
+        Files.writeString(data.resolve("surfacing-alerts.conf"), "* overdue.grace 500ms\n");
+        start();
+        long now = System.currentTimeMillis();
+        for (int i = 3; i > 0; i--) {
+            call("fw7-surface-interval.txt", now - i * 1000L);
+        }
+        surfacings.close();
+        store.close();
+        events.clear();
+        start();
+        long end = System.nanoTime() + Duration.ofSeconds(10).toNanos();
+        while (events.stream().noneMatch(e -> e.event() == VehicleEvent.OVERDUE) && System.nanoTime() < end) {
+            Thread.sleep(50);
+        }
+        assertThat(events).filteredOn(e -> e.event() == VehicleEvent.OVERDUE).singleElement().extracting(ConsoleEntry::text)
+                .asString().contains("expected every 1 s (learned from its last 2 intervals) + 0 s grace");
+    }
 }

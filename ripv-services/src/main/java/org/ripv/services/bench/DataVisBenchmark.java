@@ -9,6 +9,7 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
+import java.util.Random;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
@@ -131,7 +132,7 @@ public final class DataVisBenchmark {
     static byte[] dataFile(int n) {
         StringBuilder sb = new StringBuilder(n * 28);
         sb.append("% title: benchmark, ").append(n).append(" rows\n% xlabel: t (s)\n% ylabel: value\n% legend: sine | cosine\n");
-        java.util.Random random = new java.util.Random(42);
+        Random random = new Random(42);
         for (int i = 0; i < n; i++) {
             double t = i * 0.01;
             sb.append(String.format(Locale.ROOT, "%.2f", t)).append(' ');

@@ -10,7 +10,9 @@ import java.sql.Statement;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.Objects;
 import java.util.Properties;
+import org.ripv.dac.delivery.Deliveries;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.TableResult;
 import org.ripv.messages.UpdateCount;
@@ -18,6 +20,7 @@ import org.ripv.service.Availability;
 import org.ripv.service.CommandHandler;
 import org.ripv.service.Reply;
 import org.ripv.service.Request;
+import org.ripv.services.ingest.IngestLimits;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -70,8 +73,8 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
     private volatile boolean cancelRequested;
     /** True while an ingest runs (it has no one statement to cancel: it looks at cancelRequested between rows). */
     private boolean ingesting;
-    private org.ripv.services.ingest.IngestLimits ingestLimits = org.ripv.services.ingest.IngestLimits.defaults();
-    private org.ripv.dac.delivery.Deliveries deliveries = org.ripv.dac.delivery.Deliveries.NONE;
+    private IngestLimits ingestLimits = IngestLimits.defaults();
+    private Deliveries deliveries = Deliveries.NONE;
 
     public DatabaseHandler(DatabaseTarget target, QueryLimits limits) {
         this(target, limits, IngestNotices.NONE);
@@ -86,14 +89,14 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
     }
 
     /** Sets how much one ingested file may hold ({@code --ingest-max-bytes}, {@code --ingest-max-rows}). */
-    public DatabaseHandler withIngestLimits(org.ripv.services.ingest.IngestLimits limits) {
-        this.ingestLimits = java.util.Objects.requireNonNull(limits, "limits");
+    public DatabaseHandler withIngestLimits(IngestLimits limits) {
+        this.ingestLimits = Objects.requireNonNull(limits, "limits");
         return this;
     }
 
     /** Hands every Slocum file ingested here to the DAC deployments, and answers {@code dac:status} from them. */
-    DatabaseHandler withDeliveries(org.ripv.dac.delivery.Deliveries deliveries) {
-        this.deliveries = java.util.Objects.requireNonNull(deliveries, "deliveries");
+    DatabaseHandler withDeliveries(Deliveries deliveries) {
+        this.deliveries = Objects.requireNonNull(deliveries, "deliveries");
         ingest.deliverTo(deliveries);
         return this;
     }
@@ -108,7 +111,7 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
         if (IngestCommand.matches(request.command())) {
             return ingest(request);
         }
-        if (org.ripv.dac.delivery.Deliveries.matches(request.command())) {
+        if (Deliveries.matches(request.command())) {
             try {
                 return Reply.ok(deliveries.status(request.arguments()));
             } catch (IllegalArgumentException e) {

@@ -6,9 +6,11 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Objects;
 import java.util.Set;
+import org.ripv.dac.delivery.Deliveries;
 import org.ripv.messages.Ids;
 import org.ripv.naming.Handles;
 import org.ripv.service.RIPVService;
+import org.ripv.services.ingest.IngestLimits;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -38,8 +40,8 @@ public final class DatabaseServer extends RIPVService {
     private final List<DatabaseTarget> targets;
     private final QueryLimits limits;
     private final List<DatabaseHandler> handlers = new ArrayList<>();
-    private volatile org.ripv.services.ingest.IngestLimits ingestLimits = org.ripv.services.ingest.IngestLimits.defaults();
-    private volatile org.ripv.dac.delivery.Deliveries deliveries = org.ripv.dac.delivery.Deliveries.NONE;
+    private volatile IngestLimits ingestLimits = IngestLimits.defaults();
+    private volatile Deliveries deliveries = Deliveries.NONE;
 
     public DatabaseServer(String host, List<DatabaseTarget> targets, QueryLimits limits) {
         super(NAME, Ids.SID_DATABASE, host);
@@ -57,13 +59,13 @@ public final class DatabaseServer extends RIPVService {
     }
 
     /** How much one ingested file may hold (issue 33 item 8); set before the service starts. */
-    public DatabaseServer withIngestLimits(org.ripv.services.ingest.IngestLimits limits) {
+    public DatabaseServer withIngestLimits(IngestLimits limits) {
         this.ingestLimits = Objects.requireNonNull(limits, "limits");
         return this;
     }
 
     /** The DAC deployments that get every Slocum file ingested here (issue 37, {@code --dac}); set before the service starts. */
-    public DatabaseServer withDeliveries(org.ripv.dac.delivery.Deliveries deliveries) {
+    public DatabaseServer withDeliveries(Deliveries deliveries) {
         this.deliveries = Objects.requireNonNull(deliveries, "deliveries");
         return this;
     }

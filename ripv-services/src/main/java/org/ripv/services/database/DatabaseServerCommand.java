@@ -1,13 +1,18 @@
 package org.ripv.services.database;
 
 import java.io.IOException;
+import java.io.PrintStream;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.Callable;
+import org.ripv.dac.DacException;
+import org.ripv.dac.delivery.Deliveries;
+import org.ripv.launch.Secrets;
 import org.ripv.service.ServiceLaunchOptions;
 import org.ripv.launch.Launchers;
+import org.ripv.services.ingest.IngestLimits;
 import picocli.CommandLine;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
@@ -55,11 +60,11 @@ public final class DatabaseServerCommand implements Callable<Integer> {
             description = "Characters of cell text one reply may carry; keeps a table inside one 16 MiB frame (default: ${DEFAULT-VALUE}).")
     long maxResultChars;
 
-    @Option(names = "--ingest-max-bytes", paramLabel = "BYTES", defaultValue = "" + org.ripv.services.ingest.IngestLimits.DEFAULT_MAX_PLAIN_BYTES,
+    @Option(names = "--ingest-max-bytes", paramLabel = "BYTES", defaultValue = "" + IngestLimits.DEFAULT_MAX_PLAIN_BYTES,
             description = "Bytes one compressed Slocum file may decompress to; a larger one is refused (default: ${DEFAULT-VALUE}).")
     long ingestMaxBytes;
 
-    @Option(names = "--ingest-max-rows", paramLabel = "N", defaultValue = "" + org.ripv.services.ingest.IngestLimits.DEFAULT_MAX_ROWS,
+    @Option(names = "--ingest-max-rows", paramLabel = "N", defaultValue = "" + IngestLimits.DEFAULT_MAX_ROWS,
             description = "Rows (cycles) one ingested file may hold; a larger one is refused, nothing of it stored (default: ${DEFAULT-VALUE}).")
     long ingestMaxRows;
 
@@ -127,30 +132,30 @@ public final class DatabaseServerCommand implements Callable<Integer> {
                         d.schema));
             }
         }
-        return new DatabaseServer(host, targets, limits).withIngestLimits(new org.ripv.services.ingest.IngestLimits(ingestMaxBytes,
+        return new DatabaseServer(host, targets, limits).withIngestLimits(new IngestLimits(ingestMaxBytes,
                 ingestMaxRows));
     }
 
     /** The DAC deployments of {@code --dac}, read and checked before the service registers. */
-    org.ripv.dac.delivery.Deliveries deliveries() throws org.ripv.dac.DacException, IOException {
-        return dac.isEmpty() ? org.ripv.dac.delivery.Deliveries.NONE : org.ripv.dac.delivery.Deliveries.start(dac);
+    Deliveries deliveries() throws DacException, IOException {
+        return dac.isEmpty() ? Deliveries.NONE : Deliveries.start(dac);
     }
 
     /** Where launch warnings go (standard error; injectable for tests). */
-    java.io.PrintStream err = System.err;
+    PrintStream err = System.err;
 
     /** A password from the option (with a warning), its file, the environment, or the terminal when a user is named. */
     private String secret(String value, Path file, String user, String option, String env) throws IOException {
-        return org.ripv.launch.Secrets.resolve(value, file, env, option, user != null, err);
+        return Secrets.resolve(value, file, env, option, user != null, err);
     }
 
     @Override
     public Integer call() throws Exception {
         String host = launch.hostName();
-        org.ripv.dac.delivery.Deliveries deliveries;
+        Deliveries deliveries;
         try {
             deliveries = deliveries();
-        } catch (org.ripv.dac.DacException | IOException e) {
+        } catch (DacException | IOException e) {
             System.err.println("Error: the DAC deployment is refused: " + e.getMessage());
             return 1;
         }

@@ -10,13 +10,20 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
+import java.util.function.BooleanSupplier;
+import org.ripv.dac.delivery.Deliveries;
 import org.ripv.messages.Attachment;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.Progress;
+import org.ripv.messages.UpdateCount;
 import org.ripv.service.Reply;
 import org.ripv.service.Request;
 import org.ripv.services.ingest.DbaFormatException;
 import org.ripv.services.ingest.DbaIngest;
+import org.ripv.services.ingest.IngestLimits;
+import org.ripv.services.ingest.IngestStopped;
+import org.ripv.services.ingest.MissingSensorListException;
+import org.ripv.services.ingest.SlocumFormatException;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -64,7 +71,7 @@ final class IngestCommand {
     private final IngestNotices notices;
     private boolean schemaChecked;
     /** The DAC deployments each stored Slocum binary file goes to (issue 37 item 4). */
-    private volatile org.ripv.dac.delivery.Deliveries deliveries = org.ripv.dac.delivery.Deliveries.NONE;
+    private volatile Deliveries deliveries = Deliveries.NONE;
     /** The files waiting for a sensor-list cache, as {@code ?status} shows them; empty when none. */
     private volatile String waiting = "";
 
@@ -96,7 +103,7 @@ final class IngestCommand {
         }
     }
 
-    void deliverTo(org.ripv.dac.delivery.Deliveries deliveries) {
+    void deliverTo(Deliveries deliveries) {
         this.deliveries = deliveries;
     }
 
@@ -108,11 +115,11 @@ final class IngestCommand {
     }
 
     Reply run(Request request, Connection c) {
-        return run(request, c, org.ripv.services.ingest.IngestLimits.defaults(), () -> false);
+        return run(request, c, IngestLimits.defaults(), () -> false);
     }
 
     /** As above, each file within {@code limits}, stopping when {@code cancelled} says so ({@code ?cancel}). */
-    Reply run(Request request, Connection c, org.ripv.services.ingest.IngestLimits limits, java.util.function.BooleanSupplier cancelled) {
+    Reply run(Request request, Connection c, IngestLimits limits, BooleanSupplier cancelled) {
         List<String> names = request.arguments();
         if (names.isEmpty()) {
             return Reply.error(ErrorCode.BAD_REQUEST, "usage: ingest NAME... (Slocum DBA files in the server's download"
@@ -155,7 +162,7 @@ final class IngestCommand {
                         try {
                             line += store(ingest, w, request.user()).describe();
                             notices.released(w.name(), crc, line, request.user());
-                        } catch (DbaFormatException | org.ripv.services.ingest.SlocumFormatException | SQLException e) {
+                        } catch (DbaFormatException | SlocumFormatException | SQLException e) {
                             refused++;
                             line += "refused, nothing stored: " + (e instanceof SQLException s ? DatabaseHandler.describe(s)
                                     : e.getMessage());
@@ -173,12 +180,12 @@ final class IngestCommand {
                 values += o.duplicate() ? 0 : o.values();
                 log.info("{} ingest {} for {}: {} in {} ms", target.handle(), f.name(), request.user(), o.describe(),
                         (System.nanoTime() - t0) / 1_000_000);
-            } catch (org.ripv.services.ingest.MissingSensorListException e) {
+            } catch (MissingSensorListException e) {
                 lines.add(f.name() + ": kept, waiting for the sensor list " + e.crc() + ".cac (ymodem:get " + e.crc()
                         + ".cac, or upload it and ingest it); it is ingested by itself when that arrives");
                 notices.waiting(f.name(), e.crc(), request.user());
                 log.info("{} ingest {} for {}: waits for {}.cac", target.handle(), f.name(), request.user(), e.crc());
-            } catch (org.ripv.services.ingest.IngestStopped e) {
+            } catch (IngestStopped e) {
                 if (e.cancelled()) {
                     lines.add(e.getMessage());
                     log.info("{} ingest of {} for {} cancelled", target.handle(), f.name(), request.user());
@@ -189,7 +196,7 @@ final class IngestCommand {
                 refused++;
                 lines.add(f.name() + ": refused, nothing stored: " + e.getMessage());
                 log.info("{} ingest {} for {} refused: {}", target.handle(), f.name(), request.user(), e.getMessage());
-            } catch (DbaFormatException | org.ripv.services.ingest.SlocumFormatException | IllegalArgumentException e) {
+            } catch (DbaFormatException | SlocumFormatException | IllegalArgumentException e) {
                 refused++;
                 lines.add(f.name() + ": refused, nothing stored: " + e.getMessage());
                 notices.refused(lines.get(lines.size() - 1), request.user());
@@ -214,12 +221,12 @@ final class IngestCommand {
         if (refused > 0) {
             return Reply.error(ErrorCode.BAD_REQUEST, text);
         }
-        return Reply.ok(text, new org.ripv.messages.UpdateCount((int) Math.min(Integer.MAX_VALUE, values)));
+        return Reply.ok(text, new UpdateCount((int) Math.min(Integer.MAX_VALUE, values)));
     }
 
     /** Stores a DBA file, or a Slocum binary file's cycles as they are decoded (no DBA text in between). */
     private DbaIngest.Outcome store(DbaIngest ingest, Attachment f, String user)
-            throws IOException, SQLException, DbaFormatException, org.ripv.services.ingest.SlocumFormatException {
+            throws IOException, SQLException, DbaFormatException, SlocumFormatException {
         if (SlocumArrivals.isBinary(f)) {
             DbaIngest.Outcome o = ingest.ingest(f.name(), DbaIngest.sha256(f.data()), () -> slocum.open(f), user);
             try {

@@ -1,5 +1,6 @@
 package org.ripv.services.database;
 
+import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -54,7 +55,7 @@ final class SeedInChild {
                 return false;
             }
             return Files.isRegularFile(dataDir.resolve(EmbeddedDatabase.CREDENTIALS));
-        } catch (java.io.IOException e) {
+        } catch (IOException e) {
             log.warn("cannot start a JVM for the first start ({}); seeding here instead", e.getMessage());
             return false;
         } catch (InterruptedException e) {

@@ -7,7 +7,9 @@ import java.sql.PreparedStatement;
 import java.sql.SQLException;
 import java.sql.Statement;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
@@ -30,7 +32,7 @@ final class SeedLoader {
     static long run(Connection c, String script, String name) throws SQLException {
         long rows = 0;
         List<String> statements = SqlScript.split(script);
-        java.util.Map<String, PreparedStatement> prepared = new java.util.HashMap<>();
+        Map<String, PreparedStatement> prepared = new HashMap<>();
         try (Statement plain = c.createStatement()) {
             for (int i = 0; i < statements.size(); i++) {
                 String sql = statements.get(i);

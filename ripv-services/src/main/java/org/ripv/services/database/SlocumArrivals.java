@@ -3,12 +3,14 @@ package org.ripv.services.database;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.stream.Stream;
 import org.ripv.messages.Attachment;
 import org.ripv.services.ingest.Cycles;
+import org.ripv.services.ingest.IngestLimits;
 import org.ripv.services.ingest.MissingSensorListException;
 import org.ripv.services.ingest.SensorListCache;
 import org.ripv.services.ingest.SlocumBinaryFiles;
@@ -24,7 +26,7 @@ import org.ripv.services.ingest.SlocumFormatException;
 final class SlocumArrivals {
     private final SensorListCache cache;
     private final Path waiting;
-    private volatile long maxPlainBytes = org.ripv.services.ingest.IngestLimits.DEFAULT_MAX_PLAIN_BYTES;
+    private volatile long maxPlainBytes = IngestLimits.DEFAULT_MAX_PLAIN_BYTES;
 
     SlocumArrivals(Path base) {
         this.cache = new SensorListCache(base.resolve("sensor-cache"));
@@ -72,7 +74,7 @@ final class SlocumArrivals {
             Files.createDirectories(dir);
             Path tmp = Files.createTempFile(dir, ".arriving-", ".part");
             Files.write(tmp, f.data());
-            Files.move(tmp, dir.resolve(safe(f.name())), java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+            Files.move(tmp, dir.resolve(safe(f.name())), StandardCopyOption.REPLACE_EXISTING);
             throw e;
         }
     }

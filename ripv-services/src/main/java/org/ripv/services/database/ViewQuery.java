@@ -4,6 +4,8 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Set;
+import java.util.TreeSet;
+import java.util.regex.Pattern;
 
 /**
  * What a view user ({@value #ROLE}) may run: one {@code SELECT} from one of the data views,
@@ -36,7 +38,7 @@ public final class ViewQuery {
     }
 
     /** A time literal, as the plots the server runs for the user write it: the one parenthesis allowed. */
-    private static final java.util.regex.Pattern TIME_LITERAL = java.util.regex.Pattern.compile(
+    private static final Pattern TIME_LITERAL = Pattern.compile(
             "(?i)CAST\\s*\\(\\s*'[0-9 :.T\\-]{1,40}'\\s+AS\\s+(TIMESTAMP|DATE|TIME)\\s*\\)");
 
     /** Returns null when {@code sql} is one SELECT from one view, else why not (quoting it). */
@@ -64,7 +66,7 @@ public final class ViewQuery {
             view = view.substring(4);
         }
         if (!VIEWS.contains(view)) {
-            return why(sql, "'" + words.get(from + 1) + "' is not one of the views " + new java.util.TreeSet<>(VIEWS));
+            return why(sql, "'" + words.get(from + 1) + "' is not one of the views " + new TreeSet<>(VIEWS));
         }
         if (from + 2 < words.size() && !AFTER_VIEW.contains(words.get(from + 2))) {
             return why(sql, "only WHERE, ORDER BY, OFFSET or FETCH may follow the view, not '" + words.get(from + 2) + "'");
@@ -74,7 +76,7 @@ public final class ViewQuery {
 
     private static String why(String sql, String reason) {
         String shown = sql.length() > 120 ? sql.substring(0, 120) + "…" : sql;
-        return "view users (role " + ROLE + ") may run one SELECT from one of the views " + new java.util.TreeSet<>(VIEWS)
+        return "view users (role " + ROLE + ") may run one SELECT from one of the views " + new TreeSet<>(VIEWS)
                 + " with WHERE, ORDER BY, OFFSET and FETCH and no parentheses; '" + shown + "' is refused: " + reason;
     }
 

@@ -6,7 +6,9 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import org.ripv.charts.ChartRenderer;
 import org.ripv.messages.ChartData;
+import org.slf4j.LoggerFactory;
 
 /**
  * Builds the {@link ChartData} a client redraws interactively from the same data file a worker
@@ -61,7 +63,7 @@ final class ChartDataBuilder {
         }
         ChartData.Mark newest = null;
         if (kind == ChartData.Kind.TRACK && Double.isFinite(r.lastX()) && Double.isFinite(r.lastY())) {
-            newest = new ChartData.Mark(r.lastX(), r.lastY(), labels.mark() == null ? "newest fix" : labels.mark());
+            newest = new ChartData.Mark(r.lastX(), r.lastY(), labels.mark() == null ? ChartRenderer.NEWEST_FIX : labels.mark());
         }
         return new ChartData(kind, labels.title(), labels.xLabel(), labels.yLabel(), series, newest, checked.rows(),
                 r.reduced());
@@ -78,7 +80,7 @@ final class ChartDataBuilder {
         try {
             return build(data, checked);
         } catch (IOException | DataFormatException | RuntimeException e) {
-            org.slf4j.LoggerFactory.getLogger(ChartDataBuilder.class).warn("no chart data for the reply: {}", e.toString());
+            LoggerFactory.getLogger(ChartDataBuilder.class).warn("no chart data for the reply: {}", e.toString());
             return null;
         }
     }
@@ -264,34 +266,17 @@ final class ChartDataBuilder {
                 double[] py = new double[5];
                 int k = 0;
                 if (firstRow >= 0) {
-                    k = insert(rowsOf, px, py, k, firstRow, firstX, firstY);
-                    k = insert(rowsOf, px, py, k, minRow, minX, minY);
-                    k = insert(rowsOf, px, py, k, maxRow, maxX, maxY);
-                    k = insert(rowsOf, px, py, k, lastRow, lastX, lastY);
+                    k = BucketPoints.insert(rowsOf, px, py, k, firstRow, firstX, firstY);
+                    k = BucketPoints.insert(rowsOf, px, py, k, minRow, minX, minY);
+                    k = BucketPoints.insert(rowsOf, px, py, k, maxRow, maxX, maxY);
+                    k = BucketPoints.insert(rowsOf, px, py, k, lastRow, lastX, lastY);
                 }
                 if (gapRow >= 0) {
-                    k = insert(rowsOf, px, py, k, gapRow, k > 0 ? px[k - 1] : Double.NaN, Double.NaN);
+                    k = BucketPoints.insert(rowsOf, px, py, k, gapRow, k > 0 ? px[k - 1] : Double.NaN, Double.NaN);
                 }
                 for (int j = 0; j < k; j++) {
                     r.put(s, px[j], py[j]);
                 }
-            }
-
-            private static int insert(long[] rowsOf, double[] px, double[] py, int k, long row, double x, double y) {
-                int j = 0;
-                while (j < k && rowsOf[j] < row) {
-                    j++;
-                }
-                if (j < k && rowsOf[j] == row) {
-                    return k;
-                }
-                System.arraycopy(rowsOf, j, rowsOf, j + 1, k - j);
-                System.arraycopy(px, j, px, j + 1, k - j);
-                System.arraycopy(py, j, py, j + 1, k - j);
-                rowsOf[j] = row;
-                px[j] = x;
-                py[j] = y;
-                return k + 1;
             }
         }
     }

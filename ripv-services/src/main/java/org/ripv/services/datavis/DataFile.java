@@ -7,6 +7,7 @@ import java.io.InputStreamReader;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import java.util.regex.Matcher;
@@ -154,8 +155,8 @@ public final class DataFile {
                         + ": '" + shorten(raw) + "'");
             }
             if (pendingGap) {
-                java.util.Arrays.fill(values, Double.NaN);
-                java.util.Arrays.fill(tokens, "NaN");
+                Arrays.fill(values, Double.NaN);
+                Arrays.fill(tokens, "NaN");
                 sink.row(values, tokens);
                 rows++;
                 pendingGap = false;

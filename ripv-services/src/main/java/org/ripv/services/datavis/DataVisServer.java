@@ -4,6 +4,7 @@ import java.io.BufferedWriter;
 import java.io.IOException;
 import java.io.OutputStreamWriter;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.ClosedWatchServiceException;
 import java.nio.file.FileSystems;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -17,7 +18,9 @@ import java.util.Optional;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import org.ripv.exceptions.ServiceException;
+import org.ripv.files.PrivateFiles;
 import org.ripv.messages.Attachment;
+import org.ripv.messages.ChartData;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.Ids;
 import org.ripv.messages.ImageResult;
@@ -130,8 +133,8 @@ public final class DataVisServer extends RIPVService {
 
     @Override
     protected void open() throws Exception {
-        org.ripv.files.PrivateFiles.createDirectories(dir);
-        org.ripv.files.PrivateFiles.restrict(dir); // 0700: operators' data and plots are not for every local user
+        PrivateFiles.createDirectories(dir);
+        PrivateFiles.restrict(dir); // 0700: operators' data and plots are not for every local user
         int stale = Exchange.clean(dir);
         if (stale > 0) {
             log.info("removed {} exchange file(s) left in {} by an earlier run", stale, dir);
@@ -284,11 +287,11 @@ public final class DataVisServer extends RIPVService {
                     + " worker", new Progress("rows checked and handed to the " + config.worker() + " worker",
                             summary.rows(), summary.rows(), 0));
             // The chart's numbers for an interactive plot in the client, while the worker draws.
-            org.ripv.messages.ChartData chart = ChartDataBuilder.forReply(config.worker(), file.data(), summary);
+            ChartData chart = ChartDataBuilder.forReply(config.worker(), file.data(), summary);
             String status;
             try {
                 status = awaitWorker(watch, vis, exchangeName);
-            } catch (java.nio.file.ClosedWatchServiceException e) {
+            } catch (ClosedWatchServiceException e) {
                 if (!plotCancel.asked()) {
                     throw e;
                 }

@@ -6,9 +6,11 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.util.List;
+import java.util.Locale;
 import java.util.Optional;
 import java.util.regex.Pattern;
 
@@ -42,7 +44,7 @@ public final class Exchange {
 
     /** The JPEG a worker writes for an output name; a name given with ".jpg" is not doubled. */
     public static String jpegName(String output) {
-        return output.toLowerCase(java.util.Locale.ROOT).endsWith(".jpg") ? output : output + ".jpg";
+        return output.toLowerCase(Locale.ROOT).endsWith(".jpg") ? output : output + ".jpg";
     }
 
     /** Writes a file so that it appears complete or not at all. */
@@ -66,7 +68,7 @@ public final class Exchange {
         try {
             List<String> lines = Files.readAllLines(file, StandardCharsets.UTF_8);
             return Optional.of(lines.isEmpty() ? "" : lines.get(0).strip());
-        } catch (java.nio.file.NoSuchFileException e) {
+        } catch (NoSuchFileException e) {
             return Optional.empty();
         }
     }
@@ -82,7 +84,7 @@ public final class Exchange {
         try (DirectoryStream<Path> files = Files.newDirectoryStream(dir)) {
             for (Path f : files) {
                 String n = f.getFileName().toString();
-                String lower = n.toLowerCase(java.util.Locale.ROOT);
+                String lower = n.toLowerCase(Locale.ROOT);
                 if (n.equals(DATA) || n.equals(INFO) || n.equals(OK) || lower.endsWith(".jpg") || lower.endsWith(".jpeg")
                         || n.endsWith(TMP_SUFFIX)) {
                     try {

@@ -15,6 +15,7 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
+import org.ripv.files.PrivateFiles;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -78,8 +79,8 @@ public final class OctaveWorker implements AutoCloseable {
             dir.resolve("ripvOut.m").toFile().deleteOnExit();
             dir.toFile().deleteOnExit();
         }
-        org.ripv.files.PrivateFiles.createDirectories(workDir);
-        org.ripv.files.PrivateFiles.restrict(workDir); // Octave writes with its own umask; the directory keeps it private
+        PrivateFiles.createDirectories(workDir);
+        PrivateFiles.restrict(workDir); // Octave writes with its own umask; the directory keeps it private
         OctaveWorker w = new OctaveWorker(workDir, octave, dir);
         w.launch(); // the first start fails loudly; later ones retry
         return w;

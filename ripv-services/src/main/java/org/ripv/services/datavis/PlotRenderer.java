@@ -1,36 +1,21 @@
 package org.ripv.services.datavis;
 
-import java.awt.BasicStroke;
-import java.awt.Color;
-import java.awt.Graphics2D;
-import java.awt.RenderingHints;
-import java.awt.geom.Rectangle2D;
-import java.awt.image.BufferedImage;
 import java.io.BufferedReader;
-import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.HashSet;
 import java.util.List;
-import java.util.Set;
-import javax.imageio.IIOImage;
-import javax.imageio.ImageIO;
-import javax.imageio.ImageWriteParam;
-import javax.imageio.ImageWriter;
-import javax.imageio.stream.ImageOutputStream;
-import org.jfree.chart.ChartFactory;
 import org.jfree.chart.JFreeChart;
-import org.jfree.chart.axis.NumberAxis;
-import org.jfree.chart.plot.PlotOrientation;
-import org.jfree.chart.plot.XYPlot;
-import org.jfree.chart.renderer.xy.XYLineAndShapeRenderer;
-import org.jfree.data.xy.DefaultXYDataset;
+import org.ripv.charts.ChartRenderer;
+import org.ripv.messages.ChartData;
+import org.slf4j.LoggerFactory;
 
 /**
- * The built-in worker's drawing: a data file to a JFreeChart line plot to JPEG bytes.
+ * The built-in worker's drawing: a data file to a plot drawn by RIPV's one chart renderer
+ * ({@link ChartRenderer}, JFreeChart) as JPEG bytes, in the look of its {@code % plot:} style.
  *
  * <p>Memory stays bounded whatever the file's length: the file is read twice as a stream
  * (once to count, once to draw), and a file of more than {@link #EXACT_LIMIT} rows is reduced per
@@ -41,7 +26,6 @@ import org.jfree.data.xy.DefaultXYDataset;
 public final class PlotRenderer {
     /** Files up to this many rows are drawn point by point. */
     public static final int EXACT_LIMIT = 20_000;
-    private static final float JPEG_QUALITY = 0.9f;
 
     private PlotRenderer() {}
 
@@ -87,26 +71,23 @@ public final class PlotRenderer {
                 }
             });
         }
-        DefaultXYDataset dataset = new DefaultXYDataset();
-        List<String> names = labels.legend() == null ? List.of() : labels.legend();
-        Set<String> used = new HashSet<>();
+        List<String> given = labels.legend() == null ? List.of() : labels.legend();
+        List<String> names = new ArrayList<>(series);
+        List<double[][]> xy = new ArrayList<>(series);
         long points = 0;
         for (int s = 0; s < series; s++) {
-            String name = s < names.size() && !names.get(s).isEmpty() ? names.get(s) : "column " + (s + 2);
-            String key = name;
-            for (int n = 2; !used.add(key); n++) {
-                key = name + " (" + n + ")"; // series keys must differ
-            }
-            double[][] xy = collector.series(s);
-            points += xy[0].length;
-            dataset.addSeries(key, xy);
+            names.add(s < given.size() && !given.get(s).isEmpty() ? given.get(s) : "column " + (s + 2));
+            double[][] one = collector.series(s);
+            points += one[0].length;
+            xy.add(one);
         }
-        boolean legend = labels.legend() != null || series > 1;
-        JFreeChart chart = ChartFactory.createXYLineChart(nz(labels.title()), nz(labels.xLabel()), nz(labels.yLabel()),
-                dataset, PlotOrientation.VERTICAL, legend, false, false);
-        style(chart, series);
-        PlotStyles.apply(chart, labels, dataset, last[0], last[1], width, height);
-        return new Rendered(jpeg(chart, width, height), summary.rows(), series, points);
+        ChartData.Kind kind = ChartDataBuilder.kindOf(labels.style());
+        ChartData.Mark newest = kind == ChartData.Kind.TRACK && finite(last[0]) && finite(last[1])
+                ? new ChartData.Mark(last[0], last[1], labels.mark() == null ? ChartRenderer.NEWEST_FIX : labels.mark())
+                : null;
+        JFreeChart chart = ChartRenderer.picture(new ChartRenderer.Plot(kind, nz(labels.title()), nz(labels.xLabel()),
+                nz(labels.yLabel()), names, xy, newest, labels.legend() != null || series > 1), width, height);
+        return new Rendered(ChartRenderer.jpeg(chart, width, height), summary.rows(), series, points);
     }
 
     /**
@@ -115,53 +96,12 @@ public final class PlotRenderer {
      */
     public static void warmUp() {
         try {
-            DefaultXYDataset d = new DefaultXYDataset();
-            d.addSeries("warm-up", new double[][] {{0, 1, 2}, {0, 1, Double.NaN}});
-            JFreeChart chart = ChartFactory.createXYLineChart("warm-up", "x", "y", d, PlotOrientation.VERTICAL, true,
-                    false, false);
-            style(chart, 1);
-            jpeg(chart, 200, 150);
+            JFreeChart chart = ChartRenderer.chart(new ChartRenderer.Plot(ChartData.Kind.XY, "warm-up", "x", "y",
+                    List.of("warm-up"), List.<double[][]>of(new double[][] {{0, 1, 2}, {0, 1, Double.NaN}}), null, true));
+            ChartRenderer.jpeg(chart, 200, 150);
         } catch (IOException | RuntimeException e) {
-            org.slf4j.LoggerFactory.getLogger(PlotRenderer.class).debug("warm-up plot failed: {}", e.toString());
+            LoggerFactory.getLogger(PlotRenderer.class).debug("warm-up plot failed: {}", e.toString());
         }
-    }
-
-    private static void style(JFreeChart chart, int series) {
-        chart.setBackgroundPaint(Color.WHITE);
-        chart.setAntiAlias(true);
-        XYPlot plot = chart.getXYPlot();
-        plot.setBackgroundPaint(Color.WHITE);
-        plot.setDomainGridlinePaint(Color.LIGHT_GRAY);
-        plot.setRangeGridlinePaint(Color.LIGHT_GRAY);
-        ((NumberAxis) plot.getDomainAxis()).setAutoRangeIncludesZero(false);
-        ((NumberAxis) plot.getRangeAxis()).setAutoRangeIncludesZero(false);
-        XYLineAndShapeRenderer r = (XYLineAndShapeRenderer) plot.getRenderer();
-        for (int s = 0; s < series; s++) {
-            r.setSeriesStroke(s, new BasicStroke(1.2f));
-        }
-    }
-
-    static byte[] jpeg(JFreeChart chart, int width, int height) throws IOException {
-        BufferedImage image = new BufferedImage(width, height, BufferedImage.TYPE_INT_RGB);
-        Graphics2D g = image.createGraphics();
-        try {
-            g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
-            chart.draw(g, new Rectangle2D.Double(0, 0, width, height));
-        } finally {
-            g.dispose();
-        }
-        ImageWriter writer = ImageIO.getImageWritersByFormatName("jpeg").next();
-        ByteArrayOutputStream bytes = new ByteArrayOutputStream(64 * 1024);
-        try (ImageOutputStream out = ImageIO.createImageOutputStream(bytes)) {
-            writer.setOutput(out);
-            ImageWriteParam p = writer.getDefaultWriteParam();
-            p.setCompressionMode(ImageWriteParam.MODE_EXPLICIT);
-            p.setCompressionQuality(JPEG_QUALITY);
-            writer.write(null, new IIOImage(image, null, null), p);
-        } finally {
-            writer.dispose();
-        }
-        return bytes.toByteArray();
     }
 
     private static boolean finite(double d) {
@@ -294,10 +234,10 @@ public final class PlotRenderer {
             for (int b = 0; b < buckets; b++) {
                 int k = 0;
                 if (firstI[s][b] >= 0) {
-                    k = put(idx, px, py, k, firstI[s][b], firstX[s][b], firstY[s][b]);
-                    k = put(idx, px, py, k, minI[s][b], minX[s][b], minY[s][b]);
-                    k = put(idx, px, py, k, maxI[s][b], maxX[s][b], maxY[s][b]);
-                    k = put(idx, px, py, k, lastI[s][b], lastX[s][b], lastY[s][b]);
+                    k = BucketPoints.insert(idx, px, py, k, firstI[s][b], firstX[s][b], firstY[s][b]);
+                    k = BucketPoints.insert(idx, px, py, k, minI[s][b], minX[s][b], minY[s][b]);
+                    k = BucketPoints.insert(idx, px, py, k, maxI[s][b], maxX[s][b], maxY[s][b]);
+                    k = BucketPoints.insert(idx, px, py, k, lastI[s][b], lastX[s][b], lastY[s][b]);
                 }
                 long gap = gapI[s][b];
                 boolean gapDone = gap < 0;
@@ -316,24 +256,6 @@ public final class PlotRenderer {
                 }
             }
             return new double[][] {Arrays.copyOf(xs, n), Arrays.copyOf(ys, n)};
-        }
-
-        /** Adds a point unless its row is there already, keeping the points in row order. */
-        private static int put(long[] idx, double[] px, double[] py, int k, long i, double x, double y) {
-            int j = 0;
-            while (j < k && idx[j] < i) {
-                j++;
-            }
-            if (j < k && idx[j] == i) {
-                return k;
-            }
-            System.arraycopy(idx, j, idx, j + 1, k - j);
-            System.arraycopy(px, j, px, j + 1, k - j);
-            System.arraycopy(py, j, py, j + 1, k - j);
-            idx[j] = i;
-            px[j] = x;
-            py[j] = y;
-            return k + 1;
         }
     }
 }

@@ -11,6 +11,7 @@ import java.nio.file.WatchKey;
 import java.nio.file.WatchService;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.atomic.AtomicLong;
+import org.ripv.files.PrivateFiles;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -34,8 +35,8 @@ public final class PlotWorker implements AutoCloseable {
 
     private PlotWorker(Path dir) throws IOException {
         this.dir = dir.toAbsolutePath();
-        org.ripv.files.PrivateFiles.createDirectories(this.dir);
-        org.ripv.files.PrivateFiles.restrict(this.dir);
+        PrivateFiles.createDirectories(this.dir);
+        PrivateFiles.restrict(this.dir);
         this.watch = FileSystems.getDefault().newWatchService();
         this.dir.register(watch, StandardWatchEventKinds.ENTRY_CREATE, StandardWatchEventKinds.ENTRY_MODIFY);
         this.thread = new Thread(this::run, "ripv-datavis-worker-" + this.dir.getFileName());

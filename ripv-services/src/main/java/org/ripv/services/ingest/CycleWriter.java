@@ -1,10 +1,15 @@
 package org.ripv.services.ingest;
 
+import java.math.BigDecimal;
+import java.math.MathContext;
+import java.math.RoundingMode;
 import java.sql.Connection;
 import java.sql.PreparedStatement;
 import java.sql.ResultSet;
 import java.sql.SQLException;
 import java.sql.Timestamp;
+import java.time.Instant;
+import java.time.temporal.ChronoUnit;
 import java.util.Calendar;
 import java.util.HashSet;
 import java.util.Set;
@@ -84,16 +89,16 @@ final class CycleWriter implements AutoCloseable {
      * are one key (t × 1e5 in doubles would round the first up).
      */
     static long keyUnits(double t) {
-        return new java.math.BigDecimal(t).round(new java.math.MathContext(15, java.math.RoundingMode.HALF_EVEN))
-                .movePointRight(5).setScale(0, java.math.RoundingMode.HALF_EVEN).longValueExact();
+        return new BigDecimal(t).round(new MathContext(15, RoundingMode.HALF_EVEN))
+                .movePointRight(5).setScale(0, RoundingMode.HALF_EVEN).longValueExact();
     }
 
     /** Stores a cycle (row {@code rowNo} of this file, at {@code t} epoch seconds), or merges it into the one stored. */
     void cycle(long rowNo, double t, double[] row, int[] sensorIds) throws SQLException {
         Timestamp time = DbaIngest.timestamp(t);
         long units = keyUnits(t);
-        Timestamp key = Timestamp.from(java.time.Instant.ofEpochSecond(0, 0).plus(units * KEY_RESOLUTION,
-                java.time.temporal.ChronoUnit.MICROS));
+        Timestamp key = Timestamp.from(Instant.ofEpochSecond(0, 0).plus(units * KEY_RESOLUTION,
+                ChronoUnit.MICROS));
         if (!lookup && units <= lastUnits) {
             flush(); // the clock stepped back or stood still: from here on, cycles are looked up
             lookup = true;

@@ -1,5 +1,7 @@
 package org.ripv.services.ingest;
 
+import java.util.Collections;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
@@ -12,7 +14,7 @@ import java.util.Map;
  */
 public record DbaHeader(Map<String, String> tags, List<Sensor> sensors) {
     public DbaHeader {
-        tags = java.util.Collections.unmodifiableMap(new java.util.LinkedHashMap<>(tags));
+        tags = Collections.unmodifiableMap(new LinkedHashMap<>(tags));
         sensors = List.copyOf(sensors);
     }
 

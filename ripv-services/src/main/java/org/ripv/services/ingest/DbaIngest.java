@@ -10,13 +10,16 @@ import java.sql.ResultSet;
 import java.sql.SQLException;
 import java.sql.Statement;
 import java.sql.Timestamp;
+import java.sql.Types;
 import java.time.Instant;
+import java.util.Arrays;
 import java.util.Calendar;
 import java.util.HashMap;
 import java.util.HexFormat;
 import java.util.List;
 import java.util.Map;
 import java.util.TimeZone;
+import java.util.function.BooleanSupplier;
 
 /**
  * Stores one Slocum file — DBA text or binary, read as {@link Cycles} — in the narrow schema of
@@ -81,14 +84,14 @@ public final class DbaIngest {
 
     private final Connection c;
     private IngestLimits limits = IngestLimits.defaults();
-    private java.util.function.BooleanSupplier cancelled = () -> false;
+    private BooleanSupplier cancelled = () -> false;
 
     public DbaIngest(Connection connection) {
         this.c = connection;
     }
 
     /** At most {@code limits.maxRows()} rows a file; {@code cancelled} is asked every {@link IngestLimits#CANCEL_EVERY} rows. */
-    public DbaIngest limitedBy(IngestLimits limits, java.util.function.BooleanSupplier cancelled) {
+    public DbaIngest limitedBy(IngestLimits limits, BooleanSupplier cancelled) {
         this.limits = limits;
         this.cancelled = cancelled;
         return this;
@@ -228,7 +231,7 @@ public final class DbaIngest {
         double[] row = new double[h.sensors().size()];
         double[] lastT = new double[row.length];
         double[] lastV = new double[row.length];
-        java.util.Arrays.fill(lastT, Double.NaN);
+        Arrays.fill(lastT, Double.NaN);
         long untimed = 0;
         double first = Double.NaN;
         double last = Double.NaN;
@@ -271,8 +274,8 @@ public final class DbaIngest {
                 up.setTimestamp(4, Double.isNaN(first) ? null : timestamp(first), utc);
                 up.setTimestamp(5, Double.isNaN(last) ? null : timestamp(last), utc);
                 if (depths == 0) {
-                    up.setNull(6, java.sql.Types.DOUBLE);
-                    up.setNull(7, java.sql.Types.DOUBLE);
+                    up.setNull(6, Types.DOUBLE);
+                    up.setNull(7, Types.DOUBLE);
                 } else {
                     up.setDouble(6, minDepth);
                     up.setDouble(7, maxDepth);

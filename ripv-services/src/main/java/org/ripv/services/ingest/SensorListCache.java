@@ -3,6 +3,7 @@ package org.ripv.services.ingest;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.AtomicMoveNotSupportedException;
+import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
@@ -11,6 +12,7 @@ import java.util.Locale;
 import java.util.Optional;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
+import java.util.zip.CRC32;
 import org.ripv.slocum.SlocumFiles;
 
 /**
@@ -57,7 +59,7 @@ public final class SensorListCache {
      * CRC-32's final inversion; eight lower-case hex digits.
      */
     public static String crcOf(byte[] listText) {
-        java.util.zip.CRC32 c = new java.util.zip.CRC32();
+        CRC32 c = new CRC32();
         c.update(listText);
         return String.format("%08x", ~c.getValue() & 0xffffffffL);
     }
@@ -174,7 +176,7 @@ public final class SensorListCache {
             } catch (AtomicMoveNotSupportedException e) {
                 Files.move(tmp, dir.resolve(name));
             }
-        } catch (java.nio.file.FileAlreadyExistsException e) {
+        } catch (FileAlreadyExistsException e) {
             // another thread kept the same list first
         } finally {
             Files.deleteIfExists(tmp);

@@ -3,6 +3,7 @@ package org.ripv.services.ingest;
 import java.io.IOException;
 import java.io.InputStream;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -11,6 +12,7 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.regex.Pattern;
 import org.ripv.slocum.SlocumFiles;
+import org.slf4j.LoggerFactory;
 
 /**
  * A strict, streaming decoder of Slocum binary data files ({@code .sbd}, {@code .tbd},
@@ -119,7 +121,7 @@ public final class SlocumBinaryReader implements AutoCloseable {
             }
             if (factored.equals("0") && cache != null && !cache.keep(crc, lines)) {
                 // the file decodes with its own list, but that list is not filed under a CRC it does not have
-                org.slf4j.LoggerFactory.getLogger(SlocumBinaryReader.class).warn("{}: its sensor list's CRC is {}, not the {} its"
+                LoggerFactory.getLogger(SlocumBinaryReader.class).warn("{}: its sensor list's CRC is {}, not the {} its"
                         + " header claims; the list is not kept in the sensor-list cache", file, SensorListCache.crcOf(lines), crc);
             }
             this.sizes = new byte[perCycle];
@@ -127,7 +129,7 @@ public final class SlocumBinaryReader implements AutoCloseable {
                 sizes[i] = (byte) sensors.get(i).bytes();
             }
             this.last = new double[perCycle];
-            java.util.Arrays.fill(last, Double.NaN);
+            Arrays.fill(last, Double.NaN);
             this.states = new byte[stateBytes];
             knownBytes();
         } catch (Lz4BlockInputStream.CompressedFormatException e) {

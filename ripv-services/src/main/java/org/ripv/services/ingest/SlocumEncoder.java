@@ -1,10 +1,16 @@
 package org.ripv.services.ingest;
 
+import java.io.ByteArrayInputStream;
+import java.io.ByteArrayOutputStream;
 import java.io.DataOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 
 /**
@@ -26,7 +32,7 @@ public final class SlocumEncoder {
             sizes[i] = (byte) sensors.get(i).bytes();
         }
         this.last = new double[sizes.length];
-        java.util.Arrays.fill(last, Double.NaN);
+        Arrays.fill(last, Double.NaN);
         this.states = new byte[(sizes.length + 3) / 4];
     }
 
@@ -42,10 +48,10 @@ public final class SlocumEncoder {
                 .append("sensors_per_cycle:    ").append(sensors.size()).append('\n')
                 .append("state_bytes_per_cycle:    ").append((sensors.size() + 3) / 4).append('\n')
                 ;
-        List<String> list = new java.util.ArrayList<>();
+        List<String> list = new ArrayList<>();
         for (int i = 0; i < sensors.size(); i++) {
             SlocumSensor s = sensors.get(i);
-            list.add(String.format(java.util.Locale.ROOT, "s: T %4d %4d %d %s %s", i, i, s.bytes(), s.name(), s.units()));
+            list.add(String.format(Locale.ROOT, "s: T %4d %4d %d %s %s", i, i, s.bytes(), s.name(), s.units()));
         }
         h.append("sensor_list_crc:    ").append(SensorListCache.crcOf(list)).append('\n') // the firmware's CRC of the list
                 .append("sensor_list_factored:    0\n");
@@ -58,14 +64,14 @@ public final class SlocumEncoder {
         e.out.writeFloat(123.456f);
         e.out.writeDouble(123456789.12345);
         double[] none = new double[sensors.size()];
-        java.util.Arrays.fill(none, Double.NaN);
+        Arrays.fill(none, Double.NaN);
         e.cycle(none);
         return e;
     }
 
     /** One cycle. */
     public void cycle(double[] values) throws IOException {
-        java.util.Arrays.fill(states, (byte) 0);
+        Arrays.fill(states, (byte) 0);
         for (int i = 0; i < sizes.length; i++) {
             double v = values[i];
             int state = Double.isNaN(v) ? 0 : Double.compare(v, last[i]) == 0 ? 1 : 2;
@@ -101,11 +107,11 @@ public final class SlocumEncoder {
      */
     public static byte[] recode(byte[] file, SensorListCache cache, String extension, List<SlocumSensor> added, Edit edit)
             throws IOException, SlocumFormatException {
-        java.io.ByteArrayOutputStream out = new java.io.ByteArrayOutputStream(file.length * 2);
-        try (SlocumBinaryReader r = new SlocumBinaryReader(new java.io.ByteArrayInputStream(file), "recoded", cache)) {
-            List<SlocumSensor> sensors = new java.util.ArrayList<>(r.sensors());
+        ByteArrayOutputStream out = new ByteArrayOutputStream(file.length * 2);
+        try (SlocumBinaryReader r = new SlocumBinaryReader(new ByteArrayInputStream(file), "recoded", cache)) {
+            List<SlocumSensor> sensors = new ArrayList<>(r.sensors());
             sensors.addAll(added);
-            Map<String, String> tags = new java.util.LinkedHashMap<>();
+            Map<String, String> tags = new LinkedHashMap<>();
             for (String k : List.of("the8x3_filename", "full_filename", "filename_extension", "mission_name", "fileopen_time")) {
                 tags.put(k, k.equals("filename_extension") ? extension : r.tags().getOrDefault(k, ""));
             }
@@ -114,7 +120,7 @@ public final class SlocumEncoder {
             double[] wide = new double[sensors.size()];
             long n = 0;
             while (r.next(row)) {
-                java.util.Arrays.fill(wide, Double.NaN);
+                Arrays.fill(wide, Double.NaN);
                 System.arraycopy(row, 0, wide, 0, row.length);
                 edit.apply(wide, ++n);
                 e.cycle(wide);

@@ -5,6 +5,7 @@ import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.net.URI;
+import java.nio.charset.StandardCharsets;
 import java.util.function.Consumer;
 import org.ripv.security.AddressRanges;
 import org.slf4j.Logger;
@@ -18,7 +19,7 @@ import org.slf4j.LoggerFactory;
 final class CallListener implements AutoCloseable {
     private static final Logger log = LoggerFactory.getLogger(CallListener.class);
     private static final byte[] REFUSAL = "RIPV: calls from this address are not taken on this link\r\n"
-            .getBytes(java.nio.charset.StandardCharsets.US_ASCII);
+            .getBytes(StandardCharsets.US_ASCII);
 
     private final ServerSocket server;
     private final Consumer<Socket> onCall;

@@ -1,5 +1,6 @@
 package org.ripv.services.serial;
 
+import java.time.Duration;
 import java.time.Instant;
 import java.time.ZoneOffset;
 import java.time.format.DateTimeFormatter;
@@ -7,6 +8,7 @@ import java.util.Locale;
 import java.util.function.Consumer;
 import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.VehicleEvent;
+import org.ripv.surfacing.CallInterval;
 
 /**
  * A vehicle link's call: whether the vehicle is on a call, dived (the call ended normally) or
@@ -41,13 +43,13 @@ final class CallState {
     private long pendingSince;
 
     /** The link's {@code overdue=}, announced in SURFACED for the server's OVERDUE, or null. */
-    private final java.time.Duration overdue;
+    private final Duration overdue;
 
     CallState(String mailbox, Consumer<ConsoleEntry> out) {
         this(mailbox, out, null);
     }
 
-    CallState(String mailbox, Consumer<ConsoleEntry> out, java.time.Duration overdue) {
+    CallState(String mailbox, Consumer<ConsoleEntry> out, Duration overdue) {
         this.mailbox = mailbox;
         this.out = out;
         this.overdue = overdue;
@@ -113,7 +115,7 @@ final class CallState {
     private void surfaced() {
         pending = false;
         publish(VehicleEvent.SURFACED, "call " + calls + " (" + how + ")"
-                + (overdue == null ? "" : " " + org.ripv.surfacing.CallInterval.announce(overdue)));
+                + (overdue == null ? "" : " " + CallInterval.announce(overdue)));
     }
 
     /** The call ended: DIVED (normal) or LINK_LOST. A DIVED with no call on says nothing. */

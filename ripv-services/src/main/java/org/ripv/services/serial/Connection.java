@@ -1,5 +1,6 @@
 package org.ripv.services.serial;
 
+import java.io.EOFException;
 import java.io.IOException;
 import java.util.concurrent.TimeUnit;
 import org.slf4j.Logger;
@@ -148,7 +149,7 @@ final class Connection implements Link {
     public void close() {
         closed = true;
         link.close();
-        pipe.fail(new java.io.EOFException(link.describe() + " was closed"));
+        pipe.fail(new EOFException(link.describe() + " was closed"));
         if (Thread.currentThread() != reader) {
             try {
                 reader.join(2_000);

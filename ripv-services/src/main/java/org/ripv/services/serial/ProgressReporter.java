@@ -1,5 +1,6 @@
 package org.ripv.services.serial;
 
+import java.util.Locale;
 import org.ripv.messages.Progress;
 import org.ripv.service.Request;
 import org.ripv.services.serial.ymodem.FileHeader;
@@ -53,6 +54,6 @@ final class ProgressReporter implements TransferListener {
 
     String summary(long bytes) {
         double seconds = Math.max(1e-3, (System.nanoTime() - start) / 1e9);
-        return String.format(java.util.Locale.ROOT, "%.1f s (%.0f bytes/s)", seconds, bytes / seconds);
+        return String.format(Locale.ROOT, "%.1f s (%.0f bytes/s)", seconds, bytes / seconds);
     }
 }

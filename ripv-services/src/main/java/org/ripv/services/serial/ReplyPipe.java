@@ -2,6 +2,7 @@ package org.ripv.services.serial;
 
 import java.io.EOFException;
 import java.io.IOException;
+import java.io.InterruptedIOException;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.Condition;
 import java.util.concurrent.locks.ReentrantLock;
@@ -113,7 +114,7 @@ final class ReplyPipe {
             return n;
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
-            throw new java.io.InterruptedIOException("interrupted while reading the vehicle's reply");
+            throw new InterruptedIOException("interrupted while reading the vehicle's reply");
         } finally {
             lock.unlock();
         }

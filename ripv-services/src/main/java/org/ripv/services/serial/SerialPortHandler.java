@@ -17,7 +17,8 @@ import org.ripv.service.Request;
 import org.ripv.services.serial.ymodem.YmodemException;
 
 /**
- * Owns one link to a vehicle and runs its MailBox's commands (thesis: SerialPortHandler).
+ * Owns one link to a vehicle and runs its MailBox's commands (thesis: SerialPortHandler). A
+ * command's first word is looked up in the link's table ({@link LinkCommands}):
  *
  * <ul>
  *   <li>A plain command: {@link PlainCommands}.</li>
@@ -55,7 +56,7 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
     private final ReentrantLock lock = new ReentrantLock();
     private final LinkState state;
     private final PlainCommands plain;
-    private final ToVehicleCommands toVehicle;
+    private final LinkCommands commands;
     private final RunningCommand running = new RunningCommand();
 
     /**
@@ -87,7 +88,7 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
         this.keys = new KeyCommands(handle, vehicle.pilot(), settings, replies);
         this.state = new LinkState(vehicle, console, opener, lock);
         this.plain = new PlainCommands(settings, vehicleText, replies, console, state);
-        this.toVehicle = new ToVehicleCommands(vehicle.pilot(), zmodem, ymodem, plain);
+        this.commands = new LinkCommands(ymodem, zmodem, new ToVehicleCommands(vehicle.pilot(), zmodem, ymodem, plain), keys);
     }
 
     /**
@@ -151,48 +152,16 @@ public final class SerialPortHandler implements CommandHandler, AutoCloseable {
             throw new ServiceException(ErrorCode.BAD_REQUEST, e.getMessage() + " (link " + handle + ")");
         }
         String command = request.command().trim();
-        // a key the link does not allow is refused before the lock: nothing reaches the vehicle
-        ControlKey key = KeyCommands.isKey(command) ? keys.allowed(request.arguments()) : null;
-        if (ToVehicleCommands.isToVehicle(command)) {
-            toVehicle.requireOn(); // a link that does not send to-vehicle files never starts one
-        }
+        // a link command's own checks (a key the link allows, to-vehicle files on) come before the lock
+        LinkCommands.Command linkCommand = commands.find(command).orElse(null);
+        String shown = linkCommand == null ? null : linkCommand.before().check(request);
         lock.lockInterruptibly();
         try {
             Connection l = usableLink();
-            console.command(request.user(), key != null ? KeyCommands.WORD + " " + key.name() : command);
+            console.command(request.user(), shown != null ? shown : command);
             running.start(command, request.user());
             try {
-                if (command.startsWith("ymodem:get")) {
-                    return ymodem.get(l, request);
-                }
-                if (command.startsWith("ymodem:put")) {
-                    return ymodem.put(l, request);
-                }
-                if (command.startsWith("ymodem:")) {
-                    throw new ServiceException(ErrorCode.UNKNOWN_COMMAND,
-                            "unknown '" + command.split("\\s+")[0] + "'; use ymodem:get NAME… or ymodem:put NAME");
-                }
-                if (command.startsWith("zmodem:get")) {
-                    return zmodem.get(l, request);
-                }
-                if (command.startsWith("zmodem:put")) {
-                    return zmodem.put(l, request);
-                }
-                if (command.startsWith("zmodem:")) {
-                    throw new ServiceException(ErrorCode.UNKNOWN_COMMAND,
-                            "unknown '" + command.split("\\s+")[0] + "'; use zmodem:get NAME… or zmodem:put NAME");
-                }
-                if (ToVehicleCommands.isToVehicle(command)) {
-                    return toVehicle.put(l, request);
-                }
-                if (key != null) {
-                    return keys.press(l, key);
-                }
-                if (command.startsWith("?")) {
-                    throw new ServiceException(ErrorCode.UNKNOWN_COMMAND, "'" + command.split("\\s+")[0]
-                            + "' is not a vehicle command; the only ? command a link takes is ?key KEY");
-                }
-                return plain.run(l, command, request.user());
+                return linkCommand != null ? linkCommand.run().run(l, request) : plain.run(l, command, request.user());
             } catch (EOFException e) {
                 state.failed(l, e);
                 throw new ServiceException(ErrorCode.DEVICE_ERROR, e.getMessage()

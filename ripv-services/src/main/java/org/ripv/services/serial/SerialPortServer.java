@@ -4,9 +4,11 @@ import com.fazecast.jSerialComm.SerialPort;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.atomic.AtomicInteger;
@@ -86,7 +88,7 @@ public final class SerialPortServer extends RIPVService {
                         VehicleLink.of(portDefaults.withDevice(port.getSystemPortPath())));
             }
         }
-        java.util.Set<String> named = new java.util.HashSet<>();
+        Set<String> named = new HashSet<>();
         for (VehicleLink link : links) {
             String handle = link.handle();
             if (!named.add(handle)) {

@@ -1,15 +1,25 @@
 package org.ripv.services.serial;
 
+import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Set;
+import java.util.TreeSet;
 import java.util.concurrent.Callable;
 import java.util.regex.Pattern;
+import org.ripv.files.PrivateFiles;
+import org.ripv.patterns.UserPattern;
+import org.ripv.security.AddressRanges;
 import org.ripv.service.ServiceLaunchOptions;
 import org.ripv.services.serial.ymodem.YmodemConfig;
 import org.ripv.launch.Launchers;
+import org.ripv.surfacing.CallInterval;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -144,7 +154,7 @@ public final class SerialPortServerCommand implements Callable<Integer> {
     Path workDir;
 
     /** The keys a {@code --link} may override for itself, after its device: {@code DEVICE,baud=9600,...}. */
-    static final java.util.Set<String> LINK_KEYS = java.util.Set.of("baud", "data-bits", "parity", "stop-bits", "carrier",
+    static final Set<String> LINK_KEYS = Set.of("baud", "data-bits", "parity", "stop-bits", "carrier",
             "line-ending", "prompt", "prompt-regex", "idle-timeout", "command-timeout", "send-command", "receive-command",
             "maxcommand", "interrupt");
 
@@ -155,11 +165,11 @@ public final class SerialPortServerCommand implements Callable<Integer> {
     LinkSettings settings(String spec) {
         String[] parts = spec.split(",(?=[a-z-]+=)");
         String device = parts[0];
-        java.util.Map<String, String> o = new java.util.HashMap<>();
+        Map<String, String> o = new HashMap<>();
         for (int i = 1; i < parts.length; i++) {
             String key = parts[i].substring(0, parts[i].indexOf('='));
             if (!LINK_KEYS.contains(key) && !CALL_KEYS.contains(key) && !PILOT_KEYS.contains(key)) {
-                java.util.Set<String> all = new java.util.TreeSet<>(LINK_KEYS);
+                Set<String> all = new TreeSet<>(LINK_KEYS);
                 all.addAll(CALL_KEYS);
                 all.addAll(PILOT_KEYS);
                 throw new IllegalArgumentException("--link '" + spec + "': unknown setting '" + key + "'; a link may set "
@@ -168,14 +178,14 @@ public final class SerialPortServerCommand implements Callable<Integer> {
             o.put(key, parts[i].substring(key.length() + 1));
         }
         String ending = o.getOrDefault("line-ending", lineEnding);
-        String end = switch (ending.toLowerCase(java.util.Locale.ROOT)) {
+        String end = switch (ending.toLowerCase(Locale.ROOT)) {
             case "cr" -> "\r";
             case "lf" -> "\n";
             case "crlf" -> "\r\n";
             default -> throw new IllegalArgumentException("line ending '" + ending + "' is not cr, lf or crlf");
         };
         String carrierMode = o.getOrDefault("carrier", carrier);
-        CarrierMode mode = switch (carrierMode.toLowerCase(java.util.Locale.ROOT)) {
+        CarrierMode mode = switch (carrierMode.toLowerCase(Locale.ROOT)) {
             case "require" -> CarrierMode.REQUIRE;
             case "ignore" -> CarrierMode.IGNORE;
             default -> throw new IllegalArgumentException("carrier '" + carrierMode + "' is not require or ignore");
@@ -193,18 +203,18 @@ public final class SerialPortServerCommand implements Callable<Integer> {
     }
 
     /** The keys of a link's call and console settings ({@link CallSettings}). */
-    static final java.util.Set<String> CALL_KEYS = java.util.Set.of("name", "surface", "quiet", "alert", "line-length",
+    static final Set<String> CALL_KEYS = Set.of("name", "surface", "quiet", "alert", "line-length",
             "rate", "callers", "overdue");
 
     /** The keys of a link's {@link PilotSettings}: control keys and ZMODEM commands. */
-    static final java.util.Set<String> PILOT_KEYS = java.util.Set.of("keys", "zmodem-send", "zmodem-receive",
+    static final Set<String> PILOT_KEYS = Set.of("keys", "zmodem-send", "zmodem-receive",
             "to-vehicle");
 
     /** A link's settings and its call settings ({@code name=ru29,surface=...,quiet=600,alert=...}). */
     VehicleLink link(String spec) {
         LinkSettings link = settings(spec);
         String[] parts = spec.split(",(?=[a-z-]+=)");
-        java.util.Map<String, String> o = new java.util.HashMap<>();
+        Map<String, String> o = new HashMap<>();
         for (int i = 1; i < parts.length; i++) {
             String key = parts[i].substring(0, parts[i].indexOf('='));
             o.put(key, parts[i].substring(key.length() + 1));
@@ -225,15 +235,15 @@ public final class SerialPortServerCommand implements Callable<Integer> {
 
     private static Duration overdue(String spec) {
         try {
-            return org.ripv.surfacing.CallInterval.parse(spec);
+            return CallInterval.parse(spec);
         } catch (IllegalArgumentException e) {
             throw new IllegalArgumentException("overdue: " + e.getMessage());
         }
     }
 
-    private static org.ripv.security.AddressRanges callers(String spec) {
+    private static AddressRanges callers(String spec) {
         try {
-            return org.ripv.security.AddressRanges.parse(spec);
+            return AddressRanges.parse(spec);
         } catch (IllegalArgumentException e) {
             throw new IllegalArgumentException("callers: " + e.getMessage());
         }
@@ -241,10 +251,10 @@ public final class SerialPortServerCommand implements Callable<Integer> {
 
     /** surface= and alert= run on every vehicle line: linear time (RE2/J), issue 23 item 3. */
     private static com.google.re2j.Pattern regex(String re, String what) {
-        return org.ripv.patterns.UserPattern.compile(what, re).pattern();
+        return UserPattern.compile(what, re).pattern();
     }
 
-    private static int number(java.util.Map<String, String> o, String key, long fallback) {
+    private static int number(Map<String, String> o, String key, long fallback) {
         String v = o.get(key);
         if (v == null) {
             return (int) fallback;
@@ -274,13 +284,13 @@ public final class SerialPortServerCommand implements Callable<Integer> {
             System.err.println("Error: " + e.getMessage());
             return 2;
         }
-        Path work = workDir != null ? org.ripv.files.PrivateFiles.createDirectories(workDir)
+        Path work = workDir != null ? PrivateFiles.createDirectories(workDir)
                 : Files.createTempDirectory("ripv-serial"); // createTempDirectory makes it 0700
         SerialPortServer server = SerialPortServer.withCalls(launch.hostName(), linkSettings, settings("COM1"),
                 !noEnumerate, work);
         try {
             server.start();
-        } catch (java.io.IOException | IllegalArgumentException e) {
+        } catch (IOException | IllegalArgumentException e) {
             System.err.println("Error: " + e.getMessage());
             return 1;
         }

@@ -1,14 +1,13 @@
 package org.ripv.services.serial;
 
+import java.io.EOFException;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.Comparator;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicLong;
-import java.util.stream.Stream;
 import org.ripv.exceptions.ServiceException;
 import org.ripv.files.PrivateFiles;
 import org.ripv.messages.ErrorCode;
@@ -22,7 +21,6 @@ import org.ripv.services.serial.ymodem.DirectorySink;
 import org.ripv.services.serial.ymodem.FileHeader;
 import org.ripv.services.serial.ymodem.FileNames;
 import org.ripv.services.serial.ymodem.SendFile;
-import org.ripv.services.serial.ymodem.YmodemException;
 import org.ripv.services.serial.ymodem.YmodemReceiver;
 import org.ripv.services.serial.ymodem.YmodemRefusedException;
 import org.ripv.services.serial.ymodem.YmodemSender;
@@ -91,7 +89,7 @@ final class YmodemCommands {
             console.event(VehicleEvent.TRANSFER_DONE, r.text() + " for " + request.user());
             return r;
         } catch (ServiceException | IOException e) {
-            if (!(e instanceof java.io.EOFException)) {
+            if (!(e instanceof EOFException)) {
                 resync(c);
             }
             String why = e.getMessage();
@@ -195,7 +193,7 @@ final class YmodemCommands {
             log.info("{}: {}", handle, text);
             return Reply.ok(text, data.size() == 1 ? data.get(0) : new FileBundle(data));
         } finally {
-            deleteTree(dir);
+            DirectorySink.deleteTree(dir);
         }
     }
 
@@ -289,22 +287,5 @@ final class YmodemCommands {
             b.append(b.isEmpty() ? "" : ", ").append(f.name()).append(" (").append(f.total()).append(" bytes)");
         }
         return b.toString();
-    }
-
-    private static void deleteTree(Path dir) {
-        if (!Files.exists(dir)) {
-            return;
-        }
-        try (Stream<Path> walk = Files.walk(dir)) {
-            walk.sorted(Comparator.reverseOrder()).forEach(p -> {
-                try {
-                    Files.deleteIfExists(p);
-                } catch (IOException e) {
-                    log.warn("could not delete {}: {}", p, e.toString());
-                }
-            });
-        } catch (IOException e) {
-            log.warn("could not clean {}: {}", dir, e.toString());
-        }
     }
 }

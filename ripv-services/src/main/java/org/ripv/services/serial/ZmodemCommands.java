@@ -8,6 +8,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Supplier;
 import org.ripv.exceptions.ServiceException;
 import org.ripv.files.PrivateFiles;
 import org.ripv.messages.ErrorCode;
@@ -16,8 +17,8 @@ import org.ripv.messages.FileData;
 import org.ripv.messages.VehicleEvent;
 import org.ripv.service.Reply;
 import org.ripv.service.Request;
+import org.ripv.services.serial.ymodem.DirectorySink;
 import org.ripv.services.serial.ymodem.AskedNames;
-import org.ripv.services.serial.ymodem.FileHeader;
 import org.ripv.services.serial.ymodem.FileNames;
 import org.ripv.services.serial.ymodem.SendFile;
 import org.ripv.services.serial.ymodem.TransferListener;
@@ -95,7 +96,7 @@ final class ZmodemCommands {
      * event. A ZMODEM failure or a dropped call is a TRANSFER_FAILED error ending with {@code after}
      * (which parts wait for the next call).
      */
-    private Reply transfer(Connection c, Request request, Exchange exchange, java.util.function.Supplier<String> after)
+    private Reply transfer(Connection c, Request request, Exchange exchange, Supplier<String> after)
             throws IOException, ServiceException {
         c.listen();
         c.binary(true);
@@ -126,7 +127,7 @@ final class ZmodemCommands {
         }
     }
 
-    private ServiceException failed(Request request, String why, java.util.function.Supplier<String> after) {
+    private ServiceException failed(Request request, String why, Supplier<String> after) {
         console.transfer(request.user(), "transfer failed: " + why);
         console.event(VehicleEvent.TRANSFER_FAILED, "'" + request.command() + "' for " + request.user() + ": " + why);
         return new ServiceException(ErrorCode.TRANSFER_FAILED, "ZMODEM transfer failed: " + why + after.get());
@@ -149,7 +150,7 @@ final class ZmodemCommands {
             return transfer(c, request, () -> receive(c, request, names, vehicleCommand, store, dir),
                     () -> kept(store, names));
         } finally {
-            deleteTree(dir);
+            DirectorySink.deleteTree(dir);
         }
     }
 
@@ -241,19 +242,5 @@ final class ZmodemCommands {
     private void write(Connection c, String vehicleCommand) throws IOException {
         c.write((vehicleCommand + settings.lineEnding()).getBytes(StandardCharsets.ISO_8859_1));
         c.flush();
-    }
-
-    private static void deleteTree(Path dir) {
-        try (var walk = Files.walk(dir)) {
-            walk.sorted(java.util.Comparator.reverseOrder()).forEach(p -> {
-                try {
-                    Files.deleteIfExists(p);
-                } catch (IOException e) {
-                    log.warn("could not delete {}: {}", p, e.toString());
-                }
-            });
-        } catch (IOException e) {
-            // never created
-        }
     }
 }

@@ -2,35 +2,22 @@ package org.ripv.services.simulator;
 
 import java.io.EOFException;
 import java.io.IOException;
+import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
-import java.time.LocalDateTime;
-import java.time.ZoneId;
-import java.time.format.DateTimeFormatter;
-import java.util.ArrayList;
-import java.util.List;
-import java.util.Locale;
-import java.util.Random;
+import java.time.Instant;
+import java.util.Set;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import org.ripv.services.serial.Link;
 import org.ripv.services.serial.LinkSettings;
 import org.ripv.services.serial.SerialLink;
 import org.ripv.services.serial.TcpLink;
-import org.ripv.services.serial.ymodem.DirectorySink;
-import org.ripv.services.serial.ymodem.FileHeader;
-import org.ripv.services.serial.ymodem.FileNames;
-import org.ripv.services.serial.ymodem.SendFile;
 import org.ripv.services.serial.ymodem.YmodemConfig;
-import org.ripv.services.serial.ymodem.YmodemException;
-import org.ripv.services.serial.ymodem.YmodemReceiver;
-import org.ripv.services.serial.ymodem.YmodemSender;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -42,15 +29,15 @@ import org.slf4j.LoggerFactory;
  *
  * <p>It serves one connection at a time, on a TCP port ({@link #listen}) or on a serial device
  * or pseudo-terminal ({@link #attach}), or calls a shore station again and again ({@link #call})
- * with a {@link SurfaceDialog} on each call. Its files live in one directory. {@code zs} and
- * {@code zr} run lrzsz ({@link Lrzsz}). {@link #speakGliderDos} makes each call a Slocum's
+ * with a {@link SurfaceDialog} on each call. This class is how the vehicle is reached and when
+ * it is away; what it answers once reached is its {@link GliderShell}, whose files live in one
+ * directory. {@code zs} and {@code zr} run lrzsz ({@link Lrzsz}). {@link #speakGliderDos} makes each call a Slocum's
  * surfacing ({@link SurfaceCountdown}, {@link GliderDos}); {@link #overLine} makes TCP calls
  * Iridium-like ({@link IridiumLine}).
  */
 public final class GliderSimulator implements AutoCloseable {
     private static final Logger log = LoggerFactory.getLogger(GliderSimulator.class);
-    static final String PROMPT = "C:\\>";
-    private static final DateTimeFormatter DIR_TIME = DateTimeFormatter.ofPattern("MM-dd-yy  HH:mm", Locale.ROOT);
+    static final String PROMPT = GliderShell.PROMPT;
 
     private final Path dir;
     private final Duration submerge;
@@ -63,17 +50,14 @@ public final class GliderSimulator implements AutoCloseable {
     private int port;
     private volatile int calls;
     private Thread thread;
-    private java.net.InetAddress bindAddress = java.net.InetAddress.getLoopbackAddress();
-    /** Null: the PicoDOS prompt at once (the default); else the Slocum surface dialog and GliderDOS. */
-    private volatile GliderDos gliderDos;
+    private InetAddress bindAddress = InetAddress.getLoopbackAddress();
     private volatile SurfaceTrouble trouble = SurfaceTrouble.NONE;
     /** What its plan (goto_l10.ma, put values) makes its dialog print. */
     private final PlanState plan;
     private volatile Duration surfaceWait = Duration.ofSeconds(60);
     private volatile IridiumLine.Settings line = IridiumLine.Settings.NONE;
     private volatile String name = "sim01";
-    /** What the last GliderDOS command asked of the call (dive, call back); the conversation's thread only. */
-    private GliderDos.End pendingEnd;
+    private final GliderShell vehicleShell;
     /** A dropped Iridium-like call is dialled again after this long, without a dive. */
     static final Duration REDIAL = Duration.ofSeconds(2);
 
@@ -86,31 +70,8 @@ public final class GliderSimulator implements AutoCloseable {
         this.plan = new PlanState(this.dir);
         this.submerge = submerge;
         this.ymodem = ymodem;
-        seed(this.dir);
-    }
-
-    /** Writes the starting files into an empty directory. */
-    static void seed(Path dir) throws IOException {
-        try (var entries = Files.list(dir)) {
-            if (entries.findAny().isPresent()) {
-                return;
-            }
-        }
-        Files.writeString(dir.resolve("GLIDER.CFG"), String.join("\r\n",
-                "# glider configuration", "vehicle=SIM01", "dive_depth_m=200", "climb_depth_m=5",
-                "pitch_deg=26", "surface_interval_s=900", ""), StandardCharsets.US_ASCII);
-        Random random = new Random(42);
-        for (int m = 1; m <= 2; m++) {
-            StringBuilder log = new StringBuilder("% mission " + m + ": time depth temperature salinity\r\n");
-            for (int i = 0; i < 400 * m; i++) {
-                log.append(String.format(Locale.ROOT, "%d %.2f %.3f %.3f\r\n", i * 10, 100 + 90 * Math.sin(i / 20.0),
-                        12 - i / 100.0 + random.nextGaussian() * 0.01, 35 + random.nextGaussian() * 0.02));
-            }
-            Files.writeString(dir.resolve("MISSION" + m + ".LOG"), log, StandardCharsets.US_ASCII);
-        }
-        byte[] binary = new byte[4096];
-        random.nextBytes(binary);
-        Files.write(dir.resolve("SENSOR.DAT"), binary);
+        this.vehicleShell = new GliderShell(this.dir, ymodem, plan, submerge, () -> running, () -> submerged = true);
+        GliderShell.seed(this.dir);
     }
 
     public Path directory() {
@@ -149,7 +110,7 @@ public final class GliderSimulator implements AutoCloseable {
      * The address {@link #listen} binds to: loopback unless set (a simulated vehicle is for this
      * machine; {@code --bind} widens it). Null means every interface. Call before {@code listen}.
      */
-    public synchronized GliderSimulator bindTo(java.net.InetAddress address) {
+    public synchronized GliderSimulator bindTo(InetAddress address) {
         this.bindAddress = address;
         return this;
     }
@@ -162,7 +123,7 @@ public final class GliderSimulator implements AutoCloseable {
      */
     public synchronized GliderSimulator speakGliderDos(Duration wait, Duration minute) {
         this.surfaceWait = wait;
-        this.gliderDos = new GliderDos(dir, minute);
+        vehicleShell.speakGliderDos(new GliderDos(dir, minute));
         return this;
     }
 
@@ -170,7 +131,7 @@ public final class GliderSimulator implements AutoCloseable {
      * Trouble on demand in the GliderDOS dialog: an abort on each of {@code abortCalls} (1 for the
      * first call), a leak from call {@code leakFrom} on (0: none). Call before {@code call}.
      */
-    public synchronized GliderSimulator trouble(java.util.Set<Integer> abortCalls, int leakFrom) {
+    public synchronized GliderSimulator trouble(Set<Integer> abortCalls, int leakFrom) {
         this.trouble = new SurfaceTrouble(abortCalls, leakFrom);
         return this;
     }
@@ -198,11 +159,6 @@ public final class GliderSimulator implements AutoCloseable {
     private Link wrap(Link link) {
         IridiumLine.Settings s = line;
         return s.any() ? new IridiumLine(link, s) : link;
-    }
-
-    private String prompt() {
-        GliderDos g = gliderDos;
-        return g == null ? PROMPT : g.prompt();
     }
 
     private void serveTcp() {
@@ -316,14 +272,14 @@ public final class GliderSimulator implements AutoCloseable {
                     current = link;
                     calls++;
                     ShellLink shell = new ShellLink(link);
-                    if (gliderDos == null) {
-                        say(shell, dialog.text(calls, java.time.Instant.now(), "SIM.MI", plan.dialogLines()) + PROMPT);
-                        converse(shell, System.nanoTime() + surfaceTime.toNanos(), dialog::chatter, 0);
+                    if (vehicleShell.gliderDos() == null) {
+                        shell.say(dialog.text(calls, Instant.now(), "SIM.MI", plan.dialogLines()) + PROMPT);
+                        vehicleShell.converse(shell, System.nanoTime() + surfaceTime.toNanos(), dialog::chatter, 0);
                         submerged = true;
-                        say(shell, "\r\nHanging up: diving for " + diveTime.toSeconds() + " s\r\n");
+                        shell.say("\r\nHanging up: diving for " + diveTime.toSeconds() + " s\r\n");
                     } else {
                         away = surfacing(shell, dialog, diveTime);
-                        dives = !(pendingEnd instanceof GliderDos.CallBack);
+                        dives = !(vehicleShell.end() instanceof GliderDos.CallBack);
                     }
                     link.close();
                 } catch (IOException e) {
@@ -354,23 +310,23 @@ public final class GliderSimulator implements AutoCloseable {
      * for a dive, a {@code callback}'s time (at the surface) for a call back.
      */
     private Duration surfacing(ShellLink shell, SurfaceDialog dialog, Duration diveTime) throws IOException {
-        GliderDos g = gliderDos;
+        GliderDos g = vehicleShell.gliderDos();
         g.surfaced();
-        pendingEnd = null;
-        say(shell, dialog.fullText(calls, java.time.Instant.now(), g.mission(), plan.waypointLines() + g.reportLines(), trouble));
+        vehicleShell.clearEnd();
+        shell.say(dialog.fullText(calls, Instant.now(), g.mission(), plan.waypointLines() + g.reportLines(), trouble));
         SurfaceCountdown.Answer a = SurfaceCountdown.run(shell, surfaceWait, surfaceWait, dir);
         if (a == SurfaceCountdown.Answer.CONTROL_C) {
-            say(shell, g.prompt());
-            converse(shell, System.nanoTime() + surfaceWait.toNanos(), null, surfaceWait.toNanos());
-            if (pendingEnd == null && running) {
-                say(shell, "\r\nNo input for " + surfaceWait.toSeconds() + " s: resuming the mission.\r\n");
+            shell.say(g.prompt());
+            vehicleShell.converse(shell, System.nanoTime() + surfaceWait.toNanos(), null, surfaceWait.toNanos());
+            if (vehicleShell.end() == null && running) {
+                shell.say("\r\nNo input for " + surfaceWait.toSeconds() + " s: resuming the mission.\r\n");
             }
         }
-        if (pendingEnd instanceof GliderDos.CallBack cb) {
+        if (vehicleShell.end() instanceof GliderDos.CallBack cb) {
             return cb.after();
         }
         submerged = true;
-        say(shell, "Hanging up: diving for " + diveTime.toSeconds() + " s\r\n");
+        shell.say("Hanging up: diving for " + diveTime.toSeconds() + " s\r\n");
         return diveTime;
     }
 
@@ -386,255 +342,12 @@ public final class GliderSimulator implements AutoCloseable {
     /** Runs one conversation; returns how long it is then away (GO, a resumed mission, a callback), or null. */
     private Duration session(Link link) throws IOException {
         ShellLink shell = new ShellLink(link);
-        if (gliderDos != null) {
+        if (vehicleShell.gliderDos() != null) {
             calls++;
             return surfacing(shell, new SurfaceDialog(name), submerge);
         }
-        say(shell, "\r\nPicoDOS (RIPV glider simulator)\r\n" + PROMPT);
-        return converse(shell, 0, null, 0) ? submerge : null;
-    }
-
-    /**
-     * Answers commands until GO (true), or, when {@code until} is not 0, until that time has come
-     * between two commands (true: the surface time is over). {@code chatter} is printed when the
-     * line has been idle a while, as a vehicle's own output. With {@code renew} (nanoseconds), each
-     * command moves {@code until} to that long after it: a time without input, as GliderDOS has.
-     */
-    private boolean converse(ShellLink shell, long until, java.util.function.LongFunction<String> chatter, long renew)
-            throws IOException {
-        StringBuilder line = new StringBuilder();
-        byte[] buf = new byte[1024];
-        boolean lastWasCr = false;
-        long lastChatter = System.nanoTime();
-        while (running) {
-            if (until != 0 && line.isEmpty() && System.nanoTime() - until > 0) {
-                return true;
-            }
-            int n = shell.read(buf, 0, buf.length, 1000);
-            if (n == 0 && chatter != null && line.isEmpty() && System.nanoTime() - lastChatter > 10_000_000_000L) {
-                lastChatter = System.nanoTime();
-                say(shell, chatter.apply(until == 0 ? 0 : (until - lastChatter) / 1_000_000_000L) + "\r\n" + prompt());
-            }
-            for (int i = 0; i < n; i++) {
-                int c = buf[i] & 0xFF;
-                if (c == '\n' && lastWasCr) {
-                    lastWasCr = false;
-                    continue;
-                }
-                lastWasCr = c == '\r';
-                if (c == '\r' || c == '\n') {
-                    say(shell, "\r\n");
-                    shell.unread(buf, i + 1, n - i - 1);
-                    String command = line.toString().trim();
-                    line.setLength(0);
-                    if (execute(shell, command)) {
-                        return true;
-                    }
-                    if (renew > 0) {
-                        until = System.nanoTime() + renew;
-                    }
-                    say(shell, prompt());
-                    break;
-                } else if (c == 8 || c == 0x7F) {
-                    if (!line.isEmpty()) {
-                        line.setLength(line.length() - 1);
-                        say(shell, "\b \b");
-                    }
-                } else if (c == SurfaceCountdown.CTRL_C && gliderDos != null) {
-                    line.setLength(0); // GliderDOS drops the line typed so far and prompts again
-                    say(shell, "^C\r\n" + prompt());
-                } else if (c >= 0x20 && c < 0x7F) {
-                    line.append((char) c);
-                    shell.write(new byte[] {(byte) c}, 0, 1); // echo, like the real vehicle
-                }
-                // other control bytes (CAN, stray ACKs after a transfer) are not echoed
-            }
-            shell.flush();
-        }
-        return false;
-    }
-
-    private boolean execute(ShellLink shell, String command) throws IOException {
-        if (command.isEmpty()) {
-            return false;
-        }
-        String[] words = command.split("\\s+");
-        String verb = words[0].toUpperCase(Locale.ROOT);
-        GliderDos g = gliderDos;
-        if (g == null && verb.equals("PUT")) {
-            say(shell, plan.put(words)); // a glider's put, at the simple shell too (docs/plans.md)
-            return false;
-        }
-        GliderDos.Answer answer = g == null ? null : g.execute(verb, words);
-        if (answer != null) {
-            say(shell, answer.text());
-            pendingEnd = answer.end();
-            return answer.end() != null;
-        }
-        switch (verb) {
-            case "DIR" -> say(shell, dir());
-            case "TYPE" -> {
-                Path file = file(shell, words);
-                if (file != null) {
-                    String text = new String(Files.readAllBytes(file), StandardCharsets.ISO_8859_1);
-                    say(shell, text.replace("\r\n", "\n").replace("\n", "\r\n") + (text.endsWith("\n") ? "" : "\r\n"));
-                }
-            }
-            case "DEL" -> {
-                Path file = file(shell, words);
-                if (file != null) {
-                    Files.delete(file);
-                }
-            }
-            case "YS" -> send(shell, words);
-            case "YR" -> receive(shell);
-            case "ZS" -> zsend(shell, words);
-            case "ZR" -> say(shell, "\r\n" + Lrzsz.receive(shell, dir) + "\r\n");
-            case "GO" -> {
-                submerged = true; // from now on, before the link drops
-                say(shell, "Mission started; submerging for " + submerge.toSeconds() + " s\r\n");
-                pendingEnd = new GliderDos.Resume("GO");
-                return true;
-            }
-            case "MONITOR" -> monitor(shell, words);
-            case "HELP", "?" -> say(shell, "dir, type NAME, del NAME, ys NAME..., yr, zs NAME..., zr, monitor [SECONDS], go\r\n");
-            default -> say(shell, "Bad command or file name\r\n");
-        }
-        return false;
-    }
-
-    /**
-     * {@code monitor [SECONDS]}: prints a depth line every 250 ms until Ctrl-C or the time is up
-     * (default 60 s), like a glider's sensor report: a command that only an interrupt stops.
-     */
-    private void monitor(ShellLink shell, String[] words) throws IOException {
-        long seconds = 60;
-        if (words.length > 1) {
-            try {
-                seconds = Math.min(3600, Long.parseLong(words[1]));
-            } catch (NumberFormatException e) {
-                say(shell, "usage: monitor [SECONDS]\r\n");
-                return;
-            }
-        }
-        long end = System.nanoTime() + seconds * 1_000_000_000L;
-        byte[] keys = new byte[64];
-        for (int i = 0; running && System.nanoTime() - end < 0; i++) {
-            int n = shell.read(keys, 0, keys.length, 250);
-            for (int k = 0; k < n; k++) {
-                if (keys[k] == 3) {
-                    say(shell, "^C\r\n");
-                    return;
-                }
-            }
-            say(shell, String.format(Locale.ROOT, "m_depth %.2f m\r\n", 5 + 3 * Math.sin(i / 8.0)));
-        }
-    }
-
-    private Path file(ShellLink shell, String[] words) throws IOException {
-        if (words.length != 2) {
-            say(shell, "Required parameter missing\r\n");
-            return null;
-        }
-        Path file = resolve(words[1]);
-        if (file == null) {
-            say(shell, "File not found - " + words[1] + "\r\n");
-        }
-        return file;
-    }
-
-    /** The file of that name, matched without regard to case as on FAT; null if none. */
-    private Path resolve(String name) throws IOException {
-        try {
-            FileNames.requirePlain(name);
-        } catch (IllegalArgumentException e) {
-            return null;
-        }
-        try (DirectoryStream<Path> files = Files.newDirectoryStream(dir)) {
-            for (Path p : files) {
-                if (Files.isRegularFile(p) && p.getFileName().toString().equalsIgnoreCase(name)) {
-                    return p;
-                }
-            }
-        }
-        return null;
-    }
-
-    private String dir() throws IOException {
-        StringBuilder b = new StringBuilder(" Volume in drive C is GLIDER\r\n Directory of C:\\\r\n\r\n");
-        List<Path> files = new ArrayList<>();
-        try (DirectoryStream<Path> stream = Files.newDirectoryStream(dir)) {
-            for (Path p : stream) {
-                if (Files.isRegularFile(p) && !p.getFileName().toString().startsWith(".")) {
-                    files.add(p);
-                }
-            }
-        }
-        files.sort(null);
-        long total = 0;
-        for (Path p : files) {
-            long size = Files.size(p);
-            total += size;
-            LocalDateTime t = LocalDateTime.ofInstant(Files.getLastModifiedTime(p).toInstant(), ZoneId.systemDefault());
-            b.append(String.format(Locale.ROOT, "%-12s %10d  %s\r\n", p.getFileName(), size, DIR_TIME.format(t)));
-        }
-        b.append(String.format(Locale.ROOT, "%9d file(s) %12d bytes\r\n", files.size(), total));
-        return b.toString();
-    }
-
-    private void send(ShellLink shell, String[] words) throws IOException {
-        if (words.length < 2) {
-            say(shell, "usage: ys NAME...\r\n");
-            return;
-        }
-        List<SendFile> files = new ArrayList<>();
-        for (int i = 1; i < words.length; i++) {
-            Path p = resolve(words[i]);
-            if (p == null) {
-                say(shell, "File not found - " + words[i] + "\r\n");
-                return;
-            }
-            files.add(SendFile.of(p));
-        }
-        try {
-            new YmodemSender(shell, ymodem, null).sendBatch(files);
-            say(shell, "\r\n" + files.size() + " file(s) sent\r\n");
-        } catch (YmodemException e) {
-            say(shell, "\r\nYMODEM send failed: " + e.getMessage() + "\r\n");
-        }
-    }
-
-    /** {@code zs NAME...}: lrzsz's sz sends the files (names matched without regard to case). */
-    private void zsend(ShellLink shell, String[] words) throws IOException {
-        if (words.length < 2) {
-            say(shell, "usage: zs NAME...\r\n");
-            return;
-        }
-        List<String> names = new ArrayList<>();
-        for (int i = 1; i < words.length; i++) {
-            Path p = resolve(words[i]);
-            if (p == null) {
-                say(shell, "File not found - " + words[i] + "\r\n");
-                return;
-            }
-            names.add(p.getFileName().toString());
-        }
-        say(shell, "\r\n" + Lrzsz.send(shell, dir, names) + "\r\n");
-    }
-
-    private void receive(ShellLink shell) throws IOException {
-        try {
-            List<FileHeader> got = new YmodemReceiver(shell, ymodem, null).receiveBatch(new DirectorySink(dir));
-            say(shell, "\r\n" + got.size() + " file(s) received\r\n");
-        } catch (YmodemException e) {
-            say(shell, "\r\nYMODEM receive failed: " + e.getMessage() + "\r\n");
-        }
-    }
-
-    static void say(ShellLink shell, String text) throws IOException {
-        byte[] bytes = text.getBytes(StandardCharsets.ISO_8859_1);
-        shell.write(bytes, 0, bytes.length);
-        shell.flush();
+        shell.say("\r\nPicoDOS (RIPV glider simulator)\r\n" + PROMPT);
+        return vehicleShell.converse(shell, 0, null, 0) ? submerge : null;
     }
 
     /** The TCP port it listens on (0 when attached to a tty). */

@@ -9,6 +9,8 @@ import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import org.ripv.services.serial.Link;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -48,7 +50,7 @@ final class IridiumLine implements Link {
 
         /** {@code 1s}, {@code 500ms}, {@code 2m}: a latency or a time. */
         static Duration duration(String option, String text) {
-            java.util.regex.Matcher m = java.util.regex.Pattern.compile("(\\d{1,7})(ms|s|m)").matcher(text.strip());
+            Matcher m = Pattern.compile("(\\d{1,7})(ms|s|m)").matcher(text.strip());
             if (!m.matches()) {
                 throw new IllegalArgumentException(option + " '" + text + "' is not a time: write e.g. 500ms, 1s or 2m");
             }

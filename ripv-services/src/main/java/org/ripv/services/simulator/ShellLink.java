@@ -1,6 +1,7 @@
 package org.ripv.services.simulator;
 
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
 import org.ripv.services.serial.Link;
 import org.ripv.services.serial.ymodem.ByteLink;
 
@@ -44,5 +45,12 @@ final class ShellLink implements ByteLink {
     @Override
     public void flush() throws IOException {
         link.flush();
+    }
+
+    /** Writes text as the vehicle's terminal does (ISO-8859-1) and flushes it. */
+    void say(String text) throws IOException {
+        byte[] bytes = text.getBytes(StandardCharsets.ISO_8859_1);
+        write(bytes, 0, bytes.length);
+        flush();
     }
 }

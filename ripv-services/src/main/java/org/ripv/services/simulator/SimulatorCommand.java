@@ -1,12 +1,15 @@
 package org.ripv.services.simulator;
 
+import java.net.InetAddress;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
 import java.time.Duration;
+import java.util.List;
+import java.util.Set;
 import java.util.concurrent.Callable;
 import org.ripv.services.serial.ymodem.YmodemConfig;
 import org.ripv.launch.Launchers;
-import picocli.CommandLine;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -87,7 +90,7 @@ public final class SimulatorCommand implements Callable<Integer> {
     @Option(names = "--abort-on-call", split = ",", paramLabel = "N[,N...]",
             description = "With --dialog gliderdos: these calls (1 for the first) surface because of an abort"
                     + " (MS_ABORT_OVERDEPTH), which its ABORT HISTORY then shows.")
-    java.util.List<Integer> abortCalls = java.util.List.of();
+    List<Integer> abortCalls = List.of();
 
     @Option(names = "--leak-from-call", defaultValue = "0", paramLabel = "N",
             description = "With --dialog gliderdos: from call N on its aft leak detector reads 1.21 V, a leak (default: never).")
@@ -164,12 +167,12 @@ public final class SimulatorCommand implements Callable<Integer> {
             sim.overLine(line).named(name);
             if (dialog == Dialog.gliderdos) {
                 sim.speakGliderDos(Duration.ofSeconds(surfaceSeconds), Duration.ofSeconds(minuteSeconds))
-                        .trouble(java.util.Set.copyOf(abortCalls), leakFrom);
+                        .trouble(Set.copyOf(abortCalls), leakFrom);
             }
             if (seedFiles != null) {
                 try (var list = Files.list(seedFiles)) {
                     for (Path f : list.filter(Files::isRegularFile).toList()) {
-                        Files.copy(f, files.resolve(f.getFileName().toString()), java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+                        Files.copy(f, files.resolve(f.getFileName().toString()), StandardCopyOption.REPLACE_EXISTING);
                     }
                 }
             }
@@ -182,7 +185,7 @@ public final class SimulatorCommand implements Callable<Integer> {
                 sim.attach(where.tty);
                 System.out.println("glider simulator on " + where.tty + ", files in " + files);
             } else {
-                sim.bindTo(bind == null ? java.net.InetAddress.getLoopbackAddress() : java.net.InetAddress.getByName(bind));
+                sim.bindTo(bind == null ? InetAddress.getLoopbackAddress() : InetAddress.getByName(bind));
                 int port = sim.listen(where != null && where.port != null ? where.port : 2323);
                 System.out.println("glider simulator on tcp://localhost:" + port + ", files in " + files);
             }

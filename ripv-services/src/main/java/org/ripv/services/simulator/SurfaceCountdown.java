@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
+import java.util.Locale;
 
 /**
  * The wait after a Slocum's surface dialog: it counts down, saying so every 10 s, and listens
@@ -37,18 +38,18 @@ final class SurfaceCountdown {
      * @param dir the glider's files, whose {@code .ma} files Ctrl-F counts
      */
     static Answer run(ShellLink shell, Duration wait, Duration extend, Path dir) throws IOException {
-        GliderSimulator.say(shell, SurfaceDialog.keys(extend.toSeconds()));
+        shell.say(SurfaceDialog.keys(extend.toSeconds()));
         long end = System.nanoTime() + wait.toNanos();
         long nextTick = System.nanoTime();
         byte[] buf = new byte[256];
         while (true) {
             long now = System.nanoTime();
             if (now - end >= 0) {
-                GliderSimulator.say(shell, "No answer: resuming the mission.\r\n");
+                shell.say("No answer: resuming the mission.\r\n");
                 return Answer.NO_ANSWER;
             }
             if (now - nextTick >= 0) {
-                GliderSimulator.say(shell, SurfaceDialog.countdown((end - now + 999_999_999L) / 1_000_000_000L));
+                shell.say(SurfaceDialog.countdown((end - now + 999_999_999L) / 1_000_000_000L));
                 nextTick = now + TICK_NANOS;
             }
             long waitMillis = Math.max(1, Math.min(end - now, nextTick - now) / 1_000_000);
@@ -58,19 +59,19 @@ final class SurfaceCountdown {
                     case CTRL_C -> {
                         // what follows the key (a command typed ahead) is for GliderDOS
                         shell.unread(buf, i + 1, n - i - 1);
-                        GliderSimulator.say(shell, "^C\r\nMission stopped by the operator: GliderDOS\r\n");
+                        shell.say("^C\r\nMission stopped by the operator: GliderDOS\r\n");
                         return Answer.CONTROL_C;
                     }
                     case CTRL_R -> {
-                        GliderSimulator.say(shell, "^R\r\nResuming the mission.\r\n");
+                        shell.say("^R\r\nResuming the mission.\r\n");
                         return Answer.RESUME;
                     }
                     case CTRL_E -> {
                         end += extend.toNanos();
-                        GliderSimulator.say(shell, "^E\r\nSurface time extended by " + extend.toSeconds() + " s\r\n");
+                        shell.say("^E\r\nSurface time extended by " + extend.toSeconds() + " s\r\n");
                         nextTick = System.nanoTime();
                     }
-                    case CTRL_F -> GliderSimulator.say(shell, "^F\r\nRe-read the mafiles: " + mafiles(dir) + " file(s)\r\n");
+                    case CTRL_F -> shell.say("^F\r\nRe-read the mafiles: " + mafiles(dir) + " file(s)\r\n");
                     default -> { }
                 }
             }
@@ -79,7 +80,7 @@ final class SurfaceCountdown {
 
     private static long mafiles(Path dir) throws IOException {
         try (var list = Files.list(dir)) {
-            return list.filter(p -> p.getFileName().toString().toLowerCase(java.util.Locale.ROOT).endsWith(".ma")).count();
+            return list.filter(p -> p.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".ma")).count();
         }
     }
 }

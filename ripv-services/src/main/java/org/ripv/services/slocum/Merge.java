@@ -3,6 +3,7 @@ package org.ripv.services.slocum;
 import java.io.IOException;
 import java.io.InputStream;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -63,7 +64,7 @@ final class Merge {
             boolean hasB = rb.next(rowB);
             while (hasA || hasB) {
                 boolean takeA = hasA && (!hasB || !(rowB[tb] < rowA[ta]));
-                java.util.Arrays.fill(merged, Double.NaN);
+                Arrays.fill(merged, Double.NaN);
                 if (takeA) {
                     System.arraycopy(rowA, 0, merged, 0, na);
                     hasA = ra.next(rowA);

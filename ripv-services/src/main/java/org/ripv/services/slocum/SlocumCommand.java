@@ -9,19 +9,21 @@ import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.Callable;
+import org.ripv.services.ingest.MissingSensorListException;
 import org.ripv.services.ingest.SensorListCache;
 import org.ripv.services.ingest.SlocumFormatException;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
+import picocli.CommandLine;
 
 /** {@code ripv slocum decode FILE... [--cache DIR] [--sensors a,b] [--merge]}. Exit codes: 0 done, 1 a file was refused, 2 usage. */
 @Command(name = "slocum", mixinStandardHelpOptions = true, subcommands = SlocumCommand.Decode.class,
         description = "Slocum glider binary files (.sbd .tbd .dbd .ebd, compressed .scd .tcd .dcd .ecd) without Teledyne's tools.")
 public final class SlocumCommand implements Callable<Integer> {
     @Spec
-    picocli.CommandLine.Model.CommandSpec spec;
+    CommandLine.Model.CommandSpec spec;
 
     @Override
     public Integer call() {
@@ -50,7 +52,7 @@ public final class SlocumCommand implements Callable<Integer> {
         boolean merge;
 
         @Spec
-        picocli.CommandLine.Model.CommandSpec spec;
+        CommandLine.Model.CommandSpec spec;
 
         @Override
         public Integer call() throws IOException {
@@ -83,7 +85,7 @@ public final class SlocumCommand implements Callable<Integer> {
                 err.println("Error: no such file: " + e.getFile());
                 return 1;
             } catch (SlocumFormatException e) {
-                err.println("Error: " + e.getMessage() + (cache == null && e instanceof org.ripv.services.ingest.MissingSensorListException
+                err.println("Error: " + e.getMessage() + (cache == null && e instanceof MissingSensorListException
                         ? " (give the folder of the .cac files with --cache DIR)" : ""));
                 return 1;
             } catch (IllegalArgumentException e) {

@@ -5,16 +5,19 @@ import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Locale;
 import java.util.Set;
+import org.ripv.client.cli.CliSession;
 
 /**
  * Tab completion for the CLI's lines: the word being typed, given the words before it and the
  * current MailBox. The CLI's own words (listed under a group of their own, {@link #group}), the server's {@code ?} commands, MailBox names after
- * {@code use} (and {@code ?status}, {@code ?lock}, {@code ?unlock}), the service's commands, files
+ * {@code use} and after every server command whose {@code ?help} line names a MAILBOX first (the
+ * server writes those lines from its command table), the service's commands, files
  * of the download directory after {@code get}, of the upload directory after an attach prefix
- * ({@code vis:NAME}). Local files after {@code put} are the terminal's business ({@link Shell}).
+ * ({@code vis:NAME}), a server command's options (as {@code ?help} lists them). Local files after
+ * {@code put} are the terminal's business ({@link Shell}).
  */
 final class Completions {
-    static final List<String> LOCAL = org.ripv.client.cli.CliSession.OWN_WORDS;
+    static final List<String> LOCAL = CliSession.OWN_WORDS;
     /** The group Tab lists the CLI's own words under, apart from the server's and the MailBox's commands. */
     static final String OWN_GROUP = "the CLI's own words (send LINE sends a line starting with one to the vehicle)";
     /** What Tab shows beside each of the CLI's own words. */
@@ -45,7 +48,7 @@ final class Completions {
                 out.addAll(facts.serviceCommands(mailbox));
                 out.addAll(attached(current, mailbox));
             }
-        } else if (index == 1 && TAKES_MAILBOX.contains(first)) {
+        } else if (index == 1 && (TAKES_MAILBOX.contains(first) || first.startsWith("?") && facts.serverTakesMailbox(first))) {
             out.addAll(facts.mailboxes());
         } else if (index == 1 && first.equals("send") && !mailbox.isEmpty()) {
             out.addAll(facts.serviceCommands(mailbox)); // what follows send is the MailBox's
@@ -56,6 +59,8 @@ final class Completions {
         } else if (index == 1 && first.equals("?delete")) {
             out.addAll(facts.uploads());
             out.addAll(facts.downloads());
+        } else if (first.startsWith("?") && index >= 1 && current.startsWith("-")) {
+            out.addAll(facts.serverOptions(first)); // from the server's command table, by way of ?help
         } else if (first.equals("put") && index >= 2) {
             out.addAll(List.of("--replace", "--keep"));
         } else if (!mailbox.isEmpty()) {
@@ -80,6 +85,39 @@ final class Completions {
             }
         }
         return out;
+    }
+
+    /**
+     * The options {@code ?help} shows on the line of {@code command} ({@code ?history MAILBOX
+     * [--last N] [--since ISO-TIME]} gives {@code --last}, {@code --since}): the server writes
+     * that line from the command's options, so what Tab offers is what the server parses.
+     */
+    static List<String> optionsIn(String help, String command) {
+        Set<String> out = new LinkedHashSet<>();
+        for (String line : help.split("\n")) {
+            String[] w = line.strip().split("\\s+");
+            if (!w[0].equalsIgnoreCase(command)) {
+                continue;
+            }
+            for (String word : w) {
+                String option = word.replaceAll("^[\\[(|]+|[\\])|,]+$", "");
+                if (option.matches("--[a-z][a-z0-9-]*")) {
+                    out.add(option);
+                }
+            }
+        }
+        return new ArrayList<>(out);
+    }
+
+    /** Whether {@code ?help}'s line of {@code command} names a MailBox as its first word ({@code MAILBOX} or {@code [MAILBOX]}). */
+    static boolean takesMailboxIn(String help, String command) {
+        for (String line : help.split("\n")) {
+            String[] w = line.strip().split("\\s+");
+            if (w[0].equalsIgnoreCase(command)) {
+                return w.length > 1 && w[1].replaceAll("[\\[\\]]", "").equals("MAILBOX");
+            }
+        }
+        return false;
     }
 
     /**

@@ -7,6 +7,16 @@ interface Facts {
     /** The server's {@code ?} commands, e.g. {@code ?mailboxes}. */
     List<String> serverCommands();
 
+    /** The options ({@code --last}) a server command's line in {@code ?help} names: the server's command table. */
+    default List<String> serverOptions(String command) {
+        return List.of();
+    }
+
+    /** Whether a server command's first word is a MailBox, as its line in {@code ?help} says ({@code ?history MAILBOX ...}). */
+    default boolean serverTakesMailbox(String command) {
+        return false;
+    }
+
     /** Every MailBox's full address. */
     List<String> mailboxes();
 

@@ -50,6 +50,22 @@ final class ServerFacts implements Facts {
     }
 
     @Override
+    public List<String> serverOptions(String command) {
+        return Completions.optionsIn(helpText(), command);
+    }
+
+    @Override
+    public boolean serverTakesMailbox(String command) {
+        return Completions.takesMailboxIn(helpText(), command);
+    }
+
+    /** {@code ?help}'s text: one line a server command, written by the server from its command table. */
+    private String helpText() {
+        return String.join("\n", cached("?help lines", Long.MAX_VALUE, "", "?help",
+                r -> List.of(r.footer().replyText().split("\n"))));
+    }
+
+    @Override
     public List<String> mailboxes() {
         return cached("?mailboxes", LIST_MILLIS, "", "?mailboxes", r -> {
             List<String> out = new ArrayList<>();

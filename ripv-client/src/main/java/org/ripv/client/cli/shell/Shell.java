@@ -20,6 +20,7 @@ import org.jline.reader.UserInterruptException;
 import org.jline.terminal.Terminal;
 import org.jline.terminal.TerminalBuilder;
 import org.ripv.client.cli.CliSession;
+import org.ripv.client.cli.ExitCodes;
 import org.ripv.client.cli.Reconnect;
 import org.ripv.client.handlers.ClientSocketHandler;
 import org.ripv.naming.MailboxAddress;
@@ -97,14 +98,14 @@ public final class Shell {
                         break;
                     }
                     if (!client.isOpen() && !reconnected(completer)) { // lost while waiting at the prompt
-                        return org.ripv.client.cli.ExitCodes.NO_SESSION;
+                        return ExitCodes.NO_SESSION;
                     }
                     if (!session.run(line)) {
                         break;
                     }
                     if (!client.isOpen()) {
                         if (!reconnected(completer)) {
-                            return org.ripv.client.cli.ExitCodes.NO_SESSION;
+                            return ExitCodes.NO_SESSION;
                         }
                         err.println("If '" + line + "' did not reach the server, run it again.");
                     }

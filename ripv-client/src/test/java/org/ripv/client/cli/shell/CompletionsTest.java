@@ -88,4 +88,62 @@ class CompletionsTest {
         assertThat(Shell.prompt("alice", "shore:4444", GLIDER)).isEqualTo("alice@shore ru29> ");
         assertThat(Shell.prompt("alice", "shore:4444", "")).isEqualTo("alice@shore> ");
     }
+
+    @Test
+    void aServerCommandsOptionsComeFromItsHelpLine() {
+        String help = "Server commands:\n  ?history MAILBOX [--last N] [--since ISO-TIME]  its transcript  [FID 000027]\n"
+                + "  ?surfacings MAILBOX [--last N] [--json]  its call records  [FID 000031]\n"
+                + "Anything else goes to the chosen MailBox of a service.";
+        assertThat(Completions.optionsIn(help, "?history")).containsExactly("--last", "--since");
+        assertThat(Completions.optionsIn(help, "?SURFACINGS")).containsExactly("--last", "--json");
+        assertThat(Completions.optionsIn(help, "?ping")).isEmpty();
+        assertThat(Completions.takesMailboxIn(help, "?history")).isTrue();
+        assertThat(Completions.takesMailboxIn(help, "?ping")).isFalse();
+        assertThat(Completions.takesMailboxIn("  ?changes [MAILBOX]  each change  [FID 1]", "?changes")).isTrue();
+        Facts withOptions = new Facts() {
+            @Override
+            public List<String> serverCommands() {
+                return List.of("?history");
+            }
+
+            @Override
+            public List<String> serverOptions(String command) {
+                return Completions.optionsIn(help, command);
+            }
+
+            @Override
+            public boolean serverTakesMailbox(String command) {
+                return Completions.takesMailboxIn(help, command);
+            }
+
+            @Override
+            public List<String> mailboxes() {
+                return List.of("<SerialPortServer>::<shore>ru29");
+            }
+
+            @Override
+            public List<String> downloads() {
+                return List.of();
+            }
+
+            @Override
+            public List<String> uploads() {
+                return List.of();
+            }
+
+            @Override
+            public List<String> serviceCommands(String mailbox) {
+                return List.of();
+            }
+
+            @Override
+            public List<String> attachPrefixes(String mailbox) {
+                return List.of();
+            }
+        };
+        assertThat(new Completions(withOptions).candidates(List.of("?history", "ru29", "--"), 2, ""))
+                .containsExactly("--last", "--since");
+        assertThat(new Completions(withOptions).candidates(List.of("?surfacings", ""), 1, ""))
+                .containsExactly("<SerialPortServer>::<shore>ru29");
+    }
 }

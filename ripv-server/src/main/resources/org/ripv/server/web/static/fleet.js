@@ -2,8 +2,9 @@
 // (30 days, as the public view shows) and the positions the DatabaseServer holds (GPS and dead-reckoned).
 import { session, PostOffice, bar } from './postoffice.js';
 import { ago, utc } from './time.js';
-import { drawMap } from './map.js';
+import { drawMap, currentLayer, waypointLayer, colour } from './map.js';
 import { labels, vehicleName } from './names.js';
+import { surfacings, abort, nextCallShort, trackFixes, waypointShort } from './surfacing.js';
 
 const s = await session();
 bar(s);
@@ -17,7 +18,9 @@ const TRACK_DAYS = 30;
 /** The newest positions the map asks the database for (the data page's own statement, so view-only rules allow it). */
 export const POSITIONS = 'SELECT * FROM positions ORDER BY time_utc DESC FETCH FIRST 5000 ROWS ONLY';
 // Tiles when the server was given --map-tiles, else the offline grid.
-const drawTracks = s.mapTiles ? (await import('./tilemap.js')).tileMap(mapBox, s.mapTiles) : (list, focus) => drawMap(mapBox, list, [], focus);
+const drawTracks = s.mapTiles ? (await import('./tilemap.js')).tileMap(mapBox, s.mapTiles)
+  : (list, focus) => drawMap(mapBox, list, list.flatMap((v, i) => v.layers ? v.layers(colour(i)) : []), focus);
+const calls = new Map(); // address -> { records, outlook } of its call records (?surfacings --outlook)
 const focus = document.getElementById('map-focus'); // the vehicle the map is fitted to: a fleet may be oceans apart
 
 function row(address, v, label) {
@@ -33,8 +36,35 @@ function row(address, v, label) {
   badge.className = `badge ${v.state}`;
   badge.textContent = { ON_CALL: 'on call', DIVED: 'dived', LOST: 'link lost' }[v.state] || (v.available ? 'ready' : 'unknown');
   state.append(badge);
-  const cells = [ago(v.lastContact), v.lat == null ? '—' : `${v.lat.toFixed(4)}, ${v.lon.toFixed(4)}`, String(v.calls ?? 0), v.latest || ''];
+  const c = calls.get(address);
+  const last = c?.records[c.records.length - 1];
+  const a = abort(last);
+  if (a) { // beside the call state, so a phone (which hides the later columns) shows it too
+    const ab = document.createElement('span');
+    ab.className = `badge abort${a.fresh ? '' : ' old'}`;
+    ab.textContent = a.fresh ? 'new abort' : 'abort';
+    ab.title = `${a.text} (${a.detail})`; // the cause in full on the vehicle page
+    state.append(' ', ab);
+  }
+  if (last?.leak === true) {
+    const lk = document.createElement('span');
+    lk.className = 'badge leak';
+    lk.textContent = 'leak';
+    lk.title = `leak detect ${Number(last.leak_v).toFixed(2)} V`;
+    state.append(' ', lk);
+  }
+  const cells = [ago(v.lastContact), v.lat == null ? '—' : `${v.lat.toFixed(4)}, ${v.lon.toFixed(4)}`, '', String(v.calls ?? 0), v.latest || ''];
   tr.append(name, state, ...cells.map((t) => { const td = document.createElement('td'); td.textContent = t; return td; }));
+  // The last call in one cell: why it surfaced, its battery, and when the next is due.
+  const lastCall = tr.children[4];
+  lastCall.className = 'last-call';
+  const part = (cls, text) => { const sp = document.createElement('span'); sp.className = cls; sp.textContent = text; return sp; };
+  if (last) { // a MailBox that printed no surface dialog (a service, a PicoDOS glider) has nothing to say here
+    lastCall.append(part('because', last.because || '—'), ' · ', part('battery', last.battery_v == null ? '—' : `${Number(last.battery_v).toFixed(2)} V`),
+      document.createElement('br'), part('next-call', c.outlook?.next_call_utc ? `next ${nextCallShort(c.outlook)}` : 'next call not known yet'));
+  } else {
+    lastCall.textContent = '—';
+  }
   tr.children[2].className = 'ago';
   tr.children[2].dataset.time = String(v.lastContact || 0);
   tr.children[2].title = utc(v.lastContact); // the time itself, as every page writes it
@@ -45,7 +75,14 @@ function row(address, v, label) {
 /** The map's vehicles: each MailBox's fixes with the database's of the same name, and the database's other vehicles. */
 function mapVehicles() {
   const names = new Map([...vehicles.keys()].map((a) => [vehicleName(a).toLowerCase(), a]));
-  const list = [...vehicles.entries()].map(([a, v]) => ({ name: a, track: [...v.track, ...(database.get(vehicleName(a).toLowerCase()) || [])] }));
+  const list = [...vehicles.entries()].map(([a, v]) => {
+    const o = calls.get(a)?.outlook;
+    const fixes = trackFixes(o);
+    const wpt = o?.wpt_lat == null ? null : { lat: o.wpt_lat, lon: o.wpt_lon };
+    const from = o?.fix_lat == null ? null : { lat: o.fix_lat, lon: o.fix_lon };
+    return { name: a, track: [...v.track, ...fixes, ...(database.get(vehicleName(a).toLowerCase()) || [])], also: wpt ? [wpt] : [],
+      layers: (c) => [currentLayer(fixes.filter((p) => p.current_e != null), c), ...(wpt ? [waypointLayer(from, wpt, waypointShort(o), c)] : [])] };
+  });
   for (const [name, fixes] of database) if (!names.has(name)) list.push({ name: fixes.label, track: fixes });
   return list;
 }
@@ -85,9 +122,21 @@ function takeStatus(m) {
   vehicles.set(m.address, v);
 }
 
+/** The vehicle's call records and outlook, asked again when its call's events come (the record is kept as its dialog ends). */
+async function loadCalls(address) {
+  const d = await surfacings(po, address);
+  if (!d.error) calls.set(address, d);
+}
+const asking = new Map();
+function callsSoon(address) {
+  clearTimeout(asking.get(address));
+  asking.set(address, setTimeout(async () => { await loadCalls(address); render(); }, 800));
+}
+
 function takeEntry(e, live = true) {
   const v = vehicles.get(e.mailbox);
   if (!v) return;
+  if (live && (e.kind === 'EVENT' || (e.kind === 'LINE' && /Hit Control-C within \d+/.test(e.text || '')))) callsSoon(e.mailbox);
   if (live || e.time > (v.lastContact || 0)) v.lastContact = e.time;
   if (e.kind === 'EVENT' && live) {
     v.latest = `${e.event} ${e.text}`.trim();
@@ -137,6 +186,7 @@ if (list.status === 'ERROR') {
     Promise.all(addresses.map((a) => po.send('', `?watch ${a}`))),
     Promise.all(addresses.map((a) => po.send('', `?history ${a} --since ${since} --last 2000`))),
     databasePositions(all.map((m) => m.address)),
+    Promise.all(addresses.filter((a) => !a.startsWith('<DatabaseServer>')).map(loadCalls)),
   ]);
   for (const r of [...histories, ...watches]) {
     if (r.result?.kind === 'ConsoleBatch') r.result.entries.forEach((e) => takeEntry(e, false)); // counted in the status already

@@ -5,6 +5,9 @@ import { vehicleName } from './names.js';
 // A vehicle is { name, track: [fix] }, a fix { lat, lon, t, gps } or a [lat, lon] pair (a GPS fix, as the public view
 // sends). `layers` are drawn last, each called with (g, { x(lon), y(lat), w, h }): room for currents and waypoints.
 // `focus` names the vehicle the map is fitted to (the others still drawn where they fall); none: every vehicle.
+// A vehicle's `also` (places, not fixes: its waypoint) are kept in view but not drawn as its track.
+// currentLayer and waypointLayer are the call records' layers (docs/surfacings.md#on-the-map); each counts what it drew
+// on the canvas (data-arrows, data-waypoints), reset at every drawing.
 
 /** A fix in one form: [lat, lon] pairs are GPS fixes. */
 export function fix(p) {
@@ -29,7 +32,9 @@ export function drawMap(canvas, vehicles, layers = [], focus = '') {
   g.fillRect(0, 0, w, h);
   const tracks = vehicles.map((v) => ({ name: v.name, fixes: v.track.map(fix) }));
   const points = tracks.flatMap((v) => v.fixes);
-  const fitted = tracks.find((v) => v.name === focus && v.fixes.length)?.fixes || points;
+  const inView = (v) => [...v.track.map(fix), ...(v.also || [])];
+  const mine = vehicles.find((v) => v.name === focus && v.track.length);
+  const fitted = mine ? inView(mine) : vehicles.flatMap(inView);
 
   // Bounds with equal distances across and up (a degree of longitude is cos(lat) of one of latitude).
   let [minLat, maxLat, minLon, maxLon] = [-60, 60, -180, 180];
@@ -90,12 +95,77 @@ export function drawMap(canvas, vehicles, layers = [], focus = '') {
     g.beginPath(); g.arc(x(last.lon), y(last.lat), 7, 0, 2 * Math.PI); g.fill();
     label(g, vehicleName(v.name), x(last.lon) + 10, y(last.lat) - 8, w, ink('--card', '#fff'), c, placed);
   });
+  canvas.dataset.arrows = '0';
+  canvas.dataset.waypoints = '0';
   layers.forEach((layer) => layer(g, { x, y, w, h }));
   legend(g, h, ink);
   scaleBar(g, w, h, perDegree, ink);
   canvas.dataset.points = String(points.length);
   canvas.dataset.gps = String(gps);
   canvas.dataset.dr = String(dr);
+}
+
+/** Pixels a current of 1 m/s is drawn long (a typical 0.1 m/s: 18 px). */
+export const ARROW_PX_PER_MPS = 180;
+
+/**
+ * A layer: the depth-averaged current at each surfacing as an arrow from where the glider surfaced, pointing where the
+ * water goes. `points` are { lat, lon, current_e, current_n } (m/s east and north), as ?surfacings --outlook's track has them.
+ */
+export function currentLayer(points, c = '#0b5cad') {
+  return (g, { x, y }) => {
+    let n = 0;
+    g.save();
+    g.strokeStyle = c; g.fillStyle = c; g.lineWidth = 2;
+    for (const p of points) {
+      if (p.current_e == null || p.current_n == null || p.lat == null) continue;
+      const x0 = x(p.lon), y0 = y(p.lat);
+      let dx = p.current_e * ARROW_PX_PER_MPS, dy = -p.current_n * ARROW_PX_PER_MPS;
+      const len = Math.hypot(dx, dy);
+      if (len < 1e-9) continue;
+      const shown = Math.min(80, Math.max(10, len)); // a whisper of current still shows its way; a flood stays on the map
+      dx *= shown / len; dy *= shown / len;
+      g.beginPath(); g.moveTo(x0, y0); g.lineTo(x0 + dx, y0 + dy); g.stroke();
+      const a = Math.atan2(dy, dx);
+      g.beginPath();
+      g.moveTo(x0 + dx, y0 + dy);
+      g.lineTo(x0 + dx - 7 * Math.cos(a - 0.45), y0 + dy - 7 * Math.sin(a - 0.45));
+      g.lineTo(x0 + dx - 7 * Math.cos(a + 0.45), y0 + dy - 7 * Math.sin(a + 0.45));
+      g.closePath(); g.fill();
+      n++;
+    }
+    g.restore();
+    g.canvas.dataset.arrows = String(Number(g.canvas.dataset.arrows || 0) + n);
+  };
+}
+
+/**
+ * A layer: the waypoint the glider steers for (c_wpt_lat/lon) as a crossed square, and a dashed line to it from the
+ * last fix, labelled with what `words` says (distance, bearing, ETA). `from`, `to`: { lat, lon }.
+ */
+export function waypointLayer(from, to, words = '', c = '#9a6700') {
+  return (g, { x, y, w }) => {
+    if (!to || to.lat == null) return;
+    const tx = x(to.lon), ty = y(to.lat);
+    g.save();
+    g.strokeStyle = c; g.lineWidth = 2;
+    if (from && from.lat != null) {
+      g.setLineDash([6, 4]);
+      g.beginPath(); g.moveTo(x(from.lon), y(from.lat)); g.lineTo(tx, ty); g.stroke();
+      g.setLineDash([]);
+    }
+    g.strokeRect(tx - 6, ty - 6, 12, 12);
+    g.beginPath(); g.moveTo(tx - 6, ty - 6); g.lineTo(tx + 6, ty + 6); g.moveTo(tx + 6, ty - 6); g.lineTo(tx - 6, ty + 6); g.stroke();
+    if (words) {
+      g.font = '13px system-ui, sans-serif';
+      const tw = g.measureText(words).width;
+      const at = Math.max(4, Math.min(tx + 10, w - tw - 4));
+      g.lineWidth = 4; g.strokeStyle = '#fff'; g.strokeText(words, at, ty + 18);
+      g.fillStyle = c; g.fillText(words, at, ty + 18);
+    }
+    g.restore();
+    g.canvas.dataset.waypoints = String(Number(g.canvas.dataset.waypoints || 0) + 1);
+  };
 }
 
 /** A name with a halo, kept inside the map and below any name it would cover. */

@@ -7,6 +7,7 @@ import { rights } from './rights.js';
 import { clock } from './time.js';
 import { mailboxParam } from './ui.js';
 import { command } from './address.js';
+import { SurfacingView } from './vehicle-surfacing.js';
 
 const { mailbox } = mailboxParam(); // one MailBox address or the page stops, saying the link's name is not valid
 const s = await session();
@@ -19,6 +20,7 @@ const consoleBox = $('console');
 const stateLine = $('state');
 const search = $('search');
 const call = new CallState();
+const calls = new SurfacingView(po, mailbox); // the last call's record, trends, track and waypoint
 let running = null; // the id of the request this page started and is waiting for
 let vehicleLines = 0; // the vehicle's lines and transfer notes shown so far: a command's output arrives as these
 
@@ -35,6 +37,7 @@ const BAD_EVENTS = new Set(['ALERT', 'LINK_LOST', 'TRANSFER_FAILED', 'WORKFLOW_F
 
 function entryLine(e) {
   call.takeEntry(e);
+  calls.take(e);
   if (e.kind === 'LINE' || e.kind === 'TRANSFER') vehicleLines++;
   const text = e.kind === 'COMMAND' ? `${e.user}> ${e.text}` : e.kind === 'EVENT' ? `[${e.event}] ${e.text}` : e.text;
   return line(text, e.kind === 'EVENT' && BAD_EVENTS.has(e.event) ? 'EVENT error' : e.kind, e.time);
@@ -206,5 +209,5 @@ const mayLock = onServer.commands[LOCK];
 $('take-lock').hidden = !mayLock;
 $('release-lock').hidden = !mayLock;
 showRights();
-await refreshStatus();
+await Promise.all([refreshStatus(), calls.refresh()]);
 document.body.dataset.ready = 'true';

@@ -6,7 +6,9 @@ import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.nio.file.StandardOpenOption;
 import java.nio.file.attribute.FileTime;
+import java.util.Comparator;
 import java.util.HashMap;
 import java.util.Map;
 import org.ripv.files.PrivateFiles;
@@ -40,7 +42,7 @@ public final class DirectorySink implements FileSink {
             return;
         }
         try (var walk = Files.walk(workDir)) {
-            walk.sorted(java.util.Comparator.reverseOrder()).filter(p -> !p.equals(workDir)).forEach(p -> {
+            walk.sorted(Comparator.reverseOrder()).filter(p -> !p.equals(workDir)).forEach(p -> {
                 String n = p.getFileName().toString();
                 boolean inTransfer = workDir.relativize(p).getName(0).toString().startsWith("get-");
                 if (inTransfer || n.startsWith(".") && n.endsWith(".part")) {
@@ -56,13 +58,31 @@ public final class DirectorySink implements FileSink {
         }
     }
 
+    /** Deletes a transfer's directory and all in it (what is left of a transfer); a failure is logged, not thrown. */
+    public static void deleteTree(Path dir) {
+        if (!Files.exists(dir)) {
+            return;
+        }
+        try (var walk = Files.walk(dir)) {
+            walk.sorted(Comparator.reverseOrder()).forEach(p -> {
+                try {
+                    Files.deleteIfExists(p);
+                } catch (IOException e) {
+                    log.warn("could not delete {}: {}", p, e.toString());
+                }
+            });
+        } catch (IOException e) {
+            log.warn("could not clean {}: {}", dir, e.toString());
+        }
+    }
+
     @Override
     public OutputStream begin(FileHeader file) throws IOException {
         String name = FileNames.requirePlain(file.name());
         Path part = dir.resolve("." + name + ".part");
         parts.put(name, part);
-        return PrivateFiles.newOutputStream(part, java.nio.file.StandardOpenOption.WRITE,
-                java.nio.file.StandardOpenOption.TRUNCATE_EXISTING); // owner-only: a vehicle's files are not for every local user
+        return PrivateFiles.newOutputStream(part, StandardOpenOption.WRITE,
+                StandardOpenOption.TRUNCATE_EXISTING); // owner-only: a vehicle's files are not for every local user
     }
 
     @Override

@@ -13,7 +13,10 @@ import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
+import java.util.function.BooleanSupplier;
+import java.util.function.Predicate;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -35,7 +38,7 @@ public final class YmodemReceiver {
     private final TransferListener listener;
     private final byte[] packet = new byte[1024 + 4];
     private final StringBuilder noise = new StringBuilder();
-    private java.util.function.Predicate<CharSequence> gaveUp = text -> false;
+    private Predicate<CharSequence> gaveUp = text -> false;
     private boolean waitingForFirst;
 
     public YmodemReceiver(ByteLink link, YmodemConfig config, TransferListener listener) {
@@ -48,18 +51,18 @@ public final class YmodemReceiver {
      * Lets the receiver stop waiting early when what the other end prints instead of starting
      * shows it will not send (a shell back at its prompt after "File not found").
      */
-    public YmodemReceiver stopWaitingWhen(java.util.function.Predicate<CharSequence> shellIsBack) {
+    public YmodemReceiver stopWaitingWhen(Predicate<CharSequence> shellIsBack) {
         this.gaveUp = shellIsBack;
         return this;
     }
 
-    private java.util.function.BooleanSupplier cancelled = () -> false;
+    private BooleanSupplier cancelled = () -> false;
 
     /**
      * Lets the transfer be cancelled from another thread: checked where a block would be
      * answered, it aborts with CAN CAN as any other abort does.
      */
-    public YmodemReceiver cancelWhen(java.util.function.BooleanSupplier cancel) {
+    public YmodemReceiver cancelWhen(BooleanSupplier cancel) {
         this.cancelled = cancel;
         return this;
     }
@@ -276,7 +279,7 @@ public final class YmodemReceiver {
                                 out.write(held);
                                 received += held.length;
                             }
-                            held = java.util.Arrays.copyOfRange(packet, 2, 2 + packetSize);
+                            held = Arrays.copyOfRange(packet, 2, 2 + packetSize);
                         }
                         if (cancelled.getAsBoolean()) {
                             // CAN CAN in place of the ACK: the sender is waiting for an answer, so it hears

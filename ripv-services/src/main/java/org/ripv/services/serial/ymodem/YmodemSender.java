@@ -14,6 +14,7 @@ import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
 import java.util.Arrays;
 import java.util.List;
+import java.util.function.BooleanSupplier;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -41,13 +42,13 @@ public final class YmodemSender {
         this.listener = listener == null ? TransferListener.NONE : listener;
     }
 
-    private java.util.function.BooleanSupplier cancelled = () -> false;
+    private BooleanSupplier cancelled = () -> false;
 
     /**
      * Lets the transfer be cancelled from another thread: checked before every block, it aborts
      * with CAN CAN as any other abort does.
      */
-    public YmodemSender cancelWhen(java.util.function.BooleanSupplier cancel) {
+    public YmodemSender cancelWhen(BooleanSupplier cancel) {
         this.cancelled = cancel;
         return this;
     }

@@ -82,9 +82,7 @@ public final class ZFrameReader {
         while (true) {
             int c = raw(timeoutMillis);
             if (c == Zmodem.ZDLE) {
-                if (++cans >= 5) {
-                    throw new ZmodemException(ZmodemException.Kind.ABORTED, "the other end aborted the transfer (CAN CAN CAN CAN CAN)");
-                }
+                cans = oneMoreCan(cans);
                 continue;
             }
             cans = 0;
@@ -230,9 +228,7 @@ public final class ZFrameReader {
         while (true) {
             int c = raw(timeoutMillis);
             if (c == Zmodem.ZDLE) {
-                if (++cans >= 5) {
-                    throw new ZmodemException(ZmodemException.Kind.ABORTED, "the other end aborted the transfer (CAN CAN CAN CAN CAN)");
-                }
+                cans = oneMoreCan(cans);
                 continue;
             }
             if ((c & 0x7F) == 0x11 || (c & 0x7F) == 0x13) {
@@ -316,5 +312,13 @@ public final class ZFrameReader {
 
     static String text(byte[] b, int n) {
         return new String(b, 0, n, StandardCharsets.ISO_8859_1);
+    }
+
+    /** One more CAN (ZDLE) in a row; the fifth is the other end's abort. */
+    private static int oneMoreCan(int cans) throws ZmodemException {
+        if (cans + 1 >= 5) {
+            throw new ZmodemException(ZmodemException.Kind.ABORTED, "the other end aborted the transfer (CAN CAN CAN CAN CAN)");
+        }
+        return cans + 1;
     }
 }

@@ -1,6 +1,8 @@
 package org.ripv.services.serial.zmodem;
 
 import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
 import java.util.zip.CRC32;
 import org.ripv.services.serial.ymodem.ByteLink;
 import org.ripv.services.serial.ymodem.CRC16CCITT;
@@ -11,7 +13,7 @@ import org.ripv.services.serial.ymodem.CRC16CCITT;
  * character when the receiver asked for it (ESCCTL), as lrzsz does.
  */
 public final class ZFrameWriter {
-    private static final byte[] HEX = "0123456789abcdef".getBytes(java.nio.charset.StandardCharsets.ISO_8859_1);
+    private static final byte[] HEX = "0123456789abcdef".getBytes(StandardCharsets.ISO_8859_1);
     private final ByteLink link;
     private final byte[] out = new byte[2 * Zmodem.MAX_SUBPACKET + 64];
     private int n;
@@ -147,7 +149,7 @@ public final class ZFrameWriter {
             try {
                 flushBuffer();
             } catch (IOException e) {
-                throw new java.io.UncheckedIOException(e);
+                throw new UncheckedIOException(e);
             }
         }
     }
@@ -162,7 +164,7 @@ public final class ZFrameWriter {
     void flush() throws IOException {
         try {
             flushBuffer();
-        } catch (java.io.UncheckedIOException e) {
+        } catch (UncheckedIOException e) {
             throw e.getCause();
         }
         link.flush();

@@ -1,5 +1,6 @@
 package org.ripv.services.serial.zmodem;
 
+import java.io.EOFException;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
@@ -378,7 +379,7 @@ public final class ZmodemSender extends ZmodemPeer<ZmodemSender> {
                 }
             } catch (ZFrameReader.Timeout e) {
                 // ZFIN lost: again
-            } catch (java.io.EOFException e) {
+            } catch (EOFException e) {
                 return; // the receiver has the file (its ZRINIT said so) and hung up before its ZFIN arrived
             }
         }
@@ -397,7 +398,7 @@ public final class ZmodemSender extends ZmodemPeer<ZmodemSender> {
                 out.raw("OO".getBytes(StandardCharsets.ISO_8859_1));
                 again = backChannel(OO_REPEAT_MILLIS);
             } catch (IOException e) {
-                if (i == 0 && !(e instanceof java.io.EOFException)) {
+                if (i == 0 && !(e instanceof EOFException)) {
                     throw e;
                 }
                 return; // rz took the "OO" and ended, and with it a link that was only rz

@@ -1,4 +1,4 @@
-package org.ripv.server.session;
+package org.ripv.json;
 
 import com.fasterxml.jackson.core.JsonFactory;
 import com.fasterxml.jackson.core.JsonProcessingException;
@@ -9,17 +9,22 @@ import com.fasterxml.jackson.core.json.JsonWriteFeature;
 import com.fasterxml.jackson.databind.DeserializationFeature;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Collection;
 import java.util.Iterator;
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 
 /**
- * Flat JSON objects (strings, numbers, booleans, null) for the transcript, vehicle-state and
- * subscription files, one object per line, through Jackson. Written as RIPV always wrote them:
- * every control character, DEL, the C1 controls and U+2028/2029 escaped (lower-case hex), so one
- * object is always one line that is safe on a terminal; NaN and infinities become null. Read
- * strictly, the line treated as hostile: anything but one flat object is an
- * {@link IllegalArgumentException}.
+ * RIPV's JSON, through Jackson, for both sides: the CLI's {@code --json} and {@code --follow}
+ * lines, export files, and the server's transcript, vehicle-state and subscription files (one
+ * object per line). Values are strings, numbers, booleans, null, maps, collections and arrays;
+ * anything else is written as its {@code toString()}. Every control character, DEL, the C1
+ * controls and U+2028/2029 are escaped (lower-case hex), so one value is always one line that is
+ * safe on a terminal; NaN and infinities become null (JSON has neither). Read strictly, the line
+ * treated as hostile: {@link #parse} takes one flat object and nothing else.
  */
 public final class Json {
     private static final ObjectMapper MAPPER = mapper();
@@ -55,16 +60,38 @@ public final class Json {
         }
     }
 
-    /** Writes a flat object; values are String, Number, Boolean or null. */
-    public static String write(Map<String, ?> fields) {
-        Map<String, Object> finite = new LinkedHashMap<>();
-        fields.forEach((k, v) -> finite.put(k, v instanceof Double d && !Double.isFinite(d)
-                || v instanceof Float f && !Float.isFinite(f) ? null : v));
+    /** The value as one line of JSON text. */
+    public static String write(Object value) {
         try {
-            return MAPPER.writeValueAsString(finite);
+            return MAPPER.writeValueAsString(plain(value));
         } catch (JsonProcessingException e) {
-            throw new IllegalArgumentException("cannot write " + fields.keySet() + " as JSON: " + e.getOriginalMessage(), e);
+            throw new IllegalArgumentException("cannot write a " + value.getClass().getSimpleName() + " as JSON: "
+                    + e.getOriginalMessage(), e);
         }
+    }
+
+    /** The value made of what JSON has: non-finite numbers null, unknown objects their text. */
+    private static Object plain(Object v) {
+        if (v == null || v instanceof Double d && !Double.isFinite(d) || v instanceof Float f && !Float.isFinite(f)) {
+            return null;
+        }
+        if (v instanceof String || v instanceof Number || v instanceof Boolean) {
+            return v;
+        }
+        if (v instanceof Map<?, ?> m) {
+            Map<String, Object> out = new LinkedHashMap<>();
+            m.forEach((k, x) -> out.put(String.valueOf(k), plain(x)));
+            return out;
+        }
+        if (v instanceof Collection<?> c) {
+            List<Object> out = new ArrayList<>(c.size());
+            c.forEach(x -> out.add(plain(x)));
+            return out;
+        }
+        if (v instanceof Object[] a) {
+            return plain(Arrays.asList(a));
+        }
+        return v.toString();
     }
 
     /** Reads a flat object: values come back as String, Long (or Double), Boolean or null. */
