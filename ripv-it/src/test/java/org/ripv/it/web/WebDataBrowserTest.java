@@ -149,6 +149,19 @@ class WebDataBrowserTest {
             assertThat(b.findElements(By.cssSelector("#map.leaflet-container img.leaflet-tile")))
                     .allMatch(img -> img.getAttribute("src").startsWith("https://127.0.0.1:9/tiles/"));
             assertThat(b.findElement(By.cssSelector(".leaflet-control-attribution")).getText()).contains("127.0.0.1:9");
+            // The call records' layers on tiles: a vehicle as the fleet page hands it over, with two surfacings'
+            // currents (one too weak to draw) and its waypoint, drawn by the page's own module on a second map.
+            Object drawn = b.executeAsyncScript("const done = arguments[arguments.length - 1];"
+                    + "import('/tilemap.js').then((m) => { const c = document.createElement('canvas'); c.id = 'tile-test';"
+                    + " document.body.append(c); const draw = m.tileMap(c, arguments[0]);"
+                    + " const fixes = [{ lat: 41.60, lon: -70.60, t: 1, gps: true, current_e: 0.11, current_n: -0.05 },"
+                    + "  { lat: 41.65, lon: -70.55, t: 2, gps: true, current_e: 0, current_n: 0 }];"
+                    + " draw([{ name: 'ru29', track: fixes, currents: fixes,"
+                    + "  waypoint: { from: fixes[1], to: { lat: 41.75, lon: -70.41 }, words: '12.2 km 038°' } }]);"
+                    + " const d = document.getElementById('tile-test');"
+                    + " done(d.dataset.points + ' ' + d.dataset.arrows + ' ' + d.dataset.waypoints + ' '"
+                    + "  + d.querySelectorAll('path.leaflet-interactive').length); });", TILES);
+            assertThat(String.valueOf(drawn)).as("points arrows waypoints paths").startsWith("2 1 1 ");
         } finally {
             b.quit();
         }

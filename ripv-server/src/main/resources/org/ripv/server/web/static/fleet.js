@@ -80,8 +80,11 @@ function mapVehicles() {
     const fixes = trackFixes(o);
     const wpt = o?.wpt_lat == null ? null : { lat: o.wpt_lat, lon: o.wpt_lon };
     const from = o?.fix_lat == null ? null : { lat: o.fix_lat, lon: o.fix_lon };
+    const currents = fixes.filter((p) => p.current_e != null);
+    // layers for the offline map; currents and waypoint as data for the tile map, which draws them with Leaflet
     return { name: a, track: [...v.track, ...fixes, ...(database.get(vehicleName(a).toLowerCase()) || [])], also: wpt ? [wpt] : [],
-      layers: (c) => [currentLayer(fixes.filter((p) => p.current_e != null), c), ...(wpt ? [waypointLayer(from, wpt, waypointShort(o), c)] : [])] };
+      currents, waypoint: wpt ? { from, to: wpt, words: waypointShort(o) } : null,
+      layers: (c) => [currentLayer(currents, c), ...(wpt ? [waypointLayer(from, wpt, waypointShort(o), c)] : [])] };
   });
   for (const [name, fixes] of database) if (!names.has(name)) list.push({ name: fixes.label, track: fixes });
   return list;
