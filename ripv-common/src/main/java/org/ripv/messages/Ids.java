@@ -56,7 +56,7 @@ public final class Ids {
     public static final String FID_RECEIPTS = "555801";
     public static final String FID_CANCEL = "555802";
     // Plans and their changes (docs/plans.md): 555810-555819.
-    /** {@code ?plan MAILBOX check|send|set ...}: behaviour files checked, sent, parameters set. */
+    /** {@code ?plan MAILBOX check|send|set|forecast|save|history|current ...}: behaviour files checked, sent, kept, parameters set. */
     public static final String FID_PLAN = "555810";
     /** {@code ?changes [MAILBOX]}: each change sent to a vehicle and how far it got. */
     public static final String FID_CHANGES = "555811";

@@ -14,6 +14,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import org.ripv.surfacing.DegreesMinutes;
 
 /**
  * Reads a behaviour file line by line as the glider does, collecting every problem with its
@@ -263,7 +264,7 @@ public final class BehaviorFileReader {
         double v = Double.parseDouble(value);
         if (units.equalsIgnoreCase("lat") || units.equalsIgnoreCase("lon")) {
             try {
-                DegreesMinutes.degrees(value, units.equalsIgnoreCase("lat"));
+                DegreesMinutes.parse(value, units.equalsIgnoreCase("lat"));
             } catch (IllegalArgumentException e) {
                 problem(lineNo, "b_arg " + argName + ": " + e.getMessage());
                 return;
@@ -291,8 +292,8 @@ public final class BehaviorFileReader {
             return; // counted, not kept: a billion waypoints cost a counter
         }
         try {
-            double lon = DegreesMinutes.degrees(words[0], false);
-            double lat = DegreesMinutes.degrees(words[1], true);
+            double lon = DegreesMinutes.parse(words[0], false);
+            double lat = DegreesMinutes.parse(words[1], true);
             waypoints.add(new Waypoint(waypointCount - 1, lineNo, words[0], words[1], lat, lon, remark));
         } catch (IllegalArgumentException e) {
             problem(lineNo, e.getMessage());

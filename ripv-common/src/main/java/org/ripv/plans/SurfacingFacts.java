@@ -3,6 +3,8 @@ package org.ripv.plans;
 import java.math.BigDecimal;
 import java.util.Map;
 
+import org.ripv.surfacing.DegreesMinutes;
+
 /**
  * What one surfacing's dialog showed, as the change follower needs it: the sensors it printed
  * ({@code sensor:NAME(UNITS)=VALUE}, by lower-case name) and the waypoint it steers for
@@ -27,7 +29,7 @@ public record SurfacingFacts(String mailbox, long time, Map<String, Double> sens
             return null;
         }
         try {
-            return DegreesMinutes.degrees(BigDecimal.valueOf(v).toPlainString(), latitude);
+            return DegreesMinutes.parse(BigDecimal.valueOf(v).toPlainString(), latitude);
         } catch (IllegalArgumentException e) {
             return null; // Slocum's no-value (69696969) and other nonsense: no waypoint shown
         }

@@ -10,6 +10,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Optional;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
@@ -225,6 +226,22 @@ public final class SurfaceDialogParser {
         if (d != null) {
             listener.surfacing(d.build(end));
         }
+    }
+
+    /**
+     * One {@code sensor:NAME(UNITS)=VALUE} line read on its own, as the dialog reads it, for a
+     * line outside any dialog (a {@code put}'s echo {@code sensor:NAME=VALUE}); the name as printed.
+     */
+    public static Optional<Surfacing.Sensor> sensorLine(String line) {
+        if (line == null || line.length() > MAX_LINE) {
+            return Optional.empty();
+        }
+        Matcher m = SENSOR.matcher(line.strip());
+        if (!m.matches()) {
+            return Optional.empty();
+        }
+        return Optional.of(new Surfacing.Sensor(m.group(1), m.group(2) == null ? "" : m.group(2), m.group(3),
+                number(m.group(3)), number(m.group(4))));
     }
 
     static Double number(String s) {

@@ -210,6 +210,7 @@ public final class RIPVServer implements AutoCloseable {
                 services, checkers, permitFile, locks, cancels));
         plans = new Plans(new PlanBridge(files, permitFile, this::publishServerEntry, workflows::queueGenerated),
                 config.dataDir().resolve("plans"));
+        sessions.surfacings().onSurfacing(plans::surfacing); // plans judge changes by the parsed dialogs
         sessions.expireLocks(timers, locks, mailbox -> workflows.lockReleased(mailbox));
         permits.onChange(sessions::permitsChanged);
         internalCalls = new InternalCalls(services, permitFile, files, forwarder);

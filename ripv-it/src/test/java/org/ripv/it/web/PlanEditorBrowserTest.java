@@ -19,6 +19,7 @@ import org.openqa.selenium.Dimension;
 import org.openqa.selenium.OutputType;
 import org.openqa.selenium.WebElement;
 import org.openqa.selenium.chrome.ChromeDriver;
+import org.openqa.selenium.interactions.Actions;
 import org.openqa.selenium.support.ui.WebDriverWait;
 
 /**
@@ -27,8 +28,13 @@ import org.openqa.selenium.support.ui.WebDriverWait;
  * (adds waypoints, types their positions, edits a b_arg), saves it and sees the server's
  * {@code FILE:LINE: reason} for a latitude over 90°, fixes it, sends it on the next call as
  * {@code goto_l10.ma}, queues a put, and watches both changes become "in effect" as the glider's
- * dialogs show them; loads the saved file back; asks for the forecast. Screenshots, desktop and
- * phone, go to {@code target/web-screenshots/plan-*.png} (and docs/images).
+ * dialogs show them; loads the saved file back; asks for the forecast. Then on the map (item 2):
+ * the list the glider runs is drawn from {@code ?plan current}; a waypoint dragged with the
+ * pointer moves in the table too; saved, the version shows its diff against the version sent;
+ * the history lists both versions; sent, the fleet's pending-changes page lists it until the
+ * glider's dialog steers for the dragged waypoint. At phone size a drag moves a waypoint as well
+ * and neither page scrolls sideways. Screenshots, desktop and phone, go to
+ * {@code target/web-screenshots/plan-*.png} and {@code changes-*.png} (and docs/images).
  */
 class PlanEditorBrowserTest {
     static final String PASSWORD = WebConsoleBrowserTest.PASSWORD;
@@ -88,6 +94,22 @@ class PlanEditorBrowserTest {
     private static void type(WebElement e, String value) {
         e.clear();
         e.sendKeys(value);
+    }
+
+    /** Drags proposed waypoint {@code n} on the map by (dx, dy) CSS pixels with the pointer, as a pilot's mouse or finger does. */
+    private static void drag(ChromeDriver b, WebElement map, int n, int dx, int dy) {
+        String dots = map.getAttribute("data-dots");
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile("\\[" + n + ",(-?\\d+),(-?\\d+)\\]").matcher(dots);
+        assertThat(m.find()).as("waypoint " + n + " on the map: " + dots).isTrue();
+        int x = Integer.parseInt(m.group(1));
+        int y = Integer.parseInt(m.group(2));
+        org.openqa.selenium.Rectangle r = map.getRect();
+        int cx = x - r.getWidth() / 2;
+        int cy = y - r.getHeight() / 2;
+        int dragged = Integer.parseInt(java.util.Objects.requireNonNullElse(map.getAttribute("data-dragged"), "0"));
+        new Actions(b).moveToElement(map, cx, cy).clickAndHold().moveByOffset(dx / 2, dy / 2).moveByOffset(dx - dx / 2, dy - dy / 2)
+                .release().perform();
+        new WebDriverWait(b, Duration.ofSeconds(5)).until(d -> !String.valueOf(dragged).equals(map.getAttribute("data-dragged")));
     }
 
     @Test
@@ -153,6 +175,61 @@ class PlanEditorBrowserTest {
             wait.until(d -> d.findElement(By.id("forecast-text")).isDisplayed());
             assertThat(text(b, "forecast-text")).startsWith("forecast of goto_l11(1).ma for " + glider);
 
+            // The map: what the glider runs (the file in effect, the waypoint its dialog heads for) beside the proposed list.
+            wait.withMessage(() -> "on the glider: " + text(b, "current-status")).until(d -> text(d, "current-status")
+                    .contains("heading for 41.31000, -70.55000") && text(d, "current-status").contains("goto list: goto_l10.ma, change 1, in effect since"));
+            WebElement map = b.findElement(By.id("plan-map"));
+            assertThat(map.getAttribute("data-waypoints")).isEqualTo("2");
+            // drag waypoint 1 (the one the glider heads for) 60 px right and 40 px down
+            drag(b, map, 1, 60, 40);
+            rows = b.findElements(By.cssSelector("#wpts tbody tr"));
+            String movedLat = rows.get(1).findElement(By.className("lat")).getAttribute("value");
+            String movedLon = rows.get(1).findElement(By.className("lon")).getAttribute("value");
+            assertThat(Double.parseDouble(movedLat)).isLessThan(41.31);
+            assertThat(Double.parseDouble(movedLon)).isGreaterThan(-70.55);
+            assertThat(rows.get(0).findElement(By.className("lat")).getAttribute("value")).isEqualTo("41.3"); // as typed, untouched
+            b.findElement(By.id("save")).click();
+            wait.until(d -> text(d, "save-status").startsWith("saved and checked: goto_l11(2).ma: goto_list, 2 waypoint(s)"));
+            assertThat(text(b, "save-status")).contains("version 2 of goto_l11.ma");
+            assertThat(text(b, "diff")).startsWith("diff against version 1, the last sent (as goto_l10.ma, change 1,")
+                    .containsPattern("\n- -7033\\.0000\\s+4118\\.6000\n"); // the waypoint as sent, out (getText shows the tab as a blank)
+            assertThat(b.findElements(By.cssSelector("#diff .add"))).isNotEmpty();
+            assertThat(b.findElements(By.cssSelector("#diff .del"))).isNotEmpty();
+            b.findElement(By.id("history")).click();
+            wait.until(d -> d.findElements(By.cssSelector("#versions li")).size() == 2);
+            assertThat(b.findElement(By.cssSelector("#versions li[data-version='1']")).getAttribute("data-sent")).isEqualTo("true");
+            assertThat(b.findElement(By.cssSelector("#versions li[data-version='2']")).getAttribute("data-sent")).isEqualTo("false");
+            assertThat(text(b, "versions")).contains("by alice");
+            b.executeScript("document.getElementById('plan-map').scrollIntoView({block: 'start'})");
+            Files.write(shots.resolve("plan-map-desktop.png"), b.getScreenshotAs(OutputType.BYTES));
+            b.findElement(By.id("send")).click();
+            wait.until(d -> text(d, "send-status").startsWith("change 3: "));
+            wait.until(d -> !d.findElements(By.cssSelector("#versions li[data-version='2'][data-sent='true']")).isEmpty());
+
+            // The fleet's pending changes: change 3, with its state and age, linked to the plan page.
+            b.findElement(By.linkText("Changes")).click();
+            wait.until(d -> "true".equals(d.findElement(By.tagName("body")).getAttribute("data-ready")));
+            WebElement pending = b.findElement(By.cssSelector("section.vehicle-changes tr[data-id='3']"));
+            assertThat(pending.getAttribute("data-state")).isIn("queued", "sent", "received");
+            assertThat(pending.getText()).contains("goto_l10.ma (from goto_l11(2).ma)").contains("ago").contains("alice");
+            assertThat(b.findElement(By.cssSelector("section.vehicle-changes h3 a")).getAttribute("href")).contains("/plan.html?m=");
+            assertThat(b.findElements(By.cssSelector("section.vehicle-changes tr[data-id='1']"))).isEmpty(); // settled: not pending
+            Files.write(shots.resolve("changes-desktop.png"), b.getScreenshotAs(OutputType.BYTES));
+            // it follows the change's events: received, then gone when in effect
+            wait.withMessage(() -> "pending: " + text(b, "vehicles")).until(d ->
+                    d.findElements(By.cssSelector("section.vehicle-changes tr[data-id='3']")).isEmpty());
+            assertThat(text(b, "status")).startsWith("0 pending change(s)");
+            // the vehicle's own map draws the goto list it runs too
+            b.get("https://127.0.0.1:" + http + "/vehicle.html?m=" + java.net.URLEncoder.encode(glider, StandardCharsets.UTF_8));
+            wait.withMessage(() -> "the vehicle's track map: " + b.findElement(By.id("track")).getAttribute("data-plan-waypoints"))
+                    .until(d -> "2".equals(d.findElement(By.id("track")).getAttribute("data-plan-waypoints")));
+            b.get("https://127.0.0.1:" + http + "/plan.html?m=" + java.net.URLEncoder.encode(glider, StandardCharsets.UTF_8));
+            wait.until(d -> "true".equals(d.findElement(By.tagName("body")).getAttribute("data-ready")));
+            wait.withMessage(() -> "changes: " + text(b, "changes")).until(d ->
+                    !d.findElements(By.cssSelector("#changes li[data-id='3'][data-state='in effect']")).isEmpty());
+            assertThat(text(b, "changes")).contains(String.format(java.util.Locale.ROOT, "c_wpt_lat/lon %.5f, %.5f is waypoint 1",
+                    Double.parseDouble(movedLat), Double.parseDouble(movedLon)));
+
             // The saved file loads back into the table.
             b.findElement(By.id("add-wpt")).click();
             type(b.findElement(By.id("plan-file")), "goto_l11(1).ma");
@@ -173,6 +250,20 @@ class PlanEditorBrowserTest {
                     .isLessThanOrEqualTo(0L);
             b.executeScript("document.getElementById('wpts').scrollIntoView({block: 'start'})");
             Files.write(shots.resolve("plan-phone.png"), b.getScreenshotAs(OutputType.BYTES));
+            // a drag at phone size moves waypoint 0, and the table follows
+            map = b.findElement(By.id("plan-map"));
+            b.executeScript("arguments[0].scrollIntoView({block: 'start'})", map);
+            wait.until(d -> d.findElement(By.id("plan-map")).getAttribute("data-dots").contains("[0,"));
+            String before = b.findElements(By.cssSelector("#wpts tbody tr")).get(0).findElement(By.className("lon")).getAttribute("value");
+            drag(b, map, 0, -30, 20);
+            String after = b.findElements(By.cssSelector("#wpts tbody tr")).get(0).findElement(By.className("lon")).getAttribute("value");
+            assertThat(Double.parseDouble(after)).isLessThan(Double.parseDouble(before));
+            Files.write(shots.resolve("plan-map-phone.png"), b.getScreenshotAs(OutputType.BYTES));
+            b.get("https://127.0.0.1:" + http + "/changes.html");
+            wait.until(d -> "true".equals(d.findElement(By.tagName("body")).getAttribute("data-ready")));
+            assertThat((Long) b.executeScript("return document.documentElement.scrollWidth - document.documentElement.clientWidth"))
+                    .as("the changes page does not scroll sideways on a phone").isLessThanOrEqualTo(0L);
+            Files.write(shots.resolve("changes-phone.png"), b.getScreenshotAs(OutputType.BYTES));
         } finally {
             b.quit();
         }

@@ -143,11 +143,13 @@ public final class ServerCommands {
                         "what the last workflow runs did", c -> parts.workflows().receiptsCommand(c.request(),
                                 c.options(Workflows.ReceiptOptions.class))).onFileWork())
                 .add(ServerCommand.open("?plan", Ids.FID_PLAN,
-                        "?plan MAILBOX check FILE | send FILE [as NAME] | set NAME VALUE | forecast FILE [SPEED]",
-                        "check a Slocum behaviour file (.ma), send it on the next call, queue a put, or forecast its legs (docs/plans.md)",
+                        "?plan MAILBOX check FILE | send FILE [as NAME] | set NAME VALUE | forecast FILE [SPEED] | save FILE [as NAME]"
+                                + " | history NAME [N] | current",
+                        "check a Slocum behaviour file (.ma), send it on the next call, queue a put, forecast its legs, keep its versions,"
+                                + " or show the goto list the glider runs (docs/plans.md)",
                         c -> parts.plans().planCommand(c.request())).onFileWork())
                 .add(ServerCommand.open("?changes", Ids.FID_CHANGES, "?changes [MAILBOX]",
-                        "each change sent to a vehicle: queued, sent, received, in effect or not",
+                        "each change sent to a vehicle: queued, sent, received, in effect or not, or cancelled",
                         c -> parts.plans().changesCommand(c.request())).onFileWork())
                 .add(ServerCommand.parsed("?surfacings", Ids.FID_SURFACINGS, SurfacingCommands.Options::new,
                         "its call records: one per surfacing (docs/surfacings.md)",

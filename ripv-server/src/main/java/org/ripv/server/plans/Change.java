@@ -16,14 +16,16 @@ record Change(long id, String mailbox, Kind kind, String target, String value, S
     enum Kind { FILE, SET }
 
     enum State {
-        QUEUED, SENT, RECEIVED, IN_EFFECT, NOT_IN_EFFECT;
+        QUEUED, SENT, RECEIVED, IN_EFFECT, NOT_IN_EFFECT,
+        /** A file whose staged copy was deleted or replaced before a call took it: nothing of it reaches the vehicle. */
+        CANCELLED;
 
         String word() {
             return name().toLowerCase(Locale.ROOT).replace('_', ' ');
         }
 
         boolean settled() {
-            return this == IN_EFFECT || this == NOT_IN_EFFECT;
+            return this == IN_EFFECT || this == NOT_IN_EFFECT || this == CANCELLED;
         }
     }
 

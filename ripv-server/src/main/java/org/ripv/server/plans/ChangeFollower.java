@@ -17,9 +17,10 @@ import java.util.regex.Pattern;
 
 import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.VehicleEvent;
-import org.ripv.plans.SensorLine;
 import org.ripv.plans.SurfacingFacts;
 import org.ripv.server.files.FileStore;
+import org.ripv.surfacing.SurfaceDialogParser;
+import org.ripv.surfacing.Surfacing;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -38,6 +39,8 @@ final class ChangeFollower {
     static final int SURFACINGS = 2;
     /** How close a dialog's waypoint must be to a file's: 2e-4° is 22 m, far above the dialog's 0.001' rounding. */
     static final double WAYPOINT_DEGREES = 2e-4;
+    /** Sensor lines kept per call (a put's echo among them). */
+    static final int MAX_SENSORS = 500;
     private static final Pattern SENT = Pattern.compile("to-vehicle: sent (\\S+) \\(.*; moved to (to-vehicle/[^ ]+/sent/[^ ]+) \\(receipt.*",
             Pattern.DOTALL);
     private static final Pattern WORKFLOW = Pattern.compile("workflow (\\d+) '.*", Pattern.DOTALL);
@@ -71,8 +74,10 @@ final class ChangeFollower {
         VehicleEvent ev = e.event();
         if (ev == VehicleEvent.SURFACED) {
             echoes.put(e.mailbox(), new HashMap<>());
+            sweep(e.mailbox());
         } else if (ev == VehicleEvent.DIVED || ev == VehicleEvent.LINK_LOST) {
             echoes.remove(e.mailbox());
+            sweep(e.mailbox());
         } else if (ev == VehicleEvent.WORKFLOW_DONE || ev == VehicleEvent.WORKFLOW_FAILED
                 || ev == VehicleEvent.WORKFLOW_DONE_WITH_ERRORS) {
             Matcher m = WORKFLOW.matcher(e.text());
@@ -99,17 +104,18 @@ final class ChangeFollower {
     }
 
     private void line(ConsoleEntry e) throws IOException {
-        SensorLine s = SensorLine.parse(e.text()).orElse(null);
-        if (s == null) {
+        Surfacing.Sensor s = SurfaceDialogParser.sensorLine(e.text()).orElse(null);
+        if (s == null || s.value() == null) {
             return;
         }
+        String name = s.name().toLowerCase(Locale.ROOT);
         Map<String, Double> call = echoes.get(e.mailbox());
-        if (call != null && call.size() < DialogWindow.MAX_SENSORS) {
-            call.put(s.name(), s.value());
+        if (call != null && call.size() < MAX_SENSORS) {
+            call.put(name, s.value());
         }
         for (Change c : book.of(e.mailbox())) {
-            if (c.kind() == Change.Kind.SET && c.state() == Change.State.SENT && c.target().equals(s.name()) && same(s.value(), c.value())) {
-                move(c, Change.State.RECEIVED, e.time(), "the vehicle echoed sensor:" + s.name() + "=" + c.value());
+            if (c.kind() == Change.Kind.SET && c.state() == Change.State.SENT && c.target().equals(name) && same(s.value(), c.value())) {
+                move(c, Change.State.RECEIVED, e.time(), "the vehicle echoed sensor:" + name + "=" + c.value());
             }
         }
     }
@@ -127,8 +133,12 @@ final class ChangeFollower {
                 continue;
             }
             String sha = sha256(files.uploadDir().resolve(sentAs));
-            String differs = sha.equals(c.sha256()) ? ""
-                    : " (NOT the file checked, sha256 " + c.sha256() + ": the staged file was replaced after ?plan send)";
+            if (!sha.equals(c.sha256())) {
+                move(c, Change.State.CANCELLED, e.time(), "the staged file was replaced after ?plan send: the vehicle got " + sentAs
+                        + " (sha256 " + sha + "), not the file checked (sha256 " + c.sha256() + "); that file is not followed");
+                return;
+            }
+            String differs = "";
             Change sent = move(c, Change.State.SENT, e.time(), "sent by the to-vehicle round: " + sentAs + ".receipt, sha256 " + sha
                     + differs);
             if (e.text().contains("dir lists " + name + " with ")) {
@@ -137,6 +147,64 @@ final class ChangeFollower {
             }
             return; // one staged file is one change
         }
+    }
+
+    /**
+     * Queued files of {@code mailbox} (every MailBox when null) whose staged copy is gone, or is
+     * no longer the file that was checked, are cancelled: the to-vehicle round can only send what
+     * is in the folder, so the change as checked never reaches the vehicle. A file the round has
+     * just moved to {@code sent/} (its receipt names it, written after the change was queued) is
+     * left for the round's own line.
+     */
+    void sweep(String mailbox) {
+        try {
+            for (Change c : mailbox == null ? book.list(x -> true) : book.of(mailbox)) {
+                if (c.kind() != Change.Kind.FILE || c.state() != Change.State.QUEUED || c.staged().isEmpty()) {
+                    continue;
+                }
+                Path staged = files.uploadDir().resolve(c.staged());
+                long now = System.currentTimeMillis();
+                if (!Files.isRegularFile(staged)) {
+                    if (!sentSince(c, staged)) {
+                        move(c, Change.State.CANCELLED, now, "the staged file " + c.staged() + " was deleted before a call took it;"
+                                + " nothing of this change goes to the vehicle");
+                    }
+                    continue;
+                }
+                String sha = sha256(staged);
+                if (!sha.equals(c.sha256())) {
+                    move(c, Change.State.CANCELLED, now, "the staged file " + c.staged() + " was replaced (sha256 " + sha
+                            + ", not the file checked, sha256 " + c.sha256() + "): the new file goes unchecked and is not followed;"
+                            + " ?plan send it to follow it");
+                }
+            }
+        } catch (IOException x) {
+            log.warn("could not look at the staged files of {}: {}", mailbox == null ? "the fleet" : mailbox, x.toString());
+        }
+    }
+
+    /** True when a receipt in the staged file's {@code sent/} folder, written since it was queued, names it. */
+    private static boolean sentSince(Change c, Path staged) {
+        Path sent = staged.getParent().resolve("sent");
+        if (!Files.isDirectory(sent)) {
+            return false;
+        }
+        String line = "file: " + c.staged() + "\n";
+        try (var list = Files.newDirectoryStream(sent, "*.receipt")) {
+            int looked = 0;
+            for (Path r : list) {
+                if (++looked > 2000) {
+                    return true; // too many to look through: leave it to the round's line rather than cancel wrongly
+                }
+                if (Files.getLastModifiedTime(r).toMillis() + 2000 >= c.queuedAt() && Files.size(r) < 64 * 1024
+                        && Files.readString(r).startsWith(line)) {
+                    return true;
+                }
+            }
+        } catch (IOException | RuntimeException e) {
+            return false;
+        }
+        return false;
     }
 
     /** A surfacing's dialog: the changes it can show are judged by it. */

@@ -2,6 +2,8 @@ package org.ripv.server.plans;
 
 import java.io.IOException;
 import java.io.InputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
@@ -9,6 +11,7 @@ import java.time.Instant;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.Optional;
 import java.util.regex.Pattern;
 
 import org.ripv.messages.ErrorCode;
@@ -54,10 +57,12 @@ final class PlanCommands {
     private final ChangeBook book;
     private final PlanLimits limits;
     private final Fixes fixes;
+    private final PlanVersions versions;
     /** A Slocum's usual horizontal speed through the water, for a glider with fewer than two fixes. */
     static final double ASSUMED_SPEED = 0.3;
 
-    PlanCommands(PlanHost host, ChangeBook book, PlanLimits limits, Fixes fixes) {
+    PlanCommands(PlanHost host, ChangeBook book, PlanLimits limits, Fixes fixes, PlanVersions versions) {
+        this.versions = versions;
         this.host = host;
         this.book = book;
         this.limits = limits;
@@ -76,7 +81,13 @@ final class PlanCommands {
     OutgoingServerMessage plan(IncomingServerMessage request) throws IOException {
         String[] w = request.header().body().trim().split("\\s+");
         String usage = "usage: ?plan MAILBOX check FILE | ?plan MAILBOX send FILE [as NAME] | ?plan MAILBOX set NAME VALUE"
-                + " | ?plan MAILBOX forecast FILE [SPEED]";
+                + " | ?plan MAILBOX forecast FILE [SPEED] | ?plan MAILBOX save FILE [as NAME] | ?plan MAILBOX history NAME [N]"
+                + " | ?plan MAILBOX current";
+        if (w.length == 3 && w[2].equalsIgnoreCase("current")) {
+            String mailbox = address(w[1]);
+            mayRead(request.header().origin().user(), mailbox);
+            return current(request, mailbox);
+        }
         if (w.length < 4) {
             throw new IllegalArgumentException(usage);
         }
@@ -100,8 +111,189 @@ final class PlanCommands {
                 need(w.length == 4 || w.length == 5, "usage: ?plan MAILBOX forecast FILE [SPEED] (m/s through the water)");
                 yield forecast(request, mailbox, w[3], w.length == 5 ? w[4] : null);
             }
+            case "save" -> {
+                need(w.length == 4 || (w.length == 6 && w[4].equalsIgnoreCase("as")), "usage: ?plan MAILBOX save FILE [as NAME]");
+                yield save(request, mailbox, w[3], w.length == 6 ? w[5] : w[3]);
+            }
+            case "history" -> {
+                need(w.length == 4 || w.length == 5, "usage: ?plan MAILBOX history NAME [N]");
+                yield history(request, mailbox, w[3], w.length == 5 ? w[4] : null);
+            }
             default -> throw new IllegalArgumentException(usage);
         };
+    }
+
+    /**
+     * Checks FILE and keeps it as the next version of NAME (who, when), with the diff against the
+     * last version of NAME that was sent. A refused file is no version.
+     */
+    private OutgoingServerMessage save(IncomingServerMessage request, String mailbox, String name, String as) throws IOException {
+        String user = request.header().origin().user();
+        permitted(request);
+        vehicleName(as);
+        Found f = find(mailbox, name);
+        byte[] bytes = readBounded(f);
+        PlanCheck c = BehaviorFileReader.check(name, bytes, limits);
+        if (!c.ok()) {
+            return error(request, Ids.FID_PLAN, ErrorCode.BAD_REQUEST, refusal(c, f) + "; no version was kept");
+        }
+        PlanVersions.Version v = versions.save(mailbox, as, user, bytes, c.file().sha256());
+        for (Change sent : book.of(mailbox)) { // these very bytes went before: the version says so
+            if (sent.kind() == Change.Kind.FILE && sent.state() != Change.State.CANCELLED && sent.sha256().equals(v.sha256())) {
+                versions.sent(mailbox, v.sha256(), sentAs(sent));
+            }
+        }
+        return ok(request, Ids.FID_PLAN, "version " + v.n() + " of " + as + " for " + mailbox + ", saved by " + user + " at "
+                + Instant.ofEpochMilli(v.time()) + " from " + name + "\n" + PlanTable.summary(c.file()) + "\n"
+                + diffText(mailbox, as, v, bytes), table(c.file()));
+    }
+
+    /** The versions of NAME, and the diff of version N (the newest when not given) against the last sent before it. */
+    private OutgoingServerMessage history(IncomingServerMessage request, String mailbox, String as, String nText) throws IOException {
+        vehicleName(as);
+        List<PlanVersions.Version> all = versions.list(mailbox, as);
+        if (all.isEmpty()) {
+            throw new NoSuchFileException("no saved version of " + as + " for " + mailbox + " (?plan " + mailbox + " save FILE as "
+                    + as + " keeps one)");
+        }
+        PlanVersions.Version of = all.get(all.size() - 1);
+        if (nText != null) {
+            need(nText.matches("\\d{1,9}"), "usage: ?plan MAILBOX history NAME [N]: N is a version number");
+            int n = Integer.parseInt(nText);
+            of = all.stream().filter(v -> v.n() == n).findFirst().orElseThrow(() -> new IllegalArgumentException(
+                    "no version " + n + " of " + as + " is kept (versions " + all.get(0).n() + " to " + all.get(all.size() - 1).n() + ")"));
+        }
+        StringBuilder b = new StringBuilder(all.size() + " version(s) of " + as + " for " + mailbox + "\n");
+        List<String[]> rows = new ArrayList<>();
+        for (PlanVersions.Version v : all) {
+            String saved = Instant.ofEpochMilli(v.time()).toString();
+            rows.add(new String[] {Integer.toString(v.n()), saved, v.user(), v.sha256(), Long.toString(v.bytes()), v.sent()});
+            b.append(String.format(Locale.ROOT, "%4d  %s  %-12s %s%n", v.n(), saved, v.user(),
+                    v.sent().isEmpty() ? "not sent" : "sent " + v.sent()));
+        }
+        b.append("version ").append(of.n()).append(": ").append(diffText(mailbox, as, of, versions.bytes(mailbox, as, of.n())));
+        return ok(request, Ids.FID_PLAN, b.toString(), new TableResult("?plan history " + as, List.of("version", "saved", "user",
+                "sha256", "bytes", "sent"), List.of("INTEGER", "VARCHAR", "VARCHAR", "VARCHAR", "INTEGER", "VARCHAR"), rows, false));
+    }
+
+    private static String sentAs(Change c) {
+        return "as " + c.target() + ", change " + c.id() + ", " + Instant.ofEpochMilli(c.queuedAt()) + " by " + c.user();
+    }
+
+    private String diffText(String mailbox, String as, PlanVersions.Version v, byte[] bytes) throws IOException {
+        Optional<PlanVersions.Version> sent = versions.lastSentBefore(mailbox, as, v.n());
+        if (sent.isEmpty()) {
+            return "no earlier version of " + as + " was sent: all of it is new";
+        }
+        List<String> diff = LineDiff.diff(lines(versions.bytes(mailbox, as, sent.get().n())), lines(bytes));
+        long changed = diff.stream().filter(l -> !l.startsWith("  ")).count();
+        return "diff against version " + sent.get().n() + ", the last sent (" + sent.get().sent() + "): " + changed
+                + " line(s) differ\n" + String.join("\n", diff);
+    }
+
+    private static List<String> lines(byte[] bytes) {
+        return new String(bytes, StandardCharsets.ISO_8859_1).lines().toList();
+    }
+
+    private byte[] readBounded(Found f) throws IOException {
+        try (InputStream in = Files.newInputStream(f.path())) {
+            return in.readNBytes(limits.maxBytes() + 1);
+        }
+    }
+
+    private static void vehicleName(String as) {
+        if (!VEHICLE_NAME.matcher(as).matches()) {
+            throw new IllegalArgumentException("'" + as + "' is not a name for the glider: behaviour files are NAME.ma with"
+                    + " NAME 1 to 8 letters, digits, '_' or '-' (its file system takes 8.3 names), e.g. goto_l10.ma");
+        }
+    }
+
+    /**
+     * The goto list the glider runs as far as the shore knows: of the goto file in effect (the
+     * newest change shown in effect) and the newest {@code goto_l*.ma} fetched from it, the later;
+     * with the waypoint its last dialog steered for and its last fix.
+     */
+    private OutgoingServerMessage current(IncomingServerMessage request, String mailbox) throws IOException {
+        List<String[]> rows = new ArrayList<>();
+        StringBuilder b = new StringBuilder();
+        Change inEffect = null;
+        for (Change c : book.of(mailbox)) {
+            if (c.kind() == Change.Kind.FILE && c.state() == Change.State.IN_EFFECT && !c.waypoints().isEmpty()) {
+                inEffect = c;
+            }
+        }
+        Path fetched = newestGotoFile(mailbox);
+        long fetchedAt = fetched == null ? 0 : Files.getLastModifiedTime(fetched).toMillis();
+        if (fetched != null && (inEffect == null || fetchedAt > inEffect.settledAt())) {
+            PlanCheck c;
+            try (InputStream in = Files.newInputStream(fetched)) {
+                c = BehaviorFileReader.check(fetched.getFileName().toString(), in, limits);
+            }
+            if (c.ok()) {
+                b.append("goto list: ").append(fetched.getFileName()).append(", fetched from the vehicle at ")
+                        .append(Instant.ofEpochMilli(fetchedAt)).append('\n');
+                for (Waypoint wp : c.file().waypoints()) {
+                    rows.add(row("waypoint", Integer.toString(wp.n()), wp.lat(), wp.lon(), wp.comment()));
+                }
+            } else {
+                b.append("goto list: ").append(fetched.getFileName()).append(", fetched, does not pass the check (?plan ")
+                        .append(mailbox).append(" check ").append(fetched.getFileName()).append(")\n");
+            }
+        }
+        if (rows.isEmpty() && inEffect != null) {
+            b.append("goto list: ").append(inEffect.target()).append(", change ").append(inEffect.id()).append(", in effect since ")
+                    .append(Instant.ofEpochMilli(inEffect.settledAt())).append('\n');
+            for (int i = 0; i < inEffect.waypoints().size(); i++) {
+                double[] w = inEffect.waypoints().get(i);
+                rows.add(row("waypoint", Integer.toString(i), w[0], w[1], ""));
+            }
+        }
+        if (rows.isEmpty() && b.length() == 0) {
+            b.append("goto list: none known (no goto_l*.ma fetched from the vehicle, no goto file in effect)\n");
+        }
+        fixes.heading(mailbox).ifPresentOrElse(h -> {
+            rows.add(row("heading", "", h.lat(), h.lon(), "c_wpt_lat/lon of the dialog at " + Instant.ofEpochMilli(h.time())));
+            b.append(String.format(Locale.ROOT, "heading for %.5f, %.5f (c_wpt_lat/lon of the dialog at %s)%n", h.lat(), h.lon(),
+                    Instant.ofEpochMilli(h.time())));
+        }, () -> b.append("heading for: no c_wpt_lat/lon in a dialog since the server started\n"));
+        fixes.last(mailbox).ifPresent(fx -> {
+            rows.add(row("fix", "", fx.lat(), fx.lon(), Instant.ofEpochMilli(fx.time()).toString()));
+            b.append(String.format(Locale.ROOT, "last fix %.5f, %.5f at %s%n", fx.lat(), fx.lon(), Instant.ofEpochMilli(fx.time())));
+        });
+        return ok(request, Ids.FID_PLAN, b.toString().strip(), new TableResult("?plan current", List.of("kind", "n", "lat", "lon",
+                "comment"), List.of("VARCHAR", "VARCHAR", "DOUBLE", "DOUBLE", "VARCHAR"), rows, false));
+    }
+
+    private static String[] row(String kind, String n, double lat, double lon, String comment) {
+        return new String[] {kind, n, String.format(Locale.ROOT, "%.5f", lat), String.format(Locale.ROOT, "%.5f", lon), comment};
+    }
+
+    private static final Pattern GOTO_FILE = Pattern.compile("(?i)goto_l\\d{1,3}\\.ma");
+
+    /** The newest goto_l*.ma among the vehicle's downloads (at most 10,000 names looked at). */
+    private Path newestGotoFile(String mailbox) throws IOException {
+        Path folder = host.files().downloadDir().resolve(FileStore.folderFor(mailbox));
+        if (!Files.isDirectory(folder)) {
+            return null;
+        }
+        Path newest = null;
+        long at = Long.MIN_VALUE;
+        int looked = 0;
+        try (DirectoryStream<Path> files = Files.newDirectoryStream(folder)) {
+            for (Path p : files) {
+                if (++looked > 10_000) {
+                    break;
+                }
+                if (GOTO_FILE.matcher(p.getFileName().toString()).matches() && Files.isRegularFile(p)) {
+                    long t = Files.getLastModifiedTime(p).toMillis();
+                    if (t > at) {
+                        at = t;
+                        newest = p;
+                    }
+                }
+            }
+        }
+        return newest;
     }
 
     /**
@@ -222,10 +414,7 @@ final class PlanCommands {
     private OutgoingServerMessage send(IncomingServerMessage request, String mailbox, String name, String as) throws IOException {
         String user = request.header().origin().user();
         PermitFile.User u = permitted(request);
-        if (!VEHICLE_NAME.matcher(as).matches()) {
-            throw new IllegalArgumentException("'" + as + "' is not a name for the glider: behaviour files are NAME.ma with"
-                    + " NAME 1 to 8 letters, digits, '_' or '-' (its file system takes 8.3 names), e.g. goto_l10.ma");
-        }
+        vehicleName(as);
         String folder = FileStore.folderFor(mailbox);
         PermitFile.Decision d = host.permits().decide(u, SERVER, "", "?to-vehicle " + folder);
         if (!d.allowed()) {
@@ -260,6 +449,7 @@ final class PlanCommands {
                 Change.State.QUEUED, now, 0, 0, 0, 0, staged, 0, "staged as " + staged + "; it goes on the next call", wpts);
         book.put(change);
         event(change, "queued: staged as " + staged + ", sha256 " + file.sha256());
+        versions.sent(mailbox, file.sha256(), sentAs(change));
         return ok(request, Ids.FID_PLAN, "change " + id + ": " + PlanTable.summary(file) + "\nchecked and staged as " + staged
                 + ": it goes to " + mailbox + " on its next call (the link's to-vehicle= protocol), with a receipt in "
                 + ToVehicleFolder.DIR + "/" + folder + "/" + ToVehicleFolder.SENT + "/" + as + ".receipt; ?changes " + mailbox
@@ -320,14 +510,14 @@ final class PlanCommands {
         for (Change c : list) {
             long since = Math.max(Math.max(c.queuedAt(), c.sentAt()), Math.max(c.receivedAt(), c.settledAt()));
             String[] row = {Long.toString(c.id()), c.mailbox(), c.what(), c.state().word(), Instant.ofEpochMilli(since).toString(),
-                    c.user(), c.sha256(), c.detail()};
+                    c.user(), c.sha256(), c.detail(), Instant.ofEpochMilli(c.queuedAt()).toString()};
             rows.add(row);
             b.append(String.format(Locale.ROOT, "%n%4d  %-14s %s  [%s since %s, by %s]%n      %s", c.id(), c.state().word(), c.what(),
                     w.length == 1 ? c.mailbox() : "", row[4], c.user(), c.detail()).replace("[ since", "[since"));
         }
         return ok(request, Ids.FID_CHANGES, b.toString(), new TableResult("?changes", List.of("id", "mailbox", "change", "state",
-                "since", "user", "sha256", "detail"), List.of("INTEGER", "VARCHAR", "VARCHAR", "VARCHAR", "VARCHAR", "VARCHAR",
-                "VARCHAR", "VARCHAR"), rows, false));
+                "since", "user", "sha256", "detail", "queued"), List.of("INTEGER", "VARCHAR", "VARCHAR", "VARCHAR", "VARCHAR",
+                "VARCHAR", "VARCHAR", "VARCHAR", "VARCHAR"), rows, false));
     }
 
     private void event(Change c, String text) {

@@ -3,10 +3,16 @@ package org.ripv.server.plans;
 import java.io.IOException;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
+import java.util.Map;
 import java.util.concurrent.ArrayBlockingQueue;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
 
 import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.ErrorCode;
@@ -18,6 +24,7 @@ import org.ripv.plans.PlanLimits;
 import org.ripv.plans.SurfacingFacts;
 import org.ripv.server.files.FileExistsException;
 import org.ripv.server.files.FileTooLargeException;
+import org.ripv.surfacing.Surfacing;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -32,13 +39,12 @@ public final class Plans implements AutoCloseable {
     private final ChangeBook book;
     private final PlanCommands commands;
     private final ChangeFollower follower;
-    private final DialogWindow dialogs = new DialogWindow();
     private final Fixes fixes = new Fixes();
     private final ThreadPoolExecutor thread;
 
     public Plans(PlanHost host, Path dir) throws IOException {
         this.book = new ChangeBook(dir);
-        this.commands = new PlanCommands(host, book, PlanLimits.DEFAULT, fixes);
+        this.commands = new PlanCommands(host, book, PlanLimits.DEFAULT, fixes, new PlanVersions(dir.resolve("history")));
         this.follower = new ChangeFollower(book, host.files(), host::publish);
         this.thread = new ThreadPoolExecutor(1, 1, 0, TimeUnit.SECONDS, new ArrayBlockingQueue<>(10_000), r -> {
             Thread t = new Thread(r, "ripv-plans");
@@ -60,10 +66,6 @@ public final class Plans implements AutoCloseable {
                 }
                 try {
                     fixes.take(e);
-                    dialogs.take(e).ifPresent(f -> {
-                        fixes.take(f);
-                        follower.judge(f);
-                    });
                     follower.take(e);
                 } catch (RuntimeException x) {
                     log.warn("plans: a console entry of {} could not be followed: {}", e.mailbox(), x.toString());
@@ -73,14 +75,29 @@ public final class Plans implements AutoCloseable {
     }
 
     /**
-     * One surfacing's facts from a surface-dialog parser. Until one is wired in, the facts come from
-     * the console's own {@code sensor:} lines ({@link DialogWindow}); a parser that calls this should
-     * replace that (see docs/plans.md).
+     * One surface dialog as the surfacing parser read it ({@code org.ripv.server.surfacing.Surfacings}
+     * records each): {@code time} is when the dialog began (epoch ms).
      */
+    public void surfacing(String mailbox, long time, Surfacing dialog) {
+        surfacing(facts(mailbox, time, dialog));
+    }
+
+    /** What the follower needs of a parsed dialog: its sensors by lower-case name, the first value of each. */
+    static SurfacingFacts facts(String mailbox, long time, Surfacing dialog) {
+        Map<String, Double> sensors = new LinkedHashMap<>();
+        for (Surfacing.Sensor s : dialog.sensors().values()) {
+            if (s.value() != null) {
+                sensors.putIfAbsent(s.name().toLowerCase(Locale.ROOT), s.value());
+            }
+        }
+        return SurfacingFacts.of(mailbox, time, sensors);
+    }
+
+    /** One surfacing's facts (from {@link #surfacing(String, long, Surfacing)}, or a test). */
     public void surfacing(SurfacingFacts facts) {
         thread.execute(() -> {
+            follower.judge(facts); // first: whoever sees the new heading (?plan current) sees the verdict it brought too
             fixes.take(facts);
-            follower.judge(facts);
         });
     }
 
@@ -91,6 +108,15 @@ public final class Plans implements AutoCloseable {
 
     /** {@code ?changes [MAILBOX]}. */
     public OutgoingServerMessage changesCommand(IncomingServerMessage request) throws IOException {
+        // a staged file deleted or replaced since the last call shows as cancelled at once, not only on the next call
+        try {
+            thread.submit(() -> follower.sweep(null)).get(2, TimeUnit.SECONDS);
+        } catch (ExecutionException | TimeoutException
+                 | RejectedExecutionException e) {
+            log.debug("plans: the sweep of staged files did not finish: {}", e.toString());
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
         return answer(request, Ids.FID_CHANGES, () -> commands.changes(request));
     }
 

@@ -43,6 +43,14 @@ public final class Surfacings implements AutoCloseable {
     static final int MAX_VEHICLES = 10_000;
     private static final TypeReference<LinkedHashMap<String, Object>> MAP = new TypeReference<>() {};
 
+    /** A parsed surface dialog, for a part that reads dialogs (the plans' change follower). */
+    @FunctionalInterface
+    public interface Reader {
+        /** Called on {@code ripv-surfacings}; {@code time} is when the dialog began (epoch ms). Must not block. */
+        void surfacing(String mailbox, long time, Surfacing dialog);
+    }
+
+    private volatile Reader reader = (m, t, s) -> { };
     private final StateStore store;
     private final AlertRules rules;
     private final Consumer<ConsoleEntry> events;
@@ -121,6 +129,11 @@ public final class Surfacings implements AutoCloseable {
             name = mailbox;
         }
         return rules.of(mailbox, name);
+    }
+
+    /** Where each parsed dialog goes besides its call record. */
+    public void onSurfacing(Reader r) {
+        this.reader = r;
     }
 
     /** Entries the server took; never waits. */
@@ -207,6 +220,11 @@ public final class Surfacings implements AutoCloseable {
             store.appendSurfacing(v.mailbox, time, json.writeValueAsString(rec), KEEP);
         } catch (IOException | RuntimeException x) {
             log.warn("could not keep the call record of {}: {}", v.mailbox, x.toString());
+        }
+        try {
+            reader.surfacing(v.mailbox, time, s);
+        } catch (RuntimeException x) {
+            log.warn("a reader of {}'s surface dialog failed: {}", v.mailbox, x.toString());
         }
         Double lat = s.gps() == null ? null : s.gps().lat();
         Double lon = s.gps() == null ? null : s.gps().lon();

@@ -23,6 +23,16 @@ import org.ripv.server.files.FileStore;
  */
 class ChangeFollowerTest {
     static final String M = "<SerialPortServer>::<shore>ru29";
+    /** The SHA-256 of the file {@link #sentLine} sends: 40 x's. */
+    static final String SENT_SHA = java.util.HexFormat.of().formatHex(sha("x".repeat(40)));
+
+    private static byte[] sha(String s) {
+        try {
+            return java.security.MessageDigest.getInstance("SHA-256").digest(s.getBytes(StandardCharsets.US_ASCII));
+        } catch (java.security.NoSuchAlgorithmException e) {
+            throw new IllegalStateException(e);
+        }
+    }
 
     @TempDir
     Path dir;
@@ -39,7 +49,7 @@ class ChangeFollowerTest {
     }
 
     private Change fileChange(long at) throws Exception {
-        Change c = new Change(book.nextId(), M, Change.Kind.FILE, "goto_l10.ma", "", "goto_l11.ma", "abc", 40, "alice",
+        Change c = new Change(book.nextId(), M, Change.Kind.FILE, "goto_l10.ma", "", "goto_l11.ma", SENT_SHA, 40, "alice",
                 Change.State.QUEUED, at, 0, 0, 0, 0, "to-vehicle/F/goto_l10.ma", 0, "",
                 List.of(new double[] {41.5, -70.5}, new double[] {41.6, -70.4}));
         book.put(c);
@@ -75,8 +85,7 @@ class ChangeFollowerTest {
         sentLine(2000);
         assertThat(state(c.id())).isEqualTo(Change.State.RECEIVED);
         Change now = book.of(M).get(0);
-        assertThat(now.detail()).contains("sha256 " + ChangeFollower.sha256(dir.resolve("upload/to-vehicle/F/sent/goto_l10.ma")))
-                .contains("NOT the file checked"); // the staged file was changed after the check: said so
+        assertThat(now.detail()).contains("sha256 " + SENT_SHA);
         // the call on which it arrived does not count; a later one does
         follower.judge(new SurfacingFacts(M, 1500, Map.of(), 41.0, -70.0));
         assertThat(state(c.id())).isEqualTo(Change.State.RECEIVED);
@@ -85,6 +94,14 @@ class ChangeFollowerTest {
         assertThat(published).extracting(ConsoleEntry::text).anySatisfy(t -> assertThat(t).contains("in effect")
                 .contains("is waypoint 1"));
         assertThat(new ChangeBook(dir.resolve("plans")).of(M)).extracting(Change::state).containsExactly(Change.State.IN_EFFECT);
+    }
+
+    @Test
+    void aFileTheRoundSentThatIsNotTheOneCheckedCancelsItsChange() throws Exception {
+        Change c = staged(withStaged(fileChange(1000), "to-vehicle/F/goto_l10.ma", "0".repeat(64)));
+        sentLine(2000);
+        assertThat(state(c.id())).isEqualTo(Change.State.CANCELLED);
+        assertThat(book.of(M).get(0).detail()).contains("not the file checked").contains("sha256 " + SENT_SHA);
     }
 
     @Test
@@ -118,18 +135,58 @@ class ChangeFollowerTest {
     }
 
     @Test
-    void sensorLinesAndSurfacingFactsReadTheDialogsWaypointAsDegreesAndMinutes() {
-        DialogWindow w = new DialogWindow();
-        assertThat(w.take(at(900, ConsoleEntry.line(M, "   sensor:c_wpt_lat(lat)=4136.000")))).isEmpty(); // just before SURFACED
-        assertThat(w.take(at(1000, ConsoleEntry.event(M, VehicleEvent.SURFACED, "call 1", null, null)))).isEmpty();
-        w.take(at(1100, ConsoleEntry.line(M, "   sensor:c_wpt_lon(lon)=-7024.000")));
-        w.take(at(1200, ConsoleEntry.line(M, "   sensor:c_wpt_lon(lon)=-7000.000"))); // an echo later in the call
-        w.take(at(1300, ConsoleEntry.line(M, "sensor:m_battery(volts)=15.1 trailing")));
-        SurfacingFacts f = w.take(at(2000, ConsoleEntry.event(M, VehicleEvent.DIVED, "hung up", null, null))).orElseThrow();
+    void theParsedDialogsSensorsMakeTheFactsWithTheWaypointAsDegreesAndMinutes() {
+        java.util.List<org.ripv.surfacing.Surfacing> got = new ArrayList<>();
+        org.ripv.surfacing.SurfaceDialogParser p = new org.ripv.surfacing.SurfaceDialogParser(got::add);
+        p.feed("Glider ru29 at surface.\r\nBecause:Surface interval [1]\r\n   sensor:c_wpt_lat(lat)=4136.000\r\n"
+                + "   sensor:C_WPT_LON(lon)=-7024.000    12.0 secs ago\r\n   sensor:m_battery(volts)=15.1\r\n"
+                + "Hit Control-C within 10 seconds to abort the mission\r\n");
+        assertThat(got).hasSize(1);
+        SurfacingFacts f = Plans.facts(M, 1000, got.get(0));
         assertThat(f.time()).isEqualTo(1000);
         assertThat(f.wptLat()).isCloseTo(41.6, org.assertj.core.data.Offset.offset(1e-9));
         assertThat(f.wptLon()).isCloseTo(-70.4, org.assertj.core.data.Offset.offset(1e-9));
-        assertThat(f.sensors()).doesNotContainKey("m_battery");
+        assertThat(f.sensors()).containsEntry("m_battery", 15.1);
         assertThat(SurfacingFacts.of(M, 0, Map.of("c_wpt_lat", 69696969.0)).wptLat()).isNull();
+    }
+
+    @Test
+    void aQueuedFileWhoseStagedCopyIsDeletedOrReplacedIsCancelledButOneTheRoundJustSentIsNot() throws Exception {
+        Path folder = Files.createDirectories(files.uploadDir().resolve("to-vehicle/F"));
+        Files.writeString(folder.resolve("goto_l10.ma"), "checked");
+        String sha = ChangeFollower.sha256(folder.resolve("goto_l10.ma"));
+        Change deleted = staged(withStaged(fileChange(1000), "to-vehicle/F/goto_l10.ma", sha));
+        Files.writeString(folder.resolve("goto_l12.ma"), "checked");
+        Change replaced = staged(withStaged(fileChange(1000), "to-vehicle/F/goto_l12.ma", sha));
+        Files.writeString(folder.resolve("goto_l13.ma"), "checked");
+        Change kept = staged(withStaged(fileChange(1000), "to-vehicle/F/goto_l13.ma", sha));
+        Change justSent = staged(withStaged(fileChange(System.currentTimeMillis()), "to-vehicle/F/goto_l14.ma", sha));
+        Files.createDirectories(folder.resolve("sent"));
+        Files.writeString(folder.resolve("sent/goto_l14.ma.receipt"), "file: to-vehicle/F/goto_l14.ma\nbytes: 7\n");
+
+        Files.delete(folder.resolve("goto_l10.ma"));
+        Files.writeString(folder.resolve("goto_l12.ma"), "another file");
+        follower.take(at(2000, ConsoleEntry.event(M, VehicleEvent.SURFACED, "call 1", null, null)));
+
+        assertThat(state(deleted.id())).isEqualTo(Change.State.CANCELLED);
+        assertThat(book.of(M).stream().filter(c -> c.id() == deleted.id()).findFirst().orElseThrow().detail())
+                .contains("was deleted before a call took it");
+        assertThat(state(replaced.id())).isEqualTo(Change.State.CANCELLED);
+        assertThat(state(kept.id())).isEqualTo(Change.State.QUEUED);
+        assertThat(state(justSent.id())).isEqualTo(Change.State.QUEUED);
+        assertThat(published).filteredOn(e -> e.event() == VehicleEvent.PLAN_CHANGE && e.text().contains(": cancelled: ")).hasSize(2);
+        assertThat(Change.State.CANCELLED.settled()).isTrue();
+        assertThat(new ChangeBook(dir.resolve("plans")).of(M)).filteredOn(c -> c.state() == Change.State.CANCELLED).hasSize(2);
+    }
+
+    private Change staged(Change c) throws Exception {
+        book.put(c);
+        return c;
+    }
+
+    private static Change withStaged(Change c, String staged, String sha) {
+        return new Change(c.id(), c.mailbox(), c.kind(), c.target(), c.value(), c.source(), sha, c.bytes(), c.user(), c.state(),
+                c.queuedAt(), c.sentAt(), c.receivedAt(), c.settledAt(), c.surfacings(), staged, c.workflowId(), c.detail(),
+                c.waypoints());
     }
 }

@@ -66,7 +66,7 @@ export function bar(s) {
   notify.href = '/notify.html';
   notify.textContent = 'Notifications';
   nav.append(fleet, notify);
-  for (const [href, text] of [['/data.html', 'Data'], ['/service.html', 'Services']]) {
+  for (const [href, text] of [['/changes.html', 'Changes'], ['/data.html', 'Data'], ['/service.html', 'Services']]) {
     const a = document.createElement('a');
     a.href = href;
     a.textContent = text;

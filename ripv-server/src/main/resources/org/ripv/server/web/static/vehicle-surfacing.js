@@ -3,6 +3,8 @@
 import { surfacings, lastCall, TRENDS, trackFixes, waypointShort, abort } from './surfacing.js';
 import { drawTrend } from './trend.js';
 import { drawMap, currentLayer, waypointLayer } from './map.js';
+import { PlanModel } from './plan-model.js';
+import { gliderLayer } from './plan-layers.js';
 
 const COLOURS = ['#0b5cad', '#1a7f37', '#cf222e', '#9a6700', '#8250df'];
 
@@ -11,6 +13,7 @@ export class SurfacingView {
     this.po = po;
     this.mailbox = mailbox;
     this.data = { records: [], outlook: null };
+    this.plan = new PlanModel(); // the goto list the glider runs (?plan current), drawn on the track (docs/plans.md)
     this.timer = null;
     window.addEventListener('resize', () => { clearTimeout(this.resized); this.resized = setTimeout(() => this.draw(), 150); });
   }
@@ -27,8 +30,10 @@ export class SurfacingView {
   }
 
   async refresh() {
-    const d = await surfacings(this.po, this.mailbox);
+    const [d, plan] = await Promise.all([surfacings(this.po, this.mailbox), this.po.send('', `?plan ${this.mailbox} current`)
+      .catch((e) => ({ status: 'ERROR', text: String(e) }))]);
     this.data = d;
+    if (plan.status !== 'ERROR') this.plan.setCurrent(plan.result?.rows || [], plan.text.split('\n')[0]);
     this.draw();
     const host = document.getElementById('surfacing');
     host.dataset.records = String(d.records.length);
@@ -69,7 +74,10 @@ export class SurfacingView {
     const from = outlook?.fix_lat == null ? null : { lat: outlook.fix_lat, lon: outlook.fix_lon };
     const layers = [currentLayer(fixes.filter((p) => p.current_e != null))];
     if (wpt) layers.push(waypointLayer(from, wpt, waypointShort(outlook)));
-    drawMap(document.getElementById('track'), [{ name: this.mailbox, track: fixes, also: wpt ? [wpt] : [] }], layers, this.mailbox);
+    layers.unshift(gliderLayer(this.plan));
+    const goto = this.plan.current.waypoints.map((p) => ({ lat: p.lat, lon: p.lon }));
+    drawMap(document.getElementById('track'), [{ name: this.mailbox, track: fixes, also: [...(wpt ? [wpt] : []), ...goto] }], layers,
+      this.mailbox);
   }
 }
 
