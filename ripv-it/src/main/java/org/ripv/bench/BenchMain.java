@@ -48,6 +48,12 @@ public final class BenchMain {
             "             the active server -> the standby answers (PostgreSQL state)   [--requests N] [--takeovers N]",
             "  store      vehicle transcript appends through the server's writer into the embedded store and into",
             "             PostgreSQL (RIPV_PG_URL) against direct JDBC batch inserts   [--entries N]",
+            "  surfacing  the surface dialog parser in dialog lines per second against reading and splitting the same lines",
+            "             [--dialogs N] [--runs N]",
+            "  plans      checking Slocum behaviour files (.ma) in files per second against reading the same files",
+            "             [--files N] [--runs N]",
+            "  webload    the web console's fleet page with 100 vehicles in headless Chromium: time to every vehicle",
+            "             shown against the same page static in the same browser   [--vehicles N] [--runs N]",
             "  workflow   the simulator calls in with a queued workflow (dir, ymodem:get of 5 files, 500 KB, ymodem:put",
             "             of 100 KB) at 115200 baud: call → WORKFLOW_DONE against the transfers alone, same run",
             "             [--baud N] [--runs N] [--files N] [--get-bytes N] [--put-bytes N] [--report-only]",
@@ -116,6 +122,9 @@ public final class BenchMain {
             case "dac" -> DacBench.run(rest);
             case "hosts" -> HostsBench.run(rest);
             case "store" -> StoreBench.run(rest);
+            case "surfacing" -> SurfacingBench.run(rest);
+            case "plans" -> PlansBench.run(rest);
+            case "webload" -> WebLoadBench.run(rest);
             case "workflow" -> Launchers.commandLine(new WorkflowBench(), "ripv bench workflow").execute(rest);
             default -> {
                 System.err.println("Error: unknown benchmark '" + name + "'\n" + USAGE);

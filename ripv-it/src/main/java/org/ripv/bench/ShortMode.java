@@ -39,6 +39,9 @@ final class ShortMode {
             Map.entry("store", List.of("--entries", "2000")),
             Map.entry("slocum", List.of("--mb", "1", "--runs", "1", "--ingest-rows", "300")),
             Map.entry("dac", List.of("--yos", "3", "--runs", "1", "--not-a-measurement")),
+            Map.entry("surfacing", List.of("--dialogs", "300", "--runs", "1")),
+            Map.entry("plans", List.of("--files", "100", "--runs", "1")),
+            Map.entry("webload", List.of("--vehicles", "10", "--runs", "2")),
             Map.entry("workflow", List.of("--files", "2", "--get-bytes", "8192", "--put-bytes", "4096", "--report-only")));
 
     /** What every {@value #FLAG} run prints first and last, so its figures are never read as measurements. */

@@ -100,7 +100,7 @@ public final class WebBench implements Callable<Integer> {
     }
 
     /** The server process and what its ready line said. */
-    private record Server(Process process, int port, int registryPort, Path secretFile, int httpPort) {
+    record Server(Process process, int port, int registryPort, Path secretFile, int httpPort) {
         long pid() {
             return process.pid();
         }
@@ -499,6 +499,11 @@ public final class WebBench implements Callable<Integer> {
 
     /** Starts the server jar's main in a JVM of its own, with the web console on a free port. */
     private Server start(Path dir) throws IOException {
+        return startServer(dir, heap, watchers + 200, 2 * (watchers + 200)); // the bench's crowd is one log-in's pages
+    }
+
+    /** The server jar's main in a JVM of its own on free ports, plain, with the web console; also used by {@link WebLoadBench}. */
+    static Server startServer(Path dir, String heap, int maxClients, int webPages) throws IOException {
         int httpPort;
         try (ServerSocket s = new ServerSocket(0)) {
             httpPort = s.getLocalPort();
@@ -506,8 +511,7 @@ public final class WebBench implements Callable<Integer> {
         String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
         List<String> cmd = List.of(java, "-Xmx" + heap, "-cp", System.getProperty("java.class.path"), "org.ripv.server.ServerMain",
                 "server", "--data", dir.toString(), "--port", "0", "--registry-port", "0", "--http-port", Integer.toString(httpPort),
-                "--plain", "--max-clients", Integer.toString(watchers + 200),
-                "--web-pages", Integer.toString(2 * (watchers + 200))); // the bench's crowd is one log-in's pages
+                "--plain", "--max-clients", Integer.toString(maxClients), "--web-pages", Integer.toString(webPages));
         Process p = new ProcessBuilder(cmd).redirectErrorStream(true).start();
         BufferedReader r = new BufferedReader(new InputStreamReader(p.getInputStream(), StandardCharsets.UTF_8));
         Pattern ready = Pattern.compile("RIPVServer ready: clients on port (\\d+).*register at [^:]+:(\\d+) with --secret-file (\\S+?),");

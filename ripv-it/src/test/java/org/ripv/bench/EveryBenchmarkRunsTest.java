@@ -19,6 +19,8 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
 import org.ripv.it.NetnsAssume;
 import org.ripv.testing.Tools;
+import org.ripv.it.Shared;
+import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * No benchmark may rot (issue 26): every benchmark the launcher lists runs once as
@@ -31,6 +33,7 @@ import org.ripv.testing.Tools;
  * <p>All of them run one after the other in one JVM of their own ({@link ShortRuns}; issue 38:
  * a JVM each made this the slowest class of the suite), started once before the checks.
  */
+@ResourceLock(Shared.CPU)
 class EveryBenchmarkRunsTest {
     private static final Path ROOT = Path.of(System.getProperty("user.dir")).toAbsolutePath().getParent();
     /** Under a loaded machine a shrunk benchmark still takes tens of seconds; hung ones are stopped here. */
@@ -102,7 +105,8 @@ class EveryBenchmarkRunsTest {
         assertThat(out).as("the machine's load is reported").contains(CpuClock.LOAD_PREFIX);
         assertThat(out.indexOf(ShortMode.NOT_MEASUREMENTS)).as("a --short run says, before and after its figures, that they"
                 + " are not measurements:\n" + out).isGreaterThanOrEqualTo(0).isLessThan(out.lastIndexOf(ShortMode.NOT_MEASUREMENTS));
-        if (List.of("broker", "database", "console", "workflow", "web", "slocum", "ingest").contains(name)) {
+        if (List.of("broker", "database", "console", "workflow", "web", "slocum", "ingest", "surfacing", "plans", "webload").contains(name)
+                && !(name.equals("webload") && HeadlessChromium.missing() != null)) {
             assertThat(out).as("CPU per operation against the floor's").containsPattern(
                     "cpu per op: .* [0-9.]+ us, floor [0-9.]+ us \\(CPU [0-9.]+×; wall [0-9.]+×\\)");
         }
@@ -130,6 +134,7 @@ class EveryBenchmarkRunsTest {
             case "zmodem" -> requiredInCi(Tools.onPath("sz") && Tools.onPath("rz"), "lrzsz");
             case "ymodem" -> requiredInCi(Tools.onPath("sb") && Tools.onPath("rb") && Tools.onPath("socat"), "lrzsz and socat");
             case "datavis" -> requiredInCi(Tools.onPath("octave-cli"), "octave-cli");
+            case "webload" -> requiredInCi(HeadlessChromium.missing() == null, "Chromium");
             case "store" -> requiredInCi(System.getenv("RIPV_PG_URL") != null, "PostgreSQL (RIPV_PG_URL)");
             default -> { }
         }

@@ -20,6 +20,8 @@ import org.ripv.client.handlers.Tls;
 import org.ripv.messages.Priority;
 import org.ripv.messages.Status;
 import org.ripv.server.permit.PermitFile;
+import org.ripv.it.Shared;
+import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * Issue 26: idle clients cost the server no thread each. The server jar is launched as
@@ -27,6 +29,7 @@ import org.ripv.server.permit.PermitFile;
  * log in over TLS and stay idle; the server's threads grow by a bounded few (before: one per
  * client), a logged-in user is still answered, and the client cap still refuses with its message.
  */
+@ResourceLock(Shared.CPU)
 class IdleClientThreadsTest {
     private static final Path ROOT = Path.of(System.getProperty("user.dir")).toAbsolutePath().getParent();
     private static final Path JAR = ROOT.resolve("ripv-server/target/ripv-server.jar");

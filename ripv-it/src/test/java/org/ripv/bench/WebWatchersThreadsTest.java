@@ -13,6 +13,7 @@ import org.junit.jupiter.api.io.TempDir;
 import org.ripv.it.TestSystem;
 import org.ripv.server.ServerConfig;
 import org.ripv.service.ServiceConnector;
+import org.junit.jupiter.api.parallel.Isolated;
 
 /**
  * A web console page is a Post Office client with no thread and no loopback socket of its own
@@ -22,6 +23,7 @@ import org.ripv.service.ServiceConnector;
  * while a page that reads still gets its lines. Before, each page was a loopback connection adopted
  * as a client, with a reader thread in the server and one in the web package: 1,000 threads here.
  */
+@Isolated // counts this JVM's threads: another class's server would add its own
 class WebWatchersThreadsTest {
     static final int PAGES = 500;
 

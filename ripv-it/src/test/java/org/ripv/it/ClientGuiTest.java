@@ -60,6 +60,7 @@ import org.ripv.services.serial.LinkSettings;
 import org.ripv.services.serial.SerialPortServer;
 import org.ripv.services.serial.ymodem.YmodemConfig;
 import org.ripv.services.simulator.GliderSimulator;
+import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * The RIPVClient against a real RIPVServer with the example ClockService registered over RMI.
@@ -69,6 +70,7 @@ import org.ripv.services.simulator.GliderSimulator;
  * with AssertJ-Swing; they need a display and run with {@code -Dripv.gui.tests=true} under Xvfb
  * (and {@code java.awt.headless=false} in the test JVM), as {@code .ci/run} does.
  */
+@ResourceLock(Shared.DISPLAY)
 class ClientGuiTest {
     static final Duration T = Duration.ofSeconds(20);
     static final String CLOCK = "<ClockService>::<localhost>";

@@ -25,12 +25,14 @@ import org.ripv.client.panels.ConsolePanel;
 import org.ripv.client.panels.ServiceLayoutPanel;
 import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.VehicleEvent;
+import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * The client's live console against a real server and a vehicle service publishing over RMI:
  * the model headless (always), and the window under Xvfb ({@code -Dripv.gui.tests=true}) with a
  * screenshot for docs/images ({@code -Dripv.screenshot.dir=docs/images}).
  */
+@ResourceLock(Shared.DISPLAY)
 class ConsoleGuiTest {
     static final Duration T = Duration.ofSeconds(20);
     static final String SERVICE = "<VehicleConsole>::<localhost>";

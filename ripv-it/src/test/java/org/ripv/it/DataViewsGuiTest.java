@@ -42,6 +42,7 @@ import org.ripv.services.database.DatabaseServer;
 import org.ripv.services.database.EmbeddedDatabase;
 import org.ripv.services.database.QueryLimits;
 import org.ripv.services.datavis.DataVisServer;
+import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * Issue 13's GUI against the real services (server, DatabaseServer on embedded Derby with the
@@ -51,6 +52,7 @@ import org.ripv.services.datavis.DataVisServer;
  * mouse, a quadrant maximised and restored by keyboard, the Fleet window (the docs' pictures
  * with -Dripv.screenshot.dir=../docs/images).
  */
+@ResourceLock(Shared.DISPLAY)
 class DataViewsGuiTest {
     static final Path SHARED = Path.of("../ripv-services/src/test/resources/slocum");
     static final String DATABASE = "<DatabaseServer>::<localhost>";

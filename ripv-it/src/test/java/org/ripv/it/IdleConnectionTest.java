@@ -8,8 +8,10 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.ripv.client.handlers.ClientSocketHandler;
 import org.ripv.messages.Priority;
+import org.junit.jupiter.api.parallel.Isolated;
 
 /** An idle client keeps only its reader thread; the writer comes back with the next reply (docs/performance.md). */
+@Isolated // looks for a writer thread by its client id, which another in-process server may also have
 class IdleConnectionTest {
     @TempDir
     Path dir;

@@ -19,6 +19,7 @@ import org.ripv.services.serial.SerialPortServer;
 import org.ripv.services.serial.VehicleLink;
 import org.ripv.services.serial.ymodem.YmodemConfig;
 import org.ripv.testing.Tools;
+import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * The console's key bar clicked under Xvfb ({@code -Dripv.gui.tests=true}): a real server, a
@@ -26,6 +27,7 @@ import org.ripv.testing.Tools;
  * its GliderDOS prompt ({@code zmodem-vehicle.sh}). alice's Ctrl-C brings the prompt into the
  * COM panel; bob, without the right to {@code ?key ctrl-c}, clicks the same button and is refused.
  */
+@ResourceLock(Shared.DISPLAY)
 class KeyBarGuiTest {
     static final Path ROOT = LaunchedJars.ROOT;
     static final String SERIAL = "<SerialPortServer>::<localhost>";

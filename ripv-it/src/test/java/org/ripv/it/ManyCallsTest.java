@@ -7,8 +7,10 @@ import java.time.Duration;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.ripv.bench.CallsBench;
+import org.junit.jupiter.api.parallel.ResourceLock;
 
 /** 100 vehicles call 100 listen:// links within 20 s, each for a few seconds: all taken and streamed. */
+@ResourceLock(Shared.CPU)
 class ManyCallsTest {
     @TempDir
     Path dir;

@@ -18,6 +18,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.ripv.naming.Handles;
 import org.ripv.server.permit.PermitFile;
+import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * RIPV across hosts for real (issue 15): network namespaces for the server, a service host, a
@@ -29,6 +30,7 @@ import org.ripv.server.permit.PermitFile;
  * what to set, and the same service working with {@code --outbound-only}; a server restart. It
  * writes the speeds it measured to {@code target/multihost-report.txt}.
  */
+@ResourceLock(Shared.NETNS)
 class MultiHostTest {
     private static final String SRV = "10.231.1.1";
     private static final String SVC = "10.231.1.2";

@@ -15,6 +15,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.ripv.naming.Handles;
 import org.ripv.server.permit.PermitFile;
+import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * The hot standby across hosts (issue 15 point 5): PostgreSQL in a namespace of its own, two
@@ -27,6 +28,7 @@ import org.ripv.server.permit.PermitFile;
  * and the first server, started again meanwhile as a standby, must take over within 15 s.
  * Writes its timings to {@code target/standby-report.txt}.
  */
+@ResourceLock(Shared.NETNS)
 class StandbyTest {
     private static final String S1 = "10.231.1.1";
     private static final String SVC = "10.231.1.2";

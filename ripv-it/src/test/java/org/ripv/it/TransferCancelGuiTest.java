@@ -18,6 +18,7 @@ import org.ripv.client.managers.ServiceModel;
 import org.ripv.services.serial.LinkSettings;
 import org.ripv.services.serial.SerialPortServer;
 import org.ripv.services.simulator.GliderSimulator;
+import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * A YMODEM get from the simulated glider behind a slow link (a relay at 256 KB/s), seen and stopped from the GUI's model: its COM
@@ -25,6 +26,7 @@ import org.ripv.services.simulator.GliderSimulator;
  * sends {@code ?cancel}, the transfer ends CANCELLED, nothing of the file is stored, and the
  * vehicle answers the next command.
  */
+@ResourceLock(Shared.DISPLAY)
 class TransferCancelGuiTest {
     static final Duration T = Duration.ofSeconds(60);
     static final String SERIAL = "<SerialPortServer>::<localhost>";

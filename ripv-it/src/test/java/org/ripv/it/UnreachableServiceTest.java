@@ -22,6 +22,7 @@ import org.ripv.rmi.DeadlineSocketFactory;
 import org.ripv.server.ServerConfig;
 import org.ripv.service.ServiceConnector;
 import org.ripv.service.ServiceOptions;
+import org.junit.jupiter.api.parallel.Isolated;
 
 /**
  * A service host that stops answering without going away (a firewall dropping packets), in one
@@ -30,6 +31,7 @@ import org.ripv.service.ServiceOptions;
  * when the path is; and a service the server cannot call back is refused at once, with the
  * address and what to set.
  */
+@Isolated // sets the RMI deadlines of every in-process server for its own
 class UnreachableServiceTest {
     private static final String GOOD = "<ClockService>::<good>";
     private static final String DARK = "<ClockService>::<dark>";

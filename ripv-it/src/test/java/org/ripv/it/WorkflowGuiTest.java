@@ -33,6 +33,7 @@ import org.ripv.messages.VehicleEvent;
 import org.ripv.services.database.DatabaseServer;
 import org.ripv.services.database.EmbeddedDatabase;
 import org.ripv.services.database.QueryLimits;
+import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * Issue 12 in the GUI against a real server, a vehicle service publishing over RMI and embedded
@@ -42,6 +43,7 @@ import org.ripv.services.database.QueryLimits;
  * window under Xvfb ({@code -Dripv.gui.tests=true}) with pictures for docs/images
  * ({@code -Dripv.screenshot.dir=../docs/images}).
  */
+@ResourceLock(Shared.DISPLAY)
 class WorkflowGuiTest {
     static final Duration T = Duration.ofSeconds(30);
     static final String VEHICLE = "<VehicleConsole>::<localhost>";

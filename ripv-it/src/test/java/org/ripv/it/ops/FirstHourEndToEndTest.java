@@ -196,7 +196,8 @@ class FirstHourEndToEndTest {
                         + pw + "' --known-hosts '" + knownHosts + "' --history '" + dir.resolve("history") + "' --follow sim01",
                 "echo \"CLI-EXIT=$?\"", "sleep 120", ""), StandardCharsets.UTF_8);
         try (Tmux t = new Tmux(200, 50, "bash", script.toString())) {
-            t.await("the watch, then the console's lines", Duration.ofSeconds(60),
+            // The history comes first: on a slow machine the call's SURFACED has scrolled off the screen by the time it is all there.
+            t.awaitInScrollback("the watch, then the console's lines", Duration.ofSeconds(120),
                     s -> s.contains("watching " + SIM) && s.contains("Ctrl-C stops") && s.contains("SURFACED"));
             assertThat(t.screen()).as("no interactive prompt").doesNotContain("alice@localhost>");
             // A line the vehicle writes now arrives on the terminal as it happens.

@@ -12,6 +12,8 @@ import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.ripv.testing.Tools;
+import org.ripv.it.Shared;
+import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * The README's first command as a new user types it: {@code git clone} of this repository into an
@@ -20,6 +22,7 @@ import org.ripv.testing.Tools;
  * says: {@code ?history sim01} at the interactive prompt, and {@code --follow sim01}, which follows
  * the glider's console (its calls and dives) instead of opening a prompt.
  */
+@ResourceLock(Shared.CPU)
 class FreshCloneDemoTest {
     @TempDir
     Path tmp;

@@ -48,6 +48,8 @@ import org.ripv.services.serial.SerialPortServer;
 import org.ripv.services.serial.ymodem.YmodemConfig;
 import org.ripv.services.simulator.GliderSimulator;
 import org.ripv.testing.Tools;
+import org.ripv.it.Shared;
+import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * The reference scenario (SPEC §10) in the window with the keyboard only: log in with Enter, go
@@ -59,6 +61,7 @@ import org.ripv.testing.Tools;
  * and {@code client-dark.png}.
  */
 @SuppressWarnings("deprecation") // AssertJ-Swing's robot takes the old InputEvent masks
+@ResourceLock(Shared.DISPLAY)
 class KeyboardScenarioGuiTest {
     static final Duration T = Duration.ofSeconds(30);
     static final String SERIAL = "<SerialPortServer>::<localhost>";

@@ -36,6 +36,25 @@ final class Tmux implements AutoCloseable {
         return tmux("capture-pane", "-p", "-J", "-t", session);
     }
 
+    /** Everything the terminal showed, the lines scrolled off the top too (its history, then the screen). */
+    String scrollback() throws IOException, InterruptedException {
+        return tmux("capture-pane", "-p", "-J", "-S", "-", "-t", session);
+    }
+
+    /** As {@link #await}, on the whole scrollback: for text that may have scrolled off a busy screen meanwhile. */
+    String awaitInScrollback(String what, Duration max, Predicate<String> test) throws IOException, InterruptedException {
+        long end = System.nanoTime() + max.toNanos();
+        String s = scrollback();
+        while (!test.test(s)) {
+            if (System.nanoTime() > end) {
+                throw new AssertionError("timed out waiting for " + what + "; the terminal:\n" + s);
+            }
+            Thread.sleep(50);
+            s = scrollback();
+        }
+        return s;
+    }
+
     /** Waits until the screen satisfies the test; fails with the screen after the time is up. */
     String await(String what, Duration max, Predicate<String> test) throws IOException, InterruptedException {
         long end = System.nanoTime() + max.toNanos();

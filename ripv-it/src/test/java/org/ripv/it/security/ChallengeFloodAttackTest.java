@@ -26,12 +26,15 @@ import org.ripv.security.ServiceProof;
 import org.ripv.server.security.RegistryGuard;
 import org.ripv.service.ServiceConnector;
 import org.ripv.service.ServiceOptions;
+import org.ripv.it.Shared;
+import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * Issue 23, item 1: anyone who reaches the registry could call {@code challenge()} without limit;
  * the server kept the newest 256, so a flood pushed a starting service's challenge out, the server
  * answered "unknown, used or expired; register again", and the service process exited.
  */
+@ResourceLock(Shared.CPU)
 class ChallengeFloodAttackTest {
     @TempDir
     Path dir;

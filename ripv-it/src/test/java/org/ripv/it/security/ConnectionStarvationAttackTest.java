@@ -21,11 +21,14 @@ import org.ripv.it.TestSystem;
 import org.ripv.messages.ErrorCode;
 import org.ripv.server.ServerConfig;
 import org.ripv.wire.FrameCodec;
+import org.ripv.it.Shared;
+import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * Issue 10, item 3: connections that never log in cannot lock anybody out. Before the fix, 1,000
  * connections that sent only the greeting filled the 1,000-client cap for as long as they stayed.
  */
+@ResourceLock(Shared.CPU)
 class ConnectionStarvationAttackTest {
     @TempDir
     Path dir;

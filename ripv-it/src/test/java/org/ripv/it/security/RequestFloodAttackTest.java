@@ -19,6 +19,8 @@ import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.Priority;
 import org.ripv.messages.Status;
 import org.ripv.server.ServerConfig;
+import org.ripv.it.Shared;
+import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * Issue 33 item 10: one client's 20,000 urgent requests raised everyone's latency to 17 s and the
@@ -26,6 +28,7 @@ import org.ripv.server.ServerConfig;
  * to take. Now a client has at most 32 priority or urgent requests and 2,048 in all waiting; the
  * rest are refused at once, and another user's urgent request goes to the head as before.
  */
+@ResourceLock(Shared.CPU)
 class RequestFloodAttackTest {
     static final String CLOCK = WebConsoleAttackTest.CLOCK;
     static final Duration T = Duration.ofSeconds(60);

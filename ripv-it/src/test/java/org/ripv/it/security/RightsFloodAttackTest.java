@@ -24,6 +24,8 @@ import org.ripv.it.web.WebVisitor;
 import org.ripv.messages.Priority;
 import org.ripv.messages.Status;
 import org.ripv.server.ServerConfig;
+import org.ripv.it.Shared;
+import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * {@code GET /api/rights} answers what the permit file lets a user send; each question is up to 16
@@ -31,6 +33,7 @@ import org.ripv.server.ServerConfig;
  * questions as fast as eight threads can gets the same true answers, an over-large one a clear 400
  * and never a grant, and everyone else is still served meanwhile.
  */
+@ResourceLock(Shared.CPU)
 class RightsFloodAttackTest {
     static final Duration T = Duration.ofSeconds(20);
 

@@ -22,6 +22,8 @@ import org.ripv.it.TestSystem;
 import org.ripv.it.web.Chromium;
 import org.ripv.it.web.WebVisitor;
 import org.ripv.server.ServerConfig;
+import org.ripv.it.Shared;
+import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * Issue 33 item 1: a page's {@code ?m=} was pasted into the commands it sends with the session's
@@ -32,6 +34,7 @@ import org.ripv.server.ServerConfig;
  * commands from words: headless Chromium follows those links from a second origin, the page says
  * the name is not valid, and nothing is queued or cleared.
  */
+@ResourceLock(Shared.BROWSER)
 class WebLinkInjectionAttackTest {
     static final String CLOCK = WebConsoleAttackTest.CLOCK;
     static final Duration T = Duration.ofSeconds(30);

@@ -17,6 +17,8 @@ import org.ripv.it.TestSystem;
 import org.ripv.it.web.WebVisitor;
 import org.ripv.messages.Status;
 import org.ripv.server.ServerConfig;
+import org.ripv.it.Shared;
+import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * Issue 33 items 2 and 3: one web log-in opened 1,010 WebSockets, each a logged-in client counted
@@ -25,6 +27,7 @@ import org.ripv.server.ServerConfig;
  * most 32 sockets and a user 64, and a user's log-ins past 16 end that user's own oldest session,
  * never another's.
  */
+@ResourceLock(Shared.CPU)
 class WebSessionFloodAttackTest {
     static final Duration T = Duration.ofSeconds(20);
 

@@ -21,6 +21,8 @@ import org.openqa.selenium.WebDriver;
 import org.openqa.selenium.WebElement;
 import org.openqa.selenium.chrome.ChromeDriver;
 import org.openqa.selenium.support.ui.WebDriverWait;
+import org.ripv.it.Shared;
+import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * A pilot's console, round two (issue 32), as launched: the server, a SerialPortServer with two
@@ -38,6 +40,7 @@ import org.openqa.selenium.support.ui.WebDriverWait;
  * <li>the controls follow the permit rules, not the role's name.
  * </ul>
  */
+@ResourceLock(Shared.BROWSER)
 class PilotConsoleBrowserTest {
     static final String GLIDER1 = "<SerialPortServer>::<localhost>glider1";
     static final String GLIDER2 = "<SerialPortServer>::<localhost>glider2";

@@ -21,6 +21,8 @@ import org.openqa.selenium.WebElement;
 import org.openqa.selenium.chrome.ChromeDriver;
 import org.openqa.selenium.interactions.Actions;
 import org.openqa.selenium.support.ui.WebDriverWait;
+import org.ripv.it.Shared;
+import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * The plan page (issue 36, item 2, as a table), as launched: the server, the SerialPortServer and
@@ -36,6 +38,7 @@ import org.openqa.selenium.support.ui.WebDriverWait;
  * and neither page scrolls sideways. Screenshots, desktop and phone, go to
  * {@code target/web-screenshots/plan-*.png} and {@code changes-*.png} (and docs/images).
  */
+@ResourceLock(Shared.BROWSER)
 class PlanEditorBrowserTest {
     static final String PASSWORD = WebConsoleBrowserTest.PASSWORD;
     static final Duration T = Duration.ofSeconds(150);

@@ -13,6 +13,8 @@ import org.openqa.selenium.By;
 import org.openqa.selenium.Dimension;
 import org.openqa.selenium.chrome.ChromeDriver;
 import org.openqa.selenium.support.ui.WebDriverWait;
+import org.ripv.it.Shared;
+import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * The public view in a browser that never logs in (issue 21 item 9): {@code --public 'glider*'}
@@ -20,6 +22,7 @@ import org.openqa.selenium.support.ui.WebDriverWait;
  * name does not match; the console pages send the anonymous visitor to log in. (The attacks on it
  * are {@code org.ripv.it.security.PublicViewAttackTest}.)
  */
+@ResourceLock(Shared.BROWSER)
 class PublicViewBrowserTest {
     @TempDir
     static Path dir;

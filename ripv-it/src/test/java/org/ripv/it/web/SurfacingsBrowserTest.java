@@ -22,6 +22,8 @@ import org.openqa.selenium.WebDriver;
 import org.openqa.selenium.chrome.ChromeDriver;
 import org.openqa.selenium.support.ui.WebDriverWait;
 import org.ripv.plans.Forecast;
+import org.ripv.it.Shared;
+import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * Issue 35 items 5 and 6 as launched: the server, a SerialPortServer and a GliderDOS glider
@@ -33,6 +35,7 @@ import org.ripv.plans.Forecast;
  * it learned before comes back from the stored call records, and the glider is OVERDUE by it.
  */
 @TestMethodOrder(MethodOrderer.OrderAnnotation.class)
+@ResourceLock(Shared.BROWSER)
 class SurfacingsBrowserTest {
     static final String GLIDER1 = "<SerialPortServer>::<localhost>glider1";
     /** The simulated glider steers for 41° 45' N, 70° 25' W (its goto list's default). */

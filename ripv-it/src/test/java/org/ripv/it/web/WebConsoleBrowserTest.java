@@ -23,6 +23,8 @@ import org.openqa.selenium.WebDriver;
 import org.openqa.selenium.WebElement;
 import org.openqa.selenium.chrome.ChromeDriver;
 import org.openqa.selenium.support.ui.WebDriverWait;
+import org.ripv.it.Shared;
+import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * The web console as launched and as used (issue 21): the server, the SerialPortServer and the
@@ -32,6 +34,7 @@ import org.openqa.selenium.support.ui.WebDriverWait;
  * map, and an observer gets the console with no command line. Screenshots go to
  * {@code target/web-screenshots/} (docs/images/ has the ones we looked at).
  */
+@ResourceLock(Shared.BROWSER)
 class WebConsoleBrowserTest {
     static final String PASSWORD = "correct horse battery";
     static final Duration T = Duration.ofSeconds(90);

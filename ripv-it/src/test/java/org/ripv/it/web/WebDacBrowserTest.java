@@ -12,6 +12,8 @@ import org.openqa.selenium.By;
 import org.openqa.selenium.chrome.ChromeDriver;
 import org.openqa.selenium.support.ui.WebDriverWait;
 import org.ripv.testing.LoopbackSshd;
+import org.ripv.it.Shared;
+import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * The data page's DAC delivery card as launched (issue 37 item 4): the server and a DatabaseServer
@@ -19,6 +21,7 @@ import org.ripv.testing.LoopbackSshd;
  * ingested from the generic service page, and the data page shows the deployment's ten profiles,
  * their QC and that they were sent — what the service's own state says.
  */
+@ResourceLock(Shared.BROWSER)
 class WebDacBrowserTest {
     static final Path SHARED = WebConsoleBrowserTest.root().resolve("../shared/data/slocum-binary").normalize();
     static final String SEG = "rosie_713-2019-166-0-157";

@@ -17,6 +17,8 @@ import org.openqa.selenium.chrome.ChromeDriver;
 import org.openqa.selenium.interactions.Actions;
 import org.openqa.selenium.support.ui.Select;
 import org.openqa.selenium.support.ui.WebDriverWait;
+import org.ripv.it.Shared;
+import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * The data page and the generic service page as launched (issue 21 items 5 and 7): the server, the
@@ -27,6 +29,7 @@ import org.openqa.selenium.support.ui.WebDriverWait;
  * only the views gets no SQL box, and the server refuses their SQL when the page is bypassed. With
  * {@code --map-tiles} the fleet's map is Leaflet (from the WebJar) asking the given tile host.
  */
+@ResourceLock(Shared.BROWSER)
 class WebDataBrowserTest {
     static final String DB = "<DatabaseServer>::<localhost>TTY1";
     static final String TRACKED = "unit_363";

@@ -27,6 +27,8 @@ import org.openqa.selenium.WebDriver;
 import org.openqa.selenium.WebElement;
 import org.openqa.selenium.chrome.ChromeDriver;
 import org.openqa.selenium.support.ui.WebDriverWait;
+import org.ripv.it.Shared;
+import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * A vehicle's files, queue and receipts, and the user's notifications in the web console (issue 21
@@ -38,6 +40,7 @@ import org.openqa.selenium.support.ui.WebDriverWait;
  * webhook that a real HTTP receiver on this host gets. Screenshots of each page, desktop and phone,
  * go to {@code target/web-screenshots/}.
  */
+@ResourceLock(Shared.BROWSER)
 class WebFilesBrowserTest {
     static final String PASSWORD = WebConsoleBrowserTest.PASSWORD;
     static final Duration T = Duration.ofSeconds(120);

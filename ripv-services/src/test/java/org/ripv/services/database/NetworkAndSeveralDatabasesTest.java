@@ -13,6 +13,7 @@ import org.ripv.messages.MailboxStatus;
 import org.ripv.messages.OutgoingServiceMessage;
 import org.ripv.messages.Status;
 import org.ripv.messages.TableResult;
+import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * One DatabaseServer with three databases, so three MailBoxes: a Derby network server database
@@ -20,6 +21,7 @@ import org.ripv.messages.TableResult;
  * that is down (TTY3). Each MailBox answers from its own database; the one that is down says so
  * and does not disturb the others.
  */
+@ResourceLock("derby.network") // one Derby network server at a time in this JVM
 class NetworkAndSeveralDatabasesTest {
     private static DerbyNetwork network;
     private static DatabaseServer service;

@@ -14,11 +14,13 @@ import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.api.parallel.ResourceLock;
 
 /**
  * The scripts of {@code sql/} load into Derby embedded (on disk and in memory) and over the
  * Derby network server, and their constraints hold. PostgreSQL is in {@link PostgresTest}.
  */
+@ResourceLock("derby.network") // one Derby network server at a time in this JVM
 class SchemaTest {
     private static DerbyNetwork network;
 

@@ -10,8 +10,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
 import picocli.CommandLine;
+import org.junit.jupiter.api.parallel.Isolated;
 
 /** The launcher's options turn into link settings; bad values are refused with the value quoted. */
+@Isolated // replaces System.err for a while: another class's output would land in it
 class SerialPortServerCommandTest {
 
     private static SerialPortServerCommand parse(String... args) {
