@@ -2,10 +2,13 @@ package org.ripv.files;
 
 import java.io.IOException;
 import java.io.OutputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.Files;
 import java.nio.file.OpenOption;
 import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
 import java.nio.file.attribute.FileAttribute;
 import java.nio.file.attribute.PosixFilePermission;
@@ -106,6 +109,23 @@ public final class PrivateFiles {
     public static void write(Path file, byte[] data, OpenOption... options) throws IOException {
         try (OutputStream out = newOutputStream(file, options)) {
             out.write(data);
+        }
+    }
+
+    /**
+     * Replaces {@code file}'s text at once: written owner-only into a hidden {@code .NAME.tmp}
+     * beside it, then moved over it (atomically where the file system can), so that a reader
+     * sees the old text or the new, never half of it.
+     */
+    public static void replace(Path file, String text) throws IOException {
+        Path tmp = file.resolveSibling("." + file.getFileName() + ".tmp");
+        Files.deleteIfExists(tmp);
+        createFile(tmp);
+        Files.writeString(tmp, text, StandardCharsets.UTF_8);
+        try {
+            Files.move(tmp, file, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
+        } catch (AtomicMoveNotSupportedException e) {
+            Files.move(tmp, file, StandardCopyOption.REPLACE_EXISTING);
         }
     }
 

@@ -1,10 +1,7 @@
 package org.ripv.rmi;
 
-import java.io.IOException;
 import java.io.ObjectInputFilter;
 import java.net.InetAddress;
-import java.net.InetSocketAddress;
-import java.net.ServerSocket;
 import java.net.UnknownHostException;
 import java.rmi.NoSuchObjectException;
 import java.rmi.RemoteException;
@@ -86,7 +83,7 @@ public final class RmiSupport {
         } catch (UnknownHostException e) {
             throw new ExportException("cannot listen on '" + bind + "' (" + BIND_PROPERTY + "): unknown address", e);
         }
-        return export(object, port, new BoundSockets(address));
+        return export(object, port, new BoundServerSocketFactory(address));
     }
 
     /** As {@link #export(GenericRMIInterface, int)}, listening through {@code sockets} (null: RMI's default). */
@@ -102,17 +99,6 @@ public final class RmiSupport {
      */
     public static Registry registry(String host, int port) throws RemoteException {
         return LocateRegistry.getRegistry(host, port, DeadlineSocketFactory.fromSystem());
-    }
-
-    /** Server sockets on one address; equal factories share a port. */
-    private record BoundSockets(InetAddress address) implements RMIServerSocketFactory {
-        @Override
-        public ServerSocket createServerSocket(int port) throws IOException {
-            ServerSocket s = new ServerSocket();
-            s.setReuseAddress(true);
-            s.bind(new InetSocketAddress(address, port), 128);
-            return s;
-        }
     }
 
     public static void unexport(GenericRMIInterface object) {

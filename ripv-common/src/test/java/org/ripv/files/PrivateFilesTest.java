@@ -36,4 +36,18 @@ class PrivateFilesTest {
                 .hasMessageContaining("a folder of its own");
         assertThat(((Integer) Files.getAttribute(shared, "unix:mode")) & 07777).isEqualTo(01777);
     }
+
+    @Test
+    void replaceSwapsTheWholeTextInOwnerOnlyAndLeavesNoTemporaryFile() throws IOException {
+        assumeTrue(Files.getFileStore(dir).supportsFileAttributeView("posix"), "a POSIX file system");
+        Path f = dir.resolve("queue.json");
+        Files.writeString(f, "old text that is longer than the new");
+        Files.setPosixFilePermissions(f, PosixFilePermissions.fromString("rw-r--r--"));
+        PrivateFiles.replace(f, "new");
+        assertThat(Files.readString(f)).isEqualTo("new");
+        assertThat(PosixFilePermissions.toString(Files.getPosixFilePermissions(f))).isEqualTo("rw-------");
+        try (var left = Files.list(dir)) {
+            assertThat(left).containsExactly(f);
+        }
+    }
 }

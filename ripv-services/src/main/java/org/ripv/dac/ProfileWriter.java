@@ -111,39 +111,42 @@ public final class ProfileWriter {
      * upload would pick up. Returns the file and its report (null without a checker).
      */
     public Path write(Profile p, Path dir, ProfileChecker checker, ProfileChecker.Report[] report) throws IOException {
-        Path target = dir.resolve(fileName(p));
-        Path tmp = dir.resolve(target.getFileName() + ".tmp");
-        Files.deleteIfExists(tmp);
-        boolean done = false;
-        try {
-            writeTo(p, tmp);
+        return writeThenName(p, dir, (tmp, target) -> {
             ProfileChecker.Report r = checker.check(tmp);
             report[0] = new ProfileChecker.Report(target, r.failures(), r.warnings());
             Path to = r.passed() ? target : dir.resolve(target.getFileName() + ".failed");
             Files.move(tmp, to, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
-            done = true;
             return to;
-        } finally {
-            if (!done) {
-                Files.deleteIfExists(tmp);
-            }
-        }
+        });
     }
 
     private Path writeUnchecked(Profile p, Path dir) throws IOException {
-        Path target = dir.resolve(fileName(p));
-        Path tmp = dir.resolve(target.getFileName() + ".tmp");
-        Files.deleteIfExists(tmp);
-        boolean done = false;
-        try {
-            writeTo(p, tmp);
+        return writeThenName(p, dir, (tmp, target) -> {
             try {
                 Files.move(tmp, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
             } catch (AtomicMoveNotSupportedException e) {
                 Files.move(tmp, target, StandardCopyOption.REPLACE_EXISTING);
             }
-            done = true;
             return target;
+        });
+    }
+
+    /** Gives a written temporary file its name (or another); returns where it went. */
+    private interface Naming {
+        Path name(Path tmp, Path target) throws IOException;
+    }
+
+    /** Writes into NAME.tmp, then lets {@code naming} move it; a failure leaves no .tmp behind. */
+    private Path writeThenName(Profile p, Path dir, Naming naming) throws IOException {
+        Path target = dir.resolve(fileName(p));
+        Path tmp = dir.resolve(target.getFileName() + ".tmp");
+        Files.deleteIfExists(tmp);
+        boolean done = false;
+        try {
+            writeTo(p, tmp);
+            Path to = naming.name(tmp, target);
+            done = true;
+            return to;
         } finally {
             if (!done) {
                 Files.deleteIfExists(tmp);

@@ -17,10 +17,12 @@ import javax.net.SocketFactory;
 import org.ripv.client.handlers.ClientSocketHandler;
 import org.ripv.client.handlers.Failover;
 import org.ripv.client.handlers.RipvErrorException;
+import org.ripv.client.handlers.ServerTrustOptions;
 import org.ripv.client.handlers.Tls;
 import org.ripv.client.cli.shell.Shell;
 import org.ripv.failover.ServerList;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /**
@@ -53,11 +55,8 @@ public final class CliCommand implements Callable<Integer> {
     List<String> exec;
     @Option(names = "--tls", hidden = true, description = "Connect over TLS (the default; kept for old scripts).")
     boolean tls;
-    @Option(names = "--plain", description = "Connect over plain TCP, to a server started with --plain (a test lab).")
-    boolean plain;
-    @Option(names = "--known-hosts", paramLabel = "FILE",
-            description = "Where server certificates are remembered on first use (default $RIPV_KNOWN_HOSTS or ~/.ripv/known_hosts).")
-    Path knownHosts;
+    @Mixin
+    ServerTrustOptions trust;
     @Option(names = "--truststore", description = "Check the server's certificate against this key store (a CA-signed or"
             + " exported certificate) instead of trusting it on first use.")
     Path truststore;
@@ -110,7 +109,7 @@ public final class CliCommand implements Callable<Integer> {
             err.println("Error: no password: give --password-file, set RIPV_PASSWORD, or run on a terminal to be asked");
             return 2;
         }
-        if (plain && (truststore != null || tls)) {
+        if (trust.plain() && (truststore != null || tls)) {
             err.println("Error: --plain excludes --tls and --truststore");
             return 2;
         }
@@ -192,8 +191,8 @@ public final class CliCommand implements Callable<Integer> {
     /** Connects to the first server of the list that answers; a standby is trusted only as Tls#trustOnFirstUse says for lists. */
     private ClientSocketHandler connect(ServerList servers, SocketFactory trusted) throws IOException {
         return new Failover(servers, err::println).connect((h, p) -> ClientSocketHandler.connect(h, p,
-                plain ? SocketFactory.getDefault() : trusted != null ? trusted
-                        : Tls.trustOnFirstUse(h, p, knownHosts != null ? knownHosts : Tls.defaultKnownHosts(), err::println, servers),
+                trust.plain() ? SocketFactory.getDefault() : trusted != null ? trusted
+                        : Tls.trustOnFirstUse(h, p, trust.knownHosts() != null ? trust.knownHosts() : Tls.defaultKnownHosts(), err::println, servers),
                 servers.size() > 1 ? Failover.CONNECT : Duration.ofSeconds(10)));
     }
 

@@ -3,12 +3,9 @@ package org.ripv.client.cli;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.time.Duration;
-import java.time.Instant;
 import java.util.ArrayList;
 import java.util.HashSet;
-import java.util.LinkedHashMap;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.CountDownLatch;
@@ -18,6 +15,7 @@ import org.ripv.client.handlers.ClientSocketHandler;
 import org.ripv.json.Json;
 import org.ripv.messages.ConsoleBatch;
 import org.ripv.messages.ConsoleEntry;
+import org.ripv.messages.ConsoleFields;
 import org.ripv.messages.ConsoleLines;
 import org.ripv.messages.Ids;
 import org.ripv.messages.OutgoingServerMessage;
@@ -220,22 +218,7 @@ public final class ConsoleFollower implements ClientSocketHandler.Listener {
     }
 
     static Map<String, Object> toMap(ConsoleEntry e) {
-        Map<String, Object> m = new LinkedHashMap<>();
-        m.put("time", Instant.ofEpochMilli(e.time()).toString());
-        m.put("mailbox", e.mailbox());
-        m.put("kind", e.kind().name().toLowerCase(Locale.ROOT));
-        if (!e.user().isEmpty()) {
-            m.put("user", e.user());
-        }
-        m.put("text", e.text());
-        if (e.event() != null) {
-            m.put("event", e.event().name());
-        }
-        if (e.lat() != null && e.lon() != null && Double.isFinite(e.lat()) && Double.isFinite(e.lon())) {
-            m.put("lat", e.lat());
-            m.put("lon", e.lon());
-        }
-        return m;
+        return ConsoleFields.of(e, e.text());
     }
 
     static String toText(ConsoleEntry e) {

@@ -15,6 +15,7 @@ import java.util.prefs.Preferences;
 import javax.swing.SwingUtilities;
 import org.ripv.client.cli.PasswordFile;
 import org.ripv.client.handlers.ClientSocketHandler;
+import org.ripv.client.handlers.ServerTrustOptions;
 import org.ripv.client.handlers.Tls;
 import org.ripv.client.managers.ClientModel;
 import org.ripv.client.managers.GuiManager;
@@ -22,6 +23,7 @@ import org.ripv.client.panels.HostPort;
 import org.ripv.client.panels.LoginDialog;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
@@ -56,12 +58,8 @@ public final class ClientCommand implements Callable<Integer> {
             description = "The password, logging in at once (for the demo; it shows in the process list).")
     String password;
 
-    @Option(names = "--plain", description = "Connect over plain TCP, to a server started with --plain (a test lab).")
-    boolean plain;
-
-    @Option(names = "--known-hosts", paramLabel = "FILE",
-            description = "Where server certificates are remembered on first use (default $RIPV_KNOWN_HOSTS or ~/.ripv/known_hosts).")
-    Path knownHosts;
+    @Mixin
+    ServerTrustOptions trust;
 
     private final PrintStream err;
 
@@ -104,12 +102,12 @@ public final class ClientCommand implements Callable<Integer> {
             noDisplay("DISPLAY unset or java.awt.headless=true");
             return EXIT_USAGE;
         }
-        if (knownHosts != null) {
-            System.setProperty(Tls.KNOWN_HOSTS_PROPERTY, knownHosts.toString());
+        if (trust.knownHosts() != null) {
+            System.setProperty(Tls.KNOWN_HOSTS_PROPERTY, trust.knownHosts().toString());
         }
         RIPVClient client;
         try {
-            client = open(server, user, pw, plain);
+            client = open(server, user, pw, trust.plain());
         } catch (AWTError | HeadlessException e) {
             // DISPLAY is set but no X server answers there.
             noDisplay(e.getMessage());

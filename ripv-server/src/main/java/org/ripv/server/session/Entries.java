@@ -2,11 +2,11 @@ package org.ripv.server.session;
 
 import java.time.Instant;
 import java.time.format.DateTimeParseException;
-import java.util.LinkedHashMap;
 import java.util.Locale;
 import java.util.Map;
 import org.ripv.json.Json;
 import org.ripv.messages.ConsoleEntry;
+import org.ripv.messages.ConsoleFields;
 import org.ripv.messages.ConsoleLines;
 import org.ripv.messages.VehicleEvent;
 
@@ -21,26 +21,11 @@ public final class Entries {
     private Entries() {}
 
     public static Map<String, Object> toMap(ConsoleEntry e) {
-        Map<String, Object> m = new LinkedHashMap<>();
-        m.put("time", Instant.ofEpochMilli(e.time()).toString());
-        m.put("mailbox", e.mailbox());
-        m.put("kind", e.kind().name().toLowerCase(Locale.ROOT));
-        if (!e.user().isEmpty()) {
-            m.put("user", e.user());
-        }
         String text = e.text();
         if (text.length() > MAX_TEXT) {
             text = text.substring(0, MAX_TEXT) + " [cut: " + (e.text().length() - MAX_TEXT) + " more characters]";
         }
-        m.put("text", text);
-        if (e.event() != null) {
-            m.put("event", e.event().name());
-        }
-        if (e.lat() != null && e.lon() != null && Double.isFinite(e.lat()) && Double.isFinite(e.lon())) {
-            m.put("lat", e.lat());
-            m.put("lon", e.lon());
-        }
-        return m;
+        return ConsoleFields.of(e, text);
     }
 
     public static String toJson(ConsoleEntry e) {

@@ -135,6 +135,32 @@ public final class PostgresStateStore implements StateStore {
         return s == null || s.indexOf(0) < 0 ? s : s.replace((char) 0, (char) 0xFFFD);
     }
 
+    /** Deletes a MailBox's rows but its newest: {@code sql} takes the MailBox twice, then the offset. */
+    private static void keepNewest(Connection c, String sql, String mailbox, int offset) throws SQLException {
+        try (PreparedStatement ps = c.prepareStatement(sql)) {
+            ps.setString(1, text(mailbox));
+            ps.setString(2, text(mailbox));
+            ps.setInt(3, Math.max(0, offset));
+            ps.executeUpdate();
+        }
+    }
+
+    /** A MailBox's newest {@code n} texts, oldest first: {@code sql} takes the MailBox and n, newest first. */
+    private static List<String> lastOf(Connection c, String sql, String mailbox, int n) throws SQLException {
+        List<String> out = new ArrayList<>();
+        try (PreparedStatement ps = c.prepareStatement(sql)) {
+            ps.setString(1, text(mailbox));
+            ps.setInt(2, Math.max(0, n));
+            try (ResultSet rs = ps.executeQuery()) {
+                while (rs.next()) {
+                    out.add(rs.getString(1));
+                }
+            }
+        }
+        Collections.reverse(out);
+        return out;
+    }
+
     private <T> T run(String what, PgConnections.Work<T> work) throws IOException {
         try {
             return db.transaction(work);
@@ -296,33 +322,16 @@ public final class PostgresStateStore implements StateStore {
                 ps.setString(3, text(json));
                 ps.executeUpdate();
             }
-            try (PreparedStatement ps = c.prepareStatement("DELETE FROM ripv_surfacing WHERE mailbox = ? AND seq <"
-                    + " (SELECT seq FROM ripv_surfacing WHERE mailbox = ? ORDER BY seq DESC OFFSET ? LIMIT 1)")) {
-                ps.setString(1, text(mailbox));
-                ps.setString(2, text(mailbox));
-                ps.setInt(3, Math.max(0, keep - 1));
-                ps.executeUpdate();
-            }
+            keepNewest(c, "DELETE FROM ripv_surfacing WHERE mailbox = ? AND seq <"
+                    + " (SELECT seq FROM ripv_surfacing WHERE mailbox = ? ORDER BY seq DESC OFFSET ? LIMIT 1)", mailbox, keep - 1);
             return null;
         });
     }
 
     @Override
     public List<String> lastSurfacings(String mailbox, int n) throws IOException {
-        return run("read the call records of " + mailbox, c -> {
-            List<String> out = new ArrayList<>();
-            try (PreparedStatement ps = c.prepareStatement("SELECT record FROM ripv_surfacing WHERE mailbox = ? ORDER BY seq DESC LIMIT ?")) {
-                ps.setString(1, text(mailbox));
-                ps.setInt(2, Math.max(0, n));
-                try (ResultSet rs = ps.executeQuery()) {
-                    while (rs.next()) {
-                        out.add(rs.getString(1));
-                    }
-                }
-            }
-            Collections.reverse(out);
-            return out;
-        });
+        return run("read the call records of " + mailbox,
+                c -> lastOf(c, "SELECT record FROM ripv_surfacing WHERE mailbox = ? ORDER BY seq DESC LIMIT ?", mailbox, n));
     }
 
     @Override
@@ -351,33 +360,16 @@ public final class PostgresStateStore implements StateStore {
                 ps.setString(3, text(text));
                 ps.executeUpdate();
             }
-            try (PreparedStatement ps = c.prepareStatement("DELETE FROM ripv_receipt WHERE mailbox = ? AND name IN"
-                    + " (SELECT name FROM ripv_receipt WHERE mailbox = ? ORDER BY name DESC OFFSET ?)")) {
-                ps.setString(1, text(mailbox));
-                ps.setString(2, text(mailbox));
-                ps.setInt(3, Math.max(0, keep));
-                ps.executeUpdate();
-            }
+            keepNewest(c, "DELETE FROM ripv_receipt WHERE mailbox = ? AND name IN"
+                    + " (SELECT name FROM ripv_receipt WHERE mailbox = ? ORDER BY name DESC OFFSET ?)", mailbox, keep);
             return null;
         });
     }
 
     @Override
     public List<String> lastReceipts(String mailbox, int n) throws IOException {
-        return run("read the receipts of " + mailbox, c -> {
-            List<String> out = new ArrayList<>();
-            try (PreparedStatement ps = c.prepareStatement("SELECT body FROM ripv_receipt WHERE mailbox = ? ORDER BY name DESC LIMIT ?")) {
-                ps.setString(1, text(mailbox));
-                ps.setInt(2, Math.max(0, n));
-                try (ResultSet rs = ps.executeQuery()) {
-                    while (rs.next()) {
-                        out.add(rs.getString(1));
-                    }
-                }
-            }
-            Collections.reverse(out);
-            return out;
-        });
+        return run("read the receipts of " + mailbox,
+                c -> lastOf(c, "SELECT body FROM ripv_receipt WHERE mailbox = ? ORDER BY name DESC LIMIT ?", mailbox, n));
     }
 
     // ---- audit trail ----

@@ -1,4 +1,5 @@
 import { vehicleName } from './names.js';
+import { prepareCanvas } from './canvas.js';
 // An offline map: latitude/longitude grid lines, each vehicle's whole track in time order with GPS fixes (filled dots)
 // told from dead-reckoned ones (open rings), its latest fix and name, a legend and a scale bar. No tiles, no internet.
 // Drawn at the canvas's size on screen in CSS pixels (sharp, and the labels as large on a phone as on a desk).
@@ -19,17 +20,7 @@ export function colour(i) {
 }
 
 export function drawMap(canvas, vehicles, layers = [], focus = '') {
-  const css = getComputedStyle(document.documentElement);
-  const ink = (name, fallback) => css.getPropertyValue(name).trim() || fallback;
-  const box = canvas.getBoundingClientRect();
-  const w = Math.max(200, Math.round(box.width) || 800), h = Math.max(150, Math.round(box.height) || 600);
-  const dpr = window.devicePixelRatio || 1;
-  canvas.width = Math.round(w * dpr);
-  canvas.height = Math.round(h * dpr);
-  const g = canvas.getContext('2d');
-  g.setTransform(dpr, 0, 0, dpr, 0, 0);
-  g.fillStyle = ink('--card', '#fff');
-  g.fillRect(0, 0, w, h);
+  const { g, w, h, ink } = prepareCanvas(canvas, 200, 150, 800, 600);
   const tracks = vehicles.map((v) => ({ name: v.name, fixes: v.track.map(fix) }));
   const points = tracks.flatMap((v) => v.fixes);
   const inView = (v) => [...v.track.map(fix), ...(v.also || [])];

@@ -1,23 +1,14 @@
 // A small trend chart on a canvas: one series across calls (time along, value up), its last value in the title, the
 // range on the axes, every call a dot. Drawn at the canvas's size on screen in CSS pixels, as the map is.
 import { clock, day } from './time.js';
+import { prepareCanvas } from './canvas.js';
 
 /**
  * Draws `values` (numbers or null, one per time in `times`, epoch ms) into canvas. Sets data-points to the number of
  * values drawn; a series with none says so instead of drawing a line.
  */
 export function drawTrend(canvas, times, values, title, unit, c = '#0b5cad') {
-  const css = getComputedStyle(document.documentElement);
-  const ink = (name, fallback) => css.getPropertyValue(name).trim() || fallback;
-  const box = canvas.getBoundingClientRect();
-  const w = Math.max(160, Math.round(box.width) || 320), h = Math.max(100, Math.round(box.height) || 160);
-  const dpr = window.devicePixelRatio || 1;
-  canvas.width = Math.round(w * dpr);
-  canvas.height = Math.round(h * dpr);
-  const g = canvas.getContext('2d');
-  g.setTransform(dpr, 0, 0, dpr, 0, 0);
-  g.fillStyle = ink('--card', '#fff');
-  g.fillRect(0, 0, w, h);
+  const { g, w, h, ink } = prepareCanvas(canvas, 160, 100, 320, 160);
   const pts = times.map((t, i) => [t, values[i]]).filter(([t, v]) => t != null && v != null && Number.isFinite(v));
   g.font = '600 13px system-ui, sans-serif';
   g.fillStyle = ink('--fg', '#222');

@@ -1,15 +1,15 @@
-package org.ripv.server.services;
+package org.ripv.rmi;
 
 import java.io.IOException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.rmi.server.RMIServerSocketFactory;
-import java.util.Objects;
 
 /**
- * Server sockets for the RMI registry and the server's RMI object, bound to {@code --bind} when
- * given. Equal factories let both share one port (RMI compares them with equals).
+ * RMI server sockets on one address: the server's registry and RMI object (its {@code --bind}),
+ * and a service's exported object (its {@code --bind}). Equal factories share one port (RMI
+ * compares them with equals).
  */
 public record BoundServerSocketFactory(InetAddress address) implements RMIServerSocketFactory {
     @Override
@@ -18,15 +18,5 @@ public record BoundServerSocketFactory(InetAddress address) implements RMIServer
         s.setReuseAddress(true);
         s.bind(new InetSocketAddress(address, port), 128);
         return s;
-    }
-
-    @Override
-    public boolean equals(Object o) {
-        return o instanceof BoundServerSocketFactory other && Objects.equals(address, other.address);
-    }
-
-    @Override
-    public int hashCode() {
-        return Objects.hashCode(address);
     }
 }
