@@ -82,7 +82,8 @@ class WorkflowViewsTest {
         assertThat(m.running().get(1).text(0)).isEqualTo("ymodem:get *.SBD · 01230000.SBD  10 KB / 20 KB  1 KB/s  0:10 left");
         manager.requestEnded(SERIAL, 42, null);
         ui.run(() -> manager.showProgress(SERIAL, new Progress("ymodem:get mission.log", 40 * 1024, 100 * 1024, 512)));
-        assertThat(m.serviceStatus()).isEqualTo("busy: ymodem:get mission.log (40%, ETA 2:00)");
+        ui.sync(); // showProgress queues the model change behind itself on the UI thread
+        assertThat(ui.get(m::serviceStatus)).isEqualTo("busy: ymodem:get mission.log (40%, ETA 2:00)");
         boolean cancelling = ui.get(() -> {
             manager.cancel(SERIAL, 41);
             return m.running().get(0).cancelling(); // the refusal comes back later, on this thread
