@@ -24,7 +24,7 @@ final class ShortMode {
     private static final Map<String, List<String>> SHRUNK = Map.ofEntries(
             Map.entry("broker", List.of("--seconds", "0.5", "--warmup", "0.5", "--clients", "1,4")),
             Map.entry("connections", List.of("--clients", "20")),
-            Map.entry("database", List.of("--rows", "2000", "--runs", "2", "--warmup", "1")),
+            Map.entry("database", List.of("--rows", "20000", "--runs", "3", "--warmup", "1")), // the floor must span several 10-ms CPU ticks
             Map.entry("ymodem", List.of("115200:8192")),
             Map.entry("zmodem", List.of("--bytes", "8192", "--skip-iridium")),
             Map.entry("console", List.of("--watchers", "20", "--rate", "20", "--seconds", "2", "--baseline-seconds", "2",
