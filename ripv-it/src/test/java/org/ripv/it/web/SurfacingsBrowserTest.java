@@ -8,6 +8,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
+import java.util.function.Supplier;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.AfterAll;
@@ -18,6 +19,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestMethodOrder;
 import org.junit.jupiter.api.io.TempDir;
 import org.openqa.selenium.By;
+import org.openqa.selenium.StaleElementReferenceException;
 import org.openqa.selenium.WebDriver;
 import org.openqa.selenium.chrome.ChromeDriver;
 import org.openqa.selenium.support.ui.WebDriverWait;
@@ -72,11 +74,27 @@ class SurfacingsBrowserTest {
     }
 
     static String text(WebDriver b, String css) {
-        return b.findElement(By.cssSelector(css)).getText();
+        return fresh(() -> b.findElement(By.cssSelector(css)).getText());
     }
 
     static String attr(WebDriver b, String css, String name) {
-        return String.valueOf(b.findElement(By.cssSelector(css)).getAttribute(name));
+        return fresh(() -> String.valueOf(b.findElement(By.cssSelector(css)).getAttribute(name)));
+    }
+
+    /**
+     * Reads an element again when the page redrew it between finding and reading: the fleet table
+     * is rebuilt on every pushed event, so a found row may be gone a moment later.
+     */
+    static <T> T fresh(Supplier<T> read) {
+        for (int i = 0; ; i++) {
+            try {
+                return read.get();
+            } catch (StaleElementReferenceException redrawn) {
+                if (i == 50) {
+                    throw redrawn;
+                }
+            }
+        }
     }
 
     /** {@code ?surfacings MAILBOX --json --outlook} through the page's own Post Office (one socket per page). */
@@ -190,7 +208,7 @@ class SurfacingsBrowserTest {
             PilotConsoleBrowserTest.viewport(b, 390, 844);
             Thread.sleep(300);
             PilotConsoleBrowserTest.noSidewaysScrolling(b);
-            assertThat(b.findElement(By.cssSelector(row + " .badge.abort")).isDisplayed()).isTrue();
+            assertThat(fresh(() -> b.findElement(By.cssSelector(row + " .badge.abort")).isDisplayed())).isTrue();
             assertThat(attr(b, "#map", "data-waypoints")).isEqualTo("1");
             LaunchedWeb.shot(b, "fleet-surfacing-phone");
         } finally {
