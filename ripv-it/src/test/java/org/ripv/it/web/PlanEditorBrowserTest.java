@@ -106,6 +106,12 @@ class PlanEditorBrowserTest {
         assertThat(m.find()).as("waypoint " + n + " on the map: " + dots).isTrue();
         int x = Integer.parseInt(m.group(1));
         int y = Integer.parseInt(m.group(2));
+        // The whole path of the pointer must lie inside the viewport, or WebDriver refuses the move
+        // (MoveTargetOutOfBounds): scroll so the dot sits in the middle of the window first. A map
+        // merely scrolled into view can still leave the dot below the fold on a phone, or the page
+        // can grow above it while a live update lands.
+        b.executeScript("const r = arguments[0].getBoundingClientRect();"
+                + " window.scrollBy(r.left + arguments[1] - innerWidth / 2, r.top + arguments[2] - innerHeight / 2)", map, x, y);
         org.openqa.selenium.Rectangle r = map.getRect();
         int cx = x - r.getWidth() / 2;
         int cy = y - r.getHeight() / 2;
