@@ -3,6 +3,8 @@ package org.ripv.bench;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.dataformat.yaml.YAMLFactory;
 import java.io.InputStream;
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -25,10 +27,13 @@ import ucar.nc2.Variable;
  * {@code ./ripv bench dac} (issue 37; a measurement, not a timed test): DAC profile files per
  * second from decoded data — a segment of {@code --yos} dives and climbs, 1 sample / 10 s, split,
  * derived (GSW), QC'd (four tests on temperature, gross range on four more variables), written
- * from the template and renamed into place — against writing the same nine arrays per profile
- * with NetCDF-Java alone (no attributes, no QC), the floor, in the same run. Wall and process CPU
- * per profile, the ratio (target ≤ 1.5×), the load average. Options: {@code --yos N} (default
- * 200), {@code --runs N} (default 5).
+ * from the template as NAME.tmp and renamed into place — against NetCDF-Java alone writing the
+ * same files again, the floor, in the same run: the path's first files read back, every dimension,
+ * variable (QC flags included), attribute and value, written anew and checked equal to the path's
+ * byte for byte. Both write new files into an empty folder per run, as a deployment does, after
+ * a warm-up that lasts until the JIT has next to nothing left to compile. Wall and process CPU per
+ * profile, the writing thread's own CPU, bytes allocated, the ratios (target ≤ 1.5×), the load
+ * average. Options: {@code --yos N} (default 200), {@code --runs N} (default 5).
  */
 public final class DacBench {
     private DacBench() {}
@@ -86,33 +91,91 @@ public final class DacBench {
             System.out.printf(Locale.ROOT, "dac: %d yos, %d profiles of about %d samples per run, %d runs%s%n", yos, decoded.size(),
                     decoded.get(0).size(), runs, shortRun ? " (--short: the figures below are not measurements)" : "");
             // warm-up: both paths once; the floor's files are the path's, read back
-            path(seg, writer, dir);
+            Path first = Files.createDirectory(dir.resolve("first"));
+            path(seg, writer, first);
             List<FileContent> contents = new ArrayList<>();
-            try (var files = Files.list(dir)) {
+            try (var files = Files.list(first)) {
                 for (Path f : files.sorted().toList()) {
                     contents.add(FileContent.read(f));
                 }
             }
-            for (int w = 0; w < (shortRun ? 1 : 5); w++) { // the JIT's warm-up, for both
-                path(seg, writer, dir);
-                floor(contents, dir);
+            // The comparison is honest only if the floor writes what the path writes: the same
+            // files, byte for byte (the same variables, attributes, dimensions and values).
+            Path firstFloor = Files.createDirectory(dir.resolve("first-floor"));
+            floor(contents, firstFloor);
+            List<Path> pathFiles, floorFiles;
+            try (var a1 = Files.list(first); var b1 = Files.list(firstFloor)) {
+                pathFiles = a1.sorted().toList();
+                floorFiles = b1.sorted(java.util.Comparator.comparingInt(DacBench::floorIndex)).toList();
             }
-            // Per run, the path then the floor; CPU summed over all runs (the process clock ticks in
-            // 10 ms, too coarse for one run), wall as the median of the runs' ratios.
-            long cpuPath = 0, cpuFloor = 0, nPath = 0, nFloor = 0;
+            long bytes = 0;
+            for (int i = 0; i < pathFiles.size(); i++) {
+                if (Files.mismatch(pathFiles.get(i), floorFiles.get(i)) != -1) {
+                    System.err.println("Error: the floor's " + floorFiles.get(i).getFileName() + " differs from the path's "
+                            + pathFiles.get(i).getFileName() + ": the comparison would not be of the same work");
+                    return 1;
+                }
+                bytes += Files.size(pathFiles.get(i));
+            }
+            System.out.printf(Locale.ROOT, "the floor's %d files are the path's byte for byte (%d bytes a file on average)%n",
+                    pathFiles.size(), bytes / Math.max(1, pathFiles.size()));
+            deleteTree(first);
+            deleteTree(firstFloor);
+            // The JIT's warm-up, for both: rounds of the path and the floor until a round leaves the
+            // compilers next to nothing new to compile (code run once per profile reaches C2 only
+            // after thousands of profiles; compiled during the timed runs, it was counted against
+            // the path, whose code is the larger). At least 5 rounds, at most 60; --short: one.
+            var jit = ManagementFactory.getCompilationMXBean();
+            int warm = 0;
+            long compiledBefore = jit.getTotalCompilationTime();
+            while (warm < (shortRun ? 1 : 60)) {
+                Path wp = Files.createDirectory(dir.resolve("warm-path"));
+                path(seg, writer, wp);
+                deleteTree(wp);
+                Path wf = Files.createDirectory(dir.resolve("warm-floor"));
+                floor(contents, wf);
+                deleteTree(wf);
+                warm++;
+                long compiled = jit.getTotalCompilationTime();
+                if (shortRun || (warm >= 5 && compiled - compiledBefore <= 5)) {
+                    break;
+                }
+                compiledBefore = compiled;
+            }
+            System.out.printf(Locale.ROOT, "warm-up: %d round%s of both%s%n", warm, warm == 1 ? "" : "s",
+                    shortRun ? " (--short: one)" : " (until a round left the JIT under 5 ms of compiling)");
+            // Per run, the path then the floor, each into an empty folder of its own: files are new,
+            // as a deployment's profiles are. (Writing over the last run's files measured the file
+            // system instead: the floor rewrote blocks in place while the path's rename replaced an
+            // existing file, which ext4 makes flush the new file's blocks first, auto_da_alloc.)
+            // CPU summed over all runs (the process clock ticks in 10 ms, too coarse for one run),
+            // wall as the median of the runs' ratios.
+            long cpuPath = 0, cpuFloor = 0, threadPath = 0, threadFloor = 0, nPath = 0, nFloor = 0;
+            double bytesPath = 0, bytesFloor = 0;
             double[] ratios = new double[runs];
             double bestPath = 0, bestFloor = 0;
+            ThreadMXBean mx = ManagementFactory.getThreadMXBean();
             for (int r = 0; r < runs; r++) {
+                Path pd = Files.createDirectory(dir.resolve("path-" + r));
+                Path fd = Files.createDirectory(dir.resolve("floor-" + r));
+                long t0 = mx.getCurrentThreadCpuTime();
                 CpuClock c = CpuClock.start();
-                int profiles = path(seg, writer, dir);
+                int profiles = path(seg, writer, pd);
                 double wall = c.wallNanos() / 1e9 / profiles;
                 cpuPath += c.cpuNanos();
+                threadPath += mx.getCurrentThreadCpuTime() - t0;
+                bytesPath += c.bytesAllocatedPer(1);
                 nPath += profiles;
+                long t1 = mx.getCurrentThreadCpuTime();
                 CpuClock f = CpuClock.start();
-                int n = floor(contents, dir);
+                int n = floor(contents, fd);
                 double fwall = f.wallNanos() / 1e9 / n;
                 cpuFloor += f.cpuNanos();
+                threadFloor += mx.getCurrentThreadCpuTime() - t1;
+                bytesFloor += f.bytesAllocatedPer(1);
                 nFloor += n;
+                deleteTree(pd);
+                deleteTree(fd);
                 ratios[r] = wall / fwall;
                 bestPath = Math.max(bestPath, 1 / wall);
                 bestFloor = Math.max(bestFloor, 1 / fwall);
@@ -130,19 +193,33 @@ public final class DacBench {
             }
             double cpuRatio = (cpuPath / (double) nPath) / (cpuFloor / (double) nFloor);
             System.out.printf(Locale.ROOT, "DAC files (split, GSW, QC, template, write and rename) against NetCDF-Java writing the same"
-                    + " files alone: best %.0f against %.0f profiles/s; wall median %.2f×, CPU %.2f× (target <= 1.5×)%n",
-                    bestPath, bestFloor, median, cpuRatio);
+                    + " files alone: best %.0f against %.0f profiles/s; wall median %.2f×, CPU %.2f× (target <= 1.5×), load average %s%n",
+                    bestPath, bestFloor, median, cpuRatio, CpuClock.loadAverage());
+            System.out.printf(Locale.ROOT, "the writing thread's own CPU: %.1f us against %.1f us a profile (%.2f×); the rest of the"
+                    + " process CPU (the collector, the JIT): %.1f us against %.1f us; allocated %.0f KiB against %.0f KiB a profile%n",
+                    threadPath / 1e3 / nPath, threadFloor / 1e3 / nFloor, (threadPath / (double) nPath) / (threadFloor / (double) nFloor),
+                    (cpuPath - threadPath) / 1e3 / nPath, (cpuFloor - threadFloor) / 1e3 / nFloor, bytesPath / 1024 / nPath, bytesFloor / 1024 / nFloor);
             System.out.println(CpuClock.ratioLine("DAC profile file", cpuPath / 1e3 / nPath, cpuFloor / 1e3 / nFloor, median));
             System.out.println(CpuClock.machineLine());
         } finally {
-            try (var s = Files.list(dir)) {
-                for (Path p : s.toList()) {
-                    Files.deleteIfExists(p);
-                }
-            }
-            Files.deleteIfExists(dir);
+            deleteTree(dir);
         }
         return 0;
+    }
+
+    /** The floor's file profile-N.nc: N. */
+    private static int floorIndex(Path f) {
+        String n = f.getFileName().toString();
+        return Integer.parseInt(n.substring("profile-".length(), n.length() - ".nc".length()));
+    }
+
+    /** Deletes a folder of files (and folders of files) this benchmark wrote. */
+    private static void deleteTree(Path dir) throws java.io.IOException {
+        try (var s = Files.walk(dir)) {
+            for (Path p : s.sorted(java.util.Comparator.reverseOrder()).toList()) {
+                Files.deleteIfExists(p);
+            }
+        }
     }
 
     /** The product's path from decoded data: split, derive, QC, write each profile's file. */
@@ -171,7 +248,7 @@ public final class DacBench {
     static int floor(List<FileContent> files, Path dir) throws Exception {
         int i = 0;
         for (FileContent c : files) {
-            Path f = dir.resolve("floor-" + (i++) + ".nc");
+            Path f = dir.resolve("profile-" + (i++) + ".nc");
             NetcdfFileWriter w = NetcdfFileWriter.createNew(NetcdfFileWriter.Version.netcdf3, f.toString());
             try {
                 for (Dimension d : c.dims()) {
