@@ -46,6 +46,14 @@ public final class ProfileWriter {
     private final CdlTemplate template = CdlTemplate.v2();
     /** Every variable's attributes as written, made once: they depend on the template, metadata and QC only. */
     private final Map<String, List<Attribute>> attributes = new LinkedHashMap<>();
+    /** Each template variable's dimensions as NetCDF-Java takes them ("time", "" for a scalar), in the template's order. */
+    private final List<String> dimensions = new ArrayList<>();
+    /**
+     * The global attributes in the order written, made once; null stands for the file's date
+     * ({@code date_created}, {@code date_modified}), whose names are in {@link #globalNames}.
+     */
+    private final List<Attribute> fixedGlobals = new ArrayList<>();
+    private final List<String> globalNames = new ArrayList<>();
 
     public ProfileWriter(Metadata meta, QcConfig qc) {
         this.meta = meta;
@@ -65,7 +73,24 @@ public final class ProfileWriter {
                 list.add(attribute(a.getKey(), v));
             }
             attributes.put(tv.name(), List.copyOf(list));
+            dimensions.add(String.join(" ", tv.dims()));
         }
+        for (Map.Entry<String, Object> g : template.globals().entrySet()) {
+            String k = g.getKey();
+            boolean dated = k.equals("date_created") || k.equals("date_modified");
+            globalNames.add(k);
+            fixedGlobals.add(dated ? null : attribute(k, meta.global().containsKey(k) ? meta.global().get(k) : g.getValue()));
+        }
+        for (Map.Entry<String, String> e : meta.global().entrySet()) {
+            if (!template.globals().containsKey(e.getKey())) {
+                globalNames.add(e.getKey());
+                fixedGlobals.add(new Attribute(e.getKey(), e.getValue()));
+            }
+        }
+        globalNames.add("cdm_data_type");
+        fixedGlobals.add(new Attribute("cdm_data_type", "Trajectory"));
+        globalNames.add("featureType");
+        fixedGlobals.add(new Attribute("featureType", "trajectory"));
         for (Map.Entry<String, List<QcConfig.Test>> e : qc.tests().entrySet()) {
             for (QcConfig.Test t : e.getValue()) {
                 attributes.put("qartod_" + e.getKey() + "_" + t.shortName() + "_flag", flagAttributes(e.getKey(), t.shortName(), t.json()));
@@ -174,16 +199,22 @@ public final class ProfileWriter {
             Dimension time = w.addUnlimitedDimension("time");
             w.addDimension(null, "traj_strlen", 20);
             Map<String, Variable> vars = new LinkedHashMap<>();
-            for (CdlTemplate.Var tv : template.variables()) {
-                Variable v = w.addVariable(null, tv.name(), type(tv.type()), String.join(" ", tv.dims()));
-                attributes.get(tv.name()).forEach(a -> w.addVariableAttribute(v, a));
+            List<CdlTemplate.Var> tvs = template.variables();
+            for (int i = 0; i < tvs.size(); i++) {
+                CdlTemplate.Var tv = tvs.get(i);
+                Variable v = w.addVariable(null, tv.name(), type(tv.type()), dimensions.get(i));
+                for (Attribute a : attributes.get(tv.name())) {
+                    w.addVariableAttribute(v, a);
+                }
                 vars.put(tv.name(), v);
             }
             for (Map.Entry<String, Map<String, byte[]>> e : flags.entrySet()) {
                 for (String test : e.getValue().keySet()) {
                     String name = "qartod_" + e.getKey() + "_" + test + "_flag";
                     Variable v = w.addVariable(null, name, DataType.BYTE, time.getShortName());
-                    attributes.get(name).forEach(a -> w.addVariableAttribute(v, a));
+                    for (Attribute a : attributes.get(name)) {
+                        w.addVariableAttribute(v, a);
+                    }
                     vars.put(name, v);
                 }
             }
@@ -212,21 +243,10 @@ public final class ProfileWriter {
 
     private void globals(NetcdfFileWriter w, Profile p) {
         String now = ISO.format(Instant.now());
-        for (Map.Entry<String, Object> g : template.globals().entrySet()) {
-            String k = g.getKey();
-            Object v = switch (k) {
-                case "date_created", "date_modified" -> now;
-                default -> meta.global().containsKey(k) ? meta.global().get(k) : g.getValue();
-            };
-            w.addGroupAttribute(null, attribute(k, v));
+        for (int i = 0; i < fixedGlobals.size(); i++) {
+            Attribute a = fixedGlobals.get(i);
+            w.addGroupAttribute(null, a != null ? a : new Attribute(globalNames.get(i), now));
         }
-        for (Map.Entry<String, String> e : meta.global().entrySet()) {
-            if (!template.globals().containsKey(e.getKey())) {
-                w.addGroupAttribute(null, new Attribute(e.getKey(), e.getValue()));
-            }
-        }
-        w.addGroupAttribute(null, new Attribute("cdm_data_type", "Trajectory"));
-        w.addGroupAttribute(null, new Attribute("featureType", "trajectory"));
         w.addGroupAttribute(null, new Attribute("source_file", p.segment()));
         w.addGroupAttribute(null, new Attribute("time_coverage_start", ISO.format(Instant.ofEpochSecond((long) Math.floor(p.time()[0])))));
         w.addGroupAttribute(null, new Attribute("time_coverage_end", ISO.format(Instant.ofEpochSecond((long) Math.floor(p.time()[p.size() - 1])))));
@@ -236,12 +256,20 @@ public final class ProfileWriter {
             throws IOException, InvalidRangeException {
         int n = p.size();
         int[] origin = {0};
+        byte[] qcFlags = new byte[n]; // one buffer for every _qc variable: each write copies it to the file before the next fills it
         for (String s : SERIES) {
-            w.write(vars.get(s), origin, Array.factory(filled(p.values(s))));
-            byte[] qcFlags = new byte[n];
+            double[] values = p.values(s);
+            w.write(vars.get(s), origin, Array.factory(filled(values)));
             Map<String, byte[]> f = flags.get(s);
-            for (int i = 0; i < n; i++) {
-                qcFlags[i] = f == null ? (Double.isNaN(p.values(s)[i]) ? (byte) 9 : 0) : dacFlag(f.get("primary")[i]);
+            if (f == null) {
+                for (int i = 0; i < n; i++) {
+                    qcFlags[i] = Double.isNaN(values[i]) ? (byte) 9 : 0;
+                }
+            } else {
+                byte[] primary = f.get("primary");
+                for (int i = 0; i < n; i++) {
+                    qcFlags[i] = dacFlag(primary[i]);
+                }
             }
             w.write(vars.get(s + "_qc"), origin, Array.factory(qcFlags));
         }
@@ -269,9 +297,17 @@ public final class ProfileWriter {
         return qartod == Qartod.UNKNOWN ? 0 : qartod;
     }
 
+    /** The values with the template's fill value for a missing one: the array itself when none is missing (NetCDF-Java only reads it). */
     private static double[] filled(double[] v) {
-        double[] out = new double[v.length];
-        for (int i = 0; i < v.length; i++) {
+        int i = 0;
+        while (i < v.length && Double.isFinite(v[i])) {
+            i++;
+        }
+        if (i == v.length) {
+            return v;
+        }
+        double[] out = v.clone();
+        for (; i < v.length; i++) {
             out[i] = Double.isFinite(v[i]) ? v[i] : FILL;
         }
         return out;

@@ -150,20 +150,28 @@ public final class Qartod {
      */
     public static byte[] aggregate(List<byte[]> results, int n) {
         byte[] out = new byte[n];
-        Arrays.fill(out, MISSING);
-        byte[] order = {MISSING, UNKNOWN, GOOD, SUSPECT, FAIL};
         for (int i = 0; i < n; i++) {
             int best = 0;
             for (byte[] r : results) {
-                for (int k = 0; k < order.length; k++) {
-                    if (r[i] == order[k] && k > best) {
-                        best = k;
-                    }
-                }
+                best = Math.max(best, severity(r[i]));
             }
-            out[i] = order[best];
+            out[i] = BY_SEVERITY[best];
         }
         return out;
+    }
+
+    /** Flags from the least severe to the most, as qartod_compare ranks them. */
+    private static final byte[] BY_SEVERITY = {MISSING, UNKNOWN, GOOD, SUSPECT, FAIL};
+
+    /** A flag's place in {@link #BY_SEVERITY}; 0 (as missing) for a value that is no flag. */
+    private static int severity(byte flag) {
+        return switch (flag) {
+            case UNKNOWN -> 1;
+            case GOOD -> 2;
+            case SUSPECT -> 3;
+            case FAIL -> 4;
+            default -> 0;
+        };
     }
 
     private static double wholeSeconds(double seconds) {
