@@ -13,6 +13,7 @@ import java.util.List;
 import java.util.Locale;
 import org.ripv.dac.Metadata;
 import org.ripv.dac.Profile;
+import org.ripv.dac.ProfileChecker;
 import org.ripv.dac.ProfileSplitter;
 import org.ripv.dac.ProfileWriter;
 import org.ripv.dac.Profiles;
@@ -84,6 +85,7 @@ public final class DacBench {
         }
         QcConfig qc = QcConfig.parse(new ObjectMapper(new YAMLFactory()).readTree(QC), "bench QC");
         ProfileWriter writer = new ProfileWriter(meta, qc);
+        ProfileChecker checker = new ProfileChecker();
         Segment seg = segment(yos);
         List<Profile> decoded = Profiles.of(seg, ProfileSplitter.defaults());
         Path dir = Files.createTempDirectory("ripv-bench-dac");
@@ -135,6 +137,9 @@ public final class DacBench {
                 Path wf = Files.createDirectory(dir.resolve("warm-floor"));
                 floor(contents, wf);
                 deleteTree(wf);
+                Path wc = Files.createDirectory(dir.resolve("warm-checked"));
+                checked(seg, writer, checker, wc);
+                deleteTree(wc);
                 warm++;
                 long compiled = jit.getTotalCompilationTime();
                 if (shortRun || (warm >= 5 && compiled - compiledBefore <= 5)) {
@@ -144,7 +149,7 @@ public final class DacBench {
             }
             System.out.printf(Locale.ROOT, "warm-up: %d round%s of both%s%n", warm, warm == 1 ? "" : "s",
                     shortRun ? " (--short: one)" : " (until a round left the JIT under 5 ms of compiling)");
-            // Per run, the path then the floor, each into an empty folder of its own: files are new,
+            // Per run, the path, the floor, then the path with its check, each into an empty folder of its own: files are new,
             // as a deployment's profiles are. (Writing over the last run's files measured the file
             // system instead: the floor rewrote blocks in place while the path's rename replaced an
             // existing file, which ext4 makes flush the new file's blocks first, auto_da_alloc.)
@@ -152,6 +157,7 @@ public final class DacBench {
             // wall as the median of the runs' ratios.
             long cpuPath = 0, cpuFloor = 0, threadPath = 0, threadFloor = 0, nPath = 0, nFloor = 0;
             double bytesPath = 0, bytesFloor = 0;
+            long cpuChecked = 0, nChecked = 0;
             double[] ratios = new double[runs];
             double bestPath = 0, bestFloor = 0;
             ThreadMXBean mx = ManagementFactory.getThreadMXBean();
@@ -174,8 +180,14 @@ public final class DacBench {
                 threadFloor += mx.getCurrentThreadCpuTime() - t1;
                 bytesFloor += f.bytesAllocatedPer(1);
                 nFloor += n;
+                Path cd = Files.createDirectory(dir.resolve("checked-" + r));
+                CpuClock k = CpuClock.start();
+                int nc = checked(seg, writer, checker, cd);
+                cpuChecked += k.cpuNanos();
+                nChecked += nc;
                 deleteTree(pd);
                 deleteTree(fd);
+                deleteTree(cd);
                 ratios[r] = wall / fwall;
                 bestPath = Math.max(bestPath, 1 / wall);
                 bestFloor = Math.max(bestFloor, 1 / fwall);
@@ -199,6 +211,9 @@ public final class DacBench {
                     + " process CPU (the collector, the JIT): %.1f us against %.1f us; allocated %.0f KiB against %.0f KiB a profile%n",
                     threadPath / 1e3 / nPath, threadFloor / 1e3 / nFloor, (threadPath / (double) nPath) / (threadFloor / (double) nFloor),
                     (cpuPath - threadPath) / 1e3 / nPath, (cpuFloor - threadFloor) / 1e3 / nFloor, bytesPath / 1024 / nPath, bytesFloor / 1024 / nFloor);
+            System.out.printf(Locale.ROOT, "as a deployment makes them, each file also read back and checked against the template"
+                    + " before it takes its name (the floor does not check): %.1f us CPU a profile, %.2f× the floor's (reported, not the target)%n",
+                    cpuChecked / 1e3 / nChecked, (cpuChecked / (double) nChecked) / (cpuFloor / (double) nFloor));
             System.out.println(CpuClock.ratioLine("DAC profile file", cpuPath / 1e3 / nPath, cpuFloor / 1e3 / nFloor, median));
             System.out.println(CpuClock.machineLine());
         } finally {
@@ -227,6 +242,22 @@ public final class DacBench {
         List<Profile> ps = Profiles.of(seg, ProfileSplitter.defaults());
         for (Profile p : ps) {
             writer.write(p, dir);
+        }
+        return ps.size();
+    }
+
+    /**
+     * The same as a deployment makes them: each file also read back and checked against the
+     * template (ProfileChecker) before it takes its name, which the floor does not do.
+     */
+    static int checked(Segment seg, ProfileWriter writer, ProfileChecker checker, Path dir) throws Exception {
+        List<Profile> ps = Profiles.of(seg, ProfileSplitter.defaults());
+        ProfileChecker.Report[] report = new ProfileChecker.Report[1];
+        for (Profile p : ps) {
+            writer.write(p, dir, checker, report);
+            if (!report[0].passed()) {
+                throw new IllegalStateException(report[0].file() + " fails the check: " + report[0].failures());
+            }
         }
         return ps.size();
     }

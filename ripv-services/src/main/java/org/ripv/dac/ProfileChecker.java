@@ -108,12 +108,28 @@ public final class ProfileChecker {
         Attribute meanings = v.findAttribute("flag_meanings");
         if (values == null || meanings == null) {
             fail.add(v.getShortName() + " needs flag_values and flag_meanings");
-        } else if (meanings.getStringValue().trim().split("\\s+").length != values.getLength()) {
+        } else if (words(meanings.getStringValue()) != values.getLength()) {
             fail.add(v.getShortName() + ": " + values.getLength() + " flag_values but "
-                    + meanings.getStringValue().trim().split("\\s+").length + " flag_meanings");
+                    + words(meanings.getStringValue()) + " flag_meanings");
         } else if (values.getDataType() != v.getDataType()) {
             fail.add(v.getShortName() + ":flag_values is " + values.getDataType() + ", not the variable's " + v.getDataType());
         }
+    }
+
+    /** The words of a space-separated list, as {@code trim().split("\\s+").length} counts them (1 for an empty one), without a regex per flag variable. */
+    static int words(String list) {
+        String s = list.trim();
+        int n = 0;
+        boolean inWord = false;
+        for (int i = 0; i < s.length(); i++) {
+            char c = s.charAt(i);
+            boolean space = c == ' ' || c == '\t' || c == '\n' || c == '\u000B' || c == '\f' || c == '\r';
+            if (!space && !inWord) {
+                n++;
+            }
+            inWord = !space;
+        }
+        return Math.max(n, 1);
     }
 
     private void values(Nc nc, List<String> fail, List<String> warn) throws IOException {
@@ -174,6 +190,9 @@ public final class ProfileChecker {
 
     private static double[] doubles(Variable v) throws IOException {
         Array a = v.read();
+        if (a.getElementType() == double.class) {
+            return (double[]) a.get1DJavaArray(double.class); // the values as read, no copy
+        }
         double[] d = new double[(int) a.getSize()];
         for (int i = 0; i < d.length; i++) {
             d[i] = a.getDouble(i);
