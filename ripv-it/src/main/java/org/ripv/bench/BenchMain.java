@@ -36,7 +36,7 @@ public final class BenchMain {
             "  slocum     Slocum binary decoding (10 MB, plain and LZ4) in MB/s against reading the same bytes, and",
             "             binary ingest against a direct JDBC batch insert   [--mb N] [--runs N] [--ingest-rows N]",
             "  dac        IOOS Glider DAC profile files per second from decoded data (split, GSW, QARTOD, template)",
-            "             against writing the same arrays with NetCDF-Java alone   [--yos N] [--runs N]",
+            "             against NetCDF-Java alone writing the same files   [--yos N] [--runs N]",
             "  datavis    vis: to JPEG for 10,000 and 1,000,000 points, built-in worker and Octave   [--no-octave]",
             "             [--points 10000,1000000] [--runs N]",
             "  firststart the DatabaseServer's first start (Derby created and seeded) in a fresh JVM, against",

@@ -262,15 +262,22 @@ public final class DacBench {
         return ps.size();
     }
 
-    /** A file's variables (with their attributes and values) and global attributes, as the floor writes them again. */
-    record FileContent(List<ucar.nc2.Dimension> dims, List<Variable> vars, List<Array> values, List<ucar.nc2.Attribute> globals) {
+    /**
+     * A file's dimensions, variables (type, dimensions, attributes, values) and global attributes,
+     * everything the floor hands NetCDF-Java taken out of the read-back file beforehand, so that the
+     * floor's time is NetCDF-Java's writing alone.
+     */
+    record FileContent(List<Dimension> dims, List<Var> vars, List<ucar.nc2.Attribute> globals) {
+        record Var(String name, ucar.ma2.DataType type, String dims, List<ucar.nc2.Attribute> attributes, boolean unlimited, Array values) {}
+
         static FileContent read(Path f) throws Exception {
             try (ucar.nc2.NetcdfFile nc = ucar.nc2.NetcdfFile.open(f.toString())) {
-                List<Array> values = new ArrayList<>();
+                List<Var> vars = new ArrayList<>();
                 for (Variable v : nc.getVariables()) {
-                    values.add(v.read());
+                    vars.add(new Var(v.getShortName(), v.getDataType(), v.getDimensionsString(), List.copyOf(v.getAttributes()),
+                            v.isUnlimited(), v.read()));
                 }
-                return new FileContent(nc.getDimensions(), nc.getVariables(), values, nc.getGlobalAttributes());
+                return new FileContent(List.copyOf(nc.getDimensions()), List.copyOf(vars), List.copyOf(nc.getGlobalAttributes()));
             }
         }
     }
@@ -278,6 +285,8 @@ public final class DacBench {
     /** The floor: NetCDF-Java alone writing each file again — the same dimensions, variables, attributes and arrays. */
     static int floor(List<FileContent> files, Path dir) throws Exception {
         int i = 0;
+        int[] origin = {0};
+        List<Variable> vars = new ArrayList<>();
         for (FileContent c : files) {
             Path f = dir.resolve("profile-" + (i++) + ".nc");
             NetcdfFileWriter w = NetcdfFileWriter.createNew(NetcdfFileWriter.Version.netcdf3, f.toString());
@@ -289,10 +298,10 @@ public final class DacBench {
                         w.addDimension(null, d.getShortName(), d.getLength());
                     }
                 }
-                List<Variable> vars = new ArrayList<>();
-                for (Variable v : c.vars()) {
-                    Variable nv = w.addVariable(null, v.getShortName(), v.getDataType(), v.getDimensionsString());
-                    for (ucar.nc2.Attribute a : v.getAttributes()) {
+                vars.clear();
+                for (FileContent.Var v : c.vars()) {
+                    Variable nv = w.addVariable(null, v.name(), v.type(), v.dims());
+                    for (ucar.nc2.Attribute a : v.attributes()) {
                         w.addVariableAttribute(nv, a);
                     }
                     vars.add(nv);
@@ -302,10 +311,11 @@ public final class DacBench {
                 }
                 w.create();
                 for (int k = 0; k < vars.size(); k++) {
-                    if (vars.get(k).isUnlimited()) {
-                        w.write(vars.get(k), new int[] {0}, c.values().get(k));
+                    FileContent.Var v = c.vars().get(k);
+                    if (v.unlimited()) {
+                        w.write(vars.get(k), origin, v.values());
                     } else {
-                        w.write(vars.get(k), c.values().get(k));
+                        w.write(vars.get(k), v.values());
                     }
                 }
             } finally {
