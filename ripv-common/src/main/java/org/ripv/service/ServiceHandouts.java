@@ -11,6 +11,7 @@ import org.ripv.messages.Attachment;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.FileBundle;
 import org.ripv.messages.FileData;
+import org.ripv.messages.IdBadge;
 import org.ripv.messages.IncomingServiceMessage;
 import org.ripv.messages.Result;
 import org.ripv.rmi.RmiSupport;
@@ -77,7 +78,8 @@ final class ServiceHandouts {
      */
     IncomingServiceMessage collect(IncomingServiceMessage request) throws ServiceException {
         Attachment a = request.header().attachment();
-        if (!HandoutCollector.carriesTickets(a)) {
+        // Only the server's own requests carry tickets: a user's upload that happens to be named like them stays a file.
+        if (!HandoutCollector.carriesTickets(a) || !IdBadge.SERVER.clientId().equals(request.header().origin().clientId())) {
             return request;
         }
         long t0 = System.nanoTime();
