@@ -42,6 +42,7 @@ import org.ripv.server.clients.WebClients;
 import org.ripv.server.commands.ServerCommands;
 import org.ripv.server.commands.ServiceQueries;
 import org.ripv.server.dataloop.DataLoop;
+import org.ripv.server.handout.HandoutTickets;
 import org.ripv.server.files.FileStore;
 import org.ripv.server.handlers.SocketHandler;
 import org.ripv.server.handlers.WriterPool;
@@ -113,6 +114,7 @@ public final class RIPVServer implements AutoCloseable {
     private final ExecutorService fileWork;
     private ServerRemote remote;
     private volatile InternalCalls internalCalls;
+    private volatile DataLoop dataLoop;
     private ServiceAdmission admission;
     /** Each client's requests waiting for their final reply, capped (issue 33 item 10). */
     private final WaitingRequests waiting = new WaitingRequests();
@@ -214,7 +216,7 @@ public final class RIPVServer implements AutoCloseable {
         sessions.expireLocks(timers, locks, mailbox -> workflows.lockReleased(mailbox));
         permits.onChange(sessions::permitsChanged);
         internalCalls = new InternalCalls(services, permitFile, files, forwarder);
-        DataLoop dataLoop = new DataLoop(internalCalls, config.dataDir().resolve("ingest.properties"));
+        dataLoop = new DataLoop(internalCalls, new HandoutTickets(services), config.dataDir().resolve("ingest.properties"));
         admission = new ServiceAdmission(services, serviceLiveness, checkers, this::undeliverable, this::drop, this::serviceOnline);
         remote = new ServerRemote(security.challenges(), admission, services,
                 new ServiceReplies(pending, cancels, files, dataLoop, this::reply, this::client), this::console);
@@ -534,6 +536,11 @@ public final class RIPVServer implements AutoCloseable {
 
     public FileStore fileStore() {
         return files;
+    }
+
+    /** The data loop: what it relayed (tests). */
+    public DataLoop dataLoop() {
+        return dataLoop;
     }
 
     /** How many services are registered now. */
