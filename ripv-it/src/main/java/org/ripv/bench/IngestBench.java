@@ -1,7 +1,6 @@
 package org.ripv.bench;
 
 import java.io.ByteArrayInputStream;
-import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -16,7 +15,6 @@ import java.time.Instant;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Calendar;
-import java.util.Comparator;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
@@ -26,7 +24,6 @@ import java.util.TimeZone;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
-import java.util.stream.Stream;
 import org.ripv.client.handlers.ClientSocketHandler;
 import org.ripv.messages.Attachment;
 import org.ripv.messages.Header;
@@ -37,8 +34,6 @@ import org.ripv.messages.OutgoingServiceMessage;
 import org.ripv.messages.Priority;
 import org.ripv.messages.Status;
 import org.ripv.server.RIPVServer;
-import org.ripv.server.ServerConfig;
-import org.ripv.server.permit.PermitFile;
 import org.ripv.service.ServiceConnector;
 import org.ripv.service.ServiceOptions;
 import org.ripv.services.database.DatabaseServer;
@@ -76,11 +71,11 @@ public final class IngestBench {
 
     /** The benchmark, its exit status returned rather than exited with ({@code BenchMain} runs several in one JVM). */
     public static int run(String[] args) throws Exception {
-        int runs = intOption(args, "--runs", 2);
-        int wideRuns = intOption(args, "--wide-runs", Math.max(runs, 7));
-        int trackRuns = intOption(args, "--track-runs", 3);
-        int rows = intOption(args, "--rows", 100_000);
-        String only = Arrays.asList(args).contains("--track-only") ? "track" : stringOption(args, "--only", "all");
+        int runs = BenchTools.intOption(args, "--runs", 2);
+        int wideRuns = BenchTools.intOption(args, "--wide-runs", Math.max(runs, 7));
+        int trackRuns = BenchTools.intOption(args, "--track-runs", 3);
+        int rows = BenchTools.intOption(args, "--rows", 100_000);
+        String only = Arrays.asList(args).contains("--track-only") ? "track" : BenchTools.stringOption(args, "--only", "all");
         if (!List.of("all", "wide", "long", "track").contains(only)) {
             throw new IllegalArgumentException("--only wide, long or track, not " + only);
         }
@@ -93,7 +88,7 @@ public final class IngestBench {
                 run(dir, runs, wideRuns, trackRuns, only, rows);
             }
         } finally {
-            deleteTree(dir);
+            BenchTools.deleteTree(dir);
         }
         return 0;
     }
@@ -169,14 +164,14 @@ public final class IngestBench {
                 clear(c);
             }
         }
-        double s = median(viaService);
-        double d = median(direct);
+        double s = BenchTools.median(viaService);
+        double d = BenchTools.median(direct);
         System.out.printf(Locale.ROOT, "%-34s %,9d %10.0f %10.0f %,12.0f %6.2fx  (CPU %.0f / %.0f ms = %.2fx; %.2f MB;"
                         + " raw ingest %s, direct %s)%n",
-                what, p.values.length, s, d, p.values.length / (s / 1000), s / d, median(viaServiceCpu), median(directCpu),
-                median(viaServiceCpu) / median(directCpu), file.length / 1e6, rounded(viaService), rounded(direct));
-        System.out.println("  " + CpuClock.ratioLine("ingest per value", median(viaServiceCpu) * 1e3 / p.values.length,
-                median(directCpu) * 1e3 / p.values.length, s / d) + "; " + CpuClock.machineLine());
+                what, p.values.length, s, d, p.values.length / (s / 1000), s / d, BenchTools.median(viaServiceCpu), BenchTools.median(directCpu),
+                BenchTools.median(viaServiceCpu) / BenchTools.median(directCpu), file.length / 1e6, rounded(viaService), rounded(direct));
+        System.out.println("  " + CpuClock.ratioLine("ingest per value", BenchTools.median(viaServiceCpu) * 1e3 / p.values.length,
+                BenchTools.median(directCpu) * 1e3 / p.values.length, s / d) + "; " + CpuClock.machineLine());
     }
 
     /** The whole process's CPU time: every thread of the path measured, none of the waiting. */
@@ -304,12 +299,8 @@ public final class IngestBench {
 
     /** vis:track of 100,000 positions through the whole system. */
     private static void track(Path dir, DatabaseTarget db, QueryLimits limits, int runs, int rows) throws Exception {
-        ServerConfig config = ServerConfig.forTests(dir.resolve("server"));
-        RIPVServer server = new RIPVServer(config);
-        server.start();
-        PermitFile.setUser(config.dataDir().resolve("permit.txt"), "bench", "bench-password".toCharArray(),
-                List.of("operators"), 1000);
-        server.reloadPermits();
+        Path serverDir = dir.resolve("server");
+        RIPVServer server = BenchTools.serverWithOperator(serverDir);
         ServiceOptions options = new ServiceOptions("localhost", server.registryPort(),
                 Files.readString(server.secretFile()).trim(), 0, Duration.ofSeconds(1));
         DatabaseServer dbService = new DatabaseServer("localhost", List.of(db), limits);
@@ -320,11 +311,11 @@ public final class IngestBench {
             if (!c1.awaitRegistered(Duration.ofSeconds(30)) || !c2.awaitRegistered(Duration.ofSeconds(30))) {
                 throw new IllegalStateException("the services did not register");
             }
-            client.login("bench", "bench-password".toCharArray());
+            client.login(BenchTools.USER, BenchTools.PASSWORD.toCharArray());
             String dbBox = dbService.name().mailbox("TTY1").toString();
             String visBox = vis.name().mailbox("TTY1").toString();
             byte[] file = generate("track", 4, rows, 1.0, true, 4);
-            Path dl = config.dataDir().resolve("download");
+            Path dl = serverDir.resolve("download");
             Files.createDirectories(dl);
             Files.write(dl.resolve("track.mrg"), file);
             OutgoingServerMessage in = client.call(dbBox, "ingest track.mrg", Priority.NORMAL, Duration.ofMinutes(10), null);
@@ -351,7 +342,7 @@ public final class IngestBench {
             }
             System.out.printf(Locale.ROOT, "vis:track of %,d positions end to end: median %.0f ms (target < 1000 ms;"
                     + " raw %s); CPU of client, server and both services: median %.0f ms %s%n",
-                    rows, median(ms), rounded(ms), median(cpu), rounded(cpu));
+                    rows, BenchTools.median(ms), rounded(ms), BenchTools.median(cpu), rounded(cpu));
             System.out.println("  last reply: " + text);
         } finally {
             c1.close();
@@ -402,37 +393,5 @@ public final class IngestBench {
             b.append(" \n");
         }
         return b.toString().getBytes(StandardCharsets.US_ASCII);
-    }
-
-    private static double median(double[] v) {
-        double[] s = v.clone();
-        Arrays.sort(s);
-        return s.length == 0 ? Double.NaN : s.length % 2 == 1 ? s[s.length / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
-    }
-
-    private static int intOption(String[] args, String name, int dflt) {
-        for (int i = 0; i + 1 < args.length; i++) {
-            if (args[i].equals(name)) {
-                return Integer.parseInt(args[i + 1]);
-            }
-        }
-        return dflt;
-    }
-
-    private static String stringOption(String[] args, String name, String dflt) {
-        for (int i = 0; i + 1 < args.length; i++) {
-            if (args[i].equals(name)) {
-                return args[i + 1];
-            }
-        }
-        return dflt;
-    }
-
-    private static void deleteTree(Path dir) throws IOException {
-        try (Stream<Path> s = Files.walk(dir)) {
-            for (Path p : s.sorted(Comparator.reverseOrder()).toList()) {
-                Files.deleteIfExists(p);
-            }
-        }
     }
 }

@@ -1,15 +1,12 @@
 package org.ripv.bench;
 
-import java.io.File;
 import java.io.IOException;
 import java.lang.management.ManagementFactory;
-import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import java.util.Random;
@@ -19,6 +16,7 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
+import org.ripv.services.bench.Socat;
 import org.ripv.services.bench.YmodemBaudRelay;
 import org.ripv.services.serial.TcpLink;
 import org.ripv.services.serial.ymodem.DirectorySink;
@@ -155,7 +153,7 @@ public final class ZmodemBench {
                 }
             }
         }
-        if (!installed("sz") || !installed("rz") || !installed("sb") || !installed("socat")) {
+        if (!Socat.installed("sz") || !Socat.installed("rz") || !Socat.installed("sb") || !Socat.installed("socat")) {
             System.err.println("Error: the ZMODEM benchmark compares with lrzsz: install lrzsz and socat");
             return 1;
         }
@@ -240,7 +238,7 @@ public final class ZmodemBench {
     private Row ours(int baud, Path file) throws Exception {
         Path out = Files.createDirectories(dir.resolve("ours"));
         try (ServerSocket receiverSide = new ServerSocket(0);
-             YmodemBaudRelay relay = new YmodemBaudRelay(baud, local(receiverSide.getLocalPort()))) {
+             YmodemBaudRelay relay = new YmodemBaudRelay(baud, Socat.local(receiverSide.getLocalPort()))) {
             double load = load();
             long cpu = cpuNanos();
             Future<Long> receiving = pool.submit((Callable<Long>) () -> {
@@ -256,17 +254,16 @@ public final class ZmodemBench {
             }
             long receiverCpu = receiving.get(1, TimeUnit.HOURS);
             return new Row("RIPV → RIPV", baud, Files.size(file), (System.nanoTime() - start) / 1e9,
-                    (cpuNanos() - cpu + receiverCpu) / 1e9, load, same(file, out.resolve(file.getFileName())));
+                    (cpuNanos() - cpu + receiverCpu) / 1e9, load, Socat.sameBytes(file, out.resolve(file.getFileName())));
         }
     }
 
     private Row szToOurs(int baud, Path file) throws Exception {
         Path out = Files.createDirectories(dir.resolve("sz"));
-        int port = freePort();
-        Process socat = socat(file.getParent(), "TCP-LISTEN:" + port + ",bind=127.0.0.1,reuseaddr",
-                "SYSTEM:'exec " + SZ + file.getFileName() + "'");
-        awaitListening(port);
-        try (YmodemBaudRelay relay = new YmodemBaudRelay(baud, local(port))) {
+        int port = Socat.freePort();
+        Process socat = Socat.listen(file.getParent(), port, SZ + file.getFileName());
+        Socat.awaitListening(port);
+        try (YmodemBaudRelay relay = new YmodemBaudRelay(baud, Socat.local(port))) {
             double load = load();
             long cpu = cpuNanos();
             long start = System.nanoTime();
@@ -276,7 +273,7 @@ public final class ZmodemBench {
             double seconds = (System.nanoTime() - start) / 1e9;
             socat.waitFor(30, TimeUnit.SECONDS);
             return new Row("lrzsz sz → RIPV", baud, Files.size(file), seconds, (cpuNanos() - cpu) / 1e9, load,
-                    same(file, out.resolve(file.getFileName())));
+                    Socat.sameBytes(file, out.resolve(file.getFileName())));
         } finally {
             socat.destroy();
         }
@@ -288,10 +285,10 @@ public final class ZmodemBench {
 
     private Row oursToRz(int baud, Path file, int window, String pair) throws Exception {
         Path out = Files.createDirectories(dir.resolve("rz"));
-        int port = freePort();
-        Process socat = socat(out, "TCP-LISTEN:" + port + ",bind=127.0.0.1,reuseaddr", "SYSTEM:'exec rz -q -y'");
-        awaitListening(port);
-        try (YmodemBaudRelay relay = new YmodemBaudRelay(baud, local(port))) {
+        int port = Socat.freePort();
+        Process socat = Socat.listen(out, port, "rz -q -y");
+        Socat.awaitListening(port);
+        try (YmodemBaudRelay relay = new YmodemBaudRelay(baud, Socat.local(port))) {
             double load = load();
             long start = System.nanoTime();
             Future<Long> sending = pool.submit((Callable<Long>) () -> {
@@ -307,7 +304,7 @@ public final class ZmodemBench {
             double seconds = (System.nanoTime() - start) / 1e9;
             long senderCpu = sending.get(2, TimeUnit.MINUTES);
             return new Row(pair, baud, Files.size(file), seconds, senderCpu / 1e9, load,
-                    same(file, out.resolve(file.getFileName())));
+                    Socat.sameBytes(file, out.resolve(file.getFileName())));
         } finally {
             socat.destroy();
         }
@@ -315,18 +312,18 @@ public final class ZmodemBench {
 
     private Row szToRz(int baud, Path file) throws Exception {
         Path out = Files.createDirectories(dir.resolve("szrz"));
-        int port = freePort();
-        Process rz = socat(out, "TCP-LISTEN:" + port + ",bind=127.0.0.1,reuseaddr", "SYSTEM:'exec rz -q -y'");
-        awaitListening(port);
-        try (YmodemBaudRelay relay = new YmodemBaudRelay(baud, local(port))) {
+        int port = Socat.freePort();
+        Process rz = Socat.listen(out, port, "rz -q -y");
+        Socat.awaitListening(port);
+        try (YmodemBaudRelay relay = new YmodemBaudRelay(baud, Socat.local(port))) {
             double load = load();
             long start = System.nanoTime();
-            Process sz = socat(file.getParent(), "TCP:127.0.0.1:" + relay.port(), "SYSTEM:'exec " + SZ + file.getFileName() + "'");
+            Process sz = Socat.call(file.getParent(), relay.port(), SZ + file.getFileName());
             rz.waitFor(1, TimeUnit.HOURS);
             double seconds = (System.nanoTime() - start) / 1e9;
             sz.waitFor(30, TimeUnit.SECONDS);
             return new Row("lrzsz sz → lrzsz rz", baud, Files.size(file), seconds, 0, load,
-                    same(file, out.resolve(file.getFileName())));
+                    Socat.sameBytes(file, out.resolve(file.getFileName())));
         } finally {
             rz.destroy();
         }
@@ -345,13 +342,12 @@ public final class ZmodemBench {
         while (!done && calls < maxCalls) {
             calls++;
             long before = Math.max(0, store.partLength(file.getFileName().toString()));
-            int port = freePort();
-            Process sz = socat(file.getParent(), "TCP-LISTEN:" + port + ",bind=127.0.0.1,reuseaddr",
-                    "SYSTEM:'exec " + SZ + file.getFileName() + "'");
-            try (IridiumRelay relay = new IridiumRelay(baud, latency, dropEvery * 1000, local(port));
+            int port = Socat.freePort();
+            Process sz = Socat.listen(file.getParent(), port, SZ + file.getFileName());
+            try (IridiumRelay relay = new IridiumRelay(baud, latency, dropEvery * 1000, Socat.local(port));
                  TcpLink link = TcpLink.connect("tcp://127.0.0.1:" + relay.port(), 5000)) {
                 new ZmodemReceiver(link, 10_000, null).startTimeout(30_000).receive(store, out);
-                done = same(file, out.resolve(file.getFileName()));
+                done = Socat.sameBytes(file, out.resolve(file.getFileName()));
             } catch (IOException e) {
                 // the call dropped: the part waits for the next one
             } finally {
@@ -378,10 +374,9 @@ public final class ZmodemBench {
         while (!done && calls < maxCalls) {
             calls++;
             AtomicLong moved = new AtomicLong();
-            int port = freePort();
-            Process sb = socat(file.getParent(), "TCP-LISTEN:" + port + ",bind=127.0.0.1,reuseaddr",
-                    "SYSTEM:'exec sb --ymodem -k -q " + file.getFileName() + "'");
-            try (IridiumRelay relay = new IridiumRelay(baud, latency, dropEvery * 1000, local(port));
+            int port = Socat.freePort();
+            Process sb = Socat.listen(file.getParent(), port, "sb --ymodem -k -q " + file.getFileName());
+            try (IridiumRelay relay = new IridiumRelay(baud, latency, dropEvery * 1000, Socat.local(port));
                  TcpLink link = TcpLink.connect("tcp://127.0.0.1:" + relay.port(), 5000)) {
                 new YmodemReceiver(link, config, new TransferListener() {
                     @Override
@@ -389,7 +384,7 @@ public final class ZmodemBench {
                         moved.set(d);
                     }
                 }).receiveBatch(new DirectorySink(out));
-                done = same(file, out.resolve(file.getFileName()));
+                done = Socat.sameBytes(file, out.resolve(file.getFileName()));
             } catch (IOException e) {
                 // dropped: YMODEM has nothing to resume from
             } finally {
@@ -403,9 +398,6 @@ public final class ZmodemBench {
                 (cpuNanos() - cpu) / 1e9, load);
     }
 
-    private static InetSocketAddress local(int port) {
-        return new InetSocketAddress("127.0.0.1", port);
-    }
 
     /**
      * RIPV against lrzsz over the same pairs of rows (RIPV's first in each pair), as medians: "no
@@ -419,66 +411,10 @@ public final class ZmodemBench {
             a[i / 2] = pairs.get(i).seconds();
             b[i / 2] = pairs.get(i + 1).seconds();
         }
-        double ma = median(a);
-        double mb = median(b);
+        double ma = BenchTools.median(a);
+        double mb = BenchTools.median(b);
         return String.format(Locale.ROOT, "%s against %s on the same link, median of %d: %.2f s against %.2f s (%s %.2f %%)", ours,
                 theirs, a.length, ma, mb, ma <= mb ? "faster by" : "SLOWER by", 100 * Math.abs(ma - mb) / mb);
-    }
-
-    static double median(double[] values) {
-        double[] v = values.clone();
-        Arrays.sort(v);
-        return v.length % 2 == 1 ? v[v.length / 2] : (v[v.length / 2 - 1] + v[v.length / 2]) / 2;
-    }
-
-    /**
-     * Until socat listens on {@code port}: otherwise the relay's first connect may come before it,
-     * and its retry a moment later falls inside the timed transfer (one row 0.1 s slower than its
-     * pair for no fault of either end). Read from the kernel's table, since a test connection would
-     * take the one connection socat accepts.
-     */
-    static void awaitListening(int port) throws IOException, InterruptedException {
-        String local = String.format(Locale.ROOT, ":%04X ", port);
-        long deadline = System.nanoTime() + 10_000_000_000L;
-        while (System.nanoTime() < deadline) {
-            for (String table : List.of("/proc/net/tcp", "/proc/net/tcp6")) {
-                Path t = Path.of(table);
-                if (Files.isReadable(t)) {
-                    for (String line : Files.readAllLines(t)) {
-                        String[] f = line.trim().split("\\s+");
-                        if (f.length > 3 && (f[1] + " ").endsWith(local) && f[3].equals("0A")) {
-                            return;
-                        }
-                    }
-                }
-            }
-            Thread.sleep(5);
-        }
-        throw new IOException("socat did not listen on port " + port + " within 10 s");
-    }
-
-    private static int freePort() throws IOException {
-        try (ServerSocket s = new ServerSocket(0)) {
-            return s.getLocalPort();
-        }
-    }
-
-    private static Process socat(Path cwd, String a, String b) throws IOException {
-        return new ProcessBuilder("socat", a, b).directory(cwd.toFile()).redirectErrorStream(true)
-                .redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
-    }
-
-    private static boolean same(Path a, Path b) throws IOException {
-        return Files.exists(b) && Arrays.equals(Files.readAllBytes(a), Files.readAllBytes(b));
-    }
-
-    private static boolean installed(String tool) {
-        for (String d : System.getenv().getOrDefault("PATH", "").split(File.pathSeparator)) {
-            if (Files.isExecutable(Path.of(d, tool))) {
-                return true;
-            }
-        }
-        return false;
     }
 
     static final List<String> USAGE = List.of(
