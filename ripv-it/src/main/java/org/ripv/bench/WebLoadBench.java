@@ -223,9 +223,7 @@ public final class WebLoadBench {
         return s;
     }
 
-
     private static double max(double[] v) {
         return Arrays.stream(v).max().orElse(0);
     }
-
 }

@@ -398,7 +398,6 @@ public final class ZmodemBench {
                 (cpuNanos() - cpu) / 1e9, load);
     }
 
-
     /**
      * RIPV against lrzsz over the same pairs of rows (RIPV's first in each pair), as medians: "no
      * slower than lrzsz" is judged on these, not on one row, since one transfer's time varies by a

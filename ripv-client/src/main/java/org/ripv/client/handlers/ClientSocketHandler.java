@@ -23,7 +23,6 @@ import java.util.concurrent.TimeoutException;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Consumer;
 import javax.net.SocketFactory;
-import javax.net.ssl.SSLSocket;
 import org.ripv.failover.ServerList;
 import org.ripv.messages.Attachment;
 import org.ripv.messages.Header;
@@ -136,16 +135,8 @@ public final class ClientSocketHandler implements AutoCloseable {
     /** Connects with the given socket factory (an {@code SSLSocketFactory} for TLS). */
     public static ClientSocketHandler connect(String host, int port, SocketFactory factory, Duration timeout)
             throws IOException {
-        Socket s = Dial.open(host, port, factory, timeout);
-        try {
-            return new ClientSocketHandler(s, host + ":" + port, FrameCodec.DEFAULT_MAX_FRAME);
-        } catch (IOException e) {
-            s.close();
-            throw WrongPort.explain(host, port, s instanceof SSLSocket, e);
-        } catch (RuntimeException e) {
-            s.close();
-            throw e;
-        }
+        return Dial.open(host, port, factory, timeout, s -> new ClientSocketHandler(s, host + ":" + port,
+                FrameCodec.DEFAULT_MAX_FRAME));
     }
 
     public void addListener(Listener l) {

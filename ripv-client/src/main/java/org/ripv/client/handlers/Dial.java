@@ -18,8 +18,18 @@ import javax.net.ssl.SSLSocket;
 final class Dial {
     private Dial() {}
 
-    /** A connected socket (TLS: handshaken), its read deadline set for the greeting. */
-    static Socket open(String host, int port, SocketFactory factory, Duration timeout) throws IOException {
+    /** What is made of the open socket: the connection, once the greetings are exchanged. */
+    @FunctionalInterface
+    interface Greeting<T> {
+        T greet(Socket socket) throws IOException;
+    }
+
+    /**
+     * Connects (TLS: with the handshake), sets the read deadline for the greeting and hands the
+     * socket to {@code greeting}; a failure on the way closes the socket and says what answered
+     * on that port ({@link WrongPort}).
+     */
+    static <T> T open(String host, int port, SocketFactory factory, Duration timeout, Greeting<T> greeting) throws IOException {
         Socket s = factory.createSocket();
         if (s instanceof SSLSocket tls) {
             // Check that the certificate names the host we asked for, not only that a CA signed it.
@@ -44,7 +54,7 @@ final class Dial {
             if (s instanceof SSLSocket tls) {
                 handshake(tls);
             }
-            return s;
+            return greeting.greet(s);
         } catch (Tls.RefusedCertificate e) {
             s.close();
             throw e;

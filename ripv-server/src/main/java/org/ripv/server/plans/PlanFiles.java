@@ -107,7 +107,6 @@ final class PlanFiles {
         return newest;
     }
 
-
     /** The waypoints as a table (n, lat, lon, comment), b_args as rows after them (n empty, lat the b_arg, lon its value). */
     static TableResult table(BehaviorFile f) {
         List<String[]> rows = new ArrayList<>();

@@ -166,5 +166,4 @@ final class PlanForecasts {
                 List.of("n", "lat", "lon", "leg_m", "bearing", "total_m", "eta"),
                 List.of("INTEGER", "DOUBLE", "DOUBLE", "DOUBLE", "DOUBLE", "DOUBLE", "VARCHAR"), rows, false));
     }
-
 }

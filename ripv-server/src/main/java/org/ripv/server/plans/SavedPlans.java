@@ -109,5 +109,4 @@ final class SavedPlans {
     private static List<String> lines(byte[] bytes) {
         return new String(bytes, StandardCharsets.ISO_8859_1).lines().toList();
     }
-
 }

@@ -162,9 +162,4 @@ public final class YmodemBenchmark {
             rb.destroy();
         }
     }
-
-
-
-
-
 }
