@@ -260,10 +260,8 @@ public final class ZmodemBench {
 
     private Row szToOurs(int baud, Path file) throws Exception {
         Path out = Files.createDirectories(dir.resolve("sz"));
-        int port = Socat.freePort();
-        Process socat = Socat.listen(file.getParent(), port, SZ + file.getFileName());
-        Socat.awaitListening(port);
-        try (YmodemBaudRelay relay = new YmodemBaudRelay(baud, Socat.local(port))) {
+        try (Socat.Served socat = Socat.serve(file.getParent(), SZ + file.getFileName());
+             YmodemBaudRelay relay = new YmodemBaudRelay(baud, socat.address())) {
             double load = load();
             long cpu = cpuNanos();
             long start = System.nanoTime();
@@ -271,11 +269,9 @@ public final class ZmodemBench {
                 new ZmodemReceiver(link, 10_000, null).receive(new ResumeStore(dir.resolve("parts-sz")), out);
             }
             double seconds = (System.nanoTime() - start) / 1e9;
-            socat.waitFor(30, TimeUnit.SECONDS);
+            socat.process().waitFor(30, TimeUnit.SECONDS);
             return new Row("lrzsz sz → RIPV", baud, Files.size(file), seconds, (cpuNanos() - cpu) / 1e9, load,
                     Socat.sameBytes(file, out.resolve(file.getFileName())));
-        } finally {
-            socat.destroy();
         }
     }
 
@@ -285,10 +281,8 @@ public final class ZmodemBench {
 
     private Row oursToRz(int baud, Path file, int window, String pair) throws Exception {
         Path out = Files.createDirectories(dir.resolve("rz"));
-        int port = Socat.freePort();
-        Process socat = Socat.listen(out, port, "rz -q -y");
-        Socat.awaitListening(port);
-        try (YmodemBaudRelay relay = new YmodemBaudRelay(baud, Socat.local(port))) {
+        try (Socat.Served socat = Socat.serve(out, "rz -q -y");
+             YmodemBaudRelay relay = new YmodemBaudRelay(baud, socat.address())) {
             double load = load();
             long start = System.nanoTime();
             Future<Long> sending = pool.submit((Callable<Long>) () -> {
@@ -300,32 +294,26 @@ public final class ZmodemBench {
             });
             // timed as lrzsz's pair is: until rz, having the file and the "OO", ends. The sender's
             // own last moments (it listens a while after "OO" for an rz that missed it) are not the line's.
-            socat.waitFor(1, TimeUnit.HOURS);
+            socat.process().waitFor(1, TimeUnit.HOURS);
             double seconds = (System.nanoTime() - start) / 1e9;
             long senderCpu = sending.get(2, TimeUnit.MINUTES);
             return new Row(pair, baud, Files.size(file), seconds, senderCpu / 1e9, load,
                     Socat.sameBytes(file, out.resolve(file.getFileName())));
-        } finally {
-            socat.destroy();
         }
     }
 
     private Row szToRz(int baud, Path file) throws Exception {
         Path out = Files.createDirectories(dir.resolve("szrz"));
-        int port = Socat.freePort();
-        Process rz = Socat.listen(out, port, "rz -q -y");
-        Socat.awaitListening(port);
-        try (YmodemBaudRelay relay = new YmodemBaudRelay(baud, Socat.local(port))) {
+        try (Socat.Served rz = Socat.serve(out, "rz -q -y");
+             YmodemBaudRelay relay = new YmodemBaudRelay(baud, rz.address())) {
             double load = load();
             long start = System.nanoTime();
             Process sz = Socat.call(file.getParent(), relay.port(), SZ + file.getFileName());
-            rz.waitFor(1, TimeUnit.HOURS);
+            rz.process().waitFor(1, TimeUnit.HOURS);
             double seconds = (System.nanoTime() - start) / 1e9;
             sz.waitFor(30, TimeUnit.SECONDS);
             return new Row("lrzsz sz → lrzsz rz", baud, Files.size(file), seconds, 0, load,
                     Socat.sameBytes(file, out.resolve(file.getFileName())));
-        } finally {
-            rz.destroy();
         }
     }
 

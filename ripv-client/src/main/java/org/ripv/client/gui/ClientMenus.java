@@ -20,17 +20,7 @@ import org.ripv.client.panels.ServiceLayoutPanel;
  * The main window's menus: Server (log in, log out, refresh, quit) and View (themes, the keys
  * to each part of the window, the quadrants, the Fleet window).
  */
-final class ClientMenus {
-    private final RIPVClient window;
-    private final GuiManager manager;
-    private final Preferences prefs;
-
-    ClientMenus(RIPVClient window, GuiManager manager, Preferences prefs) {
-        this.window = window;
-        this.manager = manager;
-        this.prefs = prefs;
-    }
-
+record ClientMenus(RIPVClient window, GuiManager manager, Preferences prefs) {
     /** Server (log in, log out, refresh, quit) and View. */
     JMenuBar bar() {
         JMenuBar bar = new JMenuBar();

@@ -25,17 +25,9 @@ import org.ripv.server.files.FileStore;
  * among the vehicle's downloads, read no further than the plan limits allow, the newest goto list
  * fetched from the vehicle; how a refused file is worded, how a checked one is tabled.
  */
-final class PlanFiles {
+record PlanFiles(PlanHost host, PlanLimits limits) {
     /** A name the glider's FAT file system takes: 8.3, a behaviour file's {@code .ma}. */
     private static final Pattern VEHICLE_NAME = Pattern.compile("[A-Za-z0-9_-]{1,8}\\.[Mm][Aa]");
-
-    private final PlanHost host;
-    private final PlanLimits limits;
-
-    PlanFiles(PlanHost host, PlanLimits limits) {
-        this.host = host;
-        this.limits = limits;
-    }
 
     /** The file: in the upload store, else the vehicle's latest download of that name. */
     record Found(String where, Path path) {}

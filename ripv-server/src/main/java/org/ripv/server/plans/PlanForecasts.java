@@ -25,21 +25,9 @@ import org.ripv.plans.Waypoint;
  * is steering as far as the shore knows, and when it would reach each waypoint of a goto list
  * from its last fix.
  */
-final class PlanForecasts {
+record PlanForecasts(ChangeBook book, Fixes fixes, PlanFiles files, PlanLimits limits) {
     /** A Slocum's usual horizontal speed through the water, for a glider with fewer than two fixes. */
     static final double ASSUMED_SPEED = 0.3;
-
-    private final ChangeBook book;
-    private final Fixes fixes;
-    private final PlanFiles files;
-    private final PlanLimits limits;
-
-    PlanForecasts(ChangeBook book, Fixes fixes, PlanFiles files, PlanLimits limits) {
-        this.book = book;
-        this.fixes = fixes;
-        this.files = files;
-        this.limits = limits;
-    }
 
     /**
      * The goto list the glider runs as far as the shore knows: of the goto file in effect (the

@@ -9,13 +9,7 @@ import org.ripv.server.session.Rights;
  * vehicle's plan (a permit rule allowing the command on RIPVServer). A refusal throws
  * {@link PlanCommands.Refused}, answered FORBIDDEN.
  */
-final class PlanRights {
-    private final PlanHost host;
-
-    PlanRights(PlanHost host) {
-        this.host = host;
-    }
-
+record PlanRights(PlanHost host) {
     void mayRead(String user, String mailbox) {
         String why = Rights.whyNotRead(host.permits(), user, mailbox);
         if (why != null) {

@@ -23,21 +23,7 @@ import org.ripv.plans.PlanTable;
  * {@code ?plan MAILBOX save FILE [as NAME]} and {@code ?plan MAILBOX history NAME [N]}: the kept
  * versions of a behaviour file, each with its diff against the last version that was sent.
  */
-final class SavedPlans {
-    private final PlanVersions versions;
-    private final ChangeBook book;
-    private final PlanFiles files;
-    private final PlanRights rights;
-    private final PlanLimits limits;
-
-    SavedPlans(PlanVersions versions, ChangeBook book, PlanFiles files, PlanRights rights, PlanLimits limits) {
-        this.versions = versions;
-        this.book = book;
-        this.files = files;
-        this.rights = rights;
-        this.limits = limits;
-    }
-
+record SavedPlans(PlanVersions versions, ChangeBook book, PlanFiles files, PlanRights rights, PlanLimits limits) {
     /**
      * Checks FILE and keeps it as the next version of NAME (who, when), with the diff against the
      * last version of NAME that was sent. A refused file is no version.

@@ -161,6 +161,29 @@ public final class PostgresStateStore implements StateStore {
         return out;
     }
 
+    /** Sets one row's parameters. */
+    @FunctionalInterface
+    private interface Row<T> {
+        void bind(PreparedStatement ps, T item) throws SQLException;
+    }
+
+    /** Inserts every item as a row, in one batch (nothing for none). */
+    private <T> void insertAll(String what, String sql, List<T> items, Row<T> row) throws IOException {
+        if (items.isEmpty()) {
+            return;
+        }
+        run(what, c -> {
+            try (PreparedStatement ps = c.prepareStatement(sql)) {
+                for (T item : items) {
+                    row.bind(ps, item);
+                    ps.addBatch();
+                }
+                ps.executeBatch();
+            }
+            return null;
+        });
+    }
+
     private <T> T run(String what, PgConnections.Work<T> work) throws IOException {
         try {
             return db.transaction(work);
@@ -183,21 +206,12 @@ public final class PostgresStateStore implements StateStore {
 
     @Override
     public void appendTranscript(List<TranscriptLine> lines) throws IOException {
-        if (lines.isEmpty()) {
-            return;
-        }
-        run("append " + lines.size() + " transcript lines", c -> {
-            try (PreparedStatement ps = c.prepareStatement("INSERT INTO ripv_transcript (mailbox, time_ms, entry) VALUES (?, ?, ?)")) {
-                for (TranscriptLine l : lines) {
+        insertAll("append " + lines.size() + " transcript lines", "INSERT INTO ripv_transcript (mailbox, time_ms, entry) VALUES (?, ?, ?)",
+                lines, (ps, l) -> {
                     ps.setString(1, text(l.mailbox()));
                     ps.setLong(2, l.time());
                     ps.setString(3, text(l.json()));
-                    ps.addBatch();
-                }
-                ps.executeBatch();
-            }
-            return null;
-        });
+                });
     }
 
     @Override
@@ -376,20 +390,10 @@ public final class PostgresStateStore implements StateStore {
 
     @Override
     public void appendAudit(List<AuditRecord> records) throws IOException {
-        if (records.isEmpty()) {
-            return;
-        }
-        run("append to the audit trail", c -> {
-            try (PreparedStatement ps = c.prepareStatement("INSERT INTO ripv_audit (time_ms, warn, line) VALUES (?, ?, ?)")) {
-                for (AuditRecord r : records) {
-                    ps.setLong(1, r.time());
-                    ps.setBoolean(2, r.warn());
-                    ps.setString(3, text(r.line()));
-                    ps.addBatch();
-                }
-                ps.executeBatch();
-            }
-            return null;
+        insertAll("append to the audit trail", "INSERT INTO ripv_audit (time_ms, warn, line) VALUES (?, ?, ?)", records, (ps, r) -> {
+            ps.setLong(1, r.time());
+            ps.setBoolean(2, r.warn());
+            ps.setString(3, text(r.line()));
         });
     }
 

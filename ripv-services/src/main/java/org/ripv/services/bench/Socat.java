@@ -36,6 +36,35 @@ public final class Socat {
         return start(cwd, "TCP-LISTEN:" + port + ",bind=127.0.0.1,reuseaddr", "SYSTEM:'exec " + program + "'");
     }
 
+    /** A program socat serves on a loopback port; closing it ends the program. */
+    public record Served(Process process, int port) implements AutoCloseable {
+        /** Where a relay finds it. */
+        public InetSocketAddress address() {
+            return local(port);
+        }
+
+        @Override
+        public void close() {
+            process.destroy();
+        }
+    }
+
+    /**
+     * {@code program} run in {@code cwd} for the one connection socat accepts on a free loopback
+     * port, listening by the time this returns ({@link #awaitListening}).
+     */
+    public static Served serve(Path cwd, String program) throws IOException, InterruptedException {
+        int port = freePort();
+        Served served = new Served(listen(cwd, port, program), port);
+        try {
+            awaitListening(port);
+            return served;
+        } catch (IOException | InterruptedException | RuntimeException e) {
+            served.close();
+            throw e;
+        }
+    }
+
     /** {@code program} run in {@code cwd}, connected to 127.0.0.1:port. */
     public static Process call(Path cwd, int port, String program) throws IOException {
         return start(cwd, "TCP:127.0.0.1:" + port, "SYSTEM:'exec " + program + "'");
@@ -50,14 +79,18 @@ public final class Socat {
      * Until socat listens on {@code port}: otherwise a relay's first connect may come before it,
      * and its retry a moment later falls inside the timed transfer (one row 0.1 s slower than its
      * pair for no fault of either end). Read from the kernel's table, since a test connection would
-     * take the one connection socat accepts.
+     * take the one connection socat accepts. Where there is no such table (not Linux) it returns
+     * at once, and the relay's own retries wait for socat.
      */
     public static void awaitListening(int port) throws IOException, InterruptedException {
+        List<Path> tables = List.of(Path.of("/proc/net/tcp"), Path.of("/proc/net/tcp6"));
+        if (tables.stream().noneMatch(Files::isReadable)) {
+            return;
+        }
         String local = String.format(Locale.ROOT, ":%04X ", port);
         long deadline = System.nanoTime() + 10_000_000_000L;
         while (System.nanoTime() < deadline) {
-            for (String table : List.of("/proc/net/tcp", "/proc/net/tcp6")) {
-                Path t = Path.of(table);
+            for (Path t : tables) {
                 if (Files.isReadable(t)) {
                     for (String line : Files.readAllLines(t)) {
                         String[] f = line.trim().split("\\s+");

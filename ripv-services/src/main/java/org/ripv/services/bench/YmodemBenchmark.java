@@ -114,52 +114,43 @@ public final class YmodemBenchmark {
 
     private Row sbToOurs(int baud, Path file) throws Exception {
         Path out = Files.createDirectories(dir.resolve("sb-" + baud));
-        int port = Socat.freePort();
-        Process socat = Socat.listen(file.getParent(), port, "sb --ymodem -k -q " + file.getFileName());
-        try (YmodemBaudRelay relay = new YmodemBaudRelay(baud, Socat.local(port))) {
+        try (Socat.Served socat = Socat.serve(file.getParent(), "sb --ymodem -k -q " + file.getFileName());
+             YmodemBaudRelay relay = new YmodemBaudRelay(baud, socat.address())) {
             long start = System.nanoTime();
             try (TcpLink link = TcpLink.connect("tcp://127.0.0.1:" + relay.port(), 5000)) {
                 new YmodemReceiver(link, YmodemConfig.lrzsz(), null).receiveBatch(new DirectorySink(out));
             }
             double seconds = (System.nanoTime() - start) / 1e9;
-            socat.waitFor(30, TimeUnit.SECONDS);
+            socat.process().waitFor(30, TimeUnit.SECONDS);
             return new Row("lrzsz sb → RIPV", baud, Files.size(file), seconds, Socat.sameBytes(file, out.resolve(file.getFileName())));
-        } finally {
-            socat.destroy();
         }
     }
 
     private Row oursToRb(int baud, Path file) throws Exception {
         Path out = Files.createDirectories(dir.resolve("rb-" + baud));
-        int port = Socat.freePort();
-        Process socat = Socat.listen(out, port, "rb --ymodem -y -q");
-        try (YmodemBaudRelay relay = new YmodemBaudRelay(baud, Socat.local(port))) {
+        try (Socat.Served socat = Socat.serve(out, "rb --ymodem -y -q");
+             YmodemBaudRelay relay = new YmodemBaudRelay(baud, socat.address())) {
             long start = System.nanoTime();
             try (TcpLink link = TcpLink.connect("tcp://127.0.0.1:" + relay.port(), 5000)) {
                 new YmodemSender(link, YmodemConfig.lrzsz(), null).sendBatch(List.of(SendFile.of(file)));
             }
             double seconds = (System.nanoTime() - start) / 1e9;
-            socat.waitFor(30, TimeUnit.SECONDS);
+            socat.process().waitFor(30, TimeUnit.SECONDS);
             return new Row("RIPV → lrzsz rb", baud, Files.size(file), seconds, Socat.sameBytes(file, out.resolve(file.getFileName())));
-        } finally {
-            socat.destroy();
         }
     }
 
     private Row sbToRb(int baud, Path file) throws Exception {
         Path out = Files.createDirectories(dir.resolve("sbrb-" + baud));
-        int port = Socat.freePort();
-        Process rb = Socat.listen(out, port, "rb --ymodem -y -q");
-        try (YmodemBaudRelay relay = new YmodemBaudRelay(baud, Socat.local(port))) {
+        try (Socat.Served rb = Socat.serve(out, "rb --ymodem -y -q");
+             YmodemBaudRelay relay = new YmodemBaudRelay(baud, rb.address())) {
             long start = System.nanoTime();
             Process sb = Socat.call(file.getParent(), relay.port(), "sb --ymodem -k -q " + file.getFileName());
-            rb.waitFor(1, TimeUnit.HOURS);
+            rb.process().waitFor(1, TimeUnit.HOURS);
             double seconds = (System.nanoTime() - start) / 1e9;
             sb.waitFor(30, TimeUnit.SECONDS);
             return new Row("lrzsz sb → lrzsz rb", baud, Files.size(file), seconds,
                     Socat.sameBytes(file, out.resolve(file.getFileName())));
-        } finally {
-            rb.destroy();
         }
     }
 }
