@@ -1,6 +1,5 @@
 package org.ripv.bench;
 
-import java.io.IOException;
 import java.lang.management.ManagementFactory;
 import java.net.ServerSocket;
 import java.net.Socket;
@@ -15,16 +14,10 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicLong;
 import org.ripv.services.bench.Socat;
 import org.ripv.services.bench.YmodemBaudRelay;
 import org.ripv.services.serial.TcpLink;
-import org.ripv.services.serial.ymodem.DirectorySink;
-import org.ripv.services.serial.ymodem.FileHeader;
 import org.ripv.services.serial.ymodem.SendFile;
-import org.ripv.services.serial.ymodem.TransferListener;
-import org.ripv.services.serial.ymodem.YmodemConfig;
-import org.ripv.services.serial.ymodem.YmodemReceiver;
 import org.ripv.services.serial.zmodem.ResumeStore;
 import org.ripv.services.serial.zmodem.ZmodemReceiver;
 import org.ripv.services.serial.zmodem.ZmodemSender;
@@ -33,7 +26,7 @@ import org.ripv.services.serial.zmodem.ZmodemSender;
  * {@code ./ripv bench zmodem}: ZMODEM over a baud-paced relay as a share of the line rate,
  * against lrzsz's {@code sz}/{@code rz} on the same relay in the same run; and over an
  * Iridium-like link (2,400 baud, 1 s latency, a drop every 60 s) the calls needed to move
- * 100 KB with ZMODEM's resume against YMODEM, which restarts a cut file from zero. Beside wall
+ * 100 KB with ZMODEM's resume against YMODEM, which restarts a cut file from zero ({@link IridiumCalls}). Beside wall
  * time, the CPU time of RIPV's transfer threads for each operation (not the in-process relay's,
  * nor lrzsz's) and the load average (the machine may be shared: read the figures with it).
  *
@@ -68,18 +61,18 @@ public final class ZmodemBench {
      * waiting for the answer to ZEOF (CAN CAN CAN…) while the file was still draining from the
      * relay's buffers.
      */
-    private static final String SZ = "sz -q -O ";
+    static final String SZ = "sz -q -O ";
 
     private ZmodemBench(Path dir) {
         this.dir = dir;
     }
 
     /** CPU time of the calling thread: the transfer's own work, not the in-process relay's pacing. */
-    private static long cpuNanos() {
+    static long cpuNanos() {
         return ManagementFactory.getThreadMXBean().getCurrentThreadCpuTime();
     }
 
-    private static double load() {
+    static double load() {
         return ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage();
     }
 
@@ -218,8 +211,9 @@ public final class ZmodemBench {
                     iBaud, latency, dropEvery, iBytes);
             System.out.println("| protocol | calls | done | bytes moved per call | wall s | RIPV CPU s | load |");
             System.out.println("| --- | --- | --- | --- | --- | --- | --- |");
-            System.out.println(bench.iridiumZmodem(iBaud, latency, dropEvery, small, maxCalls));
-            System.out.println(bench.iridiumYmodem(iBaud, latency, dropEvery, small, ymodemCalls));
+            IridiumCalls calls = new IridiumCalls(dir, iBaud, latency, dropEvery);
+            System.out.println(calls.zmodem(small, maxCalls));
+            System.out.println(calls.ymodem(small, ymodemCalls));
         }
         return 0;
     }
@@ -315,75 +309,6 @@ public final class ZmodemBench {
             return new Row("lrzsz sz → lrzsz rz", baud, Files.size(file), seconds, 0, load,
                     Socat.sameBytes(file, out.resolve(file.getFileName())));
         }
-    }
-
-    /** Calls until the file is whole: each call a fresh sz, our receiver continuing from the part. */
-    private String iridiumZmodem(int baud, long latency, long dropEvery, Path file, int maxCalls) throws Exception {
-        Path out = Files.createDirectories(dir.resolve("iridium-z"));
-        ResumeStore store = new ResumeStore(dir.resolve("parts-iridium"));
-        StringBuilder perCall = new StringBuilder();
-        double load = load();
-        long cpu = cpuNanos();
-        long start = System.nanoTime();
-        int calls = 0;
-        boolean done = false;
-        while (!done && calls < maxCalls) {
-            calls++;
-            long before = Math.max(0, store.partLength(file.getFileName().toString()));
-            int port = Socat.freePort();
-            Process sz = Socat.listen(file.getParent(), port, SZ + file.getFileName());
-            try (IridiumRelay relay = new IridiumRelay(baud, latency, dropEvery * 1000, Socat.local(port));
-                 TcpLink link = TcpLink.connect("tcp://127.0.0.1:" + relay.port(), 5000)) {
-                new ZmodemReceiver(link, 10_000, null).startTimeout(30_000).receive(store, out);
-                done = Socat.sameBytes(file, out.resolve(file.getFileName()));
-            } catch (IOException e) {
-                // the call dropped: the part waits for the next one
-            } finally {
-                sz.destroy();
-                sz.waitFor(10, TimeUnit.SECONDS);
-            }
-            long after = done ? Files.size(file) : Math.max(0, store.partLength(file.getFileName().toString()));
-            perCall.append(perCall.isEmpty() ? "" : ", ").append(after - before);
-        }
-        return String.format(Locale.ROOT, "| ZMODEM, resuming | %d | %s | %s | %.0f | %.2f | %.2f |", calls,
-                done ? "yes" : "no", perCall, (System.nanoTime() - start) / 1e9, (cpuNanos() - cpu) / 1e9, load);
-    }
-
-    /** YMODEM over the same calls: a cut file starts again from zero on the next. */
-    private String iridiumYmodem(int baud, long latency, long dropEvery, Path file, int maxCalls) throws Exception {
-        Path out = Files.createDirectories(dir.resolve("iridium-y"));
-        StringBuilder perCall = new StringBuilder();
-        double load = load();
-        long cpu = cpuNanos();
-        long start = System.nanoTime();
-        int calls = 0;
-        boolean done = false;
-        YmodemConfig config = YmodemConfig.lrzsz();
-        while (!done && calls < maxCalls) {
-            calls++;
-            AtomicLong moved = new AtomicLong();
-            int port = Socat.freePort();
-            Process sb = Socat.listen(file.getParent(), port, "sb --ymodem -k -q " + file.getFileName());
-            try (IridiumRelay relay = new IridiumRelay(baud, latency, dropEvery * 1000, Socat.local(port));
-                 TcpLink link = TcpLink.connect("tcp://127.0.0.1:" + relay.port(), 5000)) {
-                new YmodemReceiver(link, config, new TransferListener() {
-                    @Override
-                    public void progress(FileHeader f, long d) {
-                        moved.set(d);
-                    }
-                }).receiveBatch(new DirectorySink(out));
-                done = Socat.sameBytes(file, out.resolve(file.getFileName()));
-            } catch (IOException e) {
-                // dropped: YMODEM has nothing to resume from
-            } finally {
-                sb.destroy();
-                sb.waitFor(10, TimeUnit.SECONDS);
-            }
-            perCall.append(perCall.isEmpty() ? "" : ", ").append(done ? Files.size(file) : moved.get());
-        }
-        return String.format(Locale.ROOT, "| YMODEM, from zero each call | %d%s | %s | %s (kept: 0) | %.0f | %.2f | %.2f |",
-                calls, done ? "" : " (stopped)", done ? "yes" : "no", perCall, (System.nanoTime() - start) / 1e9,
-                (cpuNanos() - cpu) / 1e9, load);
     }
 
     /**

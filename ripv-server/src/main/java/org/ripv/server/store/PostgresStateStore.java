@@ -28,6 +28,9 @@ import java.util.Properties;
  * ripv_audit(seq, time_ms, warn, line)             the audit trail
  * ripv_surfacing(seq, mailbox, time_ms, record)    call records, one per surfacing
  * </pre>
+ *
+ * <p>Longer than 400 lines for one job: it is {@link StateStore} in PostgreSQL, one short method per kind
+ * of record over the tables above.
  */
 public final class PostgresStateStore implements StateStore {
     /** The advisory lock key that guards schema creation ("RIPV" in ASCII). */
