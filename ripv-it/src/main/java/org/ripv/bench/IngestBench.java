@@ -1,5 +1,10 @@
 package org.ripv.bench;
 
+import static org.ripv.bench.BenchTools.deleteTree;
+import static org.ripv.bench.BenchTools.intOption;
+import static org.ripv.bench.BenchTools.median;
+import static org.ripv.bench.BenchTools.stringOption;
+
 import java.io.ByteArrayInputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -71,11 +76,11 @@ public final class IngestBench {
 
     /** The benchmark, its exit status returned rather than exited with ({@code BenchMain} runs several in one JVM). */
     public static int run(String[] args) throws Exception {
-        int runs = BenchTools.intOption(args, "--runs", 2);
-        int wideRuns = BenchTools.intOption(args, "--wide-runs", Math.max(runs, 7));
-        int trackRuns = BenchTools.intOption(args, "--track-runs", 3);
-        int rows = BenchTools.intOption(args, "--rows", 100_000);
-        String only = Arrays.asList(args).contains("--track-only") ? "track" : BenchTools.stringOption(args, "--only", "all");
+        int runs = intOption(args, "--runs", 2);
+        int wideRuns = intOption(args, "--wide-runs", Math.max(runs, 7));
+        int trackRuns = intOption(args, "--track-runs", 3);
+        int rows = intOption(args, "--rows", 100_000);
+        String only = Arrays.asList(args).contains("--track-only") ? "track" : stringOption(args, "--only", "all");
         if (!List.of("all", "wide", "long", "track").contains(only)) {
             throw new IllegalArgumentException("--only wide, long or track, not " + only);
         }
@@ -88,7 +93,7 @@ public final class IngestBench {
                 run(dir, runs, wideRuns, trackRuns, only, rows);
             }
         } finally {
-            BenchTools.deleteTree(dir);
+            deleteTree(dir);
         }
         return 0;
     }
@@ -164,14 +169,14 @@ public final class IngestBench {
                 clear(c);
             }
         }
-        double s = BenchTools.median(viaService);
-        double d = BenchTools.median(direct);
+        double s = median(viaService);
+        double d = median(direct);
         System.out.printf(Locale.ROOT, "%-34s %,9d %10.0f %10.0f %,12.0f %6.2fx  (CPU %.0f / %.0f ms = %.2fx; %.2f MB;"
                         + " raw ingest %s, direct %s)%n",
-                what, p.values.length, s, d, p.values.length / (s / 1000), s / d, BenchTools.median(viaServiceCpu), BenchTools.median(directCpu),
-                BenchTools.median(viaServiceCpu) / BenchTools.median(directCpu), file.length / 1e6, rounded(viaService), rounded(direct));
-        System.out.println("  " + CpuClock.ratioLine("ingest per value", BenchTools.median(viaServiceCpu) * 1e3 / p.values.length,
-                BenchTools.median(directCpu) * 1e3 / p.values.length, s / d) + "; " + CpuClock.machineLine());
+                what, p.values.length, s, d, p.values.length / (s / 1000), s / d, median(viaServiceCpu), median(directCpu),
+                median(viaServiceCpu) / median(directCpu), file.length / 1e6, rounded(viaService), rounded(direct));
+        System.out.println("  " + CpuClock.ratioLine("ingest per value", median(viaServiceCpu) * 1e3 / p.values.length,
+                median(directCpu) * 1e3 / p.values.length, s / d) + "; " + CpuClock.machineLine());
     }
 
     /** The whole process's CPU time: every thread of the path measured, none of the waiting. */
@@ -342,7 +347,7 @@ public final class IngestBench {
             }
             System.out.printf(Locale.ROOT, "vis:track of %,d positions end to end: median %.0f ms (target < 1000 ms;"
                     + " raw %s); CPU of client, server and both services: median %.0f ms %s%n",
-                    rows, BenchTools.median(ms), rounded(ms), BenchTools.median(cpu), rounded(cpu));
+                    rows, median(ms), rounded(ms), median(cpu), rounded(cpu));
             System.out.println("  last reply: " + text);
         } finally {
             c1.close();

@@ -1,5 +1,8 @@
 package org.ripv.bench;
 
+import static org.ripv.bench.BenchTools.intOption;
+import static org.ripv.bench.BenchTools.median;
+
 import java.io.InputStream;
 import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
@@ -41,8 +44,8 @@ public final class PlansBench {
 
     /** The benchmark; its exit status is returned, not exited with ({@code ShortRuns} runs several in one JVM). */
     public static int run(String[] args) throws Exception {
-        int files = BenchTools.intOption(args, "--files", 2_000);
-        int runs = BenchTools.intOption(args, "--runs", 5);
+        int files = intOption(args, "--files", 2_000);
+        int runs = intOption(args, "--runs", 5);
         if (files < 10 || runs < 1) {
             System.err.println("Usage: ripv bench plans [--files N] [--runs N]   (at least 10 files and 1 run)");
             return 2;
@@ -114,8 +117,8 @@ public final class PlansBench {
                     "wall ms", "CPU us/file");
             row("read the files' bytes (the floor)", read, files);
             row("check them (BehaviorFileReader)", check, files);
-            System.out.println(CpuClock.ratioLine("plan check per file", BenchTools.median(check[1]) * 1e6 / files, BenchTools.median(read[1]) * 1e6 / files,
-                    BenchTools.median(check[0]) / BenchTools.median(read[0])) + " (floor: reading the same files' bytes)");
+            System.out.println(CpuClock.ratioLine("plan check per file", median(check[1]) * 1e6 / files, median(read[1]) * 1e6 / files,
+                    median(check[0]) / median(read[0])) + " (floor: reading the same files' bytes)");
             System.out.printf(Locale.ROOT, "process CPU (every thread: JIT and collector too) per file, both paths: %.1f us%n",
                     process.cpuMicrosPer(2L * files * runs));
             System.out.println(CpuClock.machineLine());
@@ -130,8 +133,8 @@ public final class PlansBench {
     }
 
     private static void row(String what, double[][] t, int files) {
-        System.out.printf(Locale.ROOT, "%-40s %,12.0f %10.1f %13.1f   (wall runs ms %s)%n", what, files / BenchTools.median(t[0]),
-                BenchTools.median(t[0]) * 1e3, BenchTools.median(t[1]) * 1e6 / files,
+        System.out.printf(Locale.ROOT, "%-40s %,12.0f %10.1f %13.1f   (wall runs ms %s)%n", what, files / median(t[0]),
+                median(t[0]) * 1e3, median(t[1]) * 1e6 / files,
                 Arrays.toString(Arrays.stream(t[0]).map(w -> Math.round(w * 1e4) / 10.0).toArray()));
     }
 

@@ -1,5 +1,8 @@
 package org.ripv.bench;
 
+import static org.ripv.bench.BenchTools.intOption;
+import static org.ripv.bench.BenchTools.median;
+
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.InputStream;
@@ -105,9 +108,9 @@ public final class SlocumBench {
 
     /** The benchmark, its exit status returned rather than exited with ({@code BenchMain} runs several in one JVM). */
     public static int run(String[] args) throws Exception {
-        int mb = BenchTools.intOption(args, "--mb", 10);
-        int runs = BenchTools.intOption(args, "--runs", 5);
-        int ingestRows = BenchTools.intOption(args, "--ingest-rows", 20_000);
+        int mb = intOption(args, "--mb", 10);
+        int runs = intOption(args, "--runs", 5);
+        int ingestRows = intOption(args, "--ingest-rows", 20_000);
         Path dir = Files.createTempDirectory("ripv-slocumbench");
         try {
             System.out.printf(Locale.ROOT, "SlocumBench: %s %s (the machine may be shared; its load is on the machine: lines)%n",
@@ -168,11 +171,11 @@ public final class SlocumBench {
             }
         }
         System.out.printf(Locale.ROOT, "%-26s %9.1f %11.0f %11.0f %8.1fms %8.1fms   (%,d cycles; decode on CPU time %.0f MB/s;"
-                        + " wall runs %s)%n", what, mb, mb / BenchTools.median(readWall), mb / BenchTools.median(decodeWall), BenchTools.median(readCpu) * 1e3,
-                BenchTools.median(decodeCpu) * 1e3, cycles, mb / BenchTools.median(decodeCpu), Arrays.toString(Arrays.stream(decodeWall)
+                        + " wall runs %s)%n", what, mb, mb / median(readWall), mb / median(decodeWall), median(readCpu) * 1e3,
+                median(decodeCpu) * 1e3, cycles, mb / median(decodeCpu), Arrays.toString(Arrays.stream(decodeWall)
                         .map(w -> Math.round(w * 1e4) / 10.0).toArray()));
-        System.out.println("  " + CpuClock.ratioLine("decode per cycle", BenchTools.median(decodeCpu) * 1e6 / cycles,
-                BenchTools.median(readCpu) * 1e6 / cycles, BenchTools.median(decodeWall) / BenchTools.median(readWall)) + " (floor: reading the bytes); "
+        System.out.println("  " + CpuClock.ratioLine("decode per cycle", median(decodeCpu) * 1e6 / cycles,
+                median(readCpu) * 1e6 / cycles, median(decodeWall) / median(readWall)) + " (floor: reading the bytes); "
                 + CpuClock.machineLine());
     }
 

@@ -1,5 +1,8 @@
 package org.ripv.bench;
 
+import static org.ripv.bench.BenchTools.intOption;
+import static org.ripv.bench.BenchTools.median;
+
 import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.Writer;
@@ -42,8 +45,8 @@ public final class SurfacingBench {
 
     /** The benchmark; its exit status is returned, not exited with ({@code ShortRuns} runs several in one JVM). */
     public static int run(String[] args) throws Exception {
-        int dialogs = BenchTools.intOption(args, "--dialogs", 20_000);
-        int runs = BenchTools.intOption(args, "--runs", 5);
+        int dialogs = intOption(args, "--dialogs", 20_000);
+        int runs = intOption(args, "--runs", 5);
         if (dialogs < 1 || runs < 1) {
             System.err.println("Usage: ripv bench surfacing [--dialogs N] [--runs N]   (both at least 1)");
             return 2;
@@ -77,9 +80,9 @@ public final class SurfacingBench {
             row("parser, a line at a time (the server's way)", byLine, lines);
             row("parser, 512-char pieces (the service's way)", byFeed, lines);
             System.out.println(CpuClock.ratioLine("parser per line, a line at a time", perLine(byLine[1], lines), perLine(read[1], lines),
-                    BenchTools.median(byLine[0]) / BenchTools.median(read[0])) + " (floor: reading and splitting the same lines)");
+                    median(byLine[0]) / median(read[0])) + " (floor: reading and splitting the same lines)");
             System.out.println(CpuClock.ratioLine("parser per line, 512-char pieces", perLine(byFeed[1], lines), perLine(read[1], lines),
-                    BenchTools.median(byFeed[0]) / BenchTools.median(read[0])) + " (floor: reading and splitting the same lines)");
+                    median(byFeed[0]) / median(read[0])) + " (floor: reading and splitting the same lines)");
             System.out.printf(Locale.ROOT, "process CPU (every thread: JIT and collector too) per line over all three paths: %.3f us%n",
                     process.cpuMicrosPer(processOps));
             System.out.println(CpuClock.machineLine());
@@ -176,12 +179,12 @@ public final class SurfacingBench {
     }
 
     private static void row(String what, double[][] t, long lines) {
-        System.out.printf(Locale.ROOT, "%-44s %,14.0f %12.1f %12.3f   (wall runs ms %s)%n", what, lines / BenchTools.median(t[0]),
-                BenchTools.median(t[0]) * 1e3, perLine(t[1], lines), Arrays.toString(Arrays.stream(t[0]).map(w -> Math.round(w * 1e4) / 10.0).toArray()));
+        System.out.printf(Locale.ROOT, "%-44s %,14.0f %12.1f %12.3f   (wall runs ms %s)%n", what, lines / median(t[0]),
+                median(t[0]) * 1e3, perLine(t[1], lines), Arrays.toString(Arrays.stream(t[0]).map(w -> Math.round(w * 1e4) / 10.0).toArray()));
     }
 
     private static double perLine(double[] cpuSeconds, long lines) {
-        return BenchTools.median(cpuSeconds) * 1e6 / lines;
+        return median(cpuSeconds) * 1e6 / lines;
     }
 
     /**

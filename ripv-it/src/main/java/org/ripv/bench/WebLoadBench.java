@@ -1,5 +1,8 @@
 package org.ripv.bench;
 
+import static org.ripv.bench.BenchTools.intOption;
+import static org.ripv.bench.BenchTools.median;
+
 import com.fasterxml.jackson.databind.JsonNode;
 import com.sun.net.httpserver.HttpServer;
 import java.io.IOException;
@@ -69,8 +72,8 @@ public final class WebLoadBench {
 
     /** The benchmark; its exit status is returned, not exited with ({@code ShortRuns} runs several in one JVM). */
     public static int run(String[] args) throws Exception {
-        int vehicles = BenchTools.intOption(args, "--vehicles", 100);
-        int runs = BenchTools.intOption(args, "--runs", 7);
+        int vehicles = intOption(args, "--vehicles", 100);
+        int runs = intOption(args, "--runs", 7);
         if (vehicles < 1 || vehicles > 1000 || runs < 2) {
             System.err.println("Usage: ripv bench webload [--vehicles N] [--runs N]   (1 to 1,000 vehicles, at least 2 runs: the first is a warm-up)");
             return 2;
@@ -118,13 +121,13 @@ public final class WebLoadBench {
             System.out.printf(Locale.ROOT, "%n%-58s %12s %12s %14s%n", "page (median of " + (runs - 1) + " loads; max)", "rows drawn ms",
                     "all shown ms", "CPU ms per load");
             System.out.printf(Locale.ROOT, "%-58s %12.0f %12s %14.1f   (loads ms %s)%n",
-                    "fleet page, " + vehicles + " vehicles, live", BenchTools.median(live.listed), String.format(Locale.ROOT, "%.0f (%.0f)", BenchTools.median(live.shown), max(live.shown)),
+                    "fleet page, " + vehicles + " vehicles, live", median(live.listed), String.format(Locale.ROOT, "%.0f (%.0f)", median(live.shown), max(live.shown)),
                     live.cpuMillis, Arrays.toString(live.shown));
             System.out.printf(Locale.ROOT, "%-58s %12.0f %12s %14.1f   (loads ms %s)%n",
-                    "floor: the same page static (" + html.length() / 1024 + " KiB and its style sheet)", BenchTools.median(floor.listed),
-                    String.format(Locale.ROOT, "%.0f (%.0f)", BenchTools.median(floor.shown), max(floor.shown)), floor.cpuMillis, Arrays.toString(floor.shown));
+                    "floor: the same page static (" + html.length() / 1024 + " KiB and its style sheet)", median(floor.listed),
+                    String.format(Locale.ROOT, "%.0f (%.0f)", median(floor.shown), max(floor.shown)), floor.cpuMillis, Arrays.toString(floor.shown));
             System.out.println(CpuClock.ratioLine("fleet page load (server, fleet service, browser)", live.cpuMillis * 1e3,
-                    floor.cpuMillis * 1e3, BenchTools.median(live.shown) / Math.max(1e-3, BenchTools.median(floor.shown)))
+                    floor.cpuMillis * 1e3, median(live.shown) / Math.max(1e-3, median(floor.shown)))
                     + " (floor: the same page static in the same browser)");
             System.out.println("  CPU counted: the server's JVM, this JVM (the fleet's service; for the floor the static server) and every"
                     + " Chromium process, per load");

@@ -1,5 +1,7 @@
 package org.ripv.bench;
 
+import static org.ripv.bench.BenchTools.median;
+
 import java.lang.management.ManagementFactory;
 import java.net.ServerSocket;
 import java.net.Socket;
@@ -323,8 +325,8 @@ public final class ZmodemBench {
             a[i / 2] = pairs.get(i).seconds();
             b[i / 2] = pairs.get(i + 1).seconds();
         }
-        double ma = BenchTools.median(a);
-        double mb = BenchTools.median(b);
+        double ma = median(a);
+        double mb = median(b);
         return String.format(Locale.ROOT, "%s against %s on the same link, median of %d: %.2f s against %.2f s (%s %.2f %%)", ours,
                 theirs, a.length, ma, mb, ma <= mb ? "faster by" : "SLOWER by", 100 * Math.abs(ma - mb) / mb);
     }
