@@ -24,7 +24,6 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
-import java.util.Random;
 import java.util.TimeZone;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.LinkedBlockingQueue;
@@ -108,12 +107,12 @@ public final class IngestBench {
         System.out.printf(Locale.ROOT, "IngestBench: embedded Derby, %d run(s) of the wide file, %d of the long one, %s%n",
                 wideRuns, runs,
                 System.getProperty("java.vm.name") + " " + System.getProperty("java.version"));
-        byte[] wide = only.equals("long") ? null : generate("wide", 2136, 140, 0.03, false, 1);
-        byte[] long30 = only.equals("wide") ? null : generate("long", 30, rows, 0.5, false, 2);
+        byte[] wide = only.equals("long") ? null : SyntheticDba.generate("wide", 2136, 140, 0.03, false, 1);
+        byte[] long30 = only.equals("wide") ? null : SyntheticDba.generate("long", 30, rows, 0.5, false, 2);
         System.out.printf(Locale.ROOT, "%-34s %9s %10s %10s %12s %7s%n", "file", "values", "ingest ms", "direct ms",
                 "ingest v/s", "ratio");
         try (Connection c = DriverManager.getConnection(db.url(), db.user(), db.password())) {
-            ingest(local, replies, "warm-up.mrg", generate("warmup", 40, 2000, 0.5, false, 3)); // creates the schema too
+            ingest(local, replies, "warm-up.mrg", SyntheticDba.generate("warmup", 40, 2000, 0.5, false, 3)); // creates the schema too
             clear(c);
             if (wide != null) {
                 measure(c, local, replies, "2,136 sensors, 1.2 MB", wide, wideRuns);
@@ -319,7 +318,7 @@ public final class IngestBench {
             client.login(BenchTools.USER, BenchTools.PASSWORD.toCharArray());
             String dbBox = dbService.name().mailbox("TTY1").toString();
             String visBox = vis.name().mailbox("TTY1").toString();
-            byte[] file = generate("track", 4, rows, 1.0, true, 4);
+            byte[] file = SyntheticDba.generate("track", 4, rows, 1.0, true, 4);
             Path dl = serverDir.resolve("download");
             Files.createDirectories(dl);
             Files.write(dl.resolve("track.mrg"), file);
@@ -356,47 +355,5 @@ public final class IngestBench {
             vis.stop();
             server.stop();
         }
-    }
-
-    /**
-     * A DBA file: m_present_time, m_gps_lat, m_gps_lon, m_depth, then s_4...; each other cell
-     * present with probability {@code fill}; a GPS fix on every row when {@code fixes}, else every 50th.
-     */
-    static byte[] generate(String glider, int sensors, int rows, double fill, boolean fixes, long seed) {
-        StringBuilder b = new StringBuilder(rows * sensors * 6 + 4096);
-        b.append("dbd_label: DBD_ASC(dinkum_binary_data_ascii)file\nencoding_ver: 2\nnum_ascii_tags: 14\nall_sensors: 0\n");
-        b.append("filename: ").append(glider).append("-2024-100-1-0\nthe8x3_filename: 00010000\nfilename_extension: sbd\n");
-        b.append("filename_label: ").append(glider).append("-2024-100-1-0-sbd(00010000)\nmission_name: BENCH.MI\n");
-        b.append("fileopen_time: Mon_Apr__8_12:00:00_2024\nsensors_per_cycle: ").append(sensors).append('\n');
-        b.append("num_label_lines: 3\nnum_segments: 1\nsegment_filename_0: ").append(glider).append("-2024-100-1-0\n");
-        StringBuilder names = new StringBuilder("m_present_time m_gps_lat m_gps_lon m_depth");
-        StringBuilder units = new StringBuilder("timestamp lat lon m");
-        StringBuilder bytes = new StringBuilder("8 8 8 4");
-        for (int i = 4; i < sensors; i++) {
-            names.append(" s_").append(i);
-            units.append(" nodim");
-            bytes.append(" 4");
-        }
-        b.append(names).append(" \n").append(units).append(" \n").append(bytes).append(" \n");
-        Random rnd = new Random(seed);
-        double t = 1_712_577_600;
-        for (int r = 0; r < rows; r++) {
-            t += 2.5;
-            b.append(String.format(Locale.ROOT, "%.5f", t));
-            boolean fix = fixes || r % 50 == 0;
-            b.append(' ').append(fix ? String.format(Locale.ROOT, "%.4f", 4130 + r * 0.0001 % 20) : "NaN");
-            b.append(' ').append(fix ? String.format(Locale.ROOT, "%.4f", -7040 - r * 0.00013 % 15) : "NaN");
-            b.append(' ').append(String.format(Locale.ROOT, "%.2f", Math.abs(Math.sin(r / 200.0)) * 900));
-            for (int i = 4; i < sensors; i++) {
-                b.append(' ');
-                if (rnd.nextDouble() < fill) {
-                    b.append(rnd.nextInt(1_000_000) / 1000.0);
-                } else {
-                    b.append("NaN");
-                }
-            }
-            b.append(" \n");
-        }
-        return b.toString().getBytes(StandardCharsets.US_ASCII);
     }
 }
