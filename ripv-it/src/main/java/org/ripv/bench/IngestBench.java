@@ -61,7 +61,8 @@ import org.ripv.services.ingest.DbaReader;
  * Options: {@code --runs N} (default 2, of the 100,000-row file), {@code --wide-runs N} (default 7: a run of the
  * 2,136-sensor file takes about a second, and a median of two is at the mercy of a shared machine),
  * {@code --track-runs N} (default 3), {@code --rows N} (rows of the long file and positions of the track, default
- * 100,000), {@code --only wide|long|track}
+ * 100,000), {@code --wide-sensors N} (sensors of the wide file, default 2,136, as a real glider's; {@code --short}
+ * takes fewer: the same path, a smaller file), {@code --only wide|long|track}
  * (one part; {@code --track-only} is {@code --only track}).
  */
 public final class IngestBench {
@@ -79,6 +80,10 @@ public final class IngestBench {
         int wideRuns = intOption(args, "--wide-runs", Math.max(runs, 7));
         int trackRuns = intOption(args, "--track-runs", 3);
         int rows = intOption(args, "--rows", 100_000);
+        int wideSensors = intOption(args, "--wide-sensors", 2136);
+        if (wideSensors < 4 || wideSensors > 10_000) {
+            throw new IllegalArgumentException("--wide-sensors must be 4 to 10000 (time, position and depth come first), not " + wideSensors);
+        }
         String only = Arrays.asList(args).contains("--track-only") ? "track" : stringOption(args, "--only", "all");
         if (!List.of("all", "wide", "long", "track").contains(only)) {
             throw new IllegalArgumentException("--only wide, long or track, not " + only);
@@ -89,7 +94,7 @@ public final class IngestBench {
                 DatabaseTarget db = EmbeddedDatabase.prepare(dir.resolve("database"), "TTY1");
                 track(dir, db, new QueryLimits(200_000, 600, 64L * 1024 * 1024), trackRuns, rows);
             } else {
-                run(dir, runs, wideRuns, trackRuns, only, rows);
+                run(dir, runs, wideRuns, trackRuns, only, rows, wideSensors);
             }
         } finally {
             deleteTree(dir);
@@ -97,7 +102,8 @@ public final class IngestBench {
         return 0;
     }
 
-    private static void run(Path dir, int runs, int wideRuns, int trackRuns, String only, int rows) throws Exception {
+    private static void run(Path dir, int runs, int wideRuns, int trackRuns, String only, int rows, int wideSensors)
+            throws Exception {
         DatabaseTarget db = EmbeddedDatabase.prepare(dir.resolve("database"), "TTY1");
         QueryLimits limits = new QueryLimits(200_000, 600, 64L * 1024 * 1024);
         DatabaseServer local = new DatabaseServer("localhost", List.of(db), limits);
@@ -107,15 +113,17 @@ public final class IngestBench {
         System.out.printf(Locale.ROOT, "IngestBench: embedded Derby, %d run(s) of the wide file, %d of the long one, %s%n",
                 wideRuns, runs,
                 System.getProperty("java.vm.name") + " " + System.getProperty("java.version"));
-        byte[] wide = only.equals("long") ? null : SyntheticDba.generate("wide", 2136, 140, 0.03, false, 1);
+        byte[] wide = only.equals("long") ? null : SyntheticDba.generate("wide", wideSensors, 140, 0.03, false, 1);
         byte[] long30 = only.equals("wide") ? null : SyntheticDba.generate("long", 30, rows, 0.5, false, 2);
         System.out.printf(Locale.ROOT, "%-34s %9s %10s %10s %12s %7s%n", "file", "values", "ingest ms", "direct ms",
                 "ingest v/s", "ratio");
         try (Connection c = DriverManager.getConnection(db.url(), db.user(), db.password())) {
-            ingest(local, replies, "warm-up.mrg", SyntheticDba.generate("warmup", 40, 2000, 0.5, false, 3)); // creates the schema too
+            // creates the schema too; no larger than the measured file (--short runs 500 rows)
+            ingest(local, replies, "warm-up.mrg", SyntheticDba.generate("warmup", 40, Math.min(2000, rows), 0.5, false, 3));
             clear(c);
             if (wide != null) {
-                measure(c, local, replies, "2,136 sensors, 1.2 MB", wide, wideRuns);
+                measure(c, local, replies, String.format(Locale.ROOT, "%,d sensors, %.2f MB", wideSensors, wide.length / 1e6),
+                        wide, wideRuns);
             }
             if (long30 != null) {
                 measure(c, local, replies, String.format(Locale.ROOT, "30 sensors, %,d rows", rows), long30, runs);
