@@ -121,8 +121,8 @@ public final class DacBench {
             }
             System.out.printf(Locale.ROOT, "the floor's %d files are the path's byte for byte (%d bytes a file on average)%n",
                     pathFiles.size(), bytes / Math.max(1, pathFiles.size()));
-            deleteTree(first);
-            deleteTree(firstFloor);
+            BenchTools.deleteTree(first);
+            BenchTools.deleteTree(firstFloor);
             // The JIT's warm-up, for both: rounds of the path and the floor until a round leaves the
             // compilers next to nothing new to compile (code run once per profile reaches C2 only
             // after thousands of profiles; compiled during the timed runs, it was counted against
@@ -133,13 +133,13 @@ public final class DacBench {
             while (warm < (shortRun ? 1 : 60)) {
                 Path wp = Files.createDirectory(dir.resolve("warm-path"));
                 path(seg, writer, wp);
-                deleteTree(wp);
+                BenchTools.deleteTree(wp);
                 Path wf = Files.createDirectory(dir.resolve("warm-floor"));
                 floor(contents, wf);
-                deleteTree(wf);
+                BenchTools.deleteTree(wf);
                 Path wc = Files.createDirectory(dir.resolve("warm-checked"));
                 checked(seg, writer, checker, wc);
-                deleteTree(wc);
+                BenchTools.deleteTree(wc);
                 warm++;
                 long compiled = jit.getTotalCompilationTime();
                 if (shortRun || (warm >= 5 && compiled - compiledBefore <= 5)) {
@@ -185,9 +185,9 @@ public final class DacBench {
                 int nc = checked(seg, writer, checker, cd);
                 cpuChecked += k.cpuNanos();
                 nChecked += nc;
-                deleteTree(pd);
-                deleteTree(fd);
-                deleteTree(cd);
+                BenchTools.deleteTree(pd);
+                BenchTools.deleteTree(fd);
+                BenchTools.deleteTree(cd);
                 ratios[r] = wall / fwall;
                 bestPath = Math.max(bestPath, 1 / wall);
                 bestFloor = Math.max(bestFloor, 1 / fwall);
@@ -217,7 +217,7 @@ public final class DacBench {
             System.out.println(CpuClock.ratioLine("DAC profile file", cpuPath / 1e3 / nPath, cpuFloor / 1e3 / nFloor, median));
             System.out.println(CpuClock.machineLine());
         } finally {
-            deleteTree(dir);
+            BenchTools.deleteTree(dir);
         }
         return 0;
     }
@@ -226,15 +226,6 @@ public final class DacBench {
     private static int floorIndex(Path f) {
         String n = f.getFileName().toString();
         return Integer.parseInt(n.substring("profile-".length(), n.length() - ".nc".length()));
-    }
-
-    /** Deletes a folder of files (and folders of files) this benchmark wrote. */
-    private static void deleteTree(Path dir) throws java.io.IOException {
-        try (var s = Files.walk(dir)) {
-            for (Path p : s.sorted(java.util.Comparator.reverseOrder()).toList()) {
-                Files.deleteIfExists(p);
-            }
-        }
     }
 
     /** The product's path from decoded data: split, derive, QC, write each profile's file. */
