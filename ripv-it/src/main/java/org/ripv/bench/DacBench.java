@@ -157,7 +157,7 @@ public final class DacBench {
             // wall as the median of the runs' ratios.
             long cpuPath = 0, cpuFloor = 0, threadPath = 0, threadFloor = 0, nPath = 0, nFloor = 0;
             double bytesPath = 0, bytesFloor = 0;
-            long cpuChecked = 0, nChecked = 0;
+            long cpuChecked = 0, nChecked = 0, userPath = 0, userFloor = 0;
             double[] ratios = new double[runs];
             double bestPath = 0, bestFloor = 0;
             ThreadMXBean mx = ManagementFactory.getThreadMXBean();
@@ -165,19 +165,23 @@ public final class DacBench {
                 Path pd = Files.createDirectory(dir.resolve("path-" + r));
                 Path fd = Files.createDirectory(dir.resolve("floor-" + r));
                 long t0 = mx.getCurrentThreadCpuTime();
+                long u0 = mx.getCurrentThreadUserTime();
                 CpuClock c = CpuClock.start();
                 int profiles = path(seg, writer, pd);
                 double wall = c.wallNanos() / 1e9 / profiles;
                 cpuPath += c.cpuNanos();
                 threadPath += mx.getCurrentThreadCpuTime() - t0;
+                userPath += mx.getCurrentThreadUserTime() - u0;
                 bytesPath += c.bytesAllocatedPer(1);
                 nPath += profiles;
                 long t1 = mx.getCurrentThreadCpuTime();
+                long u1 = mx.getCurrentThreadUserTime();
                 CpuClock f = CpuClock.start();
                 int n = floor(contents, fd);
                 double fwall = f.wallNanos() / 1e9 / n;
                 cpuFloor += f.cpuNanos();
                 threadFloor += mx.getCurrentThreadCpuTime() - t1;
+                userFloor += mx.getCurrentThreadUserTime() - u1;
                 bytesFloor += f.bytesAllocatedPer(1);
                 nFloor += n;
                 Path cd = Files.createDirectory(dir.resolve("checked-" + r));
@@ -211,6 +215,10 @@ public final class DacBench {
                     + " process CPU (the collector, the JIT): %.1f us against %.1f us; allocated %.0f KiB against %.0f KiB a profile%n",
                     threadPath / 1e3 / nPath, threadFloor / 1e3 / nFloor, (threadPath / (double) nPath) / (threadFloor / (double) nFloor),
                     (cpuPath - threadPath) / 1e3 / nPath, (cpuFloor - threadFloor) / 1e3 / nFloor, bytesPath / 1024 / nPath, bytesFloor / 1024 / nFloor);
+            // Creating a file costs the kernel more than either's Java work on ext4: its user time alone is the Java side's ratio.
+            System.out.printf(Locale.ROOT, "the writing thread's user time (the Java side, without the kernel's file creation and writing): %.1f us"
+                    + " against %.1f us (%.2f×)%n", userPath / 1e3 / nPath, userFloor / 1e3 / nFloor,
+                    (userPath / (double) nPath) / (userFloor / (double) nFloor));
             System.out.printf(Locale.ROOT, "as a deployment makes them, each file also read back and checked against the template"
                     + " before it takes its name (the floor does not check): %.1f us CPU a profile, %.2f× the floor's (reported, not the target)%n",
                     cpuChecked / 1e3 / nChecked, (cpuChecked / (double) nChecked) / (cpuFloor / (double) nFloor));
