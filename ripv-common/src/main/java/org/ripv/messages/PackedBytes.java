@@ -64,6 +64,22 @@ final class PackedBytes {
             size += b.length;
         }
 
+        /** Appends bytes already in this layout (a {@link PackedRows}' cells), unchanged. */
+        void writeRaw(byte[] b, int from, int to) {
+            ensure(to - from);
+            System.arraycopy(b, from, buf, size, to - from);
+            size += to - from;
+        }
+
+        int size() {
+            return size;
+        }
+
+        /** The bytes written so far, in an array that may be longer: read only its first {@link #size()}. */
+        byte[] buffer() {
+            return buf;
+        }
+
         byte[] toArray() {
             return Arrays.copyOf(buf, size);
         }
@@ -72,16 +88,33 @@ final class PackedBytes {
     static final class Reader {
         private final byte[] buf;
         private final String what;
+        private final int end;
         private int pos;
 
         /** @param what names the value in errors ("packed table") */
         Reader(byte[] buf, String what) {
+            this(buf, 0, buf.length, what);
+        }
+
+        /** Reads {@code buf[from..to)}. */
+        Reader(byte[] buf, int from, int to, String what) {
             this.buf = buf;
+            this.pos = from;
+            this.end = to;
             this.what = what;
         }
 
         int remaining() {
-            return buf.length - pos;
+            return end - pos;
+        }
+
+        /** Where the next read starts in the array. */
+        int position() {
+            return pos;
+        }
+
+        byte[] array() {
+            return buf;
         }
 
         private void need(int n) throws InvalidObjectException {
@@ -128,6 +161,18 @@ final class PackedBytes {
             String s = new String(buf, pos, len, StandardCharsets.UTF_8);
             pos += len;
             return s;
+        }
+
+        /** Checks a string's length against the bytes present and steps over it, building nothing. */
+        void skipString() throws InvalidObjectException {
+            int len = readInt();
+            if (len == -1) {
+                return;
+            }
+            if (len < 0 || len > remaining()) {
+                throw new InvalidObjectException(what + " string length " + len + " does not fit its data");
+            }
+            pos += len;
         }
     }
 }
