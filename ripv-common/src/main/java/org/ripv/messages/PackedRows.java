@@ -2,6 +2,7 @@ package org.ripv.messages;
 
 import java.io.InvalidObjectException;
 import java.util.AbstractList;
+import java.util.Arrays;
 import java.util.Objects;
 import java.util.RandomAccess;
 
@@ -63,9 +64,11 @@ public final class PackedRows extends AbstractList<String[]> implements RandomAc
         return to - from;
     }
 
-    /** Appends the packed cells as they are. */
-    void writeCells(PackedBytes.Writer w) {
-        w.writeRaw(buf, from, to);
+    /** What {@code head} holds followed by the packed cells as they are, in an array of exactly that size. */
+    byte[] after(PackedBytes.Writer head) {
+        byte[] out = Arrays.copyOf(head.buffer(), head.size() + bytes());
+        System.arraycopy(buf, from, out, head.size(), bytes());
+        return out;
     }
 
     @Override

@@ -27,7 +27,8 @@ final class PackedTable implements Serializable {
     private final byte[] data;
 
     PackedTable(TableResult t) {
-        int cells = t.rows() instanceof PackedRows packed ? packed.bytes() : t.rows().size() * Math.max(1, t.columns().size()) * 12;
+        boolean packed = t.rows() instanceof PackedRows;
+        int cells = packed ? 0 : t.rows().size() * Math.max(1, t.columns().size()) * 12;
         PackedBytes.Writer w = new PackedBytes.Writer(256 + t.query().length() * 3 + cells, "table");
         w.writeInt(VERSION);
         w.writeString(t.query());
@@ -40,13 +41,13 @@ final class PackedTable implements Serializable {
             w.writeString(c);
         }
         w.writeInt(t.rows().size());
-        if (t.rows() instanceof PackedRows packed) {
-            packed.writeCells(w); // as they came, never turned into text here
-        } else {
-            for (String[] row : t.rows()) {
-                for (String cell : row) {
-                    w.writeString(cell);
-                }
+        if (t.rows() instanceof PackedRows rows) {
+            this.data = rows.after(w); // the cells as they came, never turned into text here
+            return;
+        }
+        for (String[] row : t.rows()) {
+            for (String cell : row) {
+                w.writeString(cell);
             }
         }
         this.data = w.toArray();
