@@ -86,6 +86,11 @@ final class PackedBytes {
             return size;
         }
 
+        /** Empties the writer, keeping its array for what comes next. */
+        void clear() {
+            size = 0;
+        }
+
         /** The bytes written so far, in an array that may be longer: read only its first {@link #size()}. */
         byte[] buffer() {
             return buf;

@@ -64,8 +64,15 @@ public final class PackedRows extends AbstractList<String[]> implements RandomAc
         return to - from;
     }
 
-    /** What {@code head} holds followed by the packed cells as they are, in an array of exactly that size. */
+    /**
+     * What {@code head} holds followed by the packed cells as they are, in an array of exactly that
+     * size: the very array these rows were read from when it holds just that (a page the server
+     * sends on as it came), else a new one.
+     */
     byte[] after(PackedBytes.Writer head) {
+        if (from == head.size() && to == buf.length && Arrays.equals(buf, 0, from, head.buffer(), 0, from)) {
+            return buf; // never written to: the rows are immutable, and so is the array they came in
+        }
         byte[] out = Arrays.copyOf(head.buffer(), head.size() + bytes());
         System.arraycopy(buf, from, out, head.size(), bytes());
         return out;
@@ -142,13 +149,18 @@ public final class PackedRows extends AbstractList<String[]> implements RandomAc
             return rows;
         }
 
-        /** The rows ended so far; the builder starts empty again. */
+        /**
+         * The rows ended so far, in an array of their size; the builder starts empty again and keeps
+         * its grown buffer for the next page, so a page costs one array of its size, not a dozen
+         * doublings up to one of twice its size.
+         */
         public PackedRows build() {
             if (cells != 0) {
                 throw new IllegalStateException("a row is under way: " + cells + " of " + width + " values");
             }
-            PackedRows p = new PackedRows(width, rows, out.buffer(), 0, out.size());
-            out = new PackedBytes.Writer(Math.max(4096, out.size()), "page of rows");
+            byte[] exact = out.toArray();
+            out.clear();
+            PackedRows p = new PackedRows(width, rows, exact, 0, exact.length);
             rows = 0;
             return p;
         }

@@ -68,6 +68,17 @@ class PackedRowsTest {
         assertThat(again.truncated()).isTrue();
         assertThat(again.rows().get(0)).containsExactly(VALUES);
         assertThat(again.rows().get(1)).containsOnlyNulls();
+
+        // the server sends on the very array the page came in; a table with other columns or query gets its own
+        Field data = PackedTable.class.getDeclaredField("data");
+        data.setAccessible(true);
+        assertThat(data.get(new PackedTable(relayed))).isSameAs(data.get(new PackedTable(relayed)));
+        TableResult renamed = new TableResult("other query", relayed.columns(), relayed.types(), relayed.rows(), false);
+        assertThat(data.get(new PackedTable(renamed))).isNotSameAs(data.get(new PackedTable(relayed)));
+        TableResult back = (TableResult) PackedTableTest.roundTrip(renamed);
+        assertThat(back.query()).isEqualTo("other query");
+        assertThat(back.truncated()).isFalse();
+        assertThat(back.rows().get(0)).containsExactly(VALUES);
     }
 
     @Test
