@@ -139,15 +139,17 @@ public final class WebBench implements Callable<Integer> {
             report("1 watcher", base, base, "");
             int frame = Math.max(readers.smallestPushBytes(), 64); // one line's push (a watcher behind gets several in one)
 
+            int first = Math.min(JUDGED, watchers);
+            floor = new WebFloorRun(frame, readerThreads, rate, warmup, seconds);
+            floor.warm(first, Math.max(5, warmup + seconds / 2));
+
             List<ConsoleBench.Watch> crowd = new ArrayList<>();
             long t0 = System.nanoTime();
             // 1,000 first: the size at which the wall targets are judged (p99 ≤ 100 ms and ≤ 3× one watcher)
-            int first = Math.min(JUDGED, watchers);
             connect(readers, page, box, crowd, first, rate * (seconds + 2));
             Phase judged = run(vehicle, crowd, seconds, server);
             report(first + " watchers", judged, base, "   (targets: p99 ≤ 100 ms and ≤ 3×)");
             // The floor at the same size right away: at 1,000 it keeps up on 2 cores, at 10,000 it did not (issue 38).
-            floor = new WebFloorRun(frame, readerThreads, rate, warmup, seconds);
             floorPhase(floor, judged, first, true, "");
             Phase many = judged;
             if (watchers > first) {

@@ -60,16 +60,47 @@ final class WebFloorRun implements AutoCloseable {
         readers = new WebWatchers(readerThreads);
     }
 
+    /**
+     * Opens {@code sockets} and sends lines at the bench's rate for {@code secs} seconds, measuring
+     * nothing: a fresh JVM spends its first seconds at full rate compiling its loop. Measured right
+     * after its start on a busy machine (load 20–30), the floor was seconds behind (p50 4.6–7.1 s)
+     * where the server, running for minutes, kept up. Done before the server's crowd phase, so the
+     * floor is at least as warm as the server when either is measured.
+     */
+    void warm(int sockets, int secs) throws Exception {
+        grow(sockets);
+        send((long) secs * rate, -1);
+        Thread.sleep(1000);
+    }
+
     /** Grows the floor to {@code sockets} sockets and measures one phase at the bench's rate. */
     Result measure(int sockets) throws Exception {
-        WebBench.connect(readers, page, "floor", ws, sockets - ws.size(), rate * (seconds + 2));
+        grow(sockets);
         ws.forEach(w -> w.n.set(0));
+        long cpu = send((long) (warmup + seconds) * rate, (long) warmup * rate);
+        Thread.sleep(1000); // let the last lines arrive, as the server's phase does
+        ws.forEach(w -> w.recording = false);
+        cpu = WebBench.processCpuNanos(floor.pid()) - cpu;
+        ConsoleBench.Figures f = ConsoleBench.figures(ws);
+        return new Result(f, cpu / 1000.0 / Math.max(1, f.samples()));
+    }
+
+    private void grow(int sockets) throws Exception {
+        if (sockets > ws.size()) {
+            WebBench.connect(readers, page, "floor", ws, sockets - ws.size(), rate * (seconds + 2));
+        }
+    }
+
+    /**
+     * Sends {@code total} lines at the rate; from line {@code recordFrom} on (none when negative)
+     * the readers record, and the floor's CPU clock then is returned (0 when never).
+     */
+    private long send(long total, long recordFrom) throws Exception {
         long period = 1_000_000_000L / rate;
         long start = System.nanoTime();
-        long total = (long) (warmup + seconds) * rate;
         long cpu = 0;
         for (long i = 0; i < total; i++) {
-            if (i == (long) warmup * rate) {
+            if (i == recordFrom) {
                 ws.forEach(w -> w.recording = true);
                 cpu = WebBench.processCpuNanos(floor.pid());
             }
@@ -80,11 +111,7 @@ final class WebFloorRun implements AutoCloseable {
             lines.write("bench " + i + " " + System.nanoTime() + "\n");
             lines.flush();
         }
-        Thread.sleep(1000); // let the last lines arrive, as the server's phase does
-        ws.forEach(w -> w.recording = false);
-        cpu = WebBench.processCpuNanos(floor.pid()) - cpu;
-        ConsoleBench.Figures f = ConsoleBench.figures(ws);
-        return new Result(f, cpu / 1000.0 / Math.max(1, f.samples()));
+        return cpu;
     }
 
     @Override
