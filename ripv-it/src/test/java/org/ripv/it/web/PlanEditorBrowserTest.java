@@ -35,7 +35,8 @@ import org.junit.jupiter.api.parallel.ResourceLock;
  * pointer moves in the table too; saved, the version shows its diff against the version sent;
  * the history lists both versions; sent, the fleet's pending-changes page lists it until the
  * glider's dialog steers for the dragged waypoint. At phone size a drag moves a waypoint as well
- * and neither page scrolls sideways. Screenshots, desktop and phone, go to
+ * and neither page scrolls sideways. The fleet's map draws the glider's goto list as it runs it, at
+ * 1366×768 and 390×844, its labels apart. Screenshots, desktop and phone, go to
  * {@code target/web-screenshots/plan-*.png} and {@code changes-*.png} (and docs/images).
  */
 @ResourceLock(Shared.BROWSER)
@@ -119,6 +120,73 @@ class PlanEditorBrowserTest {
         new Actions(b).moveToElement(map, cx, cy).clickAndHold().moveByOffset(dx / 2, dy / 2).moveByOffset(dx - dx / 2, dy - dy / 2)
                 .release().perform();
         new WebDriverWait(b, Duration.ofSeconds(5)).until(d -> !String.valueOf(dragged).equals(map.getAttribute("data-dragged")));
+    }
+
+    /** The goto list the fleet map drew: each waypoint as {@code [name, n, lat, lon, x, y]} (its data-goto). */
+    private static List<List<Object>> drawnGoto(org.openqa.selenium.WebDriver b) {
+        try {
+            String json = b.findElement(By.id("map")).getAttribute("data-goto");
+            return json == null ? List.of() : new com.fasterxml.jackson.databind.ObjectMapper().readValue(json,
+                    new com.fasterxml.jackson.core.type.TypeReference<List<List<Object>>>() {});
+        } catch (com.fasterxml.jackson.core.JsonProcessingException | org.openqa.selenium.StaleElementReferenceException e) {
+            return List.of();
+        }
+    }
+
+    /** The glider's goto list on the fleet map: waypoint 0 as typed, waypoint 1 where it was dragged. */
+    private static boolean showsTheDraggedList(List<List<Object>> drawn, double lat1, double lon1) {
+        List<List<Object>> mine = drawn.stream().filter(w -> glider.equals(w.get(0))).toList();
+        return mine.size() == 2 && near(mine.get(0), 0, 41.3, -70.6) && near(mine.get(1), 1, lat1, lon1);
+    }
+
+    private static boolean near(List<Object> w, int n, double lat, double lon) {
+        return ((Number) w.get(1)).intValue() == n && Math.abs(((Number) w.get(2)).doubleValue() - lat) < 1e-4
+                && Math.abs(((Number) w.get(3)).doubleValue() - lon) < 1e-4;
+    }
+
+    /** The fleet map's labels (its data-labels boxes, the legend and the scale among them) overlap nowhere. */
+    private static void labelsApart(ChromeDriver b) throws Exception {
+        List<List<Object>> boxes = new com.fasterxml.jackson.databind.ObjectMapper().readValue(
+                b.findElement(By.id("map")).getAttribute("data-labels"), new com.fasterxml.jackson.core.type.TypeReference<>() {});
+        assertThat(boxes).extracting(x -> String.valueOf(x.get(0))).contains("glider1", "0", "1", "legend", "scale");
+        for (int i = 0; i < boxes.size(); i++) {
+            for (int j = i + 1; j < boxes.size(); j++) {
+                List<Object> p = boxes.get(i);
+                List<Object> q = boxes.get(j);
+                int[] a = {((Number) p.get(1)).intValue(), ((Number) p.get(2)).intValue(), ((Number) p.get(3)).intValue(), ((Number) p.get(4)).intValue()};
+                int[] c = {((Number) q.get(1)).intValue(), ((Number) q.get(2)).intValue(), ((Number) q.get(3)).intValue(), ((Number) q.get(4)).intValue()};
+                boolean overlap = a[0] < c[0] + c[2] - 1 && c[0] < a[0] + a[2] - 1 && a[1] < c[1] + c[3] - 1 && c[1] < a[1] + a[3] - 1;
+                assertThat(overlap).as("label %s over label %s", p, q).isFalse();
+            }
+        }
+    }
+
+    private void fleetGotoList(ChromeDriver b, WebDriverWait wait, double lat1, double lon1) throws Exception {
+        PilotConsoleBrowserTest.viewport(b, 1366, 768);
+        try {
+            b.get("https://127.0.0.1:" + http + "/fleet.html");
+            wait.until(d -> "true".equals(d.findElement(By.tagName("body")).getAttribute("data-ready")));
+            wait.withMessage(() -> "the fleet map's goto lists: " + drawnGoto(b)).until(d -> showsTheDraggedList(drawnGoto(d), lat1, lon1));
+            WebElement map = b.findElement(By.id("map"));
+            for (List<Object> w : drawnGoto(b)) { // drawn inside the map
+                assertThat(((Number) w.get(4)).intValue()).isBetween(0, map.getRect().getWidth());
+                assertThat(((Number) w.get(5)).intValue()).isBetween(0, map.getRect().getHeight());
+            }
+            assertThat(map.getAttribute("data-legend")).isEqualTo("GPS, dead-reckoned, goto list");
+            labelsApart(b);
+            b.executeScript("arguments[0].scrollIntoView({block: 'center'})", map);
+            Files.write(shots.resolve("fleet-goto-desktop.png"), b.getScreenshotAs(OutputType.BYTES));
+            PilotConsoleBrowserTest.viewport(b, 390, 844);
+            // drawn again at the phone's width
+            wait.until(d -> d.findElement(By.id("map")).getRect().getWidth() < 390 && showsTheDraggedList(drawnGoto(d), lat1, lon1)
+                    && drawnGoto(d).stream().allMatch(w -> ((Number) w.get(4)).intValue() < 390));
+            PilotConsoleBrowserTest.noSidewaysScrolling(b);
+            labelsApart(b);
+            b.executeScript("arguments[0].scrollIntoView({block: 'center'})", b.findElement(By.id("map")));
+            Files.write(shots.resolve("fleet-goto-phone.png"), b.getScreenshotAs(OutputType.BYTES));
+        } finally {
+            b.executeCdpCommand("Emulation.clearDeviceMetricsOverride", java.util.Map.of());
+        }
     }
 
     @Test
@@ -232,6 +300,10 @@ class PlanEditorBrowserTest {
             b.get("https://127.0.0.1:" + http + "/vehicle.html?m=" + java.net.URLEncoder.encode(glider, StandardCharsets.UTF_8));
             wait.withMessage(() -> "the vehicle's track map: " + b.findElement(By.id("track")).getAttribute("data-plan-waypoints"))
                     .until(d -> "2".equals(d.findElement(By.id("track")).getAttribute("data-plan-waypoints")));
+            // The fleet's map draws the goto list each glider runs as well (the same ?plan current, PlanModel and
+            // gliderLayer): the dragged list, once in effect, at a desk's size and a phone's, with its legend entry
+            // and no label over another.
+            fleetGotoList(b, wait, Double.parseDouble(movedLat), Double.parseDouble(movedLon));
             b.get("https://127.0.0.1:" + http + "/plan.html?m=" + java.net.URLEncoder.encode(glider, StandardCharsets.UTF_8));
             wait.until(d -> "true".equals(d.findElement(By.tagName("body")).getAttribute("data-ready")));
             wait.withMessage(() -> "changes: " + text(b, "changes")).until(d ->

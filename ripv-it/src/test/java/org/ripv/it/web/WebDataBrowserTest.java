@@ -27,7 +27,8 @@ import org.junit.jupiter.api.parallel.ResourceLock;
  * ingests a Slocum file through the same page, sees its positions in the data page's view and
  * draws {@code vis:track} as a chart whose CSV is the positions; a user whose permit rules allow
  * only the views gets no SQL box, and the server refuses their SQL when the page is bypassed. With
- * {@code --map-tiles} the fleet's map is Leaflet (from the WebJar) asking the given tile host.
+ * {@code --map-tiles} the fleet's map is Leaflet (from the WebJar) asking the given tile host, and draws
+ * the call records' layers and a goto list there (its numbers apart, with a legend).
  */
 @ResourceLock(Shared.BROWSER)
 class WebDataBrowserTest {
@@ -162,6 +163,39 @@ class WebDataBrowserTest {
                     + " done(d.dataset.points + ' ' + d.dataset.arrows + ' ' + d.dataset.waypoints + ' '"
                     + "  + d.querySelectorAll('path.leaflet-interactive').length); });", TILES);
             assertThat(String.valueOf(drawn)).as("points arrows waypoints paths").startsWith("2 1 1 ");
+            // The goto list a glider runs on tiles (what the fleet page hands over from ?plan current): numbered squares on
+            // a dashed line, a legend entry, and of two waypoints a few metres apart one number hidden, not drawn over the other.
+            Object gotoList = b.executeAsyncScript("const done = arguments[arguments.length - 1];"
+                    + "import('/tilemap.js').then((m) => { const c = document.createElement('canvas'); c.id = 'goto-test';"
+                    + " document.body.append(c); const draw = m.tileMap(c, arguments[0]);"
+                    + " const fixes = [{ lat: 41.60, lon: -70.60, t: 1, gps: true }, { lat: 41.65, lon: -70.55, t: 2, gps: false }];"
+                    + " const goto = { waypoints: [{ n: 0, lat: 41.70, lon: -70.50 }, { n: 1, lat: 41.75, lon: -70.41 },"
+                    + "  { n: 2, lat: 41.7501, lon: -70.4101 }], heading: { lat: 41.75, lon: -70.41 } };"
+                    + " const d = document.getElementById('goto-test'); d.style.height = '450px';" // the fleet's CSS sizes only #map
+                    + " window.dispatchEvent(new Event('resize'));" // Leaflet measures its box again
+                    + " setTimeout(() => draw([{ name: 'ru29', track: fixes, goto }]), 200);"
+                    + " setTimeout(() => {" // after the fit's zoom and move
+                    + "  done([d.dataset.goto, d.dataset.labels, d.querySelector('.map-legend').textContent,"
+                    + "   d.querySelectorAll('.goto-icon').length, d.querySelectorAll('.leaflet-tooltip.goto-label.covered').length,"
+                    + "   d.querySelectorAll('.leaflet-tooltip.goto-label:not(.covered)').length]); }, 1500); });", TILES);
+            List<?> g = (List<?>) gotoList;
+            assertThat(String.valueOf(g.get(0))).isEqualTo("[[\"ru29\",0,41.7,-70.5],[\"ru29\",1,41.75,-70.41],[\"ru29\",2,41.7501,-70.4101]]");
+            assertThat(String.valueOf(g.get(2))).contains("GPS").contains("dead-reckoned").contains("goto list");
+            assertThat(((Number) g.get(3)).intValue()).as("squares").isEqualTo(3);
+            assertThat(((Number) g.get(4)).intValue()).as("numbers hidden under another").isEqualTo(1);
+            assertThat(((Number) g.get(5)).intValue()).as("numbers shown").isEqualTo(2);
+            List<List<Number>> shown = new com.fasterxml.jackson.databind.ObjectMapper().readValue(String.valueOf(g.get(1)),
+                    new com.fasterxml.jackson.core.type.TypeReference<>() {});
+            assertThat(shown).hasSize(3); // the vehicle's name and two numbers
+            for (int i = 0; i < shown.size(); i++) {
+                for (int j = i + 1; j < shown.size(); j++) {
+                    List<Number> p = shown.get(i);
+                    List<Number> q = shown.get(j);
+                    assertThat(p.get(0).intValue() < q.get(0).intValue() + q.get(2).intValue() && q.get(0).intValue() < p.get(0).intValue() + p.get(2).intValue()
+                            && p.get(1).intValue() < q.get(1).intValue() + q.get(3).intValue() && q.get(1).intValue() < p.get(1).intValue() + p.get(3).intValue())
+                            .as("label %s over label %s", p, q).isFalse();
+                }
+            }
         } finally {
             b.quit();
         }

@@ -15,7 +15,10 @@ import java.time.format.DateTimeParseException;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
+import java.util.TreeSet;
 import java.util.stream.Stream;
 import org.ripv.files.PrivateFiles;
 import org.slf4j.Logger;
@@ -32,7 +35,8 @@ import org.slf4j.LoggerFactory;
  * DATA/notify/subscriptions.jsonl                      notification subscriptions
  * DATA/audit/YYYY-MM-DD.log                            the audit trail: TIME LEVEL event key=value ...
  * DATA/surfacings/KEY.jsonl                            call records, one JSON line per surfacing
- * DATA/surfacings/KEY.mailbox                          the MailBox address those records are of
+ * DATA/surfacings/KEY.mailbox                          the MailBox address those records are of (records kept
+ *                                                      before it was written: found from the transcripts, then written)
  * </pre>
  * Documents are written whole through a temporary file and an atomic move. Directories are made
  * when first written.
@@ -162,15 +166,39 @@ public final class EmbeddedStateStore implements StateStore {
             if (!Files.isDirectory(surfacings())) {
                 return out;
             }
+            Set<String> unnamed = new TreeSet<>(); // records kept before KEY.mailbox was written beside them
             try (Stream<Path> files = Files.list(surfacings())) {
-                for (Path p : (Iterable<Path>) files.filter(p -> p.getFileName().toString().endsWith(".mailbox"))::iterator) {
-                    if (Files.size(p) <= 1000) {
+                for (Path p : (Iterable<Path>) files::iterator) {
+                    String file = p.getFileName().toString();
+                    if (file.endsWith(".mailbox") && Files.size(p) <= 1000) {
                         out.add(Files.readString(p, StandardCharsets.UTF_8).strip());
+                    } else if (file.endsWith(".jsonl") && !Files.exists(p.resolveSibling(stem(file) + ".mailbox"))) {
+                        unnamed.add(stem(file));
                     }
+                }
+            }
+            if (!unnamed.isEmpty()) {
+                Map<String, String> owners = OlderCallRecords.owners(layout.transcripts(), unnamed);
+                for (Map.Entry<String, String> o : owners.entrySet()) {
+                    out.add(o.getValue());
+                    try { // named from now on: the next start need not look
+                        DataFiles.write(surfacings().resolve(o.getKey() + ".mailbox"), o.getValue());
+                    } catch (IOException e) {
+                        log.warn("could not name the call records {}.jsonl: {}", o.getKey(), e.toString());
+                    }
+                }
+                unnamed.removeAll(owners.keySet());
+                if (!unnamed.isEmpty()) {
+                    log.warn("no transcript names the MailBox of the call records {} in {}: each is read again from its vehicle's next call",
+                            unnamed.stream().map(k -> k + ".jsonl").toList(), surfacings());
                 }
             }
             return out;
         }
+    }
+
+    private static String stem(String file) {
+        return file.substring(0, file.lastIndexOf('.'));
     }
 
     /** The last {@code n} non-empty lines of a file, holding no more than n in memory. */

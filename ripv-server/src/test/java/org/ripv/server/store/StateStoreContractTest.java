@@ -225,6 +225,40 @@ class StateStoreContractTest {
                 .isInstanceOf(IllegalArgumentException.class);
     }
 
+    /**
+     * Records kept before the store wrote {@code KEY.mailbox} beside them (issue 35's caveat): a
+     * restarted server still knows whose they are, from the transcripts, and names them for next time.
+     */
+    @Test
+    void callRecordsKeptBeforeTheirMailboxFileAreFoundFromTheTranscripts() throws Exception {
+        StateStore s = open(Kind.EMBEDDED);
+        String c = "<SerialPortServer>::<shore>no-transcript";
+        String d = "<SerialPortServer>::<shore>huge-line";
+        for (String m : List.of(A, B, c, d)) {
+            s.appendSurfacing(m, T0, "{\"n\":1}", 10);
+        }
+        s.appendTranscript(List.of(line(T0, A, "call"), line(T0 + 1, B, "call")));
+        // a hostile transcript whose first line names its MailBox only after a megabyte
+        s.appendTranscript(List.of(new TranscriptLine(d, T0, "{\"time\":\"" + Instant.ofEpochMilli(T0) + "\",\"text\":\""
+                + "x".repeat(1 << 20) + "\",\"mailbox\":\"" + d + "\"}")));
+        Path records = dataDir.resolve("surfacings");
+        try (var files = Files.list(records)) { // as the version before wrote them: records only
+            for (Path p : files.filter(p -> p.toString().endsWith(".mailbox")).toList()) {
+                Files.delete(p);
+            }
+        }
+        s = reopen(Kind.EMBEDDED, s);
+        assertThat(s.surfacingMailboxes()).containsExactlyInAnyOrder(A, B);
+        assertThat(s.lastSurfacings(A, 3)).containsExactly("{\"n\":1}");
+        try (var files = Files.list(records)) { // named now: the next start reads them without looking
+            assertThat(files.filter(p -> p.toString().endsWith(".mailbox")).count()).isEqualTo(2);
+        }
+        s = reopen(Kind.EMBEDDED, s);
+        assertThat(s.surfacingMailboxes()).containsExactlyInAnyOrder(A, B);
+        s.appendSurfacing(c, T0 + 1, "{\"n\":2}", 10); // its next call names it
+        assertThat(s.surfacingMailboxes()).containsExactlyInAnyOrder(A, B, c);
+    }
+
     @ParameterizedTest
     @EnumSource(Kind.class)
     void subscriptionsAreOneDocument(Kind kind) throws Exception {

@@ -209,4 +209,38 @@ class SurfacingsTest {
         assertThat(events).filteredOn(e -> e.event() == VehicleEvent.OVERDUE).singleElement().extracting(ConsoleEntry::text)
                 .asString().contains("expected every 1 s (learned from its last 2 intervals) + 0 s grace");
     }
+
+    /**
+     * Records kept before the store wrote {@code KEY.mailbox} (issue 35's caveat): after an upgrade
+     * the restarted server finds whose they are from the vehicle's transcript, so the interval it
+     * learned still makes the silent vehicle OVERDUE.
+     */
+    @Test
+    void recordsKeptBeforeTheirMailboxFileStillTeachTheIntervalAfterARestart() throws Exception {
+        Files.writeString(data.resolve("surfacing-alerts.conf"), "* overdue.grace 500ms\n");
+        start();
+        long now = System.currentTimeMillis();
+        for (int i = 3; i > 0; i--) {
+            call("fw7-surface-interval.txt", now - i * 1000L);
+        }
+        // the server's transcript of those calls, as it writes one for every vehicle
+        store.appendTranscript(List.of(new org.ripv.server.store.StateStore.TranscriptLine(RU29, now - 3000,
+                "{\"time\":\"" + java.time.Instant.ofEpochMilli(now - 3000) + "\",\"mailbox\":\"" + RU29
+                        + "\",\"kind\":\"EVENT\",\"event\":\"SURFACED\",\"text\":\"call\"}")));
+        surfacings.close();
+        store.close();
+        try (var files = Files.list(data.resolve("surfacings"))) { // as the version before kept them: no KEY.mailbox
+            for (Path p : files.filter(p -> p.toString().endsWith(".mailbox")).toList()) {
+                Files.delete(p);
+            }
+        }
+        events.clear();
+        start();
+        long end = System.nanoTime() + Duration.ofSeconds(10).toNanos();
+        while (events.stream().noneMatch(e -> e.event() == VehicleEvent.OVERDUE) && System.nanoTime() < end) {
+            Thread.sleep(50);
+        }
+        assertThat(events).filteredOn(e -> e.event() == VehicleEvent.OVERDUE).singleElement().extracting(ConsoleEntry::text)
+                .asString().contains("expected every 1 s (learned from its last 2 intervals) + 0 s grace");
+    }
 }

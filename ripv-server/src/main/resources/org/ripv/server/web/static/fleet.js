@@ -1,10 +1,13 @@
 // The fleet: every MailBox with its call state, live; each vehicle's whole track on the map — the fixes of its transcript
-// (30 days, as the public view shows) and the positions the DatabaseServer holds (GPS and dead-reckoned).
+// (30 days, as the public view shows) and the positions the DatabaseServer holds (GPS and dead-reckoned); and the goto
+// list each glider runs (`?plan MAILBOX current`, the vehicle page's and the plan page's PlanModel and gliderLayer).
 import { session, PostOffice, bar } from './postoffice.js';
 import { ago, utc } from './time.js';
 import { drawMap, currentLayer, waypointLayer, colour } from './map.js';
 import { labels, vehicleName } from './names.js';
 import { surfacings, abort, nextCallShort, trackFixes, waypointShort } from './surfacing.js';
+import { PlanModel } from './plan-model.js';
+import { gliderLayer } from './plan-layers.js';
 
 const s = await session();
 bar(s);
@@ -21,6 +24,7 @@ export const POSITIONS = 'SELECT * FROM positions ORDER BY time_utc DESC FETCH F
 const drawTracks = s.mapTiles ? (await import('./tilemap.js')).tileMap(mapBox, s.mapTiles)
   : (list, focus) => drawMap(mapBox, list, list.flatMap((v, i) => v.layers ? v.layers(colour(i)) : []), focus);
 const calls = new Map(); // address -> { records, outlook } of its call records (?surfacings --outlook)
+const plans = new Map(); // address -> PlanModel: the goto list it runs (?plan MAILBOX current)
 const focus = document.getElementById('map-focus'); // the vehicle the map is fitted to: a fleet may be oceans apart
 
 function row(address, v, label) {
@@ -81,10 +85,14 @@ function mapVehicles() {
     const wpt = o?.wpt_lat == null ? null : { lat: o.wpt_lat, lon: o.wpt_lon };
     const from = o?.fix_lat == null ? null : { lat: o.fix_lat, lon: o.fix_lon };
     const currents = fixes.filter((p) => p.current_e != null);
-    // layers for the offline map; currents and waypoint as data for the tile map, which draws them with Leaflet
-    return { name: a, track: [...v.track, ...fixes, ...(database.get(vehicleName(a).toLowerCase()) || [])], also: wpt ? [wpt] : [],
-      currents, waypoint: wpt ? { from, to: wpt, words: waypointShort(o) } : null,
-      layers: (c) => [currentLayer(currents, c), ...(wpt ? [waypointLayer(from, wpt, waypointShort(o), c)] : [])] };
+    const plan = plans.get(a);
+    const goto = plan ? plan.current.waypoints.map((p) => ({ lat: p.lat, lon: p.lon })) : [];
+    // layers for the offline map; currents, waypoint and goto list as data for the tile map, which draws them with Leaflet
+    return { name: a, track: [...v.track, ...fixes, ...(database.get(vehicleName(a).toLowerCase()) || [])], also: [...(wpt ? [wpt] : []), ...goto],
+      currents, waypoint: wpt ? { from, to: wpt, words: waypointShort(o) } : null, goto: plan?.current.waypoints.length ? plan.current : null,
+      // the goto list under the rest; its fix and leg are the waypoint layer's dashed line already
+      layers: (c) => [...(plan ? [gliderLayer(plan, { colour: c, name: a, leg: false })] : []), currentLayer(currents, c),
+        ...(wpt ? [waypointLayer(from, wpt, waypointShort(o), c)] : [])] };
   });
   for (const [name, fixes] of database) if (!names.has(name)) list.push({ name: fixes.label, track: fixes });
   return list;
@@ -125,10 +133,19 @@ function takeStatus(m) {
   vehicles.set(m.address, v);
 }
 
-/** The vehicle's call records and outlook, asked again when its call's events come (the record is kept as its dialog ends). */
+/**
+ * The vehicle's call records and outlook, and the goto list it runs, asked again when its call's events come (the
+ * record is kept as its dialog ends; a PLAN_CHANGE may put a new list in effect).
+ */
 async function loadCalls(address) {
-  const d = await surfacings(po, address);
+  const [d, plan] = await Promise.all([surfacings(po, address),
+    po.send('', `?plan ${address} current`).catch((e) => ({ status: 'ERROR', text: String(e) }))]);
   if (!d.error) calls.set(address, d);
+  if (plan.status !== 'ERROR' && plan.result?.rows) {
+    const model = plans.get(address) || new PlanModel();
+    model.setCurrent(plan.result.rows, (plan.text || '').split('\n')[0]);
+    plans.set(address, model);
+  }
 }
 const asking = new Map();
 function callsSoon(address) {

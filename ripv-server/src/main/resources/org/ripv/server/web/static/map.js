@@ -8,7 +8,10 @@ import { prepareCanvas } from './canvas.js';
 // `focus` names the vehicle the map is fitted to (the others still drawn where they fall); none: every vehicle.
 // A vehicle's `also` (places, not fixes: its waypoint) are kept in view but not drawn as its track.
 // currentLayer and waypointLayer are the call records' layers (docs/surfacings.md#on-the-map); each counts what it drew
-// on the canvas (data-arrows, data-waypoints), reset at every drawing.
+// on the canvas (data-arrows, data-waypoints), reset at every drawing, as are plan-layers.js's data-plan-waypoints
+// and data-goto. Every label goes through placeLabel, which keeps it off every other label, the legend and the scale:
+// the boxes it placed are the canvas's data-labels. A layer with a `legend` ([{ text, mark(g, x, y) }]) adds those
+// entries to the legend.
 
 /** A fix in one form: [lat, lon] pairs are GPS fixes. */
 export function fix(p) {
@@ -35,10 +38,14 @@ export function drawMap(canvas, vehicles, layers = [], focus = '') {
   }
   const k = Math.max(0.05, Math.cos((((minLat + maxLat) / 2) * Math.PI) / 180));
   const spanLat = Math.max(0.01, maxLat - minLat) * 1.3, spanLon = Math.max(0.01, maxLon - minLon) * 1.3;
-  const perDegree = Math.min(h / spanLat, w / (spanLon * k)); // pixels per degree of latitude
+  // The legend and the scale take the map's foot: what is fitted goes above them. The scale bar is at most a third of
+  // the width, so the legend laid out in the rest takes at least as many rows as it will beside the real bar.
+  const entries = [...LEGEND, ...layers.flatMap((l) => l.legend || [])].filter((e, i, all) => all.findIndex((o) => o.text === e.text) === i);
+  const top = h - legendBox(g, entries, h, w * 0.6).h - 10;
+  const perDegree = Math.min(top / spanLat, w / (spanLon * k)); // pixels per degree of latitude
   const midLat = (minLat + maxLat) / 2, midLon = (minLon + maxLon) / 2;
   const x = (lon) => w / 2 + (lon - midLon) * k * perDegree;
-  const y = (lat) => h / 2 - (lat - midLat) * perDegree;
+  const y = (lat) => top / 2 - (lat - midLat) * perDegree;
 
   // Grid steps by the room each axis has: a label of longitude needs about 110 px, one of latitude 60.
   const latStep = niceStep(h / perDegree / Math.max(2, Math.floor(h / 60)));
@@ -48,20 +55,24 @@ export function drawMap(canvas, vehicles, layers = [], focus = '') {
   g.fillStyle = ink('--muted', '#555');
   g.font = '13px system-ui, sans-serif';
   g.lineWidth = 1;
-  const lat0 = midLat - h / 2 / perDegree, lat1 = midLat + h / 2 / perDegree;
+  const lat0 = midLat - (h - top / 2) / perDegree, lat1 = midLat + top / 2 / perDegree;
   const lon0 = midLon - w / 2 / (k * perDegree), lon1 = midLon + w / 2 / (k * perDegree);
+  const gridLabels = []; // [text, x, baseline]: drawn last, where no other label is
   for (let lat = Math.ceil(lat0 / latStep) * latStep; lat <= lat1; lat += latStep) {
     g.beginPath(); g.moveTo(0, y(lat)); g.lineTo(w, y(lat)); g.stroke();
-    if (y(lat) > 30 && y(lat) < h - 30) g.fillText(`${lat.toFixed(digits(latStep))}°`, 4, y(lat) - 3);
+    if (y(lat) > 30 && y(lat) < h - 30) gridLabels.push([`${lat.toFixed(digits(latStep))}°`, 4, y(lat) - 3]);
   }
   for (let lon = Math.ceil(lon0 / lonStep) * lonStep; lon <= lon1; lon += lonStep) {
     g.beginPath(); g.moveTo(x(lon), 0); g.lineTo(x(lon), h); g.stroke();
     const text = `${lon.toFixed(digits(lonStep))}°`;
-    if (x(lon) + 3 + g.measureText(text).width < w - 2) g.fillText(text, x(lon) + 3, 14);
+    if (x(lon) + 3 + g.measureText(text).width < w - 2) gridLabels.push([text, x(lon) + 3, 14]);
   }
 
+  // The legend and the scale first: labels keep off them.
+  const scale = scaleBox(g, w, h, perDegree);
+  const key = legendBox(g, entries, h, scale.x - 10);
+  const placed = [{ x: scale.x, y: scale.y, w: scale.w, h: scale.h, text: 'scale' }, { x: key.x, y: key.y, w: key.w, h: key.h, text: 'legend' }];
   let gps = 0, dr = 0;
-  const placed = []; // label boxes so far: a name never covers another
   tracks.forEach((v, i) => {
     if (!v.fixes.length) return;
     const c = colour(i);
@@ -84,16 +95,59 @@ export function drawMap(canvas, vehicles, layers = [], focus = '') {
     }
     const last = fixes[fixes.length - 1];
     g.beginPath(); g.arc(x(last.lon), y(last.lat), 7, 0, 2 * Math.PI); g.fill();
-    label(g, vehicleName(v.name), x(last.lon) + 10, y(last.lat) - 8, w, ink('--card', '#fff'), c, placed);
+    // a vehicle's name must show: when every place near its fix is taken it goes further up or down
+    placeLabel(g, vehicleName(v.name), x(last.lon), y(last.lat), { w, h, placed }, { colour: c, size: 15, bold: true, gap: 10, must: true });
   });
   canvas.dataset.arrows = '0';
   canvas.dataset.waypoints = '0';
-  layers.forEach((layer) => layer(g, { x, y, w, h }));
-  legend(g, h, ink);
-  scaleBar(g, w, h, perDegree, ink);
+  canvas.dataset.planWaypoints = '0';
+  canvas.dataset.goto = '[]';
+  layers.forEach((layer) => layer(g, { x, y, w, h, placed }));
+  // the grid's degrees matter least: each only where no name, number or waypoint text is
+  g.font = '13px system-ui, sans-serif';
+  g.fillStyle = ink('--muted', '#555');
+  for (const [text, gx, base] of gridLabels) {
+    const b = { x: gx, y: base - 13, w: g.measureText(text).width, h: 16 };
+    if (!placed.some((o) => b.x < o.x + o.w && o.x < b.x + b.w && b.y < o.y + o.h && o.y < b.y + b.h)) g.fillText(text, gx, base);
+  }
+  drawLegend(g, entries, key, ink);
+  drawScale(g, scale, ink);
   canvas.dataset.points = String(points.length);
   canvas.dataset.gps = String(gps);
   canvas.dataset.dr = String(dr);
+  canvas.dataset.labels = JSON.stringify(placed.map((b) => [b.text, Math.round(b.x), Math.round(b.y), Math.round(b.w), Math.round(b.h)]));
+}
+
+/**
+ * A label near (px, py) where it covers no box in `room.placed` and stays inside the map: right of the point and above
+ * it, else below, else left; with `must`, further up and down the right side, and at last where it first wanted to be.
+ * Drawn with a halo in `style.colour`; its box is added to `room.placed` and returned (null when not drawn).
+ */
+export function placeLabel(g, text, px, py, room, style = {}) {
+  const { colour: c = '#222', size = 12, bold = true, gap = 9, must = false } = style;
+  g.save();
+  g.font = `${bold ? 'bold ' : ''}${size}px system-ui, sans-serif`;
+  const tw = g.measureText(text).width;
+  const lh = size + 3;
+  const above = py - gap + 2, below = py + gap + size - 2; // baselines
+  const spots = [[px + gap, above], [px + gap, below], [px - gap - tw, above], [px - gap - tw, below]];
+  if (must) for (let k = 1; k <= 8; k++) spots.push([px + gap, above - k * lh], [px + gap, below + k * lh]);
+  const box = ([bx, base]) => ({ x: Math.max(2, Math.min(bx, room.w - tw - 2)), y: base - size, w: tw, h: lh, text });
+  const free = (b) => b.y >= 0 && b.y + b.h <= room.h && !room.placed.some((o) => b.x < o.x + o.w && o.x < b.x + b.w && b.y < o.y + o.h && o.y < b.y + b.h);
+  let at = spots.map(box).find(free);
+  if (!at && must) {
+    at = box(spots[0]);
+    at.y = Math.max(0, Math.min(at.y, room.h - lh));
+  }
+  if (at) {
+    room.placed.push(at);
+    g.lineWidth = 3; g.strokeStyle = getComputedStyle(document.documentElement).getPropertyValue('--card').trim() || '#fff';
+    g.lineJoin = 'round';
+    g.strokeText(text, at.x, at.y + size);
+    g.fillStyle = c; g.fillText(text, at.x, at.y + size);
+  }
+  g.restore();
+  return at || null;
 }
 
 /** Pixels a current of 1 m/s is drawn long (a typical 0.1 m/s: 18 px). */
@@ -135,7 +189,7 @@ export function currentLayer(points, c = '#0b5cad') {
  * last fix, labelled with what `words` says (distance, bearing, ETA). `from`, `to`: { lat, lon }.
  */
 export function waypointLayer(from, to, words = '', c = '#9a6700') {
-  return (g, { x, y, w }) => {
+  return (g, { x, y, w, h, placed }) => {
     if (!to || to.lat == null) return;
     const tx = x(to.lon), ty = y(to.lat);
     g.save();
@@ -147,54 +201,70 @@ export function waypointLayer(from, to, words = '', c = '#9a6700') {
     }
     g.strokeRect(tx - 6, ty - 6, 12, 12);
     g.beginPath(); g.moveTo(tx - 6, ty - 6); g.lineTo(tx + 6, ty + 6); g.moveTo(tx + 6, ty - 6); g.lineTo(tx - 6, ty + 6); g.stroke();
-    if (words) {
-      g.font = '13px system-ui, sans-serif';
-      const tw = g.measureText(words).width;
-      const at = Math.max(4, Math.min(tx + 10, w - tw - 4));
-      g.lineWidth = 4; g.strokeStyle = '#fff'; g.strokeText(words, at, ty + 18);
-      g.fillStyle = c; g.fillText(words, at, ty + 18);
-    }
     g.restore();
+    if (words) placeLabel(g, words, tx, ty, { w, h, placed }, { colour: c, size: 13, bold: false, gap: 10, must: true });
     g.canvas.dataset.waypoints = String(Number(g.canvas.dataset.waypoints || 0) + 1);
   };
 }
 
-/** A name with a halo, kept inside the map and below any name it would cover. */
-function label(g, text, px, py, w, halo, c, placed) {
-  g.font = 'bold 15px system-ui, sans-serif';
-  const tw = g.measureText(text).width;
-  const at = Math.min(px, w - tw - 4);
-  let top = Math.max(18, py);
-  while (placed.some((b) => at < b.x + b.w && b.x < at + tw && Math.abs(top - b.y) < 18)) top += 18;
-  placed.push({ x: at, y: top, w: tw });
-  g.lineWidth = 4; g.strokeStyle = halo; g.strokeText(text, at, top);
-  g.fillStyle = c; g.fillText(text, at, top);
-}
+/** What every map's legend says. */
+const LEGEND = [
+  { text: 'GPS', mark: (g, x, y) => { g.beginPath(); g.arc(x + 5, y, 3.5, 0, 2 * Math.PI); g.fill(); } },
+  { text: 'dead-reckoned', mark: (g, x, y) => { g.beginPath(); g.arc(x + 5, y, 2.5, 0, 2 * Math.PI); g.stroke(); } },
+];
 
-function legend(g, h, ink) {
+/** Where the legend's entries go at the map's foot: in rows no wider than `room`, from the left. */
+function legendBox(g, entries, h, room) {
   g.font = '13px system-ui, sans-serif';
-  const y = h - 12;
-  g.fillStyle = ink('--card', '#fff'); g.globalAlpha = 0.85; g.fillRect(4, y - 14, 190, 20); g.globalAlpha = 1;
-  g.fillStyle = ink('--fg', '#222'); g.strokeStyle = ink('--fg', '#222'); g.lineWidth = 1.5;
-  g.beginPath(); g.arc(14, y - 4, 3.5, 0, 2 * Math.PI); g.fill();
-  g.fillText('GPS', 22, y);
-  g.beginPath(); g.arc(64, y - 4, 2.5, 0, 2 * Math.PI); g.stroke();
-  g.fillText('dead-reckoned', 72, y);
+  const rows = [[]];
+  let used = 0;
+  for (const e of entries) {
+    const ew = 16 + g.measureText(e.text).width + 12;
+    if (used + ew > Math.max(room - 8, 80) && rows[rows.length - 1].length) { rows.push([]); used = 0; }
+    rows[rows.length - 1].push({ e, dx: used });
+    used += ew;
+  }
+  const width = Math.max(...rows.map((r) => r.reduce((m, { e, dx }) => Math.max(m, dx + 16 + g.measureText(e.text).width), 0)));
+  const bh = rows.length * 18 + 4;
+  return { x: 4, y: h - 6 - bh, w: width + 12, h: bh, rows };
 }
 
-/** A bar of a round distance, about a quarter of the map wide. */
-function scaleBar(g, w, h, perDegree, ink) {
+function drawLegend(g, entries, box, ink) {
+  g.save();
+  g.font = '13px system-ui, sans-serif';
+  g.fillStyle = ink('--card', '#fff'); g.globalAlpha = 0.85; g.fillRect(box.x, box.y, box.w, box.h); g.globalAlpha = 1;
+  box.rows.forEach((row, r) => {
+    const base = box.y + 16 + r * 18;
+    for (const { e, dx } of row) {
+      g.fillStyle = ink('--fg', '#222'); g.strokeStyle = ink('--fg', '#222'); g.lineWidth = 1.5;
+      g.save(); e.mark(g, box.x + 6 + dx, base - 4); g.restore();
+      g.fillStyle = ink('--fg', '#222');
+      g.fillText(e.text, box.x + 6 + dx + 16, base);
+    }
+  });
+  g.restore();
+  g.canvas.dataset.legend = entries.map((e) => e.text).join(', ');
+}
+
+/** A bar of a round distance, about a quarter of the map wide: where it goes. */
+function scaleBox(g, w, h, perDegree) {
   const metresPerPixel = 111320 / perDegree;
   const metres = niceStep(metresPerPixel * w * 0.22);
   const px = metres / metresPerPixel;
   const text = metres >= 1000 ? `${metres / 1000} km` : `${metres} m`;
   const x1 = w - 12, x0 = x1 - px, y = h - 12;
-  g.fillStyle = ink('--card', '#fff'); g.globalAlpha = 0.85; g.fillRect(x0 - 6, y - 22, px + 12, 28); g.globalAlpha = 1;
+  return { x: x0 - 6, y: y - 22, w: px + 12, h: 28, x0, x1, base: y, px, text };
+}
+
+function drawScale(g, s, ink) {
+  g.save();
+  g.fillStyle = ink('--card', '#fff'); g.globalAlpha = 0.85; g.fillRect(s.x, s.y, s.w, s.h); g.globalAlpha = 1;
   g.strokeStyle = ink('--fg', '#222'); g.lineWidth = 2;
-  g.beginPath(); g.moveTo(x0, y - 6); g.lineTo(x0, y); g.lineTo(x1, y); g.lineTo(x1, y - 6); g.stroke();
+  g.beginPath(); g.moveTo(s.x0, s.base - 6); g.lineTo(s.x0, s.base); g.lineTo(s.x1, s.base); g.lineTo(s.x1, s.base - 6); g.stroke();
   g.fillStyle = ink('--fg', '#222'); g.font = '13px system-ui, sans-serif';
-  g.fillText(text, x0 + (px - g.measureText(text).width) / 2, y - 8);
-  g.canvas.dataset.scale = text;
+  g.fillText(s.text, s.x0 + (s.px - g.measureText(s.text).width) / 2, s.base - 8);
+  g.restore();
+  g.canvas.dataset.scale = s.text;
 }
 
 function niceStep(raw) {

@@ -2,7 +2,9 @@
 // runs (grey, dashed, open squares; a ring on the waypoint its last dialog steered for) and the proposed one (solid, in
 // the accent colour, numbered dots a pilot drags). Each layer is (g, { x, y, w, h }); the proposed layer keeps the
 // projection it was drawn with, so a pointer on the canvas maps back to a latitude and longitude (drawMap's projection
-// is linear in both).
+// is linear in both). Numbers are placed by map.js's placeLabel, off every other label: on the fleet map many vehicles'
+// lists share one canvas.
+import { placeLabel } from './map.js';
 
 /** What the last drawing of the proposed layer knows: where each waypoint is on screen, and the way back to degrees. */
 export class PlanView {
@@ -35,32 +37,46 @@ function ink(name, fallback) {
   return getComputedStyle(document.documentElement).getPropertyValue(name).trim() || fallback;
 }
 
-function numbered(g, text, px, py, colour) {
-  g.font = 'bold 12px system-ui, sans-serif';
-  g.lineWidth = 3; g.strokeStyle = ink('--card', '#fff'); g.strokeText(text, px + 9, py - 7);
-  g.fillStyle = colour; g.fillText(text, px + 9, py - 7);
+function numbered(g, text, px, py, colour, room) {
+  placeLabel(g, text, px, py, room, { colour, size: 12, bold: true, gap: 8 });
 }
 
-/** The list the glider runs, the waypoint it heads for, and its last fix. */
-export function gliderLayer(model) {
-  return (g, { x, y }) => {
+/** The legend's words for the list a glider runs: a dashed leg and an open square, as drawn. */
+const GOTO_LEGEND = {
+  text: 'goto list',
+  mark: (g, x, y) => {
+    g.setLineDash([3, 2]); g.beginPath(); g.moveTo(x - 2, y); g.lineTo(x + 12, y); g.stroke(); g.setLineDash([]);
+    g.fillStyle = ink('--card', '#fff'); g.fillRect(x + 1, y - 4, 8, 8); g.strokeRect(x + 1, y - 4, 8, 8);
+  },
+};
+
+/**
+ * The list the glider runs, the waypoint it heads for, and its last fix. `options`: `colour` of the list (the fleet map
+ * gives each vehicle its own; grey by default), `name` of the vehicle (in data-goto), `leg: false` to leave the fix and
+ * the leg from it to a waypoint layer that draws them already. Each waypoint drawn is added to the canvas's data-goto
+ * ([name, n, lat, lon, x, y]) and counted in data-plan-waypoints.
+ */
+export function gliderLayer(model, options = {}) {
+  const { colour, name = '', leg = true } = options;
+  const layer = (g, { x, y, w, h, placed = [] }) => {
     const c = model.current;
-    const grey = ink('--muted', '#666');
+    const grey = colour || ink('--muted', '#666');
     g.save();
     g.strokeStyle = grey; g.fillStyle = grey; g.lineWidth = 1.5; g.setLineDash([6, 4]);
     g.beginPath();
     c.waypoints.forEach((p, n) => (n ? g.lineTo(x(p.lon), y(p.lat)) : g.moveTo(x(p.lon), y(p.lat))));
     g.stroke();
     g.setLineDash([]);
+    g.fillStyle = ink('--card', '#fff');
     for (const p of c.waypoints) {
+      g.fillRect(x(p.lon) - 5, y(p.lat) - 5, 10, 10);
       g.strokeRect(x(p.lon) - 5, y(p.lat) - 5, 10, 10);
-      numbered(g, `${p.n}`, x(p.lon), y(p.lat), grey);
     }
     if (c.heading) {
       g.lineWidth = 2.5; g.strokeStyle = ink('--accent', '#0b57d0');
       g.beginPath(); g.arc(x(c.heading.lon), y(c.heading.lat), 11, 0, 2 * Math.PI); g.stroke();
     }
-    if (c.fix) {
+    if (c.fix && leg) {
       g.fillStyle = ink('--fg', '#222');
       g.beginPath(); g.arc(x(c.fix.lon), y(c.fix.lat), 5, 0, 2 * Math.PI); g.fill();
       if (c.heading) { // the leg it is on
@@ -70,13 +86,21 @@ export function gliderLayer(model) {
       }
     }
     g.restore();
-    g.canvas.dataset.planWaypoints = String(c.waypoints.length);
+    for (const p of c.waypoints) numbered(g, `${p.n}`, x(p.lon), y(p.lat), grey, { w, h, placed });
+    const data = g.canvas.dataset;
+    data.planWaypoints = String(Number(data.planWaypoints || 0) + c.waypoints.length);
+    const drawn = JSON.parse(data.goto || '[]');
+    for (const p of c.waypoints) drawn.push([name, p.n, p.lat, p.lon, Math.round(x(p.lon)), Math.round(y(p.lat))]);
+    data.goto = JSON.stringify(drawn);
   };
+  // a getter: the list may come after the layer was made, and drawMap reads the legend when it draws
+  Object.defineProperty(layer, 'legend', { get: () => (model.current.waypoints.length ? [GOTO_LEGEND] : []) });
+  return layer;
 }
 
 /** The proposed list, numbered as the glider counts (0 to N-1); records where each dot went into `view`. */
 export function proposedLayer(model, view, selected = () => -1) {
-  return (g, { x, y }) => {
+  return (g, { x, y, w, h, placed = [] }) => {
     Object.assign(view, inverse(x, y));
     const colour = ink('--accent', '#0b57d0');
     const pts = model.points();
@@ -90,7 +114,7 @@ export function proposedLayer(model, view, selected = () => -1) {
       g.fillStyle = colour;
       g.beginPath(); g.arc(d.px, d.py, d.i === selected() ? 9 : 7, 0, 2 * Math.PI); g.fill();
       g.lineWidth = 2; g.strokeStyle = ink('--card', '#fff'); g.stroke();
-      numbered(g, `${d.i}`, d.px, d.py, colour);
+      numbered(g, `${d.i}`, d.px, d.py, colour, { w, h, placed });
     }
     g.restore();
   };
