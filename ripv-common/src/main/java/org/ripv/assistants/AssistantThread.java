@@ -1,11 +1,22 @@
 package org.ripv.assistants;
 
-/** What the inbox and outbox assistants share: a name, a running flag, and how they stop. */
-abstract class AssistantThread extends Thread {
+import org.ripv.managers.TaskManager;
+import org.ripv.messages.Message;
+import org.ripv.post.MailBox;
+
+/**
+ * What the inbox and outbox assistants share: the MailBox they serve and its TaskManager, a name
+ * ({@code mailbox-ADDRESS-inbox} or {@code -outbox}), a running flag, and how they stop.
+ */
+abstract class AssistantThread<I extends Message, O extends Message> extends Thread {
+    protected final MailBox<I, O> box;
+    protected final TaskManager<I, O> manager;
     protected volatile boolean running = true;
 
-    AssistantThread(String name) {
-        super(name);
+    AssistantThread(MailBox<I, O> box, TaskManager<I, O> manager, String side) {
+        super("mailbox-" + box.address() + "-" + side);
+        this.box = box;
+        this.manager = manager;
         setDaemon(true);
     }
 

@@ -13,16 +13,11 @@ import org.slf4j.LoggerFactory;
  * message of the highest non-empty priority, holds the MailBox's key while the TaskManager runs
  * it, and takes the next only when that command has finished.
  */
-public final class InboxAssistantThread<I extends Message, O extends Message> extends AssistantThread {
+public final class InboxAssistantThread<I extends Message, O extends Message> extends AssistantThread<I, O> {
     private static final Logger log = LoggerFactory.getLogger(InboxAssistantThread.class);
 
-    private final MailBox<I, O> box;
-    private final TaskManager<I, O> manager;
-
     public InboxAssistantThread(MailBox<I, O> box, TaskManager<I, O> manager) {
-        super("mailbox-" + box.address() + "-inbox");
-        this.box = box;
-        this.manager = manager;
+        super(box, manager, "inbox");
     }
 
     @Override

@@ -12,19 +12,14 @@ import org.slf4j.LoggerFactory;
  * Takes replies off a MailBox's outbox and hands them to the TaskManager's footer side — one at
  * a time when they come one at a time, together when several have queued up meanwhile.
  */
-public final class OutboxAssistantThread<I extends Message, O extends Message> extends AssistantThread {
+public final class OutboxAssistantThread<I extends Message, O extends Message> extends AssistantThread<I, O> {
     private static final Logger log = LoggerFactory.getLogger(OutboxAssistantThread.class);
 
     /** The most replies handed to the TaskManager at once. */
     static final int MAX_BATCH = 256;
 
-    private final MailBox<I, O> box;
-    private final TaskManager<I, O> manager;
-
     public OutboxAssistantThread(MailBox<I, O> box, TaskManager<I, O> manager) {
-        super("mailbox-" + box.address() + "-outbox");
-        this.box = box;
-        this.manager = manager;
+        super(box, manager, "outbox");
     }
 
     @Override

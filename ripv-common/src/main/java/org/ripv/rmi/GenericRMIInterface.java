@@ -117,6 +117,30 @@ public interface GenericRMIInterface extends Remote {
         throw new UnsupportedOperationException("this side runs no service MailBoxes");
     }
 
+    /**
+     * Asked of the server by a registered service: the stub of another registered service, so that
+     * it can read a file that one holds ({@link #handout}).
+     *
+     * @return null when that service is not registered, or cannot be reached but through the
+     *         server (it registered outbound-only)
+     * @throws UnsupportedOperationException from a service (the default)
+     */
+    default GenericRMIInterface peer(String token, String service) throws RemoteException {
+        throw new UnsupportedOperationException("only the RIPVServer knows the other services");
+    }
+
+    /**
+     * Asked of a service by another: the next chunk of a file this service fetched and still
+     * holds, by a ticket the server signed ({@link org.ripv.handout.Handouts#read}). The ticket is
+     * the caller's credential: it needs no session token.
+     *
+     * @throws SecurityException when the ticket is forged, used, expired, or its file let go
+     * @throws UnsupportedOperationException from a side that holds no files (the default)
+     */
+    default byte[] handout(String ticket, long offset, int max) throws RemoteException {
+        throw new UnsupportedOperationException("this side holds no files to hand out");
+    }
+
     /** The service's MailBoxes and whether each can take commands now. */
     List<MailboxStatus> mailboxes(String token) throws RemoteException;
 }

@@ -55,6 +55,18 @@ public final class ServiceProof {
         return hmac(secret, "ripv-token", serviceNonce, serverNonce);
     }
 
+    /**
+     * The MAC of a handout ticket ({@link org.ripv.handout.HandoutTicket}): keyed with the session
+     * token of the service that holds the file, which only that service and the server know, so
+     * that the service can check a ticket the server signed without asking it.
+     */
+    public static String handoutProof(String sourceToken, String... fields) {
+        String[] parts = new String[fields.length + 1];
+        parts[0] = "ripv-handout";
+        System.arraycopy(fields, 0, parts, 1, fields.length);
+        return hmac(sourceToken, parts);
+    }
+
     /** Compares two proofs in constant time; false for null. */
     public static boolean same(String a, String b) {
         return a != null && b != null

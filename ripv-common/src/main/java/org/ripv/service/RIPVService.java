@@ -5,6 +5,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.concurrent.ConcurrentHashMap;
+import org.ripv.handout.HandoutCollector;
 import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.Footer;
@@ -62,6 +63,7 @@ public abstract class RIPVService {
     private volatile ReplySink sink = reply -> log.warn("not connected to a server: dropped {}", reply);
     private volatile boolean started;
     private volatile ConsolePublisher console;
+    private final ServiceHandouts handouts;
 
     /**
      * @param serviceName the service's name (Appendix A, II), e.g. {@code "SerialPortServer"}
@@ -75,6 +77,7 @@ public abstract class RIPVService {
     protected RIPVService(String serviceName, String sid, String host) {
         this.name = new ServiceName(serviceName, host);
         this.sid = Ids.require(sid);
+        this.handouts = new ServiceHandouts(name.toString(), this::handsOutFiles);
     }
 
     /** Opens the service's resources and MailBoxes with {@link #openMailBox}. */
@@ -188,6 +191,29 @@ public abstract class RIPVService {
             }
         }
         p.publish(entry);
+    }
+
+    /**
+     * Whether this service keeps the files its replies send for a while, so that another service
+     * (a DatabaseServer's {@code ingest}) can read them here rather than through the server
+     * ({@link org.ripv.handout}). Off by default; a service that fetches files turns it on.
+     */
+    protected boolean handsOutFiles() {
+        return false;
+    }
+
+    /** How this service finds the others it reads handed-out files from (set by the connector). */
+    final void peersVia(HandoutCollector.Peers peers) {
+        handouts.peersVia(peers);
+    }
+
+    final ServiceHandouts handouts() {
+        return handouts;
+    }
+
+    /** The next chunk of a file this service holds, for another service with the server's ticket. */
+    final byte[] handout(String ticket, long offset, int max, String token) {
+        return handouts.read(ticket, offset, max, token);
     }
 
     /** Sets where replies go (the server link, or a test's collector). */

@@ -82,6 +82,7 @@ public final class ServiceConnector implements AutoCloseable {
         service.start();
         ServiceConnector c = new ServiceConnector(service, options, sockets);
         service.replyTo(c.session.sink());
+        service.peersVia(c.session::peer);
         c.timer.execute(c::tick);
         c.timer.scheduleWithFixedDelay(c::tick, options.heartbeat().toMillis(), options.heartbeat().toMillis(),
                 TimeUnit.MILLISECONDS);

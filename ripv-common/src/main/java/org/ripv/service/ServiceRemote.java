@@ -58,6 +58,12 @@ final class ServiceRemote implements GenericRMIInterface {
         return service.mailboxes();
     }
 
+    /** Another service reads a file this one holds: the ticket is its credential, checked against this session. */
+    @Override
+    public byte[] handout(String ticket, long offset, int max) {
+        return service.handout(ticket, offset, max, session.token());
+    }
+
     @Override
     public String challenge(String nonce) {
         throw new UnsupportedOperationException("a service does not take registrations");

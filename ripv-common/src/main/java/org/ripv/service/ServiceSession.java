@@ -91,6 +91,16 @@ final class ServiceSession {
         }
     }
 
+    /** Asks the server in use for another registered service's stub (null: not reachable directly). */
+    GenericRMIInterface peer(String service) throws RemoteException {
+        GenericRMIInterface s = server;
+        String t = token;
+        if (s == null || t == null) {
+            throw new RemoteException("not registered with a server");
+        }
+        return s.peer(t, service);
+    }
+
     /** Where the service's replies go: to the server in use, over RMI. */
     ReplySink sink() {
         return new Sink();

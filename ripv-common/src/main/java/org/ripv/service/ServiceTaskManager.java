@@ -31,6 +31,8 @@ final class ServiceTaskManager extends TaskManager<IncomingServiceMessage, Outgo
     @Override
     public void parseHeader(MailBox<IncomingServiceMessage, OutgoingServiceMessage> box, IncomingServiceMessage request)
             throws Exception {
+        // Tickets in place of files: read the files from the services that hold them first (org.ripv.handout).
+        request = service.handouts().collect(request);
         Request now = new Request(request, box, service.sid(), service.name().toString());
         synchronized (this) {
             cancelled = false;
@@ -50,6 +52,9 @@ final class ServiceTaskManager extends TaskManager<IncomingServiceMessage, Outgo
             throw new IllegalStateException("the handler of " + box.address() + " returned no reply");
         }
         ErrorCode code = wasCancelled && r.status() == Status.ERROR ? ErrorCode.CANCELLED : r.code();
+        if (r.status() == Status.OK) {
+            service.handouts().keep(r.result()); // before the reply leaves: the server may sign tickets for it at once
+        }
         box.post(request.reply(new Footer(service.sid(), r.status(), code, null, r.text(), r.result())
                 .via(service.name().toString())));
     }

@@ -27,6 +27,9 @@ import java.util.regex.Pattern;
  * prompt. All patterns are anchored and bounded, so each line costs time linear in its length.
  *
  * <p>Not thread-safe: one parser per link, fed by one thread at a time.
+ *
+ * <p>Longer than 400 lines for one job: the line joining, the dialog's start and end, and the fields
+ * are one state machine over the same bounded buffer.
  */
 public final class SurfaceDialogParser {
     /** Characters of a line kept; the rest is counted ({@link Surfacing#linesCut()}). */

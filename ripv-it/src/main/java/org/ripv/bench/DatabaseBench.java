@@ -1,5 +1,9 @@
 package org.ripv.bench;
 
+import static org.ripv.bench.BenchTools.deleteTree;
+import static org.ripv.bench.BenchTools.intOption;
+import static org.ripv.bench.BenchTools.median;
+
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.ObjectOutputStream;
@@ -19,13 +23,11 @@ import java.time.Duration;
 import java.time.LocalDateTime;
 import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.Comparator;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
-import java.util.stream.Stream;
 import org.ripv.client.handlers.ClientSocketHandler;
 import org.ripv.messages.Header;
 import org.ripv.messages.IdBadge;
@@ -37,8 +39,6 @@ import org.ripv.messages.Status;
 import org.ripv.messages.TablePages;
 import org.ripv.messages.TableResult;
 import org.ripv.server.RIPVServer;
-import org.ripv.server.ServerConfig;
-import org.ripv.server.permit.PermitFile;
 import org.ripv.service.ServiceConnector;
 import org.ripv.service.ServiceOptions;
 import org.ripv.services.database.DatabaseServer;
@@ -115,12 +115,7 @@ public final class DatabaseBench {
         String localMailbox = local.name().mailbox(MAILBOX).toString();
 
         // 3. a real server, the service registered over RMI, a client on a socket
-        ServerConfig config = ServerConfig.forTests(dir.resolve("server"));
-        RIPVServer server = new RIPVServer(config);
-        server.start();
-        PermitFile.setUser(config.dataDir().resolve("permit.txt"), "bench", "bench-password".toCharArray(),
-                List.of("operators"), 1000);
-        server.reloadPermits();
+        RIPVServer server = BenchTools.serverWithOperator(dir.resolve("server"));
         DatabaseServer service = new DatabaseServer("localhost", List.of(db), limits);
         ServiceConnector connector = ServiceConnector.connect(service, new ServiceOptions("localhost", server.registryPort(),
                 Files.readString(server.secretFile()).trim(), 0, Duration.ofSeconds(1)));
@@ -130,7 +125,7 @@ public final class DatabaseBench {
             if (!connector.awaitRegistered(Duration.ofSeconds(30))) {
                 throw new IllegalStateException("the DatabaseServer did not register");
             }
-            client.login("bench", "bench-password".toCharArray());
+            client.login(BenchTools.USER, BenchTools.PASSWORD.toCharArray());
             client.addListener(new ClientSocketHandler.Listener() {
                 @Override
                 public void onReply(OutgoingServerMessage reply) {
@@ -316,32 +311,9 @@ public final class DatabaseBench {
                 cpuMs, cpuMs / cpuBase);
     }
 
-    private static double median(double[] v) {
-        double[] s = v.clone();
-        Arrays.sort(s);
-        return s.length % 2 == 1 ? s[s.length / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
-    }
-
     private static void check(int got, int want) {
         if (got != want) {
             throw new IllegalStateException("expected " + want + " rows, got " + got);
-        }
-    }
-
-    private static int intOption(String[] args, String name, int dflt) {
-        for (int i = 0; i + 1 < args.length; i++) {
-            if (args[i].equals(name)) {
-                return Integer.parseInt(args[i + 1]);
-            }
-        }
-        return dflt;
-    }
-
-    private static void deleteTree(Path dir) throws IOException {
-        try (Stream<Path> s = Files.walk(dir)) {
-            for (Path p : s.sorted(Comparator.reverseOrder()).toList()) {
-                Files.deleteIfExists(p);
-            }
         }
     }
 }

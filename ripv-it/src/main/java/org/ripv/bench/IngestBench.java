@@ -1,7 +1,11 @@
 package org.ripv.bench;
 
+import static org.ripv.bench.BenchTools.deleteTree;
+import static org.ripv.bench.BenchTools.intOption;
+import static org.ripv.bench.BenchTools.median;
+import static org.ripv.bench.BenchTools.stringOption;
+
 import java.io.ByteArrayInputStream;
-import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -16,17 +20,14 @@ import java.time.Instant;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Calendar;
-import java.util.Comparator;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
-import java.util.Random;
 import java.util.TimeZone;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
-import java.util.stream.Stream;
 import org.ripv.client.handlers.ClientSocketHandler;
 import org.ripv.messages.Attachment;
 import org.ripv.messages.Header;
@@ -37,8 +38,6 @@ import org.ripv.messages.OutgoingServiceMessage;
 import org.ripv.messages.Priority;
 import org.ripv.messages.Status;
 import org.ripv.server.RIPVServer;
-import org.ripv.server.ServerConfig;
-import org.ripv.server.permit.PermitFile;
 import org.ripv.service.ServiceConnector;
 import org.ripv.service.ServiceOptions;
 import org.ripv.services.database.DatabaseServer;
@@ -62,7 +61,8 @@ import org.ripv.services.ingest.DbaReader;
  * Options: {@code --runs N} (default 2, of the 100,000-row file), {@code --wide-runs N} (default 7: a run of the
  * 2,136-sensor file takes about a second, and a median of two is at the mercy of a shared machine),
  * {@code --track-runs N} (default 3), {@code --rows N} (rows of the long file and positions of the track, default
- * 100,000), {@code --only wide|long|track}
+ * 100,000), {@code --wide-sensors N} (sensors of the wide file, default 2,136, as a real glider's; {@code --short}
+ * takes fewer: the same path, a smaller file), {@code --only wide|long|track}
  * (one part; {@code --track-only} is {@code --only track}).
  */
 public final class IngestBench {
@@ -80,6 +80,10 @@ public final class IngestBench {
         int wideRuns = intOption(args, "--wide-runs", Math.max(runs, 7));
         int trackRuns = intOption(args, "--track-runs", 3);
         int rows = intOption(args, "--rows", 100_000);
+        int wideSensors = intOption(args, "--wide-sensors", 2136);
+        if (wideSensors < 4 || wideSensors > 10_000) {
+            throw new IllegalArgumentException("--wide-sensors must be 4 to 10000 (time, position and depth come first), not " + wideSensors);
+        }
         String only = Arrays.asList(args).contains("--track-only") ? "track" : stringOption(args, "--only", "all");
         if (!List.of("all", "wide", "long", "track").contains(only)) {
             throw new IllegalArgumentException("--only wide, long or track, not " + only);
@@ -90,7 +94,7 @@ public final class IngestBench {
                 DatabaseTarget db = EmbeddedDatabase.prepare(dir.resolve("database"), "TTY1");
                 track(dir, db, new QueryLimits(200_000, 600, 64L * 1024 * 1024), trackRuns, rows);
             } else {
-                run(dir, runs, wideRuns, trackRuns, only, rows);
+                run(dir, runs, wideRuns, trackRuns, only, rows, wideSensors);
             }
         } finally {
             deleteTree(dir);
@@ -98,7 +102,8 @@ public final class IngestBench {
         return 0;
     }
 
-    private static void run(Path dir, int runs, int wideRuns, int trackRuns, String only, int rows) throws Exception {
+    private static void run(Path dir, int runs, int wideRuns, int trackRuns, String only, int rows, int wideSensors)
+            throws Exception {
         DatabaseTarget db = EmbeddedDatabase.prepare(dir.resolve("database"), "TTY1");
         QueryLimits limits = new QueryLimits(200_000, 600, 64L * 1024 * 1024);
         DatabaseServer local = new DatabaseServer("localhost", List.of(db), limits);
@@ -108,15 +113,17 @@ public final class IngestBench {
         System.out.printf(Locale.ROOT, "IngestBench: embedded Derby, %d run(s) of the wide file, %d of the long one, %s%n",
                 wideRuns, runs,
                 System.getProperty("java.vm.name") + " " + System.getProperty("java.version"));
-        byte[] wide = only.equals("long") ? null : generate("wide", 2136, 140, 0.03, false, 1);
-        byte[] long30 = only.equals("wide") ? null : generate("long", 30, rows, 0.5, false, 2);
+        byte[] wide = only.equals("long") ? null : SyntheticDba.generate("wide", wideSensors, 140, 0.03, false, 1);
+        byte[] long30 = only.equals("wide") ? null : SyntheticDba.generate("long", 30, rows, 0.5, false, 2);
         System.out.printf(Locale.ROOT, "%-34s %9s %10s %10s %12s %7s%n", "file", "values", "ingest ms", "direct ms",
                 "ingest v/s", "ratio");
         try (Connection c = DriverManager.getConnection(db.url(), db.user(), db.password())) {
-            ingest(local, replies, "warm-up.mrg", generate("warmup", 40, 2000, 0.5, false, 3)); // creates the schema too
+            // creates the schema too; no larger than the measured file (--short runs 500 rows)
+            ingest(local, replies, "warm-up.mrg", SyntheticDba.generate("warmup", 40, Math.min(2000, rows), 0.5, false, 3));
             clear(c);
             if (wide != null) {
-                measure(c, local, replies, "2,136 sensors, 1.2 MB", wide, wideRuns);
+                measure(c, local, replies, String.format(Locale.ROOT, "%,d sensors, %.2f MB", wideSensors, wide.length / 1e6),
+                        wide, wideRuns);
             }
             if (long30 != null) {
                 measure(c, local, replies, String.format(Locale.ROOT, "30 sensors, %,d rows", rows), long30, runs);
@@ -304,12 +311,8 @@ public final class IngestBench {
 
     /** vis:track of 100,000 positions through the whole system. */
     private static void track(Path dir, DatabaseTarget db, QueryLimits limits, int runs, int rows) throws Exception {
-        ServerConfig config = ServerConfig.forTests(dir.resolve("server"));
-        RIPVServer server = new RIPVServer(config);
-        server.start();
-        PermitFile.setUser(config.dataDir().resolve("permit.txt"), "bench", "bench-password".toCharArray(),
-                List.of("operators"), 1000);
-        server.reloadPermits();
+        Path serverDir = dir.resolve("server");
+        RIPVServer server = BenchTools.serverWithOperator(serverDir);
         ServiceOptions options = new ServiceOptions("localhost", server.registryPort(),
                 Files.readString(server.secretFile()).trim(), 0, Duration.ofSeconds(1));
         DatabaseServer dbService = new DatabaseServer("localhost", List.of(db), limits);
@@ -320,11 +323,11 @@ public final class IngestBench {
             if (!c1.awaitRegistered(Duration.ofSeconds(30)) || !c2.awaitRegistered(Duration.ofSeconds(30))) {
                 throw new IllegalStateException("the services did not register");
             }
-            client.login("bench", "bench-password".toCharArray());
+            client.login(BenchTools.USER, BenchTools.PASSWORD.toCharArray());
             String dbBox = dbService.name().mailbox("TTY1").toString();
             String visBox = vis.name().mailbox("TTY1").toString();
-            byte[] file = generate("track", 4, rows, 1.0, true, 4);
-            Path dl = config.dataDir().resolve("download");
+            byte[] file = SyntheticDba.generate("track", 4, rows, 1.0, true, 4);
+            Path dl = serverDir.resolve("download");
             Files.createDirectories(dl);
             Files.write(dl.resolve("track.mrg"), file);
             OutgoingServerMessage in = client.call(dbBox, "ingest track.mrg", Priority.NORMAL, Duration.ofMinutes(10), null);
@@ -359,80 +362,6 @@ public final class IngestBench {
             dbService.stop();
             vis.stop();
             server.stop();
-        }
-    }
-
-    /**
-     * A DBA file: m_present_time, m_gps_lat, m_gps_lon, m_depth, then s_4...; each other cell
-     * present with probability {@code fill}; a GPS fix on every row when {@code fixes}, else every 50th.
-     */
-    static byte[] generate(String glider, int sensors, int rows, double fill, boolean fixes, long seed) {
-        StringBuilder b = new StringBuilder(rows * sensors * 6 + 4096);
-        b.append("dbd_label: DBD_ASC(dinkum_binary_data_ascii)file\nencoding_ver: 2\nnum_ascii_tags: 14\nall_sensors: 0\n");
-        b.append("filename: ").append(glider).append("-2024-100-1-0\nthe8x3_filename: 00010000\nfilename_extension: sbd\n");
-        b.append("filename_label: ").append(glider).append("-2024-100-1-0-sbd(00010000)\nmission_name: BENCH.MI\n");
-        b.append("fileopen_time: Mon_Apr__8_12:00:00_2024\nsensors_per_cycle: ").append(sensors).append('\n');
-        b.append("num_label_lines: 3\nnum_segments: 1\nsegment_filename_0: ").append(glider).append("-2024-100-1-0\n");
-        StringBuilder names = new StringBuilder("m_present_time m_gps_lat m_gps_lon m_depth");
-        StringBuilder units = new StringBuilder("timestamp lat lon m");
-        StringBuilder bytes = new StringBuilder("8 8 8 4");
-        for (int i = 4; i < sensors; i++) {
-            names.append(" s_").append(i);
-            units.append(" nodim");
-            bytes.append(" 4");
-        }
-        b.append(names).append(" \n").append(units).append(" \n").append(bytes).append(" \n");
-        Random rnd = new Random(seed);
-        double t = 1_712_577_600;
-        for (int r = 0; r < rows; r++) {
-            t += 2.5;
-            b.append(String.format(Locale.ROOT, "%.5f", t));
-            boolean fix = fixes || r % 50 == 0;
-            b.append(' ').append(fix ? String.format(Locale.ROOT, "%.4f", 4130 + r * 0.0001 % 20) : "NaN");
-            b.append(' ').append(fix ? String.format(Locale.ROOT, "%.4f", -7040 - r * 0.00013 % 15) : "NaN");
-            b.append(' ').append(String.format(Locale.ROOT, "%.2f", Math.abs(Math.sin(r / 200.0)) * 900));
-            for (int i = 4; i < sensors; i++) {
-                b.append(' ');
-                if (rnd.nextDouble() < fill) {
-                    b.append(rnd.nextInt(1_000_000) / 1000.0);
-                } else {
-                    b.append("NaN");
-                }
-            }
-            b.append(" \n");
-        }
-        return b.toString().getBytes(StandardCharsets.US_ASCII);
-    }
-
-    private static double median(double[] v) {
-        double[] s = v.clone();
-        Arrays.sort(s);
-        return s.length == 0 ? Double.NaN : s.length % 2 == 1 ? s[s.length / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
-    }
-
-    private static int intOption(String[] args, String name, int dflt) {
-        for (int i = 0; i + 1 < args.length; i++) {
-            if (args[i].equals(name)) {
-                return Integer.parseInt(args[i + 1]);
-            }
-        }
-        return dflt;
-    }
-
-    private static String stringOption(String[] args, String name, String dflt) {
-        for (int i = 0; i + 1 < args.length; i++) {
-            if (args[i].equals(name)) {
-                return args[i + 1];
-            }
-        }
-        return dflt;
-    }
-
-    private static void deleteTree(Path dir) throws IOException {
-        try (Stream<Path> s = Files.walk(dir)) {
-            for (Path p : s.sorted(Comparator.reverseOrder()).toList()) {
-                Files.deleteIfExists(p);
-            }
         }
     }
 }

@@ -1,6 +1,8 @@
 package org.ripv.bench;
 
-import java.io.IOException;
+import static org.ripv.bench.BenchTools.intOption;
+import static org.ripv.bench.BenchTools.median;
+
 import java.io.InputStream;
 import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
@@ -42,8 +44,8 @@ public final class PlansBench {
 
     /** The benchmark; its exit status is returned, not exited with ({@code ShortRuns} runs several in one JVM). */
     public static int run(String[] args) throws Exception {
-        int files = option(args, "--files", 2_000);
-        int runs = option(args, "--runs", 5);
+        int files = intOption(args, "--files", 2_000);
+        int runs = intOption(args, "--runs", 5);
         if (files < 10 || runs < 1) {
             System.err.println("Usage: ripv bench plans [--files N] [--runs N]   (at least 10 files and 1 run)");
             return 2;
@@ -204,20 +206,5 @@ public final class PlansBench {
                 + "b_arg: c_pitch_value(X) 0.4528 # 26 deg\n"
                 + "b_arg: printout_cycle_time(sec) 60.0 # How often to print dialog\n"
                 + "<end:b_arg>\n";
-    }
-
-    private static double median(double[] v) {
-        double[] s = v.clone();
-        Arrays.sort(s);
-        return s.length % 2 == 1 ? s[s.length / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
-    }
-
-    private static int option(String[] args, String name, int dflt) {
-        for (int i = 0; i + 1 < args.length; i++) {
-            if (args[i].equals(name)) {
-                return Integer.parseInt(args[i + 1]);
-            }
-        }
-        return dflt;
     }
 }

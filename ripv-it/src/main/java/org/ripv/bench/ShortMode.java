@@ -27,11 +27,14 @@ final class ShortMode {
             Map.entry("database", List.of("--rows", "20000", "--runs", "3", "--warmup", "1")), // the floor must span several 10-ms CPU ticks
             Map.entry("ymodem", List.of("115200:8192")),
             Map.entry("zmodem", List.of("--bytes", "8192", "--skip-iridium")),
-            Map.entry("console", List.of("--watchers", "20", "--rate", "20", "--seconds", "2", "--baseline-seconds", "2",
+            // the phases at their shortest (1 s each): a short run proves the paths, its p99s mean nothing anyway
+            Map.entry("console", List.of("--watchers", "20", "--rate", "20", "--seconds", "1", "--baseline-seconds", "1",
                     "--warmup", "1", "--full-clients", "2")),
-            Map.entry("web", List.of("--watchers", "50", "--rate", "20", "--seconds", "2", "--baseline-seconds", "2",
+            Map.entry("web", List.of("--watchers", "50", "--rate", "20", "--seconds", "1", "--baseline-seconds", "1",
                     "--warmup", "1", "--vehicles", "10", "--fleet-runs", "1", "--heap", "256m")),
-            Map.entry("ingest", List.of("--runs", "1", "--wide-runs", "1", "--track-runs", "1", "--rows", "500")),
+            // a 300-sensor wide file: the 2,136-sensor one made this the longest short run (26 s of 198 on a quiet machine)
+            Map.entry("ingest", List.of("--runs", "1", "--wide-runs", "1", "--track-runs", "1", "--rows", "500",
+                    "--wide-sensors", "300")),
             Map.entry("datavis", List.of("--points", "2000", "--runs", "2")),
             Map.entry("firststart", List.of("--runs", "1")),
             Map.entry("calls", List.of("--vehicles", "4", "--spread", "2", "--surface", "3")),

@@ -1,5 +1,8 @@
 package org.ripv.bench;
 
+import static org.ripv.bench.BenchTools.intOption;
+import static org.ripv.bench.BenchTools.median;
+
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.InputStream;
@@ -105,9 +108,9 @@ public final class SlocumBench {
 
     /** The benchmark, its exit status returned rather than exited with ({@code BenchMain} runs several in one JVM). */
     public static int run(String[] args) throws Exception {
-        int mb = option(args, "--mb", 10);
-        int runs = option(args, "--runs", 5);
-        int ingestRows = option(args, "--ingest-rows", 20_000);
+        int mb = intOption(args, "--mb", 10);
+        int runs = intOption(args, "--runs", 5);
+        int ingestRows = intOption(args, "--ingest-rows", 20_000);
         Path dir = Files.createTempDirectory("ripv-slocumbench");
         try {
             System.out.printf(Locale.ROOT, "SlocumBench: %s %s (the machine may be shared; its load is on the machine: lines)%n",
@@ -195,20 +198,5 @@ public final class SlocumBench {
         } finally {
             local.stop();
         }
-    }
-
-    private static double median(double[] v) {
-        double[] s = v.clone();
-        Arrays.sort(s);
-        return s.length % 2 == 1 ? s[s.length / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
-    }
-
-    private static int option(String[] args, String name, int dflt) {
-        for (int i = 0; i + 1 < args.length; i++) {
-            if (args[i].equals(name)) {
-                return Integer.parseInt(args[i + 1]);
-            }
-        }
-        return dflt;
     }
 }

@@ -1,5 +1,8 @@
 package org.ripv.bench;
 
+import static org.ripv.bench.BenchTools.intOption;
+import static org.ripv.bench.BenchTools.median;
+
 import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.Writer;
@@ -42,8 +45,8 @@ public final class SurfacingBench {
 
     /** The benchmark; its exit status is returned, not exited with ({@code ShortRuns} runs several in one JVM). */
     public static int run(String[] args) throws Exception {
-        int dialogs = option(args, "--dialogs", 20_000);
-        int runs = option(args, "--runs", 5);
+        int dialogs = intOption(args, "--dialogs", 20_000);
+        int runs = intOption(args, "--runs", 5);
         if (dialogs < 1 || runs < 1) {
             System.err.println("Usage: ripv bench surfacing [--dialogs N] [--runs N]   (both at least 1)");
             return 2;
@@ -289,20 +292,5 @@ public final class SurfacingBench {
             "   Hit Control-C within 600 seconds to abort the mission",
             f("%d dive lines follow with no dialog in them: m_depth %.1f", d, r.nextDouble() * 100),
         });
-    }
-
-    private static double median(double[] v) {
-        double[] s = v.clone();
-        Arrays.sort(s);
-        return s.length % 2 == 1 ? s[s.length / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
-    }
-
-    private static int option(String[] args, String name, int dflt) {
-        for (int i = 0; i + 1 < args.length; i++) {
-            if (args[i].equals(name)) {
-                return Integer.parseInt(args[i + 1]);
-            }
-        }
-        return dflt;
     }
 }

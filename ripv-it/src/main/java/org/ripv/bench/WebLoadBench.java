@@ -1,5 +1,8 @@
 package org.ripv.bench;
 
+import static org.ripv.bench.BenchTools.intOption;
+import static org.ripv.bench.BenchTools.median;
+
 import com.fasterxml.jackson.databind.JsonNode;
 import com.sun.net.httpserver.HttpServer;
 import java.io.IOException;
@@ -69,8 +72,8 @@ public final class WebLoadBench {
 
     /** The benchmark; its exit status is returned, not exited with ({@code ShortRuns} runs several in one JVM). */
     public static int run(String[] args) throws Exception {
-        int vehicles = option(args, "--vehicles", 100);
-        int runs = option(args, "--runs", 7);
+        int vehicles = intOption(args, "--vehicles", 100);
+        int runs = intOption(args, "--runs", 7);
         if (vehicles < 1 || vehicles > 1000 || runs < 2) {
             System.err.println("Usage: ripv bench webload [--vehicles N] [--runs N]   (1 to 1,000 vehicles, at least 2 runs: the first is a warm-up)");
             return 2;
@@ -223,22 +226,7 @@ public final class WebLoadBench {
         return s;
     }
 
-    private static double median(double[] v) {
-        double[] s = v.clone();
-        Arrays.sort(s);
-        return s.length % 2 == 1 ? s[s.length / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
-    }
-
     private static double max(double[] v) {
         return Arrays.stream(v).max().orElse(0);
-    }
-
-    private static int option(String[] args, String name, int dflt) {
-        for (int i = 0; i + 1 < args.length; i++) {
-            if (args[i].equals(name)) {
-                return Integer.parseInt(args[i + 1]);
-            }
-        }
-        return dflt;
     }
 }

@@ -1,15 +1,13 @@
 package org.ripv.bench;
 
-import java.io.File;
-import java.io.IOException;
+import static org.ripv.bench.BenchTools.median;
+
 import java.lang.management.ManagementFactory;
-import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import java.util.Random;
@@ -18,15 +16,10 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicLong;
+import org.ripv.services.bench.Socat;
 import org.ripv.services.bench.YmodemBaudRelay;
 import org.ripv.services.serial.TcpLink;
-import org.ripv.services.serial.ymodem.DirectorySink;
-import org.ripv.services.serial.ymodem.FileHeader;
 import org.ripv.services.serial.ymodem.SendFile;
-import org.ripv.services.serial.ymodem.TransferListener;
-import org.ripv.services.serial.ymodem.YmodemConfig;
-import org.ripv.services.serial.ymodem.YmodemReceiver;
 import org.ripv.services.serial.zmodem.ResumeStore;
 import org.ripv.services.serial.zmodem.ZmodemReceiver;
 import org.ripv.services.serial.zmodem.ZmodemSender;
@@ -35,7 +28,7 @@ import org.ripv.services.serial.zmodem.ZmodemSender;
  * {@code ./ripv bench zmodem}: ZMODEM over a baud-paced relay as a share of the line rate,
  * against lrzsz's {@code sz}/{@code rz} on the same relay in the same run; and over an
  * Iridium-like link (2,400 baud, 1 s latency, a drop every 60 s) the calls needed to move
- * 100 KB with ZMODEM's resume against YMODEM, which restarts a cut file from zero. Beside wall
+ * 100 KB with ZMODEM's resume against YMODEM, which restarts a cut file from zero ({@link IridiumCalls}). Beside wall
  * time, the CPU time of RIPV's transfer threads for each operation (not the in-process relay's,
  * nor lrzsz's) and the load average (the machine may be shared: read the figures with it).
  *
@@ -70,18 +63,18 @@ public final class ZmodemBench {
      * waiting for the answer to ZEOF (CAN CAN CAN…) while the file was still draining from the
      * relay's buffers.
      */
-    private static final String SZ = "sz -q -O ";
+    static final String SZ = "sz -q -O ";
 
     private ZmodemBench(Path dir) {
         this.dir = dir;
     }
 
     /** CPU time of the calling thread: the transfer's own work, not the in-process relay's pacing. */
-    private static long cpuNanos() {
+    static long cpuNanos() {
         return ManagementFactory.getThreadMXBean().getCurrentThreadCpuTime();
     }
 
-    private static double load() {
+    static double load() {
         return ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage();
     }
 
@@ -155,7 +148,7 @@ public final class ZmodemBench {
                 }
             }
         }
-        if (!installed("sz") || !installed("rz") || !installed("sb") || !installed("socat")) {
+        if (!Socat.installed("sz") || !Socat.installed("rz") || !Socat.installed("sb") || !Socat.installed("socat")) {
             System.err.println("Error: the ZMODEM benchmark compares with lrzsz: install lrzsz and socat");
             return 1;
         }
@@ -220,8 +213,9 @@ public final class ZmodemBench {
                     iBaud, latency, dropEvery, iBytes);
             System.out.println("| protocol | calls | done | bytes moved per call | wall s | RIPV CPU s | load |");
             System.out.println("| --- | --- | --- | --- | --- | --- | --- |");
-            System.out.println(bench.iridiumZmodem(iBaud, latency, dropEvery, small, maxCalls));
-            System.out.println(bench.iridiumYmodem(iBaud, latency, dropEvery, small, ymodemCalls));
+            IridiumCalls calls = new IridiumCalls(dir, iBaud, latency, dropEvery);
+            System.out.println(calls.zmodem(small, maxCalls));
+            System.out.println(calls.ymodem(small, ymodemCalls));
         }
         return 0;
     }
@@ -240,7 +234,7 @@ public final class ZmodemBench {
     private Row ours(int baud, Path file) throws Exception {
         Path out = Files.createDirectories(dir.resolve("ours"));
         try (ServerSocket receiverSide = new ServerSocket(0);
-             YmodemBaudRelay relay = new YmodemBaudRelay(baud, local(receiverSide.getLocalPort()))) {
+             YmodemBaudRelay relay = new YmodemBaudRelay(baud, Socat.local(receiverSide.getLocalPort()))) {
             double load = load();
             long cpu = cpuNanos();
             Future<Long> receiving = pool.submit((Callable<Long>) () -> {
@@ -256,17 +250,14 @@ public final class ZmodemBench {
             }
             long receiverCpu = receiving.get(1, TimeUnit.HOURS);
             return new Row("RIPV → RIPV", baud, Files.size(file), (System.nanoTime() - start) / 1e9,
-                    (cpuNanos() - cpu + receiverCpu) / 1e9, load, same(file, out.resolve(file.getFileName())));
+                    (cpuNanos() - cpu + receiverCpu) / 1e9, load, Socat.sameBytes(file, out.resolve(file.getFileName())));
         }
     }
 
     private Row szToOurs(int baud, Path file) throws Exception {
         Path out = Files.createDirectories(dir.resolve("sz"));
-        int port = freePort();
-        Process socat = socat(file.getParent(), "TCP-LISTEN:" + port + ",bind=127.0.0.1,reuseaddr",
-                "SYSTEM:'exec " + SZ + file.getFileName() + "'");
-        awaitListening(port);
-        try (YmodemBaudRelay relay = new YmodemBaudRelay(baud, local(port))) {
+        try (Socat.Served socat = Socat.serve(file.getParent(), SZ + file.getFileName());
+             YmodemBaudRelay relay = new YmodemBaudRelay(baud, socat.address())) {
             double load = load();
             long cpu = cpuNanos();
             long start = System.nanoTime();
@@ -274,11 +265,9 @@ public final class ZmodemBench {
                 new ZmodemReceiver(link, 10_000, null).receive(new ResumeStore(dir.resolve("parts-sz")), out);
             }
             double seconds = (System.nanoTime() - start) / 1e9;
-            socat.waitFor(30, TimeUnit.SECONDS);
+            socat.process().waitFor(30, TimeUnit.SECONDS);
             return new Row("lrzsz sz → RIPV", baud, Files.size(file), seconds, (cpuNanos() - cpu) / 1e9, load,
-                    same(file, out.resolve(file.getFileName())));
-        } finally {
-            socat.destroy();
+                    Socat.sameBytes(file, out.resolve(file.getFileName())));
         }
     }
 
@@ -288,10 +277,8 @@ public final class ZmodemBench {
 
     private Row oursToRz(int baud, Path file, int window, String pair) throws Exception {
         Path out = Files.createDirectories(dir.resolve("rz"));
-        int port = freePort();
-        Process socat = socat(out, "TCP-LISTEN:" + port + ",bind=127.0.0.1,reuseaddr", "SYSTEM:'exec rz -q -y'");
-        awaitListening(port);
-        try (YmodemBaudRelay relay = new YmodemBaudRelay(baud, local(port))) {
+        try (Socat.Served socat = Socat.serve(out, "rz -q -y");
+             YmodemBaudRelay relay = new YmodemBaudRelay(baud, socat.address())) {
             double load = load();
             long start = System.nanoTime();
             Future<Long> sending = pool.submit((Callable<Long>) () -> {
@@ -303,108 +290,27 @@ public final class ZmodemBench {
             });
             // timed as lrzsz's pair is: until rz, having the file and the "OO", ends. The sender's
             // own last moments (it listens a while after "OO" for an rz that missed it) are not the line's.
-            socat.waitFor(1, TimeUnit.HOURS);
+            socat.process().waitFor(1, TimeUnit.HOURS);
             double seconds = (System.nanoTime() - start) / 1e9;
             long senderCpu = sending.get(2, TimeUnit.MINUTES);
             return new Row(pair, baud, Files.size(file), seconds, senderCpu / 1e9, load,
-                    same(file, out.resolve(file.getFileName())));
-        } finally {
-            socat.destroy();
+                    Socat.sameBytes(file, out.resolve(file.getFileName())));
         }
     }
 
     private Row szToRz(int baud, Path file) throws Exception {
         Path out = Files.createDirectories(dir.resolve("szrz"));
-        int port = freePort();
-        Process rz = socat(out, "TCP-LISTEN:" + port + ",bind=127.0.0.1,reuseaddr", "SYSTEM:'exec rz -q -y'");
-        awaitListening(port);
-        try (YmodemBaudRelay relay = new YmodemBaudRelay(baud, local(port))) {
+        try (Socat.Served rz = Socat.serve(out, "rz -q -y");
+             YmodemBaudRelay relay = new YmodemBaudRelay(baud, rz.address())) {
             double load = load();
             long start = System.nanoTime();
-            Process sz = socat(file.getParent(), "TCP:127.0.0.1:" + relay.port(), "SYSTEM:'exec " + SZ + file.getFileName() + "'");
-            rz.waitFor(1, TimeUnit.HOURS);
+            Process sz = Socat.call(file.getParent(), relay.port(), SZ + file.getFileName());
+            rz.process().waitFor(1, TimeUnit.HOURS);
             double seconds = (System.nanoTime() - start) / 1e9;
             sz.waitFor(30, TimeUnit.SECONDS);
             return new Row("lrzsz sz → lrzsz rz", baud, Files.size(file), seconds, 0, load,
-                    same(file, out.resolve(file.getFileName())));
-        } finally {
-            rz.destroy();
+                    Socat.sameBytes(file, out.resolve(file.getFileName())));
         }
-    }
-
-    /** Calls until the file is whole: each call a fresh sz, our receiver continuing from the part. */
-    private String iridiumZmodem(int baud, long latency, long dropEvery, Path file, int maxCalls) throws Exception {
-        Path out = Files.createDirectories(dir.resolve("iridium-z"));
-        ResumeStore store = new ResumeStore(dir.resolve("parts-iridium"));
-        StringBuilder perCall = new StringBuilder();
-        double load = load();
-        long cpu = cpuNanos();
-        long start = System.nanoTime();
-        int calls = 0;
-        boolean done = false;
-        while (!done && calls < maxCalls) {
-            calls++;
-            long before = Math.max(0, store.partLength(file.getFileName().toString()));
-            int port = freePort();
-            Process sz = socat(file.getParent(), "TCP-LISTEN:" + port + ",bind=127.0.0.1,reuseaddr",
-                    "SYSTEM:'exec " + SZ + file.getFileName() + "'");
-            try (IridiumRelay relay = new IridiumRelay(baud, latency, dropEvery * 1000, local(port));
-                 TcpLink link = TcpLink.connect("tcp://127.0.0.1:" + relay.port(), 5000)) {
-                new ZmodemReceiver(link, 10_000, null).startTimeout(30_000).receive(store, out);
-                done = same(file, out.resolve(file.getFileName()));
-            } catch (IOException e) {
-                // the call dropped: the part waits for the next one
-            } finally {
-                sz.destroy();
-                sz.waitFor(10, TimeUnit.SECONDS);
-            }
-            long after = done ? Files.size(file) : Math.max(0, store.partLength(file.getFileName().toString()));
-            perCall.append(perCall.isEmpty() ? "" : ", ").append(after - before);
-        }
-        return String.format(Locale.ROOT, "| ZMODEM, resuming | %d | %s | %s | %.0f | %.2f | %.2f |", calls,
-                done ? "yes" : "no", perCall, (System.nanoTime() - start) / 1e9, (cpuNanos() - cpu) / 1e9, load);
-    }
-
-    /** YMODEM over the same calls: a cut file starts again from zero on the next. */
-    private String iridiumYmodem(int baud, long latency, long dropEvery, Path file, int maxCalls) throws Exception {
-        Path out = Files.createDirectories(dir.resolve("iridium-y"));
-        StringBuilder perCall = new StringBuilder();
-        double load = load();
-        long cpu = cpuNanos();
-        long start = System.nanoTime();
-        int calls = 0;
-        boolean done = false;
-        YmodemConfig config = YmodemConfig.lrzsz();
-        while (!done && calls < maxCalls) {
-            calls++;
-            AtomicLong moved = new AtomicLong();
-            int port = freePort();
-            Process sb = socat(file.getParent(), "TCP-LISTEN:" + port + ",bind=127.0.0.1,reuseaddr",
-                    "SYSTEM:'exec sb --ymodem -k -q " + file.getFileName() + "'");
-            try (IridiumRelay relay = new IridiumRelay(baud, latency, dropEvery * 1000, local(port));
-                 TcpLink link = TcpLink.connect("tcp://127.0.0.1:" + relay.port(), 5000)) {
-                new YmodemReceiver(link, config, new TransferListener() {
-                    @Override
-                    public void progress(FileHeader f, long d) {
-                        moved.set(d);
-                    }
-                }).receiveBatch(new DirectorySink(out));
-                done = same(file, out.resolve(file.getFileName()));
-            } catch (IOException e) {
-                // dropped: YMODEM has nothing to resume from
-            } finally {
-                sb.destroy();
-                sb.waitFor(10, TimeUnit.SECONDS);
-            }
-            perCall.append(perCall.isEmpty() ? "" : ", ").append(done ? Files.size(file) : moved.get());
-        }
-        return String.format(Locale.ROOT, "| YMODEM, from zero each call | %d%s | %s | %s (kept: 0) | %.0f | %.2f | %.2f |",
-                calls, done ? "" : " (stopped)", done ? "yes" : "no", perCall, (System.nanoTime() - start) / 1e9,
-                (cpuNanos() - cpu) / 1e9, load);
-    }
-
-    private static InetSocketAddress local(int port) {
-        return new InetSocketAddress("127.0.0.1", port);
     }
 
     /**
@@ -423,62 +329,6 @@ public final class ZmodemBench {
         double mb = median(b);
         return String.format(Locale.ROOT, "%s against %s on the same link, median of %d: %.2f s against %.2f s (%s %.2f %%)", ours,
                 theirs, a.length, ma, mb, ma <= mb ? "faster by" : "SLOWER by", 100 * Math.abs(ma - mb) / mb);
-    }
-
-    static double median(double[] values) {
-        double[] v = values.clone();
-        Arrays.sort(v);
-        return v.length % 2 == 1 ? v[v.length / 2] : (v[v.length / 2 - 1] + v[v.length / 2]) / 2;
-    }
-
-    /**
-     * Until socat listens on {@code port}: otherwise the relay's first connect may come before it,
-     * and its retry a moment later falls inside the timed transfer (one row 0.1 s slower than its
-     * pair for no fault of either end). Read from the kernel's table, since a test connection would
-     * take the one connection socat accepts.
-     */
-    static void awaitListening(int port) throws IOException, InterruptedException {
-        String local = String.format(Locale.ROOT, ":%04X ", port);
-        long deadline = System.nanoTime() + 10_000_000_000L;
-        while (System.nanoTime() < deadline) {
-            for (String table : List.of("/proc/net/tcp", "/proc/net/tcp6")) {
-                Path t = Path.of(table);
-                if (Files.isReadable(t)) {
-                    for (String line : Files.readAllLines(t)) {
-                        String[] f = line.trim().split("\\s+");
-                        if (f.length > 3 && (f[1] + " ").endsWith(local) && f[3].equals("0A")) {
-                            return;
-                        }
-                    }
-                }
-            }
-            Thread.sleep(5);
-        }
-        throw new IOException("socat did not listen on port " + port + " within 10 s");
-    }
-
-    private static int freePort() throws IOException {
-        try (ServerSocket s = new ServerSocket(0)) {
-            return s.getLocalPort();
-        }
-    }
-
-    private static Process socat(Path cwd, String a, String b) throws IOException {
-        return new ProcessBuilder("socat", a, b).directory(cwd.toFile()).redirectErrorStream(true)
-                .redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
-    }
-
-    private static boolean same(Path a, Path b) throws IOException {
-        return Files.exists(b) && Arrays.equals(Files.readAllBytes(a), Files.readAllBytes(b));
-    }
-
-    private static boolean installed(String tool) {
-        for (String d : System.getenv().getOrDefault("PATH", "").split(File.pathSeparator)) {
-            if (Files.isExecutable(Path.of(d, tool))) {
-                return true;
-            }
-        }
-        return false;
     }
 
     static final List<String> USAGE = List.of(

@@ -3,23 +3,15 @@ package org.ripv.server;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
-import java.net.ServerSocket;
 import java.net.StandardSocketOptions;
 import java.nio.channels.ServerSocketChannel;
 import java.nio.file.Path;
-import java.rmi.NoSuchObjectException;
-import java.rmi.RemoteException;
-import java.rmi.registry.Registry;
-import java.rmi.server.UnicastRemoteObject;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
-import java.util.concurrent.SynchronousQueue;
-import java.util.concurrent.ThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Supplier;
 import org.ripv.files.PrivateFiles;
@@ -30,9 +22,6 @@ import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.naming.Handles;
 import org.ripv.post.MailBox;
 import org.ripv.post.PostOffice;
-import org.ripv.rmi.BoundServerSocketFactory;
-import org.ripv.rmi.DeadlineSocketFactory;
-import org.ripv.rmi.GenericRMIInterface;
 import org.ripv.rmi.RmiSupport;
 import org.ripv.server.clients.ClientAcceptor;
 import org.ripv.server.clients.ClientDispatch;
@@ -42,6 +31,7 @@ import org.ripv.server.clients.WebClients;
 import org.ripv.server.commands.ServerCommands;
 import org.ripv.server.commands.ServiceQueries;
 import org.ripv.server.dataloop.DataLoop;
+import org.ripv.server.handout.HandoutTickets;
 import org.ripv.server.files.FileStore;
 import org.ripv.server.handlers.SocketHandler;
 import org.ripv.server.handlers.WriterPool;
@@ -49,6 +39,7 @@ import org.ripv.server.lock.OperatorLock;
 import org.ripv.server.plans.PlanBridge;
 import org.ripv.server.plans.Plans;
 import org.ripv.server.remote.OutboundListener;
+import org.ripv.server.remote.RmiDoor;
 import org.ripv.server.remote.ServerRemote;
 import org.ripv.server.requests.InternalCalls;
 import org.ripv.server.requests.RequestCancels;
@@ -65,7 +56,6 @@ import org.ripv.server.permit.PermitFile;
 import org.ripv.server.permit.PermitWatcher;
 import org.ripv.server.requests.PendingRequests;
 import org.ripv.server.requests.RequestEndings;
-import org.ripv.server.security.RegistryGuard;
 import org.ripv.server.security.ServerSecurity;
 import org.ripv.server.security.ServerTls;
 import org.ripv.server.services.ServiceLiveness;
@@ -75,7 +65,6 @@ import org.ripv.server.session.ConsoleHub;
 import org.ripv.server.workflow.WorkflowBridge;
 import org.ripv.server.workflow.Workflows;
 import org.ripv.wire.FrameCodec;
-import org.ripv.wire.WireFilter;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -92,6 +81,11 @@ import org.slf4j.LoggerFactory;
  * ...
  * server.stop();           // releases threads, ports and files
  * }</pre>
+ *
+ * <p>Longer than 400 lines for one reason: it is the one place that opens the parts in order,
+ * hands each the collaborators it uses and closes them again, and that tells the parts of the
+ * events that concern several of them; the parts themselves (the RMI door, the thread pools, the
+ * client port, the web console…) live in their own classes.
  */
 public final class RIPVServer implements AutoCloseable {
     private static final Logger log = LoggerFactory.getLogger(RIPVServer.class);
@@ -103,16 +97,15 @@ public final class RIPVServer implements AutoCloseable {
     private final ServiceRegistry services = new ServiceRegistry();
     private final Map<String, OperatorLock> locks = new ConcurrentHashMap<>();
     private final PostOffice<IncomingServerMessage, OutgoingServerMessage> postOffice = new PostOffice<>(200_000);
-    private final ScheduledExecutorService timers;
+    private final Threads threads = new Threads();
+    private final ScheduledExecutorService timers = threads.timers;
+    private final ExecutorService checkers = threads.checkers;
     /** The threads that write every client's socket. */
-    private final WriterPool writers;
-    private final ExecutorService checkers;
-    private final ExecutorService withdrawals;
-    private final ExecutorService liveness;
+    private final WriterPool writers = new WriterPool(timers);
     private final ServiceLiveness serviceLiveness;
-    private final ExecutorService fileWork;
     private ServerRemote remote;
     private volatile InternalCalls internalCalls;
+    private volatile DataLoop dataLoop;
     private ServiceAdmission admission;
     /** Each client's requests waiting for their final reply, capped (issue 33 item 10). */
     private final WaitingRequests waiting = new WaitingRequests();
@@ -126,13 +119,12 @@ public final class RIPVServer implements AutoCloseable {
     private volatile RequestEndings endings;
     private ServerSocketChannel listener;
     private volatile ClientAcceptor acceptor;
-    private Registry registry;
-    private int registryPort;
+    /** The RMI registry and the server's remote object on the registry port. */
+    private RmiDoor rmi;
     private WebConsole landingPage;
     private volatile String mapTiles;
     private volatile String publicNames;
     private ServerSecurity security;
-    private RegistryGuard registryGuard;
     private ServerTls tls;
     private Workflows workflows;
     /** Plans and their changes (org.ripv.server.plans, docs/plans.md). */
@@ -152,16 +144,7 @@ public final class RIPVServer implements AutoCloseable {
     public RIPVServer(ServerConfig config, SessionOptions sessionOptions) {
         this.config = config;
         this.sessionOptions = sessionOptions;
-        this.timers = Executors.newScheduledThreadPool(1, Threads.named("ripv-server-timer"));
-        this.writers = new WriterPool(timers);
-        // Calls to services: each is bounded by the RMI deadlines and at most one MailBox query
-        // runs per service, so a cached pool grows by one thread per hung service at worst.
-        this.checkers = Executors.newCachedThreadPool(Threads.named("ripv-service-query"));
-        this.withdrawals = new ThreadPoolExecutor(0, 16, 30, TimeUnit.SECONDS,
-                new SynchronousQueue<>(), Threads.named("ripv-withdraw"));
-        this.liveness = Executors.newFixedThreadPool(2, Threads.named("ripv-service-check"));
-        this.fileWork = Executors.newFixedThreadPool(2, Threads.named("ripv-file-work"));
-        this.serviceLiveness = new ServiceLiveness(services, liveness, checkers, timers, config.serviceCheck(), this::drop);
+        this.serviceLiveness = new ServiceLiveness(services, threads.liveness, checkers, timers, config.serviceCheck(), this::drop);
     }
 
     /** The web console's map tiles ({@code --map-tiles URL}, checked by {@link WebConsole.Options}); set before {@link #start()}. */
@@ -194,7 +177,7 @@ public final class RIPVServer implements AutoCloseable {
         secret = ServiceSecret.loadOrCreate(config.dataDir().resolve("service.secret"));
         codec = new FrameCodec(config.maxFrame());
         pending = new PendingRequests(timers, config.requestTimeout(), this::timedOut);
-        endings = new RequestEndings(this::reply, pending, withdrawals, config.requestTimeout());
+        endings = new RequestEndings(this::reply, pending, threads.withdrawals, config.requestTimeout());
         // A log-in looks at the file first (one stat): a user just added with ripv passwd can log in
         // at once, not only after the next periodic check.
         security = new ServerSecurity(config.security(), config.maxClients(), timers, () -> {
@@ -214,14 +197,14 @@ public final class RIPVServer implements AutoCloseable {
         sessions.expireLocks(timers, locks, mailbox -> workflows.lockReleased(mailbox));
         permits.onChange(sessions::permitsChanged);
         internalCalls = new InternalCalls(services, permitFile, files, forwarder);
-        DataLoop dataLoop = new DataLoop(internalCalls, config.dataDir().resolve("ingest.properties"));
+        dataLoop = new DataLoop(internalCalls, new HandoutTickets(services), config.dataDir().resolve("ingest.properties"));
         admission = new ServiceAdmission(services, serviceLiveness, checkers, this::undeliverable, this::drop, this::serviceOnline);
         remote = new ServerRemote(security.challenges(), admission, services,
                 new ServiceReplies(pending, cancels, files, dataLoop, this::reply, this::client), this::console);
         ServiceQueries queries = new ServiceQueries(services, serviceLiveness, checkers, permitFile, locks, console, this::reply);
         Admission admit = new Admission(Admission.steps(services, permitFile, locks, dataLoop, files, this::reply), forwarder);
         ServerCommands commands = new ServerCommands(new ServerCommands.Parts(permitFile, files, services, queries, locks, sessions,
-                workflows, plans, cancels, security.throttle(), state.audit(), state.store(), this::client), fileWork, checkers,
+                workflows, plans, cancels, security.throttle(), state.audit(), state.store(), this::client), threads.fileWork, checkers,
                 this::reply, admit::route);
         box = postOffice.open(POST_OFFICE, new ServerTaskManager(commands::run, admit, workflows::reply, waiting, this::client,
                 this::reply));
@@ -232,18 +215,7 @@ public final class RIPVServer implements AutoCloseable {
 
         InetAddress bind = config.bindAddress() == null ? null : InetAddress.getByName(config.bindAddress());
         try {
-            registryPort = config.registryPort() == 0 ? freePort() : config.registryPort();
-            BoundServerSocketFactory rmiSockets = new BoundServerSocketFactory(bind);
-            // Services call back with deadlines: the factory travels inside the stub they get.
-            DeadlineSocketFactory callSockets = DeadlineSocketFactory.fromSystem();
-            try {
-                registry = RegistryGuard.create(registryPort, callSockets, rmiSockets);
-            } catch (RemoteException e) {
-                throw new IOException("cannot open the RMI registry on port " + registryPort + " (in use?): " + e.getMessage(), e);
-            }
-            GenericRMIInterface stub = (GenericRMIInterface) UnicastRemoteObject.exportObject(remote,
-                    registryPort, callSockets, rmiSockets, WireFilter.forRmi(RmiSupport.MAX_RMI_BYTES));
-            registryGuard = RegistryGuard.bind(registry, stub);
+            rmi = RmiDoor.open(bind, config.registryPort(), remote);
 
             tls = ServerTls.resolve(config.tls(), config.security().plain(), config.dataDir().resolve("tls"));
             listener = ServerSocketChannel.open(); // TLS on the selector threads (org.ripv.server.transport)
@@ -275,7 +247,7 @@ public final class RIPVServer implements AutoCloseable {
         long check = config.serviceCheck().toMillis();
         timers.scheduleWithFixedDelay(this::checkServices, check, check, TimeUnit.MILLISECONDS);
         log.info("RIPVServer listening for clients on port {}{}, RMI registry on port {}, data in {}", port(),
-                tls.label(), registryPort, config.dataDir().toAbsolutePath());
+                tls.label(), rmi.port(), config.dataDir().toAbsolutePath());
     }
 
     /** The fingerprint of the server's own certificate, or null (plain, or the operator's key store). */
@@ -325,20 +297,8 @@ public final class RIPVServer implements AutoCloseable {
         }
         writers.close();
         services.closeAll();
-        if (registry != null) {
-            try {
-                registry.unbind(GenericRMIInterface.BINDING);
-            } catch (Exception ignored) {
-                // not bound, or already gone
-            }
-            try {
-                UnicastRemoteObject.unexportObject(registry, true);
-            } catch (NoSuchObjectException ignored) {
-                // not exported
-            }
-        }
-        if (remote != null) {
-            RmiSupport.unexport(remote);
+        if (rmi != null) {
+            rmi.close();
         }
         if (workflows != null) {
             workflows.close();
@@ -352,11 +312,7 @@ public final class RIPVServer implements AutoCloseable {
         if (state != null) {
             state.close();
         }
-        timers.shutdownNow();
-        checkers.shutdownNow();
-        withdrawals.shutdownNow();
-        liveness.shutdownNow();
-        fileWork.shutdownNow();
+        threads.close();
         if (security != null) {
             security.close();
         }
@@ -407,12 +363,6 @@ public final class RIPVServer implements AutoCloseable {
     /** The landing page's port, or -1 when it is off. */
     public int httpPort() {
         return landingPage == null ? -1 : landingPage.port();
-    }
-
-    private static int freePort() throws IOException {
-        try (ServerSocket s = new ServerSocket(0)) {
-            return s.getLocalPort();
-        }
     }
 
     /** The live console: watchers, vehicle state, transcripts (tests and benchmarks look inside). */
@@ -469,7 +419,7 @@ public final class RIPVServer implements AutoCloseable {
 
     private void checkServices() {
         serviceLiveness.checkAll();
-        registryGuard.check();
+        rmi.check();
         permits.reloadIfChanged();
     }
 
@@ -525,7 +475,7 @@ public final class RIPVServer implements AutoCloseable {
     }
 
     public int registryPort() {
-        return registryPort;
+        return rmi.port();
     }
 
     public Path secretFile() {
@@ -534,6 +484,11 @@ public final class RIPVServer implements AutoCloseable {
 
     public FileStore fileStore() {
         return files;
+    }
+
+    /** The data loop: what it relayed (tests). */
+    public DataLoop dataLoop() {
+        return dataLoop;
     }
 
     /** How many services are registered now. */

@@ -2,7 +2,6 @@ package org.ripv.client.cli;
 
 import java.io.IOException;
 import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
@@ -15,23 +14,16 @@ import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 import java.util.function.Consumer;
-import org.jfree.chart.JFreeChart;
-import org.ripv.charts.ChartRenderer;
 import org.ripv.client.handlers.ClientSocketHandler;
 import org.ripv.client.handlers.RipvErrorException;
-import org.ripv.export.ChartExport;
-import org.ripv.export.TableExport;
-import org.ripv.messages.ChartData;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.Footer;
 import org.ripv.messages.Header;
 import org.ripv.messages.Ids;
-import org.ripv.messages.ImageResult;
 import org.ripv.messages.MailboxList;
 import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.Priority;
 import org.ripv.messages.Status;
-import org.ripv.messages.TableResult;
 import org.ripv.naming.MailboxAddress;
 
 /**
@@ -56,9 +48,8 @@ public final class CliSession {
     private String mailbox = "";
     private Priority priority = Priority.NORMAL;
     private boolean anyError;
-    private TableResult lastTable;
-    /** A plot's data, when it came after the last table (export writes whichever came last). */
-    private ChartData lastChart;
+    /** The last table or plot received, for {@code export}. */
+    private final CliExport exports = new CliExport();
     /** The request being waited for, so that {@link #cancel()} can end the wait. */
     private volatile CompletableFuture<OutgoingServerMessage> waiting;
     /** The message id of the request being waited for, 0 for none (what {@code ?cancel} names). */
@@ -240,12 +231,7 @@ public final class CliSession {
     private void send(String box, String body) throws IOException {
         OutgoingServerMessage reply = await(box, body, printer::print);
         if (reply != null) {
-            if (reply.footer().result() instanceof TableResult t) {
-                lastTable = t;
-                lastChart = null;
-            } else if (reply.footer().result() instanceof ImageResult img && img.chart() != null) {
-                lastChart = img.chart();
-            }
+            exports.remember(reply.footer().result());
             print(reply);
         }
     }
@@ -308,49 +294,12 @@ public final class CliSession {
         err.println("Cancelled: stopped waiting for '" + what + "'; the server may still finish it (its reply will be ignored)");
     }
 
-    /**
-     * {@code export csv|json FILE}: the last table received, or a plot's data when one came after
-     * it, to a local file ({@link org.ripv.export.TableExport}, {@link org.ripv.export.ChartExport});
-     * {@code export svg FILE}: that plot as a picture of all its data ({@link ChartRenderer}, 900 x 560).
-     */
     private void export(String args) throws IOException {
-        String[] a = args.isEmpty() ? new String[0] : args.split("\\s+", 2);
-        if (a.length != 2 || !(a[0].equalsIgnoreCase("csv") || a[0].equalsIgnoreCase("json") || a[0].equalsIgnoreCase("svg"))) {
-            localError(ErrorCode.BAD_REQUEST, "usage: export csv|json|svg LOCALFILE (writes the last query result or plot's data;"
-                    + " svg: the plot)");
-            return;
+        try {
+            local(exports.export(args));
+        } catch (IllegalArgumentException e) {
+            localError(ErrorCode.BAD_REQUEST, e.getMessage());
         }
-        if (a[0].equalsIgnoreCase("svg")) {
-            if (lastChart == null) {
-                localError(ErrorCode.BAD_REQUEST, "no plot to export as SVG: the last reply was not a plot with data (a vis: plot"
-                        + " of the built-in worker)");
-                return;
-            }
-            Path file = Path.of(a[1]);
-            JFreeChart chart = ChartRenderer.chart(lastChart);
-            ChartRenderer.fitPicture(chart, lastChart.kind(), 900, 560);
-            Files.write(file, ChartRenderer.svg(chart, 900, 560));
-            local("exported the plot (" + lastChart.series().size() + " series, " + lastChart.points() + " points) as svg to " + file);
-            return;
-        }
-        if (lastChart != null) {
-            boolean csv = a[0].equalsIgnoreCase("csv");
-            Path file = Path.of(a[1]);
-            Files.writeString(file, csv ? ChartExport.csv(lastChart) : ChartExport.json(lastChart),
-                    StandardCharsets.UTF_8);
-            local("exported the plot's data (" + lastChart.series().size() + " series, " + lastChart.points() + " points) as "
-                    + a[0].toLowerCase(Locale.ROOT) + " to " + file);
-            return;
-        }
-        if (lastTable == null) {
-            localError(ErrorCode.BAD_REQUEST, "no query result to export yet: run a SELECT first");
-            return;
-        }
-        String text = a[0].equalsIgnoreCase("csv") ? TableExport.csv(lastTable)
-                : TableExport.json(lastTable);
-        Path file = Path.of(a[1]);
-        Files.writeString(file, text, StandardCharsets.UTF_8);
-        local("exported " + lastTable.rows().size() + " rows as " + a[0].toLowerCase(Locale.ROOT) + " to " + file);
     }
 
     private void put(String args) throws IOException {
@@ -446,5 +395,4 @@ public final class CliSession {
     private OutgoingServerMessage localReply(Footer f) {
         return new OutgoingServerMessage(Header.request(0, mailbox, "", priority), f.via("cli"));
     }
-
 }

@@ -6,14 +6,10 @@ import java.io.DataInputStream;
 import java.io.DataOutputStream;
 import java.io.EOFException;
 import java.io.IOException;
-import java.io.InputStream;
-import java.net.ConnectException;
-import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.time.Duration;
 import java.util.Arrays;
 import java.util.List;
@@ -27,12 +23,8 @@ import java.util.concurrent.TimeoutException;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Consumer;
 import javax.net.SocketFactory;
-import javax.net.ssl.SSLException;
-import javax.net.ssl.SSLParameters;
-import javax.net.ssl.SSLSocket;
 import org.ripv.failover.ServerList;
 import org.ripv.messages.Attachment;
-import org.ripv.messages.FileData;
 import org.ripv.messages.Header;
 import org.ripv.messages.IdBadge;
 import org.ripv.messages.IncomingServerMessage;
@@ -42,7 +34,6 @@ import org.ripv.messages.Priority;
 import org.ripv.messages.SessionInfo;
 import org.ripv.messages.Status;
 import org.ripv.messages.TablePages;
-import org.ripv.messages.TableResult;
 import org.ripv.wire.FrameCodec;
 import org.ripv.wire.ProtocolException;
 import org.slf4j.Logger;
@@ -87,8 +78,7 @@ public final class ClientSocketHandler implements AutoCloseable {
     private final DataInputStream in;
     private final FrameCodec codec;
     private final Map<Long, Pending> pending = new ConcurrentHashMap<>();
-    /** Tables arriving in pages, by message id, joined before anyone sees the final reply ({@link TablePages}). */
-    private final Map<Long, TablePages> pages = new ConcurrentHashMap<>();
+    private final PageJoiner pages = new PageJoiner();
     private final List<Listener> listeners = new CopyOnWriteArrayList<>();
     private final AtomicLong ids = new AtomicLong();
     private final Thread reader;
@@ -145,58 +135,8 @@ public final class ClientSocketHandler implements AutoCloseable {
     /** Connects with the given socket factory (an {@code SSLSocketFactory} for TLS). */
     public static ClientSocketHandler connect(String host, int port, SocketFactory factory, Duration timeout)
             throws IOException {
-        Socket s = factory.createSocket();
-        if (s instanceof SSLSocket tls) {
-            // Check that the certificate names the host we asked for, not only that a CA signed it.
-            SSLParameters p = tls.getSSLParameters();
-            p.setEndpointIdentificationAlgorithm("HTTPS");
-            tls.setSSLParameters(p);
-        }
-        try {
-            s.setTcpNoDelay(true);
-            s.connect(new InetSocketAddress(host, port), (int) timeout.toMillis());
-        } catch (ConnectException e) {
-            s.close();
-            throw new IOException("nothing listens on " + host + ":" + port + " (" + e.getMessage()
-                    + "): is the server running, and is " + port + " its client port (4444 unless started with --port)?", e);
-        } catch (IOException | RuntimeException e) {
-            s.close();
-            throw e;
-        }
-        try {
-            // A short connect deadline (a server list) must not cut a slow first handshake or greeting short.
-            s.setSoTimeout((int) Math.max(timeout.toMillis(), 10_000));
-            if (s instanceof SSLSocket tls) {
-                handshake(tls);
-            }
-            return new ClientSocketHandler(s, host + ":" + port, FrameCodec.DEFAULT_MAX_FRAME);
-        } catch (Tls.RefusedCertificate e) {
-            s.close();
-            throw e;
-        } catch (IOException e) {
-            s.close();
-            throw WrongPort.explain(host, port, s instanceof SSLSocket, e);
-        } catch (RuntimeException e) {
-            s.close();
-            throw e;
-        }
-    }
-
-    /** Runs the TLS handshake now, so that a refused certificate says why in plain words. */
-    private static void handshake(SSLSocket tls) throws IOException {
-        try {
-            tls.startHandshake();
-        } catch (SSLException e) {
-            for (Throwable t = e; t != null; t = t.getCause()) {
-                if (t instanceof Tls.ChangedCertificateException changed) {
-                    throw new Tls.RefusedCertificate(changed.getMessage(), e);
-                }
-                if (t instanceof Tls.UnpinnedStandbyException unpinned) {
-                    throw new IOException(unpinned.getMessage(), e);
-                }
-            }
-            throw new IOException("TLS handshake failed: " + e.getMessage(), e);
-        }
+        return Dial.open(host, port, factory, timeout, s -> new ClientSocketHandler(s, host + ":" + port,
+                FrameCodec.DEFAULT_MAX_FRAME));
     }
 
     public void addListener(Listener l) {
@@ -282,7 +222,7 @@ public final class ClientSocketHandler implements AutoCloseable {
         return await(send(mailbox, body, priority, progress), timeout);
     }
 
-    private OutgoingServerMessage await(CompletableFuture<OutgoingServerMessage> f, Duration timeout) throws IOException {
+    OutgoingServerMessage await(CompletableFuture<OutgoingServerMessage> f, Duration timeout) throws IOException {
         try {
             return f.get(timeout.toMillis(), TimeUnit.MILLISECONDS);
         } catch (InterruptedException e) {
@@ -339,29 +279,7 @@ public final class ClientSocketHandler implements AutoCloseable {
      */
     public OutgoingServerMessage upload(Path local, String remoteName, String mode, TransferListener listener)
             throws IOException, RipvErrorException {
-        String suffix = mode == null || mode.isBlank() ? "" : " " + mode;
-        long total = Files.size(local);
-        listener = listener == null ? TransferListener.NONE : listener;
-        try (InputStream file = Files.newInputStream(local)) {
-            long offset = 0;
-            OutgoingServerMessage last = null;
-            do {
-                byte[] chunk = file.readNBytes((int) Math.min(CHUNK, total - offset));
-                Header h = new Header(nextId(), new IdBadge("000000", ""), List.of(), "", "",
-                        "?upload " + remoteName + " " + offset + " " + total + suffix, Priority.NORMAL,
-                        new Attachment(remoteName, chunk));
-                last = await(send(h, null), Duration.ofMinutes(2));
-                if (last.status() == Status.ERROR) {
-                    throw new RipvErrorException(last);
-                }
-                offset += chunk.length;
-                if (!listener.progress(offset, total)) {
-                    call("", "?upload-cancel " + remoteName, Priority.NORMAL, Duration.ofSeconds(30), null);
-                    throw new IOException("upload of " + remoteName + " cancelled");
-                }
-            } while (offset < total);
-            return last;
-        }
+        return FileChunks.upload(this, local, remoteName, mode, listener);
     }
 
     /**
@@ -369,48 +287,7 @@ public final class ClientSocketHandler implements AutoCloseable {
      * through a temporary file so that an interrupted download never looks complete.
      */
     public Path download(String name, Path localDir, TransferListener listener) throws IOException, RipvErrorException {
-        listener = listener == null ? TransferListener.NONE : listener;
-        localDir = localDir.toAbsolutePath().normalize(); // a bare "." has no parent to compare with
-        Files.createDirectories(localDir);
-        // a download is listed as FOLDER/NAME (the MailBox it came from): saved locally as NAME
-        int slash = name.lastIndexOf('/');
-        String folder = slash < 0 ? "x" : name.substring(0, slash);
-        if (folder.isEmpty() || folder.contains("/") || folder.equals("..") || folder.equals(".")) {
-            throw new IOException("refusing to write '" + name + "' outside " + localDir);
-        }
-        Path target = localDir.resolve(name.substring(slash + 1)).normalize();
-        if (!localDir.equals(target.getParent())) {
-            throw new IOException("refusing to write '" + name + "' outside " + localDir);
-        }
-        Path tmp = Files.createTempFile(localDir, ".ripv-", ".part");
-        try (var file = Files.newOutputStream(tmp)) {
-            long offset = 0;
-            long total;
-            do {
-                OutgoingServerMessage r = call("", "?download " + name + " " + offset + " " + CHUNK, Priority.NORMAL,
-                        Duration.ofMinutes(2), null);
-                if (r.status() == Status.ERROR) {
-                    throw new RipvErrorException(r);
-                }
-                if (!(r.footer().result() instanceof FileData chunk) || chunk.offset() != offset) {
-                    throw new ProtocolException("the server sent no chunk at offset " + offset + " of " + name);
-                }
-                file.write(chunk.data());
-                offset += chunk.data().length;
-                total = chunk.total();
-                if (!listener.progress(offset, total)) {
-                    throw new IOException("download of " + name + " cancelled");
-                }
-                if (chunk.data().length == 0 && offset < total) {
-                    throw new ProtocolException("the server sent an empty chunk of " + name);
-                }
-            } while (offset < total);
-        } catch (IOException | RipvErrorException | RuntimeException e) {
-            Files.deleteIfExists(tmp);
-            throw e;
-        }
-        Files.move(tmp, target, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-        return target;
+        return FileChunks.download(this, name, localDir, listener);
     }
 
     private void readLoop() {
@@ -441,7 +318,7 @@ public final class ClientSocketHandler implements AutoCloseable {
             // A query's rows in pages: kept here, so that listeners and callers see one table, as before
             // (only for a request of ours: a page for anything else is dropped).
             if (pending.containsKey(id)) {
-                pages.computeIfAbsent(id, k -> new TablePages()).add((TableResult) reply.footer().result());
+                pages.add(reply);
                 for (Listener l : listeners) {
                     try {
                         l.onPage(reply);
@@ -453,10 +330,7 @@ public final class ClientSocketHandler implements AutoCloseable {
             return;
         }
         if (reply.status().isFinal()) {
-            TablePages joined = pages.remove(id);
-            if (joined != null) {
-                reply = new OutgoingServerMessage(reply.header(), joined.join(reply.footer()));
-            }
+            reply = pages.joined(reply);
         }
         // Listeners first: whoever waits on the future then finds them up to date.
         for (Listener l : listeners) {

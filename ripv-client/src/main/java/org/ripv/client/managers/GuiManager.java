@@ -53,6 +53,9 @@ import org.ripv.messages.TableResult;
  * {@link WorkflowActions} (workflow queues), {@link MailboxTargets} (tabs, MailBoxes, targets and
  * the vehicle the window opens on) and {@link ConsoleRouter} (replies, progress, tables, pictures
  * and console lines to the panels that show them).
+ *
+ * <p>Longer than 400 lines for one job: it is the façade, so each of {@link GuiInterface}'s calls and
+ * each operator action has its own short method here, handing the work to the parts above.
  */
 public final class GuiManager implements GuiInterface, AutoCloseable {
 

@@ -1,8 +1,6 @@
 package org.ripv.client.panels;
 
 import java.awt.BorderLayout;
-import java.awt.Component;
-import java.awt.Container;
 import java.awt.Dimension;
 import java.awt.FlowLayout;
 import java.awt.Font;
@@ -17,7 +15,6 @@ import java.util.List;
 import java.util.Set;
 import java.util.function.Consumer;
 import javax.swing.BorderFactory;
-import javax.swing.DefaultListCellRenderer;
 import javax.swing.DefaultListModel;
 import javax.swing.JButton;
 import javax.swing.JComponent;
@@ -28,22 +25,17 @@ import javax.swing.JList;
 import javax.swing.JOptionPane;
 import javax.swing.JPanel;
 import javax.swing.JScrollPane;
-import javax.swing.JSpinner;
 import javax.swing.JSplitPane;
 import javax.swing.JTabbedPane;
 import javax.swing.JTable;
-import javax.swing.JTextArea;
 import javax.swing.ListSelectionModel;
-import javax.swing.SpinnerNumberModel;
 import javax.swing.SwingUtilities;
 import javax.swing.UIManager;
-import javax.swing.table.AbstractTableModel;
 import org.ripv.client.handlers.ClientSocketHandler.IfExists;
 import org.ripv.client.managers.ClientModel;
 import org.ripv.client.managers.ConsoleModel;
 import org.ripv.client.managers.GuiManager;
 import org.ripv.client.managers.WorkflowModel;
-import org.ripv.messages.ConsoleEntry;
 
 /**
  * One vehicle MailBox's workflow queue and receipts (docs/workflows.md), opened from the MAM
@@ -66,24 +58,20 @@ public final class WorkflowDialog extends JDialog {
     private final GuiManager manager;
     private final ClientModel model;
     private final String mailbox;
-    private final QueueTable table = new QueueTable();
+    private final WorkflowQueueTable table = new WorkflowQueueTable();
     private final JTable queueTable = new JTable(table);
     private final JLabel outcome = new JLabel(" ");
     private final DefaultListModel<WorkflowModel.Refusal> refusals = new DefaultListModel<>();
     private final JList<WorkflowModel.Refusal> refusalList = new JList<>(refusals);
     private final WorkflowEditor editor;
-    private final DefaultListModel<WorkflowModel.Receipt> receipts = new DefaultListModel<>();
-    private final JList<WorkflowModel.Receipt> receiptList = new JList<>(receipts);
-    private final JTextArea receiptText = new JTextArea();
-    private final JSpinner last = new JSpinner(new SpinnerNumberModel(20, 1, 1000, 5));
-    private final JTextArea events = new JTextArea(5, 40);
+    private final ReceiptsTab receipts = new ReceiptsTab(this::refresh);
+    private final WorkflowEvents events = new WorkflowEvents();
     private final JTabbedPane tabs = new JTabbedPane();
     private JScrollPane refusalScroll;
     private final WorkflowModel.Listener queueListener;
     private final ConsoleModel.Listener consoleListener;
     /** What "Keep both" or "Replace" does after the server said the name is taken. */
     private Consumer<IfExists> retry;
-    private String lastWorkflowEntry = "";
     /** The file Add file… sent last: a refused one is opened in the editor, at the line at fault. */
     private Path sentFile;
     /** Names this window uploaded: sending one again (a mended workflow) replaces it without asking. */
@@ -108,7 +96,7 @@ public final class WorkflowDialog extends JDialog {
         tabs.setMnemonicAt(0, KeyEvent.VK_Q);
         tabs.addTab("Write a workflow", editor);
         tabs.setMnemonicAt(1, KeyEvent.VK_W);
-        tabs.addTab("Receipts", receiptsTab());
+        tabs.addTab("Receipts", receipts);
         tabs.setMnemonicAt(2, KeyEvent.VK_R);
 
         outcome.setName("workflowOutcome");
@@ -142,27 +130,16 @@ public final class WorkflowDialog extends JDialog {
             }
         };
         consoleListener = changed -> {
-            if (changed.equals(mailbox)) {
-                consoleChanged();
+            if (changed.equals(mailbox) && events.show(model.console().entries(mailbox))) {
+                refresh(); // a new workflow line or event: the queue has moved on
             }
         };
         model.workflows().addListener(queueListener);
         model.console().addListener(consoleListener);
         render();
-        consoleChanged();
+        events.show(model.console().entries(mailbox));
         refresh();
-        SwingUtilities.invokeLater(() -> split(tabs));
-    }
-
-    /** Receipts: the list takes 40 % once the window has its size. */
-    private static void split(Container c) {
-        for (Component x : c.getComponents()) {
-            if (x instanceof JSplitPane s && s.getOrientation() == JSplitPane.HORIZONTAL_SPLIT) {
-                s.setDividerLocation(0.4);
-            } else if (x instanceof Container inner) {
-                split(inner);
-            }
-        }
+        SwingUtilities.invokeLater(receipts::split);
     }
 
     private static String handle(String address) {
@@ -201,51 +178,9 @@ public final class WorkflowDialog extends JDialog {
         buttons.add(remove);
         buttons.add(clear);
 
-        events.setName("workflowEvents");
-        events.setEditable(false);
-        events.setFont(new Font(Font.MONOSPACED, Font.PLAIN, events.getFont().getSize()));
-        JScrollPane eventScroll = new JScrollPane(events);
-        eventScroll.setBorder(BorderFactory.createTitledBorder("Workflow lines and events (live console)"));
-
-        JSplitPane split = new JSplitPane(JSplitPane.VERTICAL_SPLIT, new JScrollPane(queueTable), eventScroll);
+        JSplitPane split = new JSplitPane(JSplitPane.VERTICAL_SPLIT, new JScrollPane(queueTable), events);
         split.setResizeWeight(0.6);
         split.setBorder(null);
-        JPanel p = new JPanel(new BorderLayout(4, 4));
-        p.setBorder(BorderFactory.createEmptyBorder(4, 4, 4, 4));
-        p.add(split, BorderLayout.CENTER);
-        p.add(buttons, BorderLayout.SOUTH);
-        return p;
-    }
-
-    private JPanel receiptsTab() {
-        receiptList.setName("receiptList");
-        receiptList.setSelectionMode(ListSelectionModel.SINGLE_SELECTION);
-        receiptList.setCellRenderer(new DefaultListCellRenderer() {
-            @Override
-            public Component getListCellRendererComponent(JList<?> list, Object value, int index,
-                                                                   boolean selected, boolean focus) {
-                Component c = super.getListCellRendererComponent(list, value, index, selected, focus);
-                if (!selected && value instanceof WorkflowModel.Receipt r && r.hadErrors()) {
-                    c.setForeground(Colors.error()); // DONE_WITH_ERRORS must not read like DONE
-                }
-                return c;
-            }
-        });
-        receiptList.addListSelectionListener(e -> {
-            WorkflowModel.Receipt r = receiptList.getSelectedValue();
-            receiptText.setText(r == null ? "" : r.text());
-            receiptText.setCaretPosition(0);
-        });
-        receiptText.setName("receiptText");
-        receiptText.setEditable(false);
-        receiptText.setFont(new Font(Font.MONOSPACED, Font.PLAIN, receiptText.getFont().getSize()));
-        JSplitPane split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, new JScrollPane(receiptList), new JScrollPane(receiptText));
-        split.setResizeWeight(0.4);
-        split.setBorder(null);
-        JButton refresh = Buttons.button("Refresh", KeyEvent.VK_H, "receiptsRefresh",
-                "Ask the server again (?receipts --last N)");
-        refresh.addActionListener(e -> refresh());
-        JPanel buttons = row("Last:", KeyEvent.VK_T, last, refresh);
         JPanel p = new JPanel(new BorderLayout(4, 4));
         p.setBorder(BorderFactory.createEmptyBorder(4, 4, 4, 4));
         p.add(split, BorderLayout.CENTER);
@@ -267,7 +202,7 @@ public final class WorkflowDialog extends JDialog {
 
     /** Asks the server for the queue and the receipts. */
     public void refresh() {
-        manager.refreshQueue(mailbox, (Integer) last.getValue());
+        manager.refreshQueue(mailbox, receipts.last());
     }
 
     private void chooseFile() {
@@ -308,7 +243,7 @@ public final class WorkflowDialog extends JDialog {
             outcome("pick a workflow in the queue first, then Remove", true);
             return;
         }
-        manager.unqueue(mailbox, table.rows.get(row).id());
+        manager.unqueue(mailbox, table.entry(row).id());
     }
 
     private void outcome(String text, boolean error) {
@@ -320,7 +255,7 @@ public final class WorkflowDialog extends JDialog {
 
     private void render() {
         WorkflowModel.Queue q = model.workflows().queue(mailbox);
-        long selected = queueTable.getSelectedRow() < 0 ? -1 : table.rows.get(queueTable.getSelectedRow()).id();
+        long selected = queueTable.getSelectedRow() < 0 ? -1 : table.entry(queueTable.getSelectedRow()).id();
         table.show(q.entries());
         for (int i = 0; i < q.entries().size(); i++) {
             if (q.entries().get(i).id() == selected) {
@@ -350,16 +285,7 @@ public final class WorkflowDialog extends JDialog {
         if (!q.refusals().isEmpty() && q.refusals().get(0).line() > 0 && tabs.getSelectedIndex() == 1) {
             editor.markLine(q.refusals().get(0).line());
         }
-        WorkflowModel.Receipt shown = receiptList.getSelectedValue();
-        if (!receipts.isEmpty() || !q.receipts().isEmpty()) {
-            List<WorkflowModel.Receipt> now = q.receipts();
-            if (!now.equals(Collections.list(receipts.elements()))) {
-                receipts.clear();
-                now.forEach(receipts::addElement);
-                int keep = shown == null ? -1 : now.indexOf(shown);
-                receiptList.setSelectedIndex(keep >= 0 ? keep : now.isEmpty() ? -1 : 0);
-            }
-        }
+        receipts.show(q.receipts());
         if (!q.nameTaken().isEmpty() && retry != null && isShowing()) {
             Consumer<IfExists> again = retry;
             retry = null;
@@ -377,35 +303,6 @@ public final class WorkflowDialog extends JDialog {
         } else if (answer == 1) {
             again.accept(IfExists.REPLACE);
         }
-    }
-
-    /** Workflow lines and events of the live console; a new one means the queue has moved on. */
-    private void consoleChanged() {
-        StringBuilder b = new StringBuilder();
-        String newest = "";
-        for (ConsoleEntry e : model.console().entries(mailbox)) {
-            if (isWorkflow(e)) {
-                String line = ConsoleModel.text(e);
-                b.append(line).append('\n');
-                newest = line;
-            }
-        }
-        if (!newest.equals(lastWorkflowEntry)) {
-            boolean first = lastWorkflowEntry.isEmpty() && events.getText().isEmpty();
-            lastWorkflowEntry = newest;
-            events.setText(b.toString());
-            events.setCaretPosition(events.getDocument().getLength());
-            if (!first) {
-                refresh();
-            }
-        }
-    }
-
-    /** A workflow's progress line ("workflow 1 'x.wf': step 2/4 …") or a WORKFLOW_DONE / _DONE_WITH_ERRORS / _FAILED event. */
-    static boolean isWorkflow(ConsoleEntry e) {
-        return e.kind() == ConsoleEntry.Kind.EVENT
-                ? e.event().endsWorkflow()
-                : e.kind() == ConsoleEntry.Kind.COMMAND && e.text().startsWith("workflow ");
     }
 
     /** Shows one tab: 0 queue, 1 editor, 2 receipts. */
@@ -446,11 +343,11 @@ public final class WorkflowDialog extends JDialog {
     }
 
     public String eventsText() {
-        return events.getText();
+        return events.text();
     }
 
     public List<String> receiptTitles() {
-        return Collections.list(receipts.elements()).stream().map(Object::toString).toList();
+        return receipts.titles();
     }
 
     public int queueRows() {
@@ -462,46 +359,5 @@ public final class WorkflowDialog extends JDialog {
         model.workflows().removeListener(queueListener);
         model.console().removeListener(consoleListener);
         super.dispose();
-    }
-
-    /** The queue as a table: ID, owner, mode, file, steps, state. */
-    private static final class QueueTable extends AbstractTableModel {
-        private static final String[] COLUMNS = {"ID", "Owner", "Mode", "File", "Steps", "State"};
-        private List<WorkflowModel.Entry> rows = List.of();
-
-        void show(List<WorkflowModel.Entry> entries) {
-            if (!entries.equals(rows)) {
-                rows = entries;
-                fireTableDataChanged();
-            }
-        }
-
-        @Override
-        public int getRowCount() {
-            return rows.size();
-        }
-
-        @Override
-        public int getColumnCount() {
-            return COLUMNS.length;
-        }
-
-        @Override
-        public String getColumnName(int c) {
-            return COLUMNS[c];
-        }
-
-        @Override
-        public Object getValueAt(int r, int c) {
-            WorkflowModel.Entry e = rows.get(r);
-            return switch (c) {
-                case 0 -> e.id();
-                case 1 -> e.owner();
-                case 2 -> e.mode();
-                case 3 -> e.file();
-                case 4 -> e.steps();
-                default -> e.state() + (e.added().isEmpty() ? "" : "  (added " + e.added() + ")");
-            };
-        }
     }
 }

@@ -1,17 +1,11 @@
 package org.ripv.server.commands;
 
 import java.io.IOException;
-import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.function.Supplier;
+import org.ripv.commands.CommandWords;
 import org.ripv.messages.OutgoingServerMessage;
-import picocli.CommandLine;
-import picocli.CommandLine.Model.ArgSpec;
-import picocli.CommandLine.Model.CommandSpec;
-import picocli.CommandLine.Model.OptionSpec;
-import picocli.CommandLine.Model.PositionalParamSpec;
-import picocli.CommandLine.ParameterException;
 
 /**
  * One of the server's own {@code ?} commands, named once: its word, FID, usage and help (what
@@ -85,15 +79,12 @@ public record ServerCommand(String word, String fid, String usage, String help, 
 
     /** The options (as {@code --last}) {@code ?help} shows for this command: what the clients complete. */
     public List<String> optionNames() {
-        if (options == null) {
-            return List.of();
-        }
-        return spec(options.get()).options().stream().map(OptionSpec::longestName).toList();
+        return options == null ? List.of() : CommandWords.optionNames(options.get());
     }
 
     /**
-     * The words after the command word, parsed into a fresh options object; null for a command
-     * without options.
+     * The words after the command word, parsed into a fresh options object ({@link CommandWords}'
+     * rules for a hostile line); null for a command without options.
      *
      * @throws IllegalArgumentException picocli's reason and the usage
      */
@@ -101,42 +92,10 @@ public record ServerCommand(String word, String fid, String usage, String help, 
         if (options == null) {
             return null;
         }
-        Object parsed = options.get();
-        CommandLine line = new CommandLine(spec(parsed));
-        try {
-            line.parseArgs(Arrays.copyOfRange(words, 1, words.length));
-        } catch (ParameterException e) {
-            throw new IllegalArgumentException(e.getMessage() + "; usage: " + usage, e);
-        }
-        return parsed;
+        return CommandWords.parse(options.get(), usage, Arrays.copyOfRange(words, 1, words.length));
     }
 
-    /**
-     * A line from a client is hostile: no {@code @file} expansion (it would read the server's
-     * disk), no abbreviations, options in any case as the command words are.
-     */
-    private static CommandSpec spec(Object options) {
-        CommandSpec spec = CommandSpec.forAnnotatedObject(options);
-        spec.parser().expandAtFiles(false).abbreviatedOptionsAllowed(false).caseInsensitiveEnumValuesAllowed(true);
-        spec.optionsCaseInsensitive(true);
-        return spec;
-    }
-
-    /** {@code ?history MAILBOX [--last N] [--since ISO-TIME]}: the word, the positional words, then the options. */
     private static String usage(String word, Supplier<?> options) {
-        CommandSpec spec = CommandSpec.forAnnotatedObject(options.get());
-        List<String> parts = new ArrayList<>(List.of(word));
-        for (PositionalParamSpec p : spec.positionalParameters()) {
-            parts.add(p.required() ? label(p) : "[" + label(p) + "]");
-        }
-        for (OptionSpec o : spec.options()) {
-            String text = o.longestName() + (o.arity().max() > 0 ? " " + label(o) : "");
-            parts.add(o.required() ? text : "[" + text + "]");
-        }
-        return String.join(" ", parts);
-    }
-
-    private static String label(ArgSpec a) {
-        return a.paramLabel().replaceAll("^<|>$", "");
+        return CommandWords.usage(word, options.get());
     }
 }

@@ -3,8 +3,13 @@ package org.ripv.server.dataloop;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Consumer;
+import org.ripv.handout.HandoutCollector;
 import org.ripv.messages.Attachment;
+import org.ripv.messages.ErrorCode;
 import org.ripv.messages.FileBundle;
 import org.ripv.messages.FileData;
 import org.ripv.messages.FileListing;
@@ -16,6 +21,7 @@ import org.ripv.messages.Result;
 import org.ripv.messages.Status;
 import org.ripv.naming.MailboxAddress;
 import org.ripv.naming.Handles;
+import org.ripv.server.handout.HandoutTickets;
 import org.ripv.slocum.SlocumFiles;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -25,10 +31,13 @@ import org.slf4j.LoggerFactory;
  * line, not their names) in the download directory, the server sends {@code ingest NAME...} to a
  * DatabaseServer MailBox on the fetching user's behalf, tells that user (PROGRESS), and adds the
  * result to the download's own OK reply, which stays OK whatever the ingest made of the files
- * ({@link IngestVerdict}). On by default, per vehicle ({@link IngestSettings}). The files go to the
- * DatabaseServer as the bytes the SerialPortServer's reply brought: the server stores its copy for
- * the user and never reads it back to ingest it; it still decides whether the user may have each
- * file ({@link ServiceCalls#whyNotDownload}) and records the ingest in the reply.
+ * ({@link IngestVerdict}). On by default, per vehicle ({@link IngestSettings}). The server decides
+ * whether the user may have each file ({@link ServiceCalls#whyNotDownload}), stores its copy for the
+ * user and records the ingest in the reply; the bytes go from the SerialPortServer to the
+ * DatabaseServer without the server: the {@code ingest} carries one-use tickets
+ * ({@link HandoutTickets}) by which the DatabaseServer reads them where they were fetched. When the
+ * two cannot reach each other (outbound-only, a firewall, the file let go), the server relays the
+ * bytes its reply brought, as it did before, and logs why; it never reads its stored copy back.
  */
 public final class DataLoop {
     private static final Logger log = LoggerFactory.getLogger(DataLoop.class);
@@ -42,9 +51,21 @@ public final class DataLoop {
     private final ServiceCalls calls;
     private final IngestSettings settings;
     private final PlotRequests plots;
+    private final HandoutTickets handouts;
+    private final AtomicLong relayed = new AtomicLong();
 
+    /** A data loop that relays fetched files to the DatabaseServer through the server. */
     public DataLoop(ServiceCalls calls, Path settingsFile) {
+        this(calls, null, settingsFile);
+    }
+
+    /**
+     * @param handouts signs the tickets by which a DatabaseServer reads fetched files from the
+     *                 service that fetched them; null: relay them through the server
+     */
+    public DataLoop(ServiceCalls calls, HandoutTickets handouts, Path settingsFile) {
         this.calls = calls;
+        this.handouts = handouts;
         this.settings = new IngestSettings(settingsFile);
         this.plots = new PlotRequests(calls, this::database);
     }
@@ -123,23 +144,67 @@ public final class DataLoop {
         }
         String what = names.size() == 1 ? names.get(0) : names.size() + " Slocum files";
         send.accept(progress(reply, "ingesting " + what + " into " + database));
-        // The bytes the service just sent go on as they are: the stored copy is the user's, never read back for this.
-        calls.call(database, "ingest " + String.join(" ", names), user, List.of(INGEST_ROLE), Attachment.bundle(bytes), f -> { })
-                .whenComplete((f, e) -> {
-                    OutgoingServerMessage verdict;
-                    if (e != null) {
-                        verdict = IngestVerdict.notIngested(reply, fetched, "not ingested: " + e);
-                    } else if (f.status() == Status.OK || f.replyText().lines().anyMatch(IngestVerdict::notIngested)) {
-                        // per-file lines: some files refused or stored already, each said so
-                        verdict = IngestVerdict.ingested(reply, fetched, names.size(), database, f.replyText());
-                    } else {
-                        verdict = IngestVerdict.notIngested(reply, fetched, "not ingested (" + f.errorCode() + "): "
-                                + f.replyText());
-                    }
-                    log.info("automatic ingest of {} for {}: {}", names, user, verdict.footer().replyText().replace('\n', ' '));
-                    send.accept(verdict);
-                });
+        String body = "ingest " + String.join(" ", names);
+        String source = reply.header().serviceDestination();
+        Optional<Attachment> tickets = handouts == null ? Optional.empty()
+                : handouts.tickets(source, serviceOf(database), bytes);
+        CompletableFuture<Footer> ingested;
+        if (tickets.isPresent()) {
+            // The DatabaseServer reads the files from the SerialPortServer; the server's copy is the user's, never sent on.
+            log.info("automatic ingest of {} for {}: {} reads the bytes from {} by ticket", names, user, database, source);
+            ingested = calls.call(database, body, user, List.of(INGEST_ROLE), tickets.get(), f -> { })
+                    .thenCompose(f -> handoutRefused(f) ? relay(database, body, user, names, bytes, f.replyText())
+                            : CompletableFuture.completedFuture(f));
+        } else {
+            ingested = relay(database, body, user, names, bytes, source + " or " + database
+                    + " is not reachable but through the server (not registered on RMI, or outbound-only)");
+        }
+        ingested.whenComplete((f, e) -> {
+            OutgoingServerMessage verdict;
+            if (e != null) {
+                verdict = IngestVerdict.notIngested(reply, fetched, "not ingested: " + e);
+            } else if (f.status() == Status.OK || f.replyText().lines().anyMatch(IngestVerdict::notIngested)) {
+                // per-file lines: some files refused or stored already, each said so
+                verdict = IngestVerdict.ingested(reply, fetched, names.size(), database, f.replyText());
+            } else {
+                verdict = IngestVerdict.notIngested(reply, fetched, "not ingested (" + f.errorCode() + "): "
+                        + f.replyText());
+            }
+            log.info("automatic ingest of {} for {}: {}", names, user, verdict.footer().replyText().replace('\n', ' '));
+            send.accept(verdict);
+        });
         return true;
+    }
+
+    /**
+     * The old way, kept for when the services cannot reach each other: the bytes the service just
+     * sent go on as they are, attached to the ingest (the stored copy is the user's, never read back for this).
+     */
+    private CompletableFuture<Footer> relay(String database, String body, String user, List<String> names,
+                                            List<Attachment> bytes, String why) {
+        long n = bytes.stream().mapToLong(a -> a.data().length).sum();
+        log.info("automatic ingest of {} for {}: relaying {} bytes to {} through the server: {}", names, user, n, database, why);
+        relayed.addAndGet(n);
+        return calls.call(database, body, user, List.of(INGEST_ROLE), Attachment.bundle(bytes), f -> { });
+    }
+
+    /** True when the DatabaseServer could not read the files by ticket (and will get them relayed). */
+    private static boolean handoutRefused(Footer f) {
+        return f.status() == Status.ERROR && f.errorCode() == ErrorCode.TRANSFER_FAILED
+                && f.replyText().startsWith(HandoutCollector.REFUSED);
+    }
+
+    /** The bytes of fetched files this server has relayed to a DatabaseServer (none when the services hand them over). */
+    public long bytesRelayed() {
+        return relayed.get();
+    }
+
+    private static String serviceOf(String mailbox) {
+        try {
+            return MailboxAddress.parse(mailbox).service().toString();
+        } catch (RuntimeException e) {
+            return mailbox;
+        }
     }
 
     private String database() {

@@ -8,6 +8,7 @@ import org.ripv.messages.MailboxStatus;
 import org.ripv.messages.OutgoingServiceMessage;
 import org.ripv.messages.ServiceDescriptor;
 import org.ripv.rmi.GenericRMIInterface;
+import org.ripv.server.handout.HandoutTickets;
 import org.ripv.server.requests.ServiceReplies;
 import org.ripv.server.security.ServiceChallenges;
 import org.ripv.server.services.ServiceAdmission;
@@ -30,6 +31,7 @@ public final class ServerRemote implements GenericRMIInterface {
     private final ServiceRegistry services;
     private final ServiceReplies replies;
     private final BiConsumer<ServiceReference, List<ConsoleEntry>> console;
+    private final HandoutTickets handouts;
 
     /**
      * @param console takes the console entries a service published for its MailBoxes
@@ -41,6 +43,7 @@ public final class ServerRemote implements GenericRMIInterface {
         this.services = services;
         this.replies = replies;
         this.console = console;
+        this.handouts = new HandoutTickets(services);
     }
 
     @Override
@@ -97,6 +100,12 @@ public final class ServerRemote implements GenericRMIInterface {
     @Override
     public boolean cancel(String token, String mailbox, String clientId, long messageId) {
         throw new UnsupportedOperationException("the RIPVServer runs no service MailBoxes; send ?cancel over the client socket");
+    }
+
+    /** A service that holds a ticket asks where the file's holder is (org.ripv.handout). */
+    @Override
+    public GenericRMIInterface peer(String token, String service) {
+        return handouts.peer(token, service);
     }
 
     @Override

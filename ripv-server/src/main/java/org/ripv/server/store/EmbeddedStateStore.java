@@ -40,6 +40,9 @@ import org.slf4j.LoggerFactory;
  * </pre>
  * Documents are written whole through a temporary file and an atomic move. Directories are made
  * when first written.
+ *
+ * <p>Longer than 400 lines for one job: it is {@link StateStore} on files, one short method per kind of
+ * record, all written the one way described above.
  */
 public final class EmbeddedStateStore implements StateStore {
     private static final Logger log = LoggerFactory.getLogger(EmbeddedStateStore.class);

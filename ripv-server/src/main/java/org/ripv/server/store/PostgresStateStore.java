@@ -28,6 +28,9 @@ import java.util.Properties;
  * ripv_audit(seq, time_ms, warn, line)             the audit trail
  * ripv_surfacing(seq, mailbox, time_ms, record)    call records, one per surfacing
  * </pre>
+ *
+ * <p>Longer than 400 lines for one job: it is {@link StateStore} in PostgreSQL, one short method per kind
+ * of record over the tables above.
  */
 public final class PostgresStateStore implements StateStore {
     /** The advisory lock key that guards schema creation ("RIPV" in ASCII). */
@@ -161,6 +164,29 @@ public final class PostgresStateStore implements StateStore {
         return out;
     }
 
+    /** Sets one row's parameters. */
+    @FunctionalInterface
+    private interface Row<T> {
+        void bind(PreparedStatement ps, T item) throws SQLException;
+    }
+
+    /** Inserts every item as a row, in one batch (nothing for none). */
+    private <T> void insertAll(String what, String sql, List<T> items, Row<T> row) throws IOException {
+        if (items.isEmpty()) {
+            return;
+        }
+        run(what, c -> {
+            try (PreparedStatement ps = c.prepareStatement(sql)) {
+                for (T item : items) {
+                    row.bind(ps, item);
+                    ps.addBatch();
+                }
+                ps.executeBatch();
+            }
+            return null;
+        });
+    }
+
     private <T> T run(String what, PgConnections.Work<T> work) throws IOException {
         try {
             return db.transaction(work);
@@ -183,21 +209,12 @@ public final class PostgresStateStore implements StateStore {
 
     @Override
     public void appendTranscript(List<TranscriptLine> lines) throws IOException {
-        if (lines.isEmpty()) {
-            return;
-        }
-        run("append " + lines.size() + " transcript lines", c -> {
-            try (PreparedStatement ps = c.prepareStatement("INSERT INTO ripv_transcript (mailbox, time_ms, entry) VALUES (?, ?, ?)")) {
-                for (TranscriptLine l : lines) {
+        insertAll("append " + lines.size() + " transcript lines", "INSERT INTO ripv_transcript (mailbox, time_ms, entry) VALUES (?, ?, ?)",
+                lines, (ps, l) -> {
                     ps.setString(1, text(l.mailbox()));
                     ps.setLong(2, l.time());
                     ps.setString(3, text(l.json()));
-                    ps.addBatch();
-                }
-                ps.executeBatch();
-            }
-            return null;
-        });
+                });
     }
 
     @Override
@@ -376,20 +393,10 @@ public final class PostgresStateStore implements StateStore {
 
     @Override
     public void appendAudit(List<AuditRecord> records) throws IOException {
-        if (records.isEmpty()) {
-            return;
-        }
-        run("append to the audit trail", c -> {
-            try (PreparedStatement ps = c.prepareStatement("INSERT INTO ripv_audit (time_ms, warn, line) VALUES (?, ?, ?)")) {
-                for (AuditRecord r : records) {
-                    ps.setLong(1, r.time());
-                    ps.setBoolean(2, r.warn());
-                    ps.setString(3, text(r.line()));
-                    ps.addBatch();
-                }
-                ps.executeBatch();
-            }
-            return null;
+        insertAll("append to the audit trail", "INSERT INTO ripv_audit (time_ms, warn, line) VALUES (?, ?, ?)", records, (ps, r) -> {
+            ps.setLong(1, r.time());
+            ps.setBoolean(2, r.warn());
+            ps.setString(3, text(r.line()));
         });
     }
 

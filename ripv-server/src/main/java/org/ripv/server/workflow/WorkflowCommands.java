@@ -8,9 +8,11 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.time.Instant;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
+import org.ripv.commands.CommandWords;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.Footer;
 import org.ripv.messages.Ids;
@@ -22,6 +24,8 @@ import org.ripv.server.permit.PermitFile;
 import org.ripv.server.session.Rights;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
 
 /**
  * The operators' workflow commands ({@code ?queue}, {@code ?receipts}; docs/workflows.md): who may
@@ -67,9 +71,10 @@ final class WorkflowCommands {
         String verb = w.length > 1 ? w[1].toLowerCase(Locale.ROOT) : "";
         switch (verb) {
             case "add" -> {
-                boolean typed = w.length == 5 && w[4].equals(TYPED);
-                usage(w.length == 4 || typed, "?queue add MAILBOX NAME [" + TYPED + "]");
-                String mailbox = address(w[2]);
+                QueueAdd add = CommandWords.parse(new QueueAdd(), QUEUE_ADD, Arrays.copyOfRange(w, 2, w.length));
+                boolean typed = add.typed;
+                String name = add.name;
+                String mailbox = address(add.mailbox);
                 mayRead(user, mailbox);
                 PermitFile.User u = permitted(request);
                 if (!workflows.queues.has(mailbox) && !workflows.knownMailbox(mailbox)) {
@@ -78,15 +83,15 @@ final class WorkflowCommands {
                 }
                 Workflow wf;
                 try {
-                    wf = read(w[3]);
+                    wf = read(name);
                     checkSteps(u, mailbox, wf);
                 } catch (RuntimeException refused) {
                     if (typed) {
-                        dropTyped(w[3], user);
+                        dropTyped(name, user);
                     }
                     throw refused;
                 }
-                QueuedWorkflow e = workflows.queues.add(mailbox, user, sourceOf(w[3]), wf);
+                QueuedWorkflow e = workflows.queues.add(mailbox, user, sourceOf(name), wf);
                 if (workflows.onCall(mailbox)) {
                     workflows.surfaced(mailbox); // the vehicle is on a call now: run it in this call
                 }
@@ -273,6 +278,18 @@ final class WorkflowCommands {
      * the upload store again, so drafts that did not parse do not pile up there.
      */
     static final String TYPED = "--typed";
+
+    /** The words of {@code ?queue add}, parsed as every {@code ?} command's options are (picocli, no {@code @file}). */
+    static final class QueueAdd {
+        @Parameters(index = "0", paramLabel = "MAILBOX")
+        String mailbox;
+        @Parameters(index = "1", paramLabel = "NAME")
+        String name;
+        @Option(names = TYPED, description = "the workflow was typed in an editor: a refused one leaves the upload store")
+        boolean typed;
+    }
+
+    private static final String QUEUE_ADD = CommandWords.usage("?queue add", new QueueAdd());
 
     /** Deletes a refused typed workflow, when the user who queues it uploaded it (no one else's file goes). */
     private void dropTyped(String name, String user) {

@@ -1,15 +1,10 @@
 package org.ripv.services.bench;
 
-import java.io.File;
-import java.io.IOException;
-import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.security.MessageDigest;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import java.util.Random;
@@ -77,7 +72,7 @@ public final class YmodemBenchmark {
         }
         Path dir = Files.createTempDirectory("ymodem-bench");
         YmodemBenchmark bench = new YmodemBenchmark(dir);
-        boolean lrzsz = installed("sb") && installed("rb") && installed("socat");
+        boolean lrzsz = Socat.installed("sb") && Socat.installed("rb") && Socat.installed("socat");
         System.out.println("| pair (sender → receiver) | baud | bytes | seconds | bytes/s | of line rate | identical |");
         System.out.println("| --- | --- | --- | --- | --- | --- | --- |");
         for (int[] run : runs) {
@@ -101,7 +96,7 @@ public final class YmodemBenchmark {
     private Row ours(int baud, Path file) throws Exception {
         Path out = Files.createDirectories(dir.resolve("ours-" + baud));
         try (ServerSocket receiverSide = new ServerSocket(0);
-             YmodemBaudRelay relay = new YmodemBaudRelay(baud, local(receiverSide.getLocalPort()))) {
+             YmodemBaudRelay relay = new YmodemBaudRelay(baud, Socat.local(receiverSide.getLocalPort()))) {
             Future<?> receiving = pool.submit((Callable<Object>) () -> {
                 try (Socket s = receiverSide.accept(); TcpLink link = new TcpLink(s)) {
                     return new YmodemReceiver(link, YmodemConfig.lrzsz(), null).receiveBatch(new DirectorySink(out));
@@ -113,92 +108,49 @@ public final class YmodemBenchmark {
             }
             receiving.get(1, TimeUnit.HOURS);
             return new Row("RIPV → RIPV", baud, Files.size(file), (System.nanoTime() - start) / 1e9,
-                    same(file, out.resolve(file.getFileName())));
+                    Socat.sameBytes(file, out.resolve(file.getFileName())));
         }
     }
 
     private Row sbToOurs(int baud, Path file) throws Exception {
         Path out = Files.createDirectories(dir.resolve("sb-" + baud));
-        int port = freePort();
-        Process socat = socat(file.getParent(), "TCP-LISTEN:" + port + ",bind=127.0.0.1,reuseaddr",
-                "SYSTEM:'exec sb --ymodem -k -q " + file.getFileName() + "'");
-        try (YmodemBaudRelay relay = new YmodemBaudRelay(baud, local(port))) {
+        try (Socat.Served socat = Socat.serve(file.getParent(), "sb --ymodem -k -q " + file.getFileName());
+             YmodemBaudRelay relay = new YmodemBaudRelay(baud, socat.address())) {
             long start = System.nanoTime();
             try (TcpLink link = TcpLink.connect("tcp://127.0.0.1:" + relay.port(), 5000)) {
                 new YmodemReceiver(link, YmodemConfig.lrzsz(), null).receiveBatch(new DirectorySink(out));
             }
             double seconds = (System.nanoTime() - start) / 1e9;
-            socat.waitFor(30, TimeUnit.SECONDS);
-            return new Row("lrzsz sb → RIPV", baud, Files.size(file), seconds, same(file, out.resolve(file.getFileName())));
-        } finally {
-            socat.destroy();
+            socat.process().waitFor(30, TimeUnit.SECONDS);
+            return new Row("lrzsz sb → RIPV", baud, Files.size(file), seconds, Socat.sameBytes(file, out.resolve(file.getFileName())));
         }
     }
 
     private Row oursToRb(int baud, Path file) throws Exception {
         Path out = Files.createDirectories(dir.resolve("rb-" + baud));
-        int port = freePort();
-        Process socat = socat(out, "TCP-LISTEN:" + port + ",bind=127.0.0.1,reuseaddr", "SYSTEM:'exec rb --ymodem -y -q'");
-        try (YmodemBaudRelay relay = new YmodemBaudRelay(baud, local(port))) {
+        try (Socat.Served socat = Socat.serve(out, "rb --ymodem -y -q");
+             YmodemBaudRelay relay = new YmodemBaudRelay(baud, socat.address())) {
             long start = System.nanoTime();
             try (TcpLink link = TcpLink.connect("tcp://127.0.0.1:" + relay.port(), 5000)) {
                 new YmodemSender(link, YmodemConfig.lrzsz(), null).sendBatch(List.of(SendFile.of(file)));
             }
             double seconds = (System.nanoTime() - start) / 1e9;
-            socat.waitFor(30, TimeUnit.SECONDS);
-            return new Row("RIPV → lrzsz rb", baud, Files.size(file), seconds, same(file, out.resolve(file.getFileName())));
-        } finally {
-            socat.destroy();
+            socat.process().waitFor(30, TimeUnit.SECONDS);
+            return new Row("RIPV → lrzsz rb", baud, Files.size(file), seconds, Socat.sameBytes(file, out.resolve(file.getFileName())));
         }
     }
 
     private Row sbToRb(int baud, Path file) throws Exception {
         Path out = Files.createDirectories(dir.resolve("sbrb-" + baud));
-        int port = freePort();
-        Process rb = socat(out, "TCP-LISTEN:" + port + ",bind=127.0.0.1,reuseaddr", "SYSTEM:'exec rb --ymodem -y -q'");
-        try (YmodemBaudRelay relay = new YmodemBaudRelay(baud, local(port))) {
+        try (Socat.Served rb = Socat.serve(out, "rb --ymodem -y -q");
+             YmodemBaudRelay relay = new YmodemBaudRelay(baud, rb.address())) {
             long start = System.nanoTime();
-            Process sb = socat(file.getParent(), "TCP:127.0.0.1:" + relay.port(),
-                    "SYSTEM:'exec sb --ymodem -k -q " + file.getFileName() + "'");
-            rb.waitFor(1, TimeUnit.HOURS);
+            Process sb = Socat.call(file.getParent(), relay.port(), "sb --ymodem -k -q " + file.getFileName());
+            rb.process().waitFor(1, TimeUnit.HOURS);
             double seconds = (System.nanoTime() - start) / 1e9;
             sb.waitFor(30, TimeUnit.SECONDS);
             return new Row("lrzsz sb → lrzsz rb", baud, Files.size(file), seconds,
-                    same(file, out.resolve(file.getFileName())));
-        } finally {
-            rb.destroy();
+                    Socat.sameBytes(file, out.resolve(file.getFileName())));
         }
-    }
-
-    private static InetSocketAddress local(int port) {
-        return new InetSocketAddress("127.0.0.1", port);
-    }
-
-    private static int freePort() throws IOException {
-        try (ServerSocket s = new ServerSocket(0)) {
-            return s.getLocalPort();
-        }
-    }
-
-    private static Process socat(Path cwd, String a, String b) throws IOException {
-        return new ProcessBuilder("socat", a, b).directory(cwd.toFile()).redirectErrorStream(true)
-                .redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
-    }
-
-    private static boolean same(Path a, Path b) throws Exception {
-        if (!Files.exists(b)) {
-            return false;
-        }
-        MessageDigest md = MessageDigest.getInstance("SHA-256");
-        return Arrays.equals(md.digest(Files.readAllBytes(a)), MessageDigest.getInstance("SHA-256").digest(Files.readAllBytes(b)));
-    }
-
-    private static boolean installed(String tool) {
-        for (String d : System.getenv().getOrDefault("PATH", "").split(File.pathSeparator)) {
-            if (Files.isExecutable(Path.of(d, tool))) {
-                return true;
-            }
-        }
-        return false;
     }
 }

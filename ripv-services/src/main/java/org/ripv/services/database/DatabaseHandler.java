@@ -43,6 +43,9 @@ import org.slf4j.LoggerFactory;
  *
  * <p>Threading: {@link #execute} runs on the MailBox's one worker thread, so the connections
  * need no locking; {@link #availability} reads a volatile snapshot from any thread.
+ *
+ * <p>Longer than 400 lines for one job: the two connections, their reset between users, the
+ * running statement (for cancel) and the query's paging share one MailBox thread's state.
  */
 public final class DatabaseHandler implements CommandHandler, AutoCloseable {
     private static final Logger log = LoggerFactory.getLogger(DatabaseHandler.class);

@@ -72,14 +72,7 @@ public final class DataFile {
     }
 
     private static Summary parse(BufferedReader in, RowSink sink, boolean convert) throws IOException, DataFormatException {
-        String title = null;
-        String xLabel = null;
-        String yLabel = null;
-        List<String> legend = null;
-        int width = 0;
-        int height = 0;
-        String style = null;
-        String mark = null;
+        PlotLabels labels = PlotLabels.NONE;
         int columns = -1;
         boolean comma = false;
         boolean pendingGap = false;
@@ -102,18 +95,16 @@ public final class DataFile {
                 Matcher m = LABEL.matcher(line);
                 if (m.matches()) {
                     String value = m.group(2).trim();
-                    switch (m.group(1).toLowerCase(Locale.ROOT)) {
-                        case "title" -> title = value;
-                        case "xlabel" -> xLabel = value;
-                        case "ylabel" -> yLabel = value;
-                        case "legend" -> legend = PlotLabels.splitLegend(value);
-                        case "mark" -> mark = value;
+                    String key = m.group(1).toLowerCase(Locale.ROOT);
+                    switch (key) {
+                        case "title", "xlabel", "ylabel", "legend", "mark" -> labels = labels.with(key, value);
                         case "plot" -> {
-                            style = value.toLowerCase(Locale.ROOT);
+                            String style = value.toLowerCase(Locale.ROOT);
                             if (!PlotLabels.STYLES.contains(style)) {
                                 throw new DataFormatException(lineNo, "'% plot: " + value + "' is not one of "
                                         + String.join(", ", PlotLabels.STYLES));
                             }
+                            labels = labels.with(key, style);
                         }
                         case "size" -> {
                             Matcher s = SIZE.matcher(value);
@@ -124,8 +115,7 @@ public final class DataFile {
                                 throw new DataFormatException(lineNo, "'% size: " + value + "' is not WIDTHxHEIGHT with "
                                         + PlotLabels.MIN_SIZE + ".." + PlotLabels.MAX_SIZE + " pixels a side, e.g. 800x600");
                             }
-                            width = w;
-                            height = h;
+                            labels = labels.withSize(w, h);
                         }
                         default -> { } // any other "% word: text" is an ordinary comment
                     }
@@ -181,7 +171,7 @@ public final class DataFile {
                     : "the data file has no data rows (only comments or blank lines in " + lineNo + " line"
                             + (lineNo == 1 ? "" : "s") + ")");
         }
-        return new Summary(new PlotLabels(title, xLabel, yLabel, legend, width, height, style, mark), columns, rows);
+        return new Summary(labels, columns, rows);
     }
 
     /**

@@ -45,7 +45,7 @@ import org.slf4j.LoggerFactory;
  *
  * <p>One MailBox per work directory (handle {@link Handles#platformDefault()}), so one plot at a
  * time there. The worker is the built-in JFreeChart one, {@code octave-cli} on {@code ripvOut.m}
- * (started and restarted here), or one started by hand ({@link WorkerMode}).
+ * (started and restarted here, {@link PlotWorkers}), or one started by hand ({@link WorkerMode}).
  * <pre>{@code
  * DataVisServer vis = new DataVisServer(host, DataVisServer.Config.of(Path.of("/var/ripv/vis")));
  * ServiceConnector.connect(vis, options);
@@ -93,14 +93,14 @@ public final class DataVisServer extends RIPVService {
     private final Config config;
     private final Path dir;
     private final AtomicLong sequence = new AtomicLong();
-    private volatile PlotWorker builtin;
-    private volatile OctaveWorker octave;
+    private final PlotWorkers workers;
     private final PlotCancel plotCancel = new PlotCancel();
 
     public DataVisServer(String host, Config config) {
         super("DataVisServer", Ids.SID_DATAVIS, host);
         this.config = config;
         this.dir = config.workDir().toAbsolutePath().normalize();
+        this.workers = new PlotWorkers(config, dir);
     }
 
     public DataVisServer(Config config) {
@@ -139,48 +139,19 @@ public final class DataVisServer extends RIPVService {
         if (stale > 0) {
             log.info("removed {} exchange file(s) left in {} by an earlier run", stale, dir);
         }
-        switch (config.worker()) {
-            case BUILTIN -> builtin = PlotWorker.start(dir);
-            case OCTAVE -> octave = OctaveWorker.start(dir, config.octave(), config.script());
-            case NONE -> log.info("DataVisServer waits for a worker started by hand in {} (e.g. ripvOut.m in MATLAB)", dir);
-        }
+        workers.start();
         openMailBox(Handles.platformDefault(), new Handler());
     }
 
     @Override
     protected void close() {
-        PlotWorker w = builtin;
-        if (w != null) {
-            w.close();
-        }
-        OctaveWorker o = octave;
-        if (o != null) {
-            o.close();
-        }
-    }
-
-    /** The worker's state for {@code ?status}. */
-    Availability workerAvailability() {
-        return switch (config.worker()) {
-            case BUILTIN -> {
-                PlotWorker w = builtin;
-                yield w != null && w.isAlive() ? Availability.available("built-in worker, " + w.plots() + " plot(s) made")
-                        : Availability.available("built-in worker stopped; it restarts with the next command");
-            }
-            case OCTAVE -> {
-                OctaveWorker o = octave;
-                yield o != null && o.isAlive() ? Availability.available("octave-cli on ripvOut.m, pid " + o.pid())
-                        : Availability.notAvailable("octave-cli is not running" + (o == null ? "" : " (" + o.lastExit()
-                                + "); it is being restarted"));
-            }
-            case NONE -> Availability.available("waiting for a worker started by hand in " + dir);
-        };
+        workers.close();
     }
 
     private final class Handler implements CommandHandler {
         @Override
         public Availability availability() {
-            return workerAvailability();
+            return workers.availability();
         }
 
         /** Stops the running plot: its wait ends and the worker is stopped (it is started again for the next one). */
@@ -189,7 +160,7 @@ public final class DataVisServer extends RIPVService {
             if (!plotCancel.ask()) {
                 return false;
             }
-            stopWorker();
+            workers.stop();
             return true;
         }
 
@@ -271,10 +242,7 @@ public final class DataVisServer extends RIPVService {
         if (plotCancel.asked()) {
             throw cancelled(request, file);
         }
-        if (config.worker() == WorkerMode.BUILTIN && (builtin == null || !builtin.isAlive())) {
-            log.info("the built-in plot worker had stopped (or a plot was cancelled); starting it again");
-            builtin = PlotWorker.start(dir);
-        }
+        workers.ensureBuiltin();
         String exchangeName = vis.output() + "-" + sequence.incrementAndGet(); // a late worker's JPEG never passes for ours
         String jpegName = vis.output() + ".jpg";
         Exchange.clean(dir);
@@ -334,23 +302,6 @@ public final class DataVisServer extends RIPVService {
                 + config.worker() + " worker was stopped and starts again for the next plot");
     }
 
-    /**
-     * A cancelled plot's worker: the built-in one is told to stop without waiting for it (it drops
-     * the plot it is drawing) and a new one starts with the next request; Octave is killed and its
-     * supervisor starts it again.
-     */
-    private void stopWorker() {
-        PlotWorker w = builtin;
-        if (w != null) {
-            builtin = null;
-            w.stop();
-        }
-        OctaveWorker o = octave;
-        if (o != null) {
-            o.kill();
-        }
-    }
-
     /** Checks the operator's file and writes the canonical data.dat (complete before it appears). */
     private DataFile.Summary writeData(VisCommand vis, Attachment file) throws IOException, ServiceException {
         Path tmp = dir.resolve(Exchange.DATA + Exchange.TMP_SUFFIX);
@@ -389,25 +340,12 @@ public final class DataVisServer extends RIPVService {
             long left = deadline - System.nanoTime();
             WatchKey key = left > 0 ? watch.poll(left, TimeUnit.NANOSECONDS) : null; // sleeps until the directory changes
             if (key == null) {
-                throw new ServiceException(ErrorCode.TIMEOUT, timeoutMessage(vis));
+                throw new ServiceException(ErrorCode.TIMEOUT, workers.noAnswer(vis, config.timeout()));
             }
             key.pollEvents();
             key.reset();
         }
     }
 
-    private String timeoutMessage(VisCommand vis) {
-        String s = "no plot worker answered vis:" + vis.file() + " within " + config.timeout().toSeconds() + " s; ";
-        return s + switch (config.worker()) {
-            case BUILTIN -> "the built-in worker may be stuck on a very large file; try again, or a longer --timeout";
-            case OCTAVE -> {
-                OctaveWorker o = octave;
-                yield o != null && o.isAlive() ? "octave-cli is running but did not finish (a large plot? raise --timeout)"
-                        : "octave-cli is not running" + (o == null ? "" : " (" + o.lastExit() + ")")
-                                + ": is Octave installed with gnuplot and fonts? see docs/datavis.md";
-            }
-            case NONE -> "start one in " + dir + " (MATLAB or octave-cli: cd there and run ripvOut), or run the service with "
-                    + "--worker builtin";
-        };
-    }
+
 }

@@ -66,6 +66,30 @@ public record PlotLabels(String title, String xLabel, String yLabel, List<String
                 style != null ? style : other.style, mark != null ? mark : other.mark);
     }
 
+    /**
+     * These labels with one more given by its name, as a data file's {@code % key: value} line and
+     * a {@code vis:} command's {@code key=value} option name it: {@code title}, {@code xlabel},
+     * {@code ylabel}, {@code legend} (split by {@link #splitLegend}), {@code mark} or {@code plot}.
+     *
+     * @throws IllegalArgumentException for any other key
+     */
+    public PlotLabels with(String key, String value) {
+        return switch (key) {
+            case "title" -> new PlotLabels(value, xLabel, yLabel, legend, width, height, style, mark);
+            case "xlabel" -> new PlotLabels(title, value, yLabel, legend, width, height, style, mark);
+            case "ylabel" -> new PlotLabels(title, xLabel, value, legend, width, height, style, mark);
+            case "legend" -> new PlotLabels(title, xLabel, yLabel, splitLegend(value), width, height, style, mark);
+            case "mark" -> new PlotLabels(title, xLabel, yLabel, legend, width, height, style, value);
+            case "plot" -> new PlotLabels(title, xLabel, yLabel, legend, width, height, value, mark);
+            default -> throw new IllegalArgumentException("'" + key + "' is not a plot label");
+        };
+    }
+
+    /** These labels with the picture size (checked as the constructor checks it). */
+    public PlotLabels withSize(int width, int height) {
+        return new PlotLabels(title, xLabel, yLabel, legend, width, height, style, mark);
+    }
+
     public int widthOrDefault() {
         return width == 0 ? DEFAULT_WIDTH : width;
     }

@@ -37,12 +37,7 @@ public record VisCommand(String file, String output, PlotLabels labels) {
         }
         String file = words.get(0);
         String output = defaultOutput(file);
-        String title = null;
-        String xLabel = null;
-        String yLabel = null;
-        List<String> legend = null;
-        int width = 0;
-        int height = 0;
+        PlotLabels labels = PlotLabels.NONE;
         for (String w : words.subList(1, words.size())) {
             int eq = w.indexOf('=');
             if (eq <= 0) {
@@ -58,23 +53,19 @@ public record VisCommand(String file, String output, PlotLabels labels) {
                     }
                     output = o;
                 }
-                case "title" -> title = value;
-                case "xlabel" -> xLabel = value;
-                case "ylabel" -> yLabel = value;
-                case "legend" -> legend = PlotLabels.splitLegend(value);
+                case "title", "xlabel", "ylabel", "legend" -> labels = labels.with(key, value);
                 case "size" -> {
                     Matcher m = SIZE.matcher(value);
                     if (!m.matches()) {
                         throw new IllegalArgumentException("size='" + value + "' is not WIDTHxHEIGHT, e.g. size=1024x768");
                     }
-                    width = Integer.parseInt(m.group(1));
-                    height = Integer.parseInt(m.group(2));
+                    labels = labels.withSize(Integer.parseInt(m.group(1)), Integer.parseInt(m.group(2)));
                 }
                 default -> throw new IllegalArgumentException("unknown option '" + key
                         + "'; options are out, title, xlabel, ylabel, legend, size");
             }
         }
-        return new VisCommand(file, output, new PlotLabels(title, xLabel, yLabel, legend, width, height));
+        return new VisCommand(file, output, labels);
     }
 
     /** The data file's name without its extension, made safe: {@code glider-temp.dat} gives {@code glider-temp}. */

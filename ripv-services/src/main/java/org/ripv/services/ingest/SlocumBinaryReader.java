@@ -39,6 +39,9 @@ import org.slf4j.LoggerFactory;
  * the byte offset. A file whose data cycles stop short of the end tag (a call cut over Iridium)
  * is read, as {@code dbd2asc} reads it, up to its last whole cycle; {@link #leftOut()} says what
  * was left. A file cut in its header or known-bytes cycle has no cycle to give and is refused.
+ *
+ * <p>Longer than 400 lines for one job: the header, the sensor list, the known-bytes cycle and
+ * the data cycles are read through one buffer at one byte offset, which every error names.
  */
 public final class SlocumBinaryReader implements AutoCloseable {
     /** The label line's value in every binary file. */

@@ -149,6 +149,12 @@ public final class SerialPortServer extends RIPVService {
         return List.of("ymodem:put ", "zmodem:put ", ToVehicleCommands.WORD + " ");
     }
 
+    /** The files a vehicle sends go on to the DatabaseServer from here, not through the server (org.ripv.handout). */
+    @Override
+    protected boolean handsOutFiles() {
+        return true;
+    }
+
     /** The port a listen link's MailBox waits for calls on, or -1 for other links. */
     public int listenPort(String handle) {
         SerialPortHandler h = handlers.get(handle);

@@ -117,8 +117,10 @@ class DataVisOctaveTest {
     }
 
     private static OctaveWorker octaveOf(DataVisServer s) throws Exception {
-        java.lang.reflect.Field f = DataVisServer.class.getDeclaredField("octave");
+        java.lang.reflect.Field workers = DataVisServer.class.getDeclaredField("workers"); // the worker is PlotWorkers' (issue 34)
+        workers.setAccessible(true);
+        java.lang.reflect.Field f = PlotWorkers.class.getDeclaredField("octave");
         f.setAccessible(true);
-        return (OctaveWorker) f.get(s);
+        return (OctaveWorker) f.get(workers.get(s));
     }
 }

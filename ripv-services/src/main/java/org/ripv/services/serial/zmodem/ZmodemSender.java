@@ -15,6 +15,9 @@ import org.ripv.services.serial.ymodem.TransferListener;
  * (ZFILE), streams it from where the receiver asks (ZRPOS; an {@code rz} that kept a part asks
  * from its length), goes back to any position it asks again, and ends with ZEOF, ZFIN and "OO".
  * A receiver asking for a position beyond the file is refused, not humoured.
+ *
+ * <p>Longer than 400 lines for one job: ZMODEM's sending side, whose states (offer, stream, reposition,
+ * end) answer the same receiver headers and share the position in the file.
  */
 public final class ZmodemSender extends ZmodemPeer<ZmodemSender> {
     /** The data subpacket size: lrzsz's, a good fit for 2,400 baud and 115,200 alike. */

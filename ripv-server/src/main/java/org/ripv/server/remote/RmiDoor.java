@@ -1,0 +1,91 @@
+package org.ripv.server.remote;
+
+import java.io.IOException;
+import java.net.InetAddress;
+import java.net.ServerSocket;
+import java.rmi.NoSuchObjectException;
+import java.rmi.RemoteException;
+import java.rmi.registry.Registry;
+import java.rmi.server.UnicastRemoteObject;
+import org.ripv.rmi.BoundServerSocketFactory;
+import org.ripv.rmi.DeadlineSocketFactory;
+import org.ripv.rmi.GenericRMIInterface;
+import org.ripv.rmi.RmiSupport;
+import org.ripv.server.security.RegistryGuard;
+import org.ripv.wire.WireFilter;
+
+/**
+ * The server's RMI door: the registry it creates on the registry port (remote binds refused),
+ * and {@link ServerRemote} exported on that same port, bound under
+ * {@link GenericRMIInterface#BINDING}, with deadlines on the calls back and the RMI filter on
+ * what services send. {@link #check} puts the binding back should anything have replaced it.
+ */
+public final class RmiDoor implements AutoCloseable {
+    private final Registry registry;
+    private final ServerRemote remote;
+    private final RegistryGuard guard;
+    private final int port;
+
+    private RmiDoor(Registry registry, ServerRemote remote, RegistryGuard guard, int port) {
+        this.registry = registry;
+        this.remote = remote;
+        this.guard = guard;
+        this.port = port;
+    }
+
+    /** Opens the registry on {@code port} (0: a free one) on the bind address (null: all) and exports {@code remote} there. */
+    public static RmiDoor open(InetAddress bind, int port, ServerRemote remote) throws IOException {
+        int registryPort = port == 0 ? freePort() : port;
+        BoundServerSocketFactory rmiSockets = new BoundServerSocketFactory(bind);
+        // Services call back with deadlines: the factory travels inside the stub they get.
+        DeadlineSocketFactory callSockets = DeadlineSocketFactory.fromSystem();
+        Registry registry;
+        try {
+            registry = RegistryGuard.create(registryPort, callSockets, rmiSockets);
+        } catch (RemoteException e) {
+            throw new IOException("cannot open the RMI registry on port " + registryPort + " (in use?): " + e.getMessage(), e);
+        }
+        try {
+            GenericRMIInterface stub = (GenericRMIInterface) UnicastRemoteObject.exportObject(remote,
+                    registryPort, callSockets, rmiSockets, WireFilter.forRmi(RmiSupport.MAX_RMI_BYTES));
+            return new RmiDoor(registry, remote, RegistryGuard.bind(registry, stub), registryPort);
+        } catch (IOException | RuntimeException e) {
+            new RmiDoor(registry, remote, null, registryPort).close();
+            throw e;
+        }
+    }
+
+    /** The registry port (useful with port 0). */
+    public int port() {
+        return port;
+    }
+
+    /** Binds the server's stub again if anything replaced it (each service check). */
+    public void check() {
+        if (guard != null) {
+            guard.check();
+        }
+    }
+
+    /** Unbinds, closes the registry and withdraws the server's remote object. */
+    @Override
+    public void close() {
+        try {
+            registry.unbind(GenericRMIInterface.BINDING);
+        } catch (Exception ignored) {
+            // not bound, or already gone
+        }
+        try {
+            UnicastRemoteObject.unexportObject(registry, true);
+        } catch (NoSuchObjectException ignored) {
+            // not exported
+        }
+        RmiSupport.unexport(remote);
+    }
+
+    private static int freePort() throws IOException {
+        try (ServerSocket s = new ServerSocket(0)) {
+            return s.getLocalPort();
+        }
+    }
+}
