@@ -141,7 +141,7 @@ public final class WebBench implements Callable<Integer> {
 
             int first = Math.min(JUDGED, watchers);
             floor = new WebFloorRun(frame, readerThreads, rate, warmup, seconds);
-            floor.warm(first, Math.max(5, warmup + seconds / 2));
+            floor.warm(first, warmup + seconds / 2);
 
             List<ConsoleBench.Watch> crowd = new ArrayList<>();
             long t0 = System.nanoTime();
