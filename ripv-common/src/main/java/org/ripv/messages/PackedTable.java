@@ -15,7 +15,9 @@ import java.util.List;
  * large query. One array is written and read at memory speed.
  *
  * <p>Layout ({@link PackedBytes}): version, query, truncated, column count, columns, types, row
- * count, cells row by row.
+ * count, cells row by row. The cells arrive as {@link PackedRows}: their lengths are checked on
+ * reading, their text is built only when a row is read, and a table sent on (the server relaying
+ * a page) writes the same bytes again.
  */
 final class PackedTable implements Serializable {
     @Serial
@@ -25,7 +27,9 @@ final class PackedTable implements Serializable {
     private final byte[] data;
 
     PackedTable(TableResult t) {
-        PackedBytes.Writer w = new PackedBytes.Writer(64 + t.rows().size() * Math.max(1, t.columns().size()) * 12, "table");
+        boolean packed = t.rows() instanceof PackedRows;
+        int cells = packed ? 0 : t.rows().size() * Math.max(1, t.columns().size()) * 12;
+        PackedBytes.Writer w = new PackedBytes.Writer(256 + t.query().length() * 3 + cells, "table");
         w.writeInt(VERSION);
         w.writeString(t.query());
         w.writeInt(t.truncated() ? 1 : 0);
@@ -37,6 +41,10 @@ final class PackedTable implements Serializable {
             w.writeString(c);
         }
         w.writeInt(t.rows().size());
+        if (t.rows() instanceof PackedRows rows) {
+            this.data = rows.after(w); // the cells as they came, never turned into text here
+            return;
+        }
         for (String[] row : t.rows()) {
             for (String cell : row) {
                 w.writeString(cell);
@@ -67,14 +75,7 @@ final class PackedTable implements Serializable {
         }
         // every cell takes at least 4 bytes, so the count is bounded by what was sent
         int rows = r.readCount(4 * Math.max(1, n));
-        List<String[]> out = new ArrayList<>(rows);
-        for (int i = 0; i < rows; i++) {
-            String[] row = new String[n];
-            for (int j = 0; j < n; j++) {
-                row[j] = r.readString();
-            }
-            out.add(row);
-        }
+        PackedRows out = PackedRows.read(r, n, rows);
         if (r.remaining() != 0) {
             throw new InvalidObjectException("packed table has " + r.remaining() + " bytes after its last row");
         }

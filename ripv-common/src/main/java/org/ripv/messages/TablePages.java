@@ -1,7 +1,9 @@
 package org.ripv.messages;
 
+import java.util.AbstractList;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.RandomAccess;
 
 /**
  * A query's table as it travels: in pages (issue 38). A PROGRESS reply whose result is a
@@ -19,8 +21,10 @@ public final class TablePages {
     public static final int DEFAULT_MAX_ROWS = 5_000_000;
 
     private final int maxRows;
-    private final List<String[]> rows = new ArrayList<>();
+    private List<String[]> rows = new ArrayList<>();
     private boolean cut;
+    /** The pages' common width, -1 before the first, -2 once two differed. */
+    private int width = -1;
 
     public TablePages() {
         this(DEFAULT_MAX_ROWS);
@@ -37,7 +41,7 @@ public final class TablePages {
 
     /** Keeps a page's rows, in the order the pages came. */
     public synchronized void add(TableResult page) {
-        take(page.rows());
+        take(page);
     }
 
     /** How many rows the pages so far held. */
@@ -50,8 +54,12 @@ public final class TablePages {
         if (rows.isEmpty()) {
             return last;
         }
-        take(last.rows());
-        return new TableResult(last.query(), last.columns(), last.types(), rows, last.truncated() || cut);
+        take(last);
+        // Each page's rows were checked against its columns when it was built: when every page had
+        // as many columns as the last, the joined rows need no second look (nor a second copy).
+        List<String[]> all = width == last.columns().size() ? new CheckedRows(rows, width) : rows;
+        rows = new ArrayList<>(); // handed over: nothing here changes them any more
+        return new TableResult(last.query(), last.columns(), last.types(), all, last.truncated() || cut);
     }
 
     /** The final reply with the pages' rows put in front of its own; any other reply as it is. */
@@ -59,13 +67,40 @@ public final class TablePages {
         return last.result() instanceof TableResult t ? last.withResult(join(t)) : last;
     }
 
-    private void take(List<String[]> more) {
-        for (String[] row : more) {
+    private void take(TableResult page) {
+        int w = page.columns().size();
+        width = width == -1 || width == w ? w : -2;
+        for (String[] row : page.rows()) {
             if (rows.size() == maxRows) {
                 cut = true;
                 return;
             }
             rows.add(row);
+        }
+    }
+
+    /** Rows of one width, each checked by the TableResult it came in; read-only. */
+    static final class CheckedRows extends AbstractList<String[]> implements RandomAccess {
+        private final List<String[]> rows;
+        private final int width;
+
+        private CheckedRows(List<String[]> rows, int width) {
+            this.rows = rows;
+            this.width = width;
+        }
+
+        int width() {
+            return width;
+        }
+
+        @Override
+        public String[] get(int index) {
+            return rows.get(index);
+        }
+
+        @Override
+        public int size() {
+            return rows.size();
         }
     }
 }

@@ -13,7 +13,9 @@ import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
 import java.util.Arrays;
 import org.ripv.messages.Message;
+import org.ripv.messages.PackedRows;
 import org.ripv.messages.SerializedMessages;
+import org.ripv.messages.TableResult;
 
 /**
  * The socket protocol between clients and the server (docs/protocol.md). After a greeting of
@@ -71,19 +73,12 @@ public final class FrameCodec {
     public byte[] encode(Message m) throws IOException {
         byte[] plain = SerializedMessages.serialize(m); // the same bytes, without a stream for them
         if (plain != null) {
-            if (plain.length > maxFrame) {
-                throw new ProtocolException("a message of " + plain.length + " bytes is over the frame limit of " + maxFrame);
-            }
+            checkSize(plain.length);
             return plain;
         }
-        ByteArrayOutputStream bytes = new ByteArrayOutputStream(512);
-        try (ObjectOutputStream out = new ObjectOutputStream(bytes)) {
-            out.writeObject(m);
-        }
-        if (bytes.size() > maxFrame) {
-            throw new ProtocolException("a message of " + bytes.size() + " bytes is over the frame limit of " + maxFrame);
-        }
-        return bytes.toByteArray();
+        ByteArrayOutputStream body = streamed(m);
+        checkSize(body.size());
+        return body.toByteArray();
     }
 
     /** Writes one frame and flushes. The caller serializes access to the stream. */
@@ -94,9 +89,42 @@ public final class FrameCodec {
 
     /** Writes one frame without flushing, for a writer that flushes when its queue runs dry. */
     public void writeNoFlush(DataOutputStream out, Message m) throws IOException {
-        byte[] body = encode(m);
-        out.writeInt(body.length);
-        out.write(body);
+        byte[] plain = SerializedMessages.serialize(m);
+        if (plain != null) {
+            checkSize(plain.length);
+            out.writeInt(plain.length);
+            out.write(plain);
+            return;
+        }
+        ByteArrayOutputStream body = streamed(m);
+        checkSize(body.size());
+        out.writeInt(body.size());
+        body.writeTo(out); // no copy of the body (a page of a query is most of a megabyte)
+    }
+
+    private void checkSize(int length) throws ProtocolException {
+        if (length > maxFrame) {
+            throw new ProtocolException("a message of " + length + " bytes is over the frame limit of " + maxFrame);
+        }
+    }
+
+    private static ByteArrayOutputStream streamed(Message m) throws IOException {
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream(sizeHint(m));
+        try (ObjectOutputStream out = new ObjectOutputStream(bytes)) {
+            out.writeObject(m);
+        }
+        return bytes;
+    }
+
+    /**
+     * Room for the message's bytes from the start: a page of rows (issue 38) grown by doubling
+     * from 512 bytes was copied a dozen times and ended in an array twice its size.
+     */
+    private static int sizeHint(Message m) {
+        if (m.footer() != null && m.footer().result() instanceof TableResult t && t.rows() instanceof PackedRows p) {
+            return p.bytes() + 8192 + 3 * (t.query().length() + (m.header().body() == null ? 0 : m.header().body().length()));
+        }
+        return 512;
     }
 
     /**

@@ -25,6 +25,7 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
@@ -106,6 +107,8 @@ public final class DatabaseBench {
         java.util.concurrent.atomic.AtomicLong firstPage = new java.util.concurrent.atomic.AtomicLong();
         long[] cpu = new long[3]; // CPU nanoseconds of the whole process per path, over the measured runs
         long serialized = 0;
+        Map<String, Double> breakdown = Map.of();
+        double allocated = -1;
 
         // 2. a service of its own, not connected to a server, for the in-process path
         DatabaseServer local = new DatabaseServer("localhost", List.of(db), limits);
@@ -175,6 +178,15 @@ public final class DatabaseBench {
                     serialized = serializedSize(e);
                 }
             }
+            // Where an end-to-end query's CPU goes, by kind of thread: more queries of that path
+            // alone, outside the figures above (reading every thread's clock costs CPU itself).
+            CpuClock where = CpuClock.start();
+            for (int i = 0; i < runs; i++) {
+                OutgoingServerMessage r = client.call(mailbox, sql, Priority.NORMAL, Duration.ofMinutes(5), null);
+                check(((TableResult) r.footer().result()).rows().size(), rows);
+            }
+            breakdown = where.microsPerThreadKind(runs);
+            allocated = where.bytesAllocatedPer(runs);
         } finally {
             connector.close();
             service.stop();
@@ -200,6 +212,15 @@ public final class DatabaseBench {
                 serialized, serialized / 1048576.0);
         System.out.printf(Locale.ROOT, "peak heap during service and end-to-end runs (server, service and client in one JVM): %,d MiB of %,d MiB%n",
                 peakHeap >> 20, Runtime.getRuntime().maxMemory() >> 20);
+        System.out.printf(Locale.ROOT, "where the end-to-end CPU goes, ms per query (%d more queries of that path alone, %.0f MiB allocated per query;"
+                + " the service's inbox reads the cursor, its outbox sends the pages over RMI, RMI TCP Connection is the"
+                + " server taking them, ripv-socket-writer the server's TLS socket, ripv-client-reader the client):%n", runs,
+                allocated / 1048576.0);
+        breakdown.forEach((kind, micros) -> {
+            if (micros >= 500) {
+                System.out.printf(Locale.ROOT, "  %8.1f  %s%n", micros / 1e3, kind);
+            }
+        });
         System.out.printf(Locale.ROOT, "raw: direct %s; service %s; end to end %s; end to end, first row %s%n", Arrays.toString(direct),
                 Arrays.toString(inProcess), Arrays.toString(endToEnd), Arrays.toString(endToEndFirst));
     }

@@ -31,6 +31,10 @@ import java.util.function.BooleanSupplier;
  * the reader refuses stores nothing.
  *
  * <p>Not thread-safe: one instance per connection, used by one thread.
+ *
+ * <p>Over 400 lines because one transaction's steps (the file row, its sensors, the latest
+ * values, the merge of a cycle stored already) share its connection, batches and rollback; the
+ * rows themselves are {@link CycleWriter}'s.
  */
 public final class DbaIngest {
     /** Rows per JDBC batch. */
