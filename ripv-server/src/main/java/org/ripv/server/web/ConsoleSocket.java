@@ -6,9 +6,13 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
+import java.nio.ByteBuffer;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.eclipse.jetty.websocket.api.Callback;
 import org.eclipse.jetty.websocket.api.Session;
+import org.eclipse.jetty.websocket.common.WebSocketSession;
+import org.eclipse.jetty.websocket.core.Frame;
+import org.eclipse.jetty.websocket.core.OpCode;
 import org.ripv.messages.Attachment;
 import org.ripv.messages.Header;
 import org.ripv.messages.IncomingServerMessage;
@@ -24,7 +28,9 @@ import org.slf4j.LoggerFactory;
  * {@code {"id":7,"mailbox":"…","body":"dir","priority":"normal","csrf":"…"}} (an upload chunk adds
  * {@code "file"} and {@code "data"}, see {@link FileChunks}); this hands it to its
  * {@link SocketHandler} as that client's request, so the server's own rules decide; every reply
- * and console push goes back as JSON ({@link WebReplies}) with Jetty's asynchronous send.
+ * and console push goes back as JSON ({@link WebReplies}) with Jetty's asynchronous send. A push
+ * every watching page gets is one UTF-8 buffer ({@link PushJson}) that each page's frame shares
+ * (issue 38: no copy per page).
  *
  * <p>What waits for a page is bounded: at most {@link #MAX_PUSHES} pushes not yet written (beyond
  * that the server's watcher holds the lines in its own bounded backlog and later tells the page
@@ -99,7 +105,7 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
 
     @Override
     public boolean send(OutgoingServerMessage reply) {
-        return sendText(reply.header().messageId() == 0 ? json.of(reply) : json.reply(reply), null);
+        return reply.header().messageId() == 0 ? sendShared(json.of(reply), null) : sendText(json.reply(reply), null);
     }
 
     /**
@@ -112,7 +118,7 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
         if (queued.get() >= MAX_PUSHES) {
             return false;
         }
-        return sendText(json.of(message), written);
+        return sendShared(json.of(message), written);
     }
 
     @Override
@@ -137,6 +143,32 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
                 ConsoleSocket.this.failed(x);
             }
         });
+        return true;
+    }
+
+    /**
+     * Queues a text frame whose UTF-8 bytes other pages' frames share: Jetty's core session (under
+     * the API's session Jetty gives us) sends a slice of the buffer — its own position, the same
+     * bytes, which nothing on the way writes into (a server's frames are not masked; permessage-deflate,
+     * when a browser asks for it, reads the payload into a buffer of its own) — instead of its own
+     * UTF-8 copy of the text.
+     */
+    private boolean sendShared(ByteBuffer utf8, Runnable written) {
+        Session s = socket;
+        if (s == null || !s.isOpen() || !admit()) {
+            return false;
+        }
+        ((WebSocketSession) s).getCoreSession().sendFrame(new Frame(OpCode.TEXT, utf8.slice()), new org.eclipse.jetty.util.Callback() {
+            @Override
+            public void succeeded() {
+                ConsoleSocket.this.written(written);
+            }
+
+            @Override
+            public void failed(Throwable x) {
+                ConsoleSocket.this.failed(x);
+            }
+        }, false);
         return true;
     }
 

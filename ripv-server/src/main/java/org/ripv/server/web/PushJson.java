@@ -1,32 +1,36 @@
 package org.ripv.server.web;
 
+import java.nio.ByteBuffer;
+import java.nio.charset.StandardCharsets;
 import java.util.concurrent.atomic.AtomicReferenceArray;
 import org.ripv.messages.OutgoingServerMessage;
 
 /**
- * A console push as JSON, written once for all the pages it goes to: the console hub hands every
- * up-to-date watcher the same message object (encoded once for socket clients), so a line for
- * 10,000 watching pages is one JSON text, not 10,000 (Jetty still makes each page's frame its
- * own UTF-8 copy: docs/performance.md). Keyed by
+ * A console push as JSON in UTF-8, written once for all the pages it goes to: the console hub
+ * hands every up-to-date watcher the same message object (encoded once for socket clients), so a
+ * line for 10,000 watching pages is one buffer that every page's frame shares (each sends a slice:
+ * its own position, the same bytes), not 10,000 copies — neither the CPU of encoding it per page
+ * nor, when pages fall behind, the heap of each page's queued copy (docs/performance.md). Keyed by
  * identity in a few slots; messages are immutable records, so a hit is always right and a miss
  * only costs writing it again.
  */
 final class PushJson {
-    private record Entry(OutgoingServerMessage message, String json) {}
+    private record Entry(OutgoingServerMessage message, ByteBuffer utf8) {}
 
     private static final int SLOTS = 16;
     private final AtomicReferenceArray<Entry> slots = new AtomicReferenceArray<>(SLOTS);
     private final WebReplies replies = new WebReplies();
 
-    String of(OutgoingServerMessage m) {
+    /** The push's UTF-8 JSON, shared: callers send a slice of it and never write into it (a read-only buffer has no array for Jetty to write from). */
+    ByteBuffer of(OutgoingServerMessage m) {
         int i = System.identityHashCode(m) & (SLOTS - 1);
         Entry e = slots.get(i);
         if (e != null && e.message() == m) {
-            return e.json();
+            return e.utf8();
         }
-        String json = replies.toJson(m);
-        slots.set(i, new Entry(m, json));
-        return json;
+        ByteBuffer utf8 = ByteBuffer.wrap(replies.toJson(m).getBytes(StandardCharsets.UTF_8));
+        slots.set(i, new Entry(m, utf8));
+        return utf8;
     }
 
     /** A reply, asked by one page only: written for it alone. */
