@@ -288,7 +288,7 @@ class HostileInputTest {
 
     @Test
     void aServiceKilledMidRequestGivesTheClientAnError() throws Exception {
-        String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
+        String java = TestJvms.java();
         Process p = new ProcessBuilder(java, "-cp", System.getProperty("java.class.path"), "-Dripv.host=killme",
                 "org.ripv.examples.ClockService", "--server", "localhost:" + sys.server().registryPort(),
                 "--secret-file", sys.server().secretFile().toString())

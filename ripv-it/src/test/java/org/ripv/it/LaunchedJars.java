@@ -30,6 +30,7 @@ final class LaunchedJars implements AutoCloseable {
         pb.environment().put("HOME", dir.resolve("home").toString());
         // Java takes its home from the password file, not $HOME: the CLI's known_hosts must be the test's own
         pb.environment().put("JAVA_TOOL_OPTIONS", "-Duser.home=" + dir.resolve("home"));
+        pb.environment().put("JAVA", TestJvms.java());
         pb.environment().remove("DISPLAY");
         return add(pb.start());
     }

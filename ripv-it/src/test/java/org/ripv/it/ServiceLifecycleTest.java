@@ -20,7 +20,7 @@ class ServiceLifecycleTest {
     Path dir;
 
     private static Process clock(TestSystem sys, Path log, String secretFile) throws Exception {
-        String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
+        String java = TestJvms.java();
         return new ProcessBuilder(java, "-cp", System.getProperty("java.class.path"), "-Dripv.host=lifecycle",
                 "org.ripv.examples.ClockService", "--server", "localhost:" + sys.server().registryPort(),
                 "--secret-file", secretFile).redirectErrorStream(true).redirectOutput(log.toFile()).start();

@@ -19,7 +19,7 @@ final class SimulatorProcess {
     }
 
     static Process start(Path log, List<String> options) throws IOException {
-        String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
+        String java = TestJvms.java();
         Path jar = ROOT.resolve("ripv-services/target/ripv-services.jar");
         List<String> cmd = new ArrayList<>(Files.isRegularFile(jar) ? List.of(java, "-jar", jar.toString())
                 : List.of(java, "-cp", System.getProperty("java.class.path"), "org.ripv.services.ServicesMain"));

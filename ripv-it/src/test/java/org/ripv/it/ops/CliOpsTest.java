@@ -114,7 +114,7 @@ class CliOpsTest {
         byte[] data = "glider log\n".repeat(1000).getBytes(StandardCharsets.UTF_8);
         Files.write(sys.downloadDir().resolve("unit17.log"), data);
         Path cwd = Files.createDirectories(dir.resolve("cwd"));
-        String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
+        String java = org.ripv.it.TestJvms.java();
         ProcessBuilder pb = new ProcessBuilder(java, "-cp", System.getProperty("java.class.path"), "org.ripv.client.ClientMain",
                 "cli", "--server", "localhost:" + sys.server().port(), "--user", "alice", "--exec", "get unit17.log")
                 .directory(cwd.toFile()).redirectErrorStream(true).redirectInput(ProcessBuilder.Redirect.from(new File("/dev/null")));

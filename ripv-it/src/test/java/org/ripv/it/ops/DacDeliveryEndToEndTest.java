@@ -47,7 +47,7 @@ class DacDeliveryEndToEndTest {
     Path knownHosts;
 
     Process launch(String name, String... args) throws Exception {
-        List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+        List<String> cmd = new ArrayList<>(List.of(org.ripv.it.TestJvms.java(),
                 "-Xmx256m", "-Duser.home=" + tmp.resolve("home"), "-Dripv.host=localhost", "-jar",
                 LaunchedDataLoopTest.jar(name.equals("server") ? "ripv-server" : "ripv-services").toString()));
         cmd.addAll(List.of(args));

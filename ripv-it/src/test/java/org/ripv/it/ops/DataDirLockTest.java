@@ -37,7 +37,7 @@ class DataDirLockTest {
     }
 
     Process server(Path data, Path log) throws IOException {
-        String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
+        String java = org.ripv.it.TestJvms.java();
         Process p = new ProcessBuilder(java, "-Duser.home=" + tmp.resolve("home"), "-jar", JAR.toString(), "server",
                 "--data", data.toString(), "--port", "0", "--registry-port", "0", "--http-port", "0", "--outbound-port", "-1")
                 .redirectErrorStream(true).redirectOutput(log.toFile()).redirectInput(ProcessBuilder.Redirect.from(new File("/dev/null")))

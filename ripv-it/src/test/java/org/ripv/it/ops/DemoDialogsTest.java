@@ -61,6 +61,7 @@ class DemoDialogsTest {
                 demo.dir.resolve("password").toString(), "--exec", command));
         ProcessBuilder pb = new ProcessBuilder(cmd).directory(ROOT.toFile()).redirectErrorStream(true);
         pb.environment().put("HOME", home.toString());
+        pb.environment().put("JAVA", org.ripv.it.TestJvms.java());
         pb.environment().remove("RIPV_KNOWN_HOSTS");
         pb.environment().remove("RIPV_PASSWORD");
         pb.environment().remove("DISPLAY");

@@ -31,7 +31,7 @@ class DemoGliderDataTest {
     record Cli(int exit, String out) {}
 
     Cli cli(RunningDemo demo, String... lines) throws Exception {
-        List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+        List<String> cmd = new ArrayList<>(List.of(org.ripv.it.TestJvms.java(),
                 "-Duser.home=" + demo.home, "-jar", RipvScriptHelpTest.ROOT.resolve("ripv-client/target/ripv-client.jar").toString(),
                 "cli", "--server", "localhost:" + demo.port, "--known-hosts", demo.dir.resolve("known_hosts").toString(),
                 "--user", "demo", "--password-file", demo.dir.resolve("password").toString()));

@@ -30,7 +30,7 @@ class DuplicateServiceNameTest {
     final List<Process> processes = new ArrayList<>();
 
     static String java() {
-        return Path.of(System.getProperty("java.home"), "bin", "java").toString();
+        return org.ripv.it.TestJvms.java();
     }
 
     static String jar(String module) {

@@ -43,7 +43,7 @@ class FirstHourEndToEndTest {
     Path knownHosts;
 
     static String java() {
-        return Path.of(System.getProperty("java.home"), "bin", "java").toString();
+        return org.ripv.it.TestJvms.java();
     }
 
     static String jar(String module) {

@@ -40,7 +40,7 @@ class HandoutEndToEndTest {
     int clientPort;
 
     Process launch(String name, String module, List<String> jvm, String... args) throws Exception {
-        List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+        List<String> cmd = new ArrayList<>(List.of(org.ripv.it.TestJvms.java(),
                 "-Xmx256m", "-Duser.home=" + tmp.resolve("home")));
         cmd.addAll(jvm);
         cmd.addAll(List.of("-jar", LaunchedDataLoopTest.jar(module).toString()));

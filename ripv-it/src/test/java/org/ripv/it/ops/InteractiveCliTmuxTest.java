@@ -46,7 +46,7 @@ class InteractiveCliTmuxTest {
         sys.user("alice", "operators");
         sys.register(new ClockService("localhost"));
         history = dir.resolve("home/.ripv/history");
-        String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
+        String java = org.ripv.it.TestJvms.java();
         launcher = dir.resolve("ripv-cli.sh");
         Files.writeString(launcher, String.join("\n",
                 "#!/bin/bash",

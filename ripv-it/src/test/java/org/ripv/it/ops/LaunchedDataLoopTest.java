@@ -68,7 +68,7 @@ class LaunchedDataLoopTest {
 
     /** Starts {@code java -jar JAR ARGS} as the launcher does, with HOME in the test's directory. */
     Process launch(String name, String module, String... args) throws Exception {
-        List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+        List<String> cmd = new ArrayList<>(List.of(org.ripv.it.TestJvms.java(),
                 "-Xmx256m", "-Duser.home=" + tmp.resolve("home"), "-jar", jar(module).toString()));
         cmd.addAll(List.of(args));
         ProcessBuilder pb = new ProcessBuilder(cmd).directory(tmp.toFile()).redirectErrorStream(true)

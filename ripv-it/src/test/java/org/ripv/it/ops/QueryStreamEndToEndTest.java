@@ -56,7 +56,7 @@ class QueryStreamEndToEndTest {
     final List<Process> started = new ArrayList<>();
 
     Process launch(String name, String heap, String module, String... args) throws Exception {
-        List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+        List<String> cmd = new ArrayList<>(List.of(org.ripv.it.TestJvms.java(),
                 heap, "-XX:+ExitOnOutOfMemoryError", "-Duser.home=" + tmp.resolve("home"), "-jar",
                 LaunchedDataLoopTest.jar(module).toString()));
         cmd.addAll(List.of(args));

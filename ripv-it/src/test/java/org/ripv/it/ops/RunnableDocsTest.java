@@ -86,6 +86,7 @@ class RunnableDocsTest {
                 "localhost:" + demo.registryPort, "--host", "localhost", "--secret-file", demoDir.resolve("server/service.secret").toString())
                 .redirectErrorStream(true).redirectOutput(clockLog.toFile());
         pb.environment().put("HOME", home.toString());
+        pb.environment().put("JAVA", org.ripv.it.TestJvms.java());
         pb.environment().put(ProcessWatch.VARIABLE, demo.watch.mark); // stopped with the demo's processes at the end
         clock = pb.start();
         long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(120);
@@ -152,6 +153,7 @@ class RunnableDocsTest {
         ProcessWatch watch = new ProcessWatch();
         pb.environment().put(ProcessWatch.VARIABLE, watch.mark);
         pb.environment().put("HOME", home.toString());
+        pb.environment().put("JAVA", org.ripv.it.TestJvms.java());
         pb.environment().remove("RIPV_PASSWORD");
         pb.environment().remove("RIPV_KNOWN_HOSTS");
         pb.environment().remove("DISPLAY");
@@ -199,6 +201,7 @@ class RunnableDocsTest {
         ProcessBuilder pb = new ProcessBuilder(cmd).directory(work.toFile()).redirectErrorStream(true)
                 .redirectInput(ProcessBuilder.Redirect.from(new File("/dev/null")));
         pb.environment().put("HOME", home.toString());
+        pb.environment().put("JAVA", org.ripv.it.TestJvms.java());
         Process p = pb.start();
         String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
         assertThat(p.waitFor(120, TimeUnit.SECONDS)).isTrue();
@@ -345,6 +348,7 @@ class RunnableDocsTest {
         ProcessBuilder pb = new ProcessBuilder(cmd).directory(work.toFile()).redirectErrorStream(true)
                 .redirectInput(ProcessBuilder.Redirect.from(new File("/dev/null")));
         pb.environment().put("HOME", withHome.toString());
+        pb.environment().put("JAVA", org.ripv.it.TestJvms.java());
         pb.environment().remove("RIPV_KNOWN_HOSTS");
         pb.environment().remove("RIPV_PASSWORD");
         Process p = pb.start();

@@ -68,6 +68,7 @@ final class RunningDemo implements AutoCloseable {
         env.put("RIPV_WEBHOOK_PORT", "" + webhookPort);
         env.put("RIPV_DEMO_HEADLESS", "1");
         env.put("HOME", home.toString());
+        env.put("JAVA", org.ripv.it.TestJvms.java());
         return env;
     }
 

@@ -71,7 +71,7 @@ class ChallengeFloodAttackTest {
                     assertThat(System.nanoTime()).as("the flood is running").isLessThan(warm);
                     Thread.sleep(20);
                 }
-                String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
+                String java = org.ripv.it.TestJvms.java();
                 p = new ProcessBuilder(java, "-cp", System.getProperty("java.class.path"), "-Dripv.host=flooded",
                         "org.ripv.examples.ClockService", "--server", "localhost:" + sys.server().registryPort(),
                         "--secret-file", sys.server().secretFile().toString())

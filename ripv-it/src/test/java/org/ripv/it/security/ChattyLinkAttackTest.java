@@ -86,6 +86,7 @@ class ChattyLinkAttackTest {
                 "--link", "tcp://127.0.0.1:" + quiet.port() + ",name=quiet,idle-timeout=1000")
                 .directory(dir.toFile()).redirectErrorStream(true).redirectOutput(log.toFile());
         pb.environment().put("HOME", dir.resolve("home").toString());
+        pb.environment().put("JAVA", org.ripv.it.TestJvms.java());
         pb.environment().put("JAVA_TOOL_OPTIONS", "-Xmx48m -XX:+ExitOnOutOfMemoryError");
         service = pb.start();
         String chattyBox = "<SerialPortServer>::<" + HOST + ">chatty";

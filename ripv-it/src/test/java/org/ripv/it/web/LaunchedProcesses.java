@@ -26,7 +26,7 @@ final class LaunchedProcesses {
 
     /** Starts {@code java -Xmx256m ARGS}, writes {@code input} (or nothing) to it and closes its input. */
     Process launch(String name, String input, String... args) throws IOException {
-        List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Xmx256m"));
+        List<String> cmd = new ArrayList<>(List.of(org.ripv.it.TestJvms.java(), "-Xmx256m"));
         cmd.addAll(List.of(args));
         Process p = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(dir.resolve(name + ".log").toFile()).start();
         if (input != null) {
