@@ -36,7 +36,11 @@ final class Watcher {
     final String clientId;
     final String user;
     final String mailbox;
+    /** Which of the hub's fan-out threads offers this watcher its pushes: 0 is the taking thread (ConsoleHub). */
+    final int shard;
     private final Outlet outlet;
+    /** What runs when a push has been written: one object for every push, not one each. */
+    private final Runnable onWritten = this::written;
     private final ArrayDeque<ConsoleEntry> backlog = new ArrayDeque<>();
     private long skipped;
     private long skippedFrom;
@@ -44,11 +48,12 @@ final class Watcher {
     private int inFlight;
     private volatile boolean stopped;
 
-    Watcher(String clientId, String user, String mailbox, Outlet outlet) {
+    Watcher(String clientId, String user, String mailbox, Outlet outlet, int shard) {
         this.clientId = clientId;
         this.user = user;
         this.mailbox = mailbox;
         this.outlet = outlet;
+        this.shard = shard;
     }
 
     /** A push built and encoded once for every watcher that is up to date. */
@@ -110,7 +115,7 @@ final class Watcher {
     }
 
     private void send(OutgoingServerMessage m, byte[] frame) {
-        if (!outlet.push(m, frame, this::written)) {
+        if (!outlet.push(m, frame, onWritten)) {
             synchronized (this) {
                 inFlight--; // the connection is closing, or full of replies: the next entry tries again
             }
