@@ -271,14 +271,7 @@ public final class ConsoleHub implements AutoCloseable {
             byMailbox.forEach((mailbox, list) -> {
                 List<Watcher> ws = watchers.get(mailbox);
                 if (ws != null && !ws.isEmpty()) {
-                    OutgoingServerMessage m = Watcher.message(mailbox, list, 0);
-                    byte[] frame;
-                    try {
-                        frame = encoder.encode(m);
-                    } catch (IOException x) {
-                        frame = null; // too large for one frame: each writer reports it
-                    }
-                    Watcher.Shared shared = new Watcher.Shared(m, frame);
+                    Watcher.Shared shared = new Watcher.Shared(Watcher.message(mailbox, list, 0), encoder);
                     if (ws.size() <= INLINE_WATCHERS || fanOut.length == 0) {
                         for (Watcher w : ws) {
                             if (w.shard == 0) {

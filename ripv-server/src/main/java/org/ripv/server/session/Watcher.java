@@ -56,8 +56,43 @@ final class Watcher {
         this.shard = shard;
     }
 
-    /** A push built and encoded once for every watcher that is up to date. */
-    record Shared(OutgoingServerMessage message, byte[] frame) {}
+    /**
+     * A push built once for every watcher that is up to date, and encoded once when the first
+     * socket client asks (web pages write their own JSON: PushJson).
+     */
+    static final class Shared implements java.util.function.Supplier<byte[]> {
+        private static final byte[] NONE = new byte[0];
+        final OutgoingServerMessage message;
+        private final ConsoleHub.Encoder encoder;
+        private volatile byte[] frame;
+
+        Shared(OutgoingServerMessage message, ConsoleHub.Encoder encoder) {
+            this.message = message;
+            this.encoder = encoder;
+        }
+
+        /** The encoded push, or null when it is too large for one frame (each writer then reports it). */
+        @Override
+        public byte[] get() {
+            byte[] f = frame;
+            if (f == null) {
+                synchronized (this) {
+                    f = frame;
+                    if (f == null) {
+                        try {
+                            f = encoder.encode(message);
+                        } catch (java.io.IOException x) {
+                            f = NONE;
+                        }
+                        frame = f;
+                    }
+                }
+            }
+            return f == NONE ? null : f;
+        }
+    }
+
+    private static final java.util.function.Supplier<byte[]> NOT_ENCODED = () -> null;
 
     /** Takes new entries; pushes at once if nothing is in flight. The shared push is used when it can be. */
     void offer(List<ConsoleEntry> entries, Shared shared) {
@@ -84,7 +119,7 @@ final class Watcher {
             }
         }
         if (now != null) {
-            send(now.message(), now.frame());
+            send(now.message, now);
         } else {
             pump();
         }
@@ -111,10 +146,10 @@ final class Watcher {
             next = message(mailbox, batch, lost);
             inFlight++;
         }
-        send(next, null);
+        send(next, NOT_ENCODED);
     }
 
-    private void send(OutgoingServerMessage m, byte[] frame) {
+    private void send(OutgoingServerMessage m, java.util.function.Supplier<byte[]> frame) {
         if (!outlet.push(m, frame, onWritten)) {
             synchronized (this) {
                 inFlight--; // the connection is closing, or full of replies: the next entry tries again

@@ -11,6 +11,7 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.ripv.messages.ConsoleBatch;
@@ -32,10 +33,19 @@ class ConsoleFanOutTest {
     static final class Recorder implements Outlet {
         final List<String> lines = new ArrayList<>();
         final Set<String> threads = ConcurrentHashMap.newKeySet();
+        /** True for a client that writes the server's frames (a socket), false for a web page. */
+        final boolean encodes;
+
+        Recorder(boolean encodes) {
+            this.encodes = encodes;
+        }
 
         @Override
-        public synchronized boolean push(OutgoingServerMessage message, byte[] frame, Runnable written) {
+        public synchronized boolean push(OutgoingServerMessage message, java.util.function.Supplier<byte[]> frame, Runnable written) {
             threads.add(Thread.currentThread().getName());
+            if (encodes) {
+                assertThat(frame.get()).isNotNull();
+            }
             ConsoleBatch b = (ConsoleBatch) message.footer().result();
             b.entries().forEach(e -> lines.add(e.text()));
             written.run();
@@ -64,10 +74,14 @@ class ConsoleFanOutTest {
         int watchers = ConsoleHub.INLINE_WATCHERS * 4;
         int lines = 300;
         try (EmbeddedStateStore store = new EmbeddedStateStore(data, 1 << 20)) {
-            ConsoleHub hub = new ConsoleHub(data.resolve("transcripts"), store, 90, m -> new byte[0]);
+            AtomicInteger encoded = new AtomicInteger();
+            ConsoleHub hub = new ConsoleHub(data.resolve("transcripts"), store, 90, m -> {
+                encoded.incrementAndGet();
+                return new byte[1];
+            });
             List<Recorder> rs = new ArrayList<>();
             for (int i = 0; i < watchers; i++) {
-                Recorder r = new Recorder();
+                Recorder r = new Recorder(i == 1 || i == watchers - 1); // two socket clients, the rest web pages
                 rs.add(r);
                 assertThat(hub.watch("c" + i, "u", RU29, r, (s, recent) -> null)).isNull();
             }
@@ -104,6 +118,8 @@ class ConsoleFanOutTest {
                             .isEqualTo(java.util.stream.IntStream.range(0, lines).mapToObj(n -> who + " " + n).toList());
                 }
             }
+            assertThat(encoded.get()).as("each line encoded once for the socket clients, not per watcher")
+                    .isEqualTo(2 * lines);
             assertThat(rs.get(0).threads).as("the first watchers are written on the taking thread")
                     .noneMatch(t -> t.startsWith("ripv-console-fanout"));
             if (Runtime.getRuntime().availableProcessors() > 1) {
