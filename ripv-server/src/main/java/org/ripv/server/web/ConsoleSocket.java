@@ -74,13 +74,13 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
     public void onWebSocketOpen(Session session) {
         this.core = ((WebSocketSession) session).getCoreSession();
         this.socket = session;
-        this.open = true;
         String refused = sessions.admitSocket(login, this);
         if (refused != null) {
             log.info("web console socket of {} from {} refused: {}", login.user, address.getHostAddress(), refused);
             session.close(1008, truncate(refused), Callback.NOOP);
             return;
         }
+        this.open = true;
         try {
             client = door.open(this, login.user, login.roles);
         } catch (IOException e) {
