@@ -3,9 +3,7 @@ package org.ripv.it.ops;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
-import java.io.ByteArrayInputStream;
 import java.io.ByteArrayOutputStream;
-import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -16,10 +14,8 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
-import org.ripv.client.cli.CliCommand;
-import org.ripv.it.TestSystem;
+import org.ripv.it.InJvmCli;
 import org.ripv.testing.LoopbackSshd;
-import picocli.CommandLine;
 
 /**
  * Issue 37 item 4 as launched: {@code ripv-server.jar}, and {@code ripv-services.jar} as the
@@ -144,10 +140,8 @@ class DacDeliveryEndToEndTest {
                     .contains("rosie_713_20190620T063600Z_rt.nc  real-time climb, 21 samples, 11.9 to 141.5 dbar, QC temperature 20 good 1 suspect")
                     .containsPattern("newest profile rosie_713_20190620T080055Z_rt\\.nc, its data \\d+ days ago");
             ByteArrayOutputStream jsonOut = new ByteArrayOutputStream();
-            PrintStream ps = new PrintStream(jsonOut, true, StandardCharsets.UTF_8);
-            CommandLine json = new CommandLine(new CliCommand(new ByteArrayInputStream(new byte[0]), ps, ps));
-            assertThat(json.execute("--server", "localhost:" + sys.clientPort, "--user", "alice", "--password", TestSystem.PASSWORD,
-                    "--known-hosts", sys.knownHosts.toString(), "--json", "--exec", "?dac " + db + " --json"))
+            assertThat(InJvmCli.exec(jsonOut, jsonOut, InJvmCli.as("alice", "localhost:" + sys.clientPort,
+                    "--known-hosts", sys.knownHosts.toString(), "--json"), "?dac " + db + " --json"))
                     .as(jsonOut.toString(StandardCharsets.UTF_8)).isZero();
             com.fasterxml.jackson.databind.ObjectMapper m = new com.fasterxml.jackson.databind.ObjectMapper();
             String text = null;

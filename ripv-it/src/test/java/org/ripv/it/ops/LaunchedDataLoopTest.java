@@ -58,9 +58,7 @@ class LaunchedDataLoopTest {
         Files.copy(shared.resolve("cac/6b016a2e.cac"), dir.resolve("6b016a2e.cac"));
         Files.copy(shared.resolve("cac/426bd56d.cac"), dir.resolve("426bd56d.cac"));
         Path script = ROOT.resolve("ripv-services/src/test/resources/org/ripv/services/serial/lrzsz-vehicle.sh");
-        Process socat = new ProcessBuilder("socat", "pty,raw,echo=0,link=" + pty, "SYSTEM:'exec bash " + script + " " + dir + "'")
-                .redirectErrorStream(true).redirectOutput(tmp.resolve("socat.log").toFile()).start();
-        sys.add(socat);
+        sys.start("socat", new ProcessBuilder("socat", "pty,raw,echo=0,link=" + pty, "SYSTEM:'exec bash " + script + " " + dir + "'"));
         long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
         while (!Files.exists(pty)) {
             assertThat(System.nanoTime()).as("socat made " + pty).isLessThan(end);

@@ -3,10 +3,8 @@ package org.ripv.it.ops;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
-import java.io.ByteArrayInputStream;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.io.PrintStream;
 import java.net.ServerSocket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -16,16 +14,14 @@ import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
-import java.util.concurrent.TimeUnit;
 import java.util.function.Predicate;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.extension.AfterEachCallback;
 import org.junit.jupiter.api.extension.BeforeEachCallback;
 import org.junit.jupiter.api.extension.ExtensionContext;
-import org.ripv.client.cli.CliCommand;
+import org.ripv.it.InJvmCli;
 import org.ripv.it.TestSystem;
 import org.ripv.server.permit.PermitFile;
-import picocli.CommandLine;
 
 /**
  * A RIPVServer and its services started from the jars the README starts ({@code java -jar
@@ -56,7 +52,7 @@ final class LaunchedSystem implements BeforeEachCallback, AfterEachCallback {
     /** A free port for the glider's link (the simulator listens or calls there). */
     int gliderPort;
     private final List<String> everyJvm;
-    private final List<Process> started = new ArrayList<>();
+    private CommandProcesses processes;
     private final Set<String> logs = new LinkedHashSet<>();
     private final ByteArrayOutputStream out = new ByteArrayOutputStream();
     private Duration startup = STARTUP;
@@ -77,7 +73,7 @@ final class LaunchedSystem implements BeforeEachCallback, AfterEachCallback {
         registryPort = p[1];
         outboundPort = p[2];
         gliderPort = p[3];
-        started.clear();
+        processes = new CommandProcesses(dir);
         logs.clear();
     }
 
@@ -95,14 +91,10 @@ final class LaunchedSystem implements BeforeEachCallback, AfterEachCallback {
         }
     }
 
-    static Path jar(String module) {
-        return ROOT.resolve(module + "/target/" + module + ".jar");
-    }
-
     /** Skips the test where the jars are not built ({@code mvn -DskipTests package} builds them). */
     static void assumeJars() {
         for (String m : List.of("ripv-server", "ripv-services")) {
-            assumeTrue(Files.isRegularFile(jar(m)), "needs the jars (mvn -DskipTests package builds them)");
+            assumeTrue(Files.isRegularFile(Path.of(CommandProcesses.jar(m))), "needs the jars (mvn -DskipTests package builds them)");
         }
     }
 
@@ -130,23 +122,21 @@ final class LaunchedSystem implements BeforeEachCallback, AfterEachCallback {
      * its output to {@code NAME.log}. A {@code -Xmx} among {@code jvm} wins over the 256 MiB (the JVM takes the last).
      */
     Process launch(String name, String module, List<String> jvm, String... args) throws IOException {
-        List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-Xmx256m", "-Duser.home=" + home));
+        List<String> cmd = new ArrayList<>(List.of(CommandProcesses.java(), "-Xmx256m", "-Duser.home=" + home));
         cmd.addAll(everyJvm);
         cmd.addAll(jvm);
-        cmd.addAll(List.of("-jar", jar(module).toString()));
+        cmd.addAll(List.of("-jar", CommandProcesses.jar(module)));
         cmd.addAll(List.of(args));
-        ProcessBuilder pb = new ProcessBuilder(cmd).directory(dir.toFile()).redirectErrorStream(true)
-                .redirectOutput(dir.resolve(name + ".log").toFile());
+        ProcessBuilder pb = new ProcessBuilder(cmd).directory(dir.toFile());
         pb.environment().put("HOME", home.toString());
         logs.add(name);
-        return add(pb.start());
+        return processes.start(pb, name + ".log");
     }
 
-    /** Another process to stop with the rest (socat). */
-    Process add(Process p) {
-        started.add(p);
-        return p;
+    /** Another process to stop with the rest (socat), its output to {@code NAME.log}. */
+    Process start(String name, ProcessBuilder pb) throws IOException {
+        logs.add(name);
+        return processes.start(pb, name + ".log");
     }
 
     /**
@@ -185,8 +175,7 @@ final class LaunchedSystem implements BeforeEachCallback, AfterEachCallback {
 
     /** What process {@code name} has written so far ("" if it was never started). */
     String log(String name) throws IOException {
-        Path f = dir.resolve(name + ".log");
-        return Files.exists(f) ? Files.readString(f, StandardCharsets.UTF_8) : "";
+        return processes.log(name + ".log");
     }
 
     /** Every process's log, each under its name: the evidence a failed wait shows. */
@@ -200,15 +189,8 @@ final class LaunchedSystem implements BeforeEachCallback, AfterEachCallback {
 
     /** The CLI as alice, running {@code lines} one {@code --exec} each; its exit code ({@link #out} has what it printed). */
     int cli(String... lines) {
-        out.reset();
-        List<String> all = new ArrayList<>(List.of("--server", "localhost:" + clientPort, "--user", "alice",
-                "--password", TestSystem.PASSWORD, "--timeout", "120", "--known-hosts", knownHosts.toString()));
-        for (String l : lines) {
-            all.add("--exec");
-            all.add(l);
-        }
-        PrintStream ps = new PrintStream(out, true, StandardCharsets.UTF_8);
-        return new CommandLine(new CliCommand(new ByteArrayInputStream(new byte[0]), ps, ps)).execute(all.toArray(String[]::new));
+        return InJvmCli.exec(out, out, InJvmCli.as("alice", "localhost:" + clientPort, "--timeout", "120",
+                "--known-hosts", knownHosts.toString()), lines);
     }
 
     /** What the last {@link #cli} printed, output and errors. */
@@ -257,14 +239,6 @@ final class LaunchedSystem implements BeforeEachCallback, AfterEachCallback {
 
     /** Stops every process, the last started first, each forcibly after 20 s. */
     void close() throws InterruptedException {
-        for (int i = started.size() - 1; i >= 0; i--) {
-            started.get(i).destroy();
-        }
-        for (Process p : started) {
-            if (!p.waitFor(20, TimeUnit.SECONDS)) {
-                p.destroyForcibly();
-            }
-        }
-        started.clear();
+        processes.close();
     }
 }
