@@ -62,8 +62,7 @@ class QueryStreamEndToEndTest {
                 "--data", tmp.resolve("db").toString(),
                 "--max-rows", "1000000", "--max-result-chars", "1000000000", "--query-timeout", "600");
 
-        try (ClientSocketHandler c = ClientSocketHandler.connectPlain("localhost", sys.clientPort)) {
-            loginWhenThePermitFileIsRead(c);
+        try (ClientSocketHandler c = loginWhenThePermitFileIsRead(sys.clientPort)) {
             String db = awaitDatabase(c, service);
             setUp(c, db);
 
@@ -151,13 +150,20 @@ class QueryStreamEndToEndTest {
         }
     }
 
-    private static void loginWhenThePermitFileIsRead(ClientSocketHandler c) throws Exception {
+    /**
+     * Alice's session, once the server has read the permit file the test wrote. A connection that
+     * has not logged in within the server's login deadline (10 s, which a loaded machine can use up
+     * between refusals) is closed by the server: then a new one.
+     */
+    private static ClientSocketHandler loginWhenThePermitFileIsRead(int port) throws Exception {
         long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
         while (true) {
+            ClientSocketHandler c = ClientSocketHandler.connectPlain("localhost", port);
             try {
                 c.login("alice", TestSystem.PASSWORD.toCharArray());
-                return;
-            } catch (org.ripv.client.handlers.RipvErrorException e) {
+                return c;
+            } catch (org.ripv.client.handlers.RipvErrorException | java.io.IOException e) {
+                c.close();
                 assertThat(System.nanoTime()).as("logged in: " + e.getMessage()).isLessThan(end);
                 Thread.sleep(300);
             }
