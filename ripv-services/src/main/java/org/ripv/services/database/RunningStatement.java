@@ -2,9 +2,8 @@ package org.ripv.services.database;
 
 import java.sql.SQLException;
 import java.sql.Statement;
-import java.util.concurrent.Executors;
-import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.ScheduledFuture;
+import java.util.concurrent.ScheduledThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -28,11 +27,15 @@ import org.slf4j.LoggerFactory;
 final class RunningStatement {
     private static final Logger log = LoggerFactory.getLogger(RunningStatement.class);
     /** One thread for every handler's time limits: a task runs only when a statement overran. */
-    private static final ScheduledExecutorService LIMITS = Executors.newSingleThreadScheduledExecutor(r -> {
+    private static final ScheduledThreadPoolExecutor LIMITS = new ScheduledThreadPoolExecutor(1, r -> {
         Thread t = new Thread(r, "ripv-database-time-limit");
         t.setDaemon(true);
         return t;
     });
+
+    static {
+        LIMITS.setRemoveOnCancelPolicy(true); // a query paused at each of its pages leaves no dead task queued
+    }
 
     private final String handle;
     /** Guarded by {@code this}. */
