@@ -168,7 +168,7 @@ class CliSendTmuxTest {
             t.type("se");
             t.keys("Tab");
             t.keys("Tab");
-            t.await("the completions, the CLI's own word marked", Duration.ofSeconds(10), s -> s.contains("the CLI's own word"));
+            t.await("the completions, the CLI's own word marked", Duration.ofSeconds(30), s -> s.contains("the CLI's own word"));
             assertThat(t.screen()).containsPattern("send\\s+\\(the CLI's own word\\)").contains("sequence")
                     .doesNotContainPattern("sequence\\s+\\(the CLI's own word\\)");
             t.keys("C-u");
