@@ -145,8 +145,8 @@ class CliSendTmuxTest {
             t.type("use ru29");
             t.keys("Enter");
             t.await("the prompt with the vehicle", Duration.ofSeconds(60), s -> Tmux.lastLine(s).equals("alice@localhost ru29>"));
-            // Wait for the glider's call as the operator would, with ?status (the server says "vehicle on
-            // call" once the call's SURFACED arrived): a key sent before the call has begun fails at the
+            // Wait for the glider's call as the operator would, with ?status ("vehicle (on call, ..." once
+            // the call's SURFACED reached the server): a key sent before the call has begun fails at the
             // service ("not on a call"). Then take control with Ctrl-C (again if the glider's answer is slow).
             long end = System.nanoTime() + Duration.ofSeconds(180).toNanos();
             String status;
@@ -156,7 +156,7 @@ class CliSendTmuxTest {
                 t.type("?status " + MAILBOX);
                 t.keys("Enter");
                 status = t.await("the vehicle's status", Duration.ofSeconds(60), CliSendTmuxTest::answered);
-            } while (!status.contains("; vehicle on call") && pause());
+            } while (!status.contains("; vehicle (on call") && pause());
             do {
                 assertThat(System.nanoTime()).as("the glider took Ctrl-C:\n" + t.screen() + log("simulator.log")).isLessThan(end);
                 t.type("key ctrl-c");
