@@ -1,5 +1,6 @@
 package org.ripv.rmi;
 
+import org.ripv.launch.OptionChecks;
 import picocli.CommandLine.Option;
 
 /**
@@ -23,9 +24,8 @@ public final class RmiDeadlineOptions {
      * {@link DeadlineSocketFactory#READ_PROPERTY}); refuses a deadline under 1 ms.
      */
     public void apply() {
-        if (connectMillis < 1 || readMillis < 1) {
-            throw new IllegalArgumentException("RMI timeouts must be at least 1 ms");
-        }
+        OptionChecks.atLeast("--rmi-connect-timeout", connectMillis, 1);
+        OptionChecks.atLeast("--rmi-read-timeout", readMillis, 1);
         System.setProperty(DeadlineSocketFactory.CONNECT_PROPERTY, Integer.toString(connectMillis));
         System.setProperty(DeadlineSocketFactory.READ_PROPERTY, Integer.toString(readMillis));
     }

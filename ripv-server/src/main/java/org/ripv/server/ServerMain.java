@@ -32,6 +32,7 @@ import org.ripv.server.web.PublicVehicles;
 import org.ripv.server.web.WebConsole;
 import org.ripv.service.ServiceOptions;
 import org.ripv.launch.Launchers;
+import org.ripv.launch.OptionChecks;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -135,12 +136,10 @@ public final class ServerMain implements Callable<Integer> {
             }
             try {
                 deadlines.apply();
+                OptionChecks.atLeast("--max-clients", maxClients, 1);
+                OptionChecks.atLeast("--web-pages", webPages, 2);
             } catch (IllegalArgumentException e) {
                 throw new CommandLine.ParameterException(new CommandLine(this), e.getMessage());
-            }
-            if (maxClients < 1) {
-                throw new CommandLine.ParameterException(new CommandLine(this),
-                        "--max-clients must be at least 1, got " + maxClients);
             }
             Path dataDir = data != null ? data : ServiceOptions.defaultDataDir();
             ServerConfig config = ServerConfig.defaults(dataDir)
@@ -151,9 +150,6 @@ public final class ServerMain implements Callable<Integer> {
                     .withBindAddress(bind)
                     .withMaxClients(maxClients)
                     .withClientJar(clientJar != null ? clientJar : defaultClientJar());
-            if (webPages < 2) {
-                throw new CommandLine.ParameterException(new CommandLine(new Serve()), "--web-pages must be at least 2, got " + webPages);
-            }
             config = config.withSecurity(config.security().withPlain(plain).withHttpUpload(httpUpload)
                     .withLoginDeadline(Duration.ofSeconds(loginDeadline)).withWebPages(webPages));
             String fingerprint = null;

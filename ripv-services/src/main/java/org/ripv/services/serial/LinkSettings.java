@@ -6,6 +6,7 @@ import java.util.Objects;
 import java.util.function.Consumer;
 import java.util.regex.Pattern;
 import org.ripv.commands.SingleLineCommand;
+import org.ripv.launch.OptionChecks;
 import org.ripv.services.serial.ymodem.YmodemConfig;
 
 /**
@@ -79,12 +80,8 @@ public record LinkSettings(String device, int baud, int dataBits, Parity parity,
         if (device.isBlank()) {
             throw new IllegalArgumentException("empty device name");
         }
-        if (baud < 50 || baud > 4_000_000) {
-            throw new IllegalArgumentException("baud " + baud + " is outside 50–4000000");
-        }
-        if (dataBits < 5 || dataBits > 8) {
-            throw new IllegalArgumentException("data bits " + dataBits + " is outside 5–8");
-        }
+        OptionChecks.within("baud", baud, 50, 4_000_000);
+        OptionChecks.within("data bits", dataBits, 5, 8);
         Objects.requireNonNull(parity, "parity");
         Objects.requireNonNull(stopBits, "stopBits");
         Objects.requireNonNull(lineEnding, "lineEnding");
@@ -96,10 +93,7 @@ public record LinkSettings(String device, int baud, int dataBits, Parity parity,
         Objects.requireNonNull(sendCommand, "sendCommand");
         Objects.requireNonNull(receiveCommand, "receiveCommand");
         Objects.requireNonNull(ymodem, "ymodem");
-        if (maxCommand < 1 || maxCommand > SingleLineCommand.SERVER_MAX) {
-            throw new IllegalArgumentException("maxcommand " + maxCommand + " is outside 1–" + SingleLineCommand.SERVER_MAX
-                    + " (the server's cap)");
-        }
+        OptionChecks.within("maxcommand", maxCommand, 1, SingleLineCommand.SERVER_MAX); // the server's cap
         Objects.requireNonNull(interrupt, "interrupt");
     }
 
