@@ -3,7 +3,6 @@ package org.ripv.client.charts;
 import java.awt.BorderLayout;
 import java.awt.CardLayout;
 import java.awt.Component;
-import java.awt.FlowLayout;
 import java.awt.Point;
 import java.awt.event.ActionEvent;
 import java.awt.event.ComponentAdapter;
@@ -113,10 +112,7 @@ public final class PlotPanel extends JPanel {
         }
         save.addActionListener(e -> formats.show(save, 0, save.getHeight()));
         svgInChartMenu();
-        JPanel buttons = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 0));
-        buttons.add(reset);
-        buttons.add(save);
-        buttons.add(caption);
+        JPanel buttons = Buttons.row(reset, save, caption);
         JPanel south = new JPanel(new BorderLayout());
         south.add(readout, BorderLayout.NORTH);
         south.add(buttons, BorderLayout.SOUTH);

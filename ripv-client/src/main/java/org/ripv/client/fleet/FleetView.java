@@ -2,7 +2,6 @@ package org.ripv.client.fleet;
 
 import java.awt.BorderLayout;
 import java.awt.Dialog;
-import java.awt.FlowLayout;
 import java.awt.Window;
 import java.awt.event.KeyEvent;
 import java.awt.event.WindowAdapter;
@@ -18,7 +17,6 @@ import java.util.Locale;
 import java.util.concurrent.CompletableFuture;
 import java.util.function.LongSupplier;
 import javax.swing.BorderFactory;
-import javax.swing.JButton;
 import javax.swing.JComponent;
 import javax.swing.JDialog;
 import javax.swing.JFileChooser;
@@ -94,20 +92,13 @@ public final class FleetView {
         table.getColumnModel().getColumn(4).setCellRenderer(degrees);
         table.getColumnModel().getColumn(5).setCellRenderer(degrees);
         status.setName("fleetStatus");
-        JButton refresh = Buttons.button("Refresh", KeyEvent.VK_R, "fleetRefresh",
-                "Ask the database and the server again (also every minute)");
-        refresh.addActionListener(e -> refresh());
-        JButton plot = Buttons.button("Plot track", KeyEvent.VK_P, "fleetPlot",
-                "vis:track VEHICLE in the DataVisServer's tab");
-        plot.addActionListener(e -> plotSelected());
-        JButton csv = Buttons.button("Export CSV", KeyEvent.VK_C, "fleetCsv", "This table as CSV");
-        csv.addActionListener(e -> export(false));
-        JButton json = Buttons.button("Export JSON", KeyEvent.VK_J, "fleetJson", "This table as JSON");
-        json.addActionListener(e -> export(true));
-        JPanel buttons = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 0));
-        for (JButton b : List.of(refresh, plot, csv, json)) {
-            buttons.add(b);
-        }
+        JPanel buttons = Buttons.row(
+                Buttons.button("Refresh", KeyEvent.VK_R, "fleetRefresh",
+                        "Ask the database and the server again (also every minute)", e -> refresh()),
+                Buttons.button("Plot track", KeyEvent.VK_P, "fleetPlot",
+                        "vis:track VEHICLE in the DataVisServer's tab", e -> plotSelected()),
+                Buttons.button("Export CSV", KeyEvent.VK_C, "fleetCsv", "This table as CSV", e -> export(false)),
+                Buttons.button("Export JSON", KeyEvent.VK_J, "fleetJson", "This table as JSON", e -> export(true)));
         JPanel south = new JPanel(new BorderLayout());
         south.add(status, BorderLayout.NORTH);
         south.add(buttons, BorderLayout.SOUTH);

@@ -1,7 +1,6 @@
 package org.ripv.client.panels;
 
 import java.awt.BorderLayout;
-import java.awt.FlowLayout;
 import java.awt.FontMetrics;
 import java.awt.Toolkit;
 import java.awt.datatransfer.StringSelection;
@@ -66,11 +65,7 @@ public final class DatabasePanel extends JPanel {
                 manager.closeTable(service, i);
             }
         });
-        JPanel buttons = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 0));
-        buttons.add(copy);
-        buttons.add(export);
-        buttons.add(json);
-        buttons.add(close);
+        JPanel buttons = Buttons.row(copy, export, json, close);
         add(empty, BorderLayout.NORTH);
         add(tabs, BorderLayout.CENTER);
         add(buttons, BorderLayout.SOUTH);

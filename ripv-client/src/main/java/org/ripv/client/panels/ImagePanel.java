@@ -2,7 +2,6 @@ package org.ripv.client.panels;
 
 import java.awt.BorderLayout;
 import java.awt.Dimension;
-import java.awt.FlowLayout;
 import java.awt.Graphics;
 import java.awt.Graphics2D;
 import java.awt.RenderingHints;
@@ -62,12 +61,7 @@ public final class ImagePanel extends JPanel {
         });
         JButton save = Buttons.button("Save", KeyEvent.VK_A, "saveImageButton",
                 "Save the JPEG on this computer", e -> save());
-        JPanel buttons = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 0));
-        buttons.add(fit);
-        buttons.add(in);
-        buttons.add(out);
-        buttons.add(one);
-        buttons.add(save);
+        JPanel buttons = Buttons.row(fit, in, out, one, save);
         JPanel south = new JPanel(new BorderLayout());
         south.add(caption, BorderLayout.CENTER);
         south.add(buttons, BorderLayout.SOUTH);

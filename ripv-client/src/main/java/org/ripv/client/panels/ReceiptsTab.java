@@ -9,7 +9,6 @@ import java.util.List;
 import javax.swing.BorderFactory;
 import javax.swing.DefaultListCellRenderer;
 import javax.swing.DefaultListModel;
-import javax.swing.JButton;
 import javax.swing.JList;
 import javax.swing.JPanel;
 import javax.swing.JScrollPane;
@@ -58,10 +57,8 @@ final class ReceiptsTab extends JPanel {
         split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, new JScrollPane(receiptList), new JScrollPane(receiptText));
         split.setResizeWeight(0.4);
         split.setBorder(null);
-        JButton refreshButton = Buttons.button("Refresh", KeyEvent.VK_H, "receiptsRefresh",
-                "Ask the server again (?receipts --last N)");
-        refreshButton.addActionListener(e -> refresh.run());
-        JPanel buttons = WorkflowDialog.row("Last:", KeyEvent.VK_T, last, refreshButton);
+        JPanel buttons = WorkflowDialog.row("Last:", KeyEvent.VK_T, last, Buttons.button("Refresh", KeyEvent.VK_H,
+                "receiptsRefresh", "Ask the server again (?receipts --last N)", e -> refresh.run()));
         setBorder(BorderFactory.createEmptyBorder(4, 4, 4, 4));
         add(split, BorderLayout.CENTER);
         add(buttons, BorderLayout.SOUTH);

@@ -2,7 +2,6 @@ package org.ripv.client.panels;
 
 import java.awt.BorderLayout;
 import java.awt.Dimension;
-import java.awt.FlowLayout;
 import java.awt.Font;
 import java.awt.Window;
 import java.awt.event.KeyEvent;
@@ -155,28 +154,15 @@ public final class WorkflowDialog extends JDialog {
         for (int i = 0; i < widths.length; i++) {
             queueTable.getColumnModel().getColumn(i).setPreferredWidth(widths[i]);
         }
-        JButton refresh = Buttons.button("Refresh", KeyEvent.VK_F, "queueRefresh",
-                "Ask the server again (?queue, ?receipts)");
-        refresh.addActionListener(e -> refresh());
-        JButton add = Buttons.button("Add file…", KeyEvent.VK_A, "queueAddFile",
-                "Upload a workflow file from this computer and queue it (?queue add)");
-        add.addActionListener(e -> chooseFile());
-        JButton remove = Buttons.button("Remove", KeyEvent.VK_M, "queueRemove",
-                "Remove the selected workflow (?queue remove)");
-        remove.addActionListener(e -> removeSelected());
-        JButton clear = Buttons.button("Clear", KeyEvent.VK_L, "queueClear",
-                "Remove every workflow of this MailBox (?queue clear)");
-        clear.addActionListener(e -> {
-            if (JOptionPane.showConfirmDialog(this, "Remove every workflow queued for " + handle(mailbox) + "?",
-                    "Clear the queue", JOptionPane.OK_CANCEL_OPTION, JOptionPane.WARNING_MESSAGE) == JOptionPane.OK_OPTION) {
-                manager.clearQueue(mailbox);
-            }
-        });
-        JPanel buttons = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 0));
-        buttons.add(refresh);
-        buttons.add(add);
-        buttons.add(remove);
-        buttons.add(clear);
+        JPanel buttons = Buttons.row(
+                Buttons.button("Refresh", KeyEvent.VK_F, "queueRefresh", "Ask the server again (?queue, ?receipts)",
+                        e -> refresh()),
+                Buttons.button("Add file…", KeyEvent.VK_A, "queueAddFile",
+                        "Upload a workflow file from this computer and queue it (?queue add)", e -> chooseFile()),
+                Buttons.button("Remove", KeyEvent.VK_M, "queueRemove", "Remove the selected workflow (?queue remove)",
+                        e -> removeSelected()),
+                Buttons.button("Clear", KeyEvent.VK_L, "queueClear", "Remove every workflow of this MailBox (?queue clear)",
+                        e -> clearAsked()));
 
         JSplitPane split = new JSplitPane(JSplitPane.VERTICAL_SPLIT, new JScrollPane(queueTable), events);
         split.setResizeWeight(0.6);
@@ -188,16 +174,19 @@ public final class WorkflowDialog extends JDialog {
         return p;
     }
 
+    private void clearAsked() {
+        if (JOptionPane.showConfirmDialog(this, "Remove every workflow queued for " + handle(mailbox) + "?",
+                "Clear the queue", JOptionPane.OK_CANCEL_OPTION, JOptionPane.WARNING_MESSAGE) == JOptionPane.OK_OPTION) {
+            manager.clearQueue(mailbox);
+        }
+    }
+
     /** A row: a label with its mnemonic, the field it names, and a button. */
     static JPanel row(String label, int mnemonic, JComponent field, JButton button) {
         JLabel l = new JLabel(label);
         l.setDisplayedMnemonic(mnemonic);
         l.setLabelFor(field);
-        JPanel row = new JPanel(new FlowLayout(FlowLayout.LEFT, 4, 0));
-        row.add(l);
-        row.add(field);
-        row.add(button);
-        return row;
+        return Buttons.row(l, field, button);
     }
 
     /** Asks the server for the queue and the receipts. */

@@ -5,7 +5,6 @@ import java.awt.Color;
 import java.awt.Font;
 import java.awt.event.KeyEvent;
 import javax.swing.BorderFactory;
-import javax.swing.JButton;
 import javax.swing.JPanel;
 import javax.swing.JScrollPane;
 import javax.swing.JTextArea;
@@ -61,10 +60,8 @@ final class WorkflowEditor extends JPanel {
         edited();
         JScrollPane scroll = new JScrollPane(editor);
         scroll.setRowHeaderView(lineNumbers);
-        JButton button = Buttons.button("Upload and queue", KeyEvent.VK_U, "queueText",
-                "Upload the text as NAME and queue it for this MailBox (?upload, then ?queue add)");
-        button.addActionListener(e -> queue.run());
-        JPanel top = WorkflowDialog.row("Name:", KeyEvent.VK_N, name, button);
+        JPanel top = WorkflowDialog.row("Name:", KeyEvent.VK_N, name, Buttons.button("Upload and queue", KeyEvent.VK_U,
+                "queueText", "Upload the text as NAME and queue it for this MailBox (?upload, then ?queue add)", e -> queue.run()));
         setBorder(BorderFactory.createEmptyBorder(4, 4, 4, 4));
         add(top, BorderLayout.NORTH);
         add(scroll, BorderLayout.CENTER);

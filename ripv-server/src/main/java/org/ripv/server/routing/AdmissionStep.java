@@ -4,7 +4,9 @@ import org.ripv.messages.OutgoingServerMessage;
 
 /**
  * One check a request to a service passes before it is forwarded (as OkHttp's interceptors or
- * Jetty's handlers): each is small, named for what it checks, and testable alone.
+ * Jetty's handlers): each is small, named for what it checks, and testable alone. What a request
+ * has shown so far lives in {@link Admitting}, not in a step, so a step that needs collaborators
+ * is a record of them.
  */
 @FunctionalInterface
 public interface AdmissionStep {

@@ -19,15 +19,7 @@ import org.ripv.server.permit.SecurityRefusal;
  * the service's download prefixes ({@code ingest NAME…}, with the read right on each file's
  * MailBox), or an upload-directory file after one of its attach prefixes ({@code put NAME}).
  */
-final class AttachmentRule implements AdmissionStep {
-    private final FileStore files;
-    private final Supplier<PermitFile> permits;
-
-    AttachmentRule(FileStore files, Supplier<PermitFile> permits) {
-        this.files = files;
-        this.permits = permits;
-    }
-
+record AttachmentRule(FileStore files, Supplier<PermitFile> permits) implements AdmissionStep {
     @Override
     public Verdict check(Admitting a) {
         String sid = a.sid();

@@ -6,13 +6,7 @@ import org.ripv.messages.ErrorCode;
 import org.ripv.server.lock.OperatorLock;
 
 /** Step 6: nobody else holds the MailBox's operator lock ({@code ?lock}). */
-final class LockFree implements AdmissionStep {
-    private final Map<String, OperatorLock> locks;
-
-    LockFree(Map<String, OperatorLock> locks) {
-        this.locks = locks;
-    }
-
+record LockFree(Map<String, OperatorLock> locks) implements AdmissionStep {
     @Override
     public Verdict check(Admitting a) {
         OperatorLock lock = locks.get(a.address().toString());

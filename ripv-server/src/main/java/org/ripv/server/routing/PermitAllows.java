@@ -6,13 +6,7 @@ import org.ripv.messages.Header;
 import org.ripv.server.permit.PermitFile;
 
 /** Step 5: the permit file's rules let this user send this command to this MailBox (docs/permit.md). */
-final class PermitAllows implements AdmissionStep {
-    private final Supplier<PermitFile> permits;
-
-    PermitAllows(Supplier<PermitFile> permits) {
-        this.permits = permits;
-    }
-
+record PermitAllows(Supplier<PermitFile> permits) implements AdmissionStep {
     @Override
     public Verdict check(Admitting a) {
         PermitFile.Decision d = permits.get().decide(a.user(), a.address().service().service(), a.address().handle(), a.body());

@@ -6,13 +6,7 @@ import org.ripv.server.services.ServiceReference;
 import org.ripv.server.services.ServiceRegistry;
 
 /** Step 2: the MailBox's service is registered now. */
-final class ServiceRegistered implements AdmissionStep {
-    private final ServiceRegistry services;
-
-    ServiceRegistered(ServiceRegistry services) {
-        this.services = services;
-    }
-
+record ServiceRegistered(ServiceRegistry services) implements AdmissionStep {
     @Override
     public Verdict check(Admitting a) {
         Optional<ServiceReference> found = services.find(a.address().service().toString());

@@ -6,13 +6,7 @@ import org.ripv.messages.ErrorCode;
 import org.ripv.server.permit.PermitFile;
 
 /** Step 4: the sender is still in the permit file (a user removed since log-in sends nothing more). */
-final class UserKnown implements AdmissionStep {
-    private final Supplier<PermitFile> permits;
-
-    UserKnown(Supplier<PermitFile> permits) {
-        this.permits = permits;
-    }
-
+record UserKnown(Supplier<PermitFile> permits) implements AdmissionStep {
     @Override
     public Verdict check(Admitting a) {
         Optional<PermitFile.User> user = permits.get().user(a.userName());
