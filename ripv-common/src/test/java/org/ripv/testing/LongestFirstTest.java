@@ -58,6 +58,30 @@ class LongestFirstTest {
                 .containsExactly(BrowserLong.class, FreeLong.class, BrowserMid.class, FreeTiny.class, Tiny1.class, Tiny2.class);
     }
 
+    /**
+     * The three browser classes take 170 s one after another: more than FreeLong's 88 s, less than
+     * CpuLong's 190 s. Longest first alone would start FreeLong before every browser class.
+     */
+    @Test
+    void aLocksClassesCountTogetherSoThatTheLongestChainStartsFirst() {
+        LongestFirst chained = new LongestFirst(Map.ofEntries(
+                Map.entry(BrowserLong.class.getName(), 65.0), Map.entry(BrowserMid.class.getName(), 55.0),
+                Map.entry(BrowserShort.class.getName(), 50.0), Map.entry(CpuLong.class.getName(), 190.0),
+                Map.entry(FreeLong.class.getName(), 88.0), Map.entry(FreeTiny.class.getName(), 0.1),
+                Map.entry(Tiny1.class.getName(), 1.0), Map.entry(Tiny2.class.getName(), 1.0), Map.entry(Tiny3.class.getName(), 1.0),
+                Map.entry(Tiny4.class.getName(), 1.0), Map.entry(Tiny5.class.getName(), 1.0), Map.entry(Tiny6.class.getName(), 1.0)));
+        assertThat(order(chained, FreeLong.class, BrowserShort.class, Tiny2.class, FreeTiny.class, BrowserMid.class,
+                Tiny1.class, CpuLong.class, Tiny3.class, BrowserLong.class, Tiny4.class, Tiny5.class, Tiny6.class))
+                .as("CpuLong 190 s, the browser chain 170 s, FreeLong 88 s; the chain's next 105 s must wait for another lock")
+                .containsExactly(CpuLong.class, BrowserLong.class, FreeLong.class, BrowserMid.class, BrowserShort.class,
+                        FreeTiny.class, Tiny1.class, Tiny2.class, Tiny3.class, Tiny4.class, Tiny5.class, Tiny6.class);
+        assertThat(order(chained, FreeLong.class, BrowserMid.class, BrowserLong.class, FreeTiny.class, Tiny1.class,
+                Tiny2.class, Tiny3.class, Tiny4.class, Tiny5.class, Tiny6.class))
+                .as("two browser classes (120 s together) still start before FreeLong; the second (55 s) after it")
+                .containsExactly(BrowserLong.class, FreeLong.class, BrowserMid.class, FreeTiny.class, Tiny1.class,
+                        Tiny2.class, Tiny3.class, Tiny4.class, Tiny5.class, Tiny6.class);
+    }
+
     @Test
     void withoutTimesEveryClassCountsTheSameAndTheOrderIsStable() {
         LongestFirst blind = new LongestFirst(Map.of());

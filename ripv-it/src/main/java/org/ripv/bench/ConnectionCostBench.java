@@ -48,6 +48,10 @@ public final class ConnectionCostBench implements Callable<Integer> {
     int openers;
     @Option(names = "--probes", defaultValue = "50", description = "?services round trips timed with the clients connected (default ${DEFAULT-VALUE}).")
     int probes;
+    @Option(names = "--idle-seconds", defaultValue = "12",
+            description = "Wait after the clients are in, before measuring: longer than a writer's idle time and a log-in"
+                    + " waiter's keep-alive, so that what is measured is idle clients (default ${DEFAULT-VALUE}).")
+    double idleSeconds;
 
     private final PrintStream out;
 
@@ -89,7 +93,7 @@ public final class ConnectionCostBench implements Callable<Integer> {
                 idle.open(clients, openers, sockets, "localhost", port, "bench", "bench-password".toCharArray());
                 double openSeconds = (System.nanoTime() - start) / 1e9;
                 // Longer than a writer's idle time and a log-in waiter's keep-alive: the clients are idle now.
-                Thread.sleep(12_000);
+                Thread.sleep((long) (idleSeconds * 1000));
                 double[] busy = roundTrips(probe, probes);
                 long[] loaded = sample(pid); // before the GC: the heap in use, garbage included
                 gc(pid);

@@ -63,6 +63,13 @@ class DemoGliderDataTest {
 
             String box = "<SerialPortServer>::<localhost>sim01";
             long end = System.nanoTime() + Duration.ofMinutes(4).toNanos();
+            // The receiver's WORKFLOW_DONE is the event: a file read, where asking ?receipts every 2 s started
+            // a client JVM each time for the minute the first call takes (issue 38: CPU the classes beside it need).
+            Path hooks = demo.dir.resolve("logs/webhooks.log");
+            long hooked = end - Duration.ofMinutes(1).toNanos(); // then ?receipts as before, with a minute of its own
+            while (!(Files.exists(hooks) && Files.readString(hooks).contains("WORKFLOW_DONE")) && System.nanoTime() < hooked) {
+                Thread.sleep(200);
+            }
             String receipts = "";
             while (!receipts.contains("result: DONE")) {
                 assertThat(System.nanoTime()).as("the first call ran fetch-slocum-data.wf; last ?receipts:\n" + receipts
@@ -83,7 +90,6 @@ class DemoGliderDataTest {
             assertThat(plot.out()).contains("track-rosie_713.jpg");
 
             // The receiver got the events as JSON POSTs
-            Path hooks = demo.dir.resolve("logs/webhooks.log");
             long until = System.nanoTime() + Duration.ofMinutes(2).toNanos();
             while (!Files.readString(hooks).contains("WORKFLOW_DONE") || !Files.readString(hooks).contains("DIVED")) {
                 assertThat(System.nanoTime()).as("webhooks received:\n" + Files.readString(hooks)).isLessThan(until);
