@@ -25,104 +25,92 @@ import org.ripv.services.serial.zmodem.ZmodemReceiver;
  * @param dropEvery s after which each call drops
  */
 record IridiumCalls(Path dir, int baud, long latency, long dropEvery) {
+    /** What one side does over one call; an IOException is the call dropping. */
+    @FunctionalInterface
+    private interface OverTheCall {
+        void receive(TcpLink link) throws IOException;
+    }
+
+    /** The calls so far: how many, whether the file is whole, bytes each call moved, and the clocks from the first. */
+    private static final class Tally {
+        private final StringBuilder perCall = new StringBuilder();
+        private final double load = ZmodemBench.load();
+        private final long cpu = ZmodemBench.cpuNanos();
+        private final long start = System.nanoTime();
+        private int calls;
+        private boolean done;
+
+        boolean another(int maxCalls) {
+            return !done && calls < maxCalls;
+        }
+
+        void called(boolean whole, long moved) {
+            calls++;
+            done = whole;
+            perCall.append(perCall.isEmpty() ? "" : ", ").append(moved);
+        }
+
+        /** calls, done, bytes per call, wall s, CPU s and load: the columns both rows end with. */
+        Object[] columns(String callsNote) {
+            return new Object[] {calls + callsNote, done ? "yes" : "no", perCall, (System.nanoTime() - start) / 1e9,
+                    (ZmodemBench.cpuNanos() - cpu) / 1e9, load};
+        }
+    }
+
     /** Calls until the file is whole: each call a fresh sz, our receiver continuing from the part. */
     String zmodem(Path file, int maxCalls) throws Exception {
         Path out = Files.createDirectories(dir.resolve("iridium-z"));
         ResumeStore store = new ResumeStore(dir.resolve("parts-iridium"));
         String name = file.getFileName().toString();
-        Calls c = call(file, maxCalls, ZmodemBench.SZ + name, new Receiver() {
-            long before;
-
-            @Override
-            public void begin() throws IOException {
-                before = Math.max(0, store.partLength(name));
-            }
-
-            @Override
-            public void receive(TcpLink link) throws IOException {
-                new ZmodemReceiver(link, 10_000, null).startTimeout(30_000).receive(store, out);
-            }
-
-            @Override
-            public long moved(boolean whole) throws IOException {
-                return (whole ? Files.size(file) : Math.max(0, store.partLength(name))) - before;
-            }
-        }, out);
-        return String.format(Locale.ROOT, "| ZMODEM, resuming | %d | %s | %s | %.0f | %.2f | %.2f |", c.calls(),
-                c.done() ? "yes" : "no", c.perCall(), c.seconds(), c.cpuSeconds(), c.load());
+        Tally tally = new Tally();
+        while (tally.another(maxCalls)) {
+            long before = Math.max(0, store.partLength(name));
+            // a dropped call leaves its part for the next one
+            boolean done = call(file, ZmodemBench.SZ + name, out,
+                    link -> new ZmodemReceiver(link, 10_000, null).startTimeout(30_000).receive(store, out));
+            long after = done ? Files.size(file) : Math.max(0, store.partLength(name));
+            tally.called(done, after - before);
+        }
+        return String.format(Locale.ROOT, "| ZMODEM, resuming | %s | %s | %s | %.0f | %.2f | %.2f |", tally.columns(""));
     }
 
     /** YMODEM over the same calls: a cut file starts again from zero on the next. */
     String ymodem(Path file, int maxCalls) throws Exception {
         Path out = Files.createDirectories(dir.resolve("iridium-y"));
         YmodemConfig config = YmodemConfig.lrzsz();
-        AtomicLong moved = new AtomicLong();
-        Calls c = call(file, maxCalls, "sb --ymodem -k -q " + file.getFileName(), new Receiver() {
-            @Override
-            public void begin() {
-                moved.set(0);
-            }
-
-            @Override
-            public void receive(TcpLink link) throws IOException {
-                new YmodemReceiver(link, config, new TransferListener() {
-                    @Override
-                    public void progress(FileHeader f, long d) {
-                        moved.set(d);
-                    }
-                }).receiveBatch(new DirectorySink(out));
-            }
-
-            @Override
-            public long moved(boolean whole) throws IOException {
-                return whole ? Files.size(file) : moved.get(); // dropped: YMODEM has nothing to resume from
-            }
-        }, out);
-        return String.format(Locale.ROOT, "| YMODEM, from zero each call | %d%s | %s | %s (kept: 0) | %.0f | %.2f | %.2f |",
-                c.calls(), c.done() ? "" : " (stopped)", c.done() ? "yes" : "no", c.perCall(), c.seconds(),
-                c.cpuSeconds(), c.load());
-    }
-
-    /** Our side of one call: receives what the sender sends until the file is whole or the call drops. */
-    private interface Receiver {
-        /** Before each call is dialled. */
-        void begin() throws IOException;
-
-        void receive(TcpLink link) throws IOException;
-
-        /** Bytes this call added to what we hold of the file. */
-        long moved(boolean whole) throws IOException;
-    }
-
-    /** How the calls went: how many, whether the file arrived, the bytes of each call, and their cost. */
-    private record Calls(int calls, boolean done, String perCall, double seconds, double cpuSeconds, double load) {}
-
-    /** Calls until the file is whole or {@code maxCalls} are made, each a fresh {@code sender} behind the relay. */
-    private Calls call(Path file, int maxCalls, String sender, Receiver receiver, Path out) throws Exception {
-        StringBuilder perCall = new StringBuilder();
-        double load = ZmodemBench.load();
-        long cpu = ZmodemBench.cpuNanos();
-        long start = System.nanoTime();
-        int calls = 0;
-        boolean done = false;
-        while (!done && calls < maxCalls) {
-            calls++;
-            receiver.begin();
-            int port = Socat.freePort();
-            Process p = Socat.listen(file.getParent(), port, sender);
-            try (IridiumRelay relay = new IridiumRelay(baud, latency, dropEvery * 1000, Socat.local(port));
-                 TcpLink link = TcpLink.connect("tcp://127.0.0.1:" + relay.port(), 5000)) {
-                receiver.receive(link);
-                done = Socat.sameBytes(file, out.resolve(file.getFileName()));
-            } catch (IOException e) {
-                // the call dropped: the next one goes on (ZMODEM) or starts again (YMODEM)
-            } finally {
-                p.destroy();
-                p.waitFor(10, TimeUnit.SECONDS);
-            }
-            perCall.append(perCall.isEmpty() ? "" : ", ").append(receiver.moved(done));
+        Tally tally = new Tally();
+        while (tally.another(maxCalls)) {
+            AtomicLong moved = new AtomicLong(); // a dropped call leaves nothing to resume from
+            boolean done = call(file, "sb --ymodem -k -q " + file.getFileName(), out,
+                    link -> new YmodemReceiver(link, config, new TransferListener() {
+                        @Override
+                        public void progress(FileHeader f, long d) {
+                            moved.set(d);
+                        }
+                    }).receiveBatch(new DirectorySink(out)));
+            tally.called(done, done ? Files.size(file) : moved.get());
         }
-        return new Calls(calls, done, perCall.toString(), (System.nanoTime() - start) / 1e9,
-                (ZmodemBench.cpuNanos() - cpu) / 1e9, load);
+        boolean stopped = !tally.done;
+        return String.format(Locale.ROOT, "| YMODEM, from zero each call | %s | %s | %s (kept: 0) | %.0f | %.2f | %.2f |",
+                tally.columns(stopped ? " (stopped)" : ""));
+    }
+
+    /**
+     * One call: {@code sender} behind socat, the relay between, our receiver over it. True when the
+     * file arrived whole; false when the call dropped first.
+     */
+    private boolean call(Path file, String sender, Path out, OverTheCall receiver) throws Exception {
+        int port = Socat.freePort();
+        Process p = Socat.listen(file.getParent(), port, sender);
+        try (IridiumRelay relay = new IridiumRelay(baud, latency, dropEvery * 1000, Socat.local(port));
+             TcpLink link = TcpLink.connect("tcp://127.0.0.1:" + relay.port(), 5000)) {
+            receiver.receive(link);
+            return Socat.sameBytes(file, out.resolve(file.getFileName()));
+        } catch (IOException e) {
+            return false;
+        } finally {
+            p.destroy();
+            p.waitFor(10, TimeUnit.SECONDS);
+        }
     }
 }
