@@ -136,34 +136,15 @@ public final class SerializedMessages {
         if (!ON || body.length < HEAD.length + 2 || !Arrays.equals(body, 0, HEAD.length, HEAD, 0, HEAD.length)) {
             return null;
         }
-        // The data blocks, gathered: never more than the body holds.
-        byte[] content = new byte[body.length - HEAD.length];
-        int size = 0;
-        int at = HEAD.length;
-        while (true) {
-            if (at >= body.length) {
-                return null;
-            }
-            byte tag = body[at++];
-            int len;
-            if (tag == TC_ENDBLOCKDATA) {
-                break;
-            } else if (tag == TC_BLOCKDATA && at < body.length) {
-                len = body[at++] & 0xff;
-            } else if (tag == TC_BLOCKDATALONG && at + 4 <= body.length) {
-                len = getInt(body, at);
-                at += 4;
-            } else {
-                return null;
-            }
-            if (len < 0 || len > body.length - at) {
-                return null;
-            }
-            System.arraycopy(body, at, content, size, len);
-            size += len;
-            at += len;
+        // The data blocks' size first, without copying: a frame of another shape (a page of a
+        // query, most of a megabyte, carries a result) is left to the stream having cost nothing.
+        int size = blocks(body, null);
+        if (size < 0) {
+            return null;
         }
-        if (at != body.length || size < 6) {
+        byte[] content = new byte[size];
+        blocks(body, content);
+        if (size < 6) {
             return null;
         }
         int n = getInt(content, 1);
@@ -174,6 +155,40 @@ public final class SerializedMessages {
             return null;
         }
         return new PackedMessage(content[0], Arrays.copyOfRange(content, 5, 5 + n), null, null).resolve();
+    }
+
+    /**
+     * The size of the data blocks after {@link #HEAD} when they end exactly at the body's end, else
+     * -1; copies them, gathered, into {@code into} when it is given.
+     */
+    private static int blocks(byte[] body, byte[] into) {
+        int size = 0;
+        int at = HEAD.length;
+        while (true) {
+            if (at >= body.length) {
+                return -1;
+            }
+            byte tag = body[at++];
+            int len;
+            if (tag == TC_ENDBLOCKDATA) {
+                return at == body.length ? size : -1;
+            } else if (tag == TC_BLOCKDATA && at < body.length) {
+                len = body[at++] & 0xff;
+            } else if (tag == TC_BLOCKDATALONG && at + 4 <= body.length) {
+                len = getInt(body, at);
+                at += 4;
+            } else {
+                return -1;
+            }
+            if (len < 0 || len > body.length - at) {
+                return -1;
+            }
+            if (into != null) {
+                System.arraycopy(body, at, into, size, len);
+            }
+            size += len;
+            at += len;
+        }
     }
 
     private static ObjectInputFilter.Status judged(ObjectInputFilter filter, Class<?> c, long arrayLength, long depth,

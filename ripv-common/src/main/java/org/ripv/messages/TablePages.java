@@ -2,7 +2,10 @@ package org.ripv.messages;
 
 import java.util.AbstractList;
 import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Iterator;
 import java.util.List;
+import java.util.Objects;
 import java.util.RandomAccess;
 
 /**
@@ -21,7 +24,14 @@ public final class TablePages {
     public static final int DEFAULT_MAX_ROWS = 5_000_000;
 
     private final int maxRows;
-    private List<String[]> rows = new ArrayList<>();
+    /**
+     * The pages' rows as they came, in order. A page of {@link PackedRows} stays packed until a row
+     * of it is read: a reader joining a 100,000-row query holds its 5.6 MiB of bytes, not 500,000
+     * Strings, while the rest arrives, and builds the Strings once, when someone reads the rows
+     * (docs/performance.md, "The database").
+     */
+    private List<List<String[]>> pages = new ArrayList<>();
+    private int rows;
     private boolean cut;
     /** The pages' common width, -1 before the first, -2 once two differed. */
     private int width = -1;
@@ -46,19 +56,28 @@ public final class TablePages {
 
     /** How many rows the pages so far held. */
     public synchronized int rows() {
-        return rows.size();
+        return rows;
     }
 
     /** The whole table: the pages' rows, then {@code last}'s, with {@code last}'s columns and truncation. */
     public synchronized TableResult join(TableResult last) {
-        if (rows.isEmpty()) {
+        if (pages.isEmpty()) {
             return last;
         }
         take(last);
         // Each page's rows were checked against its columns when it was built: when every page had
-        // as many columns as the last, the joined rows need no second look (nor a second copy).
-        List<String[]> all = width == last.columns().size() ? new CheckedRows(rows, width) : rows;
-        rows = new ArrayList<>(); // handed over: nothing here changes them any more
+        // as many columns as the last, the joined rows need no second look (nor a copy, nor a decoding).
+        List<String[]> all;
+        if (width == last.columns().size()) {
+            all = new CheckedRows(pages, rows, width);
+        } else {
+            all = new ArrayList<>(rows);
+            for (List<String[]> page : pages) {
+                all.addAll(page);
+            }
+        }
+        pages = new ArrayList<>(); // handed over: nothing here changes them any more
+        rows = 0;
         return new TableResult(last.query(), last.columns(), last.types(), all, last.truncated() || cut);
     }
 
@@ -70,22 +89,38 @@ public final class TablePages {
     private void take(TableResult page) {
         int w = page.columns().size();
         width = width == -1 || width == w ? w : -2;
-        for (String[] row : page.rows()) {
-            if (rows.size() == maxRows) {
-                cut = true;
-                return;
-            }
-            rows.add(row);
+        List<String[]> r = page.rows();
+        int room = maxRows - rows;
+        if (r.size() > room) {
+            cut = true;
+            r = r.subList(0, room);
+        }
+        if (!r.isEmpty()) {
+            pages.add(r);
+            rows += r.size();
         }
     }
 
-    /** Rows of one width, each checked by the TableResult it came in; read-only. */
+    /**
+     * Rows of one width, each checked by the TableResult it came in, read through the pages they
+     * came in (a packed page decodes on its first read); read-only.
+     */
     static final class CheckedRows extends AbstractList<String[]> implements RandomAccess {
-        private final List<String[]> rows;
+        private final List<List<String[]>> pages;
+        /** The index of each page's first row. */
+        private final int[] starts;
+        private final int size;
         private final int width;
 
-        private CheckedRows(List<String[]> rows, int width) {
-            this.rows = rows;
+        private CheckedRows(List<List<String[]>> pages, int size, int width) {
+            this.pages = List.copyOf(pages);
+            this.starts = new int[this.pages.size()];
+            int at = 0;
+            for (int i = 0; i < starts.length; i++) {
+                starts[i] = at;
+                at += this.pages.get(i).size();
+            }
+            this.size = size;
             this.width = width;
         }
 
@@ -95,12 +130,44 @@ public final class TablePages {
 
         @Override
         public String[] get(int index) {
-            return rows.get(index);
+            Objects.checkIndex(index, size);
+            int page = Arrays.binarySearch(starts, index);
+            if (page < 0) {
+                page = -page - 2; // the page that starts before it
+            }
+            return pages.get(page).get(index - starts[page]);
         }
 
         @Override
         public int size() {
-            return rows.size();
+            return size;
+        }
+
+        @Override
+        public Iterator<String[]> iterator() {
+            return new Iterator<>() {
+                private int page;
+                private int row;
+
+                @Override
+                public boolean hasNext() {
+                    return page < pages.size();
+                }
+
+                @Override
+                public String[] next() {
+                    if (!hasNext()) {
+                        throw new java.util.NoSuchElementException();
+                    }
+                    List<String[]> p = pages.get(page);
+                    String[] r = p.get(row++);
+                    if (row == p.size()) {
+                        page++;
+                        row = 0;
+                    }
+                    return r;
+                }
+            };
         }
     }
 }

@@ -12,8 +12,9 @@ import java.util.List;
 import java.util.concurrent.atomic.AtomicBoolean;
 import org.ripv.failover.ServerList;
 import org.ripv.naming.Handles;
-import org.ripv.rmi.DeadlineSocketFactory;
+import org.ripv.rmi.RmiDeadlineOptions;
 import org.ripv.rmi.RmiSupport;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /**
@@ -60,13 +61,8 @@ public final class ServiceLaunchOptions {
                     + ServiceOptions.DEFAULT_OUTBOUND_PORT + "); the server's calls come back over that connection. Nothing listens here.")
     int outboundPort;
 
-    @Option(names = "--rmi-connect-timeout", defaultValue = "3000", paramLabel = "MS",
-            description = "How long a call to the server may take to connect (default ${DEFAULT-VALUE} ms).")
-    int rmiConnectTimeout;
-
-    @Option(names = "--rmi-read-timeout", defaultValue = "15000", paramLabel = "MS",
-            description = "How long a call to the server may wait for its answer (default ${DEFAULT-VALUE} ms).")
-    int rmiReadTimeout;
+    @Mixin
+    RmiDeadlineOptions deadlines = new RmiDeadlineOptions();
 
     /** Applies {@code --host} to RMI and naming; call before creating the service. */
     public String hostName() {
@@ -175,11 +171,7 @@ public final class ServiceLaunchOptions {
         if (outboundPort == 0 || outboundPort > 65535 || outboundPort < -1) {
             throw new IllegalArgumentException("--outbound-only takes the server's outbound port, 1 to 65535, not " + outboundPort);
         }
-        if (rmiConnectTimeout < 1 || rmiReadTimeout < 1) {
-            throw new IllegalArgumentException("RMI timeouts must be at least 1 ms");
-        }
-        System.setProperty(DeadlineSocketFactory.CONNECT_PROPERTY, Integer.toString(rmiConnectTimeout));
-        System.setProperty(DeadlineSocketFactory.READ_PROPERTY, Integer.toString(rmiReadTimeout));
+        deadlines.apply();
         return new ServiceOptions(servers.first().host(), servers.first().port(), ServiceOptions.resolveSecret(secretFile),
                 exportPort, Duration.ofSeconds(3), outboundPort).withServers(servers).givingUpAfter(retryForever ? 0 : TRIES);
     }

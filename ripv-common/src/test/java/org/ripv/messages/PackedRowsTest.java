@@ -158,6 +158,21 @@ class PackedRowsTest {
                 .hasMessageContaining("every row needs 2 values");
     }
 
+    @Test
+    void joinedPagesStayPackedUntilARowOfThemIsRead() throws Exception {
+        TablePages pages = new TablePages();
+        TableResult first = new TableResult("q", List.of("N"), List.of("INTEGER"),
+                pack(List.<String[]>of(new String[] {"1"}, new String[] {"2"}), 1), false);
+        pages.add(first);
+        TableResult all = pages.join(new TableResult("q", List.of("N"), List.of("INTEGER"),
+                pack(List.<String[]>of(new String[] {"3"}), 1), false));
+        assertThat(decoded(first)).as("a reader holds a page's bytes, not its Strings, until it reads a row").isNull();
+        assertThat(all.rows().get(2)).containsExactly("3");
+        assertThat(decoded(first)).as("a row of another page leaves this one packed").isNull();
+        assertThat(all.rows()).extracting(r -> r[0]).containsExactly("1", "2", "3");
+        assertThat(decoded(first)).isNotNull();
+    }
+
     private static Object decoded(TableResult t) throws Exception {
         Field f = PackedRows.class.getDeclaredField("decoded");
         f.setAccessible(true);

@@ -41,6 +41,9 @@ class TablePagesTest {
         p.add(rows(200, 400, false));
         TableResult all = p.join(rows(400, 450, false));
         assertThat(all.rows()).hasSize(250);
+        assertThat(all.rows().get(249)[0]).isEqualTo("249");
+        assertThat(all.rows()).extracting(r -> r[0]).containsExactlyElementsOf(
+                java.util.stream.IntStream.range(0, 250).mapToObj(Integer::toString).toList());
         assertThat(all.truncated()).isTrue();
     }
 

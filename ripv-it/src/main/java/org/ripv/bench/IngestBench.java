@@ -40,6 +40,7 @@ import org.ripv.messages.Status;
 import org.ripv.server.RIPVServer;
 import org.ripv.service.ServiceConnector;
 import org.ripv.service.ServiceOptions;
+import org.ripv.services.bench.SyntheticDba;
 import org.ripv.services.database.DatabaseServer;
 import org.ripv.services.database.DatabaseTarget;
 import org.ripv.services.database.EmbeddedDatabase;

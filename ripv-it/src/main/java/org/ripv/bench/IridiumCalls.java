@@ -25,72 +25,92 @@ import org.ripv.services.serial.zmodem.ZmodemReceiver;
  * @param dropEvery s after which each call drops
  */
 record IridiumCalls(Path dir, int baud, long latency, long dropEvery) {
+    /** What one side does over one call; an IOException is the call dropping. */
+    @FunctionalInterface
+    private interface OverTheCall {
+        void receive(TcpLink link) throws IOException;
+    }
+
+    /** The calls so far: how many, whether the file is whole, bytes each call moved, and the clocks from the first. */
+    private static final class Tally {
+        private final StringBuilder perCall = new StringBuilder();
+        private final double load = ZmodemBench.load();
+        private final long cpu = ZmodemBench.cpuNanos();
+        private final long start = System.nanoTime();
+        private int calls;
+        private boolean done;
+
+        boolean another(int maxCalls) {
+            return !done && calls < maxCalls;
+        }
+
+        void called(boolean whole, long moved) {
+            calls++;
+            done = whole;
+            perCall.append(perCall.isEmpty() ? "" : ", ").append(moved);
+        }
+
+        /** calls, done, bytes per call, wall s, CPU s and load: the columns both rows end with. */
+        Object[] columns(String callsNote) {
+            return new Object[] {calls + callsNote, done ? "yes" : "no", perCall, (System.nanoTime() - start) / 1e9,
+                    (ZmodemBench.cpuNanos() - cpu) / 1e9, load};
+        }
+    }
+
     /** Calls until the file is whole: each call a fresh sz, our receiver continuing from the part. */
     String zmodem(Path file, int maxCalls) throws Exception {
         Path out = Files.createDirectories(dir.resolve("iridium-z"));
         ResumeStore store = new ResumeStore(dir.resolve("parts-iridium"));
-        StringBuilder perCall = new StringBuilder();
-        double load = ZmodemBench.load();
-        long cpu = ZmodemBench.cpuNanos();
-        long start = System.nanoTime();
-        int calls = 0;
-        boolean done = false;
-        while (!done && calls < maxCalls) {
-            calls++;
-            long before = Math.max(0, store.partLength(file.getFileName().toString()));
-            int port = Socat.freePort();
-            Process sz = Socat.listen(file.getParent(), port, ZmodemBench.SZ + file.getFileName());
-            try (IridiumRelay relay = new IridiumRelay(baud, latency, dropEvery * 1000, Socat.local(port));
-                 TcpLink link = TcpLink.connect("tcp://127.0.0.1:" + relay.port(), 5000)) {
-                new ZmodemReceiver(link, 10_000, null).startTimeout(30_000).receive(store, out);
-                done = Socat.sameBytes(file, out.resolve(file.getFileName()));
-            } catch (IOException e) {
-                // the call dropped: the part waits for the next one
-            } finally {
-                sz.destroy();
-                sz.waitFor(10, TimeUnit.SECONDS);
-            }
-            long after = done ? Files.size(file) : Math.max(0, store.partLength(file.getFileName().toString()));
-            perCall.append(perCall.isEmpty() ? "" : ", ").append(after - before);
+        String name = file.getFileName().toString();
+        Tally tally = new Tally();
+        while (tally.another(maxCalls)) {
+            long before = Math.max(0, store.partLength(name));
+            // a dropped call leaves its part for the next one
+            boolean done = call(file, ZmodemBench.SZ + name, out,
+                    link -> new ZmodemReceiver(link, 10_000, null).startTimeout(30_000).receive(store, out));
+            long after = done ? Files.size(file) : Math.max(0, store.partLength(name));
+            tally.called(done, after - before);
         }
-        return String.format(Locale.ROOT, "| ZMODEM, resuming | %d | %s | %s | %.0f | %.2f | %.2f |", calls,
-                done ? "yes" : "no", perCall, (System.nanoTime() - start) / 1e9, (ZmodemBench.cpuNanos() - cpu) / 1e9, load);
+        return String.format(Locale.ROOT, "| ZMODEM, resuming | %s | %s | %s | %.0f | %.2f | %.2f |", tally.columns(""));
     }
 
     /** YMODEM over the same calls: a cut file starts again from zero on the next. */
     String ymodem(Path file, int maxCalls) throws Exception {
         Path out = Files.createDirectories(dir.resolve("iridium-y"));
-        StringBuilder perCall = new StringBuilder();
-        double load = ZmodemBench.load();
-        long cpu = ZmodemBench.cpuNanos();
-        long start = System.nanoTime();
-        int calls = 0;
-        boolean done = false;
         YmodemConfig config = YmodemConfig.lrzsz();
-        while (!done && calls < maxCalls) {
-            calls++;
-            AtomicLong moved = new AtomicLong();
-            int port = Socat.freePort();
-            Process sb = Socat.listen(file.getParent(), port, "sb --ymodem -k -q " + file.getFileName());
-            try (IridiumRelay relay = new IridiumRelay(baud, latency, dropEvery * 1000, Socat.local(port));
-                 TcpLink link = TcpLink.connect("tcp://127.0.0.1:" + relay.port(), 5000)) {
-                new YmodemReceiver(link, config, new TransferListener() {
-                    @Override
-                    public void progress(FileHeader f, long d) {
-                        moved.set(d);
-                    }
-                }).receiveBatch(new DirectorySink(out));
-                done = Socat.sameBytes(file, out.resolve(file.getFileName()));
-            } catch (IOException e) {
-                // dropped: YMODEM has nothing to resume from
-            } finally {
-                sb.destroy();
-                sb.waitFor(10, TimeUnit.SECONDS);
-            }
-            perCall.append(perCall.isEmpty() ? "" : ", ").append(done ? Files.size(file) : moved.get());
+        Tally tally = new Tally();
+        while (tally.another(maxCalls)) {
+            AtomicLong moved = new AtomicLong(); // a dropped call leaves nothing to resume from
+            boolean done = call(file, "sb --ymodem -k -q " + file.getFileName(), out,
+                    link -> new YmodemReceiver(link, config, new TransferListener() {
+                        @Override
+                        public void progress(FileHeader f, long d) {
+                            moved.set(d);
+                        }
+                    }).receiveBatch(new DirectorySink(out)));
+            tally.called(done, done ? Files.size(file) : moved.get());
         }
-        return String.format(Locale.ROOT, "| YMODEM, from zero each call | %d%s | %s | %s (kept: 0) | %.0f | %.2f | %.2f |",
-                calls, done ? "" : " (stopped)", done ? "yes" : "no", perCall, (System.nanoTime() - start) / 1e9,
-                (ZmodemBench.cpuNanos() - cpu) / 1e9, load);
+        boolean stopped = !tally.done;
+        return String.format(Locale.ROOT, "| YMODEM, from zero each call | %s | %s | %s (kept: 0) | %.0f | %.2f | %.2f |",
+                tally.columns(stopped ? " (stopped)" : ""));
+    }
+
+    /**
+     * One call: {@code sender} behind socat, the relay between, our receiver over it. True when the
+     * file arrived whole; false when the call dropped first.
+     */
+    private boolean call(Path file, String sender, Path out, OverTheCall receiver) throws Exception {
+        int port = Socat.freePort();
+        Process p = Socat.listen(file.getParent(), port, sender);
+        try (IridiumRelay relay = new IridiumRelay(baud, latency, dropEvery * 1000, Socat.local(port));
+             TcpLink link = TcpLink.connect("tcp://127.0.0.1:" + relay.port(), 5000)) {
+            receiver.receive(link);
+            return Socat.sameBytes(file, out.resolve(file.getFileName()));
+        } catch (IOException e) {
+            return false;
+        } finally {
+            p.destroy();
+            p.waitFor(10, TimeUnit.SECONDS);
+        }
     }
 }

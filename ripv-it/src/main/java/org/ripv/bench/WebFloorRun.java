@@ -21,7 +21,7 @@ import java.util.concurrent.TimeUnit;
  */
 final class WebFloorRun implements AutoCloseable {
     /** One phase: the delays at the floor's sockets and its process's CPU per delivery. */
-    record Result(ConsoleBench.Figures f, double cpuMicros) {}
+    record Result(ConsoleBench.Figures f, double cpuMicros, ThreadCpu.Split split) {}
 
     private final Process floor;
     private final BufferedReader said;
@@ -29,6 +29,10 @@ final class WebFloorRun implements AutoCloseable {
     private final WebWatchers readers;
     private final WebWatchers.Page page;
     private final List<ConsoleBench.Watch> ws = new ArrayList<>();
+    /** Seconds of lines sent at each socket count by {@link #warm}. */
+    private final java.util.Map<Integer, Integer> warmed = new java.util.HashMap<>();
+    /** The floor's threads when the phase being measured began recording. */
+    private ThreadCpu.Snapshot threads;
     private final int rate;
     private final int warmup;
     private final int seconds;
@@ -71,6 +75,15 @@ final class WebFloorRun implements AutoCloseable {
         grow(sockets);
         send((long) secs * rate, -1);
         Thread.sleep(1000);
+        warmed.merge(sockets, secs, Integer::sum);
+    }
+
+    /**
+     * Seconds of lines the floor will have sent at {@code sockets} before its measured seconds
+     * there: its warm-up, then its phase's own. The server's phase of that size is warmed as long.
+     */
+    int warmSeconds(int sockets) {
+        return warmed.getOrDefault(sockets, 0) + warmup;
     }
 
     /** Grows the floor to {@code sockets} sockets and measures one phase at the bench's rate. */
@@ -81,8 +94,9 @@ final class WebFloorRun implements AutoCloseable {
         Thread.sleep(1000); // let the last lines arrive, as the server's phase does
         ws.forEach(w -> w.recording = false);
         cpu = WebBench.processCpuNanos(floor.pid()) - cpu;
+        ThreadCpu.Split split = ThreadCpu.between(threads, ThreadCpu.snapshot(floor.pid()));
         ConsoleBench.Figures f = ConsoleBench.figures(ws);
-        return new Result(f, cpu / 1000.0 / Math.max(1, f.samples()));
+        return new Result(f, cpu / 1000.0 / Math.max(1, f.samples()), split);
     }
 
     private void grow(int sockets) throws Exception {
@@ -102,6 +116,7 @@ final class WebFloorRun implements AutoCloseable {
         for (long i = 0; i < total; i++) {
             if (i == recordFrom) {
                 ws.forEach(w -> w.recording = true);
+                threads = ThreadCpu.snapshot(floor.pid());
                 cpu = WebBench.processCpuNanos(floor.pid());
             }
             long wait = start + i * period - System.nanoTime();

@@ -2,14 +2,11 @@ package org.ripv.it;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import java.io.ByteArrayInputStream;
 import java.io.ByteArrayOutputStream;
-import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.AfterAll;
@@ -19,7 +16,6 @@ import org.junit.jupiter.api.Order;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestMethodOrder;
 import org.junit.jupiter.api.io.TempDir;
-import org.ripv.client.cli.CliCommand;
 import org.ripv.services.database.DatabaseServer;
 import org.ripv.services.database.EmbeddedDatabase;
 import org.ripv.services.database.QueryLimits;
@@ -27,7 +23,6 @@ import org.ripv.services.datavis.DataVisServer;
 import org.ripv.services.serial.LinkSettings;
 import org.ripv.services.serial.SerialPortServer;
 import org.ripv.services.simulator.GliderSimulator;
-import picocli.CommandLine;
 
 /**
  * Issue 13's loop through the real server and the CLI: the glider simulator serves the shared
@@ -90,17 +85,7 @@ class DataLoopEndToEndTest {
     }
 
     int cli(String... lines) {
-        out.reset();
-        err.reset();
-        List<String> all = new ArrayList<>(List.of("--server", "localhost:" + sys.server().port(), "--user", "alice",
-                "--password", TestSystem.PASSWORD, "--timeout", "120"));
-        for (String l : lines) {
-            all.add("--exec");
-            all.add(l);
-        }
-        CliCommand cmd = new CliCommand(new ByteArrayInputStream(new byte[0]),
-                new PrintStream(out, true, StandardCharsets.UTF_8), new PrintStream(err, true, StandardCharsets.UTF_8));
-        return new CommandLine(cmd).execute(all.toArray(String[]::new));
+        return InJvmCli.exec(out, err, InJvmCli.as("alice", "localhost:" + sys.server().port(), "--timeout", "120"), lines);
     }
 
     String out() {

@@ -4,16 +4,12 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.awt.image.BufferedImage;
-import java.io.ByteArrayInputStream;
 import java.io.ByteArrayOutputStream;
 import java.io.File;
-import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
-import java.util.ArrayList;
-import java.util.List;
 import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -27,7 +23,6 @@ import org.ripv.messages.Priority;
 import org.ripv.messages.Status;
 import org.ripv.services.datavis.DataVisServer;
 import org.ripv.services.datavis.WorkerMode;
-import picocli.CommandLine;
 
 /**
  * The DataVisServer through the whole system (issue 5, "done when"): the CLI puts the shipped
@@ -52,15 +47,7 @@ class DataVisEndToEndTest {
     private static Cli cli(TestSystem sys, String... lines) {
         ByteArrayOutputStream out = new ByteArrayOutputStream();
         ByteArrayOutputStream err = new ByteArrayOutputStream();
-        List<String> args = new ArrayList<>(List.of("--server", "localhost:" + sys.server().port(), "--user", "alice",
-                "--password", TestSystem.PASSWORD, "--timeout", "120"));
-        for (String l : lines) {
-            args.add("--exec");
-            args.add(l);
-        }
-        int exit = new CommandLine(new CliCommand(new ByteArrayInputStream(new byte[0]),
-                new PrintStream(out, true, StandardCharsets.UTF_8), new PrintStream(err, true, StandardCharsets.UTF_8)))
-                .execute(args.toArray(String[]::new));
+        int exit = InJvmCli.exec(out, err, InJvmCli.as("alice", "localhost:" + sys.server().port(), "--timeout", "120"), lines);
         return new Cli(exit, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8));
     }
 

@@ -2,18 +2,14 @@ package org.ripv.it;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import java.io.ByteArrayInputStream;
 import java.io.ByteArrayOutputStream;
-import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
-import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.ripv.client.cli.CliCommand;
 import org.ripv.server.files.FileStore;
 import org.ripv.service.ServiceConnector;
 import org.ripv.service.ServiceOptions;
@@ -23,7 +19,6 @@ import org.ripv.services.database.QueryLimits;
 import org.ripv.services.serial.LinkSettings;
 import org.ripv.services.serial.SerialPortServer;
 import org.ripv.services.simulator.GliderSimulator;
-import picocli.CommandLine;
 
 /**
  * Issue 34: a file a vehicle's call fetched goes on to the DatabaseServer from the SerialPortServer
@@ -117,15 +112,7 @@ class IngestWithoutReadBackTest {
     }
 
     int cli(TestSystem sys, String... lines) {
-        out.reset();
-        List<String> all = new ArrayList<>(List.of("--server", "localhost:" + sys.server().port(), "--user", "alice",
-                "--password", TestSystem.PASSWORD, "--timeout", "120"));
-        for (String l : lines) {
-            all.add("--exec");
-            all.add(l);
-        }
-        PrintStream p = new PrintStream(out, true, StandardCharsets.UTF_8);
-        return new CommandLine(new CliCommand(new ByteArrayInputStream(new byte[0]), p, p)).execute(all.toArray(String[]::new));
+        return InJvmCli.exec(out, out, InJvmCli.as("alice", "localhost:" + sys.server().port(), "--timeout", "120"), lines);
     }
 
     String out() {

@@ -2,20 +2,16 @@ package org.ripv.it;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import java.io.ByteArrayInputStream;
 import java.io.ByteArrayOutputStream;
-import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.ripv.client.cli.CliCommand;
 import org.ripv.services.database.DatabaseServer;
 import org.ripv.services.database.DatabaseTarget;
 import org.ripv.services.database.EmbeddedDatabase;
@@ -25,7 +21,6 @@ import org.ripv.services.serial.LinkSettings;
 import org.ripv.services.serial.SerialPortServer;
 import org.ripv.services.serial.ymodem.YmodemConfig;
 import org.ripv.services.simulator.GliderSimulator;
-import picocli.CommandLine;
 
 /**
  * SPEC §10, the thesis's reference scenario, through the CLI against all three real services and
@@ -54,16 +49,7 @@ class ReferenceScenarioTest {
     }
 
     int cli(String user, String... lines) {
-        out.reset();
-        err.reset();
-        List<String> args = new ArrayList<>(List.of("--server", "localhost:" + sys.server().port(), "--user", user,
-                "--password", TestSystem.PASSWORD, "--timeout", "120"));
-        for (String l : lines) {
-            args.add("--exec");
-            args.add(l);
-        }
-        return new CommandLine(new CliCommand(new ByteArrayInputStream(new byte[0]), new PrintStream(out, true, StandardCharsets.UTF_8),
-                new PrintStream(err, true, StandardCharsets.UTF_8))).execute(args.toArray(String[]::new));
+        return InJvmCli.exec(out, err, InJvmCli.as(user, "localhost:" + sys.server().port(), "--timeout", "120"), lines);
     }
 
     String out() {

@@ -2,15 +2,12 @@ package org.ripv.it;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import java.io.ByteArrayInputStream;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
 import java.util.concurrent.TimeUnit;
@@ -18,13 +15,11 @@ import java.util.concurrent.locks.LockSupport;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.ripv.client.cli.CliCommand;
 import org.ripv.services.serial.LinkSettings;
 import org.ripv.services.serial.SerialPortServer;
 import org.ripv.services.serial.ymodem.YmodemConfig;
 import org.ripv.services.simulator.GliderSimulator;
 import org.ripv.testing.Tools;
-import picocli.CommandLine;
 
 /**
  * Issue 3's "done when", through the real server and the CLI: the SerialPortServer registered
@@ -72,17 +67,7 @@ class SerialEndToEndTest {
     }
 
     private int cli(String... lines) {
-        out.reset();
-        err.reset();
-        List<String> all = new ArrayList<>(List.of("--server", "localhost:" + sys.server().port(), "--user", "alice",
-                "--password", TestSystem.PASSWORD, "--timeout", "120"));
-        for (String l : lines) {
-            all.add("--exec");
-            all.add(l);
-        }
-        CliCommand cmd = new CliCommand(new ByteArrayInputStream(new byte[0]),
-                new PrintStream(out, true, StandardCharsets.UTF_8), new PrintStream(err, true, StandardCharsets.UTF_8));
-        return new CommandLine(cmd).execute(all.toArray(String[]::new));
+        return InJvmCli.exec(out, err, InJvmCli.as("alice", "localhost:" + sys.server().port(), "--timeout", "120"), lines);
     }
 
     private String out() {

@@ -2,6 +2,7 @@ package org.ripv.server;
 
 import java.nio.file.Path;
 import java.time.Duration;
+import java.util.function.Consumer;
 import javax.net.ssl.SSLContext;
 import org.ripv.server.security.SecuritySettings;
 import org.ripv.server.store.StoreLocation;
@@ -63,59 +64,94 @@ public record ServerConfig(String bindAddress, int port, int registryPort, int h
     }
 
     public ServerConfig withPorts(int clientPort, int registry, int http) {
-        return new ServerConfig(bindAddress, clientPort, registry, http, dataDir, permitFile, requestTimeout, serviceCheck,
-                maxUpload, maxFrame, maxClients, tls, clientJar, security, stateStore);
+        return with(d -> {
+            d.port = clientPort;
+            d.registryPort = registry;
+            d.httpPort = http;
+        });
     }
 
     public ServerConfig withRequestTimeout(Duration t) {
-        return new ServerConfig(bindAddress, port, registryPort, httpPort, dataDir, permitFile, t, serviceCheck,
-                maxUpload, maxFrame, maxClients, tls, clientJar, security, stateStore);
+        return with(d -> d.requestTimeout = t);
     }
 
     public ServerConfig withServiceCheck(Duration t) {
-        return new ServerConfig(bindAddress, port, registryPort, httpPort, dataDir, permitFile, requestTimeout, t,
-                maxUpload, maxFrame, maxClients, tls, clientJar, security, stateStore);
+        return with(d -> d.serviceCheck = t);
     }
 
     public ServerConfig withMaxUpload(long bytes) {
-        return new ServerConfig(bindAddress, port, registryPort, httpPort, dataDir, permitFile, requestTimeout,
-                serviceCheck, bytes, maxFrame, maxClients, tls, clientJar, security, stateStore);
+        return with(d -> d.maxUpload = bytes);
     }
 
     public ServerConfig withPermitFile(Path file) {
-        return new ServerConfig(bindAddress, port, registryPort, httpPort, dataDir, file, requestTimeout,
-                serviceCheck, maxUpload, maxFrame, maxClients, tls, clientJar, security, stateStore);
+        return with(d -> d.permitFile = file);
     }
 
     public ServerConfig withTls(SSLContext context) {
-        return new ServerConfig(bindAddress, port, registryPort, httpPort, dataDir, permitFile, requestTimeout,
-                serviceCheck, maxUpload, maxFrame, maxClients, context, clientJar, security, stateStore);
+        return with(d -> d.tls = context);
     }
 
     public ServerConfig withClientJar(Path jar) {
-        return new ServerConfig(bindAddress, port, registryPort, httpPort, dataDir, permitFile, requestTimeout,
-                serviceCheck, maxUpload, maxFrame, maxClients, tls, jar, security, stateStore);
+        return with(d -> d.clientJar = jar);
     }
 
     public ServerConfig withBindAddress(String address) {
-        return new ServerConfig(address, port, registryPort, httpPort, dataDir, permitFile, requestTimeout,
-                serviceCheck, maxUpload, maxFrame, maxClients, tls, clientJar, security, stateStore);
+        return with(d -> d.bindAddress = address);
     }
 
     public ServerConfig withSecurity(SecuritySettings s) {
-        return new ServerConfig(bindAddress, port, registryPort, httpPort, dataDir, permitFile, requestTimeout,
-                serviceCheck, maxUpload, maxFrame, maxClients, tls, clientJar, s, stateStore);
+        return with(d -> d.security = s);
     }
 
     public ServerConfig withMaxClients(int n) {
-        return new ServerConfig(bindAddress, port, registryPort, httpPort, dataDir, permitFile, requestTimeout,
-                serviceCheck, maxUpload, maxFrame, n, tls, clientJar, security, stateStore);
+        return with(d -> d.maxClients = n);
     }
 
     /** Where the server keeps its state: embedded (the default) or a PostgreSQL database ({@code --state-db}). */
     public ServerConfig withStateStore(StoreLocation where) {
-        return new ServerConfig(bindAddress, port, registryPort, httpPort, dataDir, permitFile, requestTimeout,
-                serviceCheck, maxUpload, maxFrame, maxClients, tls, clientJar, security, where);
+        return with(d -> d.stateStore = where);
+    }
+
+    /** A copy with what {@code change} sets changed: the one place that lists every component. */
+    private ServerConfig with(Consumer<Draft> change) {
+        Draft d = new Draft(this);
+        change.accept(d);
+        return new ServerConfig(d.bindAddress, d.port, d.registryPort, d.httpPort, dataDir, d.permitFile,
+                d.requestTimeout, d.serviceCheck, d.maxUpload, maxFrame, d.maxClients, d.tls, d.clientJar,
+                d.security, d.stateStore);
+    }
+
+    /** The components a wither may change, copied from a configuration. */
+    private static final class Draft {
+        String bindAddress;
+        int port;
+        int registryPort;
+        int httpPort;
+        Path permitFile;
+        Duration requestTimeout;
+        Duration serviceCheck;
+        long maxUpload;
+        int maxClients;
+        SSLContext tls;
+        Path clientJar;
+        SecuritySettings security;
+        StoreLocation stateStore;
+
+        Draft(ServerConfig c) {
+            bindAddress = c.bindAddress;
+            port = c.port;
+            registryPort = c.registryPort;
+            httpPort = c.httpPort;
+            permitFile = c.permitFile;
+            requestTimeout = c.requestTimeout;
+            serviceCheck = c.serviceCheck;
+            maxUpload = c.maxUpload;
+            maxClients = c.maxClients;
+            tls = c.tls;
+            clientJar = c.clientJar;
+            security = c.security;
+            stateStore = c.stateStore;
+        }
     }
 
     /** Plain TCP on the client port and the landing page, for a test lab ({@code --plain}). */

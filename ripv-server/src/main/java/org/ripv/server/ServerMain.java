@@ -16,7 +16,7 @@ import java.util.concurrent.CountDownLatch;
 import java.util.function.Consumer;
 import javax.net.ssl.SSLContext;
 import org.ripv.naming.Handles;
-import org.ripv.rmi.DeadlineSocketFactory;
+import org.ripv.rmi.RmiDeadlineOptions;
 import org.ripv.rmi.RmiSupport;
 import org.ripv.server.demo.WebhookSink;
 import org.ripv.server.lock.DataDirLock;
@@ -32,8 +32,10 @@ import org.ripv.server.web.PublicVehicles;
 import org.ripv.server.web.WebConsole;
 import org.ripv.service.ServiceOptions;
 import org.ripv.launch.Launchers;
+import org.ripv.launch.OptionChecks;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
@@ -102,12 +104,8 @@ public final class ServerMain implements Callable<Integer> {
                 description = "Port for services in outbound-only mode (behind NAT: they connect out and the server's calls come back"
                         + " over that connection); 0: any free port, -1: none (default ${DEFAULT-VALUE}). A busy port only warns.")
         int outboundPort;
-        @Option(names = "--rmi-connect-timeout", defaultValue = "3000", paramLabel = "MS",
-                description = "How long a call to a service may take to connect (default ${DEFAULT-VALUE} ms).")
-        int rmiConnectTimeout;
-        @Option(names = "--rmi-read-timeout", defaultValue = "15000", paramLabel = "MS",
-                description = "How long a call to a service may wait for its answer (default ${DEFAULT-VALUE} ms).")
-        int rmiReadTimeout;
+        @Mixin
+        RmiDeadlineOptions deadlines = new RmiDeadlineOptions();
         @Option(names = "--client-jar", description = "The client jar the landing page offers (default: ripv-client.jar beside this jar).")
         Path clientJar;
         @Option(names = "--smtp", paramLabel = "HOST:PORT", description = "The SMTP server for e-mail notifications (?notify add email ...).")
@@ -122,9 +120,9 @@ public final class ServerMain implements Callable<Integer> {
         int transcriptDays;
         @Option(names = "--transcript-file-mb", defaultValue = "64", description = "A transcript file is continued in a new one past this size (default ${DEFAULT-VALUE} MB).")
         long transcriptFileMb;
-        @CommandLine.Mixin
+        @Mixin
         StateStoreOptions stateStore = new StateStoreOptions();
-        @CommandLine.Mixin
+        @Mixin
         StandbyOptions standby = new StandbyOptions();
         private volatile int openedOutbound = -1;
 
@@ -136,15 +134,13 @@ public final class ServerMain implements Callable<Integer> {
                 // Stubs must name an address the server actually listens on.
                 System.setProperty("java.rmi.server.hostname", bind);
             }
-            if (rmiConnectTimeout < 1 || rmiReadTimeout < 1) {
-                throw new CommandLine.ParameterException(new CommandLine(this), "RMI timeouts must be at least 1 ms");
+            try {
+                deadlines.apply();
+                OptionChecks.atLeast("--max-clients", maxClients, 1);
+                OptionChecks.atLeast("--web-pages", webPages, 2);
+            } catch (IllegalArgumentException e) {
+                throw new CommandLine.ParameterException(new CommandLine(this), e.getMessage());
             }
-            if (maxClients < 1) {
-                throw new CommandLine.ParameterException(new CommandLine(this),
-                        "--max-clients must be at least 1, got " + maxClients);
-            }
-            System.setProperty(DeadlineSocketFactory.CONNECT_PROPERTY, Integer.toString(rmiConnectTimeout));
-            System.setProperty(DeadlineSocketFactory.READ_PROPERTY, Integer.toString(rmiReadTimeout));
             Path dataDir = data != null ? data : ServiceOptions.defaultDataDir();
             ServerConfig config = ServerConfig.defaults(dataDir)
                     .withPorts(port, registryPort, httpPort == 0 ? -1 : httpPort)
@@ -154,9 +150,6 @@ public final class ServerMain implements Callable<Integer> {
                     .withBindAddress(bind)
                     .withMaxClients(maxClients)
                     .withClientJar(clientJar != null ? clientJar : defaultClientJar());
-            if (webPages < 2) {
-                throw new CommandLine.ParameterException(new CommandLine(new Serve()), "--web-pages must be at least 2, got " + webPages);
-            }
             config = config.withSecurity(config.security().withPlain(plain).withHttpUpload(httpUpload)
                     .withLoginDeadline(Duration.ofSeconds(loginDeadline)).withWebPages(webPages));
             String fingerprint = null;

@@ -2,12 +2,16 @@ package org.ripv.dac;
 
 import java.io.IOException;
 import java.io.PrintWriter;
+import java.net.URI;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
 import org.ripv.services.ingest.SensorListCache;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
@@ -21,7 +25,7 @@ import picocli.CommandLine.Spec;
         description = "IOOS Glider DAC profile files (NetCDF-3, template IOOS_Glider_NetCDF_v2.0) with QARTOD flags.")
 public final class DacCommand implements Callable<Integer> {
     @Spec
-    picocli.CommandLine.Model.CommandSpec spec;
+    CommandSpec spec;
 
     @Override
     public Integer call() {
@@ -63,7 +67,7 @@ public final class DacCommand implements Callable<Integer> {
         int filter;
 
         @Spec
-        picocli.CommandLine.Model.CommandSpec spec;
+        CommandSpec spec;
 
         @Override
         public Integer call() throws IOException {
@@ -101,7 +105,7 @@ public final class DacCommand implements Callable<Integer> {
         List<Path> files;
 
         @Option(names = "--to", required = true, paramLabel = "sftp://USER@HOST[:PORT]/FOLDER", description = "The deployment's folder on the DAC's SFTP server.")
-        java.net.URI to;
+        URI to;
 
         @Option(names = "--key", required = true, paramLabel = "FILE", description = "The private key (OpenSSH or PEM; RSA or ECDSA).")
         Path key;
@@ -116,13 +120,13 @@ public final class DacCommand implements Callable<Integer> {
         int attempts;
 
         @Spec
-        picocli.CommandLine.Model.CommandSpec spec;
+        CommandSpec spec;
 
         @Override
         public Integer call() throws IOException, InterruptedException {
             PrintWriter out = spec.commandLine().getOut();
             PrintWriter err = spec.commandLine().getErr();
-            List<Path> all = new java.util.ArrayList<>();
+            List<Path> all = new ArrayList<>();
             for (Path f : files) {
                 if (Files.isDirectory(f)) {
                     try (var s = Files.list(f)) {
@@ -137,7 +141,7 @@ public final class DacCommand implements Callable<Integer> {
             }
             Path l = ledger != null ? ledger : (Files.isDirectory(files.get(0)) ? files.get(0) : files.get(0).toAbsolutePath().getParent()).resolve("dac-ledger.tsv");
             try {
-                List<SftpPush.Outcome> r = new SftpPush(to, key, knownHosts, new DacLedger(l), attempts, java.time.Duration.ofSeconds(1)).push(all);
+                List<SftpPush.Outcome> r = new SftpPush(to, key, knownHosts, new DacLedger(l), attempts, Duration.ofSeconds(1)).push(all);
                 boolean ok = true;
                 for (SftpPush.Outcome o : r) {
                     out.println(o.file().getFileName() + ": " + o.status() + " (" + o.detail() + ")");
@@ -159,7 +163,7 @@ public final class DacCommand implements Callable<Integer> {
         List<Path> files;
 
         @Spec
-        picocli.CommandLine.Model.CommandSpec spec;
+        CommandSpec spec;
 
         @Override
         public Integer call() {

@@ -7,7 +7,6 @@ import java.io.InputStream;
 import java.io.InputStreamReader;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.Arrays;
@@ -45,10 +44,8 @@ public final class CliCommand implements Callable<Integer> {
     String server;
     @Option(names = "--user", required = true, description = "User name.")
     String user;
-    @Option(names = "--password", description = "Password (other users see it in ps: prefer --password-file, $RIPV_PASSWORD or the prompt).")
-    String password;
-    @Option(names = "--password-file", description = "File whose first line is the password.")
-    Path passwordFile;
+    @Mixin
+    PasswordOptions password;
     @Option(names = "--json", description = "One JSON object per reply line.")
     boolean json;
     @Option(names = "--exec", paramLabel = "LINE", description = "A line to run (repeatable); without any, lines come from standard input.")
@@ -101,7 +98,7 @@ public final class CliCommand implements Callable<Integer> {
         char[] pw;
         try {
             pw = password(host);
-        } catch (PasswordFile.Unusable e) {
+        } catch (PasswordFile.Unusable | IllegalArgumentException e) {
             err.println("Error: " + e.getMessage());
             return 2;
         }
@@ -202,13 +199,8 @@ public final class CliCommand implements Callable<Integer> {
     }
 
     private char[] password(String host) throws IOException {
-        if (password != null) {
-            err.println("Warning: --password shows the password to every user of this machine (ps);"
-                    + " use --password-file, $RIPV_PASSWORD or let the CLI ask");
-            return password.toCharArray();
-        }
-        if (passwordFile != null) {
-            return PasswordFile.read(passwordFile);
+        if (password.any()) {
+            return password.given(err, "--password-file, $RIPV_PASSWORD or let the CLI ask");
         }
         String env = System.getenv("RIPV_PASSWORD");
         if (env != null) {

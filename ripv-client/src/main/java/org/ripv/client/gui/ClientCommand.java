@@ -6,14 +6,13 @@ import java.awt.HeadlessException;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.lang.reflect.InvocationTargetException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.prefs.Preferences;
 import javax.swing.SwingUtilities;
 import org.ripv.client.cli.PasswordFile;
+import org.ripv.client.cli.PasswordOptions;
 import org.ripv.client.handlers.ClientSocketHandler;
 import org.ripv.client.handlers.ServerTrustOptions;
 import org.ripv.client.handlers.Tls;
@@ -36,7 +35,8 @@ import picocli.CommandLine.Parameters;
  * 2 for a usage error or no display.
  */
 @Command(name = "client", mixinStandardHelpOptions = true,
-        description = "Opens the RIPV operator GUI (log-in dialog, services, COM/MAM/FIM/DAB/DAV panels).",
+        description = "Opens the RIPV operator GUI (log-in dialog, services, COM/MAM/FIM/DAB/DAV panels);"
+                + " with --password-file (or --password) it logs in at once.",
         exitCodeOnInvalidInput = 2)
 public final class ClientCommand implements Callable<Integer> {
     /** Exit code: no display (headless) or bad arguments. */
@@ -50,13 +50,8 @@ public final class ClientCommand implements Callable<Integer> {
     @Option(names = "--user", paramLabel = "USER", description = "User name (default: the last one used).")
     String user;
 
-    @Option(names = "--password-file", paramLabel = "FILE",
-            description = "Read the password from the first line of FILE and log in at once.")
-    Path passwordFile;
-
-    @Option(names = "--password", paramLabel = "PASSWORD",
-            description = "The password, logging in at once (for the demo; it shows in the process list).")
-    String password;
+    @Mixin
+    PasswordOptions password;
 
     @Mixin
     ServerTrustOptions trust;
@@ -82,21 +77,15 @@ public final class ClientCommand implements Callable<Integer> {
                 return EXIT_USAGE;
             }
         }
-        if (password != null && passwordFile != null) {
-            err.println("Error: give --password or --password-file, not both");
+        char[] pw;
+        try {
+            pw = password.given(err, "--password-file");
+        } catch (IllegalArgumentException e) {
+            err.println("Error: " + e.getMessage());
             return EXIT_USAGE;
-        }
-        char[] pw = null;
-        if (passwordFile != null) {
-            try {
-                pw = PasswordFile.read(passwordFile);
-            } catch (IOException e) {
-                err.println("Error: " + e.getMessage());
-                return 1;
-            }
-        } else if (password != null) {
-            err.println("Warning: --password shows the password to every user of this machine (ps); use --password-file");
-            pw = password.toCharArray();
+        } catch (PasswordFile.Unusable e) {
+            err.println("Error: " + e.getMessage());
+            return 1;
         }
         if (GraphicsEnvironment.isHeadless()) {
             noDisplay("DISPLAY unset or java.awt.headless=true");

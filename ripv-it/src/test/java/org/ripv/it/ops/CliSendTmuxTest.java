@@ -67,6 +67,32 @@ class CliSendTmuxTest {
         }
     }
 
+    static final String MAILBOX = "<SerialPortServer>::<localhost>ru29";
+    static final String PROMPT = "alice@localhost ru29>";
+
+    /** The screen after a command typed on a cleared screen: its line, what it printed, the prompt again. */
+    static boolean answered(String screen) {
+        return screen.split(PROMPT, -1).length > 2 && Tmux.lastLine(screen).equals(PROMPT);
+    }
+
+    /** Whether the screen shows {@code text} within {@code max}. */
+    static boolean shows(Tmux t, String text, Duration max) throws Exception {
+        long end = System.nanoTime() + max.toNanos();
+        while (!t.screen().contains(text)) {
+            if (System.nanoTime() > end) {
+                return false;
+            }
+            Thread.sleep(200);
+        }
+        return true;
+    }
+
+    /** Between two looks at the vehicle's status. */
+    static boolean pause() throws InterruptedException {
+        Thread.sleep(1000);
+        return true;
+    }
+
     @AfterEach
     void stop() throws Exception {
         for (Process p : processes) {
@@ -118,23 +144,31 @@ class CliSendTmuxTest {
             t.await("the prompt", Duration.ofSeconds(60), s -> Tmux.lastLine(s).equals("alice@localhost>"));
             t.type("use ru29");
             t.keys("Enter");
-            t.await("the prompt with the vehicle", Duration.ofSeconds(20), s -> Tmux.lastLine(s).equals("alice@localhost ru29>"));
-            // Wait for the glider's call (its surface dialog in the MailBox), then take control with Ctrl-C.
-            long end = System.nanoTime() + Duration.ofSeconds(90).toNanos();
-            while (!log("serial.log").contains("ru29") || !t.screen().contains("Mission stopped by the operator")) {
-                assertThat(System.nanoTime()).as("the glider called and took Ctrl-C:\n" + t.screen() + log("simulator.log"))
-                        .isLessThan(end);
+            t.await("the prompt with the vehicle", Duration.ofSeconds(60), s -> Tmux.lastLine(s).equals("alice@localhost ru29>"));
+            // Wait for the glider's call as the operator would, with ?status ("vehicle (on call, ..." once
+            // the call's SURFACED reached the server): a key sent before the call has begun fails at the
+            // service ("not on a call"). Then take control with Ctrl-C (again if the glider's answer is slow).
+            long end = System.nanoTime() + Duration.ofSeconds(180).toNanos();
+            String status;
+            do {
+                assertThat(System.nanoTime()).as("the glider's call:\n" + t.screen() + log("simulator.log")).isLessThan(end);
+                t.keys("C-l");
+                t.type("?status " + MAILBOX);
+                t.keys("Enter");
+                status = t.await("the vehicle's status", Duration.ofSeconds(60), CliSendTmuxTest::answered);
+            } while (!status.contains("; vehicle (on call") && pause());
+            do {
+                assertThat(System.nanoTime()).as("the glider took Ctrl-C:\n" + t.screen() + log("simulator.log")).isLessThan(end);
                 t.type("key ctrl-c");
                 t.keys("Enter");
-                Thread.sleep(3000);
-            }
+            } while (!shows(t, "Mission stopped by the operator", Duration.ofSeconds(20)));
             t.keys("C-l");
 
             // Tab: the CLI's own words are listed apart from the vehicle's and the server's
             t.type("se");
             t.keys("Tab");
             t.keys("Tab");
-            t.await("the completions, the CLI's own word marked", Duration.ofSeconds(10), s -> s.contains("the CLI's own word"));
+            t.await("the completions, the CLI's own word marked", Duration.ofSeconds(30), s -> s.contains("the CLI's own word"));
             assertThat(t.screen()).containsPattern("send\\s+\\(the CLI's own word\\)").contains("sequence")
                     .doesNotContainPattern("sequence\\s+\\(the CLI's own word\\)");
             t.keys("C-u");

@@ -3,25 +3,19 @@ package org.ripv.it.ops;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
-import java.io.ByteArrayInputStream;
 import java.io.ByteArrayOutputStream;
-import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import java.util.stream.Stream;
-import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
-import org.ripv.client.cli.CliCommand;
-import org.ripv.it.TestSystem;
-import org.ripv.server.permit.PermitFile;
+import org.ripv.it.InJvmCli;
 import org.ripv.testing.LoopbackSshd;
-import picocli.CommandLine;
 
 /**
  * Issue 37 item 4 as launched: {@code ripv-server.jar}, and {@code ripv-services.jar} as the
@@ -35,62 +29,15 @@ import picocli.CommandLine;
  * DatabaseServer from starting, with the reason.
  */
 class DacDeliveryEndToEndTest {
-    static final Path ROOT = RipvScriptHelpTest.ROOT;
+    static final Path ROOT = LaunchedSystem.ROOT;
     static final Path SHARED = ROOT.resolve("../shared/data/slocum-binary").normalize();
     static final String SEG = "rosie_713-2019-166-0-157";
 
     @TempDir
     Path tmp;
-    final List<Process> started = new ArrayList<>();
-    final ByteArrayOutputStream out = new ByteArrayOutputStream();
-    int clientPort;
-    Path knownHosts;
 
-    Process launch(String name, String... args) throws Exception {
-        List<String> cmd = new ArrayList<>(List.of(org.ripv.it.TestJvms.java(),
-                "-Xmx256m", "-Duser.home=" + tmp.resolve("home"), "-Dripv.host=localhost", "-jar",
-                LaunchedDataLoopTest.jar(name.equals("server") ? "ripv-server" : "ripv-services").toString()));
-        cmd.addAll(List.of(args));
-        ProcessBuilder pb = new ProcessBuilder(cmd).directory(tmp.toFile()).redirectErrorStream(true)
-                .redirectOutput(tmp.resolve(name + ".log").toFile());
-        pb.environment().put("HOME", tmp.resolve("home").toString());
-        Process p = pb.start();
-        started.add(p);
-        return p;
-    }
-
-    String log(String name) throws Exception {
-        Path f = tmp.resolve(name + ".log");
-        return Files.exists(f) ? Files.readString(f, StandardCharsets.UTF_8) : "";
-    }
-
-    @AfterEach
-    void stop() throws Exception {
-        for (int i = started.size() - 1; i >= 0; i--) {
-            started.get(i).destroy();
-        }
-        for (Process p : started) {
-            if (!p.waitFor(20, TimeUnit.SECONDS)) {
-                p.destroyForcibly();
-            }
-        }
-    }
-
-    int cli(String... lines) {
-        out.reset();
-        List<String> all = new ArrayList<>(List.of("--server", "localhost:" + clientPort, "--user", "alice",
-                "--password", TestSystem.PASSWORD, "--timeout", "120", "--known-hosts", knownHosts.toString()));
-        for (String l : lines) {
-            all.add("--exec");
-            all.add(l);
-        }
-        PrintStream ps = new PrintStream(out, true, StandardCharsets.UTF_8);
-        return new CommandLine(new CliCommand(new ByteArrayInputStream(new byte[0]), ps, ps)).execute(all.toArray(String[]::new));
-    }
-
-    String out() {
-        return out.toString(StandardCharsets.UTF_8);
-    }
+    @RegisterExtension
+    final LaunchedSystem sys = new LaunchedSystem("-Dripv.host=localhost");
 
     List<String> nc(Path dir) throws Exception {
         try (Stream<Path> s = Files.list(dir)) {
@@ -117,16 +64,9 @@ class DacDeliveryEndToEndTest {
 
     @Test
     void aCallsSlocumFilesEndAsProfilesOnTheDacsSftpServer() throws Exception {
-        for (String m : List.of("ripv-server", "ripv-services")) {
-            assumeTrue(Files.isRegularFile(LaunchedDataLoopTest.jar(m)), "needs the jars (mvn -DskipTests package builds them)");
-        }
+        LaunchedSystem.assumeJars();
         assumeTrue(Files.isDirectory(SHARED.resolve("realtime_raw")), "needs ../shared/data/slocum-binary beside the repository");
-        Files.createDirectories(tmp.resolve("home"));
         try (LoopbackSshd sshd = LoopbackSshd.start(Files.createDirectories(tmp.resolve("sshd")))) {
-            int[] p = LaunchedDataLoopTest.freePorts(4);
-            clientPort = p[0];
-            Path data = tmp.resolve("ripv-data");
-            knownHosts = tmp.resolve("known_hosts");
             Path glider = Files.createDirectories(tmp.resolve("glider-files"));
             for (String f : List.of(SEG + ".sbd", SEG + ".tbd")) {
                 Files.copy(SHARED.resolve("realtime_raw").resolve(f), glider.resolve(f));
@@ -134,61 +74,44 @@ class DacDeliveryEndToEndTest {
             for (String c : List.of("6b016a2e.cac", "426bd56d.cac")) {
                 Files.copy(SHARED.resolve("cac").resolve(c), glider.resolve(c));
             }
-            launch("server", "server", "--data", data.toString(), "--port", "" + p[0], "--registry-port", "" + p[1],
-                    "--http-port", "0", "--outbound-port", "" + p[2]);
-            long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(120);
-            while (!log("server").contains("RIPVServer ready")) {
-                assertThat(System.nanoTime()).as(log("server")).isLessThan(end);
-                assertThat(started.get(0).isAlive()).as(log("server")).isTrue();
-                Thread.sleep(200);
-            }
-            PermitFile.setUser(data.resolve("permit.txt"), "alice", TestSystem.PASSWORD.toCharArray(), List.of("operators"), 1000);
-            String secret = data.resolve("service.secret").toString();
-            String server = "localhost:" + p[1];
+            sys.startServer(List.of());
 
             // bad metadata: the DatabaseServer refuses to start, saying why, and writes nothing
             Path badDir = Files.createDirectories(tmp.resolve("bad"));
             Path badMeta = badDir.resolve("meta.json");
             Files.writeString(badMeta, Files.readString(ROOT.resolve("docs/samples/dac-deployment.json"))
                     .replace("\"wmo_id\": \"4802989\"", "\"wmo_id\": 4802989"));
-            Process bad = launch("bad-database", "database", "--server", server, "--secret-file", secret,
-                    "--data", tmp.resolve("bad-db").toString(), "--dac", deployment(badDir, sshd, badMeta.toString()).toString());
+            Process bad = sys.startService("bad-database", List.of(), "database", "--data", tmp.resolve("bad-db").toString(),
+                    "--dac", deployment(badDir, sshd, badMeta.toString()).toString());
             assertThat(bad.waitFor(120, TimeUnit.SECONDS)).isTrue();
-            assertThat(bad.exitValue()).as(log("bad-database")).isEqualTo(1);
-            assertThat(log("bad-database")).contains("the DAC deployment is refused").contains("wmo_id must be a string, found number 4802989");
+            assertThat(bad.exitValue()).as(sys.log("bad-database")).isEqualTo(1);
+            assertThat(sys.log("bad-database")).contains("the DAC deployment is refused")
+                    .contains("wmo_id must be a string, found number 4802989");
             assertThat(badDir.resolve("dac")).doesNotExist();
 
             Path dacDir = Files.createDirectories(tmp.resolve("deployment"));
-            launch("serial", "serial", "--server", server, "--secret-file", secret,
-                    "--link", "listen://127.0.0.1:" + p[3] + ",name=rosie", "--carrier", "ignore", "--no-enumerate");
-            launch("database", "database", "--server", server, "--secret-file", secret, "--data", tmp.resolve("db").toString(),
+            sys.startService("serial", List.of(), "serial", "--link", "listen://127.0.0.1:" + sys.gliderPort + ",name=rosie",
+                    "--carrier", "ignore", "--no-enumerate");
+            sys.startService("database", List.of(), "database", "--data", tmp.resolve("db").toString(),
                     "--dac", deployment(dacDir, sshd, ROOT.resolve("docs/samples/dac-deployment.json").toString()).toString());
             String box = "<SerialPortServer>::<localhost>rosie";
             String db = "<DatabaseServer>::<localhost>TTY1";
-            end = System.nanoTime() + TimeUnit.SECONDS.toNanos(120);
-            while (true) {
-                cli("?mailboxes");
-                if (out().contains(box) && out().contains(db)) {
-                    break;
-                }
-                assertThat(System.nanoTime()).as(out() + log("serial") + log("database")).isLessThan(end);
-                Thread.sleep(500);
-            }
-            assertThat(log("database")).contains("DAC deployment of rosie_713 -> " + sshd.url());
-            assertThat(cli("?dac " + db)).as(out()).isZero();
-            assertThat(out()).contains("rosie_713 → " + sshd.url() + ": 0 profiles; no profile yet");
+            sys.awaitMailboxes(box, db);
+            assertThat(sys.log("database")).contains("DAC deployment of rosie_713 -> " + sshd.url());
+            assertThat(sys.cli("?dac " + db)).as(sys.out()).isZero();
+            assertThat(sys.out()).contains("rosie_713 → " + sshd.url() + ": 0 profiles; no profile yet");
 
             // the glider's next call fetches its files: the caches first, then the segment's pair
             Path wf = tmp.resolve("fetch-dac.wf");
             Files.writeString(wf, "workflow once\nymodem:get *.cac\nymodem:get *.sbd *.tbd\n");
-            assertThat(cli("put " + wf, "?queue add " + box + " fetch-dac.wf")).as(out()).isZero();
-            launch("simulator", "simulator", "--call", "127.0.0.1:" + p[3], "--name", "rosie", "--dive-seconds", "600",
+            assertThat(sys.cli("put " + wf, "?queue add " + box + " fetch-dac.wf")).as(sys.out()).isZero();
+            sys.startSimulator("--call", "127.0.0.1:" + sys.gliderPort, "--name", "rosie", "--dive-seconds", "600",
                     "--surface-seconds", "120", "--dir", tmp.resolve("glider").toString(), "--files", glider.toString());
 
-            end = System.nanoTime() + TimeUnit.SECONDS.toNanos(240);
+            long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(240);
             while (nc(sshd.drop()).size() < 10) {
-                assertThat(System.nanoTime()).as("ten profiles on the SFTP server; ?dac: " + (cli("?dac " + db) >= 0 ? out() : "")
-                        + "\ndatabase log: " + log("database") + "\nserial log: " + log("serial")).isLessThan(end);
+                assertThat(System.nanoTime()).as("ten profiles on the SFTP server; ?dac: " + (sys.cli("?dac " + db) >= 0 ? sys.out() : "")
+                        + "\ndatabase log: " + sys.log("database") + "\nserial log: " + sys.log("serial")).isLessThan(end);
                 Thread.sleep(500);
             }
             List<String> sent = nc(sshd.drop());
@@ -212,34 +135,33 @@ class DacDeliveryEndToEndTest {
                 assertThat(py.strip()).startsWith("NETCDF3_CLASSIC 21 141.5 11.9 rosie_713 ");
             }
             // the pilot's view of the delivery
-            assertThat(cli("?dac " + db)).as(out()).isZero();
-            assertThat(out()).contains("rosie_713 → " + sshd.url() + ": 10 profiles (10 sent)")
+            assertThat(sys.cli("?dac " + db)).as(sys.out()).isZero();
+            assertThat(sys.out()).contains("rosie_713 → " + sshd.url() + ": 10 profiles (10 sent)")
                     .contains("rosie_713_20190620T063600Z_rt.nc  real-time climb, 21 samples, 11.9 to 141.5 dbar, QC temperature 20 good 1 suspect")
                     .containsPattern("newest profile rosie_713_20190620T080055Z_rt\\.nc, its data \\d+ days ago");
-            out.reset();
-            CommandLine json = new CommandLine(new CliCommand(new ByteArrayInputStream(new byte[0]),
-                    new PrintStream(out, true, StandardCharsets.UTF_8), new PrintStream(out, true, StandardCharsets.UTF_8)));
-            assertThat(json.execute("--server", "localhost:" + clientPort, "--user", "alice", "--password", TestSystem.PASSWORD,
-                    "--known-hosts", knownHosts.toString(), "--json", "--exec", "?dac " + db + " --json")).as(out()).isZero();
+            ByteArrayOutputStream jsonOut = new ByteArrayOutputStream();
+            assertThat(InJvmCli.exec(jsonOut, jsonOut, InJvmCli.as("alice", "localhost:" + sys.clientPort,
+                    "--known-hosts", sys.knownHosts.toString(), "--json"), "?dac " + db + " --json"))
+                    .as(jsonOut.toString(StandardCharsets.UTF_8)).isZero();
             com.fasterxml.jackson.databind.ObjectMapper m = new com.fasterxml.jackson.databind.ObjectMapper();
             String text = null;
-            for (String line : out().split("\n")) {
+            for (String line : jsonOut.toString(StandardCharsets.UTF_8).split("\n")) {
                 if (line.startsWith("{")) {
                     text = m.readTree(line).path("text").asText(null);
                 }
             }
-            assertThat(text).as(out()).isNotNull();
+            assertThat(text).as(jsonOut.toString(StandardCharsets.UTF_8)).isNotNull();
             @SuppressWarnings("unchecked")
             Map<String, Object> state = (Map<String, Object>) m.readValue(text, List.class).get(0);
             assertThat(state).containsEntry("glider", "rosie_713").containsEntry("counts", Map.of("sent", 10));
             assertThat(((Number) state.get("seconds_since_newest_profile")).longValue()).isGreaterThan(0);
             // usage errors and an unknown glider: refused with the reason, the service keeps answering
-            assertThat(cli("?dac")).isNotZero();
-            assertThat(out()).contains("usage: ?dac MAILBOX [GLIDER] [--json]");
-            assertThat(cli("?dac " + db + " nobody")).isNotZero();
-            assertThat(out()).contains("no DAC deployment of nobody here");
-            assertThat(cli("?dac " + db + " rosie_713")).as(out()).isZero();
-            assertThat(out()).contains("10 profiles (10 sent)");
+            assertThat(sys.cli("?dac")).isNotZero();
+            assertThat(sys.out()).contains("usage: ?dac MAILBOX [GLIDER] [--json]");
+            assertThat(sys.cli("?dac " + db + " nobody")).isNotZero();
+            assertThat(sys.out()).contains("no DAC deployment of nobody here");
+            assertThat(sys.cli("?dac " + db + " rosie_713")).as(sys.out()).isZero();
+            assertThat(sys.out()).contains("10 profiles (10 sent)");
             // every file once in the ledger, sent
             assertThat(Files.readAllLines(dacDir.resolve("dac/dac-ledger.tsv")).stream().filter(l -> l.contains("\tsent\t")))
                     .hasSize(10);

@@ -2,18 +2,18 @@ package org.ripv.it.ops;
 
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
+import static org.ripv.it.ops.CommandProcesses.freePort;
+import static org.ripv.it.ops.CommandProcesses.jar;
+import static org.ripv.it.ops.CommandProcesses.java;
 
-import java.io.File;
-import java.net.ServerSocket;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -27,56 +27,20 @@ import org.junit.jupiter.api.io.TempDir;
 class DuplicateServiceNameTest {
     @TempDir
     Path dir;
-    final List<Process> processes = new ArrayList<>();
+    CommandProcesses processes;
 
-    static String java() {
-        return org.ripv.it.TestJvms.java();
-    }
-
-    static String jar(String module) {
-        return RipvScriptHelpTest.ROOT.resolve(module + "/target/" + module + ".jar").toString();
-    }
-
-    static int freePort() throws Exception {
-        try (ServerSocket s = new ServerSocket(0)) {
-            return s.getLocalPort();
-        }
-    }
-
-    Process launch(String log, String... command) throws Exception {
-        Process p = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(dir.resolve(log).toFile())
-                .redirectInput(ProcessBuilder.Redirect.from(new File("/dev/null"))).start();
-        processes.add(p);
-        return p;
-    }
-
-    String log(String name) throws Exception {
-        Path p = dir.resolve(name);
-        return Files.exists(p) ? Files.readString(p, StandardCharsets.UTF_8) : "";
-    }
-
-    void awaitLog(String name, String text, Duration max) throws Exception {
-        long end = System.nanoTime() + max.toNanos();
-        while (!log(name).contains(text)) {
-            assertThat(System.nanoTime()).as("'" + text + "' in " + name + ":\n" + log(name)).isLessThan(end);
-            Thread.sleep(200);
-        }
+    @BeforeEach
+    void start() {
+        processes = new CommandProcesses(dir);
     }
 
     @AfterEach
     void stop() throws Exception {
-        for (Process p : processes) {
-            p.destroy();
-        }
-        for (Process p : processes) {
-            if (!p.waitFor(20, TimeUnit.SECONDS)) {
-                p.destroyForcibly();
-            }
-        }
+        processes.close();
     }
 
     Process clock(String log, String registry, Path secret) throws Exception {
-        return launch(log, java(), "-Dripv.host=localhost", "-jar", jar("ripv-common"), "--server", registry, "--secret-file",
+        return processes.launch(log, java(), "-Dripv.host=localhost", "-jar", jar("ripv-common"), "--server", registry, "--secret-file",
                 secret.toString(), "--host", "localhost");
     }
 
@@ -92,36 +56,36 @@ class DuplicateServiceNameTest {
         int port = freePort();
         int registry = freePort();
         Path data = dir.resolve("data");
-        launch("server.log", java(), "-jar", jar("ripv-server"), "server", "--data", data.toString(), "--port", "" + port,
+        processes.launch("server.log", java(), "-jar", jar("ripv-server"), "server", "--data", data.toString(), "--port", "" + port,
                 "--registry-port", "" + registry, "--http-port", "0", "--outbound-port", "-1", "--bind", "127.0.0.1");
-        awaitLog("server.log", "RIPVServer ready", Duration.ofSeconds(90));
+        processes.awaitLog("server.log", "RIPVServer ready", Duration.ofSeconds(90));
         Path secret = data.resolve("service.secret");
         String server = "127.0.0.1:" + registry;
 
         Process first = clock("first.log", server, secret);
-        awaitLog("first.log", "registered with the RIPVServer", Duration.ofSeconds(60));
+        processes.awaitLog("first.log", "registered with the RIPVServer", Duration.ofSeconds(60));
         Process second = clock("second.log", server, secret);
-        assertThat(second.waitFor(60, TimeUnit.SECONDS)).as("the second exits:\n" + log("second.log")).isTrue();
+        assertThat(second.waitFor(60, TimeUnit.SECONDS)).as("the second exits:\n" + processes.log("second.log")).isTrue();
         assertThat(second.exitValue()).isEqualTo(1);
-        assertThat(log("second.log")).as(log("second.log"))
+        assertThat(processes.log("second.log")).as(processes.log("second.log"))
                 .containsPattern("Error: the server at 127\\.0\\.0\\.1:\\d+ refused the registration: the name is taken:"
                         + " <ClockService>::<localhost> is registered by another running service at [^ ]+:\\d+, registered since"
                         + " \\d{4}-\\d\\d-\\d\\dT")
                 .contains("Stop that one first");
         // No flapping: the first stays registered, and nobody registers again.
         Thread.sleep(8_000);
-        assertThat(first.isAlive()).as(log("first.log")).isTrue();
-        assertThat(log("first.log")).doesNotContain("no longer knows this service").doesNotContain("registration refused");
-        assertThat(count(log("server.log"), ") registered from ")).as(log("server.log")).isEqualTo(1);
-        assertThat(log("server.log")).contains("refused a second service named <ClockService>::<localhost>");
+        assertThat(first.isAlive()).as(processes.log("first.log")).isTrue();
+        assertThat(processes.log("first.log")).doesNotContain("no longer knows this service").doesNotContain("registration refused");
+        assertThat(count(processes.log("server.log"), ") registered from ")).as(processes.log("server.log")).isEqualTo(1);
+        assertThat(processes.log("server.log")).contains("refused a second service named <ClockService>::<localhost>");
 
         // The first stops answering (killed, no goodbye): the next of that name takes over.
         first.destroyForcibly();
         first.waitFor(20, TimeUnit.SECONDS);
         Process third = clock("third.log", server, secret);
-        awaitLog("third.log", "registered with the RIPVServer", Duration.ofSeconds(90));
+        processes.awaitLog("third.log", "registered with the RIPVServer", Duration.ofSeconds(90));
         Thread.sleep(2_000);
-        assertThat(third.isAlive()).as(log("third.log")).isTrue();
-        assertThat(log("third.log")).doesNotContain("name is taken");
+        assertThat(third.isAlive()).as(processes.log("third.log")).isTrue();
+        assertThat(processes.log("third.log")).doesNotContain("name is taken");
     }
 }

@@ -2,9 +2,11 @@ package org.ripv.it.ops;
 
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
+import static org.ripv.it.ops.CommandProcesses.freePort;
+import static org.ripv.it.ops.CommandProcesses.jar;
+import static org.ripv.it.ops.CommandProcesses.java;
 
 import java.io.File;
-import java.net.ServerSocket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -34,7 +36,7 @@ class FirstHourEndToEndTest {
 
     @TempDir
     static Path dir;
-    final List<Process> processes = new ArrayList<>();
+    CommandProcesses processes;
     int port;
     int registry;
     int http;
@@ -42,42 +44,9 @@ class FirstHourEndToEndTest {
     Path pw;
     Path knownHosts;
 
-    static String java() {
-        return org.ripv.it.TestJvms.java();
-    }
-
-    static String jar(String module) {
-        return ROOT.resolve(module + "/target/" + module + ".jar").toString();
-    }
-
-    static int freePort() throws Exception {
-        try (ServerSocket s = new ServerSocket(0)) {
-            return s.getLocalPort();
-        }
-    }
-
-    Process launch(String log, String... command) throws Exception {
-        Process p = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(dir.resolve(log).toFile())
-                .redirectInput(ProcessBuilder.Redirect.from(new File("/dev/null"))).start();
-        processes.add(p);
-        return p;
-    }
-
-    String log(String name) throws Exception {
-        Path p = dir.resolve(name);
-        return Files.exists(p) ? Files.readString(p, StandardCharsets.UTF_8) : "";
-    }
-
-    void awaitLog(String name, String text, Duration max) throws Exception {
-        long end = System.nanoTime() + max.toNanos();
-        while (!log(name).contains(text)) {
-            assertThat(System.nanoTime()).as("'" + text + "' in " + name + ":\n" + log(name)).isLessThan(end);
-            Thread.sleep(200);
-        }
-    }
-
     @BeforeAll
     void start() throws Exception {
+        processes = new CommandProcesses(dir);
         for (String m : List.of("ripv-common", "ripv-server", "ripv-services", "ripv-client")) {
             assumeTrue(Files.isRegularFile(Path.of(jar(m))), "needs the jars (mvn verify builds them before this module's tests)");
         }
@@ -86,9 +55,9 @@ class FirstHourEndToEndTest {
         http = freePort();
         int glider = freePort();
         Path data = dir.resolve("data");
-        launch("server.log", java(), "-jar", jar("ripv-server"), "server", "--data", data.toString(), "--port", "" + port,
+        processes.launch("server.log", java(), "-jar", jar("ripv-server"), "server", "--data", data.toString(), "--port", "" + port,
                 "--registry-port", "" + registry, "--http-port", "" + http, "--outbound-port", "-1", "--bind", "127.0.0.1");
-        awaitLog("server.log", "RIPVServer ready", Duration.ofSeconds(90));
+        processes.awaitLog("server.log", "RIPVServer ready", Duration.ofSeconds(90));
         Process passwd = new ProcessBuilder(java(), "-jar", jar("ripv-server"), "passwd", "--permit", data.resolve("permit.txt").toString(),
                 "alice", "--roles", "operators").redirectErrorStream(true).start();
         passwd.getOutputStream().write((PASSWORD + "\n").getBytes(StandardCharsets.UTF_8));
@@ -99,16 +68,16 @@ class FirstHourEndToEndTest {
         knownHosts = dir.resolve("known_hosts");
         secret = data.resolve("service.secret");
         String server = "127.0.0.1:" + registry;
-        launch("serial.log", java(), "-Dripv.host=localhost", "-jar", jar("ripv-services"), "serial", "--server", server,
+        processes.launch("serial.log", java(), "-Dripv.host=localhost", "-jar", jar("ripv-services"), "serial", "--server", server,
                 "--secret-file", secret.toString(), "--link", "listen://127.0.0.1:" + glider + ",name=sim01", "--carrier", "ignore",
                 "--no-enumerate");
-        launch("database.log", java(), "-Dripv.host=localhost", "-jar", jar("ripv-services"), "database", "--server", server,
+        processes.launch("database.log", java(), "-Dripv.host=localhost", "-jar", jar("ripv-services"), "database", "--server", server,
                 "--secret-file", secret.toString(), "--data", dir.resolve("database").toString());
-        launch("datavis.log", java(), "-Dripv.host=localhost", "-jar", jar("ripv-services"), "datavis", "--server", server,
+        processes.launch("datavis.log", java(), "-Dripv.host=localhost", "-jar", jar("ripv-services"), "datavis", "--server", server,
                 "--secret-file", secret.toString(), "--workdir", dir.resolve("vis").toString());
-        awaitLog("serial.log", "MailBoxes:", Duration.ofSeconds(90));
-        launch("simulator.log", java(), "-jar", jar("ripv-services"), "simulator", "--call", "127.0.0.1:" + glider, "--name", "sim01",
-                "--dive-seconds", "600", "--surface-seconds", "600", "--dir", dir.resolve("glider").toString());
+        processes.awaitLog("serial.log", "MailBoxes:", Duration.ofSeconds(90));
+        processes.launch("simulator.log", java(), "-jar", jar("ripv-services"), "simulator", "--call", "127.0.0.1:" + glider,
+                "--name", "sim01", "--dive-seconds", "600", "--surface-seconds", "600", "--dir", dir.resolve("glider").toString());
         // All three services registered and the glider on call.
         long end = System.nanoTime() + Duration.ofSeconds(120).toNanos();
         while (true) {
@@ -123,14 +92,7 @@ class FirstHourEndToEndTest {
 
     @AfterAll
     void stop() throws Exception {
-        for (Process p : processes) {
-            p.destroy();
-        }
-        for (Process p : processes) {
-            if (!p.waitFor(20, TimeUnit.SECONDS)) {
-                p.destroyForcibly();
-            }
-        }
+        processes.close();
     }
 
     record Result(int code, String out, String err, Duration took) {}
@@ -234,25 +196,25 @@ class FirstHourEndToEndTest {
 
     @Test
     void aServiceAtTheClientPortOrWithTheWrongSecretGivesUpWithAnError() throws Exception {
-        Process atClientPort = launch("clock-client-port.log", java(), "-jar", jar("ripv-common"),
+        Process atClientPort = processes.launch("clock-client-port.log", java(), "-jar", jar("ripv-common"),
                 "--server", "127.0.0.1:" + port, "--secret-file", secret.toString());
         Path wrong = Files.writeString(dir.resolve("wrong.secret"), "not-the-secret-at-all\n");
-        Process wrongSecret = launch("clock-wrong-secret.log", java(), "-jar", jar("ripv-common"),
+        Process wrongSecret = processes.launch("clock-wrong-secret.log", java(), "-jar", jar("ripv-common"),
                 "--server", "127.0.0.1:" + registry, "--secret-file", wrong.toString());
-        Process forever = launch("clock-forever.log", java(), "-jar", jar("ripv-common"),
+        Process forever = processes.launch("clock-forever.log", java(), "-jar", jar("ripv-common"),
                 "--server", "127.0.0.1:" + registry, "--secret-file", wrong.toString(), "--retry-forever");
 
-        assertThat(atClientPort.waitFor(120, TimeUnit.SECONDS)).as(log("clock-client-port.log")).isTrue();
+        assertThat(atClientPort.waitFor(120, TimeUnit.SECONDS)).as(processes.log("clock-client-port.log")).isTrue();
         assertThat(atClientPort.exitValue()).isEqualTo(1);
-        assertThat(log("clock-client-port.log")).contains("Error: 127.0.0.1:" + port + " is RIPV's client port",
+        assertThat(processes.log("clock-client-port.log")).contains("Error: 127.0.0.1:" + port + " is RIPV's client port",
                 "not the server's RMI registry", "(gave up after 5 tries; --retry-forever keeps trying)");
 
-        assertThat(wrongSecret.waitFor(120, TimeUnit.SECONDS)).as(log("clock-wrong-secret.log")).isTrue();
+        assertThat(wrongSecret.waitFor(120, TimeUnit.SECONDS)).as(processes.log("clock-wrong-secret.log")).isTrue();
         assertThat(wrongSecret.exitValue()).isEqualTo(1);
-        assertThat(log("clock-wrong-secret.log")).contains("cannot prove it holds the service secret", "--secret-file",
+        assertThat(processes.log("clock-wrong-secret.log")).contains("cannot prove it holds the service secret", "--secret-file",
                 "(try 1 of 5)", "(gave up after 5 tries; --retry-forever keeps trying)");
 
-        assertThat(log("clock-forever.log")).contains("cannot prove it holds the service secret").doesNotContain("gave up");
+        assertThat(processes.log("clock-forever.log")).contains("cannot prove it holds the service secret").doesNotContain("gave up");
         assertThat(forever.isAlive()).as("--retry-forever keeps trying").isTrue();
     }
 

@@ -10,8 +10,10 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.ripv.client.handlers.ClientSocketHandler;
 import org.ripv.examples.ClockService;
 import org.ripv.it.TestSystem;
+import org.ripv.messages.Priority;
 import org.ripv.testing.Tools;
 
 /**
@@ -66,12 +68,26 @@ class InteractiveCliTmuxTest {
         }
     }
 
+    /** Waits until the MailBox runs a request (its key is held: "busy" in {@code ?status}). */
+    void awaitRunning() throws Exception {
+        try (ClientSocketHandler c = sys.login("alice")) {
+            long end = System.nanoTime() + Duration.ofSeconds(60).toNanos();
+            String status;
+            while (!(status = c.call("", "?status " + BOX, Priority.NORMAL, Duration.ofSeconds(60), null).footer().replyText())
+                    .contains("busy")) {
+                assertThat(System.nanoTime()).as("the request reached the MailBox: " + status).isLessThan(end);
+                Thread.sleep(100);
+            }
+        }
+    }
+
     Tmux cli() throws Exception {
         Tmux t = new Tmux(220, 50, "bash", launcher.toString());
-        t.awaitText("Password for alice@localhost:");
+        // a JVM starting beside a loaded machine's other work: a first event, not a fixed time
+        t.await("the password prompt", Duration.ofSeconds(120), x -> x.contains("Password for alice@localhost:"));
         t.type(TestSystem.PASSWORD);
         t.keys("Enter");
-        String s = t.awaitText("alice@localhost> ");
+        String s = t.await("the prompt", Duration.ofSeconds(60), x -> x.contains("alice@localhost> "));
         assertThat(s).as("the password is not echoed").doesNotContain(TestSystem.PASSWORD);
         return t;
     }
@@ -82,30 +98,30 @@ class InteractiveCliTmuxTest {
             // Tab completes a server command...
             t.type("?mai");
             t.keys("Tab");
-            t.await("?mailboxes completed", Duration.ofSeconds(10), s -> Tmux.lastLine(s).contains("alice@localhost> ?mailboxes"));
+            t.await("?mailboxes completed", Duration.ofSeconds(30), s -> Tmux.lastLine(s).contains("alice@localhost> ?mailboxes"));
             t.keys("Enter");
             t.await("the MailBoxes, then the prompt again", Duration.ofSeconds(20),
                     s -> s.contains("TTY1: available") && Tmux.lastLine(s).equals("alice@localhost>"));
             // ... and a MailBox name after use.
             t.type("use <Cl");
             t.keys("Tab");
-            t.await("the MailBox completed", Duration.ofSeconds(10), s -> Tmux.lastLine(s).contains("use " + BOX));
+            t.await("the MailBox completed", Duration.ofSeconds(30), s -> Tmux.lastLine(s).contains("use " + BOX));
             t.keys("Enter");
             // The prompt shows the MailBox's handle.
-            t.await("the prompt with the MailBox", Duration.ofSeconds(10), s -> Tmux.lastLine(s).equals("alice@localhost TTY1>"));
+            t.await("the prompt with the MailBox", Duration.ofSeconds(30), s -> Tmux.lastLine(s).equals("alice@localhost TTY1>"));
             t.type("echo hello from tmux");
             t.keys("Enter");
             t.await("the reply, then the prompt again", Duration.ofSeconds(20),
                     s -> s.contains("\nhello from tmux\n") && Tmux.lastLine(s).equals("alice@localhost TTY1>"));
             // Up recalls the last command.
             t.keys("Up");
-            t.await("Up recalled the last command", Duration.ofSeconds(10),
+            t.await("Up recalled the last command", Duration.ofSeconds(30),
                     s -> Tmux.lastLine(s).equals("alice@localhost TTY1> echo hello from tmux"));
             t.keys("C-u");
             // Ctrl-C while a request runs: the wait ends at once, the CLI stays usable.
             t.type("sleep 20000");
             t.keys("Enter");
-            Thread.sleep(500);
+            awaitRunning(); // not a fixed pause: a Ctrl-C before the request left would only clear the line
             long before = System.nanoTime();
             t.keys("C-c");
             t.awaitText("Cancelled: stopped waiting for 'sleep 20000'; the server: ");
@@ -128,7 +144,7 @@ class InteractiveCliTmuxTest {
         // A new session recalls the last session's commands.
         try (Tmux t = cli()) {
             t.keys("Up");
-            t.await("Up recalled the previous session's last command", Duration.ofSeconds(10),
+            t.await("Up recalled the previous session's last command", Duration.ofSeconds(30),
                     s -> Tmux.lastLine(s).equals("alice@localhost> help"));
             t.keys("C-u");
             t.type("quit");
@@ -142,7 +158,7 @@ class InteractiveCliTmuxTest {
         try (Tmux t = cli()) {
             t.type("use " + BOX);
             t.keys("Enter");
-            t.await("the prompt with the MailBox", Duration.ofSeconds(10), s -> Tmux.lastLine(s).equals("alice@localhost TTY1>"));
+            t.await("the prompt with the MailBox", Duration.ofSeconds(30), s -> Tmux.lastLine(s).equals("alice@localhost TTY1>"));
             sys.close(); // the server goes away while the pilot reads...
             Thread.sleep(1000);
             sys = TestSystem.start(config); // ...and is back (restarted, or a standby took over)

@@ -1,7 +1,6 @@
 package org.ripv.it.ops;
 
 import static org.assertj.core.api.Assertions.assertThat;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.io.BufferedInputStream;
 import java.io.BufferedOutputStream;
@@ -10,14 +9,12 @@ import java.io.DataOutputStream;
 import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
-import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.api.io.TempDir;
 import org.ripv.client.handlers.ClientSocketHandler;
 import org.ripv.it.TestSystem;
@@ -33,7 +30,6 @@ import org.ripv.messages.Priority;
 import org.ripv.messages.Status;
 import org.ripv.messages.TablePages;
 import org.ripv.messages.TableResult;
-import org.ripv.server.permit.PermitFile;
 import org.ripv.wire.FrameCodec;
 
 /**
@@ -53,67 +49,27 @@ class QueryStreamEndToEndTest {
 
     @TempDir
     Path tmp;
-    final List<Process> started = new ArrayList<>();
 
-    Process launch(String name, String heap, String module, String... args) throws Exception {
-        List<String> cmd = new ArrayList<>(List.of(org.ripv.it.TestJvms.java(),
-                heap, "-XX:+ExitOnOutOfMemoryError", "-Duser.home=" + tmp.resolve("home"), "-jar",
-                LaunchedDataLoopTest.jar(module).toString()));
-        cmd.addAll(List.of(args));
-        ProcessBuilder pb = new ProcessBuilder(cmd).directory(tmp.toFile()).redirectErrorStream(true)
-                .redirectOutput(tmp.resolve(name + ".log").toFile());
-        pb.environment().put("HOME", tmp.resolve("home").toString());
-        Process p = pb.start();
-        started.add(p);
-        return p;
-    }
-
-    String log(String name) throws Exception {
-        return Files.readString(tmp.resolve(name + ".log"), StandardCharsets.UTF_8);
-    }
-
-    @AfterEach
-    void stop() throws Exception {
-        for (int i = started.size() - 1; i >= 0; i--) {
-            started.get(i).destroy();
-        }
-        for (Process p : started) {
-            if (!p.waitFor(20, TimeUnit.SECONDS)) {
-                p.destroyForcibly();
-            }
-        }
-    }
+    @RegisterExtension
+    final LaunchedSystem sys = new LaunchedSystem().startup(T);
 
     @Test
     void aResultLargerThanEveryHeapStreamsInOrderAndACancelMidResultStopsTheStatement() throws Exception {
-        for (String m : List.of("ripv-server", "ripv-services")) {
-            assumeTrue(Files.isRegularFile(LaunchedDataLoopTest.jar(m)), "needs the jars (mvn verify builds them before this module's tests)");
-        }
-        int[] p = LaunchedDataLoopTest.freePorts(3);
-        Path data = tmp.resolve("ripv-data");
-        Files.createDirectories(tmp.resolve("home"));
-        Process server = launch("server", "-Xmx48m", "ripv-server", "server", "--data", data.toString(), "--port", "" + p[0],
-                "--registry-port", "" + p[1], "--http-port", "0", "--outbound-port", "" + p[2], "--plain");
-        long end = System.nanoTime() + T.toNanos();
-        while (!log("server").contains("RIPVServer ready")) {
-            assertThat(System.nanoTime()).as(log("server")).isLessThan(end);
-            assertThat(server.isAlive()).as(log("server")).isTrue();
-            Thread.sleep(200);
-        }
-        PermitFile.setUser(data.resolve("permit.txt"), "alice", TestSystem.PASSWORD.toCharArray(), List.of("operators"), 1000);
-        Process service = launch("database", "-Xmx40m", "ripv-services", "database", "--server", "localhost:" + p[1],
-                "--secret-file", data.resolve("service.secret").toString(), "--data", tmp.resolve("db").toString(),
+        LaunchedSystem.assumeJars();
+        // a heap smaller than the result; the last -Xmx on the command line is the one the JVM takes
+        Process server = sys.startServer(List.of("-Xmx48m", "-XX:+ExitOnOutOfMemoryError"), "--plain");
+        Process service = sys.startService("database", List.of("-Xmx40m", "-XX:+ExitOnOutOfMemoryError"), "database",
+                "--data", tmp.resolve("db").toString(),
                 "--max-rows", "1000000", "--max-result-chars", "1000000000", "--query-timeout", "600");
 
-        try (ClientSocketHandler c = ClientSocketHandler.connectPlain("localhost", p[0])) {
-            loginWhenThePermitFileIsRead(c);
+        try (ClientSocketHandler c = loginWhenThePermitFileIsRead(sys.clientPort)) {
             String db = awaitDatabase(c, service);
             setUp(c, db);
 
             // 1. Every row, in order, through both heaps.
             long t0 = System.nanoTime();
             OutgoingServerMessage r = c.call(db, "SELECT n, label FROM wide ORDER BY n", Priority.NORMAL, T, null);
-            assertThat(r.status()).as(r.footer().replyText() + "\n" + log("database")).isEqualTo(Status.OK);
+            assertThat(r.status()).as(r.footer().replyText() + "\n" + sys.log("database")).isEqualTo(Status.OK);
             TableResult t = (TableResult) r.footer().result();
             assertThat(t.rows()).hasSize(ROWS);
             long chars = 0;
@@ -129,11 +85,11 @@ class QueryStreamEndToEndTest {
             System.out.printf("100,000 rows, %d MB of text, in %d ms%n", chars / 1_000_000, (System.nanoTime() - t0) / 1_000_000);
             t = null;
             r = null;
-            assertThat(server.isAlive()).as("the server (-Xmx48m) lives: " + log("server")).isTrue();
-            assertThat(service.isAlive()).as("the service (-Xmx40m) lives: " + log("database")).isTrue();
+            assertThat(server.isAlive()).as("the server (-Xmx48m) lives: " + sys.log("server")).isTrue();
+            assertThat(service.isAlive()).as("the service (-Xmx40m) lives: " + sys.log("database")).isTrue();
 
             // 2. A client that stops reading after the first page, then cancels.
-            cancelMidResult(p[0], db);
+            cancelMidResult(sys.clientPort, db);
             long t1 = System.nanoTime();
             OutgoingServerMessage next = c.call(db, "SELECT COUNT(*) AS n FROM wide", Priority.NORMAL, T, null);
             assertThat(next.status()).as(next.footer().replyText()).isEqualTo(Status.OK);
@@ -143,7 +99,8 @@ class QueryStreamEndToEndTest {
             // The cancel's interrupt reaches the query either while it waits for its reader ('cancelled while sending
             // its rows') or inside Derby, which closes the connection ("cancelled: Connection closed by unknown
             // interrupt"; the next command reconnects): both stopped the statement, as the free MailBox above shows.
-            assertThat(log("database")).containsPattern("'SELECT a\\.n, b\\.label FROM wide a, wide b' cancelled( while sending its rows|: )");
+            assertThat(sys.log("database"))
+                    .containsPattern("'SELECT a\\.n, b\\.label FROM wide a, wide b' cancelled( while sending its rows|: )");
             assertThat(server.isAlive() && service.isAlive()).isTrue();
         }
     }
@@ -193,13 +150,20 @@ class QueryStreamEndToEndTest {
         }
     }
 
-    private static void loginWhenThePermitFileIsRead(ClientSocketHandler c) throws Exception {
+    /**
+     * Alice's session, once the server has read the permit file the test wrote. A connection that
+     * has not logged in within the server's login deadline (10 s, which a loaded machine can use up
+     * between refusals) is closed by the server: then a new one.
+     */
+    private static ClientSocketHandler loginWhenThePermitFileIsRead(int port) throws Exception {
         long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
         while (true) {
+            ClientSocketHandler c = ClientSocketHandler.connectPlain("localhost", port);
             try {
                 c.login("alice", TestSystem.PASSWORD.toCharArray());
-                return;
-            } catch (org.ripv.client.handlers.RipvErrorException e) {
+                return c;
+            } catch (org.ripv.client.handlers.RipvErrorException | java.io.IOException e) {
+                c.close();
                 assertThat(System.nanoTime()).as("logged in: " + e.getMessage()).isLessThan(end);
                 Thread.sleep(300);
             }
@@ -215,8 +179,8 @@ class QueryStreamEndToEndTest {
                     return b.address();
                 }
             }
-            assertThat(service.isAlive()).as(log("database")).isTrue();
-            assertThat(System.nanoTime()).as("the DatabaseServer registered: " + log("database")).isLessThan(end);
+            assertThat(service.isAlive()).as(sys.log("database")).isTrue();
+            assertThat(System.nanoTime()).as("the DatabaseServer registered: " + sys.log("database")).isLessThan(end);
             Thread.sleep(300);
         }
     }

@@ -2,22 +2,19 @@ package org.ripv.it.security;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import java.io.ByteArrayInputStream;
 import java.io.ByteArrayOutputStream;
-import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.ripv.client.cli.CliCommand;
 import org.ripv.client.handlers.ClientSocketHandler;
+import org.ripv.it.InJvmCli;
 import org.ripv.it.TestSystem;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.Header;
@@ -29,7 +26,6 @@ import org.ripv.services.serial.LinkSettings;
 import org.ripv.services.serial.SerialPortServer;
 import org.ripv.services.serial.ymodem.YmodemConfig;
 import org.ripv.services.simulator.GliderSimulator;
-import picocli.CommandLine;
 
 /**
  * Issue 10, attack 1: a user allowed only {@code dir*} (and an operator allowed everything) sends
@@ -124,16 +120,6 @@ class CommandInjectionAttackTest {
     }
 
     private int cli(String user, String... lines) {
-        out.reset();
-        err.reset();
-        List<String> all = new ArrayList<>(List.of("--server", "localhost:" + sys.server().port(), "--user", user,
-                "--password", TestSystem.PASSWORD, "--timeout", "60"));
-        for (String l : lines) {
-            all.add("--exec");
-            all.add(l);
-        }
-        CliCommand cmd = new CliCommand(new ByteArrayInputStream(new byte[0]),
-                new PrintStream(out, true, StandardCharsets.UTF_8), new PrintStream(err, true, StandardCharsets.UTF_8));
-        return new CommandLine(cmd).execute(all.toArray(String[]::new));
+        return InJvmCli.exec(out, err, InJvmCli.as(user, "localhost:" + sys.server().port(), "--timeout", "60"), lines);
     }
 }

@@ -271,6 +271,11 @@ public final class SocketHandler implements Connection.Receiver {
         return !closed && (peer != null ? peer.push(message, written) : writer.push(message, frame, written));
     }
 
+    /** As above, with the encoded frame asked for only when this client writes frames (not a web page's). */
+    public boolean push(OutgoingServerMessage message, java.util.function.Supplier<byte[]> frame, Runnable written) {
+        return !closed && (peer != null ? peer.push(message, written) : writer.push(message, frame.get(), written));
+    }
+
     /** Bytes from the client, on its selector thread: whole frames go to the dispatcher. */
     @Override
     public void received(ByteBuffer bytes) {

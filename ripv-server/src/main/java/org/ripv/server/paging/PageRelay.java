@@ -60,7 +60,7 @@ public final class PageRelay {
             cancel(service, h);
             return;
         }
-        if (!client.get().push(page, null, () -> more(service, h))) {
+        if (!client.get().push(page, (byte[]) null, () -> more(service, h))) {
             // Its queue is half full of what it has not read: stop the query rather than hold its rows.
             log.info("client {} is not reading the rows of #{}: stopping the query", h.origin().clientId(), h.messageId());
             cancel(service, h);

@@ -42,7 +42,15 @@ public final class ConnectionGate {
         }
     }
 
-    private record Pending(InetAddress address, ScheduledFuture<?> deadline) {}
+    /**
+     * A connection not logged in yet, with {@code leftNanos} of its time to log in left when its
+     * deadline was last set; {@code deadline} is null while its {@code ?login} is being checked.
+     */
+    private record Pending(InetAddress address, Runnable expire, ScheduledFuture<?> deadline, long setAt, long leftNanos) {
+        long leftNow() {
+            return Math.max(0, leftNanos - (System.nanoTime() - setAt));
+        }
+    }
 
     private final Limits limits;
     private final ScheduledExecutorService timer;
@@ -94,18 +102,50 @@ public final class ConnectionGate {
         if (pending.size() >= limits.maxPending()) {
             return pending.size() + " connections have not logged in yet";
         }
-        ScheduledFuture<?> f = timer.schedule(() -> {
-            if (isPending(clientId)) {
-                expire.run();
-            }
-        }, limits.loginDeadline().toMillis(), TimeUnit.MILLISECONDS);
-        pending.put(clientId, new Pending(address, f));
+        long left = limits.loginDeadline().toNanos();
+        pending.put(clientId, new Pending(address, expire, deadline(clientId, expire, left), System.nanoTime(), left));
         pendingPerAddress.merge(address, 1, Integer::sum);
         return null;
     }
 
+    private ScheduledFuture<?> deadline(String clientId, Runnable expire, long nanos) {
+        return timer.schedule(() -> {
+            if (isPending(clientId)) {
+                expire.run();
+            }
+        }, nanos, TimeUnit.NANOSECONDS);
+    }
+
+    /**
+     * The connection's {@code ?login} arrived and waits for its check: its deadline stops. On a
+     * loaded machine the PBKDF2 checks queued before it, and its own, could take the rest of a
+     * client's time, and the server closed a connection that had sent the right password in time.
+     */
+    public synchronized void checking(String clientId) {
+        Pending p = pending.get(clientId);
+        if (p != null && p.deadline() != null) {
+            p.deadline().cancel(false);
+            pending.put(clientId, new Pending(p.address(), p.expire(), null, System.nanoTime(), p.leftNow()));
+        }
+    }
+
+    /**
+     * The check ended. Still not logged in (refused): the deadline goes on with the time that was
+     * left when the check began, so a connection that never logs in holds its place no longer than
+     * the deadline of its own time, however many checks it asked for.
+     */
+    public synchronized void checked(String clientId) {
+        Pending p = pending.get(clientId);
+        if (p != null && p.deadline() == null) {
+            long left = p.leftNanos();
+            pending.put(clientId, new Pending(p.address(), p.expire(), deadline(clientId, p.expire(), left), System.nanoTime(), left));
+        }
+    }
+
+    /** Pending and not being checked. */
     private synchronized boolean isPending(String clientId) {
-        return pending.containsKey(clientId);
+        Pending p = pending.get(clientId);
+        return p != null && p.deadline() != null;
     }
 
     /**
@@ -131,7 +171,9 @@ public final class ConnectionGate {
     private void release(String clientId) {
         Pending p = pending.remove(clientId);
         if (p != null) {
-            p.deadline().cancel(false);
+            if (p.deadline() != null) {
+                p.deadline().cancel(false);
+            }
             pendingPerAddress.computeIfPresent(p.address(), (a, n) -> n <= 1 ? null : n - 1);
         }
     }

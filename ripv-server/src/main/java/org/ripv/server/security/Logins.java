@@ -62,15 +62,18 @@ public final class Logins implements AutoCloseable {
      */
     public void loginLater(SocketHandler client, IncomingServerMessage request) {
         client.holdReading();
+        gate.checking(client.clientId());
         try {
             waiting.execute(() -> {
                 try {
                     login(client, request);
                 } finally {
+                    gate.checked(client.clientId());
                     client.resumeReading();
                 }
             });
         } catch (RejectedExecutionException e) {
+            gate.checked(client.clientId());
             String[] words = request.header().body().trim().split("\\s+");
             Audit.log(true, "login-busy", "user", words.length > 1 ? words[1] : "", "from",
                     client.remoteInetAddress().getHostAddress(), "via", "client " + client.clientId());

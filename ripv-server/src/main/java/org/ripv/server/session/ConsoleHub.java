@@ -10,6 +10,9 @@ import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Phaser;
 import java.util.function.BiFunction;
 import java.util.function.Consumer;
 import org.ripv.messages.ConsoleEntry;
@@ -38,6 +41,12 @@ public final class ConsoleHub implements AutoCloseable {
     public static final int MAX_MAILBOXES_PER_SERVICE = 1_000;
     private static final long DAY_MILLIS = 24L * 3600 * 1000;
     private final Map<String, Set<String>> mailboxesOf = new ConcurrentHashMap<>();
+    /**
+     * A MailBox's first this many watchers get each push on the thread that takes the entries;
+     * those beyond are spread over {@link #fanOut} threads, one per core, so that a line reaches
+     * 1,000 pages in a fraction of the time one thread's 1,000 socket writes take (issue 38).
+     */
+    static final int INLINE_WATCHERS = 64;
 
     /** An event with what a notification needs: the MailBox's state and its last lines. */
     public record Notice(ConsoleEntry event, SessionState state, List<ConsoleEntry> lastLines) {}
@@ -53,6 +62,14 @@ public final class ConsoleHub implements AutoCloseable {
     private final Map<String, CopyOnWriteArrayList<Watcher>> watchers = new ConcurrentHashMap<>();
     private final Map<String, Set<Watcher>> byClient = new ConcurrentHashMap<>();
     private final Object order = new Object();
+    /**
+     * Fan-out threads: shard {@code i} (1 and up) runs on {@code fanOut[i - 1]}, shard 0 on the
+     * taking thread under {@link #order}. A watcher keeps its shard for life, and each shard's
+     * pushes run in the order the lines were taken, so every page still gets its lines in order.
+     */
+    private final ExecutorService[] fanOut;
+    /** The next shard for a watcher beyond a MailBox's {@link #INLINE_WATCHERS}; guarded by {@code order}. */
+    private int nextShard;
     /** Set under {@link #order} by {@link #close}: no entry is taken after the states and transcript stop. */
     private boolean closing;
     /** The last console sequence number given; guarded by {@code order}. */
@@ -76,6 +93,11 @@ public final class ConsoleHub implements AutoCloseable {
         this.encoder = encoder;
         this.transcript = new Transcript(transcripts, store, keepDays, dayCap);
         this.states = new VehicleStates(store);
+        this.fanOut = new ExecutorService[Math.max(0, Math.min(8, Runtime.getRuntime().availableProcessors()) - 1)];
+        for (int i = 0; i < fanOut.length; i++) {
+            String name = "ripv-console-fanout-" + (i + 1);
+            fanOut[i] = Executors.newSingleThreadExecutor(r -> new FanOutThread(r, name));
+        }
     }
 
     /**
@@ -230,6 +252,7 @@ public final class ConsoleHub implements AutoCloseable {
         }
         List<Notice> events = new ArrayList<>();
         List<ConsoleEntry> numbered = new ArrayList<>(entries.size());
+        Phaser spread = new Phaser(1);
         synchronized (order) {
             if (closing) {
                 return false;
@@ -248,19 +271,36 @@ public final class ConsoleHub implements AutoCloseable {
             byMailbox.forEach((mailbox, list) -> {
                 List<Watcher> ws = watchers.get(mailbox);
                 if (ws != null && !ws.isEmpty()) {
-                    OutgoingServerMessage m = Watcher.message(mailbox, list, 0);
-                    byte[] frame;
-                    try {
-                        frame = encoder.encode(m);
-                    } catch (IOException x) {
-                        frame = null; // too large for one frame: each writer reports it
-                    }
-                    Watcher.Shared shared = new Watcher.Shared(m, frame);
-                    for (Watcher w : ws) {
-                        w.offer(list, shared);
+                    Watcher.Shared shared = new Watcher.Shared(Watcher.message(mailbox, list, 0), encoder);
+                    if (ws.size() <= INLINE_WATCHERS || fanOut.length == 0) {
+                        for (Watcher w : ws) {
+                            if (w.shard == 0) {
+                                w.offer(list, shared);
+                            } else {
+                                spread(spread, w.shard, new Watcher[] {w}, list, shared);
+                            }
+                        }
+                    } else {
+                        Watcher[] all = ws.toArray(new Watcher[0]); // who watches now: a later watch got these lines in its replay
+                        for (int shard = 1; shard <= fanOut.length; shard++) {
+                            spread(spread, shard, all, list, shared);
+                        }
+                        for (Watcher w : all) {
+                            if (w.shard == 0) {
+                                w.offer(list, shared);
+                            }
+                        }
                     }
                 }
             });
+        }
+        // Before the service is answered: a service publishing faster than the pages are written to
+        // waits, as it did when one thread wrote them all. Never under the lock nor on a fan-out
+        // thread: a write that fails closes its page, whose released locks are entries taken here.
+        if (Thread.holdsLock(order) || Thread.currentThread() instanceof FanOutThread) {
+            spread.arriveAndDeregister();
+        } else {
+            spread.arriveAndAwaitAdvance();
         }
         try {
             taps.accept(numbered);
@@ -275,6 +315,36 @@ public final class ConsoleHub implements AutoCloseable {
             }
         }
         return true;
+    }
+
+    /** A thread that writes pushes for the hub (see {@link #fanOut}). */
+    private static final class FanOutThread extends Thread {
+        FanOutThread(Runnable r, String name) {
+            super(r, name);
+            setDaemon(true);
+        }
+    }
+
+    /** Offers a push on shard {@code shard}'s thread to those of {@code ws} on that shard; under {@code order}, so in the order taken. */
+    private void spread(Phaser spread, int shard, Watcher[] ws, List<ConsoleEntry> list, Watcher.Shared shared) {
+        spread.register();
+        try {
+            fanOut[shard - 1].execute(() -> {
+                try {
+                    for (Watcher w : ws) {
+                        if (w.shard == shard) {
+                            w.offer(list, shared);
+                        }
+                    }
+                } catch (RuntimeException x) {
+                    log.warn("a console push failed: {}", x.toString());
+                } finally {
+                    spread.arriveAndDeregister();
+                }
+            });
+        } catch (java.util.concurrent.RejectedExecutionException closing) {
+            spread.arriveAndDeregister(); // the hub is closing: the watchers are stopped
+        }
     }
 
     /**
@@ -292,7 +362,10 @@ public final class ConsoleHub implements AutoCloseable {
             if (mine.size() >= MAX_WATCHES_PER_CLIENT) {
                 return "a connection may watch at most " + MAX_WATCHES_PER_CLIENT + " MailBoxes";
             }
-            Watcher w = new Watcher(clientId, user, mailbox, outlet);
+            List<Watcher> already = watchers.get(mailbox);
+            int shard = already == null || already.size() < INLINE_WATCHERS || fanOut.length == 0 ? 0
+                    : nextShard++ % (fanOut.length + 1);
+            Watcher w = new Watcher(clientId, user, mailbox, outlet, shard);
             mine.add(w);
             watchers.computeIfAbsent(mailbox, k -> new CopyOnWriteArrayList<>()).add(w);
             // Still under the lock, so no push can come first; and if sending closes the
@@ -423,6 +496,9 @@ public final class ConsoleHub implements AutoCloseable {
             byClient.values().forEach(s -> s.forEach(Watcher::stop));
             byClient.clear();
             watchers.clear();
+        }
+        for (ExecutorService e : fanOut) {
+            e.shutdown();
         }
         states.close();
         transcript.close();

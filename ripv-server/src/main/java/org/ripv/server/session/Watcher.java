@@ -36,7 +36,11 @@ final class Watcher {
     final String clientId;
     final String user;
     final String mailbox;
+    /** Which of the hub's fan-out threads offers this watcher its pushes: 0 is the taking thread (ConsoleHub). */
+    final int shard;
     private final Outlet outlet;
+    /** What runs when a push has been written: one object for every push, not one each. */
+    private final Runnable onWritten = this::written;
     private final ArrayDeque<ConsoleEntry> backlog = new ArrayDeque<>();
     private long skipped;
     private long skippedFrom;
@@ -44,15 +48,51 @@ final class Watcher {
     private int inFlight;
     private volatile boolean stopped;
 
-    Watcher(String clientId, String user, String mailbox, Outlet outlet) {
+    Watcher(String clientId, String user, String mailbox, Outlet outlet, int shard) {
         this.clientId = clientId;
         this.user = user;
         this.mailbox = mailbox;
         this.outlet = outlet;
+        this.shard = shard;
     }
 
-    /** A push built and encoded once for every watcher that is up to date. */
-    record Shared(OutgoingServerMessage message, byte[] frame) {}
+    /**
+     * A push built once for every watcher that is up to date, and encoded once when the first
+     * socket client asks (web pages write their own JSON: PushJson).
+     */
+    static final class Shared implements java.util.function.Supplier<byte[]> {
+        private static final byte[] NONE = new byte[0];
+        final OutgoingServerMessage message;
+        private final ConsoleHub.Encoder encoder;
+        private volatile byte[] frame;
+
+        Shared(OutgoingServerMessage message, ConsoleHub.Encoder encoder) {
+            this.message = message;
+            this.encoder = encoder;
+        }
+
+        /** The encoded push, or null when it is too large for one frame (each writer then reports it). */
+        @Override
+        public byte[] get() {
+            byte[] f = frame;
+            if (f == null) {
+                synchronized (this) {
+                    f = frame;
+                    if (f == null) {
+                        try {
+                            f = encoder.encode(message);
+                        } catch (java.io.IOException x) {
+                            f = NONE;
+                        }
+                        frame = f;
+                    }
+                }
+            }
+            return f == NONE ? null : f;
+        }
+    }
+
+    private static final java.util.function.Supplier<byte[]> NOT_ENCODED = () -> null;
 
     /** Takes new entries; pushes at once if nothing is in flight. The shared push is used when it can be. */
     void offer(List<ConsoleEntry> entries, Shared shared) {
@@ -79,7 +119,7 @@ final class Watcher {
             }
         }
         if (now != null) {
-            send(now.message(), now.frame());
+            send(now.message, now);
         } else {
             pump();
         }
@@ -106,11 +146,11 @@ final class Watcher {
             next = message(mailbox, batch, lost);
             inFlight++;
         }
-        send(next, null);
+        send(next, NOT_ENCODED);
     }
 
-    private void send(OutgoingServerMessage m, byte[] frame) {
-        if (!outlet.push(m, frame, this::written)) {
+    private void send(OutgoingServerMessage m, java.util.function.Supplier<byte[]> frame) {
+        if (!outlet.push(m, frame, onWritten)) {
             synchronized (this) {
                 inFlight--; // the connection is closing, or full of replies: the next entry tries again
             }

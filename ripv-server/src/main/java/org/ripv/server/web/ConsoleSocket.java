@@ -11,6 +11,7 @@ import java.util.concurrent.atomic.AtomicInteger;
 import org.eclipse.jetty.websocket.api.Callback;
 import org.eclipse.jetty.websocket.api.Session;
 import org.eclipse.jetty.websocket.common.WebSocketSession;
+import org.eclipse.jetty.websocket.core.CoreSession;
 import org.eclipse.jetty.websocket.core.Frame;
 import org.eclipse.jetty.websocket.core.OpCode;
 import org.ripv.messages.Attachment;
@@ -52,6 +53,13 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
     private final InetAddress address;
     private final AtomicInteger queued = new AtomicInteger();
     private volatile Session socket;
+    /** The socket's core session, where a shared push's frame goes (set with {@link #socket}). */
+    private volatile CoreSession core;
+    /**
+     * False once the page's socket closed or is being closed: checked per push without asking
+     * Jetty, whose own check takes the session's lock (the frame's send checks again).
+     */
+    private volatile boolean open;
     private volatile SocketHandler client;
 
     ConsoleSocket(WebSessions sessions, WebSessions.Session login, PostOfficeDoor door, PushJson json, InetAddress address) {
@@ -64,6 +72,7 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
 
     @Override
     public void onWebSocketOpen(Session session) {
+        this.core = ((WebSocketSession) session).getCoreSession();
         this.socket = session;
         String refused = sessions.admitSocket(login, this);
         if (refused != null) {
@@ -71,6 +80,7 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
             session.close(1008, truncate(refused), Callback.NOOP);
             return;
         }
+        this.open = true;
         try {
             client = door.open(this, login.user, login.roles);
         } catch (IOException e) {
@@ -154,11 +164,11 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
      * UTF-8 copy of the text.
      */
     private boolean sendShared(ByteBuffer utf8, Runnable written) {
-        Session s = socket;
-        if (s == null || !s.isOpen() || !admit()) {
+        CoreSession s = core;
+        if (s == null || !open || !admit()) {
             return false;
         }
-        ((WebSocketSession) s).getCoreSession().sendFrame(new Frame(OpCode.TEXT, utf8.slice()), new org.eclipse.jetty.util.Callback() {
+        s.sendFrame(new Frame(OpCode.TEXT, utf8.slice()), new org.eclipse.jetty.util.Callback() {
             @Override
             public void succeeded() {
                 ConsoleSocket.this.written(written);
@@ -222,6 +232,7 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
      */
     @Override
     public void close() {
+        open = false;
         login.sockets.remove(this);
         SocketHandler c = client;
         if (c != null) {

@@ -21,14 +21,19 @@ final class PushJson {
     private final AtomicReferenceArray<Entry> slots = new AtomicReferenceArray<>(SLOTS);
     private final WebReplies replies = new WebReplies();
 
-    /** The push's UTF-8 JSON, shared: callers send a slice of it and never write into it (a read-only buffer has no array for Jetty to write from). */
+    /**
+     * The push's UTF-8 JSON, shared: callers send a slice of it and never write into it. A direct
+     * buffer, so each page's write hands the kernel these bytes as they are (issue 38).
+     */
     ByteBuffer of(OutgoingServerMessage m) {
         int i = System.identityHashCode(m) & (SLOTS - 1);
         Entry e = slots.get(i);
         if (e != null && e.message() == m) {
             return e.utf8();
         }
-        ByteBuffer utf8 = ByteBuffer.wrap(replies.toJson(m).getBytes(StandardCharsets.UTF_8));
+        byte[] bytes = replies.toJson(m).getBytes(StandardCharsets.UTF_8);
+        // Direct: the JDK writes a heap buffer by copying it into a direct one first, once per page.
+        ByteBuffer utf8 = ByteBuffer.allocateDirect(bytes.length).put(bytes).flip();
         slots.set(i, new Entry(m, utf8));
         return utf8;
     }

@@ -115,6 +115,25 @@ class StateStoreContractTest {
         assertThat(first.unreadable()).isZero();
     }
 
+    /**
+     * A transcript is in the order entries were appended, not by their times: entries stamped in
+     * the same millisecond, or by a service whose clock is behind the server's, keep their order
+     * (StateStoreRestartTest reads the newest two after a restart).
+     */
+    @ParameterizedTest
+    @EnumSource(Kind.class)
+    void entriesOfTheSameOrAnEarlierTimeStayInTheOrderTheyWereAppended(Kind kind) throws Exception {
+        StateStore s = open(kind);
+        s.appendTranscript(List.of(line(T0 + 5, A, "first"), line(T0 + 5, A, "second"), line(T0 + 1, A, "third")));
+        s.appendTranscript(List.of(line(T0 + 5, A, "fourth"), line(T0, A, "fifth")));
+        s = reopen(kind, s);
+
+        assertThat(texts(s.readTranscript(A, 0, 10, false))).containsExactly("first", "second", "third", "fourth", "fifth");
+        assertThat(texts(s.readTranscript(A, 0, 2, true))).containsExactly("fourth", "fifth");
+        assertThat(texts(s.readTranscript(A, 0, 4, true))).containsExactly("second", "third", "fourth", "fifth");
+        assertThat(texts(s.readTranscript(A, T0 + 5, 10, false))).containsExactly("first", "second", "fourth");
+    }
+
     @ParameterizedTest
     @EnumSource(Kind.class)
     void aVehiclesCallStateIsReplacedWholeAndOutlivesTheStore(Kind kind) throws Exception {

@@ -1,5 +1,6 @@
 package org.ripv.services.bench;
 
+import java.io.IOException;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.nio.file.Files;
@@ -114,29 +115,37 @@ public final class YmodemBenchmark {
 
     private Row sbToOurs(int baud, Path file) throws Exception {
         Path out = Files.createDirectories(dir.resolve("sb-" + baud));
-        try (Socat.Served socat = Socat.serve(file.getParent(), "sb --ymodem -k -q " + file.getFileName());
-             YmodemBaudRelay relay = new YmodemBaudRelay(baud, socat.address())) {
-            long start = System.nanoTime();
-            try (TcpLink link = TcpLink.connect("tcp://127.0.0.1:" + relay.port(), 5000)) {
-                new YmodemReceiver(link, YmodemConfig.lrzsz(), null).receiveBatch(new DirectorySink(out));
-            }
-            double seconds = (System.nanoTime() - start) / 1e9;
-            socat.process().waitFor(30, TimeUnit.SECONDS);
-            return new Row("lrzsz sb → RIPV", baud, Files.size(file), seconds, Socat.sameBytes(file, out.resolve(file.getFileName())));
-        }
+        return withLrzsz("lrzsz sb → RIPV", baud, file, out, file.getParent(), "sb --ymodem -k -q " + file.getFileName(),
+                link -> new YmodemReceiver(link, YmodemConfig.lrzsz(), null).receiveBatch(new DirectorySink(out)));
     }
 
     private Row oursToRb(int baud, Path file) throws Exception {
         Path out = Files.createDirectories(dir.resolve("rb-" + baud));
-        try (Socat.Served socat = Socat.serve(out, "rb --ymodem -y -q");
+        return withLrzsz("RIPV → lrzsz rb", baud, file, out, out, "rb --ymodem -y -q",
+                link -> new YmodemSender(link, YmodemConfig.lrzsz(), null).sendBatch(List.of(SendFile.of(file))));
+    }
+
+    /** Our end of a transfer with lrzsz, over the link to it. */
+    @FunctionalInterface
+    private interface OurEnd {
+        void transfer(TcpLink link) throws IOException;
+    }
+
+    /**
+     * One transfer between our end and lrzsz's {@code command} behind socat (run in {@code lrzszDir}),
+     * through the relay: timed from our connecting until our end is done.
+     */
+    private static Row withLrzsz(String pair, int baud, Path file, Path out, Path lrzszDir, String command, OurEnd ours)
+            throws Exception {
+        try (Socat.Served socat = Socat.serve(lrzszDir, command);
              YmodemBaudRelay relay = new YmodemBaudRelay(baud, socat.address())) {
             long start = System.nanoTime();
             try (TcpLink link = TcpLink.connect("tcp://127.0.0.1:" + relay.port(), 5000)) {
-                new YmodemSender(link, YmodemConfig.lrzsz(), null).sendBatch(List.of(SendFile.of(file)));
+                ours.transfer(link);
             }
             double seconds = (System.nanoTime() - start) / 1e9;
             socat.process().waitFor(30, TimeUnit.SECONDS);
-            return new Row("RIPV → lrzsz rb", baud, Files.size(file), seconds, Socat.sameBytes(file, out.resolve(file.getFileName())));
+            return new Row(pair, baud, Files.size(file), seconds, Socat.sameBytes(file, out.resolve(file.getFileName())));
         }
     }
 

@@ -1,20 +1,15 @@
 package org.ripv.services.database;
 
 import java.sql.Connection;
-import java.sql.DriverManager;
 import java.sql.ResultSet;
-import java.sql.ResultSetMetaData;
 import java.sql.SQLException;
 import java.sql.SQLTimeoutException;
 import java.sql.Statement;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Objects;
-import java.util.Properties;
 import org.ripv.dac.delivery.Deliveries;
 import org.ripv.messages.ErrorCode;
-import org.ripv.messages.PackedRows;
 import org.ripv.messages.TableResult;
 import org.ripv.messages.UpdateCount;
 import org.ripv.service.Availability;
@@ -42,11 +37,11 @@ import org.slf4j.LoggerFactory;
  * state a statement changes ({@code SET SCHEMA}, isolation, an open transaction) is reset before
  * the next command, so it never carries over to another user of the shared connection.
  *
+ * <p>A query's rows leave in pages ({@link ResultPages}); what runs now, its cancel and its time
+ * limit are {@link RunningStatement}'s.
+ *
  * <p>Threading: {@link #execute} runs on the MailBox's one worker thread, so the connections
  * need no locking; {@link #availability} reads a volatile snapshot from any thread.
- *
- * <p>Longer than 400 lines for one job: the two connections, their reset between users, the
- * running statement (for cancel) and the query's paging share one MailBox thread's state.
  */
 public final class DatabaseHandler implements CommandHandler, AutoCloseable {
     private static final Logger log = LoggerFactory.getLogger(DatabaseHandler.class);
@@ -57,26 +52,12 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
     public static final String WRITER_ROLE = "db-writer";
     /** The operators' role: they command vehicles and may change the database. */
     public static final String OPERATORS_ROLE = "operators";
-    /** Longest text kept of one cell; the rest is cut with a note. */
-    static final int MAX_CELL_CHARS = 10_000;
-
     private final DatabaseTarget target;
     private final QueryLimits limits;
     private final IngestCommand ingest;
-    private Connection owner;
-    private Connection reader;
-    private Defaults ownerDefaults;
-    private Defaults readerDefaults;
-
-    /** A connection's session state as opened, to which it is reset before each command. */
-    private record Defaults(String schema, int isolation) {}
+    private final SessionConnections connections;
     private volatile Availability availability;
-    /** The statement running now and its thread, for {@link #cancel}; guarded by {@code this}. */
-    private Statement runningStatement;
-    private Thread runningThread;
-    private volatile boolean cancelRequested;
-    /** True while an ingest runs (it has no one statement to cancel: it looks at cancelRequested between rows). */
-    private boolean ingesting;
+    private final RunningStatement running;
     private IngestLimits ingestLimits = IngestLimits.defaults();
     private Deliveries deliveries = Deliveries.NONE;
 
@@ -89,6 +70,8 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
         this.target = target;
         this.limits = limits;
         this.ingest = new IngestCommand(target, notices);
+        this.running = new RunningStatement(target.handle());
+        this.connections = new SessionConnections(target);
         this.availability = Availability.available(describe());
     }
 
@@ -145,18 +128,13 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
         if (readsOnly(request.roles())) {
             return Reply.error(ErrorCode.FORBIDDEN, "you may only read this database; ingest writes to it");
         }
-        synchronized (this) {
-            ingesting = true;
-            cancelRequested = false;
-        }
+        running.startIngest();
         try {
-            return ingest.run(request, connection(false), ingestLimits, () -> cancelRequested);
+            return ingest.run(request, connection(false), ingestLimits, running::cancelRequested);
         } catch (SQLException e) {
             return Reply.error(ErrorCode.NOT_AVAILABLE, "cannot connect to " + target.safeUrl() + ": " + describe(e));
         } finally {
-            synchronized (this) {
-                ingesting = false;
-            }
+            running.finishIngest();
         }
     }
 
@@ -197,20 +175,18 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
         } catch (SQLException e) {
             return Reply.error(ErrorCode.NOT_AVAILABLE, "cannot connect to " + target.safeUrl() + ": " + describe(e));
         }
-        cancelRequested = false;
         try (Statement st = c.createStatement(ResultSet.TYPE_FORWARD_ONLY, ResultSet.CONCUR_READ_ONLY)) {
-            synchronized (this) {
-                runningStatement = st;
-                runningThread = Thread.currentThread();
-            }
+            // Embedded Derby's own limit costs a timer task per row read; RunningStatement keeps it instead.
+            boolean ownLimit = target.embeddedDerby();
+            running.start(st, ownLimit ? timeoutSeconds : 0);
             // One row more than we keep tells us the result was cut.
             st.setMaxRows(limits.maxRows() + 1);
             st.setFetchSize(Math.min(limits.maxRows() + 1, 1000));
-            st.setQueryTimeout(timeoutSeconds);
+            st.setQueryTimeout(ownLimit ? 0 : timeoutSeconds);
             if (st.execute(sql)) {
                 try (ResultSet rs = st.getResultSet()) {
-                    ResultPages out = new ResultPages(pages);
-                    TableResult table = table(sql, rs, out);
+                    ResultPages out = new ResultPages(pages, limits, running);
+                    TableResult table = out.read(sql, rs);
                     long ms = (System.nanoTime() - started) / 1_000_000;
                     int total = out.sent() + table.rows().size();
                     log.debug("{} {}: {} rows{} in {} pages, {} ms", target.handle(), SqlScript.abbreviate(sql), total,
@@ -223,11 +199,15 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
             return Reply.ok((count == 1 ? "1 row" : Math.max(count, 0) + " rows") + " changed in " + ms + " ms",
                     new UpdateCount(Math.max(count, 0)));
         } catch (SQLException e) {
-            if (cancelRequested) {
+            if (running.timedOut()) {
+                closeAfterInterrupt(e);
+                log.info("{}: '{}' stopped at the query timeout: {}", target.handle(), SqlScript.abbreviate(sql), describe(e));
+                return Reply.error(ErrorCode.TIMEOUT, "the statement ran longer than the query timeout of " + timeoutSeconds
+                        + " s and was stopped: " + describe(e));
+            }
+            if (running.cancelRequested()) {
                 log.info("{}: '{}' cancelled: {}", target.handle(), SqlScript.abbreviate(sql), describe(e));
-                if (e.getSQLState() != null && e.getSQLState().startsWith("08")) {
-                    closeConnections(); // an interrupt may have cost the connection: the next command reconnects
-                }
+                closeAfterInterrupt(e);
                 return Reply.error(ErrorCode.CANCELLED, "the statement was cancelled: " + describe(e));
             }
             return failure(sql, e);
@@ -237,110 +217,28 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
                     : Reply.error(ErrorCode.TIMEOUT, e.getMessage() + "; the statement was stopped");
         } catch (InterruptedException e) {
             // a cancel's interrupt while the query waited for its reader (embedded Derby has no Statement.cancel)
+            if (running.timedOut()) {
+                return Reply.error(ErrorCode.TIMEOUT, "the statement ran longer than the query timeout of " + timeoutSeconds
+                        + " s and was stopped while its rows were sent");
+            }
             log.info("{}: '{}' cancelled while sending its rows", target.handle(), SqlScript.abbreviate(sql));
             return Reply.error(ErrorCode.CANCELLED, "the statement was cancelled while its rows were sent");
         } finally {
-            synchronized (this) {
-                runningStatement = null;
-                runningThread = null;
-                Thread.interrupted(); // a cancel's interrupt must not reach the MailBox's worker loop
-            }
+            running.finish();
         }
     }
 
-    /**
-     * Cancels the running statement: {@code Statement.cancel}, or, where the driver does not
-     * implement it (embedded Derby), an interrupt of the thread running it, which Derby answers by
-     * stopping the statement. The interrupt is only ever sent while the statement runs.
-     */
+    /** An interrupt may have cost the connection: the next command then reconnects. */
+    private void closeAfterInterrupt(SQLException e) {
+        if (e.getSQLState() != null && e.getSQLState().startsWith("08")) {
+            closeConnections();
+        }
+    }
+
+    /** Cancels the running statement or ingest ({@link RunningStatement#cancel}). */
     @Override
-    public synchronized boolean cancel(Request running) {
-        if (ingesting) {
-            cancelRequested = true; // the ingest stops at its next look, rolling back the file under way
-            return true;
-        }
-        Statement st = runningStatement;
-        if (st == null) {
-            return false;
-        }
-        cancelRequested = true;
-        try {
-            st.cancel();
-        } catch (SQLException e) {
-            log.debug("{}: Statement.cancel is not supported ({}); interrupting the query's thread", target.handle(),
-                    e.getMessage());
-            runningThread.interrupt();
-        }
-        return true;
-    }
-
-    /**
-     * Reads the rows into pages: each full page goes to the reader ({@link ResultPages}) and the
-     * rows after the last page are the returned table, so the service holds one page at a time
-     * (and the reader up to {@code Request.PAGES_IN_FLIGHT} more), never the whole result.
-     */
-    private TableResult table(String sql, ResultSet rs, ResultPages out)
-            throws SQLException, Request.PagesStopped, InterruptedException {
-        ResultSetMetaData md = rs.getMetaData();
-        int n = md.getColumnCount();
-        List<String> columns = new ArrayList<>(n);
-        List<String> types = new ArrayList<>(n);
-        for (int i = 1; i <= n; i++) {
-            columns.add(md.getColumnLabel(i));
-            types.add(md.getColumnTypeName(i));
-        }
-        // Packed as read (PackedRows): a page is one byte array from here to whoever reads it, no
-        // String[] per row, nothing packed again on the way (docs/performance.md, "The database").
-        PackedRows.Builder rows = PackedRows.builder(n);
-        String[] row = new String[n];
-        long chars = 0;
-        long pageChars = 0;
-        int kept = 0;
-        boolean truncated = false;
-        while (rs.next()) {
-            if (kept == limits.maxRows()) {
-                truncated = true;
-                break;
-            }
-            long rowChars = 0;
-            for (int i = 0; i < n; i++) {
-                String v = cell(rs, i + 1);
-                row[i] = v;
-                rowChars += v == null ? 1 : v.length() + 1;
-            }
-            chars += rowChars;
-            if (chars > limits.maxResultChars()) {
-                truncated = true;
-                break;
-            }
-            rowChars += (long) ResultPages.CELL_OVERHEAD * n;
-            if (out.full(rows.rows(), pageChars + rowChars)) {
-                out.send(new TableResult(sql, columns, types, rows.build(), false));
-                pageChars = 0;
-            }
-            for (String v : row) {
-                rows.cell(v);
-            }
-            rows.endRow();
-            pageChars += rowChars;
-            kept++;
-        }
-        return new TableResult(sql, columns, types, rows.build(), truncated);
-    }
-
-    private static String cell(ResultSet rs, int column) throws SQLException {
-        String v;
-        try {
-            v = rs.getString(column);
-        } catch (SQLException e) {
-            // e.g. a BLOB: show what it is rather than fail the whole query
-            Object o = rs.getObject(column);
-            v = o == null ? null : "<" + o.getClass().getSimpleName() + ">";
-        }
-        if (v != null && v.length() > MAX_CELL_CHARS) {
-            v = v.substring(0, MAX_CELL_CHARS) + "... (" + v.length() + " characters)";
-        }
-        return v;
+    public boolean cancel(Request running) {
+        return this.running.cancel();
     }
 
     private String summary(int n, boolean truncated, long ms) {
@@ -403,83 +301,15 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
         return b.toString();
     }
 
+    /** The owner's or the reader's connection, reset for this command; the availability follows whether it could be had. */
     private Connection connection(boolean asReader) throws SQLException {
-        Connection c = asReader ? reader : owner;
-        if (c != null && !c.isClosed()) {
-            reset(c, asReader ? readerDefaults : ownerDefaults);
-            return c;
-        }
         try {
-            c = open(asReader);
+            Connection c = connections.get(asReader);
+            availability = Availability.available(describe());
+            return c;
         } catch (SQLException e) {
             availability = Availability.notAvailable("cannot connect to " + target.safeUrl() + ": " + describe(e));
             throw e;
-        }
-        if (asReader) {
-            reader = c;
-            readerDefaults = defaults(c);
-        } else {
-            owner = c;
-            ownerDefaults = defaults(c);
-        }
-        availability = Availability.available(describe());
-        return c;
-    }
-
-    private Connection open(boolean asReader) throws SQLException {
-        if (target.driver() != null && !target.driver().isBlank()) {
-            try {
-                Class.forName(target.driver());
-            } catch (ClassNotFoundException e) {
-                throw new SQLException("JDBC driver class " + target.driver()
-                        + " is not on the class path; add its jar (java -cp ripv-services.jar:driver.jar ...)", "08001", e);
-            }
-        }
-        Properties p = new Properties();
-        String user = asReader ? target.readerUser() : target.user();
-        String password = asReader ? target.readerPassword() : target.password();
-        if (user != null) {
-            p.setProperty("user", user);
-        }
-        if (password != null) {
-            p.setProperty("password", password);
-        }
-        Connection c = DriverManager.getConnection(target.url(), p);
-        try {
-            c.setAutoCommit(true);
-            if (asReader) {
-                c.setReadOnly(true); // a second line of defence; the database user is what enforces it
-                if (target.schema() != null) {
-                    c.setSchema(target.schema());
-                }
-            }
-        } catch (SQLException e) {
-            c.close();
-            throw e;
-        }
-        log.info("{}: connected to {} as {}", target.handle(), target.safeUrl(), user == null ? "(no user)" : user);
-        return c;
-    }
-
-    private static Defaults defaults(Connection c) throws SQLException {
-        return new Defaults(c.getSchema(), c.getTransactionIsolation());
-    }
-
-    /**
-     * Puts a shared connection back as it was opened: the default schema, autocommit, the
-     * default isolation. One user's {@code SET SCHEMA SYS} must not decide where the next one's
-     * query runs.
-     */
-    private static void reset(Connection c, Defaults d) throws SQLException {
-        if (!c.getAutoCommit()) {
-            c.rollback();
-            c.setAutoCommit(true);
-        }
-        if (c.getTransactionIsolation() != d.isolation()) {
-            c.setTransactionIsolation(d.isolation());
-        }
-        if (d.schema() != null && !d.schema().equals(c.getSchema())) {
-            c.setSchema(d.schema());
         }
     }
 
@@ -501,17 +331,7 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
     }
 
     private void closeConnections() {
-        for (Connection c : new Connection[] {reader, owner}) {
-            if (c != null) {
-                try {
-                    c.close();
-                } catch (SQLException e) {
-                    log.debug("closing a connection to {}: {}", target.safeUrl(), e.getMessage());
-                }
-            }
-        }
-        reader = null;
-        owner = null;
+        connections.close();
     }
 
     /** Closes the connections, and shuts an embedded Derby database down so its files are released. */

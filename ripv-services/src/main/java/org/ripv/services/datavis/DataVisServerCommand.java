@@ -6,6 +6,7 @@ import java.time.Duration;
 import java.util.concurrent.Callable;
 import org.ripv.service.ServiceLaunchOptions;
 import org.ripv.launch.Launchers;
+import org.ripv.launch.OptionChecks;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -56,11 +57,9 @@ public final class DataVisServerCommand implements Callable<Integer> {
     /** The options as a service configuration. */
     DataVisServer.Config config() {
         Path dir = workDir != null ? workDir : Path.of(System.getProperty("user.home"), ".ripv", "datavis");
-        if (timeoutSeconds < 1) {
-            throw new CommandLine.ParameterException(spec.commandLine(), "--timeout must be at least 1 second, not " + timeoutSeconds);
-        }
         WorkerMode mode;
         try {
+            OptionChecks.atLeast("--timeout", timeoutSeconds, 1);
             mode = WorkerMode.parse(worker);
         } catch (IllegalArgumentException e) {
             throw new CommandLine.ParameterException(spec.commandLine(), e.getMessage());

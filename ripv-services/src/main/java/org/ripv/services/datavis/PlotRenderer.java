@@ -148,44 +148,20 @@ public final class PlotRenderer {
     private static final class M4 implements Collector {
         private final int buckets;
         private final long rows;
-        private final long[][] firstI;
-        private final long[][] lastI;
-        private final long[][] minI;
-        private final long[][] maxI;
+        private final Kept first;
+        private final Kept last;
+        private final Kept min;
+        private final Kept max;
         private final long[][] gapI;
-        private final double[][] firstX;
-        private final double[][] firstY;
-        private final double[][] lastX;
-        private final double[][] lastY;
-        private final double[][] minX;
-        private final double[][] minY;
-        private final double[][] maxX;
-        private final double[][] maxY;
 
         M4(int series, int buckets, long rows) {
             this.buckets = buckets;
             this.rows = rows;
-            firstI = longs(series, buckets);
-            lastI = longs(series, buckets);
-            minI = longs(series, buckets);
-            maxI = longs(series, buckets);
-            gapI = longs(series, buckets);
-            firstX = new double[series][buckets];
-            firstY = new double[series][buckets];
-            lastX = new double[series][buckets];
-            lastY = new double[series][buckets];
-            minX = new double[series][buckets];
-            minY = new double[series][buckets];
-            maxX = new double[series][buckets];
-            maxY = new double[series][buckets];
-        }
-
-        private static long[][] longs(int series, int buckets) {
-            long[][] a = new long[series][buckets];
-            for (long[] row : a) {
-                Arrays.fill(row, -1);
-            }
-            return a;
+            first = new Kept(series, buckets);
+            last = new Kept(series, buckets);
+            min = new Kept(series, buckets);
+            max = new Kept(series, buckets);
+            gapI = Kept.unset(series, buckets);
         }
 
         @Override
@@ -197,30 +173,18 @@ public final class PlotRenderer {
                 }
                 return;
             }
-            if (firstI[s][b] < 0) {
-                firstI[s][b] = row;
-                firstX[s][b] = x;
-                firstY[s][b] = y;
-                minI[s][b] = row;
-                minX[s][b] = x;
-                minY[s][b] = y;
-                maxI[s][b] = row;
-                maxX[s][b] = x;
-                maxY[s][b] = y;
+            if (!first.has(s, b)) {
+                first.keep(s, b, row, x, y);
+                min.keep(s, b, row, x, y);
+                max.keep(s, b, row, x, y);
             }
-            if (y < minY[s][b]) {
-                minI[s][b] = row;
-                minX[s][b] = x;
-                minY[s][b] = y;
+            if (y < min.y[s][b]) {
+                min.keep(s, b, row, x, y);
             }
-            if (y > maxY[s][b]) {
-                maxI[s][b] = row;
-                maxX[s][b] = x;
-                maxY[s][b] = y;
+            if (y > max.y[s][b]) {
+                max.keep(s, b, row, x, y);
             }
-            lastI[s][b] = row;
-            lastX[s][b] = x;
-            lastY[s][b] = y;
+            last.keep(s, b, row, x, y);
         }
 
         @Override
@@ -233,11 +197,11 @@ public final class PlotRenderer {
             double[] py = new double[4];
             for (int b = 0; b < buckets; b++) {
                 int k = 0;
-                if (firstI[s][b] >= 0) {
-                    k = BucketPoints.insert(idx, px, py, k, firstI[s][b], firstX[s][b], firstY[s][b]);
-                    k = BucketPoints.insert(idx, px, py, k, minI[s][b], minX[s][b], minY[s][b]);
-                    k = BucketPoints.insert(idx, px, py, k, maxI[s][b], maxX[s][b], maxY[s][b]);
-                    k = BucketPoints.insert(idx, px, py, k, lastI[s][b], lastX[s][b], lastY[s][b]);
+                if (first.has(s, b)) {
+                    k = first.insertInto(idx, px, py, k, s, b);
+                    k = min.insertInto(idx, px, py, k, s, b);
+                    k = max.insertInto(idx, px, py, k, s, b);
+                    k = last.insertInto(idx, px, py, k, s, b);
                 }
                 long gap = gapI[s][b];
                 boolean gapDone = gap < 0;
@@ -256,6 +220,43 @@ public final class PlotRenderer {
                 }
             }
             return new double[][] {Arrays.copyOf(xs, n), Arrays.copyOf(ys, n)};
+        }
+    }
+
+    /** One of the points an M4 bucket keeps (its first, last, lowest or highest), per series and bucket: row, x, y. */
+    private static final class Kept {
+        private final long[][] row;
+        private final double[][] x;
+        private final double[][] y;
+
+        Kept(int series, int buckets) {
+            row = unset(series, buckets);
+            x = new double[series][buckets];
+            y = new double[series][buckets];
+        }
+
+        /** Rows per series and bucket, -1 where none is kept yet. */
+        static long[][] unset(int series, int buckets) {
+            long[][] a = new long[series][buckets];
+            for (long[] r : a) {
+                Arrays.fill(r, -1);
+            }
+            return a;
+        }
+
+        boolean has(int s, int b) {
+            return row[s][b] >= 0;
+        }
+
+        void keep(int s, int b, long r, double px, double py) {
+            row[s][b] = r;
+            x[s][b] = px;
+            y[s][b] = py;
+        }
+
+        /** Adds this bucket's point to the row-ordered {@code k} points ({@link BucketPoints#insert}). */
+        int insertInto(long[] rows, double[] px, double[] py, int k, int s, int b) {
+            return BucketPoints.insert(rows, px, py, k, row[s][b], x[s][b], y[s][b]);
         }
     }
 }

@@ -14,15 +14,26 @@ import java.util.Map;
  * shortest decimal that is that float ({@code 0.1f} as 0.1, not 0.10000000149011612): the value
  * the glider sent, without the noise of widening it.
  */
-public final class BinaryCycles implements Cycles {
+public final class BinaryCycles extends ColumnCycles {
     private final SlocumBinaryReader reader;
-    private final DbaHeader header;
-    private final CycleColumns columns;
     private final byte[] sizes;
-    private long rows;
 
     public BinaryCycles(SlocumBinaryReader reader, String file) throws SlocumFormatException {
+        super(headerOf(reader));
         this.reader = reader;
+        List<Sensor> sensors = header().sensors();
+        this.sizes = new byte[sensors.size()];
+        for (Sensor s : sensors) {
+            sizes[s.index()] = (byte) s.bytes();
+        }
+        if (!columns.timed()) {
+            throw new SlocumFormatException(file, reader.offset(),
+                    "no m_present_time or sci_m_present_time among the cycle's sensors: the cycles have no time");
+        }
+    }
+
+    /** The binary header read as dbd2asc would write it: {@code filename} is {@code full_filename}. */
+    private static DbaHeader headerOf(SlocumBinaryReader reader) {
         Map<String, String> tags = new LinkedHashMap<>(reader.tags());
         String full = tags.getOrDefault("full_filename", tags.get("filename"));
         if (full != null) {
@@ -32,21 +43,7 @@ public final class BinaryCycles implements Cycles {
         for (SlocumSensor s : reader.sensors()) {
             sensors.add(new Sensor(sensors.size(), s.name(), s.units(), s.bytes(), Sensor.kindOf(s.name(), s.units())));
         }
-        this.header = new DbaHeader(tags, sensors);
-        this.sizes = new byte[sensors.size()];
-        for (Sensor s : sensors) {
-            sizes[s.index()] = (byte) s.bytes();
-        }
-        this.columns = new CycleColumns(header);
-        if (!columns.timed()) {
-            throw new SlocumFormatException(file, reader.offset(),
-                    "no m_present_time or sci_m_present_time among the cycle's sensors: the cycles have no time");
-        }
-    }
-
-    @Override
-    public DbaHeader header() {
-        return header;
+        return new DbaHeader(tags, sensors);
     }
 
     @Override
@@ -65,28 +62,8 @@ public final class BinaryCycles implements Cycles {
                 values[i] = Double.parseDouble(Float.toString((float) v));
             }
         }
-        rows++;
+        counted();
         return true;
-    }
-
-    @Override
-    public double time(double[] values) {
-        return columns.time(values);
-    }
-
-    @Override
-    public long rows() {
-        return rows;
-    }
-
-    @Override
-    public long noFix() {
-        return columns.noFix();
-    }
-
-    @Override
-    public long impossible() {
-        return columns.impossible();
     }
 
     @Override

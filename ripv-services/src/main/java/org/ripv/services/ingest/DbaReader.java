@@ -34,7 +34,7 @@ import org.ripv.slocum.SlocumFiles;
  * }
  * }</pre>
  */
-public final class DbaReader implements Cycles {
+public final class DbaReader extends ColumnCycles {
     /** The first line of every DBA file. */
     public static final String LABEL = SlocumFiles.DBA_LABEL;
     static final int MAX_HEADER_LINE = 4096;
@@ -45,11 +45,8 @@ public final class DbaReader implements Cycles {
 
     private final InputStream stream;
     private final LineReader lines;
-    private final DbaHeader header;
     private final int width;
     private final int maxRowLength;
-    private final CycleColumns columns;
-    private long rows;
     private long blankLine;
 
     /**
@@ -58,14 +55,15 @@ public final class DbaReader implements Cycles {
      * @throws DbaFormatException when they are not a DBA header
      */
     public DbaReader(InputStream in) throws IOException, DbaFormatException {
+        this(in, new LineReader(in));
+    }
+
+    private DbaReader(InputStream in, LineReader lines) throws IOException, DbaFormatException {
+        super(readHeader(lines));
         this.stream = in;
-        this.lines = new LineReader(in);
-        Map<String, String> tags = readTags();
-        List<Sensor> sensors = readLabels(tags);
-        this.header = new DbaHeader(tags, sensors);
-        this.width = sensors.size();
+        this.lines = lines;
+        this.width = header().sensors().size();
         this.maxRowLength = 64 * width + 1024;
-        this.columns = new CycleColumns(header);
         if (!columns.timed()) {
             throw new DbaFormatException(lines.number() - 2,
                     "no m_present_time or sci_m_present_time sensor: the rows have no time");
@@ -77,7 +75,12 @@ public final class DbaReader implements Cycles {
         return SlocumFiles.isDba(start);
     }
 
-    private Map<String, String> readTags() throws IOException, DbaFormatException {
+    private static DbaHeader readHeader(LineReader lines) throws IOException, DbaFormatException {
+        Map<String, String> tags = readTags(lines);
+        return new DbaHeader(tags, readLabels(lines, tags));
+    }
+
+    private static Map<String, String> readTags(LineReader lines) throws IOException, DbaFormatException {
         Map<String, String> tags = new LinkedHashMap<>();
         int expected = -1;
         while (expected < 0 || lines.number() < expected) {
@@ -112,7 +115,7 @@ public final class DbaReader implements Cycles {
                 throw new DbaFormatException(lines.number(), "the header has '" + key + "' twice");
             }
             if (key.equals("num_ascii_tags")) {
-                expected = integer(tags, key, 3, MAX_TAGS);
+                expected = integer(lines, tags, key, 3, MAX_TAGS);
                 if (expected < lines.number()) {
                     throw new DbaFormatException(lines.number(), "num_ascii_tags is " + expected + " but this is tag line "
                             + lines.number());
@@ -124,7 +127,7 @@ public final class DbaReader implements Cycles {
         return tags;
     }
 
-    private int integer(Map<String, String> tags, String key, int min, int max) throws DbaFormatException {
+    private static int integer(LineReader lines, Map<String, String> tags, String key, int min, int max) throws DbaFormatException {
         String v = tags.get(key);
         if (v == null) {
             throw new DbaFormatException(lines.number(), "the header has no " + key);
@@ -140,15 +143,15 @@ public final class DbaReader implements Cycles {
         }
     }
 
-    private List<Sensor> readLabels(Map<String, String> tags) throws IOException, DbaFormatException {
-        int labelLines = integer(tags, "num_label_lines", 0, 100);
+    private static List<Sensor> readLabels(LineReader lines, Map<String, String> tags) throws IOException, DbaFormatException {
+        int labelLines = integer(lines, tags, "num_label_lines", 0, 100);
         if (labelLines != 3) {
             throw new DbaFormatException(lines.number(), "num_label_lines is " + labelLines
                     + "; a DBA file has 3 (sensor names, units, bytes per value)");
         }
-        int perCycle = integer(tags, "sensors_per_cycle", 1, MAX_SENSORS);
+        int perCycle = integer(lines, tags, "sensors_per_cycle", 1, MAX_SENSORS);
         int maxLine = 64 * Math.max(perCycle, 1) + 1024;
-        String[] names = labelLine(maxLine, "sensor names");
+        String[] names = labelLine(lines, maxLine, "sensor names");
         if (Math.abs(names.length - perCycle) > 1) {
             throw new DbaFormatException(lines.number(), "the label line names " + names.length
                     + " sensors but sensors_per_cycle is " + perCycle);
@@ -162,12 +165,12 @@ public final class DbaReader implements Cycles {
                 throw new DbaFormatException(lines.number(), "sensor '" + n + "' is named twice");
             }
         }
-        String[] units = labelLine(maxLine, "units");
+        String[] units = labelLine(lines, maxLine, "units");
         if (units.length != names.length) {
             throw new DbaFormatException(lines.number(), "the units line has " + units.length + " units for "
                     + names.length + " sensors");
         }
-        String[] bytes = labelLine(maxLine, "bytes per value");
+        String[] bytes = labelLine(lines, maxLine, "bytes per value");
         if (bytes.length != names.length) {
             throw new DbaFormatException(lines.number(), "the bytes line has " + bytes.length + " entries for "
                     + names.length + " sensors");
@@ -192,7 +195,7 @@ public final class DbaReader implements Cycles {
         return out;
     }
 
-    private String[] labelLine(int maxLine, String what) throws IOException, DbaFormatException {
+    private static String[] labelLine(LineReader lines, int maxLine, String what) throws IOException, DbaFormatException {
         if (!lines.next(maxLine)) {
             throw new DbaFormatException(lines.number() + 1, "the file ends before the " + what + " line");
         }
@@ -201,11 +204,6 @@ public final class DbaReader implements Cycles {
             throw new DbaFormatException(lines.number(), "the " + what + " line is empty");
         }
         return t.split("[ \t]+");
-    }
-
-    @Override
-    public DbaHeader header() {
-        return header;
     }
 
     /**
@@ -234,7 +232,7 @@ public final class DbaReader implements Cycles {
                 throw new DbaFormatException(lines.number(), "the last row has no line end: the file is cut short");
             }
             parse(values);
-            rows++;
+            counted();
             return true;
         }
     }
@@ -282,13 +280,13 @@ public final class DbaReader implements Cycles {
             return Double.NaN;
         }
         if (!isDecimal(b, off, len)) {
-            throw new DbaFormatException(lines.number(), "value " + (col + 1) + " (" + header.sensors().get(col).name()
+            throw new DbaFormatException(lines.number(), "value " + (col + 1) + " (" + header().sensors().get(col).name()
                     + ") is '" + quote(new String(b, off, Math.min(len, 40), StandardCharsets.ISO_8859_1))
                     + "', not a number");
         }
         double v = Double.parseDouble(new String(b, off, len, StandardCharsets.ISO_8859_1));
         if (Double.isInfinite(v)) {
-            throw new DbaFormatException(lines.number(), "value " + (col + 1) + " (" + header.sensors().get(col).name()
+            throw new DbaFormatException(lines.number(), "value " + (col + 1) + " (" + header().sensors().get(col).name()
                     + ") is too large");
         }
         return columns.isPosition(col) ? columns.degrees(col, v) : v;
@@ -333,33 +331,9 @@ public final class DbaReader implements Cycles {
         return i == end && len <= 40;
     }
 
-    /** The time of a row read by {@link #next}: m_present_time, else sci_m_present_time; NaN if neither. */
-    @Override
-    public double time(double[] values) {
-        return columns.time(values);
-    }
-
     /** The line number of the row last read. */
     public long line() {
         return lines.number();
-    }
-
-    /** Rows read so far. */
-    @Override
-    public long rows() {
-        return rows;
-    }
-
-    /** Position values that were {@value Degrees#NO_FIX} ("no fix"). */
-    @Override
-    public long noFix() {
-        return columns.noFix();
-    }
-
-    /** Position values that are not DDMM.MMMM within range. */
-    @Override
-    public long impossible() {
-        return columns.impossible();
     }
 
     private static String quote(String s) {

@@ -28,10 +28,6 @@ final class KeyCommands {
         this.replies = replies;
     }
 
-    static boolean isKey(String command) {
-        return command.equals(WORD) || command.startsWith(WORD + " ");
-    }
-
     /** The key a {@code ?key KEY} command names, if the link allows it; a clear refusal otherwise. */
     ControlKey allowed(List<String> arguments) throws ServiceException {
         if (arguments.size() != 1) {

@@ -3,8 +3,10 @@ package org.ripv.services.serial;
 import java.time.Duration;
 import java.util.Locale;
 import java.util.Objects;
+import java.util.function.Consumer;
 import java.util.regex.Pattern;
 import org.ripv.commands.SingleLineCommand;
+import org.ripv.launch.OptionChecks;
 import org.ripv.services.serial.ymodem.YmodemConfig;
 
 /**
@@ -78,12 +80,8 @@ public record LinkSettings(String device, int baud, int dataBits, Parity parity,
         if (device.isBlank()) {
             throw new IllegalArgumentException("empty device name");
         }
-        if (baud < 50 || baud > 4_000_000) {
-            throw new IllegalArgumentException("baud " + baud + " is outside 50–4000000");
-        }
-        if (dataBits < 5 || dataBits > 8) {
-            throw new IllegalArgumentException("data bits " + dataBits + " is outside 5–8");
-        }
+        OptionChecks.within("baud", baud, 50, 4_000_000);
+        OptionChecks.within("data bits", dataBits, 5, 8);
         Objects.requireNonNull(parity, "parity");
         Objects.requireNonNull(stopBits, "stopBits");
         Objects.requireNonNull(lineEnding, "lineEnding");
@@ -95,10 +93,7 @@ public record LinkSettings(String device, int baud, int dataBits, Parity parity,
         Objects.requireNonNull(sendCommand, "sendCommand");
         Objects.requireNonNull(receiveCommand, "receiveCommand");
         Objects.requireNonNull(ymodem, "ymodem");
-        if (maxCommand < 1 || maxCommand > SingleLineCommand.SERVER_MAX) {
-            throw new IllegalArgumentException("maxcommand " + maxCommand + " is outside 1–" + SingleLineCommand.SERVER_MAX
-                    + " (the server's cap)");
-        }
+        OptionChecks.within("maxcommand", maxCommand, 1, SingleLineCommand.SERVER_MAX); // the server's cap
         Objects.requireNonNull(interrupt, "interrupt");
     }
 
@@ -138,49 +133,79 @@ public record LinkSettings(String device, int baud, int dataBits, Parity parity,
     }
 
     public LinkSettings withDevice(String newDevice) {
-        return new LinkSettings(newDevice, baud, dataBits, parity, stopBits, lineEnding, prompt, idleTimeout,
-                commandTimeout, carrier, sendCommand, receiveCommand, reconnectEvery, ymodem, maxCommand, interrupt);
+        return with(d -> d.device = newDevice);
     }
 
     public LinkSettings withIdleTimeout(Duration idle) {
-        return new LinkSettings(device, baud, dataBits, parity, stopBits, lineEnding, prompt, idle,
-                commandTimeout, carrier, sendCommand, receiveCommand, reconnectEvery, ymodem, maxCommand, interrupt);
+        return with(d -> d.idleTimeout = idle);
     }
 
     public LinkSettings withReconnectEvery(Duration every) {
-        return new LinkSettings(device, baud, dataBits, parity, stopBits, lineEnding, prompt, idleTimeout,
-                commandTimeout, carrier, sendCommand, receiveCommand, every, ymodem, maxCommand, interrupt);
+        return with(d -> d.reconnectEvery = every);
     }
 
     /** With another prompt, e.g. GliderDOS's and PicoDOS's for a Slocum (prompt-regex= on the command line). */
     public LinkSettings withPrompt(Pattern newPrompt) {
-        return new LinkSettings(device, baud, dataBits, parity, stopBits, lineEnding, newPrompt, idleTimeout,
-                commandTimeout, carrier, sendCommand, receiveCommand, reconnectEvery, ymodem, maxCommand, interrupt);
+        return with(d -> d.prompt = newPrompt);
     }
 
     public LinkSettings withYmodem(YmodemConfig config) {
-        return new LinkSettings(device, baud, dataBits, parity, stopBits, lineEnding, prompt, idleTimeout,
-                commandTimeout, carrier, sendCommand, receiveCommand, reconnectEvery, config, maxCommand, interrupt);
+        return with(d -> d.ymodem = config);
     }
 
     public LinkSettings withVehicleCommands(String send, String receive) {
-        return new LinkSettings(device, baud, dataBits, parity, stopBits, lineEnding, prompt, idleTimeout,
-                commandTimeout, carrier, send, receive, reconnectEvery, ymodem, maxCommand, interrupt);
+        return with(d -> {
+            d.sendCommand = send;
+            d.receiveCommand = receive;
+        });
     }
 
     public LinkSettings withCarrier(CarrierMode mode) {
-        return new LinkSettings(device, baud, dataBits, parity, stopBits, lineEnding, prompt, idleTimeout,
-                commandTimeout, mode, sendCommand, receiveCommand, reconnectEvery, ymodem, maxCommand, interrupt);
+        return with(d -> d.carrier = mode);
     }
 
     public LinkSettings withMaxCommand(int max) {
-        return new LinkSettings(device, baud, dataBits, parity, stopBits, lineEnding, prompt, idleTimeout,
-                commandTimeout, carrier, sendCommand, receiveCommand, reconnectEvery, ymodem, max, interrupt);
+        return with(d -> d.maxCommand = max);
     }
 
     public LinkSettings withInterrupt(String keys) {
-        return new LinkSettings(device, baud, dataBits, parity, stopBits, lineEnding, prompt, idleTimeout,
-                commandTimeout, carrier, sendCommand, receiveCommand, reconnectEvery, ymodem, maxCommand, keys);
+        return with(d -> d.interrupt = keys);
+    }
+
+    /** A copy with what {@code change} sets changed: the one place that lists every component. */
+    private LinkSettings with(Consumer<Draft> change) {
+        Draft d = new Draft(this);
+        change.accept(d);
+        return new LinkSettings(d.device, baud, dataBits, parity, stopBits, lineEnding, d.prompt, d.idleTimeout,
+                commandTimeout, d.carrier, d.sendCommand, d.receiveCommand, d.reconnectEvery, d.ymodem, d.maxCommand,
+                d.interrupt);
+    }
+
+    /** The components a wither may change, copied from settings. */
+    private static final class Draft {
+        String device;
+        Pattern prompt;
+        Duration idleTimeout;
+        CarrierMode carrier;
+        String sendCommand;
+        String receiveCommand;
+        Duration reconnectEvery;
+        YmodemConfig ymodem;
+        int maxCommand;
+        String interrupt;
+
+        Draft(LinkSettings s) {
+            device = s.device;
+            prompt = s.prompt;
+            idleTimeout = s.idleTimeout;
+            carrier = s.carrier;
+            sendCommand = s.sendCommand;
+            receiveCommand = s.receiveCommand;
+            reconnectEvery = s.reconnectEvery;
+            ymodem = s.ymodem;
+            maxCommand = s.maxCommand;
+            interrupt = s.interrupt;
+        }
     }
 
     /** {@code 115200 8N1} */

@@ -36,10 +36,6 @@ final class ToVehicleCommands {
         this.plain = plain;
     }
 
-    static boolean isToVehicle(String command) {
-        return command.startsWith(WORD + " ") || command.equals(WORD);
-    }
-
     /** Whether the link sends its to-vehicle folder; checked before the link is touched. */
     void requireOn() throws ServiceException {
         if (pilot.toVehicle() == ToVehicleMode.OFF) {

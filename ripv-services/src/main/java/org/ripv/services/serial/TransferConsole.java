@@ -52,6 +52,12 @@ final class TransferConsole implements TransferListener {
         console.transfer(user, verb + " " + file.name() + " from byte " + offset + " (the rest of a dropped call's part)");
     }
 
+    /** What a transfer tells as it goes: PROGRESS replies, the console's TRANSFER lines, then {@code ?status}. */
+    static TransferListener listeners(ProgressReporter progress, VehicleConsole console, String user, String verb,
+                                      TransferListener status) {
+        return both(progress, both(new TransferConsole(console, user, verb), status));
+    }
+
     /** Both listeners, in order. */
     static TransferListener both(TransferListener a, TransferListener b) {
         return new TransferListener() {

@@ -46,9 +46,7 @@ final class YmodemCommands {
     private final Path workDir;
     private final RunningCommand running;
     private final LineSync lineSync;
-    /** A transfer is under way, and whether ?cancel asked it to stop (checked where it answers or sends a block). */
-    private volatile boolean transferring;
-    private volatile boolean cancelRequested;
+    private final TransferCancel cancel = new TransferCancel();
 
     YmodemCommands(String handle, LinkSettings settings, VehicleText vehicleText, VehicleConsole console, Path workDir,
                    RunningCommand running) {
@@ -69,11 +67,7 @@ final class YmodemCommands {
      * @return false when no transfer is running
      */
     boolean cancel() {
-        if (!transferring) {
-            return false;
-        }
-        cancelRequested = true;
-        return true;
+        return cancel.request();
     }
 
     /**
@@ -145,27 +139,25 @@ final class YmodemCommands {
             String vehicleCommand = settings.sendCommand() + " " + String.join(" ", names);
             ProgressReporter progress = new ProgressReporter(request, "receiving");
             List<FileHeader> files = null;
-            cancelRequested = false;
-            transferring = true;
+            cancel.started();
             try {
                 for (int attempt = 0; files == null; attempt++) {
                     write(c, vehicleCommand);
                     try {
-                        files = new YmodemReceiver(c, settings.ymodem(), TransferConsole.both(progress,
-                                TransferConsole.both(new TransferConsole(console, request.user(), "receiving"),
-                                        running.transfer("ymodem:get", names.stream().anyMatch(n -> n.contains("*")
-                                                || n.contains("?")) ? -1 : names.size()))))
-                                .cancelWhen(() -> cancelRequested)
+                        files = new YmodemReceiver(c, settings.ymodem(), TransferConsole.listeners(progress, console,
+                                request.user(), "receiving", running.transfer("ymodem:get", names.stream()
+                                        .anyMatch(n -> n.contains("*") || n.contains("?")) ? -1 : names.size())))
+                                .cancelWhen(cancel::requested)
                                 .stopWaitingWhen(text -> vehicleText.promptAfterEcho(text, vehicleCommand)).receiveBatch(sink);
                     } catch (YmodemRefusedException e) {
-                        if (attempt >= START_RETRIES || cancelRequested) {
+                        if (attempt >= START_RETRIES || cancel.requested()) {
                             throw e;
                         }
                         refused(c, request, vehicleCommand, e.getMessage());
                     }
                 }
             } finally {
-                transferring = false;
+                cancel.ended();
             }
             lineSync.resync(c);
             if (files.isEmpty()) {
@@ -218,15 +210,13 @@ final class YmodemCommands {
                 refused(c, request, settings.receiveCommand(), why);
             }
             ProgressReporter progress = new ProgressReporter(request, "sending");
-            cancelRequested = false;
-            transferring = true;
+            cancel.started();
             try {
-                new YmodemSender(c, settings.ymodem(),
-                        TransferConsole.both(progress, TransferConsole.both(new TransferConsole(console, request.user(), "sending"),
-                                running.transfer("ymodem:put", 1))))
-                        .cancelWhen(() -> cancelRequested).sendBatch(List.of(file), true);
+                new YmodemSender(c, settings.ymodem(), TransferConsole.listeners(progress, console, request.user(),
+                        "sending", running.transfer("ymodem:put", 1)))
+                        .cancelWhen(cancel::requested).sendBatch(List.of(file), true);
             } finally {
-                transferring = false;
+                cancel.ended();
             }
             lineSync.resync(c);
             String text = "sent " + file.name() + " (" + file.length() + " bytes) in " + progress.summary(file.length());

@@ -48,8 +48,7 @@ final class ZmodemCommands {
     private final Path workDir;
     private final RunningCommand running;
     private final LineSync lineSync;
-    private volatile boolean transferring;
-    private volatile boolean cancelRequested;
+    private final TransferCancel cancel = new TransferCancel();
 
     ZmodemCommands(String handle, LinkSettings settings, PilotSettings pilot, VehicleText vehicleText,
                    VehicleConsole console, Path workDir, RunningCommand running) {
@@ -65,11 +64,7 @@ final class ZmodemCommands {
 
     /** ?cancel: the transfer aborts with CANs at its next frame; false when none runs. */
     boolean cancel() {
-        if (!transferring) {
-            return false;
-        }
-        cancelRequested = true;
-        return true;
+        return cancel.request();
     }
 
     /** Where this link's parts wait for the next call (kept across calls; across restarts with --work DIR). */
@@ -82,8 +77,7 @@ final class ZmodemCommands {
     }
 
     private TransferListener listeners(Request request, ProgressReporter progress, String verb, String what, int files) {
-        return TransferConsole.both(progress, TransferConsole.both(new TransferConsole(console, request.user(), verb),
-                running.transfer(what, files)));
+        return TransferConsole.listeners(progress, console, request.user(), verb, running.transfer(what, files));
     }
 
     @FunctionalInterface
@@ -100,8 +94,7 @@ final class ZmodemCommands {
             throws IOException, ServiceException {
         c.listen();
         c.binary(true);
-        cancelRequested = false;
-        transferring = true;
+        cancel.started();
         try {
             Reply r = exchange.run();
             console.event(VehicleEvent.TRANSFER_DONE, r.text().lines().findFirst().orElse("") + " for " + request.user());
@@ -121,7 +114,7 @@ final class ZmodemCommands {
             lineSync.resync(c);
             throw e;
         } finally {
-            transferring = false;
+            cancel.ended();
             c.binary(false);
             c.stopListening();
         }
@@ -180,7 +173,7 @@ final class ZmodemCommands {
         List<ZmodemReceiver.Received> got = new ZmodemReceiver(c, frameTimeoutMillis(),
                 listeners(request, progress, "receiving", "zmodem:get", globs ? -1 : names.size()))
                 .startTimeout(settings.ymodem().startTimeout().toMillis())
-                .cancelWhen(() -> cancelRequested)
+                .cancelWhen(cancel::requested)
                 .refusedWhen(text -> vehicleText.promptAfterEcho(text, vehicleCommand))
                 .receive(store, dir);
         lineSync.resync(c);
@@ -229,7 +222,7 @@ final class ZmodemCommands {
         ProgressReporter progress = new ProgressReporter(request, "sending");
         long from = new ZmodemSender(c, frameTimeoutMillis(), listeners(request, progress, "sending", "zmodem:put", 1))
                 .startTimeout(settings.ymodem().startTimeout().toMillis())
-                .cancelWhen(() -> cancelRequested)
+                .cancelWhen(cancel::requested)
                 .refusedWhen(text -> vehicleText.promptAfterEcho(text, pilot.zmodemReceive()))
                 .send(file);
         lineSync.resync(c);

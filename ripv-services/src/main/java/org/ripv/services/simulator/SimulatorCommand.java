@@ -10,6 +10,7 @@ import java.util.Set;
 import java.util.concurrent.Callable;
 import org.ripv.services.serial.ymodem.YmodemConfig;
 import org.ripv.launch.Launchers;
+import org.ripv.launch.OptionChecks;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -119,48 +120,51 @@ public final class SimulatorCommand implements Callable<Integer> {
         return IridiumLine.Settings.withDrop(baud, l, dropAfter);
     }
 
+    /** Refuses what picocli cannot see: ranges and options that go together; the message quotes the bad value. */
+    IridiumLine.Settings check() {
+        OptionChecks.atLeast("--dive-seconds", diveSeconds, 1);
+        OptionChecks.atLeast("--surface-seconds", surfaceSeconds, 1);
+        if (!name.matches("[A-Za-z0-9._-]{1,64}")) {
+            throw new IllegalArgumentException("--name '" + name + "' must be 1-64 letters, digits, '.', '_' or '-'");
+        }
+        IridiumLine.Settings line = line();
+        if (leakFrom < 0 || abortCalls.stream().anyMatch(n -> n == null || n < 1)) {
+            throw new IllegalArgumentException("--abort-on-call and --leak-from-call take call numbers from 1");
+        }
+        if (dialog != Dialog.gliderdos && (leakFrom > 0 || !abortCalls.isEmpty())) {
+            throw new IllegalArgumentException("--abort-on-call and --leak-from-call need --dialog gliderdos");
+        }
+        OptionChecks.atLeast("--minute-seconds", minuteSeconds, 1);
+        if (line.any() && where != null && where.tty != null) {
+            throw new IllegalArgumentException("--baud, --latency and --drop-after are for TCP (--listen, --call);"
+                    + " a tty has its own line");
+        }
+        return line;
+    }
+
+    /** {@code --call HOST:PORT} as host and port, or null without {@code --call}. */
+    String[] callTarget() {
+        if (where == null || where.call == null) {
+            return null;
+        }
+        int colon = where.call.lastIndexOf(':');
+        if (colon <= 0 || !where.call.substring(colon + 1).matches("\\d{1,5}")
+                || Integer.parseInt(where.call.substring(colon + 1)) > 65535) {
+            throw new IllegalArgumentException("--call '" + where.call + "' is not HOST:PORT");
+        }
+        return new String[] {where.call.substring(0, colon), where.call.substring(colon + 1)};
+    }
+
     @Override
     public Integer call() throws Exception {
-        if (diveSeconds < 1 || surfaceSeconds < 1) {
-            System.err.println("Error: --dive-seconds and --surface-seconds must be at least 1");
-            return 2;
-        }
-        if (!name.matches("[A-Za-z0-9._-]{1,64}")) {
-            System.err.println("Error: --name '" + name + "' must be 1-64 letters, digits, '.', '_' or '-'");
-            return 2;
-        }
         IridiumLine.Settings line;
+        String[] target;
         try {
-            line = line();
+            line = check();
+            target = callTarget();
         } catch (IllegalArgumentException e) {
             System.err.println("Error: " + e.getMessage());
             return 2;
-        }
-        if (leakFrom < 0 || abortCalls.stream().anyMatch(n -> n == null || n < 1)) {
-            System.err.println("Error: --abort-on-call and --leak-from-call take call numbers from 1");
-            return 2;
-        }
-        if (dialog != Dialog.gliderdos && (leakFrom > 0 || !abortCalls.isEmpty())) {
-            System.err.println("Error: --abort-on-call and --leak-from-call need --dialog gliderdos");
-            return 2;
-        }
-        if (minuteSeconds < 1) {
-            System.err.println("Error: --minute-seconds " + minuteSeconds + " must be at least 1");
-            return 2;
-        }
-        if (line.any() && where != null && where.tty != null) {
-            System.err.println("Error: --baud, --latency and --drop-after are for TCP (--listen, --call); a tty has its own line");
-            return 2;
-        }
-        String[] target = null;
-        if (where != null && where.call != null) {
-            int colon = where.call.lastIndexOf(':');
-            if (colon <= 0 || !where.call.substring(colon + 1).matches("\\d{1,5}")
-                    || Integer.parseInt(where.call.substring(colon + 1)) > 65535) {
-                System.err.println("Error: --call '" + where.call + "' is not HOST:PORT");
-                return 2;
-            }
-            target = new String[] {where.call.substring(0, colon), where.call.substring(colon + 1)};
         }
         Path files = dir != null ? dir : Files.createTempDirectory("ripv-glider");
         try (GliderSimulator sim = new GliderSimulator(files, Duration.ofSeconds(submergeSeconds), YmodemConfig.lrzsz())) {

@@ -119,7 +119,8 @@ class DatabaseServerTest {
                 "SELECT COUNT(*) FROM sensor_data a, sensor_data b, sensor_data c WHERE a.value + b.value > c.value");
         assertThat(r.status()).isEqualTo(Status.ERROR);
         assertThat(r.footer().errorCode()).as(r.footer().replyText()).isEqualTo(ErrorCode.TIMEOUT);
-        assertThat(r.footer().replyText()).contains("query timeout of 2 s").contains("XCL52");
+        // embedded Derby's limit is the service's own (RunningStatement), not the driver's XCL52
+        assertThat(r.footer().replyText()).contains("query timeout of 2 s");
         assertThat((System.nanoTime() - started) / 1_000_000_000L).isLessThan(60);
         assertThat(table(client.send(TTY, "SELECT COUNT(*) FROM sensor")).rows().get(0)[0]).isEqualTo("3");
     }

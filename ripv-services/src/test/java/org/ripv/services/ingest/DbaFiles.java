@@ -8,6 +8,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
+import org.ripv.services.bench.SyntheticDba;
 
 /** The shared Slocum files (copied into test resources) and generated DBA files, with counts made without the reader. */
 public final class DbaFiles {
@@ -115,26 +116,8 @@ public final class DbaFiles {
         return b.toString().getBytes(StandardCharsets.US_ASCII);
     }
 
+    /** The header and label lines of {@link #generate}'s files: the bench's made-up sensors, mission TEST.MI. */
     public static String header(String glider, int sensors) {
-        StringBuilder b = new StringBuilder();
-        b.append("dbd_label: DBD_ASC(dinkum_binary_data_ascii)file\n");
-        b.append("encoding_ver: 2\nnum_ascii_tags: 14\nall_sensors: 0\n");
-        b.append("filename: ").append(glider).append("-2024-100-1-0\n");
-        b.append("the8x3_filename: 00010000\nfilename_extension: sbd\n");
-        b.append("filename_label: ").append(glider).append("-2024-100-1-0-sbd(00010000)\n");
-        b.append("mission_name: TEST.MI\nfileopen_time: Mon_Apr__8_12:00:00_2024\n");
-        b.append("sensors_per_cycle: ").append(sensors).append('\n');
-        b.append("num_label_lines: 3\nnum_segments: 1\n");
-        b.append("segment_filename_0: ").append(glider).append("-2024-100-1-0\n");
-        StringBuilder names = new StringBuilder("m_present_time m_gps_lat m_gps_lon m_depth");
-        StringBuilder units = new StringBuilder("timestamp lat lon m");
-        StringBuilder bytes = new StringBuilder("8 8 8 4");
-        for (int i = 4; i < sensors; i++) {
-            names.append(" s_").append(i);
-            units.append(" nodim");
-            bytes.append(" 4");
-        }
-        b.append(names).append(" \n").append(units).append(" \n").append(bytes).append(" \n");
-        return b.toString();
+        return SyntheticDba.header(glider, sensors, "TEST.MI");
     }
 }
