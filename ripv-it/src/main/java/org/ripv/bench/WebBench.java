@@ -42,6 +42,10 @@ import picocli.CommandLine.Option;
  * crowd phase of the same size: at 1,000 watchers, the judged figure (issue 38: the floor keeps
  * up there on 2 cores), and at the full crowd, reported with its label (there the floor itself
  * fell behind on 2 cores that also run every reader).
+ *
+ * <p>Longer than 400 lines because its phases share one server and one crowd of sockets, each
+ * phase measured against the one before it; the parts that stand alone are classes of their own
+ * (the floor, the fleet page's timing, the per-thread CPU).
  */
 @Command(name = "web", mixinStandardHelpOptions = true,
         description = "The web console: N WebSocket watchers of one vehicle against one, and the fleet page with 100 vehicles.")

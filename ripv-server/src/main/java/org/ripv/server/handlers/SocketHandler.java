@@ -37,6 +37,9 @@ import org.slf4j.LoggerFactory;
  * <p>A web console page is a client of the same kind made with {@link #inProcess}: no socket, reader
  * or writer, its requests handed in through {@link #received(IncomingServerMessage)} and its
  * messages given to its {@link Peer}; everything the server does with a client applies to it unchanged.
+ *
+ * <p>Longer than 400 lines because it is the one owner of a connection's state (logged in or not,
+ * its pages, its pushes, its queue's bound): the rules that change that state read best beside it.
  */
 public final class SocketHandler implements Connection.Receiver {
     private static final Logger log = LoggerFactory.getLogger(SocketHandler.class);

@@ -30,6 +30,12 @@ import org.slf4j.LoggerFactory;
  * locks, a service lost mid-call), derives each MailBox's state, appends to the transcript,
  * fans out to the MailBox's watchers and hands events to the notifier. Called on RMI threads
  * and the Post Office's; it never blocks on a client, the disk or the network.
+ *
+ * <p>Longer than 400 lines for one reason: taking a line, deriving the state, appending it and
+ * handing it to the watchers (on this thread or the fan-out threads) all happen under the one
+ * {@code order} lock that keeps every watcher's lines in the order they were taken; the fan-out's
+ * shards are assigned and drained under it too, so splitting them off would split that invariant
+ * across classes.
  */
 public final class ConsoleHub implements AutoCloseable {
     private static final Logger log = LoggerFactory.getLogger(ConsoleHub.class);

@@ -24,6 +24,10 @@ import org.slf4j.LoggerFactory;
  * {@link #output()}, which sends what the socket takes at once and keeps the rest until the loop
  * finds the socket writable. Idle, it holds no buffer: reads go through its loop's buffers, and
  * what waits to be sent is held only while it waits.
+ *
+ * <p>Longer than 400 lines because the TLS engine's states (handshake, wrap, unwrap, close) and
+ * the socket's readiness are one state machine: split, each half would reach into the other's
+ * buffers.
  */
 public final class Connection {
     private static final Logger log = LoggerFactory.getLogger(Connection.class);
