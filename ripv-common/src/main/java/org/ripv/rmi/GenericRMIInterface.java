@@ -97,8 +97,9 @@ public interface GenericRMIInterface extends Remote {
      * @param mailbox   the MailBox running it
      * @param clientId  the client id of the request's origin
      * @param messageId the request's message id
-     * @return true when that request was running and its handler accepted the cancel; false when
-     *         it is not running there or its handler cannot stop it
+     * @return true when that request was running and its handler accepted the cancel, or when it
+     *         has not started there (still on its way, or waiting): it is then answered CANCELLED
+     *         and never runs; false when its handler cannot stop it
      * @throws UnsupportedOperationException from a side that runs no service MailBoxes (the default)
      */
     default boolean cancel(String token, String mailbox, String clientId, long messageId) throws RemoteException {

@@ -257,10 +257,14 @@ public abstract class RIPVService {
     }
 
     /**
-     * Asks the handler of a MailBox to stop the request it is running ({@code ?cancel}).
+     * Asks the handler of a MailBox to stop a request ({@code ?cancel}). A request that has not
+     * started (on its way from the server, or waiting in the MailBox) never runs: it is answered
+     * CANCELLED when it comes up, since an operator's cancel can overtake the request it names.
      *
      * @return true when that request is running there and the handler accepted the cancel
-     *         ({@link CommandHandler#cancel}); its final reply then says CANCELLED
+     *         ({@link CommandHandler#cancel}), or when it has not started; its final reply then
+     *         says CANCELLED. False for a running request whose handler cannot stop it, or an
+     *         unknown MailBox
      */
     public final boolean cancel(String mailbox, String clientId, long messageId) {
         ServiceTaskManager m = managers.get(mailbox);

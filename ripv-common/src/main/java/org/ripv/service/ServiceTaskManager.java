@@ -1,10 +1,14 @@
 package org.ripv.service;
 
+import java.util.Iterator;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import org.ripv.exceptions.ServiceException;
 import org.ripv.managers.TaskManager;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.Footer;
+import org.ripv.messages.Header;
 import org.ripv.messages.IncomingServiceMessage;
 import org.ripv.messages.OutgoingServiceMessage;
 import org.ripv.messages.Status;
@@ -22,6 +26,14 @@ final class ServiceTaskManager extends TaskManager<IncomingServiceMessage, Outgo
     /** The request running now (one at a time per MailBox), for cancel; null between requests. */
     private volatile Request running;
     private volatile boolean cancelled;
+    /**
+     * Cancels that came before their request ran (it was on its way from the server, or waiting
+     * in the MailBox): "CLIENT-ID#MESSAGE-ID" to when it was asked, oldest first. Guarded by
+     * {@code this}; bounded in number and age, since a cancel may name a request that never comes.
+     */
+    private final Map<String, Long> cancelledAhead = new LinkedHashMap<>();
+    static final int MAX_CANCELLED_AHEAD = 256;
+    static final long CANCELLED_AHEAD_MILLIS = 10 * 60_000L;
 
     ServiceTaskManager(RIPVService service, CommandHandler handler) {
         this.service = service;
@@ -35,6 +47,12 @@ final class ServiceTaskManager extends TaskManager<IncomingServiceMessage, Outgo
         request = service.handouts().collect(request);
         Request now = new Request(request, box, service.sid(), service.name().toString());
         synchronized (this) {
+            if (cancelledAhead.remove(key(request.header().origin().clientId(), request.header().messageId())) != null) {
+                box.post(request.reply(Footer.error(service.sid(), ErrorCode.CANCELLED, "'"
+                        + Header.abbreviate(request.header().body()) + "' was cancelled before it ran")
+                        .via(service.name().toString())));
+                return;
+            }
             cancelled = false;
             running = now;
         }
@@ -60,14 +78,18 @@ final class ServiceTaskManager extends TaskManager<IncomingServiceMessage, Outgo
     }
 
     /**
-     * Cancels the running request if it is the one named; true when the handler accepted. Under
-     * the manager's lock, so that a cancel never lands on the request that starts next.
+     * Cancels the request named: the running one through its handler (true when the handler
+     * accepted); one that has not started yet — waiting in the MailBox, or still on its way from
+     * the server, whose queue the operator's cancel can overtake — is answered CANCELLED when it
+     * comes up and never runs (true). Under the manager's lock, so that a cancel never lands on
+     * another request.
      */
     synchronized boolean cancel(String clientId, long messageId) {
         Request r = running;
         if (r == null || r.message().header().messageId() != messageId
                 || !r.message().header().origin().clientId().equals(clientId)) {
-            return false;
+            cancelAhead(clientId, messageId);
+            return true;
         }
         boolean taken = handler.cancel(r);
         cancelled = taken;
@@ -75,6 +97,26 @@ final class ServiceTaskManager extends TaskManager<IncomingServiceMessage, Outgo
             r.stopPages();
         }
         return taken;
+    }
+
+    private void cancelAhead(String clientId, long messageId) {
+        long now = System.currentTimeMillis();
+        for (Iterator<Long> it = cancelledAhead.values().iterator(); it.hasNext(); ) {
+            if (now - it.next() <= CANCELLED_AHEAD_MILLIS) {
+                break; // oldest first: the rest are younger
+            }
+            it.remove();
+        }
+        if (cancelledAhead.size() >= MAX_CANCELLED_AHEAD) {
+            Iterator<String> oldest = cancelledAhead.keySet().iterator();
+            oldest.next();
+            oldest.remove();
+        }
+        cancelledAhead.put(key(clientId, messageId), now);
+    }
+
+    private static String key(String clientId, long messageId) {
+        return clientId + "#" + messageId;
     }
 
     /** The reader took a page of the request running now (the server's {@code more}); false when it is not running. */

@@ -74,8 +74,8 @@ class CancelTest {
         service.accept(request(1, "slow"));
         assertThat(started.await(10, TimeUnit.SECONDS)).isTrue();
         service.accept(request(2, "quick"));
-        assertThat(service.cancel(mailbox, "100001", 2)).as("not running: it waits").isFalse();
-        assertThat(service.cancel(mailbox, "100002", 1)).as("another client's id").isFalse();
+        service.cancel(mailbox, "100002", 1); // another client's request #1: not the running one
+        assertThat(stop.getCount()).as("the running request of client 100001 is not stopped").isEqualTo(1);
         assertThat(service.cancel("<SlowService>::<localhost>TWO", "100001", 1)).isFalse();
         assertThat(service.cancel(mailbox, "100001", 1)).isTrue();
         OutgoingServiceMessage first = replies.poll(10, TimeUnit.SECONDS);
@@ -85,6 +85,33 @@ class CancelTest {
         OutgoingServiceMessage second = replies.poll(10, TimeUnit.SECONDS);
         assertThat(second.header().messageId()).isEqualTo(2);
         assertThat(second.status()).as("the next request is not touched by the cancel").isEqualTo(Status.OK);
+    }
+
+    @Test
+    void aCancelThatOvertakesItsRequestStopsItBeforeItRuns() throws Exception {
+        service.replyTo(replies::add);
+        service.start();
+        service.accept(request(1, "slow"));
+        assertThat(started.await(10, TimeUnit.SECONDS)).isTrue();
+        // #2 waits in the MailBox; #3 is still on its way from the server when its cancel comes.
+        service.accept(request(2, "quick"));
+        assertThat(service.cancel(mailbox, "100001", 2)).as("waiting: it will not run").isTrue();
+        assertThat(service.cancel(mailbox, "100001", 3)).as("not here yet: it will not run").isTrue();
+        service.accept(request(3, "quick"));
+        service.accept(request(4, "quick"));
+        assertThat(service.cancel(mailbox, "100001", 1)).isTrue();
+        java.util.List<OutgoingServiceMessage> got = new java.util.ArrayList<>();
+        for (int i = 0; i < 4; i++) {
+            got.add(replies.poll(10, TimeUnit.SECONDS));
+        }
+        assertThat(got).extracting(r -> r.header().messageId()).containsExactly(1L, 2L, 3L, 4L);
+        assertThat(got.get(0).footer().errorCode()).isEqualTo(ErrorCode.CANCELLED);
+        assertThat(got.subList(1, 3)).allSatisfy(r -> {
+            assertThat(r.footer().errorCode()).isEqualTo(ErrorCode.CANCELLED);
+            assertThat(r.footer().replyText()).isEqualTo("'quick' was cancelled before it ran");
+        });
+        assertThat(got.get(3).status()).as("the request after them runs").isEqualTo(Status.OK);
+        assertThat(got.get(3).footer().replyText()).isEqualTo("quick done");
     }
 
     @Test

@@ -95,6 +95,15 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
 
     @Override
     public Reply execute(Request request) {
+        running.begin(); // a cancel from here on stops the request, even before its statement starts
+        try {
+            return executeNow(request);
+        } finally {
+            running.end();
+        }
+    }
+
+    private Reply executeNow(Request request) {
         if (IngestCommand.matches(request.command())) {
             return ingest(request);
         }

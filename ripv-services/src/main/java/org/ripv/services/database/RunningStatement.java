@@ -22,6 +22,10 @@ import org.slf4j.LoggerFactory;
  * own work, and none runs while the rows wait for their reader ({@link #pause}, {@link #resume}):
  * the limit counts the time the database works on the statement, as Derby's does.
  *
+ * <p>A request's run is bracketed by {@link #begin} and {@link #end}: a cancel that comes after
+ * the request started but before its statement did (the connection, the statement being made)
+ * is kept, and the statement then never starts ({@link #start} throws).
+ *
  * <p>Thread-safe: the MailBox's thread starts and ends a run, any thread may cancel it.
  */
 final class RunningStatement {
@@ -42,6 +46,8 @@ final class RunningStatement {
     private Statement statement;
     private Thread thread;
     private boolean ingesting;
+    /** Between {@link #begin} and {@link #end}: a request is under way, though maybe no statement yet. */
+    private boolean underWay;
     private ScheduledFuture<?> limit;
     /** What is left of the time limit, in nanoseconds; 0 when there is none (or the driver keeps it). */
     private long leftNanos;
@@ -54,14 +60,32 @@ final class RunningStatement {
         this.handle = handle;
     }
 
+    /** A request starts on the MailBox's thread: from now on a cancel is kept even before a statement runs. */
+    synchronized void begin() {
+        underWay = true;
+        cancelRequested = false;
+        timedOut = false;
+    }
+
+    /** The request ended. */
+    synchronized void end() {
+        underWay = false;
+    }
+
     /**
      * A statement starts on the calling thread; {@code limitSeconds} (0: none) is kept here rather
      * than by the driver.
+     *
+     * @throws SQLException (state 57014, cancelled) when the request was cancelled before its statement started
      */
-    synchronized void start(Statement st, int limitSeconds) {
+    synchronized void start(Statement st, int limitSeconds) throws SQLException {
+        if (!underWay) {
+            cancelRequested = false; // a statement run outside a request has no earlier cancel
+        } else if (cancelRequested) {
+            throw new SQLException("cancelled before the statement started", "57014");
+        }
         statement = st;
         thread = Thread.currentThread();
-        cancelRequested = false;
         timedOut = false;
         leftNanos = TimeUnit.SECONDS.toNanos(limitSeconds);
         resume();
@@ -99,20 +123,26 @@ final class RunningStatement {
     /** An ingest starts (it has no one statement to cancel: it looks at {@link #cancelRequested} between rows). */
     synchronized void startIngest() {
         ingesting = true;
-        cancelRequested = false;
+        if (!underWay) {
+            cancelRequested = false;
+        } // else a cancel kept since begin() stops the ingest at its first look
     }
 
     synchronized void finishIngest() {
         ingesting = false;
     }
 
-    /** Stops what runs now; false when nothing does. */
+    /** Stops what runs now, or what a request under way is about to start; false when nothing does. */
     synchronized boolean cancel() {
         if (ingesting) {
             cancelRequested = true; // the ingest stops at its next look, rolling back the file under way
             return true;
         }
         if (statement == null) {
+            if (underWay) {
+                cancelRequested = true; // kept: the statement about to start never does
+                return true;
+            }
             return false;
         }
         cancelRequested = true;
