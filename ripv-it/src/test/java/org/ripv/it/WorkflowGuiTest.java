@@ -256,7 +256,10 @@ class WorkflowGuiTest {
                     || db.com().replyText().contains("-- cancelled") || cancel.getText().startsWith("Cancelling"));
             ClientGuiTest.waitFor("the query cancelled", () -> db.com().runningTexts().isEmpty()
                     && db.com().replyText().contains("-- cancelled 'SELECT"));
-            // Escape in COM cancels the newest running request too.
+            // Escape in COM cancels the newest running request too. It is pressed as soon as the bar
+            // shows the query, as a user would: the request may still be on its way to the service,
+            // or its statement not made yet, and the cancel must stop it all the same (under a CPU
+            // hog this Escape once came before the service ran the query and was refused).
             ClientGuiTest.command(window, SLOW);
             ClientGuiTest.waitFor("the second query running", () -> db.com().runningTexts().size() == 1);
             window.textBox("commandField").pressAndReleaseKeys(java.awt.event.KeyEvent.VK_ESCAPE);
