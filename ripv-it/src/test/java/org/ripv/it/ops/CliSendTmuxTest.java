@@ -2,17 +2,18 @@ package org.ripv.it.ops;
 
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
+import static org.ripv.it.ops.CommandProcesses.freePort;
+import static org.ripv.it.ops.CommandProcesses.jar;
+import static org.ripv.it.ops.CommandProcesses.java;
 
-import java.io.File;
-import java.net.ServerSocket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.ripv.testing.Tools;
@@ -31,40 +32,16 @@ class CliSendTmuxTest {
 
     @TempDir
     Path dir;
-    final List<Process> processes = new ArrayList<>();
+    CommandProcesses processes;
 
-    static String java() {
-        return org.ripv.it.TestJvms.java();
+    @BeforeEach
+    void setUp() {
+        processes = new CommandProcesses(dir);
     }
 
-    static String jar(String module) {
-        return RipvScriptHelpTest.ROOT.resolve(module + "/target/" + module + ".jar").toString();
-    }
-
-    static int freePort() throws Exception {
-        try (ServerSocket s = new ServerSocket(0)) {
-            return s.getLocalPort();
-        }
-    }
-
-    Process launch(String log, String... command) throws Exception {
-        Process p = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(dir.resolve(log).toFile())
-                .redirectInput(ProcessBuilder.Redirect.from(new File("/dev/null"))).start();
-        processes.add(p);
-        return p;
-    }
-
-    String log(String name) throws Exception {
-        Path p = dir.resolve(name);
-        return Files.exists(p) ? Files.readString(p, StandardCharsets.UTF_8) : "";
-    }
-
-    void awaitLog(String name, String text, Duration max) throws Exception {
-        long end = System.nanoTime() + max.toNanos();
-        while (!log(name).contains(text)) {
-            assertThat(System.nanoTime()).as("'" + text + "' in " + name + ":\n" + log(name)).isLessThan(end);
-            Thread.sleep(200);
-        }
+    @AfterEach
+    void stop() throws Exception {
+        processes.close();
     }
 
     static final String MAILBOX = "<SerialPortServer>::<localhost>ru29";
@@ -93,18 +70,6 @@ class CliSendTmuxTest {
         return true;
     }
 
-    @AfterEach
-    void stop() throws Exception {
-        for (Process p : processes) {
-            p.destroy();
-        }
-        for (Process p : processes) {
-            if (!p.waitFor(20, TimeUnit.SECONDS)) {
-                p.destroyForcibly();
-            }
-        }
-    }
-
     @Test
     void sendPassesGliderDosLinesThatShareTheClisWordsVerbatim() throws Exception {
         Tools.require("tmux");
@@ -115,9 +80,9 @@ class CliSendTmuxTest {
         int registry = freePort();
         int glider = freePort();
         Path data = dir.resolve("data");
-        launch("server.log", java(), "-jar", jar("ripv-server"), "server", "--data", data.toString(), "--port", "" + port,
+        processes.launch("server.log", java(), "-jar", jar("ripv-server"), "server", "--data", data.toString(), "--port", "" + port,
                 "--registry-port", "" + registry, "--http-port", "0", "--outbound-port", "-1", "--bind", "127.0.0.1");
-        awaitLog("server.log", "RIPVServer ready", Duration.ofSeconds(90));
+        processes.awaitLog("server.log", "RIPVServer ready", Duration.ofSeconds(90));
         Process passwd = new ProcessBuilder(java(), "-jar", jar("ripv-server"), "passwd", "--permit", data.resolve("permit.txt").toString(),
                 "alice", "--roles", "operators").redirectErrorStream(true).start();
         passwd.getOutputStream().write((PASSWORD + "\n").getBytes(StandardCharsets.UTF_8));
@@ -125,11 +90,11 @@ class CliSendTmuxTest {
         passwd.getInputStream().readAllBytes();
         assertThat(passwd.waitFor(60, TimeUnit.SECONDS)).isTrue();
         Path pw = Files.writeString(dir.resolve("pw"), PASSWORD + "\n");
-        launch("serial.log", java(), "-Dripv.host=localhost", "-jar", jar("ripv-services"), "serial", "--server", "127.0.0.1:" + registry,
+        processes.launch("serial.log", java(), "-Dripv.host=localhost", "-jar", jar("ripv-services"), "serial", "--server", "127.0.0.1:" + registry,
                 "--secret-file", data.resolve("service.secret").toString(), "--carrier", "ignore", "--no-enumerate",
                 "--link", "listen://127.0.0.1:" + glider + ",name=ru29,prompt-regex=GliderDOS [A-Z] -?\\d+ >|C:\\\\>");
-        awaitLog("serial.log", "MailBoxes:", Duration.ofSeconds(90));
-        launch("simulator.log", java(), "-jar", jar("ripv-services"), "simulator", "--call", "127.0.0.1:" + glider, "--name", "ru29",
+        processes.awaitLog("serial.log", "MailBoxes:", Duration.ofSeconds(90));
+        processes.launch("simulator.log", java(), "-jar", jar("ripv-services"), "simulator", "--call", "127.0.0.1:" + glider, "--name", "ru29",
                 "--dialog", "gliderdos", "--dive-seconds", "600", "--surface-seconds", "600", "--dir",
                 Files.createDirectories(dir.resolve("glider")).toString());
         // The local file the CLI's own put would upload: it must stay where it is, not reach the server.
@@ -151,14 +116,14 @@ class CliSendTmuxTest {
             long end = System.nanoTime() + Duration.ofSeconds(180).toNanos();
             String status;
             do {
-                assertThat(System.nanoTime()).as("the glider's call:\n" + t.screen() + log("simulator.log")).isLessThan(end);
+                assertThat(System.nanoTime()).as("the glider's call:\n" + t.screen() + processes.log("simulator.log")).isLessThan(end);
                 t.keys("C-l");
                 t.type("?status " + MAILBOX);
                 t.keys("Enter");
                 status = t.await("the vehicle's status", Duration.ofSeconds(60), CliSendTmuxTest::answered);
             } while (!status.contains("; vehicle (on call") && pause());
             do {
-                assertThat(System.nanoTime()).as("the glider took Ctrl-C:\n" + t.screen() + log("simulator.log")).isLessThan(end);
+                assertThat(System.nanoTime()).as("the glider took Ctrl-C:\n" + t.screen() + processes.log("simulator.log")).isLessThan(end);
                 t.type("key ctrl-c");
                 t.keys("Enter");
             } while (!shows(t, "Mission stopped by the operator", Duration.ofSeconds(20)));
@@ -196,11 +161,11 @@ class CliSendTmuxTest {
             t.awaitText("CLI-EXIT=0");
         }
         // the glider has the value, the server never got an upload of the local file
-        assertThat(log("server.log")).doesNotContain("c_dive_target_depth (");
+        assertThat(processes.log("server.log")).doesNotContain("c_dive_target_depth (");
         try (var files = Files.walk(data)) {
             assertThat(files.filter(f -> f.getFileName().toString().equals("c_dive_target_depth")).toList()).isEmpty();
         }
         // the vehicle's transcript: the lines went to the glider as typed
-        assertThat(log("simulator.log") + log("serial.log")).doesNotContain("Exception");
+        assertThat(processes.log("simulator.log") + processes.log("serial.log")).doesNotContain("Exception");
     }
 }
