@@ -96,9 +96,14 @@ class WorkflowGuiTest {
     }
 
     private void logIn() throws Exception {
+        logIn(java.util.function.UnaryOperator.identity());
+    }
+
+    /** Logs in with the model's changes handed to {@code ui} through {@code wrap}. */
+    private void logIn(java.util.function.UnaryOperator<java.util.concurrent.Executor> wrap) throws Exception {
         ui = new ClientGuiTest.UiThread();
         model = new ClientModel();
-        manager = new GuiManager(model, ui, ClientSocketHandler::connect,
+        manager = new GuiManager(model, wrap.apply(ui), ClientSocketHandler::connect,
                 new GuiManager.Timings(Duration.ofSeconds(15), Duration.ofMillis(200), Duration.ofSeconds(1)));
         manager.logIn("localhost", sys.server().port(), "alice", TestSystem.PASSWORD.toCharArray()).get(20, TimeUnit.SECONDS);
     }
@@ -139,6 +144,45 @@ class WorkflowGuiTest {
         // The MailBox serves the next query at once.
         ui.run(() -> manager.sendCommand(DATABASE, "SELECT COUNT(*) FROM mission"));
         until("the next query's table", () -> model.service(DATABASE).tables().size(), n -> n == 1);
+    }
+
+    /**
+     * COM shows a request from the moment its I/O thread takes it, before that thread writes it to
+     * the socket; a cancel pressed in that moment went out on another I/O thread, could reach the
+     * server first and was refused ("no request #ID is queued or running"), and the query ran on —
+     * WorkflowGuiTest's Escape under a CPU hog, which preempts the I/O thread just there. Here the
+     * I/O thread is held there until the cancel was pressed, and a second longer.
+     */
+    @Test
+    void aCancelPressedBeforeTheQueryLeftTheClientStopsIt() throws Exception {
+        java.util.concurrent.CountDownLatch pressed = new java.util.concurrent.CountDownLatch(1);
+        java.util.concurrent.atomic.AtomicBoolean hold = new java.util.concurrent.atomic.AtomicBoolean();
+        logIn(uiThread -> r -> {
+            boolean held = hold.get() && StackWalker.getInstance().walk(f -> f.anyMatch(x -> x.getMethodName().equals("requestStarted")))
+                    && hold.compareAndSet(true, false);
+            uiThread.execute(r);
+            if (held) {
+                try {
+                    pressed.await(T.toSeconds(), TimeUnit.SECONDS);
+                    Thread.sleep(1000); // time for a ?cancel that does not wait for its request to reach the server
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+            }
+        });
+        String db = DATABASE + "TTY1";
+        until("the database's mailbox as the target", () -> model.service(DATABASE) == null ? "" : model.service(DATABASE).target(),
+                db::equals);
+        hold.set(true);
+        ui.run(() -> manager.sendCommand(DATABASE, SLOW));
+        ServiceModel.Running r = until("the query in COM", () -> model.service(DATABASE).running(), l -> !l.isEmpty()).get(0);
+        assertThat(hold.get()).as("its I/O thread is held before writing it").isFalse();
+        ui.run(() -> manager.cancel(DATABASE, r.messageId()));
+        pressed.countDown();
+        until("the query gone from COM", () -> model.service(DATABASE).running(), List::isEmpty);
+        String text = until("the cancelled line", () -> model.service(DATABASE).transcriptText(),
+                t -> t.contains("-- cancelled '" + SLOW + "'"));
+        assertThat(text).contains("cancelled by alice");
     }
 
     @Test

@@ -32,6 +32,13 @@ final class Requests {
     private final Map<Long, Origin> origins = new ConcurrentHashMap<>();
     /** Requests whose replies go to their caller only (see {@link #ask}), not to the panels. */
     private final Set<Long> quiet = ConcurrentHashMap.newKeySet();
+    /**
+     * Tracked requests shown as running but not yet written to the socket, by message id: COM
+     * shows a request (with Cancel, and Escape) before its I/O thread writes it, so a
+     * {@code ?cancel} sent from another I/O thread could reach the server first and be refused
+     * ("no request #ID is queued or running"). {@link #cancel} waits for the write.
+     */
+    private final Map<Long, CompletableFuture<Void>> unwritten = new ConcurrentHashMap<>();
 
     Requests(ClientModel model, Executor io, Supplier<ClientSocketHandler> conn, GuiInterface gui) {
         this.model = model;
@@ -200,7 +207,9 @@ final class Requests {
             if (origin != null) {
                 origins.put(header.messageId(), origin); // before sending: the reply may beat us back
             }
+            CompletableFuture<Void> written = new CompletableFuture<>();
             if (tracked) {
+                unwritten.put(header.messageId(), written);
                 gui.requestStarted(origin.service(), header.messageId(), body);
             }
             try {
@@ -219,8 +228,25 @@ final class Requests {
                 if (tracked) {
                     gui.requestEnded(origin.service(), header.messageId(), null);
                 }
+            } finally {
+                unwritten.remove(header.messageId());
+                written.complete(null);
             }
         });
+    }
+
+    /**
+     * Sends {@code ?cancel MESSAGE-ID} for a tracked request, as {@link #call} does, but never
+     * before the request itself went to the server: the server refuses a cancel of a request it
+     * has not seen. Any thread.
+     */
+    void cancel(long messageId, BiConsumer<OutgoingServerMessage, Throwable> then) {
+        CompletableFuture<Void> written = unwritten.get(messageId);
+        if (written == null) {
+            call("?cancel " + messageId, then); // written already (or never tracked): this write comes after it
+        } else {
+            written.thenRun(() -> call("?cancel " + messageId, then));
+        }
     }
 
     private void failed(Origin origin, String body, String why) {
