@@ -179,7 +179,12 @@ class WorkflowGuiTest {
         assertThat(hold.get()).as("its I/O thread is held before writing it").isFalse();
         ui.run(() -> manager.cancel(DATABASE, r.messageId()));
         pressed.countDown();
-        until("the query gone from COM", () -> model.service(DATABASE).running(), List::isEmpty);
+        try {
+            until("the query gone from COM", () -> model.service(DATABASE).running(), List::isEmpty);
+        } catch (AssertionError e) {
+            throw new AssertionError(e.getMessage() + "\nstatus bar: " + ui.get(() -> model.notice()) + "\nCOM:\n"
+                    + ui.get(() -> model.service(DATABASE).transcriptText()), e);
+        }
         String text = until("the cancelled line", () -> model.service(DATABASE).transcriptText(),
                 t -> t.contains("-- cancelled '" + SLOW + "'"));
         assertThat(text).contains("cancelled by alice");

@@ -148,6 +148,15 @@ class WebConsoleBrowserTest {
         Files.write(shots.resolve(name + ".png"), b.getScreenshotAs(OutputType.BYTES));
     }
 
+    /** On the fleet page: the glider's row says it is on a call (its SURFACED reached the server). */
+    static void awaitTheCall(WebDriver b) {
+        WebDriverWait wait = new WebDriverWait(b, T);
+        wait.ignoring(org.openqa.selenium.StaleElementReferenceException.class); // the fleet redraws its rows at every push
+        wait.withMessage(() -> "the glider's call on the fleet page; simulator log:\n" + log("simulator") + "\nserial log:\n" + log("serial"));
+        wait.until(d -> d.findElements(By.cssSelector("tr[data-address]")).stream().anyMatch(r -> r.getText().contains("glider1")));
+        wait.until(d -> d.findElement(By.cssSelector("tr[data-address] .badge")).getText().equals("on call"));
+    }
+
     /** The vehicle page has shown the user's rights, the MailBox's status and the last call ({@code body[data-ready]}). */
     static void pageReady(WebDriverWait wait) {
         wait.until(d -> "true".equals(d.findElement(By.tagName("body")).getAttribute("data-ready")));
@@ -162,9 +171,7 @@ class WebConsoleBrowserTest {
         ChromeDriver b = loggedIn("alice");
         try {
             WebDriverWait wait = new WebDriverWait(b, T);
-            wait.ignoring(org.openqa.selenium.StaleElementReferenceException.class); // the fleet redraws its rows at every push
-            wait.until(d -> d.findElements(By.cssSelector("tr[data-address]")).stream().anyMatch(r -> r.getText().contains("glider1")));
-            wait.until(d -> d.findElement(By.cssSelector("tr[data-address] .badge")).getText().equals("on call"));
+            awaitTheCall(b);
             wait.until(d -> !"0".equals(d.findElement(By.id("map")).getAttribute("data-points")));
             shot(b, "fleet-desktop");
             b.manage().window().setSize(new Dimension(390, 844));
@@ -213,8 +220,13 @@ class WebConsoleBrowserTest {
         ChromeDriver b = loggedIn("olga");
         try {
             WebDriverWait wait = new WebDriverWait(b, T);
+            // The glider's call first, as the operator's test waits for it: run first, under load, this
+            // test once gave the simulator (a JVM started in @BeforeAll) 90 s for the call and the
+            // console together, and the call came later.
+            awaitTheCall(b);
             b.get("https://127.0.0.1:" + http + "/vehicle.html?m=" + java.net.URLEncoder.encode(glider, StandardCharsets.UTF_8));
-            wait.until(d -> console(d).contains("GPS Location"));
+            new WebDriverWait(b, T).withMessage(() -> "the call's lines in the console; it shows:\n" + console(b))
+                    .until(d -> console(d).contains("GPS Location"));
             // The console's lines come before the page knows the user's rights (the ?watch answer is
             // shown as it arrives; the rights are asked after): under load the form was still
             // showing when the lines were. What is shown is judged once the page says it is ready.

@@ -95,7 +95,7 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
 
     @Override
     public Reply execute(Request request) {
-        running.begin(); // a cancel from here on stops the request, even before its statement starts
+        running.begin(request); // a cancel from here on stops the request, even before its statement starts
         try {
             return executeNow(request);
         } finally {
@@ -247,7 +247,7 @@ public final class DatabaseHandler implements CommandHandler, AutoCloseable {
     /** Cancels the running statement or ingest ({@link RunningStatement#cancel}). */
     @Override
     public boolean cancel(Request running) {
-        return this.running.cancel();
+        return this.running.cancel(running);
     }
 
     private String summary(int n, boolean truncated, long ms) {

@@ -46,8 +46,10 @@ final class RunningStatement {
     private Statement statement;
     private Thread thread;
     private boolean ingesting;
-    /** Between {@link #begin} and {@link #end}: a request is under way, though maybe no statement yet. */
-    private boolean underWay;
+    /** Between {@link #begin} and {@link #end}: the request under way, though maybe with no statement yet; else null. */
+    private Object underWay;
+    /** A request cancelled after its MailBox started it but before it reached {@link #begin}. */
+    private Object cancelledBeforeBegin;
     private ScheduledFuture<?> limit;
     /** What is left of the time limit, in nanoseconds; 0 when there is none (or the driver keeps it). */
     private long leftNanos;
@@ -60,16 +62,20 @@ final class RunningStatement {
         this.handle = handle;
     }
 
-    /** A request starts on the MailBox's thread: from now on a cancel is kept even before a statement runs. */
-    synchronized void begin() {
-        underWay = true;
-        cancelRequested = false;
+    /**
+     * A request starts on the MailBox's thread: from now on a cancel is kept even before a
+     * statement runs; one that came for it before this call counts too.
+     */
+    synchronized void begin(Object request) {
+        underWay = request;
+        cancelRequested = cancelledBeforeBegin == request;
+        cancelledBeforeBegin = null;
         timedOut = false;
     }
 
     /** The request ended. */
     synchronized void end() {
-        underWay = false;
+        underWay = null;
     }
 
     /**
@@ -79,7 +85,7 @@ final class RunningStatement {
      * @throws SQLException (state 57014, cancelled) when the request was cancelled before its statement started
      */
     synchronized void start(Statement st, int limitSeconds) throws SQLException {
-        if (!underWay) {
+        if (underWay == null) {
             cancelRequested = false; // a statement run outside a request has no earlier cancel
         } else if (cancelRequested) {
             throw new SQLException("cancelled before the statement started", "57014");
@@ -123,7 +129,7 @@ final class RunningStatement {
     /** An ingest starts (it has no one statement to cancel: it looks at {@link #cancelRequested} between rows). */
     synchronized void startIngest() {
         ingesting = true;
-        if (!underWay) {
+        if (underWay == null) {
             cancelRequested = false;
         } // else a cancel kept since begin() stops the ingest at its first look
     }
@@ -139,7 +145,7 @@ final class RunningStatement {
             return true;
         }
         if (statement == null) {
-            if (underWay) {
+            if (underWay != null) {
                 cancelRequested = true; // kept: the statement about to start never does
                 return true;
             }
@@ -147,6 +153,19 @@ final class RunningStatement {
         }
         cancelRequested = true;
         stop();
+        return true;
+    }
+
+    /**
+     * Stops {@code request}, which its MailBox runs now ({@code CommandHandler.cancel}): as
+     * {@link #cancel()}, and kept for it when the MailBox started it but it has not reached
+     * {@link #begin} yet.
+     */
+    synchronized boolean cancel(Object request) {
+        if (cancel()) {
+            return true;
+        }
+        cancelledBeforeBegin = request;
         return true;
     }
 

@@ -74,8 +74,9 @@ class RunningStatementTest {
 
     @Test
     void aCancelBeforeTheStatementStartsIsKeptForTheRequest() throws Exception {
-        running.begin();
-        assertThat(running.cancel()).as("a request is under way, its statement not yet made").isTrue();
+        Object request = new Object();
+        running.begin(request);
+        assertThat(running.cancel(request)).as("a request is under way, its statement not yet made").isTrue();
         assertThatThrownBy(() -> running.start(st, 0)).isInstanceOf(SQLException.class)
                 .satisfies(e -> assertThat(((SQLException) e).getSQLState()).isEqualTo("57014"));
         assertThat(running.cancelRequested()).isTrue();
@@ -83,12 +84,29 @@ class RunningStatementTest {
         running.end();
 
         // The next request starts clean: the kept cancel was its predecessor's.
-        running.begin();
+        running.begin(new Object());
         running.start(st, 0);
         assertThat(running.cancelRequested()).isFalse();
         running.finish();
         running.end();
         assertThat(running.cancel()).as("between requests nothing runs").isFalse();
         assertThat(Thread.currentThread().isInterrupted()).isFalse();
+    }
+
+    /** The MailBox started the request (its cancel reaches the handler) but the handler has not begun it. */
+    @Test
+    void aCancelBeforeTheRequestBeginsIsKeptForItAlone() throws Exception {
+        Object request = new Object();
+        assertThat(running.cancel(request)).isTrue();
+        running.begin(request);
+        assertThatThrownBy(() -> running.start(st, 0)).isInstanceOf(SQLException.class);
+        running.finish();
+        running.end();
+
+        running.begin(new Object());
+        running.start(st, 0);
+        assertThat(running.cancelRequested()).as("another request is not touched").isFalse();
+        running.finish();
+        running.end();
     }
 }
