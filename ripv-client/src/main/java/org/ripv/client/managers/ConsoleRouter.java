@@ -99,7 +99,7 @@ final class ConsoleRouter {
             return;
         }
         model.fire(ClientModel.Kind.COM, service);
-        requests.call("?cancel " + messageId, (reply, e) -> {
+        requests.cancel(messageId, (reply, e) -> {
             boolean refused = e != null || reply.status() == Status.ERROR;
             if (e != null) {
                 notice("'?cancel " + messageId + "' got no reply: " + Failures.describe(e), true);
