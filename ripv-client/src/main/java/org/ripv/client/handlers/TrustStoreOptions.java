@@ -13,18 +13,18 @@ import picocli.CommandLine.Option;
 public final class TrustStoreOptions {
     @Option(names = "--truststore", description = "Check the server's certificate against this key store (a CA-signed or"
             + " exported certificate) instead of trusting it on first use.")
-    Path file;
+    Path truststore;
 
     @Option(names = "--truststore-password", defaultValue = "changeit", description = "The trust store's password (default ${DEFAULT-VALUE}).")
-    String password;
+    String truststorePassword;
 
     /** Whether a trust store was given. */
     public boolean given() {
-        return file != null;
+        return truststore != null;
     }
 
     /** Sockets that trust the store's certificates, or null without {@code --truststore}. */
     public SocketFactory socketFactory() throws IOException {
-        return file == null ? null : Tls.socketFactory(file, password.toCharArray());
+        return truststore == null ? null : Tls.socketFactory(truststore, truststorePassword.toCharArray());
     }
 }

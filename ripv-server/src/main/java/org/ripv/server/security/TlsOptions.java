@@ -13,10 +13,10 @@ import picocli.CommandLine.Option;
 public final class TlsOptions {
     @Option(names = "--tls-keystore", description = "A PKCS12 key store with a real certificate (default: the server's own,"
             + " made on first start in DATA/tls/).")
-    Path keystore;
+    Path tlsKeystore;
 
     @Option(names = "--tls-password-file", description = "File holding the key store's password.")
-    Path passwordFile;
+    Path tlsPasswordFile;
 
     @Option(names = "--plain", description = "No TLS on the client port and the landing page (a test lab only: passwords cross in clear).")
     boolean plain;
@@ -28,17 +28,17 @@ public final class TlsOptions {
 
     /** Refuses {@code --plain} with {@code --tls-keystore}, and a key store without its password file. */
     public void check() {
-        if (keystore != null && plain) {
+        if (tlsKeystore != null && plain) {
             throw new IllegalArgumentException("--plain and --tls-keystore exclude each other");
         }
-        if (keystore != null && passwordFile == null) {
+        if (tlsKeystore != null && tlsPasswordFile == null) {
             throw new IllegalArgumentException("--tls-keystore needs --tls-password-file");
         }
     }
 
     /** The identity {@code --tls-keystore} names, or null for the server's own certificate. */
     public SelfSignedTls.Identity identity() throws Exception {
-        return keystore == null ? null : identity(keystore, passwordFile);
+        return tlsKeystore == null ? null : identity(tlsKeystore, tlsPasswordFile);
     }
 
     /** A TLS identity from a PKCS12 key store and a file holding its password (its first line). */
