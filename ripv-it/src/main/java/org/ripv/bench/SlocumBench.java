@@ -111,8 +111,7 @@ public final class SlocumBench {
         int mb = intOption(args, "--mb", 10);
         int runs = intOption(args, "--runs", 5);
         int ingestRows = intOption(args, "--ingest-rows", 20_000);
-        Path dir = Files.createTempDirectory("ripv-slocumbench");
-        try {
+        BenchTools.inScratchDirectory("ripv-slocumbench", dir -> {
             System.out.printf(Locale.ROOT, "SlocumBench: %s %s (the machine may be shared; its load is on the machine: lines)%n",
                     System.getProperty("java.vm.name"), System.getProperty("java.version"));
             byte[] plain = generate((long) mb << 20, 0, 1);
@@ -125,13 +124,7 @@ public final class SlocumBench {
             decodeSpeed("LZ4 .scd (16 KiB blocks)", scd, runs);
             ingest(dir, ingestRows, runs);
             System.out.println(CpuClock.machineLine());
-        } finally {
-            try (var s = Files.walk(dir)) {
-                for (Path p : s.sorted(java.util.Comparator.reverseOrder()).toList()) {
-                    Files.deleteIfExists(p);
-                }
-            }
-        }
+        });
         return 0;
     }
 
