@@ -281,10 +281,21 @@ public final class ConsoleBench implements Callable<Integer> {
             }
             vehicle.accept("bench " + i + " " + System.nanoTime());
         }
-        Thread.sleep(1000); // let the last lines arrive
+        awaitLastLines(ws, (long) seconds * rate, System.nanoTime() + 1_000_000_000L);
         ws.forEach(w -> w.recording = false);
         Figures f = figures(ws);
         return f.withCpu(cpu.cpuMicrosPer(f.samples()));
+    }
+
+    /**
+     * Until every watcher has recorded the {@code measured} lines sent while recording, or until
+     * {@code deadline} (a watcher that skipped lines never sees them all): a second's wait for the
+     * last lines cost every phase its full second (issue 38).
+     */
+    private static void awaitLastLines(List<Watch> ws, long measured, long deadline) throws InterruptedException {
+        while (System.nanoTime() < deadline && ws.stream().anyMatch(w -> w.n.get() < measured)) {
+            Thread.sleep(10);
+        }
     }
 
     /**
