@@ -171,6 +171,7 @@ class WebConsoleBrowserTest {
         ChromeDriver b = loggedIn("alice");
         try {
             WebDriverWait wait = new WebDriverWait(b, T);
+            wait.ignoring(org.openqa.selenium.StaleElementReferenceException.class); // the fleet redraws its rows at every push
             awaitTheCall(b);
             wait.until(d -> !"0".equals(d.findElement(By.id("map")).getAttribute("data-points")));
             shot(b, "fleet-desktop");
@@ -180,7 +181,12 @@ class WebConsoleBrowserTest {
             shot(b, "fleet-phone");
             b.manage().window().setSize(new Dimension(1280, 900));
 
-            b.findElement(By.linkText("glider1")).click(); // the fleet names a vehicle by its handle, not its address
+            // The fleet names a vehicle by its handle, not its address. A push redraws the rows: the link
+            // found may be gone by the click (seen under a CPU hog), so the click is tried until it lands.
+            wait.until(d -> {
+                d.findElement(By.linkText("glider1")).click();
+                return true;
+            });
             wait.until(d -> console(d).contains("GPS Location"));
             pageReady(wait);
             String before = console(b);
