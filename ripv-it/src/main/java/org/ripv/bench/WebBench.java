@@ -118,7 +118,7 @@ public final class WebBench implements Callable<Integer> {
         out.printf("RIPV web console benchmark — %d cores, Java %s, %d lines/s, %d s per crowd phase after %d s warm-up"
                         + " (one watcher: %d s); server -Xmx%s%s; %s%n", Runtime.getRuntime().availableProcessors(),
                 System.getProperty("java.version"), rate, seconds, warmup, baselineSeconds, heap,
-                serverJvmOptions.isEmpty() ? "" : " " + String.join(" ", serverJvmOptions), CpuClock.machineLine());
+                " " + String.join(" ", jvmOptions(serverJvmOptions)), CpuClock.machineLine());
         PermitFile.setUser(dir.resolve("permit.txt"), "bench", "bench-password".toCharArray(), List.of("observers"), 1000);
         Server server = start(dir);
         ServiceConnector vehicleLink = null;
@@ -392,10 +392,7 @@ public final class WebBench implements Callable<Integer> {
         }
         String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
         List<String> cmd = new ArrayList<>(List.of(java, "-Xmx" + heap));
-        // As ./ripv server launches it, unless an extra option picks another collector (two are refused by java)
-        boolean collector = jvmOptions.stream().anyMatch(WebBench::picksCollector);
-        org.ripv.server.ServerMain.JVM_OPTIONS.stream().filter(o -> !collector || !picksCollector(o)).forEach(cmd::add);
-        cmd.addAll(jvmOptions);
+        cmd.addAll(jvmOptions(jvmOptions));
         cmd.addAll(List.of("-cp", System.getProperty("java.class.path"), "org.ripv.server.ServerMain",
                 "server", "--data", dir.toString(), "--port", "0", "--registry-port", "0", "--http-port", Integer.toString(httpPort),
                 "--plain", "--max-clients", Integer.toString(maxClients), "--web-pages", Integer.toString(webPages)));
@@ -421,6 +418,18 @@ public final class WebBench implements Callable<Integer> {
         }
         p.destroyForcibly();
         throw new IOException("the server ended before it was ready:\n" + String.join("\n", seen));
+    }
+
+    /**
+     * The server's JVM options after -Xmx: those {@code ./ripv server} gives it, then {@code extra}; an
+     * extra collector replaces the product's (java refuses two).
+     */
+    static List<String> jvmOptions(List<String> extra) {
+        boolean collector = extra.stream().anyMatch(WebBench::picksCollector);
+        List<String> all = new ArrayList<>(org.ripv.server.ServerMain.JVM_OPTIONS.stream()
+                .filter(o -> !collector || !picksCollector(o)).toList());
+        all.addAll(extra);
+        return all;
     }
 
     private static boolean picksCollector(String jvmOption) {

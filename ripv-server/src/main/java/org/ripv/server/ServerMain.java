@@ -50,7 +50,7 @@ import picocli.CommandLine.Parameters;
 public final class ServerMain implements Callable<Integer> {
     /**
      * The JVM options {@code ./ripv server} launches the server with (the {@code ripv} script
-     * says them again; {@code RunScriptServerJvmTest} holds the two to one list), and so the
+     * says them again; {@code RipvServerJvmTest} holds the two to one list), and so the
      * benchmarks that start a server: the parallel collector. The broker's live heap is small and
      * nearly all it allocates dies young (a frame's few hundred bytes of Jetty's objects per page
      * per console line); G1's write barriers and its refinement and marking threads cost the web
