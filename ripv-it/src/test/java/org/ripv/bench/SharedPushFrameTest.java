@@ -92,7 +92,7 @@ class SharedPushFrameTest {
         volatile String failure;
         private final Socket socket;
 
-        Reader(WebWatchers.Page page, String mailbox, boolean deflate) throws IOException {
+        Reader(WebWatchers.Page page, String mailbox, boolean deflate) throws IOException, DataFormatException {
             socket = new Socket(page.host(), page.port());
             socket.setSoTimeout(60_000);
             OutputStream out = socket.getOutputStream();
@@ -108,29 +108,44 @@ class SharedPushFrameTest {
             out.write(WebWatchers.masked(("{\"id\":1,\"mailbox\":\"\",\"body\":\"?watch " + mailbox + "\",\"csrf\":\"" + page.csrf() + "\"}")
                     .getBytes(StandardCharsets.UTF_8)));
             out.flush();
-            Thread t = new Thread(() -> read(in), "shared-frame-reader");
+            Inflater inflater = new Inflater(true); // one for the connection: the server may keep its context
+            while (true) { // the ?watch reply, before any line is printed: each page then gets every line as a push
+                String text = message(in, inflater);
+                assertThat(text).as("the server closed the socket before the ?watch reply").isNotNull();
+                if (text.contains("\"type\":\"reply\"") && text.contains("\"id\":1,")) {
+                    assertThat(text).contains("\"status\":\"OK\"");
+                    break;
+                }
+            }
+            Thread t = new Thread(() -> read(in, inflater), "shared-frame-reader");
             t.setDaemon(true);
             t.start();
         }
 
-        private void read(DataInputStream in) {
-            Inflater inflater = new Inflater(true); // one for the connection: the server may keep its context
+        /** One message as text, or null at a close frame. */
+        private static String message(DataInputStream in, Inflater inflater) throws IOException, DataFormatException {
+            int b0 = in.readUnsignedByte();
+            int len7 = in.readUnsignedByte() & 0x7f;
+            long len = len7 == 126 ? in.readUnsignedShort() : len7 == 127 ? in.readLong() : len7;
+            byte[] p = new byte[(int) len];
+            in.readFully(p);
+            if ((b0 & 0x0f) == 8) {
+                return null;
+            }
+            if ((b0 & 0x80) == 0) {
+                throw new IOException("a fragmented message (not expected for these sizes)");
+            }
+            return (b0 & 0x40) != 0 ? inflate(inflater, p) : new String(p, StandardCharsets.UTF_8);
+        }
+
+        private void read(DataInputStream in, Inflater inflater) {
             try {
                 while (lines.size() < LINES) {
-                    int b0 = in.readUnsignedByte();
-                    int len7 = in.readUnsignedByte() & 0x7f;
-                    long len = len7 == 126 ? in.readUnsignedShort() : len7 == 127 ? in.readLong() : len7;
-                    byte[] p = new byte[(int) len];
-                    in.readFully(p);
-                    if ((b0 & 0x0f) == 8) {
+                    String text = message(in, inflater);
+                    if (text == null) {
                         failure = "closed by the server";
                         return;
                     }
-                    if ((b0 & 0x80) == 0) {
-                        failure = "a fragmented message (not expected for these sizes)";
-                        return;
-                    }
-                    String text = (b0 & 0x40) != 0 ? inflate(inflater, p) : new String(p, StandardCharsets.UTF_8);
                     if (!text.contains("\"type\":\"push\"")) {
                         continue; // the ?watch reply and its replay
                     }

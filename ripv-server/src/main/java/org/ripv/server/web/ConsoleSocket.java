@@ -56,7 +56,7 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
     private volatile CoreSession core;
     /**
      * True when the page negotiated an extension (permessage-deflate): then each push gets a frame
-     * of its own over a slice of the shared bytes, which the deflater consumes ({@link PushJson}).
+     * of its own over a slice of the shared bytes, which no extension can then move ({@link PushJson}).
      */
     private volatile boolean extended;
     /** The callback of frames no one waits for (replies); one per page. */
@@ -173,7 +173,7 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
      * Jetty gives us) sends the very frame every page without an extension gets, whose payload
      * nothing on the way moves or writes into (a server's frames are not masked; Jetty's flusher
      * writes a slice), instead of its own UTF-8 copy of the text; a page with permessage-deflate
-     * gets a frame over a slice of the same bytes, since the deflater consumes its input.
+     * gets a frame over a slice of the same bytes, which its deflater may consume.
      */
     private boolean sendShared(Frame shared, Runnable written) {
         CoreSession s = core;

@@ -20,7 +20,9 @@ import org.ripv.messages.OutgoingServerMessage;
  * of what the fan-out allocated per delivery). Jetty only reads a frame it sends on a page with
  * no extension — its flusher and its fragmenting write slices of the payload, never moving the
  * buffer — so pages without permessage-deflate send this very frame; a page with it gets a frame
- * of its own over a slice ({@link ConsoleSocket}), since the deflater consumes its input.
+ * of its own over a slice ({@link ConsoleSocket}): Jetty 12.0's deflater reads a slice too, but
+ * nothing in its API promises it, and a deflater that consumed the shared bytes would empty them
+ * for every page after it ({@code SharedPushFrameTest} mixes both kinds of page).
  */
 final class PushJson {
     private record Entry(OutgoingServerMessage message, Frame frame) {}
