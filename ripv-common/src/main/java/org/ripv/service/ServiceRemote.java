@@ -13,15 +13,7 @@ import org.ripv.rmi.GenericRMIInterface;
  * The service's side of {@link GenericRMIInterface}: what the server may call, each call checked
  * against the session's token; what only a server answers is refused.
  */
-final class ServiceRemote implements GenericRMIInterface {
-    private final RIPVService service;
-    private final ServiceSession session;
-
-    ServiceRemote(RIPVService service, ServiceSession session) {
-        this.service = service;
-        this.session = session;
-    }
-
+record ServiceRemote(RIPVService service, ServiceSession session) implements GenericRMIInterface {
     @Override
     public void serviceRequest(String t, IncomingServiceMessage request) throws RemoteException {
         session.check(t);

@@ -10,8 +10,16 @@ import java.util.Set;
  * message classes, the few JDK types they carry (a chart's {@code double[]} among them), and (on RMI) remote stubs of RIPV's interface.
  * Anything else, and anything deeper, bigger or with more references than the limits, is
  * rejected before it is instantiated.
+ *
+ * @param maxBytes         bytes one stream may hold
+ * @param maxDepth         how deep objects may nest
+ * @param maxRefs          references one stream may make
+ * @param maxArray         the longest array
+ * @param allowRemoteStubs true on RMI: stubs of RIPV's remote interface may come
+ * @param allowRmiRuntime  true in a process that calls other RIPV processes: RMI's own leases and exceptions may come
  */
-public final class WireFilter implements ObjectInputFilter {
+public record WireFilter(long maxBytes, long maxDepth, long maxRefs, long maxArray, boolean allowRemoteStubs,
+                         boolean allowRmiRuntime) implements ObjectInputFilter {
     private static final String MESSAGES = "org.ripv.messages";
     private static final Set<String> JDK = Set.of(
             "java.lang.String", "java.lang.Enum", "java.lang.Number", "java.lang.Long", "java.lang.Integer",
@@ -32,23 +40,6 @@ public final class WireFilter implements ObjectInputFilter {
     private static final Set<String> RMI_RUNTIME = Set.of(
             "java.rmi.dgc.Lease", "java.rmi.dgc.VMID", "java.rmi.server.UID", "java.rmi.server.ObjID",
             "java.lang.StackTraceElement", "[Ljava.lang.StackTraceElement;", "java.util.Collections$EmptyList");
-
-    private final long maxBytes;
-    private final boolean allowRmiRuntime;
-    private final long maxDepth;
-    private final long maxRefs;
-    private final long maxArray;
-    private final boolean allowRemoteStubs;
-
-    private WireFilter(long maxBytes, long maxDepth, long maxRefs, long maxArray, boolean allowRemoteStubs,
-                       boolean allowRmiRuntime) {
-        this.allowRmiRuntime = allowRmiRuntime;
-        this.maxBytes = maxBytes;
-        this.maxDepth = maxDepth;
-        this.maxRefs = maxRefs;
-        this.maxArray = maxArray;
-        this.allowRemoteStubs = allowRemoteStubs;
-    }
 
     /** The filter for one socket frame of at most {@code maxFrameBytes}. */
     public static WireFilter forFrames(int maxFrameBytes) {

@@ -56,6 +56,22 @@ public final class BenchTools {
         }
     }
 
+    /** What a benchmark does in its scratch directory. */
+    @FunctionalInterface
+    public interface InScratch {
+        void run(Path dir) throws Exception;
+    }
+
+    /** Runs {@code body} in a new temporary directory named after {@code prefix}, deleted afterwards however it ends. */
+    public static void inScratchDirectory(String prefix, InScratch body) throws Exception {
+        Path dir = Files.createTempDirectory(prefix);
+        try {
+            body.run(dir);
+        } finally {
+            deleteTree(dir);
+        }
+    }
+
     /** A server started in {@code dir} (its test configuration) with {@link #USER} an operator. */
     public static RIPVServer serverWithOperator(Path dir) throws Exception {
         ServerConfig config = ServerConfig.forTests(dir);

@@ -77,6 +77,8 @@ public final class ConsoleBench implements Callable<Integer> {
         final AtomicInteger n = new AtomicInteger();
         volatile boolean recording;
         volatile long skipped;
+        /** When the latest line it recorded was sent (System.nanoTime), as its arrival less its delay: no earlier than that. */
+        volatile long lastSent = Long.MIN_VALUE;
         final CountDownLatch stall;
 
         Watch(AutoCloseable client, int capacity, CountDownLatch stall) {
@@ -91,6 +93,7 @@ public final class ConsoleBench implements Callable<Integer> {
                 if (i < delays.length) {
                     delays[i] = nanos / 1000;
                 }
+                lastSent = Math.max(lastSent, System.nanoTime() - nanos); // one reader thread per watcher
             }
         }
 
@@ -269,6 +272,7 @@ public final class ConsoleBench implements Callable<Integer> {
         long start = System.nanoTime();
         long total = (long) (warmup + seconds) * rate;
         CpuClock cpu = CpuClock.start();
+        long lastSent = start;
         for (long i = 0; i < total; i++) {
             if (i == (long) warmup * rate) {
                 ws.forEach(w -> w.recording = true);
@@ -279,12 +283,24 @@ public final class ConsoleBench implements Callable<Integer> {
             if (wait > 0) {
                 Thread.sleep(wait / 1_000_000, (int) (wait % 1_000_000));
             }
-            vehicle.accept("bench " + i + " " + System.nanoTime());
+            lastSent = System.nanoTime();
+            vehicle.accept("bench " + i + " " + lastSent);
         }
-        Thread.sleep(1000); // let the last lines arrive
+        awaitLastLine(ws, lastSent, System.nanoTime() + 1_000_000_000L);
         ws.forEach(w -> w.recording = false);
         Figures f = figures(ws);
         return f.withCpu(cpu.cpuMicrosPer(f.samples()));
+    }
+
+    /**
+     * Until every watcher has recorded the last line, sent at {@code lastSent}, or until
+     * {@code deadline} (a watcher that skipped lines never sees it): a flat second's wait for the
+     * last lines cost every phase its full second (issue 38).
+     */
+    private static void awaitLastLine(List<Watch> ws, long lastSent, long deadline) throws InterruptedException {
+        while (System.nanoTime() < deadline && ws.stream().anyMatch(w -> w.lastSent < lastSent)) {
+            Thread.sleep(10);
+        }
     }
 
     /**

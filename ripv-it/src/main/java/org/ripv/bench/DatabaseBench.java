@@ -1,6 +1,6 @@
 package org.ripv.bench;
 
-import static org.ripv.bench.BenchTools.deleteTree;
+import static org.ripv.bench.BenchTools.inScratchDirectory;
 import static org.ripv.bench.BenchTools.intOption;
 import static org.ripv.bench.BenchTools.median;
 
@@ -80,12 +80,7 @@ public final class DatabaseBench {
         int rows = intOption(args, "--rows", 100_000);
         int runs = intOption(args, "--runs", 5);
         int warmups = intOption(args, "--warmup", 2);
-        Path dir = Files.createTempDirectory("ripv-dbbench");
-        try {
-            run(dir, rows, runs, warmups);
-        } finally {
-            deleteTree(dir);
-        }
+        inScratchDirectory("ripv-dbbench", dir -> run(dir, rows, runs, warmups));
         return 0; // RMI and the server's threads are non-daemon
     }
 

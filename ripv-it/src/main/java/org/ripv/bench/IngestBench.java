@@ -1,6 +1,6 @@
 package org.ripv.bench;
 
-import static org.ripv.bench.BenchTools.deleteTree;
+import static org.ripv.bench.BenchTools.inScratchDirectory;
 import static org.ripv.bench.BenchTools.intOption;
 import static org.ripv.bench.BenchTools.median;
 import static org.ripv.bench.BenchTools.stringOption;
@@ -89,17 +89,14 @@ public final class IngestBench {
         if (!List.of("all", "wide", "long", "track").contains(only)) {
             throw new IllegalArgumentException("--only wide, long or track, not " + only);
         }
-        Path dir = Files.createTempDirectory("ripv-ingestbench");
-        try {
+        inScratchDirectory("ripv-ingestbench", dir -> {
             if (only.equals("track")) {
                 DatabaseTarget db = EmbeddedDatabase.prepare(dir.resolve("database"), "TTY1");
                 track(dir, db, new QueryLimits(200_000, 600, 64L * 1024 * 1024), trackRuns, rows);
             } else {
                 run(dir, runs, wideRuns, trackRuns, only, rows, wideSensors);
             }
-        } finally {
-            deleteTree(dir);
-        }
+        });
         return 0;
     }
 

@@ -7,9 +7,10 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 
 /**
- * Every {@code ripv bench NAME --short} in one JVM, one after the other (issue 38: fifteen JVMs, each
- * starting Derby, RMI, Jetty and the JIT anew, made {@code EveryBenchmarkRunsTest} the slowest class
- * of the suite). Each run's output goes to {@code DIR/NAME.log} and its exit status to
+ * The named {@code ripv bench NAME --short} runs in one JVM, one after the other (issue 38: fifteen
+ * JVMs, each starting Derby, RMI, Jetty and the JIT anew, made {@code EveryBenchmarkRunsTest} the
+ * slowest class of the suite; it now starts a few of these side by side, each with its share of the
+ * runs, as most of a short run waits rather than computes). Each run's output goes to {@code DIR/NAME.log} and its exit status to
  * {@code DIR/NAME.exit}; a run that throws has its stack trace in its log and status 1.
  *
  * <pre>java -cp ripv-it.jar org.ripv.bench.ShortRuns DIR NAME...</pre>

@@ -111,8 +111,7 @@ public final class SlocumBench {
         int mb = intOption(args, "--mb", 10);
         int runs = intOption(args, "--runs", 5);
         int ingestRows = intOption(args, "--ingest-rows", 20_000);
-        Path dir = Files.createTempDirectory("ripv-slocumbench");
-        try {
+        BenchTools.inScratchDirectory("ripv-slocumbench", dir -> {
             System.out.printf(Locale.ROOT, "SlocumBench: %s %s (the machine may be shared; its load is on the machine: lines)%n",
                     System.getProperty("java.vm.name"), System.getProperty("java.version"));
             byte[] plain = generate((long) mb << 20, 0, 1);
@@ -125,13 +124,7 @@ public final class SlocumBench {
             decodeSpeed("LZ4 .scd (16 KiB blocks)", scd, runs);
             ingest(dir, ingestRows, runs);
             System.out.println(CpuClock.machineLine());
-        } finally {
-            try (var s = Files.walk(dir)) {
-                for (Path p : s.sorted(java.util.Comparator.reverseOrder()).toList()) {
-                    Files.deleteIfExists(p);
-                }
-            }
-        }
+        });
         return 0;
     }
 
@@ -190,7 +183,8 @@ public final class SlocumBench {
         System.out.printf(Locale.ROOT, "%nbinary ingest against a direct JDBC batch insert of the same values (embedded Derby, %d runs)%n", runs);
         System.out.printf(Locale.ROOT, "%-34s %9s %10s %10s %12s %7s%n", "file", "values", "ingest ms", "direct ms", "ingest v/s", "ratio");
         try (Connection c = DriverManager.getConnection(db.url(), db.user(), db.password())) {
-            IngestBench.ingest(local, replies, "warm-up.sbd", generate(0, 2000, 3)); // creates the schema too
+            // creates the schema too; no larger than the measured file (--short measures 300 rows: issue 38)
+            IngestBench.ingest(local, replies, "warm-up.sbd", generate(0, Math.min(2000, rows), 3));
             IngestBench.clear(c);
             IngestBench.measure(c, local, replies, String.format(Locale.ROOT, ".sbd, %,d rows", rows), plain, ".sbd", dba, runs);
             IngestBench.measure(c, local, replies, String.format(Locale.ROOT, ".scd, %,d rows", rows), Lz4Blocks.compress(plain, 16_384),

@@ -9,6 +9,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
@@ -30,8 +31,12 @@ import org.junit.jupiter.api.parallel.ResourceLock;
  * against the floor's. The counts are shrunk ({@link ShortMode}), so the figures mean nothing here;
  * that the benchmark still runs does.
  *
- * <p>All of them run one after the other in one JVM of their own ({@link ShortRuns}; issue 38:
- * a JVM each made this the slowest class of the suite), started once before the checks.
+ * <p>They run in {@value #LANES} JVMs of their own side by side ({@link ShortRuns}; issue 38: a JVM
+ * each made this the slowest class of the suite, and one after the other in one JVM it still was),
+ * each JVM running its share one after the other, started once before the checks. The runs share
+ * nothing (each its own folder, ports from 0, network namespaces of its own) and most of a short run
+ * is a fixed start-up or a phase paced by the clock, not a core; their figures are not measurements
+ * anyway, so a neighbour's load costs the check nothing.
  */
 @ResourceLock(Shared.CPU)
 class EveryBenchmarkRunsTest {
@@ -39,6 +44,19 @@ class EveryBenchmarkRunsTest {
     /** Under a loaded machine a shrunk benchmark still takes tens of seconds; hung ones are stopped here. */
     private static final long LIMIT_SECONDS = 1500;
     private static final Path LOGS = ROOT.resolve("ripv-it/target/bench-short");
+    /** How many ShortRuns JVMs share the runs ({@code -Dripv.bench.lanes=1} runs them one after the other in one). */
+    static final int LANES = Integer.getInteger("ripv.bench.lanes", 2);
+    /**
+     * Each short run's seconds, one after the other in one JVM at load average 6-18 (28 November,
+     * docs/performance.md), only to share them fairly between the lanes (longest first into the
+     * least loaded lane); a run not named counts 5 s.
+     */
+    private static final Map<String, Double> EXPECTED_SECONDS = Map.ofEntries(
+            Map.entry("slocum", 50.0), Map.entry("web", 34.0), Map.entry("hosts", 32.0), Map.entry("ingest", 32.0),
+            Map.entry("firststart", 25.0), Map.entry("console", 18.0), Map.entry("database", 17.0), Map.entry("webload", 16.0),
+            Map.entry("broker", 16.0), Map.entry("connections", 15.0), Map.entry("ymodem", 9.0), Map.entry("calls", 8.0),
+            Map.entry("workflow", 6.0), Map.entry("zmodem", 5.0), Map.entry("store", 5.0), Map.entry("datavis", 3.0),
+            Map.entry("dac", 1.0), Map.entry("surfacing", 1.0), Map.entry("plans", 1.0));
     /** What ShortRuns printed: each run's exit and time. */
     private static String summary = "";
 
@@ -79,16 +97,51 @@ class EveryBenchmarkRunsTest {
             Files.deleteIfExists(LOGS.resolve(name + ".exit"));
         }
         String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
-        List<String> cmd = new ArrayList<>(List.of(java, "-Xmx1g", "-cp", System.getProperty("java.class.path"),
-                ShortRuns.class.getName(), LOGS.toString()));
-        cmd.addAll(runnable);
-        Process p = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(LOGS.resolve("short-runs.log").toFile())
-                .redirectInput(ProcessBuilder.Redirect.from(new File("/dev/null"))).start();
-        if (!p.waitFor(LIMIT_SECONDS, TimeUnit.SECONDS)) {
-            p.descendants().forEach(ProcessHandle::destroyForcibly);
-            p.destroyForcibly().waitFor(30, TimeUnit.SECONDS);
+        List<Process> running = new ArrayList<>();
+        List<List<String>> lanes = lanes(runnable, LANES);
+        for (int i = 0; i < lanes.size(); i++) {
+            // C1 only and the serial collector, as the tests' launched jars (TestJvms): a short run is mostly start-up,
+            // where C2's compiling costs CPU the classes beside it need, and its figures are no measurements anyway.
+            List<String> cmd = new ArrayList<>(List.of(java, "-Xmx1g", "-XX:TieredStopAtLevel=1", "-XX:+UseSerialGC", "-Xshare:auto",
+                    "-cp", System.getProperty("java.class.path"), ShortRuns.class.getName(), LOGS.toString()));
+            cmd.addAll(lanes.get(i));
+            running.add(new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(LOGS.resolve("short-runs-" + i + ".log").toFile())
+                    .redirectInput(ProcessBuilder.Redirect.from(new File("/dev/null"))).start());
         }
-        summary = Files.readString(LOGS.resolve("short-runs.log"), StandardCharsets.UTF_8);
+        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(LIMIT_SECONDS);
+        StringBuilder all = new StringBuilder();
+        for (int i = 0; i < running.size(); i++) {
+            Process p = running.get(i);
+            if (!p.waitFor(Math.max(0, end - System.nanoTime()), TimeUnit.NANOSECONDS)) {
+                p.descendants().forEach(ProcessHandle::destroyForcibly);
+                p.destroyForcibly().waitFor(30, TimeUnit.SECONDS);
+            }
+            all.append("lane ").append(i).append(' ').append(lanes.get(i)).append(":\n")
+                    .append(Files.readString(LOGS.resolve("short-runs-" + i + ".log"), StandardCharsets.UTF_8));
+        }
+        summary = all.toString();
+    }
+
+    /** The runs shared between {@code count} lanes: longest expected first, each into the lane with least so far. */
+    static List<List<String>> lanes(List<String> runs, int count) {
+        List<List<String>> lanes = new ArrayList<>();
+        double[] load = new double[Math.max(1, Math.min(count, runs.size()))];
+        for (int i = 0; i < load.length; i++) {
+            lanes.add(new ArrayList<>());
+        }
+        List<String> longestFirst = new ArrayList<>(runs);
+        longestFirst.sort(java.util.Comparator.comparingDouble((String r) -> EXPECTED_SECONDS.getOrDefault(r, 5.0)).reversed());
+        for (String r : longestFirst) {
+            int least = 0;
+            for (int i = 1; i < load.length; i++) {
+                if (load[i] < load[least]) {
+                    least = i;
+                }
+            }
+            lanes.get(least).add(r);
+            load[least] += EXPECTED_SECONDS.getOrDefault(r, 5.0);
+        }
+        return lanes;
     }
 
     @ParameterizedTest(name = "ripv bench {0} --short")

@@ -21,15 +21,15 @@ import org.ripv.rmi.RmiSupport;
 import org.ripv.server.demo.WebhookSink;
 import org.ripv.server.lock.DataDirLock;
 import org.ripv.server.notify.Smtp;
-import org.ripv.server.notify.WebhookTargets;
+import org.ripv.server.notify.NotifyOptions;
 import org.ripv.server.permit.Passwords;
 import org.ripv.server.permit.PermitFile;
 import org.ripv.server.security.SelfSignedTls;
+import org.ripv.server.security.TlsOptions;
 import org.ripv.server.standby.StandbyLoop;
 import org.ripv.server.standby.StandbyOptions;
 import org.ripv.server.store.StateStoreOptions;
-import org.ripv.server.web.PublicVehicles;
-import org.ripv.server.web.WebConsole;
+import org.ripv.server.web.WebOptions;
 import org.ripv.service.ServiceOptions;
 import org.ripv.launch.Launchers;
 import org.ripv.launch.OptionChecks;
@@ -86,31 +86,12 @@ public final class ServerMain implements Callable<Integer> {
         long requestTimeout;
         @Option(names = "--max-upload", defaultValue = "268435456", description = "Largest upload in bytes (default ${DEFAULT-VALUE}).")
         long maxUpload;
-        @Option(names = "--tls-keystore", description = "A PKCS12 key store with a real certificate (default: the server's own,"
-                + " made on first start in DATA/tls/).")
-        Path tlsKeystore;
-        @Option(names = "--plain", description = "No TLS on the client port and the landing page (a test lab only: passwords cross in clear).")
-        boolean plain;
-        @Option(names = "--http-upload", description = "Let users who log in on the landing page upload files (off by default;"
-                + " the permit file's ?upload rules apply).")
-        boolean httpUpload;
-        @Option(names = "--web-pages", paramLabel = "N", defaultValue = "64", description = "Web console pages (WebSockets) one user"
-                + " may have open over all their log-ins; one log-in half of it (default ${DEFAULT-VALUE}).")
-        int webPages;
-        @Option(names = "--map-tiles", paramLabel = "URL", description = "Map tiles for the web console's map, an https URL with {z}, {x}"
-                + " and {y} (default: none; the map is a latitude/longitude grid that needs no internet).")
-        String mapTiles;
-        @Option(names = "--public", paramLabel = "GLOB", description = "Show anonymous visitors of the web console the map, track and"
-                + " last contact of the vehicles whose names match, e.g. 'glider*' (off by default).")
-        String publicNames;
         @Option(names = "--max-clients", defaultValue = "1000", paramLabel = "N",
                 description = "Clients that may be logged in at once (default ${DEFAULT-VALUE}; each idle one costs the server a thread"
                         + " and its buffers: docs/performance.md, Connections).")
         int maxClients;
         @Option(names = "--login-deadline", defaultValue = "10", description = "Seconds a connection may take to log in (default ${DEFAULT-VALUE}).")
         long loginDeadline;
-        @Option(names = "--tls-password-file", description = "File holding the key store's password.")
-        Path tlsPasswordFile;
         @Option(names = "--outbound-port", defaultValue = "4446", paramLabel = "PORT",
                 description = "Port for services in outbound-only mode (behind NAT: they connect out and the server's calls come back"
                         + " over that connection); 0: any free port, -1: none (default ${DEFAULT-VALUE}). A busy port only warns.")
@@ -119,18 +100,16 @@ public final class ServerMain implements Callable<Integer> {
         RmiDeadlineOptions deadlines = new RmiDeadlineOptions();
         @Option(names = "--client-jar", description = "The client jar the landing page offers (default: ripv-client.jar beside this jar).")
         Path clientJar;
-        @Option(names = "--smtp", paramLabel = "HOST:PORT", description = "The SMTP server for e-mail notifications (?notify add email ...).")
-        String smtp;
-        @Option(names = "--smtp-credentials", paramLabel = "FILE", description = "Properties file with user=, password= (and from=, starttls=true) for --smtp.")
-        Path smtpCredentials;
-        @Option(names = "--webhook-allow", paramLabel = "CIDR[,CIDR...]",
-                description = "Non-public addresses webhooks may reach too (e.g. 10.0.0.0/8, 127.0.0.1/32, or any); "
-                        + "by default only public addresses (docs/sessions.md#notifications).")
-        String webhookAllow;
         @Option(names = "--transcript-days", defaultValue = "90", description = "Days of vehicle transcripts to keep (default ${DEFAULT-VALUE}).")
         int transcriptDays;
         @Option(names = "--transcript-file-mb", defaultValue = "64", description = "A transcript file is continued in a new one past this size (default ${DEFAULT-VALUE} MB).")
         long transcriptFileMb;
+        @Mixin
+        WebOptions web = new WebOptions();
+        @Mixin
+        TlsOptions tls = new TlsOptions();
+        @Mixin
+        NotifyOptions notify = new NotifyOptions();
         @Mixin
         StateStoreOptions stateStore = new StateStoreOptions();
         @Mixin
@@ -148,7 +127,7 @@ public final class ServerMain implements Callable<Integer> {
             try {
                 deadlines.apply();
                 OptionChecks.atLeast("--max-clients", maxClients, 1);
-                OptionChecks.atLeast("--web-pages", webPages, 2);
+                web.checkPages();
             } catch (IllegalArgumentException e) {
                 throw new CommandLine.ParameterException(new CommandLine(this), e.getMessage());
             }
@@ -161,30 +140,28 @@ public final class ServerMain implements Callable<Integer> {
                     .withBindAddress(bind)
                     .withMaxClients(maxClients)
                     .withClientJar(clientJar != null ? clientJar : defaultClientJar());
-            config = config.withSecurity(config.security().withPlain(plain).withHttpUpload(httpUpload)
-                    .withLoginDeadline(Duration.ofSeconds(loginDeadline)).withWebPages(webPages));
-            String fingerprint = null;
-            if (tlsKeystore != null && plain) {
-                throw new CommandLine.ParameterException(new CommandLine(new Serve()), "--plain and --tls-keystore exclude each other");
+            config = config.withSecurity(web.applyTo(config.security().withPlain(tls.plain())
+                    .withLoginDeadline(Duration.ofSeconds(loginDeadline))));
+            try {
+                tls.check();
+            } catch (IllegalArgumentException e) {
+                throw new CommandLine.ParameterException(new CommandLine(this), e.getMessage());
             }
-            if (tlsKeystore != null) {
-                SelfSignedTls.Identity id = identity(tlsKeystore, tlsPasswordFile);
+            SelfSignedTls.Identity id = tls.identity();
+            String fingerprint = null;
+            if (id != null) {
                 config = config.withTls(id.context());
                 fingerprint = id.fingerprint();
             }
             SessionOptions sessions;
             try {
-                WebConsole.checkMapTiles(mapTiles);
-                if (publicNames != null) {
-                    PublicVehicles.glob(publicNames); // refuses a bad glob with its message
-                }
+                web.checkTilesAndPublic();
                 config = config.withStateStore(stateStore.location(System.err));
                 sessions = SessionOptions.defaults().withTranscripts(transcriptFileMb * 1024 * 1024, transcriptDays)
-                        .withWebhooks(WebhookTargets.parse(webhookAllow));
+                        .withWebhooks(notify.webhooks());
+                Smtp smtp = notify.smtp();
                 if (smtp != null) {
-                    sessions = sessions.withSmtp(Smtp.parse(smtp, smtpCredentials));
-                } else if (smtpCredentials != null) {
-                    throw new IllegalArgumentException("--smtp-credentials needs --smtp HOST:PORT");
+                    sessions = sessions.withSmtp(smtp);
                 }
             } catch (IllegalArgumentException e) {
                 System.err.println("Error: " + e.getMessage());
@@ -236,7 +213,7 @@ public final class ServerMain implements Callable<Integer> {
 
         /** Starts a server and its outbound port (a busy one only warns). */
         private RIPVServer open(ServerConfig config, SessionOptions sessions) throws IOException {
-            RIPVServer server = new RIPVServer(config, sessions).withMapTiles(mapTiles).withPublicView(publicNames);
+            RIPVServer server = new RIPVServer(config, sessions).withMapTiles(web.mapTiles()).withPublicView(web.publicNames());
             server.start();
             openedOutbound = -1;
             if (outboundPort >= 0) {
@@ -263,10 +240,10 @@ public final class ServerMain implements Callable<Integer> {
             if (fingerprint == null) {
                 fingerprint = server.tlsFingerprint();
             }
-            System.err.println("RIPVServer ready: clients on port " + server.port() + (plain ? " (plain TCP, no TLS)" : " (TLS)")
+            System.err.println("RIPVServer ready: clients on port " + server.port() + (tls.plain() ? " (plain TCP, no TLS)" : " (TLS)")
                     + ", services register at " + (bind != null ? bind : "this host") + ":" + server.registryPort()
                     + " with --secret-file " + server.secretFile()
-                    + (server.httpPort() > 0 ? ", landing page on " + (plain ? "http" : "https") + "://localhost:" + server.httpPort() + "/" : "")
+                    + (server.httpPort() > 0 ? ", landing page on " + (tls.plain() ? "http" : "https") + "://localhost:" + server.httpPort() + "/" : "")
                     + outbound);
             if (fingerprint != null) {
                 System.err.println("TLS certificate fingerprint: " + fingerprint
@@ -287,15 +264,6 @@ public final class ServerMain implements Callable<Integer> {
                 // no jar to offer
             }
             return null;
-        }
-
-        /** A TLS identity from a PKCS12 key store and a file holding its password. */
-        static SelfSignedTls.Identity identity(Path keystore, Path passwordFile) throws Exception {
-            if (passwordFile == null) {
-                throw new CommandLine.ParameterException(new CommandLine(new Serve()), "--tls-keystore needs --tls-password-file");
-            }
-            char[] pw = Files.readString(passwordFile, StandardCharsets.UTF_8).trim().toCharArray();
-            return SelfSignedTls.load(keystore, pw);
         }
     }
 
@@ -354,7 +322,7 @@ public final class ServerMain implements Callable<Integer> {
 
     /** A TLS context for {@link ServerConfig#withTls} from a PKCS12 key store and its password file. */
     public static SSLContext tlsContext(Path keystore, Path passwordFile) throws Exception {
-        return Serve.identity(keystore, passwordFile).context();
+        return TlsOptions.identity(keystore, passwordFile).context();
     }
 
     /** Runs the command line; returns the exit code. */

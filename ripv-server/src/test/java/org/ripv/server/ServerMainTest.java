@@ -60,4 +60,32 @@ class ServerMainTest {
         assertThat(exit).isEqualTo(2);
         assertThat(err.toString(StandardCharsets.UTF_8)).contains("--max-clients must be at least 1, got 0");
     }
+
+    /** The rules each option mixin keeps ({@code WebOptions}, {@code TlsOptions}, {@code NotifyOptions}), through the command line. */
+    @Test
+    void theMixinsRulesRefuseWithAUsageErrorNamingTheOptions() {
+        String ks = dir.resolve("keystore.p12").toString();
+        String[][] cases = {
+            {"--web-pages must be at least 2, got 1", "--web-pages", "1"},
+            {"--plain and --tls-keystore exclude each other", "--plain", "--tls-keystore", ks},
+            {"--tls-keystore needs --tls-password-file", "--tls-keystore", ks},
+            {"--smtp-credentials needs --smtp HOST:PORT", "--smtp-credentials", dir.resolve("smtp.properties").toString()},
+        };
+        for (String[] c : cases) {
+            java.util.List<String> args = new java.util.ArrayList<>(java.util.List.of("server", "--port", "0", "--registry-port", "0",
+                    "--http-port", "0", "--data", dir.resolve("data").toString()));
+            args.addAll(java.util.Arrays.asList(c).subList(1, c.length));
+            java.io.PrintStream old = System.err;
+            java.io.ByteArrayOutputStream err = new java.io.ByteArrayOutputStream();
+            System.setErr(new java.io.PrintStream(err, true, StandardCharsets.UTF_8));
+            int exit;
+            try {
+                exit = ServerMain.run(args.toArray(String[]::new));
+            } finally {
+                System.setErr(old);
+            }
+            assertThat(exit).as(c[0]).isEqualTo(2);
+            assertThat(err.toString(StandardCharsets.UTF_8)).as(c[0]).contains(c[0]);
+        }
+    }
 }

@@ -12,25 +12,13 @@ import java.util.Map;
  * leaves nothing behind; a file is checked before it takes its name, and one that fails is kept
  * as {@code NAME.failed} and reported, never given the name a DAC upload would pick up.
  */
-public final class DacRun {
+public record DacRun(SegmentReader reader, ProfileSplitter splitter, ProfileWriter writer, ProfileChecker checker) {
     /** What was written, one line a profile, and whether every file passed the check. */
     public record Result(List<Path> written, List<String> lines, boolean allPassed, List<Made> made) {
     }
 
     /** One profile's file: where it is ({@code NAME.failed} when it failed the check), its check, its QC summary and line. */
     public record Made(Profile profile, Path file, ProfileChecker.Report report, String qc, String line) {
-    }
-
-    private final SegmentReader reader;
-    private final ProfileSplitter splitter;
-    private final ProfileWriter writer;
-    private final ProfileChecker checker;
-
-    public DacRun(SegmentReader reader, ProfileSplitter splitter, ProfileWriter writer, ProfileChecker checker) {
-        this.reader = reader;
-        this.splitter = splitter;
-        this.writer = writer;
-        this.checker = checker;
     }
 
     public Result run(List<Path> files, Path out) throws DacException, IOException {

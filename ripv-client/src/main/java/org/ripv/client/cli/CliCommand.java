@@ -18,6 +18,7 @@ import org.ripv.client.handlers.Failover;
 import org.ripv.client.handlers.RipvErrorException;
 import org.ripv.client.handlers.ServerTrustOptions;
 import org.ripv.client.handlers.Tls;
+import org.ripv.client.handlers.TrustStoreOptions;
 import org.ripv.client.cli.shell.Shell;
 import org.ripv.failover.ServerList;
 import picocli.CommandLine.Command;
@@ -54,11 +55,8 @@ public final class CliCommand implements Callable<Integer> {
     boolean tls;
     @Mixin
     ServerTrustOptions trust;
-    @Option(names = "--truststore", description = "Check the server's certificate against this key store (a CA-signed or"
-            + " exported certificate) instead of trusting it on first use.")
-    Path truststore;
-    @Option(names = "--truststore-password", defaultValue = "changeit", description = "The trust store's password (default ${DEFAULT-VALUE}).")
-    String truststorePassword;
+    @Mixin
+    TrustStoreOptions truststore;
     @Option(names = "--history", paramLabel = "FILE", description = "The interactive CLI's history (default ~/.ripv/history).")
     Path history;
 
@@ -106,14 +104,14 @@ public final class CliCommand implements Callable<Integer> {
             err.println("Error: no password: give --password-file, set RIPV_PASSWORD, or run on a terminal to be asked");
             return 2;
         }
-        if (trust.plain() && (truststore != null || tls)) {
+        if (trust.plain() && (truststore.given() || tls)) {
             err.println("Error: --plain excludes --tls and --truststore");
             return 2;
         }
         ClientSocketHandler client;
         SocketFactory trusted;
         try {
-            trusted = truststore != null ? Tls.socketFactory(truststore, truststorePassword.toCharArray()) : null;
+            trusted = truststore.socketFactory();
             client = connect(servers, trusted);
         } catch (IOException e) {
             err.println("Error: cannot connect to " + servers + ": " + e.getMessage());

@@ -255,19 +255,24 @@ public final class Tls {
             checkServerTrusted(chain, authType);
         }
 
+        // A client takes no connections, so it trusts no client, however it is asked.
         @Override
         public void checkClientTrusted(X509Certificate[] chain, String authType) throws CertificateException {
-            throw new CertificateException("a client does not take connections");
+            throw notAServer();
         }
 
         @Override
         public void checkClientTrusted(X509Certificate[] chain, String authType, Socket socket) throws CertificateException {
-            checkClientTrusted(chain, authType);
+            throw notAServer();
         }
 
         @Override
         public void checkClientTrusted(X509Certificate[] chain, String authType, SSLEngine engine) throws CertificateException {
-            checkClientTrusted(chain, authType);
+            throw notAServer();
+        }
+
+        private static CertificateException notAServer() {
+            return new CertificateException("a client does not take connections");
         }
 
         @Override

@@ -21,19 +21,7 @@ import org.ripv.messages.VehicleEvent;
  * also asks the server to cancel a running request and to send older console lines. Model
  * changes run on the UI executor.
  */
-final class ConsoleRouter {
-    private final ClientModel model;
-    private final Executor ui;
-    private final Requests requests;
-    private final DesktopNotice desktop;
-
-    ConsoleRouter(ClientModel model, Executor ui, Requests requests, DesktopNotice desktop) {
-        this.model = model;
-        this.ui = ui;
-        this.requests = requests;
-        this.desktop = desktop;
-    }
-
+record ConsoleRouter(ClientModel model, Executor ui, Requests requests, DesktopNotice desktop) {
     void reply(String service, LineKind kind, String text) {
         ui.execute(() -> {
             ServiceModel m = service == null ? null : model.service(service);

@@ -6,7 +6,6 @@ import java.awt.Font;
 import java.awt.event.KeyEvent;
 import java.util.Collections;
 import java.util.List;
-import javax.swing.BorderFactory;
 import javax.swing.DefaultListCellRenderer;
 import javax.swing.DefaultListModel;
 import javax.swing.JList;
@@ -59,9 +58,7 @@ final class ReceiptsTab extends JPanel {
         split.setBorder(null);
         JPanel buttons = WorkflowDialog.row("Last:", KeyEvent.VK_T, last, Buttons.button("Refresh", KeyEvent.VK_H,
                 "receiptsRefresh", "Ask the server again (?receipts --last N)", e -> refresh.run()));
-        setBorder(BorderFactory.createEmptyBorder(4, 4, 4, 4));
-        add(split, BorderLayout.CENTER);
-        add(buttons, BorderLayout.SOUTH);
+        WorkflowDialog.lay(this, split, buttons, BorderLayout.SOUTH);
     }
 
     /** The list takes 40 % once the window has its size. */

@@ -1,6 +1,7 @@
 package org.ripv.client.panels;
 
 import java.awt.BorderLayout;
+import java.awt.Component;
 import java.awt.Dimension;
 import java.awt.Font;
 import java.awt.Window;
@@ -168,9 +169,7 @@ public final class WorkflowDialog extends JDialog {
         split.setResizeWeight(0.6);
         split.setBorder(null);
         JPanel p = new JPanel(new BorderLayout(4, 4));
-        p.setBorder(BorderFactory.createEmptyBorder(4, 4, 4, 4));
-        p.add(split, BorderLayout.CENTER);
-        p.add(buttons, BorderLayout.SOUTH);
+        lay(p, split, buttons, BorderLayout.SOUTH);
         return p;
     }
 
@@ -179,6 +178,13 @@ public final class WorkflowDialog extends JDialog {
                 "Clear the queue", JOptionPane.OK_CANCEL_OPTION, JOptionPane.WARNING_MESSAGE) == JOptionPane.OK_OPTION) {
             manager.clearQueue(mailbox);
         }
+    }
+
+    /** The layout the dialog's tabs share: {@code content} in the middle, a bar of controls at {@code edge}, 4 px around. */
+    static void lay(JPanel tab, Component content, JComponent bar, String edge) {
+        tab.setBorder(BorderFactory.createEmptyBorder(4, 4, 4, 4));
+        tab.add(content, BorderLayout.CENTER);
+        tab.add(bar, edge);
     }
 
     /** A row: a label with its mnemonic, the field it names, and a button. */

@@ -62,9 +62,7 @@ final class WorkflowEditor extends JPanel {
         scroll.setRowHeaderView(lineNumbers);
         JPanel top = WorkflowDialog.row("Name:", KeyEvent.VK_N, name, Buttons.button("Upload and queue", KeyEvent.VK_U,
                 "queueText", "Upload the text as NAME and queue it for this MailBox (?upload, then ?queue add)", e -> queue.run()));
-        setBorder(BorderFactory.createEmptyBorder(4, 4, 4, 4));
-        add(top, BorderLayout.NORTH);
-        add(scroll, BorderLayout.CENTER);
+        WorkflowDialog.lay(this, scroll, top, BorderLayout.NORTH);
     }
 
     String fileName() {

@@ -23,6 +23,9 @@ import org.junit.jupiter.api.io.TempDir;
  * fetch-slocum-data.wf fetches them on the first call, so {@code positions} has the glider's
  * track right after it (before: {@code Table/View 'POSITIONS' does not exist}). Notifications can
  * be tried: the webhook the hint names is accepted and the demo's receiver gets the events.
+ *
+ * <p>Its glider speaks PicoDOS, and {@link DemoDialogsTest}'s checks of that dialog (a call record,
+ * no false ALERT) are made on this demo rather than on one launched for them (issue 38).
  */
 class DemoGliderDataTest {
     @TempDir
@@ -53,7 +56,7 @@ class DemoGliderDataTest {
         }
         assumeTrue(ProcessWatch.supported(), "needs Linux /proc to find the demo's processes");
         try (RunningDemo demo = RunningDemo.start(RipvScriptHelpTest.ROOT, tmp.resolve("demo"), tmp.resolve("home"),
-                Duration.ofMinutes(5), Map.of("RIPV_SURFACE_SECONDS", "40", "RIPV_DIVE_SECONDS", "5"))) {
+                Duration.ofMinutes(5), Map.of("RIPV_GLIDER_DIALOG", "picodos", "RIPV_SURFACE_SECONDS", "40", "RIPV_DIVE_SECONDS", "5"))) {
             assertThat(demo.output()).contains("queued fetch-slocum-data.wf for sim01's first call")
                     .contains("?notify add webhook http://127.0.0.1:" + demo.webhookPort + "/")
                     .contains(demo.dir.resolve("logs/webhooks.log").toString());
@@ -79,6 +82,7 @@ class DemoGliderDataTest {
             }
             assertThat(receipts).contains("fetch-slocum-data.wf").contains("ymodem:get *.cac: OK").contains("ymodem:get *.sbd *.tbd: OK")
                     .contains("rosie_713-2019-166-0-157.sbd").contains("done: fetched 5").doesNotContain("note: ");
+            DemoDialogsTest.assertCallRecordWithoutFalseAlerts(demo, "picodos");
 
             Cli q = cli(demo, "use <DatabaseServer>::<localhost>TTY1", "SELECT COUNT(*) AS n FROM positions WHERE vehicle = 'rosie_713'");
             assertThat(q.exit()).as(q.out()).isZero();

@@ -40,12 +40,11 @@ public final class DataDirLock implements AutoCloseable {
     }
 
     private final Path file;
-    private final FileChannel channel;
+    /** Held on the lock file's channel, which {@link FileLock#channel()} gives back to close. */
     private final FileLock lock;
 
-    private DataDirLock(Path file, FileChannel channel, FileLock lock) {
+    private DataDirLock(Path file, FileLock lock) {
         this.file = file;
-        this.channel = channel;
         this.lock = lock;
     }
 
@@ -81,7 +80,7 @@ public final class DataDirLock implements AutoCloseable {
             channel.close();
             throw e;
         }
-        return new DataDirLock(file, channel, lock);
+        return new DataDirLock(file, lock);
     }
 
     /** This process as the lock file names it. */
@@ -111,7 +110,7 @@ public final class DataDirLock implements AutoCloseable {
         try {
             lock.release();
         } finally {
-            channel.close();
+            lock.channel().close();
         }
     }
 }

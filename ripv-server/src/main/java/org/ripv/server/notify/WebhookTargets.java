@@ -15,19 +15,9 @@ import org.ripv.security.AddressRanges;
  * {@code --webhook-allow CIDR[,CIDR...]} (or {@code any}). Every address a host name resolves to
  * must pass, at subscription and again at each delivery (docs/sessions.md#notifications).
  */
-public final class WebhookTargets {
+public record WebhookTargets(AddressRanges allowed, boolean any, String text) {
     /** The default: only public addresses. */
     public static final WebhookTargets PUBLIC_ONLY = new WebhookTargets(AddressRanges.NONE, false, "");
-
-    private final AddressRanges allowed;
-    private final boolean any;
-    private final String text;
-
-    private WebhookTargets(AddressRanges allowed, boolean any, String text) {
-        this.allowed = allowed;
-        this.any = any;
-        this.text = text;
-    }
 
     /**
      * Parses {@code --webhook-allow}: a comma list of CIDR ranges ({@code 127.0.0.1/32},

@@ -27,20 +27,9 @@ import org.slf4j.LoggerFactory;
  * delivered but silent ({@code TIMEOUT}, withdrawn if it had not started), or lost with its
  * service ({@code SERVICE_GONE}, "went away"). Nothing here waits for another request's call.
  */
-public final class RequestEndings {
+public record RequestEndings(Consumer<OutgoingServerMessage> reply, PendingRequests pending, Executor withdrawals,
+                             Duration timeout) {
     private static final Logger log = LoggerFactory.getLogger(RequestEndings.class);
-
-    private final Consumer<OutgoingServerMessage> reply;
-    private final PendingRequests pending;
-    private final Executor withdrawals;
-    private final Duration timeout;
-
-    public RequestEndings(Consumer<OutgoingServerMessage> reply, PendingRequests pending, Executor withdrawals, Duration timeout) {
-        this.reply = reply;
-        this.pending = pending;
-        this.withdrawals = withdrawals;
-        this.timeout = timeout;
-    }
 
     private void error(Header h, String sid, ErrorCode code, String text) {
         reply.accept(new IncomingServerMessage(h).reply(Footer.error(sid, code, text).via(ServerReplies.SERVICE)));

@@ -37,6 +37,11 @@ final class PgConnections implements AutoCloseable {
         this.slots = new Semaphore(max, true);
     }
 
+    /** The JDBC URL, secrets and all: never for messages as it stands. */
+    String url() {
+        return url;
+    }
+
     /** A new connection of its own (the caller closes it). */
     Connection open() throws SQLException {
         return DriverManager.getConnection(url, props);

@@ -56,11 +56,9 @@ public final class PostgresStateStore implements StateStore {
         "CREATE INDEX IF NOT EXISTS ripv_surfacing_mailbox ON ripv_surfacing (mailbox, seq)",
     };
 
-    private final String url;
     private final PgConnections db;
 
-    private PostgresStateStore(String url, PgConnections db) {
-        this.url = url;
+    private PostgresStateStore(PgConnections db) {
         this.db = db;
     }
 
@@ -86,7 +84,7 @@ public final class PostgresStateStore implements StateStore {
         props.setProperty("tcpKeepAlive", "true");
         props.setProperty("ApplicationName", "RIPVServer");
         PgConnections db = new PgConnections(where.jdbcUrl(), props, 4);
-        PostgresStateStore store = new PostgresStateStore(where.jdbcUrl(), db);
+        PostgresStateStore store = new PostgresStateStore(db);
         try {
             db.transaction(c -> {
                 try (Statement st = c.createStatement()) {
@@ -421,7 +419,7 @@ public final class PostgresStateStore implements StateStore {
 
     @Override
     public String describe() {
-        return withoutSecrets(url);
+        return withoutSecrets(db.url());
     }
 
     @Override

@@ -12,7 +12,7 @@ import org.slf4j.LoggerFactory;
  * ({@link #listen}), which reads it through this object as if it were the link. During a YMODEM
  * transfer ({@link #binary}) the bytes go to the command only, never to the console.
  */
-final class Connection implements Link {
+final class Connection extends FilterLink {
     private static final Logger log = LoggerFactory.getLogger(Connection.class);
     /** How long a read waits before the reader looks at the clock (partial lines, quiet, carrier). */
     static final long TICK_MILLIS = 250;
@@ -32,7 +32,6 @@ final class Connection implements Link {
         void ended(Connection connection, IOException e);
     }
 
-    private final Link link;
     private final Traffic traffic;
     private final boolean call;
     private final ReplyPipe pipe = new ReplyPipe(64 * 1024);
@@ -44,7 +43,7 @@ final class Connection implements Link {
      * @param call true when this is a caller on a listen link (its end is the call's end)
      */
     Connection(Link link, Traffic traffic, String name, boolean call) {
-        this.link = link;
+        super(link);
         this.traffic = traffic;
         this.call = call;
         this.reader = new Thread(this::read, "serial-reader-" + name);
@@ -112,36 +111,6 @@ final class Connection implements Link {
     @Override
     public int read(byte[] buffer, int offset, int len, long timeoutMillis) throws IOException {
         return pipe.read(buffer, offset, len, timeoutMillis);
-    }
-
-    @Override
-    public void write(byte[] buffer, int offset, int len) throws IOException {
-        link.write(buffer, offset, len);
-    }
-
-    @Override
-    public void flush() throws IOException {
-        link.flush();
-    }
-
-    @Override
-    public String describe() {
-        return link.describe();
-    }
-
-    @Override
-    public boolean hasCarrierLine() {
-        return link.hasCarrierLine();
-    }
-
-    @Override
-    public boolean buffersDeeply() {
-        return link.buffersDeeply();
-    }
-
-    @Override
-    public boolean carrier() {
-        return link.carrier();
     }
 
     /** Hangs up: closes the link and lets the reader end (without reporting it as a failure). */

@@ -12,21 +12,9 @@ import org.ripv.service.Reply;
  * as this command after checking the user's right to {@code ?key KEY} and the MailBox's lock;
  * here the link's own list ({@code keys=}) decides, and the console records who pressed what.
  */
-final class KeyCommands {
+record KeyCommands(String handle, PilotSettings pilot, LinkSettings settings, ReplyReader replies) {
     /** The command word the server forwards ({@code ?key ctrl-c}). */
     static final String WORD = "?key";
-
-    private final PilotSettings pilot;
-    private final LinkSettings settings;
-    private final ReplyReader replies;
-    private final String handle;
-
-    KeyCommands(String handle, PilotSettings pilot, LinkSettings settings, ReplyReader replies) {
-        this.handle = handle;
-        this.pilot = pilot;
-        this.settings = settings;
-        this.replies = replies;
-    }
 
     /** The key a {@code ?key KEY} command names, if the link allows it; a clear refusal otherwise. */
     ControlKey allowed(List<String> arguments) throws ServiceException {

@@ -17,24 +17,12 @@ import org.ripv.services.serial.ymodem.SendFile;
  * under its plain NAME, and counts as sent only when the vehicle's own {@code dir} then lists NAME
  * with the same size: a transfer the vehicle did not keep whole must stay for the next call.
  */
-final class ToVehicleCommands {
+record ToVehicleCommands(PilotSettings pilot, ZmodemCommands zmodem, YmodemCommands ymodem, PlainCommands plain) {
     static final String WORD = "tovehicle:put";
     /** The vehicle's listing command (PicoDOS and GliderDOS alike). */
     static final String LIST_COMMAND = "dir";
     /** A {@code dir} line: name, size, then date and time. */
     private static final Pattern DIR_LINE = Pattern.compile("^\\s*([^\\s/\\\\]+)\\s+(\\d{1,18})\\s+\\S+\\s+\\S+\\s*$");
-
-    private final PilotSettings pilot;
-    private final ZmodemCommands zmodem;
-    private final YmodemCommands ymodem;
-    private final PlainCommands plain;
-
-    ToVehicleCommands(PilotSettings pilot, ZmodemCommands zmodem, YmodemCommands ymodem, PlainCommands plain) {
-        this.pilot = pilot;
-        this.zmodem = zmodem;
-        this.ymodem = ymodem;
-        this.plain = plain;
-    }
 
     /** Whether the link sends its to-vehicle folder; checked before the link is touched. */
     void requireOn() throws ServiceException {

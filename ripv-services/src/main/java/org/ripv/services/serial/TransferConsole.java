@@ -1,5 +1,6 @@
 package org.ripv.services.serial;
 
+import java.util.List;
 import java.util.Locale;
 import org.ripv.services.serial.ymodem.FileHeader;
 import org.ripv.services.serial.ymodem.TransferListener;
@@ -55,35 +56,29 @@ final class TransferConsole implements TransferListener {
     /** What a transfer tells as it goes: PROGRESS replies, the console's TRANSFER lines, then {@code ?status}. */
     static TransferListener listeners(ProgressReporter progress, VehicleConsole console, String user, String verb,
                                       TransferListener status) {
-        return both(progress, both(new TransferConsole(console, user, verb), status));
+        return new Fan(List.of(progress, new TransferConsole(console, user, verb), status));
     }
 
-    /** Both listeners, in order. */
-    static TransferListener both(TransferListener a, TransferListener b) {
-        return new TransferListener() {
-            @Override
-            public void started(FileHeader file) {
-                a.started(file);
-                b.started(file);
-            }
+    /** Tells each listener in turn, in the order a transfer's life calls them. */
+    record Fan(List<TransferListener> each) implements TransferListener {
+        @Override
+        public void started(FileHeader file) {
+            each.forEach(l -> l.started(file));
+        }
 
-            @Override
-            public void progress(FileHeader file, long done) {
-                a.progress(file, done);
-                b.progress(file, done);
-            }
+        @Override
+        public void progress(FileHeader file, long done) {
+            each.forEach(l -> l.progress(file, done));
+        }
 
-            @Override
-            public void finished(FileHeader file) {
-                a.finished(file);
-                b.finished(file);
-            }
+        @Override
+        public void resumed(FileHeader file, long offset) {
+            each.forEach(l -> l.resumed(file, offset));
+        }
 
-            @Override
-            public void resumed(FileHeader file, long offset) {
-                a.resumed(file, offset);
-                b.resumed(file, offset);
-            }
-        };
+        @Override
+        public void finished(FileHeader file) {
+            each.forEach(l -> l.finished(file));
+        }
     }
 }

@@ -2,20 +2,19 @@ package org.ripv.services.simulator;
 
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
+import org.ripv.services.serial.FilterLink;
 import org.ripv.services.serial.Link;
-import org.ripv.services.serial.ymodem.ByteLink;
 
 /**
  * The simulator's view of its link: bytes the shell read past the end of a command line are
  * pushed back, so a YMODEM 'C' that arrives right behind {@code ys NAME} reaches the sender.
  */
-final class ShellLink implements ByteLink {
-    private final Link link;
+final class ShellLink extends FilterLink {
     private byte[] pending = new byte[0];
     private int position;
 
     ShellLink(Link link) {
-        this.link = link;
+        super(link);
     }
 
     void unread(byte[] bytes, int offset, int len) {
@@ -34,17 +33,7 @@ final class ShellLink implements ByteLink {
             position += n;
             return n;
         }
-        return link.read(buffer, offset, len, timeoutMillis);
-    }
-
-    @Override
-    public void write(byte[] buffer, int offset, int len) throws IOException {
-        link.write(buffer, offset, len);
-    }
-
-    @Override
-    public void flush() throws IOException {
-        link.flush();
+        return super.read(buffer, offset, len, timeoutMillis);
     }
 
     /** Writes text as the vehicle's terminal does (ISO-8859-1) and flushes it. */
