@@ -187,7 +187,8 @@ WEBHOOK_ALLOW=()
 [ "$HERE" = localhost ] && [ "$BIND" != 0.0.0.0 ] && [ "$BIND" != "::" ] && WEBHOOK_ALLOW=(--webhook-allow 127.0.0.1/32)
 
 echo "demo: starting the RIPVServer (logs in $DEMO/logs)" >&2
-"$JAVA" "${USER_HOME[@]}" -jar "$(jar ripv-server)" server --data "$DEMO/server" --port "$PORT" --registry-port "$REGISTRY" \
+# -XX:+UseParallelGC: as ./ripv server launches it (ServerMain.JVM_OPTIONS, docs/performance.md).
+"$JAVA" "${USER_HOME[@]}" -XX:+UseParallelGC -jar "$(jar ripv-server)" server --data "$DEMO/server" --port "$PORT" --registry-port "$REGISTRY" \
   --http-port "$HTTP" --outbound-port "$OUTBOUND" --bind "$BIND" ${WEBHOOK_ALLOW[@]+"${WEBHOOK_ALLOW[@]}"} \
   >"$DEMO/logs/server.log" 2>&1 &
 pids+=($!)

@@ -52,14 +52,17 @@ public final class PlanMain implements Callable<Integer> {
         return cl.execute(args);
     }
 
-    @Command(name = "forecast", mixinStandardHelpOptions = true,
-            description = "Distance, bearing and ETA from a position to each waypoint of a goto FILE, in the order the glider flies it.",
-            exitCodeListHeading = "%nExit codes:%n",
-            exitCodeList = {"0:the forecast", "1:the file was refused or unreadable", "2:a bad command line"})
-    static final class ForecastCommand implements Callable<Integer> {
+    /** What each subcommand shares: -h and -V, the exit codes' heading, and its own command line for output and errors. */
+    @Command(mixinStandardHelpOptions = true, exitCodeListHeading = "%nExit codes:%n")
+    abstract static class Subcommand implements Callable<Integer> {
         @CommandLine.Spec
         CommandLine.Model.CommandSpec spec;
+    }
 
+    @Command(name = "forecast",
+            description = "Distance, bearing and ETA from a position to each waypoint of a goto FILE, in the order the glider flies it.",
+            exitCodeList = {"0:the forecast", "1:the file was refused or unreadable", "2:a bad command line"})
+    static final class ForecastCommand extends Subcommand {
         @Parameters(paramLabel = "FILE", description = "a goto file (goto_l10.ma)")
         Path file;
 
@@ -116,14 +119,10 @@ public final class PlanMain implements Callable<Integer> {
         }
     }
 
-    @Command(name = "check", mixinStandardHelpOptions = true,
+    @Command(name = "check",
             description = "Check FILE(s): the waypoint table and b_args, or each problem as FILE:LINE: reason.",
-            exitCodeListHeading = "%nExit codes:%n",
             exitCodeList = {"0:every file passed", "1:a file was refused or unreadable", "2:a bad command line"})
-    static final class Check implements Callable<Integer> {
-        @CommandLine.Spec
-        CommandLine.Model.CommandSpec spec;
-
+    static final class Check extends Subcommand {
         @Parameters(arity = "1..*", paramLabel = "FILE", description = "behaviour files: goto_l10.ma, surfac06.ma, yo10.ma, …")
         List<Path> files;
 

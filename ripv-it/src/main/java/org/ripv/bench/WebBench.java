@@ -68,6 +68,11 @@ public final class WebBench implements Callable<Integer> {
     String heap;
     @Option(names = "--reader-threads", description = "Selector threads reading the watchers (default: one per core).")
     int readerThreads = Runtime.getRuntime().availableProcessors();
+    @Option(names = "--server-jvm-option", paramLabel = "OPTION", description = "One more option for the server's JVM, after the"
+            + " product's own and -Xmx (repeatable; e.g. --server-jvm-option=-XX:StartFlightRecording=filename=web.jfr to profile"
+            + " it; a collector, e.g. -XX:+UseG1GC, replaces the product's -XX:+UseParallelGC). Default: none, the server as"
+            + " ./ripv server launches it.")
+    List<String> serverJvmOptions = new ArrayList<>();
 
     @picocli.CommandLine.Spec
     picocli.CommandLine.Model.CommandSpec spec;
@@ -111,8 +116,9 @@ public final class WebBench implements Callable<Integer> {
         check();
         Path dir = Files.createTempDirectory("ripv-bench-web");
         out.printf("RIPV web console benchmark — %d cores, Java %s, %d lines/s, %d s per crowd phase after %d s warm-up"
-                        + " (one watcher: %d s); server -Xmx%s; %s%n", Runtime.getRuntime().availableProcessors(),
-                System.getProperty("java.version"), rate, seconds, warmup, baselineSeconds, heap, CpuClock.machineLine());
+                        + " (one watcher: %d s); server -Xmx%s%s; %s%n", Runtime.getRuntime().availableProcessors(),
+                System.getProperty("java.version"), rate, seconds, warmup, baselineSeconds, heap,
+                " " + String.join(" ", jvmOptions(serverJvmOptions)), CpuClock.machineLine());
         PermitFile.setUser(dir.resolve("permit.txt"), "bench", "bench-password".toCharArray(), List.of("observers"), 1000);
         Server server = start(dir);
         ServiceConnector vehicleLink = null;
@@ -366,19 +372,30 @@ public final class WebBench implements Callable<Integer> {
 
     /** Starts the server jar's main in a JVM of its own, with the web console on a free port. */
     private Server start(Path dir) throws IOException {
-        return startServer(dir, heap, watchers + 200, 2 * (watchers + 200)); // the bench's crowd is one log-in's pages
+        return startServer(dir, heap, watchers + 200, 2 * (watchers + 200), serverJvmOptions); // the bench's crowd is one log-in's pages
     }
 
-    /** The server jar's main in a JVM of its own on free ports, plain, with the web console; also used by {@link WebLoadBench}. */
+    /**
+     * The server jar's main in a JVM of its own on free ports, plain, with the web console, and
+     * with the JVM options {@code ./ripv server} gives it ({@code ServerMain.JVM_OPTIONS}); also
+     * used by {@link WebLoadBench}.
+     */
     static Server startServer(Path dir, String heap, int maxClients, int webPages) throws IOException {
+        return startServer(dir, heap, maxClients, webPages, List.of());
+    }
+
+    /** As above, with {@code jvmOptions} after -Xmx and the product's own options (a profiler's, say). */
+    static Server startServer(Path dir, String heap, int maxClients, int webPages, List<String> jvmOptions) throws IOException {
         int httpPort;
         try (ServerSocket s = new ServerSocket(0)) {
             httpPort = s.getLocalPort();
         }
         String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
-        List<String> cmd = List.of(java, "-Xmx" + heap, "-cp", System.getProperty("java.class.path"), "org.ripv.server.ServerMain",
+        List<String> cmd = new ArrayList<>(List.of(java, "-Xmx" + heap));
+        cmd.addAll(jvmOptions(jvmOptions));
+        cmd.addAll(List.of("-cp", System.getProperty("java.class.path"), "org.ripv.server.ServerMain",
                 "server", "--data", dir.toString(), "--port", "0", "--registry-port", "0", "--http-port", Integer.toString(httpPort),
-                "--plain", "--max-clients", Integer.toString(maxClients), "--web-pages", Integer.toString(webPages));
+                "--plain", "--max-clients", Integer.toString(maxClients), "--web-pages", Integer.toString(webPages)));
         Process p = new ProcessBuilder(cmd).redirectErrorStream(true).start();
         BufferedReader r = new BufferedReader(new InputStreamReader(p.getInputStream(), StandardCharsets.UTF_8));
         Pattern ready = Pattern.compile("RIPVServer ready: clients on port (\\d+).*register at [^:]+:(\\d+) with --secret-file (\\S+?),");
@@ -401,6 +418,22 @@ public final class WebBench implements Callable<Integer> {
         }
         p.destroyForcibly();
         throw new IOException("the server ended before it was ready:\n" + String.join("\n", seen));
+    }
+
+    /**
+     * The server's JVM options after -Xmx: those {@code ./ripv server} gives it, then {@code extra}; an
+     * extra collector replaces the product's (java refuses two).
+     */
+    static List<String> jvmOptions(List<String> extra) {
+        boolean collector = extra.stream().anyMatch(WebBench::picksCollector);
+        List<String> all = new ArrayList<>(org.ripv.server.ServerMain.JVM_OPTIONS.stream()
+                .filter(o -> !collector || !picksCollector(o)).toList());
+        all.addAll(extra);
+        return all;
+    }
+
+    private static boolean picksCollector(String jvmOption) {
+        return jvmOption.matches("-XX:\\+Use\\w+GC");
     }
 
     /** A process's CPU time (user + system, all threads) from /proc/PID/stat. */

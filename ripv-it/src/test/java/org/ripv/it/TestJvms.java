@@ -14,7 +14,8 @@ import java.util.List;
  * G1's concurrent threads for a heap it never fills. C1 only ({@code -XX:TieredStopAtLevel=1}), the
  * serial collector and the shared class archive cut that (ripv-it's {@code Netns} and ripv-services'
  * {@code SeedInChild} already launch this way). The product's launcher and {@code ./ripv bench}
- * outside tests keep the JVM's defaults; the benchmarks' figures are not taken here.
+ * outside tests keep the product's own options (the server's {@code ServerMain.JVM_OPTIONS}, which
+ * this executable's collector replaces: java refuses two); the benchmarks' figures are not taken here.
  * {@code -Dripv.test.plainJvms=true} launches with the defaults instead (to measure what this saves).
  */
 public final class TestJvms {
@@ -41,7 +42,23 @@ public final class TestJvms {
                 String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
                 StringBuilder line = new StringBuilder("exec '" + java + "'");
                 FLAGS.forEach(f -> line.append(' ').append(f));
-                Files.writeString(script, "#!/bin/sh\n" + line + " \"$@\"\n");
+                // These flags pick the collector: one the launcher gives the JVM (./ripv server's
+                // -XX:+UseParallelGC, ServerMain.JVM_OPTIONS) is dropped, as java refuses two. Only
+                // options before the main class or jar are the JVM's.
+                String keepOne = FLAGS.stream().anyMatch(f -> f.matches("-XX:\\+Use\\w+GC")) ? """
+                        n=$#; jvm=1
+                        while [ "$n" -gt 0 ]; do
+                          a=$1; shift; n=$((n - 1))
+                          case "$jvm:$a" in
+                            1:-XX:+Use*GC) continue ;;
+                            1:-*) ;;
+                            1:*) jvm=0 ;;
+                          esac
+                          [ "$a" = -jar ] && jvm=0
+                          set -- "$@" "$a"
+                        done
+                        """ : "";
+                Files.writeString(script, "#!/bin/sh\n" + keepOne + line + " \"$@\"\n");
                 script.toFile().deleteOnExit();
                 launcherJava = script;
             } catch (IOException e) {

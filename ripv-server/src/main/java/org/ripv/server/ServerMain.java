@@ -48,6 +48,17 @@ import picocli.CommandLine.Parameters;
         description = "The RIPV broker, and its user administration.",
         subcommands = {ServerMain.Serve.class, ServerMain.Passwd.class, WebhookSink.class})
 public final class ServerMain implements Callable<Integer> {
+    /**
+     * The JVM options {@code ./ripv server} launches the server with (the {@code ripv} script
+     * says them again; {@code RipvServerJvmTest} holds the two to one list), and so the
+     * benchmarks that start a server: the parallel collector. The broker's live heap is small and
+     * nearly all it allocates dies young (a frame's few hundred bytes of Jetty's objects per page
+     * per console line); G1's write barriers and its refinement and marking threads cost the web
+     * fan-out about a fifth of its CPU per delivery, the parallel collector's young collections a
+     * small part of that (issue 38, docs/performance.md "The web console").
+     */
+    public static final java.util.List<String> JVM_OPTIONS = java.util.List.of("-XX:+UseParallelGC");
+
 
     @Override
     public Integer call() {

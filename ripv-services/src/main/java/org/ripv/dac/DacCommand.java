@@ -33,11 +33,18 @@ public final class DacCommand implements Callable<Integer> {
         return 2;
     }
 
-    @Command(name = "profiles", mixinStandardHelpOptions = true,
+    /** What each subcommand shares: -h and -V, and its own command line for output and errors. */
+    @Command(mixinStandardHelpOptions = true)
+    abstract static class Subcommand implements Callable<Integer> {
+        @Spec
+        CommandSpec spec;
+    }
+
+    @Command(name = "profiles",
             description = {"Writes one file per dive and per climb: glider_yyyymmddTHHMMSSZ_rt.nc from .sbd/.tbd (a call's files),"
                     + " _delayed.nc from .dbd/.ebd, each checked as the DAC's checker would.",
                     "Example: ripv dac profiles --cache cac --meta deployment.json --qc qc.yml --out dac rosie_713-2019-166-0-157.sbd rosie_713-2019-166-0-157.tbd"})
-    static final class Profiles implements Callable<Integer> {
+    static final class Profiles extends Subcommand {
         @Parameters(arity = "1..*", paramLabel = "FILE", description = "The glider's flight and science files, plain or compressed, in any order.")
         List<Path> files;
 
@@ -66,9 +73,6 @@ public final class DacCommand implements Callable<Integer> {
                 description = "Samples in the running mean that smooths the pressure before its turning points are found (default ${DEFAULT-VALUE}).")
         int filter;
 
-        @Spec
-        CommandSpec spec;
-
         @Override
         public Integer call() throws IOException {
             PrintWriter out = spec.commandLine().getOut();
@@ -96,11 +100,11 @@ public final class DacCommand implements Callable<Integer> {
         }
     }
 
-    @Command(name = "push", mixinStandardHelpOptions = true,
+    @Command(name = "push",
             description = {"Pushes profile files to the DAC's SFTP folder: key authentication, the host key checked against a known-hosts"
                     + " file, each file checked first, a ledger of what was sent (nothing is sent twice), retries with back-off.",
                     "Example: ripv dac push --to sftp://rosie@gliders.ioos.us/rosie_713-20190615 --key ~/.ssh/id_ecdsa --known-hosts ~/.ssh/known_hosts dac"})
-    static final class Push implements Callable<Integer> {
+    static final class Push extends Subcommand {
         @Parameters(arity = "1..*", paramLabel = "FILE.nc|DIR", description = "Profile files, or folders of them (their *.nc).")
         List<Path> files;
 
@@ -118,9 +122,6 @@ public final class DacCommand implements Callable<Integer> {
 
         @Option(names = "--attempts", paramLabel = "N", defaultValue = "4", description = "Connection attempts, 1 s, 2 s, 4 s … apart (default ${DEFAULT-VALUE}).")
         int attempts;
-
-        @Spec
-        CommandSpec spec;
 
         @Override
         public Integer call() throws IOException, InterruptedException {
@@ -156,14 +157,11 @@ public final class DacCommand implements Callable<Integer> {
         }
     }
 
-    @Command(name = "check", mixinStandardHelpOptions = true,
+    @Command(name = "check",
             description = "Checks profile files against the DAC template's required variables, attributes and ranges (what cc-plugin-glider checks).")
-    static final class Check implements Callable<Integer> {
+    static final class Check extends Subcommand {
         @Parameters(arity = "1..*", paramLabel = "FILE.nc")
         List<Path> files;
-
-        @Spec
-        CommandSpec spec;
 
         @Override
         public Integer call() {

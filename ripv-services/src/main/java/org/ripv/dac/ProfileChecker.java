@@ -3,6 +3,7 @@ package org.ripv.dac;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import ucar.ma2.Array;
@@ -37,16 +38,16 @@ public final class ProfileChecker {
         try (NetcdfFile file0 = NetcdfFile.open(file.toString())) {
             // NetCDF-Java's find* escape names through its HTTP module, which RIPV leaves out: look names up here.
             Nc nc = new Nc(file0);
-            Dimension time = nc.findDimension("time");
+            Dimension time = nc.dims().get("time");
             if (time == null) {
                 fail.add("no dimension time");
             }
-            Dimension str = nc.findDimension("traj_strlen");
+            Dimension str = nc.dims().get("traj_strlen");
             if (str == null || str.getLength() != 20) {
                 fail.add("dimension traj_strlen must be 20");
             }
             for (CdlTemplate.Var tv : template.variables()) {
-                Variable v = nc.findVariable(tv.name());
+                Variable v = nc.vars().get(tv.name());
                 if (v == null) {
                     fail.add("variable " + tv.name() + " is missing");
                     continue;
@@ -75,7 +76,7 @@ public final class ProfileChecker {
                 }
                 for (String ref : List.of("platform", "instrument")) {
                     Attribute at = v.findAttribute(ref);
-                    if (at != null && at.isString() && nc.findVariable(at.getStringValue()) == null) {
+                    if (at != null && at.isString() && nc.vars().get(at.getStringValue()) == null) {
                         fail.add(tv.name() + ":" + ref + " names " + at.getStringValue() + ", which the file lacks");
                     }
                 }
@@ -83,13 +84,13 @@ public final class ProfileChecker {
                     flags(v, fail);
                 }
             }
-            for (Variable v : nc.getVariables()) {
+            for (Variable v : nc.file().getVariables()) {
                 if (v.getShortName().startsWith("qartod_")) {
                     flags(v, fail);
                 }
             }
             for (String g : template.globals().keySet()) {
-                Attribute at = nc.findGlobalAttribute(g);
+                Attribute at = nc.globals().get(g);
                 if (at == null) {
                     fail.add("global attribute " + g + " is missing");
                 } else if (at.isString() && at.getStringValue().isBlank()) {
@@ -133,7 +134,7 @@ public final class ProfileChecker {
     }
 
     private void values(Nc nc, List<String> fail, List<String> warn) throws IOException {
-        double[] t = doubles(nc.findVariable("time"));
+        double[] t = doubles(nc.vars().get("time"));
         if (t.length == 0) {
             fail.add("no samples (time has length 0)");
             return;
@@ -144,7 +145,7 @@ public final class ProfileChecker {
                 break;
             }
         }
-        double[] depth = doubles(nc.findVariable("depth"));
+        double[] depth = doubles(nc.vars().get("depth"));
         double lo = Double.POSITIVE_INFINITY, hi = Double.NEGATIVE_INFINITY;
         for (double d : depth) {
             if (d != ProfileWriter.FILL) {
@@ -164,7 +165,7 @@ public final class ProfileChecker {
             double max = number(a.get("valid_max"));
             int out = 0;
             double first = Double.NaN;
-            for (double x : doubles(nc.findVariable(tv.name()))) {
+            for (double x : doubles(nc.vars().get(tv.name()))) {
                 if (x != ProfileWriter.FILL && (x < min || x > max)) {
                     out++;
                     first = Double.isNaN(first) ? x : first;
@@ -200,34 +201,13 @@ public final class ProfileChecker {
         return d;
     }
 
-    /** A file's variables, dimensions and global attributes by name. */
-    private static final class Nc {
-        final NetcdfFile file;
-        final Map<String, Variable> vars = new java.util.HashMap<>();
-        final Map<String, Dimension> dims = new java.util.HashMap<>();
-        final Map<String, Attribute> globals = new java.util.HashMap<>();
-
+    /** A file's variables, dimensions and global attributes by short name. */
+    private record Nc(NetcdfFile file, Map<String, Variable> vars, Map<String, Dimension> dims, Map<String, Attribute> globals) {
         Nc(NetcdfFile file) {
-            this.file = file;
+            this(file, new HashMap<>(), new HashMap<>(), new HashMap<>());
             file.getVariables().forEach(v -> vars.put(v.getShortName(), v));
             file.getDimensions().forEach(d -> dims.put(d.getShortName(), d));
             file.getGlobalAttributes().forEach(a -> globals.put(a.getShortName(), a));
-        }
-
-        Variable findVariable(String name) {
-            return vars.get(name);
-        }
-
-        Dimension findDimension(String name) {
-            return dims.get(name);
-        }
-
-        Attribute findGlobalAttribute(String name) {
-            return globals.get(name);
-        }
-
-        List<Variable> getVariables() {
-            return file.getVariables();
         }
     }
 }

@@ -160,6 +160,9 @@ final class Watcher {
     private void written() {
         synchronized (this) {
             inFlight--;
+            if (backlog.isEmpty() && skipped == 0) {
+                return; // up to date: nothing to pump (the common case, once per push)
+            }
         }
         pump();
     }

@@ -6,7 +6,6 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
-import java.nio.ByteBuffer;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.eclipse.jetty.websocket.api.Callback;
 import org.eclipse.jetty.websocket.api.Session;
@@ -56,6 +55,18 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
     /** The socket's core session, where a shared push's frame goes (set with {@link #socket}). */
     private volatile CoreSession core;
     /**
+     * True when the page negotiated an extension (permessage-deflate): then each push gets a frame
+     * of its own over a slice of the shared bytes, which no extension can then move ({@link PushJson}).
+     */
+    private volatile boolean extended;
+    /** The callback of frames no one waits for (replies); one per page. */
+    private final Written replied = new Written(null);
+    /**
+     * The callback of the last watcher's pushes: a watcher's "written" is one object for its life
+     * and a page mostly watches one vehicle at a time, so this saves a callback per push (issue 38).
+     */
+    private volatile Written lastWritten = replied;
+    /**
      * False once the page's socket closed or is being closed: checked per push without asking
      * Jetty, whose own check takes the session's lock (the frame's send checks again).
      */
@@ -73,6 +84,7 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
     @Override
     public void onWebSocketOpen(Session session) {
         this.core = ((WebSocketSession) session).getCoreSession();
+        this.extended = !core.getNegotiatedExtensions().isEmpty();
         this.socket = session;
         String refused = sessions.admitSocket(login, this);
         if (refused != null) {
@@ -157,29 +169,43 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
     }
 
     /**
-     * Queues a text frame whose UTF-8 bytes other pages' frames share: Jetty's core session (under
-     * the API's session Jetty gives us) sends a slice of the buffer — its own position, the same
-     * bytes, which nothing on the way writes into (a server's frames are not masked; permessage-deflate,
-     * when a browser asks for it, reads the payload into a buffer of its own) — instead of its own
-     * UTF-8 copy of the text.
+     * Queues a text frame that other pages share: Jetty's core session (under the API's session
+     * Jetty gives us) sends the very frame every page without an extension gets, whose payload
+     * nothing on the way moves or writes into (a server's frames are not masked; Jetty's flusher
+     * writes a slice), instead of its own UTF-8 copy of the text; a page with permessage-deflate
+     * gets a frame over a slice of the same bytes, which its deflater may consume.
      */
-    private boolean sendShared(ByteBuffer utf8, Runnable written) {
+    private boolean sendShared(Frame shared, Runnable written) {
         CoreSession s = core;
         if (s == null || !open || !admit()) {
             return false;
         }
-        s.sendFrame(new Frame(OpCode.TEXT, utf8.slice()), new org.eclipse.jetty.util.Callback() {
-            @Override
-            public void succeeded() {
-                ConsoleSocket.this.written(written);
-            }
-
-            @Override
-            public void failed(Throwable x) {
-                ConsoleSocket.this.failed(x);
-            }
-        }, false);
+        Written callback = lastWritten;
+        if (callback.then != written) {
+            callback = written == null ? replied : new Written(written);
+            lastWritten = callback;
+        }
+        s.sendFrame(extended ? new Frame(OpCode.TEXT, shared.getPayload().slice()) : shared, callback, false);
         return true;
+    }
+
+    /** What runs when a frame has been written or failed: holds nothing of one frame, so a page reuses it. */
+    private final class Written implements org.eclipse.jetty.util.Callback {
+        final Runnable then;
+
+        Written(Runnable then) {
+            this.then = then;
+        }
+
+        @Override
+        public void succeeded() {
+            written(then);
+        }
+
+        @Override
+        public void failed(Throwable x) {
+            ConsoleSocket.this.failed(x);
+        }
     }
 
     /** Counts one more frame waiting; false (and the page is cut off) past {@link WebConsole#MAX_QUEUED_FRAMES}. */

@@ -3,6 +3,8 @@ package org.ripv.server.web;
 import java.nio.ByteBuffer;
 import java.nio.charset.StandardCharsets;
 import java.util.concurrent.atomic.AtomicReferenceArray;
+import org.eclipse.jetty.websocket.core.Frame;
+import org.eclipse.jetty.websocket.core.OpCode;
 import org.ripv.messages.OutgoingServerMessage;
 
 /**
@@ -13,29 +15,39 @@ import org.ripv.messages.OutgoingServerMessage;
  * nor, when pages fall behind, the heap of each page's queued copy (docs/performance.md). Keyed by
  * identity in a few slots; messages are immutable records, so a hit is always right and a miss
  * only costs writing it again.
+ *
+ * <p>The frame around the bytes is shared too (issue 38: a frame and a slice per page were a fifth
+ * of what the fan-out allocated per delivery). Jetty only reads a frame it sends on a page with
+ * no extension — its flusher and its fragmenting write slices of the payload, never moving the
+ * buffer — so pages without permessage-deflate send this very frame; a page with it gets a frame
+ * of its own over a slice ({@link ConsoleSocket}): Jetty 12.0's deflater reads a slice too, but
+ * nothing in its API promises it, and a deflater that consumed the shared bytes would empty them
+ * for every page after it ({@code SharedPushFrameTest} mixes both kinds of page).
  */
 final class PushJson {
-    private record Entry(OutgoingServerMessage message, ByteBuffer utf8) {}
+    private record Entry(OutgoingServerMessage message, Frame frame) {}
 
     private static final int SLOTS = 16;
     private final AtomicReferenceArray<Entry> slots = new AtomicReferenceArray<>(SLOTS);
     private final WebReplies replies = new WebReplies();
 
     /**
-     * The push's UTF-8 JSON, shared: callers send a slice of it and never write into it. A direct
+     * The push as one text frame of UTF-8 JSON, shared: callers send it as it is, or a frame of
+     * their own over a slice of its payload, and never write into it. The payload is a direct
      * buffer, so each page's write hands the kernel these bytes as they are (issue 38).
      */
-    ByteBuffer of(OutgoingServerMessage m) {
+    Frame of(OutgoingServerMessage m) {
         int i = System.identityHashCode(m) & (SLOTS - 1);
         Entry e = slots.get(i);
         if (e != null && e.message() == m) {
-            return e.utf8();
+            return e.frame();
         }
         byte[] bytes = replies.toJson(m).getBytes(StandardCharsets.UTF_8);
         // Direct: the JDK writes a heap buffer by copying it into a direct one first, once per page.
         ByteBuffer utf8 = ByteBuffer.allocateDirect(bytes.length).put(bytes).flip();
-        slots.set(i, new Entry(m, utf8));
-        return utf8;
+        Frame frame = new Frame(OpCode.TEXT, utf8);
+        slots.set(i, new Entry(m, frame));
+        return frame;
     }
 
     /** A reply, asked by one page only: written for it alone. */

@@ -242,7 +242,9 @@ public final class WebConsole implements AutoCloseable {
         WebSocketUpgradeHandler ws = WebSocketUpgradeHandler.from(s, container -> {
             container.setMaxTextMessageSize(64 * 1024);
             container.setIdleTimeout(Duration.ofMinutes(10));
-            container.setMaxOutgoingFrames(MAX_QUEUED_FRAMES);
+            // No setMaxOutgoingFrames: ConsoleSocket counts every frame it queues against
+            // MAX_QUEUED_FRAMES itself, and Jetty's own count wrapped each frame's callback in two
+            // more objects (issue 38: per-delivery allocation of the fan-out).
             container.addMapping("/ws", (request, response, callback) -> {
                 String cross = Pages.crossOrigin(request);
                 if (cross != null || request.getHeaders().get("Origin") == null) {

@@ -180,10 +180,10 @@ public final class DbaIngest {
             double[] row = new double[r.header().sensors().size()];
             while (r.next(row)) {
                 if (r.rows() > limits.maxRows()) {
-                    throw new IngestStopped(limits.tooManyRows(name), false);
+                    throw IngestStopped.overLimit(limits.tooManyRows(name));
                 }
                 if (r.rows() % IngestLimits.CANCEL_EVERY == 0 && cancelled.getAsBoolean()) {
-                    throw new IngestStopped(name + ": cancelled after reading " + r.rows() + " rows; nothing of it stored", true);
+                    throw IngestStopped.onCancel(name + ": cancelled after reading " + r.rows() + " rows; nothing of it stored");
                 }
             }
         }
@@ -242,10 +242,10 @@ public final class DbaIngest {
         try (CycleWriter w = new CycleWriter(c, utc, vehicle, cut(dbaName, 255), fileId, h)) {
             while (r.next(row)) {
                 if (r.rows() > limits.maxRows()) {
-                    throw new IngestStopped(limits.tooManyRows(name), false); // rolled back: nothing of the file stays
+                    throw IngestStopped.overLimit(limits.tooManyRows(name)); // rolled back: nothing of the file stays
                 }
                 if (r.rows() % IngestLimits.CANCEL_EVERY == 0 && cancelled.getAsBoolean()) {
-                    throw new IngestStopped(name + ": cancelled after " + r.rows() + " rows; nothing of it stored", true);
+                    throw IngestStopped.onCancel(name + ": cancelled after " + r.rows() + " rows; nothing of it stored");
                 }
                 double t = r.time(row);
                 if (!Double.isFinite(t) || t < 0 || t > 32_503_680_000d) { // up to year 3000
