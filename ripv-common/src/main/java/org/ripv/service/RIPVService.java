@@ -263,8 +263,8 @@ public abstract class RIPVService {
      *
      * @return true when that request is running there and the handler accepted the cancel
      *         ({@link CommandHandler#cancel}), or when it has not started; its final reply then
-     *         says CANCELLED. False for a running request whose handler cannot stop it, or an
-     *         unknown MailBox
+     *         says CANCELLED. False for a running request whose handler cannot stop it, one that
+     *         has already ended, or an unknown MailBox
      */
     public final boolean cancel(String mailbox, String clientId, long messageId) {
         ServiceTaskManager m = managers.get(mailbox);

@@ -34,6 +34,18 @@ final class ServiceTaskManager extends TaskManager<IncomingServiceMessage, Outgo
     private final Map<String, Long> cancelledAhead = new LinkedHashMap<>();
     static final int MAX_CANCELLED_AHEAD = 256;
     static final long CANCELLED_AHEAD_MILLIS = 10 * 60_000L;
+    /**
+     * The last requests that came up here ("CLIENT-ID#MESSAGE-ID"), so that a cancel of one that has
+     * already ended is refused ("nothing left to cancel") instead of being kept for a request that
+     * will never come again. Guarded by {@code this}; the newest {@link #MAX_SEEN} only.
+     */
+    private final Map<String, Boolean> seen = new LinkedHashMap<>() {
+        @Override
+        protected boolean removeEldestEntry(Map.Entry<String, Boolean> eldest) {
+            return size() > MAX_SEEN;
+        }
+    };
+    static final int MAX_SEEN = 1024;
 
     ServiceTaskManager(RIPVService service, CommandHandler handler) {
         this.service = service;
@@ -47,7 +59,9 @@ final class ServiceTaskManager extends TaskManager<IncomingServiceMessage, Outgo
         request = service.handouts().collect(request);
         Request now = new Request(request, box, service.sid(), service.name().toString());
         synchronized (this) {
-            if (cancelledAhead.remove(key(request.header().origin().clientId(), request.header().messageId())) != null) {
+            String key = key(request.header().origin().clientId(), request.header().messageId());
+            seen.put(key, Boolean.TRUE);
+            if (cancelledAhead.remove(key) != null) {
                 box.post(request.reply(Footer.error(service.sid(), ErrorCode.CANCELLED, "'"
                         + Header.abbreviate(request.header().body()) + "' was cancelled before it ran")
                         .via(service.name().toString())));
@@ -81,13 +95,16 @@ final class ServiceTaskManager extends TaskManager<IncomingServiceMessage, Outgo
      * Cancels the request named: the running one through its handler (true when the handler
      * accepted); one that has not started yet — waiting in the MailBox, or still on its way from
      * the server, whose queue the operator's cancel can overtake — is answered CANCELLED when it
-     * comes up and never runs (true). Under the manager's lock, so that a cancel never lands on
+     * comes up and never runs (true); one that has already ended is refused (false). Under the manager's lock, so that a cancel never lands on
      * another request.
      */
     synchronized boolean cancel(String clientId, long messageId) {
         Request r = running;
         if (r == null || r.message().header().messageId() != messageId
                 || !r.message().header().origin().clientId().equals(clientId)) {
+            if (seen.containsKey(key(clientId, messageId))) {
+                return false; // it came up and ended: nothing left to cancel
+            }
             cancelAhead(clientId, messageId);
             return true;
         }

@@ -2,6 +2,8 @@ package org.ripv.service;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import java.util.ArrayList;
+import java.util.List;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
@@ -100,7 +102,7 @@ class CancelTest {
         service.accept(request(3, "quick"));
         service.accept(request(4, "quick"));
         assertThat(service.cancel(mailbox, "100001", 1)).isTrue();
-        java.util.List<OutgoingServiceMessage> got = new java.util.ArrayList<>();
+        List<OutgoingServiceMessage> got = new ArrayList<>();
         for (int i = 0; i < 4; i++) {
             got.add(replies.poll(10, TimeUnit.SECONDS));
         }
@@ -112,6 +114,8 @@ class CancelTest {
         });
         assertThat(got.get(3).status()).as("the request after them runs").isEqualTo(Status.OK);
         assertThat(got.get(3).footer().replyText()).isEqualTo("quick done");
+        assertThat(service.cancel(mailbox, "100001", 4)).as("it ran and ended: nothing left to cancel").isFalse();
+        assertThat(service.cancel(mailbox, "100001", 2)).as("answered CANCELLED already").isFalse();
     }
 
     @Test
