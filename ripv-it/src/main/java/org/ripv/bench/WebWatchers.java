@@ -166,8 +166,8 @@ final class WebWatchers extends SelectorReaders<WebWatchers.Conn> {
         }
     }
 
-    /** The response head, read a byte at a time up to its blank line. */
-    private static String head(InputStream in) throws IOException {
+    /** The response head, read a byte at a time up to its blank line (SharedPushFrameTest reads its pages' too). */
+    static String head(InputStream in) throws IOException {
         ByteArrayOutputStream h = new ByteArrayOutputStream();
         int state = 0;
         while (state < 4) {

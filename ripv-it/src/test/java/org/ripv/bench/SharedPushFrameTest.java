@@ -102,7 +102,7 @@ class SharedPushFrameTest {
                     + Base64.getEncoder().encodeToString(new byte[16]) + "\r\nOrigin: " + page.origin() + "\r\nCookie: " + page.cookie()
                     + (deflate ? "\r\nSec-WebSocket-Extensions: permessage-deflate" : "") + "\r\n\r\n";
             out.write(upgrade.getBytes(StandardCharsets.US_ASCII));
-            String head = head(in);
+            String head = WebWatchers.head(in);
             assertThat(head).startsWith("HTTP/1.1 101");
             deflating = head.toLowerCase().contains("permessage-deflate");
             out.write(WebWatchers.masked(("{\"id\":1,\"mailbox\":\"\",\"body\":\"?watch " + mailbox + "\",\"csrf\":\"" + page.csrf() + "\"}")
@@ -187,20 +187,6 @@ class SharedPushFrameTest {
                     return text.toString(StandardCharsets.UTF_8);
                 }
             }
-        }
-
-        private static String head(InputStream in) throws IOException {
-            ByteArrayOutputStream h = new ByteArrayOutputStream();
-            int state = 0;
-            while (state < 4) {
-                int c = in.read();
-                if (c < 0) {
-                    throw new IOException("closed during the upgrade: " + h);
-                }
-                h.write(c);
-                state = (c == '\r' && (state == 0 || state == 2)) || (c == '\n' && (state == 1 || state == 3)) ? state + 1 : 0;
-            }
-            return h.toString(StandardCharsets.US_ASCII);
         }
 
         @Override
