@@ -19,20 +19,14 @@ import org.ripv.wire.FrameCodec;
 class PortProbeTest {
     static final Duration STEP = Duration.ofSeconds(3);
 
-    static int freePort() throws Exception {
-        try (ServerSocket s = new ServerSocket(0)) {
-            return s.getLocalPort();
-        }
-    }
-
     @Test
     void aClosedPortIsNothing() throws Exception {
-        assertThat(PortProbe.identify("localhost", freePort(), STEP)).isEqualTo(PortProbe.Finding.NOTHING);
+        assertThat(PortProbe.identify("localhost", FreePorts.one(), STEP)).isEqualTo(PortProbe.Finding.NOTHING);
     }
 
     @Test
     void anRmiRegistryAnswersJrmp() throws Exception {
-        int port = freePort();
+        int port = FreePorts.one();
         Registry r = LocateRegistry.createRegistry(port);
         try {
             assertThat(PortProbe.identify("localhost", port, STEP)).isEqualTo(PortProbe.Finding.RMI_REGISTRY);

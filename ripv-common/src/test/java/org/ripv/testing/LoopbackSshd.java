@@ -1,12 +1,12 @@
 package org.ripv.testing;
 
 import java.io.IOException;
-import java.net.ServerSocket;
 import java.net.Socket;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Assumptions;
+import org.ripv.probe.FreePorts;
 
 /**
  * Debian's OpenSSH server on a loopback port for a test, with a configuration of its own: a new
@@ -48,10 +48,7 @@ public final class LoopbackSshd implements AutoCloseable {
         run(dir, "ssh-keygen", "-q", "-t", "ecdsa", "-N", "", "-f", dir.resolve("host_key").toString());
         run(dir, "ssh-keygen", "-q", "-t", "ecdsa", "-N", "", "-f", dir.resolve("client_key").toString());
         Files.copy(dir.resolve("client_key.pub"), dir.resolve("authorized_keys"));
-        int port;
-        try (ServerSocket s = new ServerSocket(0)) {
-            port = s.getLocalPort();
-        }
+        int port = FreePorts.one();
         Path drop = Files.createDirectories(dir.resolve("drop"));
         Path config = dir.resolve("sshd_config");
         Files.writeString(config, String.join("\n",

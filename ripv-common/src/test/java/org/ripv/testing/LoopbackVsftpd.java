@@ -1,13 +1,13 @@
 package org.ripv.testing;
 
 import java.io.IOException;
-import java.net.ServerSocket;
 import java.net.Socket;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Assumptions;
+import org.ripv.probe.FreePorts;
 
 /**
  * Debian's vsftpd on a loopback port for a test, speaking FTPS with explicit TLS only (plain FTP
@@ -47,8 +47,8 @@ public final class LoopbackVsftpd implements AutoCloseable {
         Path key = dir.resolve("key.pem");
         LoopbackSshd.run(dir, "openssl", "req", "-x509", "-newkey", "rsa:2048", "-nodes", "-days", "2", "-subj", "/CN=127.0.0.1",
                 "-addext", "subjectAltName=IP:127.0.0.1", "-keyout", key.toString(), "-out", cert.toString());
-        int port = freePort();
-        int pasv = freePort();
+        int port = FreePorts.one();
+        int pasv = FreePorts.one();
         Path config = dir.resolve("vsftpd.conf");
         Files.writeString(config, String.join("\n",
                 "listen=YES", "listen_ipv6=NO", "listen_address=127.0.0.1", "listen_port=" + port, "background=NO",
@@ -86,12 +86,6 @@ public final class LoopbackVsftpd implements AutoCloseable {
             throw new AssertionError("RIPV_REQUIRE_TOOLS is set but " + why);
         }
         Assumptions.abort(why);
-    }
-
-    private static int freePort() throws IOException {
-        try (ServerSocket s = new ServerSocket(0)) {
-            return s.getLocalPort();
-        }
     }
 
     /** {@code ftps://anonymous@127.0.0.1:PORT/drop} (the folder as the chrooted session sees it). */

@@ -6,6 +6,7 @@ import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
+import org.ripv.probe.FreePorts;
 import org.ripv.services.bench.Socat;
 import org.ripv.services.serial.TcpLink;
 import org.ripv.services.serial.ymodem.DirectorySink;
@@ -100,7 +101,7 @@ record IridiumCalls(Path dir, int baud, long latency, long dropEvery) {
      * file arrived whole; false when the call dropped first.
      */
     private boolean call(Path file, String sender, Path out, OverTheCall receiver) throws Exception {
-        int port = Socat.freePort();
+        int port = FreePorts.one();
         Process p = Socat.listen(file.getParent(), port, sender);
         try (IridiumRelay relay = new IridiumRelay(baud, latency, dropEvery * 1000, Socat.local(port));
              TcpLink link = TcpLink.connect("tcp://127.0.0.1:" + relay.port(), 5000)) {

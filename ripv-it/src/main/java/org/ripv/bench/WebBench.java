@@ -5,7 +5,6 @@ import java.io.IOException;
 import java.io.InputStreamReader;
 import java.io.PrintStream;
 import java.io.Writer;
-import java.net.ServerSocket;
 import java.net.URI;
 import java.net.http.HttpClient;
 import java.net.http.HttpRequest;
@@ -24,6 +23,7 @@ import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import org.ripv.probe.FreePorts;
 import org.ripv.server.permit.PermitFile;
 import org.ripv.service.ServiceConnector;
 import org.ripv.service.ServiceOptions;
@@ -386,10 +386,7 @@ public final class WebBench implements Callable<Integer> {
 
     /** As above, with {@code jvmOptions} after -Xmx and the product's own options (a profiler's, say). */
     static Server startServer(Path dir, String heap, int maxClients, int webPages, List<String> jvmOptions) throws IOException {
-        int httpPort;
-        try (ServerSocket s = new ServerSocket(0)) {
-            httpPort = s.getLocalPort();
-        }
+        int httpPort = FreePorts.one();
         String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
         List<String> cmd = new ArrayList<>(List.of(java, "-Xmx" + heap));
         cmd.addAll(jvmOptions(jvmOptions));

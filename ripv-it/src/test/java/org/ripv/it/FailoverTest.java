@@ -5,7 +5,6 @@ import static org.assertj.core.api.Assertions.assertThat;
 import java.io.ByteArrayInputStream;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
-import java.net.ServerSocket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -17,6 +16,7 @@ import org.ripv.client.handlers.ClientSocketHandler;
 import org.ripv.examples.ClockService;
 import org.ripv.failover.ServerList;
 import org.ripv.messages.Priority;
+import org.ripv.probe.FreePorts;
 import org.ripv.server.ServerConfig;
 import org.ripv.service.ServiceConnector;
 import picocli.CommandLine;
@@ -30,22 +30,9 @@ class FailoverTest {
     @TempDir
     Path dir;
 
-    private static int[] freePorts(int n) throws Exception {
-        int[] out = new int[n];
-        ServerSocket[] s = new ServerSocket[n];
-        for (int i = 0; i < n; i++) {
-            s[i] = new ServerSocket(0);
-            out[i] = s[i].getLocalPort();
-        }
-        for (ServerSocket x : s) {
-            x.close();
-        }
-        return out;
-    }
-
     @Test
     void servicesAndClientsUseWhicheverServerOfTheListAnswers() throws Exception {
-        int[] p = freePorts(4);
+        int[] p = FreePorts.several(4);
         ServerConfig a = ServerConfig.forTests(dir.resolve("a")).withPorts(p[0], p[1], -1);
         ServerConfig b = ServerConfig.forTests(dir.resolve("b")).withPorts(p[2], p[3], -1);
         ServerList registries = ServerList.parse("localhost:" + p[1] + ",localhost:" + p[3], 1099);
@@ -94,7 +81,7 @@ class FailoverTest {
 
     @Test
     void theGuiReconnectsToTheSecondServerWhenTheFirstGoesAway() throws Exception {
-        int[] p = freePorts(4);
+        int[] p = FreePorts.several(4);
         ServerConfig a = ServerConfig.forTests(dir.resolve("a")).withPorts(p[0], p[1], -1);
         ServerConfig b = ServerConfig.forTests(dir.resolve("b")).withPorts(p[2], p[3], -1);
         java.util.concurrent.ExecutorService ui = java.util.concurrent.Executors.newSingleThreadExecutor();

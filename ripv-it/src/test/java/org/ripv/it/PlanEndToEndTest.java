@@ -10,7 +10,6 @@ import com.sun.net.httpserver.HttpServer;
 import jakarta.mail.internet.MimeMessage;
 import java.io.IOException;
 import java.net.InetSocketAddress;
-import java.net.ServerSocket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -27,6 +26,7 @@ import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.Priority;
 import org.ripv.messages.Status;
 import org.ripv.messages.TableResult;
+import org.ripv.probe.FreePorts;
 import org.ripv.server.ServerConfig;
 import org.ripv.server.SessionOptions;
 import org.ripv.server.files.FileStore;
@@ -119,10 +119,7 @@ class PlanEndToEndTest {
                 .withWebhooks(WebhookTargets.parse("127.0.0.1/32")));
         sys.user("alice", "operators").user("bob", "observers");
         sys.rules("allow @operators * * *", "allow @observers RIPVServer * ?upload*", "allow @observers * * ?read");
-        int port;
-        try (ServerSocket s = new ServerSocket(0)) {
-            port = s.getLocalPort();
-        }
+        int port = FreePorts.one();
         Path secret = dir.resolve("service.secret");
         Files.writeString(secret, sys.secret());
         Path serviceLog = dir.resolve("serial.log");

@@ -2,7 +2,6 @@ package org.ripv.it;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import java.net.ServerSocket;
 import java.nio.file.Path;
 import java.time.Duration;
 import org.junit.jupiter.api.Test;
@@ -10,6 +9,7 @@ import org.junit.jupiter.api.io.TempDir;
 import org.ripv.client.handlers.ClientSocketHandler;
 import org.ripv.examples.ClockService;
 import org.ripv.messages.Priority;
+import org.ripv.probe.FreePorts;
 import org.ripv.server.ServerConfig;
 import org.ripv.service.ServiceConnector;
 
@@ -20,12 +20,8 @@ class ReRegistrationTest {
 
     @Test
     void aServiceRegistersAgainWhenTheServerComesBack() throws Exception {
-        int port;
-        int registry;
-        try (ServerSocket a = new ServerSocket(0); ServerSocket b = new ServerSocket(0)) {
-            port = a.getLocalPort();
-            registry = b.getLocalPort();
-        }
+        int port = FreePorts.one();
+        int registry = FreePorts.one();
         ServerConfig config = ServerConfig.forTests(dir.resolve("server")).withPorts(port, registry, -1);
         ClockService clock = new ClockService("localhost");
         ServiceConnector connector;

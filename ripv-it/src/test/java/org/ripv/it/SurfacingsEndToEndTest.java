@@ -5,7 +5,6 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import com.fasterxml.jackson.core.type.TypeReference;
 import com.fasterxml.jackson.databind.ObjectMapper;
-import java.net.ServerSocket;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
@@ -23,6 +22,7 @@ import org.ripv.messages.Priority;
 import org.ripv.messages.Status;
 import org.ripv.messages.TableResult;
 import org.ripv.messages.VehicleEvent;
+import org.ripv.probe.FreePorts;
 
 /**
  * Issue 35 as launched: the SerialPortServer from its jar with a {@code listen://} link, the
@@ -60,10 +60,7 @@ class SurfacingsEndToEndTest {
         jars = new LaunchedJars(dir);
         sys = TestSystem.start(dir.resolve("sys"));
         sys.user("alice", "operators").user("olga", "observers");
-        int port;
-        try (ServerSocket s = new ServerSocket(0)) {
-            port = s.getLocalPort();
-        }
+        int port = FreePorts.one();
         Path secret = dir.resolve("service.secret");
         Files.writeString(secret, sys.secret());
         Path serviceLog = dir.resolve("serial.log");

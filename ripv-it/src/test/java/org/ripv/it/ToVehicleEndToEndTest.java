@@ -5,7 +5,6 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.io.IOException;
-import java.net.ServerSocket;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
@@ -20,6 +19,7 @@ import org.ripv.client.handlers.RipvErrorException;
 import org.ripv.messages.ErrorCode;
 import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.Priority;
+import org.ripv.probe.FreePorts;
 import org.ripv.server.files.FileStore;
 import org.ripv.testing.Tools;
 
@@ -74,10 +74,7 @@ class ToVehicleEndToEndTest {
         sys.user("alice", "operators").user("bob", "observers");
         sys.rules("allow @operators * * *", "allow @observers RIPVServer * ?upload*", "allow @observers * * ?read");
 
-        int port;
-        try (ServerSocket s = new ServerSocket(0)) {
-            port = s.getLocalPort();
-        }
+        int port = FreePorts.one();
         Path secret = dir.resolve("service.secret");
         Files.writeString(secret, sys.secret());
         Path serviceLog = dir.resolve("serial.log");

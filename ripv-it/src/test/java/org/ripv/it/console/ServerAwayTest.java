@@ -2,7 +2,6 @@ package org.ripv.it.console;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import java.net.ServerSocket;
 import java.nio.file.Path;
 import java.time.Duration;
 import org.junit.jupiter.api.AfterEach;
@@ -12,6 +11,7 @@ import org.junit.jupiter.api.io.TempDir;
 import org.ripv.bench.VehicleConsoleService;
 import org.ripv.it.TestSystem;
 import org.ripv.messages.Priority;
+import org.ripv.probe.FreePorts;
 import org.ripv.server.ServerConfig;
 import org.ripv.service.ServiceConnector;
 
@@ -32,12 +32,7 @@ class ServerAwayTest {
     /** A server on fixed free ports, and a vehicle's service that outlives it and finds it again. */
     @BeforeEach
     void start() throws Exception {
-        int[] ports = new int[2];
-        for (int i = 0; i < 2; i++) {
-            try (ServerSocket s = new ServerSocket(0)) {
-                ports[i] = s.getLocalPort();
-            }
-        }
+        int[] ports = FreePorts.several(2);
         config = ServerConfig.forTests(dir.resolve("server")).withPorts(ports[0], ports[1], -1);
         vehicle = new VehicleConsoleService("localhost", "ru29");
         sys = TestSystem.start(config);

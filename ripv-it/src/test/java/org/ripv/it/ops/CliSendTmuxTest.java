@@ -2,7 +2,6 @@ package org.ripv.it.ops;
 
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
-import static org.ripv.it.ops.CommandProcesses.freePort;
 import static org.ripv.it.ops.CommandProcesses.jar;
 import static org.ripv.it.ops.CommandProcesses.java;
 
@@ -16,6 +15,7 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.ripv.probe.FreePorts;
 import org.ripv.testing.Tools;
 
 /**
@@ -76,9 +76,9 @@ class CliSendTmuxTest {
         for (String m : List.of("ripv-server", "ripv-services", "ripv-client")) {
             assumeTrue(Files.isRegularFile(Path.of(jar(m))), "needs the jars (mvn verify builds them before this module's tests)");
         }
-        int port = freePort();
-        int registry = freePort();
-        int glider = freePort();
+        int port = FreePorts.one();
+        int registry = FreePorts.one();
+        int glider = FreePorts.one();
         Path data = dir.resolve("data");
         processes.launch("server.log", java(), "-jar", jar("ripv-server"), "server", "--data", data.toString(), "--port", "" + port,
                 "--registry-port", "" + registry, "--http-port", "0", "--outbound-port", "-1", "--bind", "127.0.0.1");

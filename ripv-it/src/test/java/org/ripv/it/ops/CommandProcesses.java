@@ -4,7 +4,6 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import java.io.File;
 import java.io.IOException;
-import java.net.ServerSocket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -33,12 +32,6 @@ final class CommandProcesses implements AutoCloseable {
     /** {@code MODULE/target/MODULE.jar}, as {@code mvn package} builds it. */
     static String jar(String module) {
         return RipvScriptHelpTest.ROOT.resolve(module + "/target/" + module + ".jar").toString();
-    }
-
-    static int freePort() throws IOException {
-        try (ServerSocket s = new ServerSocket(0)) {
-            return s.getLocalPort();
-        }
     }
 
     /** Runs {@code command} with no input, its output to {@code log} in the test's folder. */

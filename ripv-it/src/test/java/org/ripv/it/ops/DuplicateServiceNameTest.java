@@ -2,7 +2,6 @@ package org.ripv.it.ops;
 
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
-import static org.ripv.it.ops.CommandProcesses.freePort;
 import static org.ripv.it.ops.CommandProcesses.jar;
 import static org.ripv.it.ops.CommandProcesses.java;
 
@@ -16,6 +15,7 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.ripv.probe.FreePorts;
 
 /**
  * Issue 32, item 11: two service processes with one name, as launched ({@code ripv-server.jar},
@@ -53,8 +53,8 @@ class DuplicateServiceNameTest {
         for (String m : List.of("ripv-server", "ripv-common")) {
             assumeTrue(Files.isRegularFile(Path.of(jar(m))), "needs the jars (mvn verify builds them before this module's tests)");
         }
-        int port = freePort();
-        int registry = freePort();
+        int port = FreePorts.one();
+        int registry = FreePorts.one();
         Path data = dir.resolve("data");
         processes.launch("server.log", java(), "-jar", jar("ripv-server"), "server", "--data", data.toString(), "--port", "" + port,
                 "--registry-port", "" + registry, "--http-port", "0", "--outbound-port", "-1", "--bind", "127.0.0.1");

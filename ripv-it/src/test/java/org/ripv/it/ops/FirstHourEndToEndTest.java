@@ -2,7 +2,6 @@ package org.ripv.it.ops;
 
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
-import static org.ripv.it.ops.CommandProcesses.freePort;
 import static org.ripv.it.ops.CommandProcesses.jar;
 import static org.ripv.it.ops.CommandProcesses.java;
 
@@ -19,6 +18,7 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestInstance;
 import org.junit.jupiter.api.io.TempDir;
+import org.ripv.probe.FreePorts;
 import org.ripv.testing.Tools;
 
 /**
@@ -50,10 +50,10 @@ class FirstHourEndToEndTest {
         for (String m : List.of("ripv-common", "ripv-server", "ripv-services", "ripv-client")) {
             assumeTrue(Files.isRegularFile(Path.of(jar(m))), "needs the jars (mvn verify builds them before this module's tests)");
         }
-        port = freePort();
-        registry = freePort();
-        http = freePort();
-        int glider = freePort();
+        port = FreePorts.one();
+        registry = FreePorts.one();
+        http = FreePorts.one();
+        int glider = FreePorts.one();
         Path data = dir.resolve("data");
         processes.launch("server.log", java(), "-jar", jar("ripv-server"), "server", "--data", data.toString(), "--port", "" + port,
                 "--registry-port", "" + registry, "--http-port", "" + http, "--outbound-port", "-1", "--bind", "127.0.0.1");
@@ -184,7 +184,7 @@ class FirstHourEndToEndTest {
         assertThat(r.err()).contains("localhost:" + http + " is the server's web/landing page port");
         assertThat(r.took()).as("bounded, not forever").isLessThan(Duration.ofSeconds(90));
 
-        int nothing = freePort();
+        int nothing = FreePorts.one();
         r = cliAt("localhost:" + nothing, "--exec", "?ping");
         assertThat(r.code()).isEqualTo(3);
         assertThat(r.err()).contains("nothing listens on localhost:" + nothing);

@@ -14,6 +14,7 @@ import org.ripv.client.handlers.ClientSocketHandler;
 import org.ripv.examples.ClockService;
 import org.ripv.it.TestSystem;
 import org.ripv.messages.Priority;
+import org.ripv.probe.FreePorts;
 import org.ripv.testing.Tools;
 
 /**
@@ -36,12 +37,7 @@ class InteractiveCliTmuxTest {
     @BeforeEach
     void start() throws Exception {
         Tools.require("tmux");
-        int[] ports = new int[2];
-        for (int i = 0; i < 2; i++) {
-            try (java.net.ServerSocket s = new java.net.ServerSocket(0)) {
-                ports[i] = s.getLocalPort();
-            }
-        }
+        int[] ports = FreePorts.several(2);
         // Fixed ports and data directory: a restarted server comes back where it was, with its certificate.
         config = org.ripv.server.ServerConfig.forTests(dir.resolve("sys")).withPorts(ports[0], ports[1], -1);
         sys = TestSystem.start(config);

@@ -5,7 +5,6 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.net.ServerSocket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -21,6 +20,7 @@ import org.junit.jupiter.api.extension.BeforeEachCallback;
 import org.junit.jupiter.api.extension.ExtensionContext;
 import org.ripv.it.InJvmCli;
 import org.ripv.it.TestSystem;
+import org.ripv.probe.FreePorts;
 import org.ripv.server.permit.PermitFile;
 
 /**
@@ -68,7 +68,7 @@ final class LaunchedSystem implements BeforeEachCallback, AfterEachCallback {
         home = Files.createDirectories(dir.resolve("home"));
         data = dir.resolve("ripv-data");
         knownHosts = dir.resolve("known_hosts");
-        int[] p = freePorts(4);
+        int[] p = FreePorts.several(4);
         clientPort = p[0];
         registryPort = p[1];
         outboundPort = p[2];
@@ -96,19 +96,6 @@ final class LaunchedSystem implements BeforeEachCallback, AfterEachCallback {
         for (String m : List.of("ripv-server", "ripv-services")) {
             assumeTrue(Files.isRegularFile(Path.of(CommandProcesses.jar(m))), "needs the jars (mvn -DskipTests package builds them)");
         }
-    }
-
-    static int[] freePorts(int n) throws IOException {
-        int[] ports = new int[n];
-        ServerSocket[] s = new ServerSocket[n];
-        for (int i = 0; i < n; i++) {
-            s[i] = new ServerSocket(0);
-            ports[i] = s[i].getLocalPort();
-        }
-        for (ServerSocket x : s) {
-            x.close();
-        }
-        return ports;
     }
 
     /** A longer wait than {@link #STARTUP} for the server's start and the services' registration. */

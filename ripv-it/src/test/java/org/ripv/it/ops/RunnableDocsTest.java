@@ -26,6 +26,7 @@ import org.junit.jupiter.api.TestMethodOrder;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
+import org.ripv.probe.FreePorts;
 
 /**
  * Every command in the docs' blocks marked runnable ({@code ```sh runnable}, see docs/README.md),
@@ -321,7 +322,7 @@ class RunnableDocsTest {
     void aSecondDemoOnTheSameFolderSaysWhichProcessHoldsItAndTouchesNothing() throws Exception {
         String serverLog = demo.logOf("server");
         String[] names = {"RIPV_PORT", "RIPV_REGISTRY_PORT", "RIPV_HTTP_PORT", "RIPV_GLIDER_PORT"};
-        int[] other = RunningDemo.freePorts(4);
+        int[] other = FreePorts.several(4);
         Map<String, String> otherPorts = new java.util.HashMap<>();
         for (int i = 0; i < 4; i++) {
             otherPorts.put(names[i], "" + other[i]);

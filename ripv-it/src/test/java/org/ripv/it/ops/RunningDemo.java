@@ -2,7 +2,6 @@ package org.ripv.it.ops;
 
 import java.io.File;
 import java.io.IOException;
-import java.net.ServerSocket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -11,6 +10,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
+import org.ripv.probe.FreePorts;
 
 /**
  * {@code ./ripv demo} as the README runs it, headless, on free ports and in a folder of its own
@@ -72,25 +72,6 @@ final class RunningDemo implements AutoCloseable {
         return env;
     }
 
-    /** Ports free a moment ago (the demo refuses to start if one was taken since). */
-    static int[] freePorts(int n) throws IOException {
-        int[] ports = new int[n];
-        ServerSocket[] held = new ServerSocket[n];
-        try {
-            for (int i = 0; i < n; i++) {
-                held[i] = new ServerSocket(0);
-                ports[i] = held[i].getLocalPort();
-            }
-        } finally {
-            for (ServerSocket s : held) {
-                if (s != null) {
-                    s.close();
-                }
-            }
-        }
-        return ports;
-    }
-
     /**
      * Starts {@code ROOT/ripv demo} and waits (up to {@code max}: a first run builds the jars) until
      * it says it is running; fails with its output if it ends or the time is up first.
@@ -98,7 +79,7 @@ final class RunningDemo implements AutoCloseable {
     static RunningDemo start(Path root, Path dir, Path home, Duration max, Map<String, String> extra) throws Exception {
         Files.createDirectories(home);
         Path log = Files.createTempFile(home.getParent(), "demo", ".log");
-        RunningDemo demo = new RunningDemo(root, dir, home, log, freePorts(6), extra);
+        RunningDemo demo = new RunningDemo(root, dir, home, log, FreePorts.several(6), extra);
         long end = System.nanoTime() + max.toNanos();
         while (!demo.output().contains(RUNNING)) {
             if (!demo.process.isAlive() || System.nanoTime() > end) {

@@ -2,7 +2,6 @@ package org.ripv.it.security;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import java.net.ServerSocket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -21,6 +20,7 @@ import org.junit.jupiter.api.io.TempDir;
 import org.ripv.examples.ClockService;
 import org.ripv.it.TestSystem;
 import org.ripv.messages.ServiceDescriptor;
+import org.ripv.probe.FreePorts;
 import org.ripv.rmi.GenericRMIInterface;
 import org.ripv.security.ServiceProof;
 import org.ripv.server.security.RegistryGuard;
@@ -102,10 +102,7 @@ class ChallengeFloodAttackTest {
     @Test
     void aServiceRetriesARefusalThatSaysToRegisterAgain() throws Exception {
         String secret = "0123456789abcdef".repeat(4);
-        int port;
-        try (ServerSocket s = new ServerSocket(0)) {
-            port = s.getLocalPort();
-        }
+        int port = FreePorts.one();
         Registry registry = LocateRegistry.createRegistry(port);
         Refusing server = new Refusing(secret);
         GenericRMIInterface stub = (GenericRMIInterface) UnicastRemoteObject.exportObject(server, 0);

@@ -2,7 +2,6 @@ package org.ripv.it.security;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import java.net.ServerSocket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -11,6 +10,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.ripv.client.cli.CliCommand;
 import org.ripv.it.TestSystem;
+import org.ripv.probe.FreePorts;
 import org.ripv.server.ServerConfig;
 import org.ripv.server.security.SelfSignedTls;
 
@@ -36,16 +36,10 @@ class FailoverPinningAttackTest {
         return s;
     }
 
-    private static int freePort() throws Exception {
-        try (ServerSocket s = new ServerSocket(0)) {
-            return s.getLocalPort();
-        }
-    }
-
     @Test
     void aChangedCertificateOnTheActiveServerStopsTheAttemptAndAnUnpinnedStandbyIsNotTrusted() throws Exception {
         Path known = dir.resolve("known_hosts");
-        int portA = freePort();
+        int portA = FreePorts.one();
         try (TestSystem a = server("a", portA)) {
             CertificateChangeAttackTest.Run first = cli("localhost:" + portA, known);
             assertThat(first.code()).as(first.err()).isZero();
@@ -80,7 +74,7 @@ class FailoverPinningAttackTest {
     @Test
     void aStandbyWithTheCertificateOfATrustedServerIsLearned() throws Exception {
         Path known = dir.resolve("known_hosts");
-        int portA = freePort();
+        int portA = FreePorts.one();
         // The tests' shared key store: both servers have the same certificate (the same --tls-keystore).
         try (TestSystem a = TestSystem.start(ServerConfig.forTests(dir.resolve("a")).withPorts(portA, 0, -1))) {
             a.user("alice", "operators");

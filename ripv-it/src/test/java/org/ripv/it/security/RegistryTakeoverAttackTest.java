@@ -3,7 +3,6 @@ package org.ripv.it.security;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
-import java.net.ServerSocket;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.rmi.NotBoundException;
@@ -23,6 +22,7 @@ import org.ripv.messages.IncomingServiceMessage;
 import org.ripv.messages.MailboxStatus;
 import org.ripv.messages.OutgoingServiceMessage;
 import org.ripv.messages.ServiceDescriptor;
+import org.ripv.probe.FreePorts;
 import org.ripv.rmi.GenericRMIInterface;
 import org.ripv.security.ServiceProof;
 import org.ripv.server.ServerConfig;
@@ -138,10 +138,7 @@ class RegistryTakeoverAttackTest {
     @Test
     void anImpostorInTheRegistryReceivesNoSecretAndTheServiceKeepsTrying() throws Exception {
         String secret = "0123456789abcdef".repeat(4);
-        int port;
-        try (ServerSocket s = new ServerSocket(0)) {
-            port = s.getLocalPort();
-        }
+        int port = FreePorts.one();
         // The port squatter: a registry of its own where the server's should be.
         Registry fake = LocateRegistry.createRegistry(port);
         Impostor impostor = new Impostor();

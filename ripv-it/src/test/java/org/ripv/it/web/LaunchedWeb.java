@@ -14,6 +14,7 @@ import org.openqa.selenium.By;
 import org.openqa.selenium.OutputType;
 import org.openqa.selenium.chrome.ChromeDriver;
 import org.openqa.selenium.support.ui.WebDriverWait;
+import org.ripv.probe.FreePorts;
 
 /**
  * A RIPVServer and services started from the jars as separate processes, for browser tests that
@@ -47,9 +48,9 @@ public final class LaunchedWeb implements AutoCloseable {
         if (!permitLines.isEmpty()) {
             Files.write(permit, permitLines, StandardCharsets.UTF_8, java.nio.file.StandardOpenOption.APPEND);
         }
-        port = WebConsoleBrowserTest.freePort();
-        registry = WebConsoleBrowserTest.freePort();
-        http = WebConsoleBrowserTest.freePort();
+        port = FreePorts.one();
+        registry = FreePorts.one();
+        http = FreePorts.one();
         List<String> args = new ArrayList<>(List.of("-jar", jar("ripv-server"), "server", "--data", data.toString(), "--port",
                 String.valueOf(port), "--registry-port", String.valueOf(registry), "--http-port", String.valueOf(http), "--bind", "127.0.0.1"));
         args.addAll(List.of(serverOptions));
@@ -113,7 +114,7 @@ public final class LaunchedWeb implements AutoCloseable {
                 "127.0.0.1:" + registry, "--secret-file", data.resolve("service.secret").toString(), "--carrier", "ignore", "--no-enumerate"));
         int calling = 0;
         for (String n : names) {
-            int link = WebConsoleBrowserTest.freePort();
+            int link = FreePorts.one();
             calling = calling == 0 ? link : calling;
             args.addAll(List.of("--link", "listen://127.0.0.1:" + link + ",name=" + n));
         }

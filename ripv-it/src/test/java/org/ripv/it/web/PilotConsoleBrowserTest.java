@@ -23,6 +23,7 @@ import org.openqa.selenium.chrome.ChromeDriver;
 import org.openqa.selenium.support.ui.WebDriverWait;
 import org.ripv.it.Shared;
 import org.junit.jupiter.api.parallel.ResourceLock;
+import org.ripv.probe.FreePorts;
 
 /**
  * A pilot's console, round two (issue 32), as launched: the server, a SerialPortServer with two
@@ -63,8 +64,8 @@ class PilotConsoleBrowserTest {
         Path downloads = Files.createDirectories(sys.data.resolve("download"));
         Files.copy(WebConsoleBrowserTest.root().resolve("ripv-services/src/test/resources/slocum/unit_363_2013_245_6_6.mrg"),
                 downloads.resolve("unit_363_2013_245_6_6.mrg"));
-        int link1 = WebConsoleBrowserTest.freePort();
-        int link2 = WebConsoleBrowserTest.freePort();
+        int link1 = FreePorts.one();
+        int link2 = FreePorts.one();
         sys.launch("serial", null, "-Dripv.host=localhost", "-jar", LaunchedWeb.jar("ripv-services"), "serial", "--server",
                 "127.0.0.1:" + sys.registry, "--secret-file", sys.data.resolve("service.secret").toString(), "--carrier", "ignore",
                 "--no-enumerate", "--work", dir.resolve("work").toString(),

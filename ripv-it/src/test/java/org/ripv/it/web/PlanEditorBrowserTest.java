@@ -23,6 +23,7 @@ import org.openqa.selenium.interactions.Actions;
 import org.openqa.selenium.support.ui.WebDriverWait;
 import org.ripv.it.Shared;
 import org.junit.jupiter.api.parallel.ResourceLock;
+import org.ripv.probe.FreePorts;
 
 /**
  * The plan page (issue 36, item 2, as a table), as launched: the server, the SerialPortServer and
@@ -60,10 +61,10 @@ class PlanEditorBrowserTest {
         Process pw = system.launch("passwd", PASSWORD + "\n", "-jar", WebConsoleBrowserTest.jar("ripv-server").toString(), "passwd",
                 "--permit", data.resolve("permit.txt").toString(), "alice", "--roles", "operators");
         assertThat(pw.waitFor()).as(system.log("passwd")).isZero();
-        int port = WebConsoleBrowserTest.freePort();
-        int registry = WebConsoleBrowserTest.freePort();
-        int link = WebConsoleBrowserTest.freePort();
-        http = WebConsoleBrowserTest.freePort();
+        int port = FreePorts.one();
+        int registry = FreePorts.one();
+        int link = FreePorts.one();
+        http = FreePorts.one();
         system.launch("server", null, "-jar", WebConsoleBrowserTest.jar("ripv-server").toString(), "server", "--data", data.toString(),
                 "--port", String.valueOf(port), "--registry-port", String.valueOf(registry), "--http-port", String.valueOf(http),
                 "--bind", "127.0.0.1");

@@ -26,6 +26,7 @@ import org.openqa.selenium.support.ui.WebDriverWait;
 import org.ripv.plans.Forecast;
 import org.ripv.it.Shared;
 import org.junit.jupiter.api.parallel.ResourceLock;
+import org.ripv.probe.FreePorts;
 
 /**
  * Issue 35 items 5 and 6 as launched: the server, a SerialPortServer and a GliderDOS glider
@@ -55,7 +56,7 @@ class SurfacingsBrowserTest {
         sys = new LaunchedWeb(dir, List.of("alice:operators"), List.of());
         // A grace of 40 s: the restart below must happen before the glider is due.
         Files.writeString(sys.data.resolve("surfacing-alerts.conf"), "* overdue.grace 40s\n");
-        int link = WebConsoleBrowserTest.freePort();
+        int link = FreePorts.one();
         sys.launch("serial", null, "-Dripv.host=localhost", "-jar", LaunchedWeb.jar("ripv-services"), "serial", "--server",
                 "127.0.0.1:" + sys.registry, "--secret-file", sys.data.resolve("service.secret").toString(), "--carrier", "ignore",
                 "--no-enumerate", "--work", dir.resolve("work").toString(),

@@ -4,7 +4,6 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import java.io.IOException;
 import java.net.InetAddress;
-import java.net.ServerSocket;
 import java.net.Socket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -25,6 +24,7 @@ import org.openqa.selenium.chrome.ChromeDriver;
 import org.openqa.selenium.support.ui.WebDriverWait;
 import org.ripv.it.Shared;
 import org.junit.jupiter.api.parallel.ResourceLock;
+import org.ripv.probe.FreePorts;
 
 /**
  * The web console as launched and as used (issue 21): the server, the SerialPortServer and the
@@ -52,12 +52,6 @@ class WebConsoleBrowserTest {
 
     static Path jar(String module) {
         return root().resolve(module).resolve("target").resolve(module + ".jar");
-    }
-
-    static int freePort() throws IOException {
-        try (ServerSocket s = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
-            return s.getLocalPort();
-        }
     }
 
     static LaunchedProcesses system;
@@ -90,10 +84,10 @@ class WebConsoleBrowserTest {
                     permit.toString(), u[0], "--roles", u[1]);
             assertThat(p.waitFor()).as(log("passwd-" + u[0])).isZero();
         }
-        int port = freePort();
-        int registry = freePort();
-        http = freePort();
-        int link = freePort();
+        int port = FreePorts.one();
+        int registry = FreePorts.one();
+        http = FreePorts.one();
+        int link = FreePorts.one();
         launch("server", null, "-jar", jar("ripv-server").toString(), "server", "--data", data.toString(), "--port", String.valueOf(port),
                 "--registry-port", String.valueOf(registry), "--http-port", String.valueOf(http), "--bind", "127.0.0.1");
         waitFor("the server's web console", () -> {

@@ -29,6 +29,7 @@ import org.openqa.selenium.chrome.ChromeDriver;
 import org.openqa.selenium.support.ui.WebDriverWait;
 import org.ripv.it.Shared;
 import org.junit.jupiter.api.parallel.ResourceLock;
+import org.ripv.probe.FreePorts;
 
 /**
  * A vehicle's files, queue and receipts, and the user's notifications in the web console (issue 21
@@ -85,10 +86,10 @@ class WebFilesBrowserTest {
         Process pw = launch("passwd", PASSWORD + "\n", "-jar", WebConsoleBrowserTest.jar("ripv-server").toString(), "passwd", "--permit",
                 data.resolve("permit.txt").toString(), "alice", "--roles", "operators");
         assertThat(pw.waitFor()).as(log("passwd")).isZero();
-        int port = WebConsoleBrowserTest.freePort();
-        int registry = WebConsoleBrowserTest.freePort();
-        int link = WebConsoleBrowserTest.freePort();
-        http = WebConsoleBrowserTest.freePort();
+        int port = FreePorts.one();
+        int registry = FreePorts.one();
+        int link = FreePorts.one();
+        http = FreePorts.one();
         launch("server", null, "-jar", WebConsoleBrowserTest.jar("ripv-server").toString(), "server", "--data", data.toString(),
                 "--port", String.valueOf(port), "--registry-port", String.valueOf(registry), "--http-port", String.valueOf(http),
                 "--bind", "127.0.0.1", "--webhook-allow", "127.0.0.1/32");

@@ -2,11 +2,11 @@ package org.ripv.server.remote;
 
 import java.io.IOException;
 import java.net.InetAddress;
-import java.net.ServerSocket;
 import java.rmi.NoSuchObjectException;
 import java.rmi.RemoteException;
 import java.rmi.registry.Registry;
 import java.rmi.server.UnicastRemoteObject;
+import org.ripv.probe.FreePorts;
 import org.ripv.rmi.BoundServerSocketFactory;
 import org.ripv.rmi.DeadlineSocketFactory;
 import org.ripv.rmi.GenericRMIInterface;
@@ -35,7 +35,39 @@ public final class RmiDoor implements AutoCloseable {
 
     /** Opens the registry on {@code port} (0: a free one) on the bind address (null: all) and exports {@code remote} there. */
     public static RmiDoor open(InetAddress bind, int port, ServerRemote remote) throws IOException {
-        int registryPort = port == 0 ? freePort() : port;
+        return port == 0 ? openFree(bind, remote, FreePorts::one) : openOn(bind, port, remote);
+    }
+
+    /** Where {@link #openFree} gets the ports it tries. */
+    @FunctionalInterface
+    interface PortSource {
+        int next() throws IOException;
+    }
+
+    // RMI cannot tell which port a registry on port 0 took, so a free one is picked first; another
+    // process may still take it before the registry binds it. Another free port then, a few times.
+    static RmiDoor openFree(InetAddress bind, ServerRemote remote, PortSource ports) throws IOException {
+        for (int attempt = 1; ; attempt++) {
+            try {
+                return openOn(bind, ports.next(), remote);
+            } catch (IOException e) {
+                if (attempt == FREE_PORT_ATTEMPTS || !(rootCause(e) instanceof java.net.BindException)) {
+                    throw e;
+                }
+            }
+        }
+    }
+
+    private static final int FREE_PORT_ATTEMPTS = 5;
+
+    private static Throwable rootCause(Throwable t) {
+        while (t.getCause() != null && t.getCause() != t) {
+            t = t.getCause();
+        }
+        return t;
+    }
+
+    private static RmiDoor openOn(InetAddress bind, int registryPort, ServerRemote remote) throws IOException {
         BoundServerSocketFactory rmiSockets = new BoundServerSocketFactory(bind);
         // Services call back with deadlines: the factory travels inside the stub they get.
         DeadlineSocketFactory callSockets = DeadlineSocketFactory.fromSystem();
@@ -81,11 +113,5 @@ public final class RmiDoor implements AutoCloseable {
             // not exported
         }
         RmiSupport.unexport(remote);
-    }
-
-    private static int freePort() throws IOException {
-        try (ServerSocket s = new ServerSocket(0)) {
-            return s.getLocalPort();
-        }
     }
 }

@@ -3,12 +3,12 @@ package org.ripv.services.bench;
 import java.io.File;
 import java.io.IOException;
 import java.net.InetSocketAddress;
-import java.net.ServerSocket;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
+import org.ripv.probe.FreePorts;
 
 /**
  * lrzsz's programs ({@code sb}, {@code rb}, {@code sz}, {@code rz}) on a loopback TCP port through
@@ -18,13 +18,6 @@ import java.util.Locale;
  */
 public final class Socat {
     private Socat() {}
-
-    /** A free loopback port for socat to listen on. */
-    public static int freePort() throws IOException {
-        try (ServerSocket s = new ServerSocket(0)) {
-            return s.getLocalPort();
-        }
-    }
 
     /** 127.0.0.1:port, where a relay finds the program socat serves. */
     public static InetSocketAddress local(int port) {
@@ -54,7 +47,7 @@ public final class Socat {
      * port, listening by the time this returns ({@link #awaitListening}).
      */
     public static Served serve(Path cwd, String program) throws IOException, InterruptedException {
-        int port = freePort();
+        int port = FreePorts.one();
         Served served = new Served(listen(cwd, port, program), port);
         try {
             awaitListening(port);

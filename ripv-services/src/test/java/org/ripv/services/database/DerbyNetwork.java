@@ -1,9 +1,9 @@
 package org.ripv.services.database;
 
 import java.net.InetAddress;
-import java.net.ServerSocket;
 import java.util.concurrent.locks.LockSupport;
 import org.apache.derby.drda.NetworkServerControl;
+import org.ripv.probe.FreePorts;
 
 /** A real Derby network server (derbynet) on a free loopback port, for tests. */
 final class DerbyNetwork implements AutoCloseable {
@@ -16,10 +16,7 @@ final class DerbyNetwork implements AutoCloseable {
     }
 
     static DerbyNetwork start() throws Exception {
-        int port;
-        try (ServerSocket s = new ServerSocket(0)) {
-            port = s.getLocalPort();
-        }
+        int port = FreePorts.one();
         NetworkServerControl control = new NetworkServerControl(InetAddress.getLoopbackAddress(), port);
         control.start(null);
         // start() returns before the server listens and Derby offers no "started" callback:

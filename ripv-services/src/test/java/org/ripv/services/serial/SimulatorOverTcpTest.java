@@ -6,7 +6,6 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertInstanceOf;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.net.ServerSocket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -23,6 +22,7 @@ import org.ripv.messages.FileBundle;
 import org.ripv.messages.FileData;
 import org.ripv.messages.Progress;
 import org.ripv.naming.Handles;
+import org.ripv.probe.FreePorts;
 import org.ripv.services.serial.ymodem.YmodemConfig;
 import org.ripv.services.simulator.GliderSimulator;
 
@@ -221,10 +221,7 @@ class SimulatorOverTcpTest {
 
     @Test
     void aLinkToNothingIsNotAvailableAndSaysWhy() throws Exception {
-        int closedPort;
-        try (ServerSocket s = new ServerSocket(0)) {
-            closedPort = s.getLocalPort();
-        }
+        int closedPort = FreePorts.one();
         String device = "tcp://127.0.0.1:" + closedPort;
         SerialPortServer other = new SerialPortServer("testhost", List.of(settings(device)), null, false,
                 tmp.resolve("work2"));
