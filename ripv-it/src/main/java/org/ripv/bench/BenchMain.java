@@ -2,9 +2,11 @@ package org.ripv.bench;
 
 import java.util.Arrays;
 import java.util.List;
+import org.ripv.client.handlers.Tls;
+import org.ripv.launch.Launchers;
+import org.ripv.launch.Version;
 import org.ripv.services.bench.DataVisBenchmark;
 import org.ripv.services.bench.YmodemBenchmark;
-import org.ripv.launch.Launchers;
 import picocli.CommandLine;
 
 /**
@@ -79,7 +81,7 @@ public final class BenchMain {
             return args.length == 0 ? 2 : 0;
         }
         if (args[0].equals("--version") || args[0].equals("-V")) {
-            System.out.println(org.ripv.launch.Version.line());
+            System.out.println(Version.line());
             return 0;
         }
         String[] rest = ShortMode.apply(args[0], Arrays.copyOfRange(args, 1, args.length));
@@ -102,7 +104,7 @@ public final class BenchMain {
         // Each run's server makes a new certificate: keep them out of the user's ~/.ripv/known_hosts.
         java.nio.file.Path known = java.nio.file.Files.createTempFile("ripv-bench-known-hosts", "");
         known.toFile().deleteOnExit();
-        System.setProperty(org.ripv.client.handlers.Tls.KNOWN_HOSTS_PROPERTY, known.toString());
+        System.setProperty(Tls.KNOWN_HOSTS_PROPERTY, known.toString());
         if (ShortMode.names().contains(name)) {
             System.out.println(CpuClock.machineLine()); // how loaded the machine was, beside every benchmark's figures
         }

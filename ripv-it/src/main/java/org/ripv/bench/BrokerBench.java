@@ -20,6 +20,7 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicLong;
@@ -244,7 +245,7 @@ public final class BrokerBench implements Callable<Integer> {
         AtomicBoolean stop = new AtomicBoolean(false);
         AtomicLong done = new AtomicLong();
         CountDownLatch finished = new CountDownLatch(cs.size());
-        List<Throwable> failures = new java.util.concurrent.CopyOnWriteArrayList<>();
+        List<Throwable> failures = new CopyOnWriteArrayList<>();
         for (ClientSocketHandler c : cs) {
             Thread t = new Thread(() -> {
                 try {

@@ -13,6 +13,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.locks.LockSupport;
@@ -96,7 +97,7 @@ public final class CallsBench implements Callable<Integer> {
             long now = System.nanoTime();
             for (ConsoleEntry e : entries) {
                 if (e.kind() == ConsoleEntry.Kind.EVENT) {
-                    events.computeIfAbsent(e.mailbox(), m -> new java.util.concurrent.CopyOnWriteArrayList<>()).add(e);
+                    events.computeIfAbsent(e.mailbox(), m -> new CopyOnWriteArrayList<>()).add(e);
                 } else if (e.text().startsWith("t=")) {
                     String[] f = e.text().split(" ");
                     long sent = Long.parseLong(f[0].substring(2));

@@ -1,9 +1,11 @@
 package org.ripv.bench;
 
+import com.sun.management.UnixOperatingSystemMXBean;
 import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.InputStreamReader;
 import java.io.PrintStream;
+import java.io.Writer;
 import java.lang.management.ManagementFactory;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -123,7 +125,7 @@ public final class ConnectionCostBench implements Callable<Integer> {
 
     /** Each client is a socket here and one at the server (both JVMs inherit this limit). */
     private void checkDescriptors() {
-        if (ManagementFactory.getOperatingSystemMXBean() instanceof com.sun.management.UnixOperatingSystemMXBean os) {
+        if (ManagementFactory.getOperatingSystemMXBean() instanceof UnixOperatingSystemMXBean os) {
             long need = clients + SPARE_DESCRIPTORS;
             if (os.getMaxFileDescriptorCount() < need) {
                 throw new IllegalArgumentException("--clients " + clients + " needs " + need + " open files per process, but"
@@ -155,7 +157,7 @@ public final class ConnectionCostBench implements Callable<Integer> {
             if (m.find()) {
                 Thread t = new Thread(() -> {
                     try {
-                        r.transferTo(java.io.Writer.nullWriter());
+                        r.transferTo(Writer.nullWriter());
                     } catch (IOException ignored) {
                         // the server ended
                     }

@@ -12,6 +12,7 @@ import java.util.List;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.function.Consumer;
 import org.ripv.client.handlers.ClientSocketHandler;
 import org.ripv.messages.ConsoleBatch;
 import org.ripv.messages.ConsoleEntry;
@@ -267,7 +268,7 @@ public final class ConsoleBench implements Callable<Integer> {
     }
 
     /** Sends "bench I NANOS" lines at the rate for warm-up plus measuring time; returns the delays seen during measuring. */
-    private Figures run(java.util.function.Consumer<String> vehicle, List<Watch> ws, int seconds) throws InterruptedException {
+    private Figures run(Consumer<String> vehicle, List<Watch> ws, int seconds) throws InterruptedException {
         long period = 1_000_000_000L / rate;
         long start = System.nanoTime();
         long total = (long) (warmup + seconds) * rate;

@@ -1,5 +1,6 @@
 package org.ripv.bench;
 
+import com.sun.management.OperatingSystemMXBean;
 import java.io.IOException;
 import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
@@ -140,7 +141,7 @@ public final class CpuClock {
 
     /** All threads' CPU time of this JVM, from the operating system (Linux: /proc/self/stat's utime + stime). */
     public static long processCpuNanos() {
-        if (ManagementFactory.getOperatingSystemMXBean() instanceof com.sun.management.OperatingSystemMXBean os) {
+        if (ManagementFactory.getOperatingSystemMXBean() instanceof OperatingSystemMXBean os) {
             long t = os.getProcessCpuTime();
             if (t >= 0) {
                 return t;

@@ -9,6 +9,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.Comparator;
 import java.util.List;
 import java.util.Locale;
 import org.ripv.dac.Metadata;
@@ -108,7 +109,7 @@ public final class DacBench {
             List<Path> pathFiles, floorFiles;
             try (var a1 = Files.list(first); var b1 = Files.list(firstFloor)) {
                 pathFiles = a1.sorted().toList();
-                floorFiles = b1.sorted(java.util.Comparator.comparingInt(DacBench::floorIndex)).toList();
+                floorFiles = b1.sorted(Comparator.comparingInt(DacBench::floorIndex)).toList();
             }
             long bytes = 0;
             for (int i = 0; i < pathFiles.size(); i++) {

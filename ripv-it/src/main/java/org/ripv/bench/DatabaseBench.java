@@ -29,6 +29,7 @@ import java.util.Map;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicLong;
 import org.ripv.client.handlers.ClientSocketHandler;
 import org.ripv.messages.Header;
 import org.ripv.messages.IdBadge;
@@ -101,7 +102,7 @@ public final class DatabaseBench {
         double[] directFirst = new double[runs];
         double[] inProcessFirst = new double[runs];
         double[] endToEndFirst = new double[runs];
-        java.util.concurrent.atomic.AtomicLong firstPage = new java.util.concurrent.atomic.AtomicLong();
+        AtomicLong firstPage = new AtomicLong();
         long[] cpu = new long[3]; // CPU nanoseconds of the whole process per path, over the measured runs
         double[] directCpu = new double[runs]; // the same per round, ms: how far one round strays
         double[] endToEndCpu = new double[runs];

@@ -1,5 +1,6 @@
 package org.ripv.bench;
 
+import com.sun.management.OperatingSystemMXBean;
 import java.lang.management.ManagementFactory;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -7,6 +8,7 @@ import java.sql.Connection;
 import java.sql.DriverManager;
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.Comparator;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.ripv.services.database.EmbeddedDatabase;
@@ -75,7 +77,7 @@ public final class FirstStartBench {
             return new long[] {wall, Long.parseLong(cpu.substring(4).trim())};
         } finally {
             try (var walk = Files.walk(dir)) {
-                walk.sorted(java.util.Comparator.reverseOrder()).forEach(f -> f.toFile().delete());
+                walk.sorted(Comparator.reverseOrder()).forEach(f -> f.toFile().delete());
             }
         }
     }
@@ -91,7 +93,7 @@ public final class FirstStartBench {
                 c.commit();
             }
         }
-        long cpu = ((com.sun.management.OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean()).getProcessCpuTime();
+        long cpu = ((OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean()).getProcessCpuTime();
         System.out.println("CPU " + (cpu / 1_000_000 + childrenCpuMillis()));
         System.exit(0);
     }

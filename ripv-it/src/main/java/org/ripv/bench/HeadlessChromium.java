@@ -6,6 +6,7 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.InputStreamReader;
+import java.io.Writer;
 import java.net.URI;
 import java.net.http.HttpClient;
 import java.net.http.WebSocket;
@@ -13,6 +14,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.CompletableFuture;
@@ -82,7 +84,7 @@ final class HeadlessChromium implements AutoCloseable {
         }
         Thread drain = new Thread(() -> {
             try {
-                out.transferTo(java.io.Writer.nullWriter());
+                out.transferTo(Writer.nullWriter());
             } catch (IOException ignored) {
                 // the browser ended
             }
@@ -102,7 +104,7 @@ final class HeadlessChromium implements AutoCloseable {
 
     /** The browser's process and its children (renderer, GPU, network service): whose CPU a page load costs. */
     List<ProcessHandle> processes() {
-        List<ProcessHandle> all = new java.util.ArrayList<>(List.of(process.toHandle()));
+        List<ProcessHandle> all = new ArrayList<>(List.of(process.toHandle()));
         process.descendants().forEach(all::add);
         return all;
     }

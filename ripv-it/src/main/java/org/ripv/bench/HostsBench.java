@@ -1,6 +1,7 @@
 package org.ripv.bench;
 
 import java.io.IOException;
+import java.lang.management.ManagementFactory;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -152,7 +153,7 @@ final class HostsBench {
 
             System.out.printf("RIPV across hosts (network namespaces on one bridge; PostgreSQL, 2 servers, a service host, an operator;"
                     + " %d cores, load average %.1f)%n", Runtime.getRuntime().availableProcessors(),
-                    java.lang.management.ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage());
+                    ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage());
             System.out.printf("%-62s %10s %10s %s%n", "", "median", "p90", "against");
             System.out.printf("%-62s %8d us %8d us%n", "bare TCP round trip, operator -> server", opSrv[0], opSrv[1]);
             System.out.printf("%-62s %8d us %8d us%n", "bare TCP round trip, server -> service host", srvSvc[0], srvSvc[1]);

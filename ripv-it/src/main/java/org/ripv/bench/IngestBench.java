@@ -5,7 +5,9 @@ import static org.ripv.bench.BenchTools.intOption;
 import static org.ripv.bench.BenchTools.median;
 import static org.ripv.bench.BenchTools.stringOption;
 
+import com.sun.management.OperatingSystemMXBean;
 import java.io.ByteArrayInputStream;
+import java.lang.management.ManagementFactory;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -186,7 +188,7 @@ public final class IngestBench {
 
     /** The whole process's CPU time: every thread of the path measured, none of the waiting. */
     private static long cpuNanos() {
-        return ((com.sun.management.OperatingSystemMXBean) java.lang.management.ManagementFactory.getOperatingSystemMXBean())
+        return ((OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean())
                 .getProcessCpuTime();
     }
 

@@ -1,5 +1,6 @@
 package org.ripv.bench;
 
+import java.io.PrintStream;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
@@ -60,7 +61,7 @@ final class ShortMode {
      *
      * @return whether the run is short
      */
-    static boolean announce(String[] args, java.io.PrintStream out) {
+    static boolean announce(String[] args, PrintStream out) {
         if (!Arrays.asList(args).contains(FLAG)) {
             return false;
         }

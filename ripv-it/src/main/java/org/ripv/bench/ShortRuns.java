@@ -5,6 +5,7 @@ import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Properties;
 
 /**
  * The named {@code ripv bench NAME --short} runs in one JVM, one after the other (issue 38: fifteen
@@ -27,7 +28,7 @@ public final class ShortRuns {
             int status;
             long t0 = System.nanoTime();
             // One run's system properties (Derby's log file in a folder it deletes, known_hosts) are not the next one's.
-            java.util.Properties before = (java.util.Properties) System.getProperties().clone();
+            Properties before = (Properties) System.getProperties().clone();
             try (PrintStream log = new PrintStream(new FileOutputStream(dir.resolve(name + ".log").toFile()), true,
                     StandardCharsets.UTF_8)) {
                 System.setOut(log);

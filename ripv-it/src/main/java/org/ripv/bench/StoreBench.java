@@ -12,6 +12,7 @@ import java.util.Locale;
 import java.util.Properties;
 import java.util.concurrent.ThreadLocalRandom;
 import org.ripv.messages.ConsoleEntry;
+import org.ripv.server.session.Entries;
 import org.ripv.server.session.Transcript;
 import org.ripv.server.store.EmbeddedStateStore;
 import org.ripv.server.store.StateStore;
@@ -141,7 +142,7 @@ public final class StoreBench {
                     ConsoleEntry e = entry(t0, i);
                     ps.setString(1, e.mailbox());
                     ps.setLong(2, e.time());
-                    ps.setString(3, org.ripv.server.session.Entries.toJson(e));
+                    ps.setString(3, Entries.toJson(e));
                     ps.addBatch();
                     if ((i + 1) % 4096 == 0 || i == n - 1) {
                         ps.executeBatch();

@@ -8,6 +8,7 @@ import java.io.IOException;
 import java.io.Writer;
 import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
+import java.nio.CharBuffer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -142,7 +143,7 @@ public final class SurfacingBench {
         char[] buf = new char[CHUNK];
         try (BufferedReader r = Files.newBufferedReader(file, StandardCharsets.ISO_8859_1)) {
             for (int n; (n = r.read(buf)) > 0; ) {
-                p.feed(java.nio.CharBuffer.wrap(buf, 0, n));
+                p.feed(CharBuffer.wrap(buf, 0, n));
             }
         }
         p.end();

@@ -9,8 +9,8 @@ import java.net.URI;
 import java.net.http.HttpClient;
 import java.net.http.HttpRequest;
 import java.net.http.HttpResponse;
-import java.nio.charset.StandardCharsets;
 import java.nio.channels.SocketChannel;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
@@ -24,6 +24,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.ripv.probe.FreePorts;
+import org.ripv.server.ServerMain;
 import org.ripv.server.permit.PermitFile;
 import org.ripv.service.ServiceConnector;
 import org.ripv.service.ServiceOptions;
@@ -423,7 +424,7 @@ public final class WebBench implements Callable<Integer> {
      */
     static List<String> jvmOptions(List<String> extra) {
         boolean collector = extra.stream().anyMatch(WebBench::picksCollector);
-        List<String> all = new ArrayList<>(org.ripv.server.ServerMain.JVM_OPTIONS.stream()
+        List<String> all = new ArrayList<>(ServerMain.JVM_OPTIONS.stream()
                 .filter(o -> !collector || !picksCollector(o)).toList());
         all.addAll(extra);
         return all;

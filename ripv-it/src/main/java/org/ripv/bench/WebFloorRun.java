@@ -8,7 +8,9 @@ import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.TimeUnit;
 
 /**
@@ -30,7 +32,7 @@ final class WebFloorRun implements AutoCloseable {
     private final WebWatchers.Page page;
     private final List<ConsoleBench.Watch> ws = new ArrayList<>();
     /** Seconds of lines sent at each socket count by {@link #warm}. */
-    private final java.util.Map<Integer, Integer> warmed = new java.util.HashMap<>();
+    private final Map<Integer, Integer> warmed = new HashMap<>();
     /** The floor's threads when the phase being measured began recording. */
     private ThreadCpu.Snapshot threads;
     private final int rate;

@@ -16,8 +16,10 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
+import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Comparator;
+import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -105,7 +107,7 @@ public final class WebLoadBench {
             browser.send("Page.addScriptToEvaluateOnNewDocument", Map.of("source", String.format(Locale.ROOT, OBSERVER, vehicles)));
 
             Loads live = loads(browser, origin + "/fleet.html", runs, () -> {
-                List<ProcessHandle> all = new java.util.ArrayList<>(browser.processes());
+                List<ProcessHandle> all = new ArrayList<>(browser.processes());
                 all.add(server.process().toHandle());
                 return all;
             });
@@ -193,7 +195,7 @@ public final class WebLoadBench {
      */
     private static final class ProcessCpu {
         private final Supplier<List<ProcessHandle>> processes;
-        private final Map<Long, Long> last = new java.util.HashMap<>();
+        private final Map<Long, Long> last = new HashMap<>();
 
         ProcessCpu(Supplier<List<ProcessHandle>> processes) {
             this.processes = processes;

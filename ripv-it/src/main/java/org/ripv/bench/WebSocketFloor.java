@@ -13,6 +13,7 @@ import java.nio.channels.ServerSocketChannel;
 import java.nio.channels.SocketChannel;
 import java.nio.charset.StandardCharsets;
 import java.security.MessageDigest;
+import java.security.NoSuchAlgorithmException;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Base64;
@@ -172,7 +173,7 @@ public final class WebSocketFloor {
                 Writer w = writers.get(next++ % writers.size());
                 w.inbox.add(ch);
                 w.selector.wakeup();
-            } catch (IOException | java.security.NoSuchAlgorithmException e) {
+            } catch (IOException | NoSuchAlgorithmException e) {
                 if (!listener.isOpen()) {
                     return;
                 }

@@ -5,6 +5,7 @@ import java.io.DataInputStream;
 import java.io.IOException;
 import java.io.InputStream;
 import java.net.InetSocketAddress;
+import java.net.StandardSocketOptions;
 import java.nio.ByteBuffer;
 import java.nio.channels.Channels;
 import java.nio.channels.SocketChannel;
@@ -122,7 +123,7 @@ final class WebWatchers extends SelectorReaders<WebWatchers.Conn> {
         SocketChannel ch = SocketChannel.open();
         try {
             if (smallBuffer) {
-                ch.setOption(java.net.StandardSocketOptions.SO_RCVBUF, 16 * 1024);
+                ch.setOption(StandardSocketOptions.SO_RCVBUF, 16 * 1024);
             }
             ch.connect(new InetSocketAddress(page.host(), page.port()));
             ch.socket().setTcpNoDelay(true);

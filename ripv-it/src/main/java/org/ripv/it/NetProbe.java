@@ -12,8 +12,10 @@ import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 import org.ripv.client.handlers.ClientSocketHandler;
+import org.ripv.client.handlers.Tls;
 import org.ripv.messages.OutgoingServerMessage;
 import org.ripv.messages.Priority;
+import org.ripv.messages.Status;
 
 /**
  * What the multi-host test runs inside a network namespace besides the real programs: a client
@@ -47,10 +49,10 @@ public final class NetProbe {
 
     private static ClientSocketHandler login(String server, String user, String password) throws Exception {
         // Each run's server has a new certificate: trust it in a file of this probe's own, not ~/.ripv/known_hosts.
-        if (System.getProperty(org.ripv.client.handlers.Tls.KNOWN_HOSTS_PROPERTY) == null) {
+        if (System.getProperty(Tls.KNOWN_HOSTS_PROPERTY) == null) {
             java.nio.file.Path known = java.nio.file.Files.createTempFile("ripv-probe-known-hosts", "");
             known.toFile().deleteOnExit();
-            System.setProperty(org.ripv.client.handlers.Tls.KNOWN_HOSTS_PROPERTY, known.toString());
+            System.setProperty(Tls.KNOWN_HOSTS_PROPERTY, known.toString());
         }
         ClientSocketHandler c;
         if (server.indexOf(',') >= 0) {
@@ -160,7 +162,7 @@ public final class NetProbe {
                 long t1 = System.nanoTime();
                 OutgoingServerMessage m = c.call(a[5], a[6], Priority.NORMAL, Duration.ofSeconds(10), null);
                 long t2 = System.nanoTime();
-                if (m.footer().status() == org.ripv.messages.Status.ERROR) {
+                if (m.footer().status() == Status.ERROR) {
                     throw new IllegalStateException("request failed: " + m.footer().replyText());
                 }
                 if (i >= 20) {

@@ -1,5 +1,6 @@
 package org.ripv.it;
 
+import java.io.File;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -51,7 +52,7 @@ public final class Netns implements AutoCloseable {
         if (path == null) {
             return false;
         }
-        for (String dir : path.split(java.io.File.pathSeparator)) {
+        for (String dir : path.split(File.pathSeparator)) {
             Path p = Path.of(dir, command);
             if (Files.isRegularFile(p) && Files.isExecutable(p)) {
                 return true;

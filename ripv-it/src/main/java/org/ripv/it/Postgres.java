@@ -5,6 +5,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
+import java.util.Comparator;
 
 /**
  * A throw-away PostgreSQL cluster in a network namespace of its own (the standby's state
@@ -54,7 +55,7 @@ public final class Postgres implements AutoCloseable {
         }
         try (var versions = Files.list(root)) {
             return versions.map(v -> v.resolve("bin")).filter(b -> Files.isExecutable(b.resolve("pg_ctl")))
-                    .max(java.util.Comparator.naturalOrder()).orElse(null);
+                    .max(Comparator.naturalOrder()).orElse(null);
         } catch (IOException e) {
             return null;
         }

@@ -6,6 +6,7 @@ import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -139,8 +140,8 @@ public final class SegmentReader {
         }
         String vehicle = sci.segment().contains("-") ? sci.segment().substring(0, sci.segment().indexOf('-')) : sci.segment();
         return new Segment(sci.segment(), vehicle, sci.delayed(), sci.file(),
-                java.util.Arrays.copyOf(ot, n), java.util.Arrays.copyOf(op, n), java.util.Arrays.copyOf(otemp, n),
-                java.util.Arrays.copyOf(ocond, n), gps, dr, uvTime, u, v);
+                Arrays.copyOf(ot, n), Arrays.copyOf(op, n), Arrays.copyOf(otemp, n),
+                Arrays.copyOf(ocond, n), gps, dr, uvTime, u, v);
     }
 
     private static String missing(Columns c, String... names) {
@@ -240,13 +241,13 @@ public final class SegmentReader {
 
         void add(double d) {
             if (n == a.length) {
-                a = java.util.Arrays.copyOf(a, n * 2);
+                a = Arrays.copyOf(a, n * 2);
             }
             a[n++] = d;
         }
 
         double[] toArray() {
-            return java.util.Arrays.copyOf(a, n);
+            return Arrays.copyOf(a, n);
         }
     }
 }

@@ -6,6 +6,7 @@ import java.io.OutputStream;
 import java.net.URI;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.security.GeneralSecurityException;
 import java.security.KeyPair;
 import java.time.Duration;
 import java.util.ArrayList;
@@ -115,7 +116,7 @@ public final class SftpPush implements ProfilePush {
                 Iterable<KeyPair> keys;
                 try (InputStream in = Files.newInputStream(key)) {
                     keys = SecurityUtils.loadKeyPairIdentities(session, null, in, null);
-                } catch (java.security.GeneralSecurityException e) {
+                } catch (GeneralSecurityException e) {
                     throw new IOException("cannot read the private key " + key + ": " + e.getMessage(), e);
                 }
                 for (KeyPair k : keys) {

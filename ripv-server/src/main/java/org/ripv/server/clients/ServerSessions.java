@@ -69,7 +69,7 @@ public final class ServerSessions implements AutoCloseable {
     private Outlet outlet(SocketHandler h) {
         return new Outlet() {
             @Override
-            public boolean push(OutgoingServerMessage message, java.util.function.Supplier<byte[]> frame, Runnable written) {
+            public boolean push(OutgoingServerMessage message, Supplier<byte[]> frame, Runnable written) {
                 return h.push(message, frame, written);
             }
 

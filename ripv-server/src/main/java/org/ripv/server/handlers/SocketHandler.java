@@ -13,6 +13,7 @@ import java.util.Objects;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
+import java.util.function.Supplier;
 import javax.net.ssl.SSLException;
 import org.ripv.messages.IdBadge;
 import org.ripv.messages.IncomingServerMessage;
@@ -275,7 +276,7 @@ public final class SocketHandler implements Connection.Receiver {
     }
 
     /** As above, with the encoded frame asked for only when this client writes frames (not a web page's). */
-    public boolean push(OutgoingServerMessage message, java.util.function.Supplier<byte[]> frame, Runnable written) {
+    public boolean push(OutgoingServerMessage message, Supplier<byte[]> frame, Runnable written) {
         return !closed && (peer != null ? peer.push(message, written) : writer.push(message, frame.get(), written));
     }
 

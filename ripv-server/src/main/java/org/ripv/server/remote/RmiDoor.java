@@ -1,6 +1,7 @@
 package org.ripv.server.remote;
 
 import java.io.IOException;
+import java.net.BindException;
 import java.net.InetAddress;
 import java.rmi.NoSuchObjectException;
 import java.rmi.RemoteException;
@@ -51,7 +52,7 @@ public final class RmiDoor implements AutoCloseable {
             try {
                 return openOn(bind, ports.next(), remote);
             } catch (IOException e) {
-                if (attempt == FREE_PORT_ATTEMPTS || !(rootCause(e) instanceof java.net.BindException)) {
+                if (attempt == FREE_PORT_ATTEMPTS || !(rootCause(e) instanceof BindException)) {
                     throw e;
                 }
             }

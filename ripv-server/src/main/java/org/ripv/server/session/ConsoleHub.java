@@ -13,6 +13,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Phaser;
+import java.util.concurrent.RejectedExecutionException;
 import java.util.function.BiFunction;
 import java.util.function.Consumer;
 import org.ripv.messages.ConsoleEntry;
@@ -348,7 +349,7 @@ public final class ConsoleHub implements AutoCloseable {
                     spread.arriveAndDeregister();
                 }
             });
-        } catch (java.util.concurrent.RejectedExecutionException closing) {
+        } catch (RejectedExecutionException closing) {
             spread.arriveAndDeregister(); // the hub is closing: the watchers are stopped
         }
     }

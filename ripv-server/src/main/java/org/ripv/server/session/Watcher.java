@@ -1,9 +1,11 @@
 package org.ripv.server.session;
 
+import java.io.IOException;
 import java.time.Instant;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.function.Supplier;
 import org.ripv.messages.ConsoleBatch;
 import org.ripv.messages.ConsoleEntry;
 import org.ripv.messages.ErrorCode;
@@ -60,7 +62,7 @@ final class Watcher {
      * A push built once for every watcher that is up to date, and encoded once when the first
      * socket client asks (web pages write their own JSON: PushJson).
      */
-    static final class Shared implements java.util.function.Supplier<byte[]> {
+    static final class Shared implements Supplier<byte[]> {
         private static final byte[] NONE = new byte[0];
         final OutgoingServerMessage message;
         private final ConsoleHub.Encoder encoder;
@@ -81,7 +83,7 @@ final class Watcher {
                     if (f == null) {
                         try {
                             f = encoder.encode(message);
-                        } catch (java.io.IOException x) {
+                        } catch (IOException x) {
                             f = NONE;
                         }
                         frame = f;
@@ -92,7 +94,7 @@ final class Watcher {
         }
     }
 
-    private static final java.util.function.Supplier<byte[]> NOT_ENCODED = () -> null;
+    private static final Supplier<byte[]> NOT_ENCODED = () -> null;
 
     /** Takes new entries; pushes at once if nothing is in flight. The shared push is used when it can be. */
     void offer(List<ConsoleEntry> entries, Shared shared) {
@@ -149,7 +151,7 @@ final class Watcher {
         send(next, NOT_ENCODED);
     }
 
-    private void send(OutgoingServerMessage m, java.util.function.Supplier<byte[]> frame) {
+    private void send(OutgoingServerMessage m, Supplier<byte[]> frame) {
         if (!outlet.push(m, frame, onWritten)) {
             synchronized (this) {
                 inFlight--; // the connection is closing, or full of replies: the next entry tries again

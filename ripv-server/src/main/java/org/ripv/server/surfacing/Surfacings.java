@@ -6,6 +6,8 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.file.Path;
+import java.time.Duration;
+import java.time.format.DateTimeParseException;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
@@ -309,7 +311,7 @@ public final class Surfacings implements AutoCloseable {
     private static Long time(Map<String, Object> r) {
         try {
             return r.get("time_utc") instanceof String t ? java.time.Instant.parse(t).toEpochMilli() : null;
-        } catch (java.time.format.DateTimeParseException x) {
+        } catch (DateTimeParseException x) {
             return null;
         }
     }
@@ -329,7 +331,7 @@ public final class Surfacings implements AutoCloseable {
                     times.add(t);
                 }
             });
-            java.time.Duration learned = CallOutlook.learned(times);
+            Duration learned = CallOutlook.learned(times);
             int n = Math.min(times.size(), Overdue.LEARN_FROM + 1) - 1;
             e = learned == null ? null : new Overdue.Expected(learned, "learned from its last " + n + " intervals");
         }

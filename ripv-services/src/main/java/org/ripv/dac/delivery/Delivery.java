@@ -11,10 +11,13 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
+import java.util.concurrent.ExecutionException;
 import java.util.concurrent.Executors;
+import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
 import java.util.stream.Stream;
 import org.ripv.dac.DacException;
 import org.ripv.dac.DacLedger;
@@ -102,7 +105,7 @@ public final class Delivery implements AutoCloseable {
     public void arrived(String name, byte[] data, SensorListCache cache) {
         try {
             worker.execute(() -> receive(Path.of(name).getFileName().toString(), data, cache));
-        } catch (java.util.concurrent.RejectedExecutionException e) {
+        } catch (RejectedExecutionException e) {
             // the service is stopping: the file is stored; its profiles are made when it arrives again
             log.warn("DAC delivery of {} is stopped: {} not taken", deployment.glider(), name);
         }
@@ -112,7 +115,7 @@ public final class Delivery implements AutoCloseable {
     public void settle(long timeoutMillis) throws InterruptedException {
         try {
             worker.submit(() -> { }).get(timeoutMillis, TimeUnit.MILLISECONDS);
-        } catch (java.util.concurrent.ExecutionException | java.util.concurrent.TimeoutException e) {
+        } catch (ExecutionException | TimeoutException e) {
             throw new IllegalStateException("the delivery of " + deployment.glider() + " did not settle: " + e, e);
         }
     }
