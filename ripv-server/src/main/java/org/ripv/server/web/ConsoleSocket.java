@@ -13,6 +13,8 @@ import org.eclipse.jetty.websocket.common.WebSocketSession;
 import org.eclipse.jetty.websocket.core.CoreSession;
 import org.eclipse.jetty.websocket.core.Frame;
 import org.eclipse.jetty.websocket.core.OpCode;
+import org.eclipse.jetty.websocket.core.WebSocketConnection;
+import org.eclipse.jetty.websocket.core.WebSocketCoreSession;
 import org.ripv.messages.Attachment;
 import org.ripv.messages.Header;
 import org.ripv.messages.IncomingServerMessage;
@@ -59,6 +61,18 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
      * of its own over a slice of the shared bytes, which no extension can then move ({@link PushJson}).
      */
     private volatile boolean extended;
+    /**
+     * Where a page without an extension has its shared pushes queued: straight on its connection's
+     * frame flusher, the one every frame of the page ends in. The core session's path before it
+     * (its state's lock, the transforming flusher's lock and queue, fragmenting, the empty extension
+     * stack) does nothing for a finished text frame to such a page, and took a tenth of the
+     * server's CPU per delivery (docs/performance.md). Replies take this path too, so that nothing
+     * RIPV sends overtakes anything it sent before; only Jetty's own frames (pong, close) take the
+     * session's. The flusher refuses a frame once the close frame is queued, failing its callback,
+     * as the session's own check would. Null when the page negotiated an extension, or Jetty's
+     * session is not the core one this was written against.
+     */
+    private volatile WebSocketConnection direct;
     /** The callback of frames no one waits for (replies); one per page. */
     private final Written replied = new Written(null);
     /**
@@ -85,6 +99,7 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
     public void onWebSocketOpen(Session session) {
         this.core = ((WebSocketSession) session).getCoreSession();
         this.extended = !core.getNegotiatedExtensions().isEmpty();
+        this.direct = !extended && core instanceof WebSocketCoreSession c ? c.getConnection() : null;
         this.socket = session;
         String refused = sessions.admitSocket(login, this);
         if (refused != null) {
@@ -154,6 +169,13 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
         if (s == null || !s.isOpen() || !admit()) {
             return false;
         }
+        WebSocketConnection d = direct;
+        if (d != null) {
+            // The pushes' path: a reply and the pushes after it (a watch's replay, then its live
+            // lines) leave in the order they were sent.
+            d.enqueueFrame(new Frame(OpCode.TEXT, text), written == null ? replied : new Written(written), false);
+            return true;
+        }
         s.sendText(text, new Callback() {
             @Override
             public void succeed() {
@@ -169,11 +191,11 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
     }
 
     /**
-     * Queues a text frame that other pages share: Jetty's core session (under the API's session
-     * Jetty gives us) sends the very frame every page without an extension gets, whose payload
-     * nothing on the way moves or writes into (a server's frames are not masked; Jetty's flusher
-     * writes a slice), instead of its own UTF-8 copy of the text; a page with permessage-deflate
-     * gets a frame over a slice of the same bytes, which its deflater may consume.
+     * Queues a text frame that other pages share: every page without an extension gets the very
+     * frame, queued on its connection ({@link #direct}), whose payload nothing on the way moves or
+     * writes into (a server's frames are not masked; Jetty's flusher writes a slice), instead of
+     * its own UTF-8 copy of the text; a page with permessage-deflate gets a frame over a slice of
+     * the same bytes through its core session, whose deflater may consume it.
      */
     private boolean sendShared(Frame shared, Runnable written) {
         CoreSession s = core;
@@ -185,7 +207,12 @@ public final class ConsoleSocket implements Session.Listener.AutoDemanding, Sock
             callback = written == null ? replied : new Written(written);
             lastWritten = callback;
         }
-        s.sendFrame(extended ? new Frame(OpCode.TEXT, shared.getPayload().slice()) : shared, callback, false);
+        WebSocketConnection d = direct;
+        if (d != null) {
+            d.enqueueFrame(shared, callback, false);
+        } else {
+            s.sendFrame(extended ? new Frame(OpCode.TEXT, shared.getPayload().slice()) : shared, callback, false);
+        }
         return true;
     }
 
