@@ -129,4 +129,32 @@ class CancelTest {
         OutgoingServiceMessage r = replies.poll(10, TimeUnit.SECONDS);
         assertThat(r.footer().errorCode()).isEqualTo(ErrorCode.DEVICE_ERROR);
     }
+
+    @Test
+    void aFloodOfCancelsForRequestsThatNeverComeKeepsOnlyTheNewestAndTheServiceServesOn() throws Exception {
+        service.replyTo(replies::add);
+        service.start();
+        // A client (or a server gone wrong) names 10,000 requests that never come: only the newest
+        // MAX_CANCELLED_AHEAD are kept, so memory stays bounded and an old id is free to run.
+        int flood = 10_000;
+        for (long id = 1; id <= flood; id++) {
+            assertThat(service.cancel(mailbox, "100001", id)).isTrue();
+        }
+        long oldestKept = flood - ServiceTaskManager.MAX_CANCELLED_AHEAD + 1;
+        service.accept(request(1, "quick"));
+        service.accept(request(oldestKept - 1, "quick"));
+        service.accept(request(oldestKept, "quick"));
+        service.accept(request(flood, "quick"));
+        List<OutgoingServiceMessage> got = new ArrayList<>();
+        for (int i = 0; i < 4; i++) {
+            got.add(replies.poll(10, TimeUnit.SECONDS));
+        }
+        assertThat(got).extracting(r -> r.header().messageId()).containsExactly(1L, oldestKept - 1, oldestKept, (long) flood);
+        assertThat(got.subList(0, 2)).as("forgotten: they run").allSatisfy(r -> {
+            assertThat(r.status()).isEqualTo(Status.OK);
+            assertThat(r.footer().replyText()).isEqualTo("quick done");
+        });
+        assertThat(got.subList(2, 4)).as("the newest kept: cancelled before they ran").allSatisfy(r ->
+                assertThat(r.footer().errorCode()).isEqualTo(ErrorCode.CANCELLED));
+    }
 }
