@@ -6,6 +6,7 @@ import java.net.InetAddress;
 import java.rmi.NoSuchObjectException;
 import java.rmi.RemoteException;
 import java.rmi.registry.Registry;
+import java.rmi.server.ExportException;
 import java.rmi.server.UnicastRemoteObject;
 import org.ripv.probe.FreePorts;
 import org.ripv.rmi.BoundServerSocketFactory;
@@ -26,6 +27,8 @@ public final class RmiDoor implements AutoCloseable {
     private final ServerRemote remote;
     private final RegistryGuard guard;
     private final int port;
+    /** How many free ports a registry on port 0 tries before it gives up. */
+    private static final int FREE_PORT_ATTEMPTS = 5;
 
     private RmiDoor(Registry registry, ServerRemote remote, RegistryGuard guard, int port) {
         this.registry = registry;
@@ -52,20 +55,13 @@ public final class RmiDoor implements AutoCloseable {
             try {
                 return openOn(bind, ports.next(), remote);
             } catch (IOException e) {
-                if (attempt == FREE_PORT_ATTEMPTS || !(rootCause(e) instanceof BindException)) {
+                // openOn wraps the registry's ExportException, which wraps the bind's failure
+                boolean taken = e.getCause() instanceof ExportException x && x.getCause() instanceof BindException;
+                if (attempt == FREE_PORT_ATTEMPTS || !taken) {
                     throw e;
                 }
             }
         }
-    }
-
-    private static final int FREE_PORT_ATTEMPTS = 5;
-
-    private static Throwable rootCause(Throwable t) {
-        while (t.getCause() != null && t.getCause() != t) {
-            t = t.getCause();
-        }
-        return t;
     }
 
     private static RmiDoor openOn(InetAddress bind, int registryPort, ServerRemote remote) throws IOException {
